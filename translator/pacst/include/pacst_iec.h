@@ -1,0 +1,302 @@
+/* Elementary IEC 61131-3 types, variable wrappers and the standard function blocks for the C code
+ * that pacst generates. It reproduces the C interface of MATIEC's iec_std_lib.h that a harness sees
+ * (type names, {value; flags} wrappers, TIME as seconds + nanoseconds, R_TRIG/F_TRIG/TON/TOF/TP with
+ * MATIEC's member names), so that a harness compiles unchanged against either compiler's output.
+ * Written for this project; see docs/translator.md. */
+#ifndef PACST_IEC_H
+#define PACST_IEC_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <math.h>
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef uint8_t BOOL;
+typedef int8_t SINT;
+typedef int16_t INT;
+typedef int32_t DINT;
+typedef int64_t LINT;
+typedef uint8_t USINT;
+typedef uint16_t UINT;
+typedef uint32_t UDINT;
+typedef uint64_t ULINT;
+typedef uint8_t BYTE;
+typedef uint16_t WORD;
+typedef uint32_t DWORD;
+typedef uint64_t LWORD;
+typedef float REAL;
+typedef double LREAL;
+typedef struct {
+    long tv_sec;
+    long tv_nsec;
+} IEC_TIMESPEC;
+typedef IEC_TIMESPEC TIME;
+
+#ifndef TRUE
+#define TRUE 1
+#endif
+#ifndef FALSE
+#define FALSE 0
+#endif
+
+/* Flag bits of a variable wrapper, as MATIEC's accessor.h numbers them. A member whose flags carry
+ * the force bit keeps its value: the generated code skips every write to it. */
+#define __IEC_DEBUG_FLAG 0x01
+#define __IEC_FORCE_FLAG 0x02
+#define __IEC_RETAIN_FLAG 0x04
+#define __IEC_OUTPUT_FLAG 0x08
+
+#define __PACST_WRAPPER(type) typedef struct { type value; BYTE flags; } __IEC_##type##_t;
+__PACST_WRAPPER(BOOL)
+__PACST_WRAPPER(SINT)
+__PACST_WRAPPER(INT)
+__PACST_WRAPPER(DINT)
+__PACST_WRAPPER(LINT)
+__PACST_WRAPPER(USINT)
+__PACST_WRAPPER(UINT)
+__PACST_WRAPPER(UDINT)
+__PACST_WRAPPER(ULINT)
+__PACST_WRAPPER(BYTE)
+__PACST_WRAPPER(WORD)
+__PACST_WRAPPER(DWORD)
+__PACST_WRAPPER(LWORD)
+__PACST_WRAPPER(REAL)
+__PACST_WRAPPER(LREAL)
+__PACST_WRAPPER(TIME)
+
+/* The harness defines these two and advances __CURRENT_TIME before each scan. */
+extern TIME __CURRENT_TIME;
+extern BOOL __DEBUG;
+
+/* Reports a run-time fault of the generated code (array index out of bounds) and aborts: in a test
+ * run an out-of-bounds write must never corrupt the simulated PLC silently. */
+static inline void __pacst_fault(const char *where, const char *what, long value) {
+    fprintf(stderr, "%s: run-time error: %s (%ld)\n", where, what, value);
+    abort();
+}
+
+/* Writes `val` to the part `path` (empty, .MEMBER or .table[i]) of a wrapped variable unless the
+ * variable is forced. */
+#define __PACST_SETP(var, path, val) \
+    do { if (!((var).flags & __IEC_FORCE_FLAG)) (var).value path = (val); } while (0)
+#define __PACST_SET(var, val) __PACST_SETP(var, , val)
+
+/* Offset of an array element; an index outside the declared bounds stops the run with its position. */
+static inline long __pacst_index(long i, long low, long high, const char *where) {
+    if (i < low || i > high) __pacst_fault(where, "array index out of bounds", i);
+    return i - low;
+}
+
+static inline TIME __time_make(long sec, long nsec) {
+    TIME t;
+    t.tv_sec = sec + nsec / 1000000000L;
+    t.tv_nsec = nsec % 1000000000L;
+    if (t.tv_nsec < 0) { t.tv_nsec += 1000000000L; t.tv_sec -= 1; }
+    return t;
+}
+static inline TIME __time_add(TIME a, TIME b) { return __time_make(a.tv_sec + b.tv_sec, a.tv_nsec + b.tv_nsec); }
+static inline TIME __time_sub(TIME a, TIME b) { return __time_make(a.tv_sec - b.tv_sec, a.tv_nsec - b.tv_nsec); }
+static inline int __time_cmp(TIME a, TIME b) {
+    if (a.tv_sec != b.tv_sec) return a.tv_sec < b.tv_sec ? -1 : 1;
+    if (a.tv_nsec != b.tv_nsec) return a.tv_nsec < b.tv_nsec ? -1 : 1;
+    return 0;
+}
+
+/* Integer division and modulo as IEC defines them (truncation toward zero, MOD with the sign of the
+ * dividend). A zero divisor gives 0 instead of a trap, and the one overflowing quotient (most negative
+ * value / -1) wraps like every other overflow. */
+#define __PACST_DIVMOD(T, W)                                                        \
+    static inline T __div_##T(T a, T b) { return b == 0 ? (T)0 : (T)((W)a / (W)b); } \
+    static inline T __mod_##T(T a, T b) { return b == 0 ? (T)0 : (T)((W)a % (W)b); }
+__PACST_DIVMOD(SINT, int64_t)
+__PACST_DIVMOD(INT, int64_t)
+__PACST_DIVMOD(DINT, int64_t)
+__PACST_DIVMOD(USINT, uint64_t)
+__PACST_DIVMOD(UINT, uint64_t)
+__PACST_DIVMOD(UDINT, uint64_t)
+__PACST_DIVMOD(BYTE, uint64_t)
+__PACST_DIVMOD(WORD, uint64_t)
+__PACST_DIVMOD(DWORD, uint64_t)
+
+/* Shifts and rotations of bit strings; a count outside 0..width-1 shifts every bit out. */
+#define __PACST_SHIFT(T, BITS)                                                                          \
+    static inline T __shl_##T(T v, long n) { return (n < 0 || n >= BITS) ? (T)0 : (T)((uint64_t)v << n); } \
+    static inline T __shr_##T(T v, long n) { return (n < 0 || n >= BITS) ? (T)0 : (T)((uint64_t)v >> n); } \
+    static inline T __rol_##T(T v, long n) {                                                             \
+        n = ((n % BITS) + BITS) % BITS;                                                                  \
+        return n == 0 ? v : (T)(((uint64_t)v << n) | ((uint64_t)v >> (BITS - n)));                      \
+    }                                                                                                    \
+    static inline T __ror_##T(T v, long n) { return __rol_##T(v, BITS - ((n % BITS) + BITS) % BITS); }
+__PACST_SHIFT(BYTE, 8)
+__PACST_SHIFT(WORD, 16)
+__PACST_SHIFT(DWORD, 32)
+
+/* ABS for signed types (unsigned ones are their own ABS); MIN, MAX and LIMIT for every numeric and
+ * bit-string type. */
+#define __PACST_ABS(T) static inline T __abs_##T(T a) { return a < 0 ? (T)-a : a; }
+__PACST_ABS(SINT)
+__PACST_ABS(INT)
+__PACST_ABS(DINT)
+__PACST_ABS(REAL)
+__PACST_ABS(LREAL)
+#define __PACST_NUMERIC(T)                                                                   \
+    static inline T __min_##T(T a, T b) { return b < a ? b : a; }                            \
+    static inline T __max_##T(T a, T b) { return b > a ? b : a; }                            \
+    static inline T __limit_##T(T mn, T in, T mx) { return in < mn ? mn : (in > mx ? mx : in); }
+__PACST_NUMERIC(SINT)
+__PACST_NUMERIC(INT)
+__PACST_NUMERIC(DINT)
+__PACST_NUMERIC(USINT)
+__PACST_NUMERIC(UINT)
+__PACST_NUMERIC(UDINT)
+__PACST_NUMERIC(BYTE)
+__PACST_NUMERIC(WORD)
+__PACST_NUMERIC(DWORD)
+__PACST_NUMERIC(REAL)
+__PACST_NUMERIC(LREAL)
+
+/* REAL/LREAL to integer: round half to even (IEC); a negative value to an unsigned type gives 0;
+ * NaN gives 0; a value beyond 64 bits saturates before it wraps to the target width. */
+static inline int64_t __real_to_i64(double r) {
+    double n;
+    if (r != r) return 0;
+    n = nearbyint(r);
+    if (n >= 9223372036854775807.0) return INT64_MAX;
+    if (n <= -9223372036854775808.0) return INT64_MIN;
+    return (int64_t)n;
+}
+static inline uint64_t __real_to_u64(double r) {
+    int64_t v = __real_to_i64(r);
+    return v < 0 ? 0u : (uint64_t)v;
+}
+
+/* Standard function blocks with MATIEC's member names and timing: TON/TOF/TP read __CURRENT_TIME;
+ * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE. */
+typedef struct {
+    __IEC_BOOL_t EN, ENO, CLK, Q, M;
+} R_TRIG;
+typedef R_TRIG F_TRIG;
+typedef struct {
+    __IEC_BOOL_t EN, ENO, IN;
+    __IEC_TIME_t PT;
+    __IEC_BOOL_t Q;
+    __IEC_TIME_t ET;
+    __IEC_SINT_t STATE;
+    __IEC_BOOL_t PREV_IN;
+    __IEC_TIME_t CURRENT_TIME, START_TIME;
+} TON;
+typedef TON TOF;
+typedef TON TP;
+
+static inline void R_TRIG_init__(R_TRIG *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE; d->CLK.value = FALSE; d->Q.value = FALSE; d->M.value = FALSE;
+}
+static inline void F_TRIG_init__(F_TRIG *d, BOOL retain) { R_TRIG_init__(d, retain); }
+static inline void R_TRIG_body__(R_TRIG *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->Q, d->CLK.value && !d->M.value);
+    __PACST_SET(d->M, d->CLK.value);
+}
+static inline void F_TRIG_body__(F_TRIG *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->Q, !d->CLK.value && !d->M.value);
+    __PACST_SET(d->M, !d->CLK.value);
+}
+
+static inline void TON_init__(TON *d, BOOL retain) {
+    const TIME zero = {0, 0};
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE; d->IN.value = FALSE; d->PT.value = zero;
+    d->Q.value = FALSE; d->ET.value = zero; d->STATE.value = 0; d->PREV_IN.value = FALSE;
+    d->CURRENT_TIME.value = zero; d->START_TIME.value = zero;
+}
+static inline void TOF_init__(TOF *d, BOOL retain) { TON_init__(d, retain); }
+static inline void TP_init__(TP *d, BOOL retain) { TON_init__(d, retain); }
+
+/* STATE: 0 idle, 1 timing, 2 elapsed (MATIEC's encoding). */
+static inline void TON_body__(TON *d) {
+    const TIME zero = {0, 0};
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
+    if (d->STATE.value == 0 && !d->PREV_IN.value && d->IN.value) {
+        __PACST_SET(d->STATE, 1);
+        __PACST_SET(d->Q, FALSE);
+        __PACST_SET(d->START_TIME, d->CURRENT_TIME.value);
+    } else if (!d->IN.value) {
+        __PACST_SET(d->ET, zero);
+        __PACST_SET(d->Q, FALSE);
+        __PACST_SET(d->STATE, 0);
+    } else if (d->STATE.value == 1) {
+        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
+            __PACST_SET(d->STATE, 2);
+            __PACST_SET(d->Q, TRUE);
+            __PACST_SET(d->ET, d->PT.value);
+        } else {
+            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
+        }
+    }
+    __PACST_SET(d->PREV_IN, d->IN.value);
+}
+
+static inline void TOF_body__(TOF *d) {
+    const TIME zero = {0, 0};
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
+    if (d->STATE.value == 0 && d->PREV_IN.value && !d->IN.value) {
+        __PACST_SET(d->STATE, 1);
+        __PACST_SET(d->START_TIME, d->CURRENT_TIME.value);
+    } else if (d->IN.value) {
+        __PACST_SET(d->ET, zero);
+        __PACST_SET(d->STATE, 0);
+    } else if (d->STATE.value == 1) {
+        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
+            __PACST_SET(d->STATE, 2);
+            __PACST_SET(d->ET, d->PT.value);
+        } else {
+            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
+        }
+    }
+    __PACST_SET(d->Q, d->IN.value || d->STATE.value == 1);
+    __PACST_SET(d->PREV_IN, d->IN.value);
+}
+
+static inline void TP_body__(TP *d) {
+    const TIME zero = {0, 0};
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
+    if (d->STATE.value == 0 && !d->PREV_IN.value && d->IN.value) {
+        __PACST_SET(d->STATE, 1);
+        __PACST_SET(d->Q, TRUE);
+        __PACST_SET(d->START_TIME, d->CURRENT_TIME.value);
+    } else if (d->STATE.value == 1) {
+        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
+            __PACST_SET(d->STATE, 2);
+            __PACST_SET(d->Q, FALSE);
+            __PACST_SET(d->ET, d->PT.value);
+        } else {
+            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
+        }
+    }
+    if (d->STATE.value == 2 && !d->IN.value) {
+        __PACST_SET(d->ET, zero);
+        __PACST_SET(d->STATE, 0);
+    }
+    __PACST_SET(d->PREV_IN, d->IN.value);
+}
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PACST_IEC_H */

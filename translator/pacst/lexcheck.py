@@ -1,0 +1,164 @@
+"""Checks on the raw text that blark's grammar is too lenient for but MATIEC is not.
+
+blark accepts `//` comments, pragmas, nested comments, `;;` and a missing `;` after END_IF;
+MATIEC refuses them all (../shared/st-portable-subset.md, "Lexical"), so they are refused here
+before parsing, with the exact position.
+"""
+import re
+
+from .errors import StError
+
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_NUMBER = re.compile(r"[0-9][0-9_]*(?:#[0-9A-Za-z_]+)?(?:\.[0-9_]+)?(?:[eE][+-]?[0-9_]+)?")
+_TIME_PREFIX = {"T", "TIME", "LT", "LTIME", "D", "DATE", "TOD", "TIME_OF_DAY", "DT", "DATE_AND_TIME"}
+_NEEDS_SEMICOLON = {"END_IF", "END_CASE", "END_WHILE", "END_REPEAT", "END_FOR", "END_STRUCT"}
+_EMPTY_BEFORE = {";", "THEN", "ELSE", "DO", "REPEAT", ":"}
+_PUNCT2 = (":=", "=>", "<=", ">=", "<>", "..", "**")
+
+
+class _Token:
+    __slots__ = ("kind", "text", "line", "col")
+
+    def __init__(self, kind, text, line, col):
+        self.kind = kind
+        self.text = text
+        self.line = line
+        self.col = col
+
+    @property
+    def upper(self):
+        return self.text.upper()
+
+
+def _check_underscores(digits, file, line, col):
+    """No leading, doubled or trailing `_` inside a number (MATIEC's lexer refuses them)."""
+    parts = digits.split("#") if "#" in digits else re.split(r"[.eE+-]", digits)
+    for part in parts:
+        if part and (part.startswith("_") or part.endswith("_") or "__" in part):
+            raise StError(file, line, col, f"malformed number '{digits}': no leading, doubled or trailing '_'")
+
+
+def tokenize(text, file):
+    """Tokens without comments; raises StError on what MATIEC's lexer would refuse."""
+    tokens = []
+    i, line, col = 0, 1, 1
+    n = len(text)
+
+    def advance(upto):
+        nonlocal i, line, col
+        chunk = text[i:upto]
+        nl = chunk.count("\n")
+        if nl:
+            line += nl
+            col = len(chunk) - chunk.rfind("\n")
+        else:
+            col += len(chunk)
+        i = upto
+
+    while i < n:
+        c = text[i]
+        if c in " \t\r\n":
+            advance(i + 1)
+            continue
+        if text.startswith("(*", i):
+            start_line, start_col = line, col
+            j = i + 2
+            while True:
+                end = text.find("*)", j)
+                nested = text.find("(*", j)
+                if end < 0:
+                    raise StError(file, start_line, start_col, "comment is not closed with '*)'")
+                if 0 <= nested < end:
+                    advance(nested)
+                    raise StError(file, line, col, "nested comment: MATIEC does not nest '(* *)' comments")
+                break
+            advance(end + 2)
+            continue
+        if text.startswith("//", i):
+            raise StError(file, line, col, "'//' comment: MATIEC accepts only '(* ... *)' comments")
+        if text.startswith("/*", i):
+            raise StError(file, line, col, "'/* */' comment: MATIEC accepts only '(* ... *)' comments")
+        if c == "{":
+            raise StError(file, line, col, "pragma '{...}': MATIEC copies or rejects pragmas; none are allowed")
+        if c in "'\"":
+            end = text.find(c, i + 1)
+            if end < 0:
+                raise StError(file, line, col, "string literal is not closed")
+            tokens.append(_Token("string", text[i:end + 1], line, col))
+            advance(end + 1)
+            continue
+        m = _IDENT.match(text, i)
+        if m:
+            word = m.group(0)
+            if text.startswith("#", m.end()):
+                # Typed literal or time literal: WORD#16#FF, INT#-5, T#1S500MS.
+                if word.upper() in _TIME_PREFIX:
+                    lit = re.compile(r"#-?[0-9A-Za-z_.]+").match(text, m.end())
+                else:
+                    lit = re.compile(r"#-?[0-9][0-9A-Za-z_#.]*(?:[eE][+-]?[0-9_]+)?|#[A-Za-z_][A-Za-z0-9_]*").match(
+                        text, m.end())
+                    if lit and (lit.group(0)[1:2].isdigit() or lit.group(0)[1:2] == "-"):
+                        _check_underscores(lit.group(0)[1:].lstrip("-"), file, line, col)
+                end = lit.end() if lit else m.end() + 1
+                tokens.append(_Token("literal", text[i:end], line, col))
+                advance(end)
+                continue
+            if "__" in word:
+                raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves")
+            if word.endswith("_"):
+                raise StError(file, line, col, f"identifier '{word}' ends with '_', which MATIEC refuses")
+            tokens.append(_Token("ident", word, line, col))
+            advance(m.end())
+            continue
+        m = _NUMBER.match(text, i)
+        if m:
+            lit = m.group(0)
+            if re.match(r"[0-9_]+\.\.", text[i:]):  # range 0..7: the number stops before '..'
+                lit = re.match(r"[0-9_]+", text[i:]).group(0)
+            _check_underscores(lit, file, line, col)
+            tokens.append(_Token("number", lit, line, col))
+            advance(i + len(lit))
+            continue
+        two = text[i:i + 2]
+        if two in _PUNCT2:
+            tokens.append(_Token("punct", two, line, col))
+            advance(i + 2)
+            continue
+        tokens.append(_Token("punct", c, line, col))
+        advance(i + 1)
+    return tokens
+
+
+def check(text, file):
+    """Raise StError for the first lexical rule of the portable subset that `text` breaks."""
+    tokens = tokenize(text, file)
+    in_type = False
+    for k, tok in enumerate(tokens):
+        up = tok.upper if tok.kind == "ident" else tok.text
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else None
+        if tok.kind == "punct" and tok.text == ";" and k > 0:
+            prev = tokens[k - 1]
+            prev_text = prev.upper if prev.kind == "ident" else prev.text
+            if prev_text in _EMPTY_BEFORE:
+                raise StError(file, tok.line, tok.col, "empty statement: MATIEC refuses ';;' and empty branches")
+        if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";"):
+            raise StError(file, tok.line, tok.col + len(tok.text),
+                          f"missing ';' after {up}: MATIEC requires it")
+        if tok.kind == "ident" and up == "TYPE":
+            in_type = True
+        elif tok.kind == "ident" and up == "END_TYPE":
+            in_type = False
+        elif in_type and tok.text == "(" and k > 0 and tokens[k - 1].text == ":":
+            depth, j = 0, k
+            while j < len(tokens):
+                if tokens[j].text == "(":
+                    depth += 1
+                elif tokens[j].text == ")":
+                    depth -= 1
+                    if depth == 0:
+                        break
+                j += 1
+            if j + 1 >= len(tokens) or tokens[j + 1].text != ";":
+                close = tokens[min(j, len(tokens) - 1)]
+                raise StError(file, close.line, close.col + 1, "missing ';' after an enumeration's ')': MATIEC requires it")
+    return tokens

@@ -1,0 +1,46 @@
+"""Names an identifier of the library may not take (../shared/st-portable-subset.md, "Identifiers")."""
+
+C_KEYWORDS = {
+    "AUTO", "BREAK", "CASE", "CHAR", "CONST", "CONTINUE", "DEFAULT", "DO", "DOUBLE", "ELSE", "ENUM",
+    "EXTERN", "FLOAT", "FOR", "GOTO", "IF", "INLINE", "INT", "LONG", "REGISTER", "RESTRICT", "RETURN",
+    "SHORT", "SIGNED", "SIZEOF", "STATIC", "STRUCT", "SWITCH", "TYPEDEF", "UNION", "UNSIGNED", "VOID",
+    "VOLATILE", "WHILE", "BOOL", "CLASS", "NEW", "DELETE", "TEMPLATE", "THIS", "NAMESPACE", "OPERATOR",
+}
+
+# Upper-cased, these are macros of the C library or of MATIEC's headers: a member named so breaks the build.
+C_MACROS = {
+    "NULL", "EOF", "NAN", "INFINITY", "TRUE", "FALSE", "BUFSIZ", "ERRNO", "ASSERT", "STDIN", "STDOUT",
+    "STDERR", "INT_MAX", "INT_MIN", "UINT_MAX", "CHAR_BIT", "RAND_MAX", "EXIT_SUCCESS", "EXIT_FAILURE",
+    "HUGE_VAL", "FLT_MAX", "DBL_MAX", "M_PI", "SEEK_SET", "SEEK_CUR", "SEEK_END", "FILENAME_MAX",
+    "EN", "ENO",
+}
+
+STANDARD_FUNCTIONS = {
+    "ABS", "SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ADD", "MUL", "SUB",
+    "DIV", "MOD", "EXPT", "MOVE", "SHL", "SHR", "ROR", "ROL", "AND", "OR", "XOR", "NOT", "SEL", "MAX", "MIN",
+    "LIMIT", "MUX", "GT", "GE", "EQ", "LE", "LT", "NE", "LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT",
+    "REPLACE", "FIND", "TRUNC", "BCD_TO_INT", "INT_TO_BCD",
+}
+
+STANDARD_FB_NAMES = {"R_TRIG", "F_TRIG", "TON", "TOF", "TP", "SR", "RS", "CTU", "CTD", "CTUD", "RTC", "SEMA",
+                     "PID", "RAMP", "INTEGRAL", "DERIVATIVE", "HYSTERESIS"}
+
+TYPE_NAMES = {"BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
+              "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "STRING", "WSTRING", "DATE", "TOD",
+              "DT", "TIME_OF_DAY", "DATE_AND_TIME", "ANY", "ANY_INT", "ANY_REAL", "ANY_NUM", "ANY_BIT"}
+
+
+def reserved_reason(name):
+    """Why `name` may not be declared, or None when it may."""
+    up = name.upper()
+    if up in C_KEYWORDS:
+        return f"'{name}' is a C keyword in the generated code"
+    if up in C_MACROS:
+        return f"'{name}' upper-cased is a C macro or a name the generated code uses"
+    if up in STANDARD_FUNCTIONS:
+        return f"'{name}' is the name of a standard function"
+    if up in STANDARD_FB_NAMES:
+        return f"'{name}' is the name of a standard function block"
+    if up in TYPE_NAMES:
+        return f"'{name}' is the name of an elementary type"
+    return None

@@ -1,0 +1,200 @@
+"""The types of the portable subset and the C names MATIEC gives them."""
+
+
+class Type:
+    """Base of every ST type; `name` is the ST spelling, `cname` the C type name."""
+
+    kind = "?"
+
+    def __init__(self, name):
+        self.name = name
+        self.cname = name.upper()
+
+    def __repr__(self):
+        return self.name
+
+    # Classification used by the type rules.
+    is_bool = is_int = is_signed = is_bit = is_real = is_time = False
+    is_enum = is_array = is_struct = is_fb = False
+    bits = 0
+
+    @property
+    def is_elementary(self):
+        return self.is_bool or self.is_int or self.is_bit or self.is_real or self.is_time
+
+    @property
+    def is_numeric(self):
+        return self.is_int or self.is_real
+
+
+class Elementary(Type):
+    kind = "elementary"
+
+    def __init__(self, name, group, bits, signed=False):
+        super().__init__(name)
+        self.bits = bits
+        self.is_bool = group == "bool"
+        self.is_int = group == "int"
+        self.is_bit = group == "bit"
+        self.is_real = group == "real"
+        self.is_time = group == "time"
+        self.is_signed = signed
+
+    def int_range(self):
+        if self.is_signed:
+            return -(1 << (self.bits - 1)), (1 << (self.bits - 1)) - 1
+        return 0, (1 << self.bits) - 1
+
+
+ELEMENTARY = {
+    t.name: t
+    for t in [
+        Elementary("BOOL", "bool", 1),
+        Elementary("SINT", "int", 8, True),
+        Elementary("INT", "int", 16, True),
+        Elementary("DINT", "int", 32, True),
+        Elementary("USINT", "int", 8),
+        Elementary("UINT", "int", 16),
+        Elementary("UDINT", "int", 32),
+        Elementary("BYTE", "bit", 8),
+        Elementary("WORD", "bit", 16),
+        Elementary("DWORD", "bit", 32),
+        Elementary("REAL", "real", 32),
+        Elementary("LREAL", "real", 64),
+        Elementary("TIME", "time", 64),
+    ]
+}
+BOOL = ELEMENTARY["BOOL"]
+INT = ELEMENTARY["INT"]
+DINT = ELEMENTARY["DINT"]
+LREAL = ELEMENTARY["LREAL"]
+TIME = ELEMENTARY["TIME"]
+
+# Types IEC and the tools know but the portable subset leaves out, with the reason a refusal gives.
+OUTSIDE_SUBSET = {
+    "LINT": "64-bit integers are outside the portable subset",
+    "ULINT": "64-bit integers are outside the portable subset",
+    "LWORD": "64-bit bit strings are outside the portable subset",
+    "LTIME": "LTIME is outside the portable subset (MATIEC has no LTIME)",
+    "STRING": "STRING is not used in the library (sized strings differ between MATIEC and CODESYS)",
+    "WSTRING": "WSTRING is outside the portable subset",
+    "DATE": "DATE is outside the portable subset",
+    "TOD": "TIME_OF_DAY is outside the portable subset",
+    "TIME_OF_DAY": "TIME_OF_DAY is outside the portable subset",
+    "DT": "DATE_AND_TIME is outside the portable subset",
+    "DATE_AND_TIME": "DATE_AND_TIME is outside the portable subset",
+    "WCHAR": "WCHAR is outside the portable subset",
+    "CHAR": "CHAR is outside the portable subset",
+    "BIT": "BIT is outside the portable subset",
+    "__XWORD": "XWORD is outside the portable subset",
+}
+
+
+class AnyInt(Type):
+    """An untyped integer literal (or a folded expression of them): takes the type its context needs."""
+
+    kind = "anyint"
+
+    def __init__(self):
+        super().__init__("integer literal")
+
+
+class AnyReal(Type):
+    """An untyped REAL literal: becomes REAL or LREAL from its context."""
+
+    kind = "anyreal"
+
+    def __init__(self):
+        super().__init__("real literal")
+
+
+ANY_INT = AnyInt()
+ANY_REAL = AnyReal()
+
+
+class EnumType(Type):
+    kind = "enum"
+    is_enum = True
+
+    def __init__(self, name, values):
+        super().__init__(name)
+        self.values = values  # ST spellings, in order
+
+    def cvalue(self, value):
+        return f"{self.cname}__{value.upper()}"
+
+
+class ArrayType(Type):
+    kind = "array"
+    is_array = True
+
+    def __init__(self, name, low, high, elem):
+        super().__init__(name)
+        self.low = low
+        self.high = high
+        self.elem = elem
+
+
+class StructType(Type):
+    kind = "struct"
+    is_struct = True
+
+    def __init__(self, name):
+        super().__init__(name)
+        self.members = []  # list of Var
+
+
+class Var:
+    """A declared variable: a POU's interface or private variable, or a struct member."""
+
+    def __init__(self, name, section, type_, init, node, constant=False):
+        self.name = name
+        self.cname = name.upper()
+        self.section = section  # input, output, inout, var, temp, member
+        self.type = type_
+        self.init = init  # blark literal node or None
+        self.node = node
+        self.constant = constant
+
+
+class FbType(Type):
+    """A function block type: a user FUNCTION_BLOCK or one of the standard FBs."""
+
+    kind = "fb"
+    is_fb = True
+
+    def __init__(self, name, standard=False):
+        super().__init__(name)
+        self.vars = []
+        self.standard = standard
+        self.pou = None
+
+    def var(self, name):
+        up = name.upper()
+        for v in self.vars:
+            if v.cname == up:
+                return v
+        return None
+
+
+def _standard_fbs():
+    fbs = {}
+    for name in ("R_TRIG", "F_TRIG"):
+        fb = FbType(name, standard=True)
+        fb.vars = [Var("CLK", "input", BOOL, None, None), Var("Q", "output", BOOL, None, None),
+                   Var("M", "var", BOOL, None, None)]
+        fbs[name] = fb
+    for name in ("TON", "TOF", "TP"):
+        fb = FbType(name, standard=True)
+        fb.vars = [Var("IN", "input", BOOL, None, None), Var("PT", "input", TIME, None, None),
+                   Var("Q", "output", BOOL, None, None), Var("ET", "output", TIME, None, None),
+                   Var("STATE", "var", ELEMENTARY["SINT"], None, None), Var("PREV_IN", "var", BOOL, None, None),
+                   Var("CURRENT_TIME", "var", TIME, None, None), Var("START_TIME", "var", TIME, None, None)]
+        fbs[name] = fb
+    return fbs
+
+
+STANDARD_FBS = _standard_fbs()
+
+# Standard FBs whose pin names differ between MATIEC and CODESYS/TwinCAT: refused with that reason.
+NONPORTABLE_FBS = {"SR", "RS", "CTU", "CTD", "CTUD"}
