@@ -1,0 +1,95 @@
+// Every snippet in refuse/ must be refused by `pacst check` at the position and for the reason its
+// first line names: (* expect-error: LINE:COL: words of the message *).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "translator_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Expectation {
+    int line = 0;
+    int col = 0;
+    std::string words;
+};
+
+Expectation ReadExpectation(const fs::path& file) {
+    std::ifstream in(file);
+    std::string first;
+    std::getline(in, first);
+    static const std::regex pattern(R"(\(\*\s*expect-error:\s*(\d+):(\d+):\s*(.*?)\s*\*\))");
+    std::smatch m;
+    if (!std::regex_search(first, m, pattern)) {
+        ADD_FAILURE() << file << ": first line must be (* expect-error: LINE:COL: words *)";
+        return {};
+    }
+    return {std::stoi(m[1]), std::stoi(m[2]), m[3]};
+}
+
+std::vector<std::string> RefuseFiles() {
+    std::vector<std::string> files;
+    for (const auto& entry : fs::directory_iterator(PACST_REFUSE_DIR)) {
+        if (entry.path().extension() == ".st") files.push_back(entry.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// One translator run checks every snippet on its own; the tests read their part of its output.
+const std::map<std::string, std::vector<std::string>>& ErrorsByFile() {
+    static const std::map<std::string, std::vector<std::string>> errors = [] {
+        std::vector<std::string> args = {"check", "--separately"};
+        for (const auto& f : RefuseFiles()) args.push_back(f);
+        auto result = pac::test::RunTranslator(args);
+        std::map<std::string, std::vector<std::string>> byFile;
+        std::istringstream lines(result.output);
+        std::string line;
+        while (std::getline(lines, line)) {
+            auto colon = line.find(".st:");
+            if (colon != std::string::npos) byFile[line.substr(0, colon + 3)].push_back(line);
+        }
+        return byFile;
+    }();
+    return errors;
+}
+
+class Refuse : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Refuse, AtPositionWithReason) {
+    const std::string file = GetParam();
+    const Expectation want = ReadExpectation(file);
+    const auto& all = ErrorsByFile();
+    auto it = all.find(file);
+    ASSERT_NE(it, all.end()) << file << " was accepted, but must be refused: " << want.words;
+    const std::string& first = it->second.front();
+    const std::string prefix = file + ":" + std::to_string(want.line) + ":" + std::to_string(want.col) + ": error: ";
+    EXPECT_EQ(first.rfind(prefix, 0), 0u) << "expected the error at " << want.line << ":" << want.col
+                                          << ", got: " << first;
+    EXPECT_NE(first.find(want.words), std::string::npos) << "expected '" << want.words << "' in: " << first;
+}
+
+std::string NameOf(const ::testing::TestParamInfo<std::string>& info) {
+    std::string stem = fs::path(info.param).stem().string();
+    for (char& c : stem) {
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    }
+    return stem;
+}
+
+INSTANTIATE_TEST_SUITE_P(Snippets, Refuse, ::testing::ValuesIn(RefuseFiles()), NameOf);
+
+TEST(RefuseSuite, HasEnoughSnippets) {
+    EXPECT_GE(RefuseFiles().size(), 30u);
+}
+
+}  // namespace
