@@ -104,8 +104,7 @@ function(pac_st_library target)
     configure_file("${out}/unit.c.in" "${out}/unit.c" COPYONLY)
     add_library(${target} STATIC "${out}/unit.c")
     set_source_files_properties("${out}/unit.c" PROPERTIES OBJECT_DEPENDS "${out}/POUS.c")
-    target_include_directories(${target} PUBLIC "${out}" "${MATIEC_LIB}/C"
-                               "${PROJECT_SOURCE_DIR}/runtime/matiec")
+    target_include_directories(${target} PUBLIC "${out}" "${MATIEC_LIB}/C")
   endif()
   # IEC integer overflow wraps; C only promises that with -fwrapv.
   target_compile_options(${target} PRIVATE -fwrapv -Wno-unused-function -Wno-unused-variable

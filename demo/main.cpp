@@ -2,7 +2,7 @@
 // prints a timeline of every scan in which an output changed.
 #include <cstdio>
 
-#include "POUS.h"
+#include "pac/st_program.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/plc_task.hpp"
 #include "pac/sim_clock.hpp"

@@ -30,8 +30,9 @@ inline TIME ToIecTime(std::chrono::nanoseconds t) {
         --sec;
     }
     TIME out{};
-    out.tv_sec = static_cast<long>(sec);
-    out.tv_nsec = static_cast<long>(nsec);
+    // The member types differ between interfaces (long/long here, int64/int32 in newer MATIEC).
+    out.tv_sec = static_cast<decltype(out.tv_sec)>(sec);
+    out.tv_nsec = static_cast<decltype(out.tv_nsec)>(nsec);
     return out;
 }
 
