@@ -38,6 +38,7 @@ Expectation ReadExpectation(const fs::path& file) {
 
 std::vector<std::string> RefuseFiles() {
     std::vector<std::string> files;
+    if (!fs::is_directory(PACST_REFUSE_DIR)) return files;  // HasEnoughSnippets reports it
     for (const auto& entry : fs::directory_iterator(PACST_REFUSE_DIR)) {
         if (entry.path().extension() == ".st") files.push_back(entry.path().string());
     }
