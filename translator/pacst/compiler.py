@@ -224,6 +224,8 @@ class Compiler:
         cls = _cls(spec)
         if cls in ("SimpleSpecification", "DataType"):
             tok = spec.type if cls == "SimpleSpecification" else spec.type_name
+            if _cls(tok) == "StringTypeSpecification":  # STRING[10], WSTRING
+                raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
@@ -262,8 +264,11 @@ class Compiler:
             if low > high:
                 raise self.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
             if _cls(spec.type) != "DataType":
-                raise self.err(spec, "inline array of array: declare the inner array as a named type")
-            elem = self._spec_type(spec.type, allow_fb=False)
+                raise self.err(spec.type, "inline array of array: declare the inner array as a named type")
+            elem = self._spec_type(spec.type, allow_fb=True)
+            if elem.is_fb:
+                raise self.err(spec.type, f"array of function block instances ({elem.name}) is outside the "
+                                          "portable subset: declare the instances one by one")
             t = T.ArrayType(_name(decl.name), low, high, elem)
         elif cls == "StructureTypeDeclaration":
             self._declare_global(decl.name, "type")
@@ -376,8 +381,11 @@ class Compiler:
         cls = _cls(block)
         section = self._SECTIONS.get(cls)
         if section is None:
-            raise self.err(block, f"{cls.replace('Declarations', ' declarations')} are outside the portable "
-                                  "subset (VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR CONSTANT, VAR_TEMP)")
+            keyword = {"StaticDeclarations": "VAR_STAT", "MethodInstanceVariableDeclarations": "VAR_INST",
+                       "ExternalVariableDeclarations": "VAR_EXTERNAL", "AccessDeclarations": "VAR_ACCESS"}.get(
+                           cls, cls.replace("Declarations", " declarations"))
+            raise self.err(block, f"{keyword} is outside the portable subset (VAR, VAR_INPUT, VAR_OUTPUT, "
+                                  "VAR_IN_OUT, VAR CONSTANT, VAR_TEMP)")
         constant = False
         attrs = getattr(block, "attrs", None)
         if attrs is not None:
@@ -390,10 +398,15 @@ class Compiler:
         for item in block.items:
             if _cls(item) != "VariableOneInitDeclaration":
                 if _cls(item) == "ArrayVariableInitDeclaration":
-                    raise self.err(item, "inline ARRAY declaration: declare a named array type")
+                    spec = getattr(item.init, "spec", None)
+                    if any(_cls(sub) == "FullSubrange" for sub in getattr(spec, "subranges", [])):
+                        raise self.err(item.init, "ARRAY[*] is outside the portable subset: declare a named "
+                                                  "array type with literal bounds")
+                    raise self.err(item.init, "inline ARRAY declaration: declare a named array type")
                 if _cls(item) == "StructuredVariableInitDeclaration":
-                    raise self.err(item, "(member := value) initialisers are outside the portable subset: "
-                                         "give defaults in the TYPE or in code")
+                    raise self.err(getattr(item.init, "init", item),
+                                   "(member := value) initialisers are outside the portable subset: "
+                                   "give defaults in the TYPE or in code")
                 if _cls(item) == "EdgeDeclaration":
                     raise self.err(item, "R_EDGE/F_EDGE declarations are outside the portable subset")
                 raise self.err(item, f"{_cls(item)} is outside the portable subset")
@@ -537,7 +550,9 @@ class ExprCompiler:
             t = b.type
         else:
             t = a.type
-        return t, self.coerce(a, t, node, "operand"), self.coerce(b, t, node, "operand")
+        # A mismatch is reported at the operand that does not fit (a binary operation has left/right).
+        left, right = getattr(node, "left", node), getattr(node, "right", node)
+        return t, self.coerce(a, t, left, "operand"), self.coerce(b, t, right, "operand")
 
     # ------------------------------------------------------------------ expressions
     def expr(self, node, want=None):
@@ -644,7 +659,7 @@ class ExprCompiler:
     def _e_BinaryOperation(self, node, want):
         op = str(node.op).upper()
         if op in ("AND_THEN", "OR_ELSE"):
-            raise self.err(node, f"{op} is a CODESYS/TwinCAT extension outside the portable subset")
+            raise self.err(node.op, f"{op} is a CODESYS/TwinCAT extension outside the portable subset")
         if op == "&":
             op = "AND"
         if op in ("+", "-", "*", "/", "MOD"):
@@ -660,20 +675,24 @@ class ExprCompiler:
         b = self.expr(node.right, want)
         if a.type is T.ANY_INT and b.type is T.ANY_INT:
             return TE(T.ANY_INT, value=self._fold(node, op, a.value, b.value))
+        # The operator's own rules come before the operands' types must agree (W + I is refused for the
+        # WORD, T * N for the TIME), and are reported at the operator.
+        for te in (a, b):
+            if te.type.is_time and op not in ("+", "-"):
+                raise self.err(node.op, f"TIME {op}: TIME only adds and subtracts (MATIEC overflows otherwise)")
+            if te.type.is_bit:
+                raise self.err(node.op, f"arithmetic on {te.type.name}: bit strings have no arithmetic; convert "
+                                        "to an integer type first")
         t, ca, cb = self.unify(a, b, want, node)
         if t.is_time:
             if op == "+":
                 return TE(t, f"__time_add({ca}, {cb})")
             if op == "-":
                 return TE(t, f"__time_sub({ca}, {cb})")
-            raise self.err(node, f"TIME {op}: TIME only adds and subtracts (MATIEC overflows otherwise)")
-        if t.is_bit:
-            raise self.err(node, f"arithmetic on {t.name}: bit strings have no arithmetic; convert to an "
-                                 "integer type first")
         if not t.is_numeric:
-            raise self.err(node, f"arithmetic on {t.name}")
+            raise self.err(node.op, f"arithmetic on {t.name}")
         if op == "MOD" and not t.is_int:
-            raise self.err(node, "MOD needs integer operands")
+            raise self.err(node.op, "MOD needs integer operands")
         if t.is_real:
             return TE(t, f"(({t.cname})({ca} {op} {cb}))")
         if op == "/":
@@ -699,13 +718,13 @@ class ExprCompiler:
         b = self.expr(node.right)
         for side, te in ((node.left, a), (node.right, b)):
             if te.narrow:
-                raise self.err(side, f"comparison of a {te.type.name} arithmetic, NOT or shift result: "
+                raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
-            raise self.err(node, f"{t.name} values cannot be compared")
+            raise self.err(node.op, f"{t.name} values cannot be compared")
         if op not in ("=", "<>") and (t.is_bool or t.is_enum):
-            raise self.err(node, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
+            raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
@@ -714,7 +733,10 @@ class ExprCompiler:
         a = self.expr(node.left, want)
         b = self.expr(node.right, want)
         if a.type is T.ANY_INT and b.type is T.ANY_INT and (want is None or not want.is_bit):
-            raise self.err(node, f"{op} of two integer literals: give one a type (WORD#16#FF)")
+            raise self.err(node.op, f"{op} of two integer literals: give one a type (WORD#16#FF)")
+        for te in (a, b):  # INT AND BOOL is refused for the INT, at the operator
+            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit):
+                raise self.err(node.op, f"{op} on {te.type.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
         t, ca, cb = self.unify(a, b, want, node)
         if t.is_bool:
             c_op = {"AND": "&&", "OR": "||", "XOR": "!="}[op]
@@ -722,7 +744,7 @@ class ExprCompiler:
         if t.is_bit:
             c_op = {"AND": "&", "OR": "|", "XOR": "^"}[op]
             return TE(t, f"(({t.cname})({ca} {c_op} {cb}))")
-        raise self.err(node, f"{op} on {t.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
+        raise self.err(node.op, f"{op} on {t.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
 
     # ------------------------------------------------------------------ calls
     def _e_FunctionCall(self, node, want):
@@ -851,7 +873,7 @@ class ExprCompiler:
             if len(positional) != len(inputs) or any(v.section == "inout" for v in interface):
                 raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
             for v, p in zip(inputs, positional):
-                given[v.cname] = p
+                given[v.cname] = p.value
         else:
             for p in node.parameters:
                 pname = _name(p.name.name)
@@ -874,7 +896,7 @@ class ExprCompiler:
             if v.section == "input":
                 if arg is None:
                     args.append(self.comp.default_c(v.type) if v.type.is_elementary or v.type.is_enum
-                                else f"({v.type.cname}){{0}}")
+                                else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
                     if v.init is not None:
                         args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
                 else:
@@ -927,6 +949,8 @@ class BodyCompiler:
         if v is None:
             if up in self.comp.enum_values:
                 raise self.err(token, f"enumeration value '{name}' cannot be written")
+            if up in self.comp.types:
+                raise self.err(token, f"'{name}' is a type, not a variable")
             raise self.err(token, f"undeclared name '{name}'")
         writable, why = True, ""
         if v.constant:
@@ -947,6 +971,10 @@ class BodyCompiler:
             raise self.err(node, "a variable is expected here")
         if node.dereferenced or node.name.dereferenced:
             raise self.err(node, "pointers are outside the portable subset")
+        root = _name(node.name.name).upper()
+        if self.pou.var(root) is None and root in self.comp.types and self.comp.types[root].is_enum:
+            raise self.err(node, "qualified enumeration value: write the value alone (E.A and E#A are not "
+                                 "accepted by every tool)")
         r = self._root(node.name.name)
         for el in node.elements:
             ecls = _cls(el)
@@ -1090,19 +1118,24 @@ class BodyCompiler:
 
     def _case_label(self, node, sel_type):
         cls = _cls(node)
+        # blark parses a name as a CASE label into an EnumeratedValue (E#A and E.A included).
+        label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
+        if cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
+            raise self.err(node, "qualified enumeration value: write the value alone (E#A and E.A are not "
+                                 "accepted by every tool)")
         if sel_type.is_enum:
-            if cls != "SimpleVariable" or _name(node.name).upper() not in self.comp.enum_values:
+            if label is None or label.upper() not in self.comp.enum_values:
                 raise self.err(node, f"CASE label must be a value of {sel_type.name}")
-            et = self.comp.enum_values[_name(node.name).upper()]
+            et = self.comp.enum_values[label.upper()]
             if et is not sel_type:
-                raise self.err(node, f"'{_name(node.name)}' is a value of {et.name}, not of {sel_type.name}")
-            return et.values.index(next(v for v in et.values if v.upper() == _name(node.name).upper()))
+                raise self.err(node, f"'{label}' is a value of {et.name}, not of {sel_type.name}")
+            return et.values.index(next(v for v in et.values if v.upper() == label.upper()))
         negative = False
         if cls == "UnaryOperation" and str(node.op) == "-":
             negative, node, cls = True, node.expr, _cls(node.expr)
         if cls in ("HexInteger", "BinaryInteger", "OctalInteger") or cls in _BIT_LITERALS:
             raise self.err(node, "CASE labels must be decimal literals (MATIEC)")
-        if cls == "SimpleVariable":
+        if label is not None:
             raise self.err(node, "CASE labels must be decimal literals, not named constants (MATIEC)")
         if cls != "Integer" or node.type_name is not None:
             raise self.err(node, "CASE labels must be decimal literals")

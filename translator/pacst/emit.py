@@ -51,6 +51,12 @@ class Emitter:
             for m in t.members:
                 out += ["  " + line for line in self.comp.init_code(m, f"v->{m.cname}")]
         out.append("}")
+        if t.is_struct:  # the value an omitted struct input of a FUNCTION takes
+            out.append(f"static inline {t.cname} __pacst_default_{t.cname}(void) {{")
+            out.append(f"  {t.cname} v;")
+            out.append(f"  __pacst_init_{t.cname}(&v);")
+            out.append("  return v;")
+            out.append("}")
         return out
 
     def _pou_decl(self, pou):
@@ -128,6 +134,11 @@ class Emitter:
             if v.section == "var":
                 out += ["  " + line for line in self.comp.init_code(v, v.cname)]
         out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", f"    return {pou.cname};", "  }"]
+        # A FUNCTION's outputs are local to the call (IEC): they start from their initial value in every
+        # call, and one left unassigned gives that value to the caller, as MATIEC's copy-out does.
+        for v in pou.vars:
+            if v.section == "output":
+                out += ["  " + line for line in self.comp.init_code(v, f"(*{v.cname})")]
         out += pou.body_c
         out += ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", f"  return {pou.cname};", "}", ""]
         return out

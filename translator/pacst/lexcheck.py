@@ -14,6 +14,10 @@ _TIME_PREFIX = {"T", "TIME", "LT", "LTIME", "D", "DATE", "TOD", "TIME_OF_DAY", "
 _NEEDS_SEMICOLON = {"END_IF", "END_CASE", "END_WHILE", "END_REPEAT", "END_FOR", "END_STRUCT"}
 _EMPTY_BEFORE = {";", "THEN", "ELSE", "DO", "REPEAT", ":"}
 _PUNCT2 = (":=", "=>", "<=", ">=", "<>", "..", "**")
+# A branch or loop body that one of these opens must not end at once (MATIEC needs a statement).
+_OPENS_BRANCH = {"THEN": "THEN branch", "ELSE": "ELSE branch", "DO": "loop body", "REPEAT": "loop body",
+                 ":": "CASE branch"}
+_ENDS_BRANCH = {"ELSE", "ELSIF", "END_IF", "END_CASE", "END_WHILE", "END_FOR", "UNTIL"}
 
 
 class _Token:
@@ -99,6 +103,9 @@ def tokenize(text, file):
                         text, m.end())
                     if lit and (lit.group(0)[1:2].isdigit() or lit.group(0)[1:2] == "-"):
                         _check_underscores(lit.group(0)[1:].lstrip("-"), file, line, col)
+                    elif lit and word.upper() != "BOOL":  # E_Mode#MODE_RUN (BOOL#TRUE is a typed literal)
+                        raise StError(file, line, col, f"qualified enumeration value '{text[i:lit.end()]}': write "
+                                                       "the value alone (E#A and E.A are not accepted by every tool)")
                 end = lit.end() if lit else m.end() + 1
                 tokens.append(_Token("literal", text[i:end], line, col))
                 advance(end)
@@ -133,9 +140,30 @@ def check(text, file):
     """Raise StError for the first lexical rule of the portable subset that `text` breaks."""
     tokens = tokenize(text, file)
     in_type = False
+    type_depth = 0  # STRUCT/UNION and parentheses open inside the current TYPE block
+    pou = None  # the keyword that opened the current POU
     for k, tok in enumerate(tokens):
         up = tok.upper if tok.kind == "ident" else tok.text
         nxt = tokens[k + 1] if k + 1 < len(tokens) else None
+        nxt_up = (nxt.upper if nxt.kind == "ident" else nxt.text) if nxt is not None else None
+        if tok.kind == "punct" and tok.text == "**":
+            raise StError(file, tok.line, tok.col, "'**' is not supported (blark has no exponent operator and "
+                                                   "pacst no EXPT): multiply, or write a loop")
+        if up in _OPENS_BRANCH and nxt is not None and nxt.kind == "ident" and nxt_up in _ENDS_BRANCH:
+            raise StError(file, nxt.line, nxt.col, f"empty {_OPENS_BRANCH[up]}: MATIEC needs at least one "
+                                                   f"statement before {nxt_up}")
+        if tok.kind == "ident" and up in ("FUNCTION", "FUNCTION_BLOCK", "PROGRAM", "END_FUNCTION",
+                                          "END_FUNCTION_BLOCK", "END_PROGRAM"):
+            pou = None if up.startswith("END_") else up
+        if tok.kind == "ident" and up == "VAR_TEMP" and pou == "FUNCTION":
+            raise StError(file, tok.line, tok.col, "a FUNCTION has no VAR_TEMP in the portable subset: use VAR")
+        if in_type and type_depth == 0 and tok.text == ";" and nxt is not None and nxt_up != "END_TYPE":
+            raise StError(file, nxt.line, nxt.col, "a second type in one TYPE block: write one type per "
+                                                   "TYPE ... END_TYPE (TwinCAT and blark expect it)")
+        if in_type and (up in ("STRUCT", "UNION") or tok.text == "("):
+            type_depth += 1
+        elif in_type and (up in ("END_STRUCT", "END_UNION") or tok.text == ")"):
+            type_depth -= 1
         if tok.kind == "punct" and tok.text == ";" and k > 0:
             prev = tokens[k - 1]
             prev_text = prev.upper if prev.kind == "ident" else prev.text
@@ -145,7 +173,7 @@ def check(text, file):
             raise StError(file, tok.line, tok.col + len(tok.text),
                           f"missing ';' after {up}: MATIEC requires it")
         if tok.kind == "ident" and up == "TYPE":
-            in_type = True
+            in_type, type_depth = True, 0
         elif tok.kind == "ident" and up == "END_TYPE":
             in_type = False
         elif in_type and tok.text == "(" and k > 0 and tokens[k - 1].text == ":":
@@ -158,6 +186,10 @@ def check(text, file):
                     if depth == 0:
                         break
                 j += 1
+            if j + 2 < len(tokens) and tokens[j + 1].kind == "ident" and tokens[j + 2].text == ";":
+                base = tokens[j + 1]
+                raise StError(file, base.line, base.col, f"enumeration with base type {base.text}: the portable "
+                                                         "subset has plain value lists without base type")
             if j + 1 >= len(tokens) or tokens[j + 1].text != ";":
                 close = tokens[min(j, len(tokens) - 1)]
                 raise StError(file, close.line, close.col + 1, "missing ';' after an enumeration's ')': MATIEC requires it")

@@ -7,6 +7,7 @@ of its text and the versions of blark and of this cache format.
 import hashlib
 import os
 import pickle
+import re
 import tempfile
 
 import blark
@@ -25,7 +26,14 @@ def _cache_key(text):
     return h.hexdigest()
 
 
-def _syntax_error(exc, file):
+def _expected_keywords(exc):
+    """The keywords (blark's `_THEN`-style terminals) the parser would have taken, when there are few."""
+    names = getattr(exc, "expected", None) or getattr(exc, "allowed", None) or ()
+    words = sorted(n[1:] for n in names if re.fullmatch(r"_[A-Z][A-Z_]*", n))
+    return f": expected {' or '.join(words)}" if 0 < len(words) <= 3 else ""
+
+
+def _syntax_error(exc, file, text=""):
     line = getattr(exc, "line", None) or 1
     col = getattr(exc, "column", None) or 1
     token = getattr(exc, "token", None)
@@ -33,9 +41,12 @@ def _syntax_error(exc, file):
         return StError(file, line, col, "syntax error: unexpected end of file")
     found = f" at '{token}'" if token not in (None, "") else ""
     if not found:
-        char = getattr(exc, "char", None)
+        # The lexer stopped at one character: name the whole word that starts there.
+        at = getattr(exc, "pos_in_stream", None)
+        m = re.compile(r"[A-Za-z_][A-Za-z0-9_]*").match(text, at) if at is not None else None
+        char = m.group(0) if m else getattr(exc, "char", None)
         found = f" at '{char}'" if char else ""
-    return StError(file, line, col, f"syntax error{found}")
+    return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}")
 
 
 class SourceFile:
@@ -65,7 +76,7 @@ def parse_file(path, cache_dir=None):
             pass
     result = parse_source_code(text, fn=path)
     if result.exception is not None:
-        raise _syntax_error(result.exception, path)
+        raise _syntax_error(result.exception, path, text)
     tree = result.transform()
     if cached:
         os.makedirs(cache_dir, exist_ok=True)
