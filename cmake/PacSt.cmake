@@ -108,6 +108,6 @@ function(pac_st_library target)
   endif()
   # IEC integer overflow wraps; C only promises that with -fwrapv.
   target_compile_options(${target} PRIVATE -fwrapv -Wno-unused-function -Wno-unused-variable
-                         -Wno-unused-parameter -Wno-unused-label)
+                         -Wno-unused-parameter -Wno-unused-label -Wno-type-limits)
   target_link_libraries(${target} PUBLIC m)
 endfunction()

@@ -804,6 +804,8 @@ class ExprCompiler:
                                      "CODESYS milliseconds)")
             if tname not in _CONVERTIBLE:
                 raise self.err(node, f"unknown conversion {src}_TO_{dst}")
+        if src == dst:
+            raise self.err(node, f"{src}_TO_{dst} converts nothing and is not a standard function (MATIEC)")
         (arg,) = self._positional(node, 1, ["IN"])
         st, dt = T.ELEMENTARY[src], T.ELEMENTARY[dst]
         te = self.expr(arg, st)

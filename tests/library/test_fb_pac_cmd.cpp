@@ -1,0 +1,234 @@
+// FB_PAC_Cmd against hand-written PA-CONTROL replies, scan by scan: the handshake rules of manual
+// 2.4.2 and the PLCopen output rules, each at the exact scan it must happen in.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+
+#include "pac/fb_instance.hpp"
+#include "pac/scan_test.hpp"
+#include "pac/st_program.hpp"
+
+namespace {
+
+using Image = std::array<std::uint8_t, 8>;
+
+constexpr std::uint16_t kErrAckTimeout = 0x8001;
+constexpr std::uint16_t kErrNotReady = 0x8003;
+constexpr std::uint16_t kErrConnectionLost = 0x8004;
+constexpr std::uint16_t kErrInvalidCode = 0x8005;
+
+// A reply of the PA-CONTROL (2.4.2): acknowledgement data, FE + operating status, RF KF BF + error number.
+Image Reply(bool rf, bool kf, bool bf, std::uint16_t errorNumber = 0, std::uint8_t status = 1,
+            std::uint32_t data = 0, bool fe = false) {
+    std::uint16_t word3 = static_cast<std::uint16_t>((rf ? 0x8000 : 0) | (kf ? 0x4000 : 0) | (bf ? 0x2000 : 0) |
+                                                     (errorNumber & 0x1FFF));
+    return {static_cast<std::uint8_t>(data >> 24), static_cast<std::uint8_t>(data >> 16),
+            static_cast<std::uint8_t>(data >> 8),  static_cast<std::uint8_t>(data),
+            static_cast<std::uint8_t>(fe ? 0x80 : 0), status,
+            static_cast<std::uint8_t>(word3 >> 8), static_cast<std::uint8_t>(word3)};
+}
+
+class FbPacCmd : public pac::ScanTest {
+protected:
+    FbPacCmd() {
+        fromPac_ = Reply(false, false, true);
+        task_.AddProgram([this] {
+            for (int i = 0; i < 8; ++i) cmd_->FROMPAC.value.table[i] = fromPac_[i];
+            cmd_();
+            for (int i = 0; i < 8; ++i) toPac_[i] = cmd_->TOPAC.value.table[i];
+            CheckExclusiveOutputs();
+        });
+    }
+
+    void Request(std::uint16_t code, std::uint16_t param, std::uint32_t data, bool execute = true) {
+        cmd_->CODE.value = code;
+        cmd_->PARAM.value = param;
+        cmd_->DATA.value = data;
+        cmd_->EXECUTE.value = execute;
+    }
+
+    bool SendFlag() const { return (toPac_[6] & 0x80) != 0; }
+    bool Done() const { return cmd_->DONE.value != 0; }
+    bool Busy() const { return cmd_->BUSY.value != 0; }
+    bool Error() const { return cmd_->ERROR.value != 0; }
+
+    void CheckExclusiveOutputs() {
+        int finals = Done() + Busy() + Error();
+        EXPECT_LE(finals, 1) << "Busy, Done and Error at once in scan " << task_.ScanCount();
+    }
+
+    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
+    Image fromPac_{};
+    Image toPac_{};
+};
+
+TEST_F(FbPacCmd, IdleModuleIsNeverAllZero) {
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B}));
+    EXPECT_FALSE(Busy());
+    EXPECT_EQ(cmd_->OPSTATUS.value, 1);
+}
+
+TEST_F(FbPacCmd, EdgeWritesCommandAndToggledSendFlagInTheSameScan) {
+    Cycle(2);
+    Request(0x0906, 3, 333);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0x00, 0x00, 0x01, 0x4D, 0x00, 0x03, 0x89, 0x06}));
+    EXPECT_TRUE(Busy());
+    EXPECT_FALSE(cmd_->ACKNOWLEDGED.value);
+}
+
+TEST_F(FbPacCmd, DoneInTheFirstScanThatShowsTheAcknowledgement) {
+    Request(0x1906, 2, 0);
+    Cycle(1);
+    ASSERT_TRUE(SendFlag());
+    Cycle(3);  // the controller has not answered yet
+    EXPECT_TRUE(Busy());
+    fromPac_ = Reply(true, false, true, 0, 1, 12345678);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+    EXPECT_TRUE(cmd_->ACKNOWLEDGED.value);
+    EXPECT_EQ(cmd_->ACKDATA.value, 12345678u);
+    EXPECT_EQ(cmd_->ERRORID.value, 0);
+}
+
+TEST_F(FbPacCmd, CommandErrorPassesThePacErrorNumberUnchanged) {
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, true, false, 43);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, 43);
+    EXPECT_TRUE(cmd_->ACKNOWLEDGED.value);
+}
+
+TEST_F(FbPacCmd, LongCommandStaysBusyAcknowledgedUntilEndOfProcessing) {
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(1);
+    EXPECT_TRUE(Busy());
+    EXPECT_TRUE(cmd_->ACKNOWLEDGED.value);
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x40000000u);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40A00000);
+    Cycle(1);
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x40A00000u);  // follows the position
+    fromPac_ = Reply(true, false, true, 0, 31, 0x41200000);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x41200000u);
+}
+
+TEST_F(FbPacCmd, NoAcknowledgementWithinTimeoutIsAnError) {
+    cmd_->TIMEOUT.value = TIME{0, 10'000'000};
+    Request(0x1906, 1, 0);
+    Cycle(1);  // edge at t = 1 ms
+    Cycle(9);
+    EXPECT_TRUE(Busy()) << "t = 10 ms: 9 ms elapsed";
+    Cycle(1);
+    EXPECT_TRUE(Error()) << "t = 11 ms: 10 ms elapsed";
+    EXPECT_EQ(cmd_->ERRORID.value, kErrAckTimeout);
+}
+
+TEST_F(FbPacCmd, FinalOutputHoldsWhileExecuteAndClearsWhenItFalls) {
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    fromPac_ = Reply(true, false, true);
+    Cycle(5);
+    EXPECT_TRUE(Done());
+    cmd_->EXECUTE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Done());
+    EXPECT_FALSE(cmd_->ACKNOWLEDGED.value);
+}
+
+TEST_F(FbPacCmd, DoneShowsForExactlyOneScanWhenExecuteFellEarly) {
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    cmd_->EXECUTE.value = FALSE;
+    Cycle(2);
+    EXPECT_TRUE(Busy());
+    fromPac_ = Reply(true, false, true);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+    Cycle(1);
+    EXPECT_FALSE(Done());
+    EXPECT_FALSE(Busy());
+}
+
+TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    cmd_->EXECUTE.value = FALSE;
+    Cycle(1);
+    Request(0x0906, 7, 99);
+    Cycle(1);
+    EXPECT_TRUE(SendFlag()) << "no second toggle";
+    EXPECT_EQ(toPac_[7], 0x06) << "still the first command's code";
+    EXPECT_EQ(toPac_[5], 1);
+}
+
+TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagAfterRestart) {
+    fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
+    Cycle(1);
+    EXPECT_TRUE(SendFlag()) << "synchronised, no toggle: no spurious command";
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    EXPECT_FALSE(SendFlag()) << "the next command toggles from the synchronised state";
+    fromPac_ = Reply(false, false, true, 0, 1, 5);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+}
+
+TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
+    fromPac_ = Reply(true, false, true);
+    Cycle(1);
+    Request(0x1906, 1, 0);
+    Cycle(1);  // SEND toggles to 0
+    ASSERT_FALSE(SendFlag());
+    fromPac_ = Reply(false, false, false, 0, 0);  // rebooting: status 0, RF = 0
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
+}
+
+TEST_F(FbPacCmd, ControllerNotReadyRefusesTheCommandAndSendsNothing) {
+    fromPac_ = Reply(false, false, false, 0, 0);
+    Cycle(1);
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrNotReady);
+    EXPECT_FALSE(SendFlag());
+}
+
+TEST_F(FbPacCmd, CodeWithBit15IsRefusedAndNothingIsSent) {
+    Request(0x9906, 1, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrInvalidCode);
+    EXPECT_FALSE(SendFlag());
+    EXPECT_EQ(toPac_[7], 0x0B);
+}
+
+TEST_F(FbPacCmd, GoodCommandAfterCommandError) {
+    Request(0x1906, 99, 0);
+    Cycle(1);
+    fromPac_ = Reply(true, true, false, 4);
+    Cycle(1);
+    ASSERT_TRUE(Error());
+    cmd_->EXECUTE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, 0);
+    Request(0x1906, 2, 0);
+    Cycle(1);
+    EXPECT_FALSE(SendFlag());
+    fromPac_ = Reply(false, false, true, 0, 1, 7);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+    EXPECT_EQ(cmd_->ACKDATA.value, 7u);
+}
+
+}  // namespace
