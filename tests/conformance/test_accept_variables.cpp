@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
@@ -119,6 +120,22 @@ TEST(ConformanceVariables, ForcedMembersAreNotWritten) {
     EXPECT_EQ(fb->FORCED.value, 7);
     EXPECT_EQ(fb->COPY.value, 7);
     EXPECT_EQ(fb->HIDDEN.value, 107);
+}
+
+}  // namespace
+
+namespace {
+
+std::string AsText(const STRING& s) { return std::string(reinterpret_cast<const char*>(s.body), s.len); }
+
+TEST(ConformanceStrings, LiteralsEscapesAndComparisons) {
+    auto fb = PAC_FB(CONF_STRINGBASIC);
+    EXPECT_EQ(AsText(fb->TAB.value), "a\tb");
+    EXPECT_EQ(AsText(fb->EMPTY.value), "");
+    fb();
+    EXPECT_EQ(AsText(fb->TEXT.value), "Good 'day' $1");
+    EXPECT_TRUE(fb->SAME.value);
+    EXPECT_FALSE(fb->DIFFERENT.value);
 }
 
 }  // namespace

@@ -225,6 +225,8 @@ class Compiler:
         if cls in ("SimpleSpecification", "DataType"):
             tok = spec.type if cls == "SimpleSpecification" else spec.type_name
             if _cls(tok) == "StringTypeSpecification":  # STRING[10], WSTRING
+                if str(tok.type_name).upper() == "STRING" and tok.length is None:
+                    return T.STRING
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
@@ -453,7 +455,7 @@ class Compiler:
             inner = _cls(node.expr)
             if inner not in _INT_LITERALS | {"Real"}:
                 raise self.err(node, "initial value must be a literal")
-        elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration"}:
+        elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
                 pass
             else:
@@ -462,6 +464,8 @@ class Compiler:
         return ExprCompiler(self, None).expr(node, want)
 
     def default_c(self, t):
+        if t.is_string:
+            return '__pacst_string("", 0)'
         if t.is_time:
             return "__time_make(0L, 0L)"
         if t.is_enum:
@@ -559,8 +563,6 @@ class ExprCompiler:
         cls = _cls(node)
         method = getattr(self, "_e_" + cls, None)
         if method is None:
-            if cls in ("String",):
-                raise self.err(node, T.OUTSIDE_SUBSET["STRING"])
             if cls in ("Lduration", "Date", "DateTime", "TimeOfDay", "Ldate", "LdateTime", "LtimeOfDay"):
                 raise self.err(node, f"{cls} literals are outside the portable subset")
             raise self.err(node, f"{cls} is outside the portable subset")
@@ -594,6 +596,34 @@ class ExprCompiler:
 
     def _e_Boolean(self, node, want):
         return TE(T.BOOL, "TRUE" if str(node.value).upper() == "TRUE" else "FALSE")
+
+    def _e_String(self, node, want):
+        text = str(node.value)
+        if not text.startswith("'"):
+            raise self.err(node, "double-quoted WSTRING literals are outside the portable subset")
+        body, out, i = text[1:-1], [], 0
+        escapes = {"$": "$", "'": "'", "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        while i < len(body):
+            c = body[i]
+            if c == "$":
+                nxt = body[i + 1:i + 2].upper()
+                if nxt in escapes:
+                    out.append(escapes[nxt])
+                    i += 2
+                    continue
+                if re.fullmatch(r"[0-9A-Fa-f]{2}", body[i + 1:i + 3]):
+                    out.append(chr(int(body[i + 1:i + 3], 16)))
+                    i += 3
+                    continue
+                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a STRING literal")
+            out.append(c)
+            i += 1
+        value = "".join(out)
+        if len(value) > T.STRING_LITERAL_MAX:
+            raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
+                                 "the default STRING length of CODESYS and TwinCAT")
+        c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
+        return TE(T.STRING, f'__pacst_string("{c_text}", {len(value)})')
 
     def _e_Duration(self, node, want):
         line, col = pos(node)
@@ -725,6 +755,10 @@ class ExprCompiler:
             raise self.err(node.op, f"{t.name} values cannot be compared")
         if op not in ("=", "<>") and (t.is_bool or t.is_enum):
             raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
+        if t.is_string:
+            if op not in ("=", "<>"):
+                raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+            return TE(T.BOOL, f"({'' if op == '=' else '!'}__pacst_string_eq({ca}, {cb}))")
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")

@@ -14,13 +14,13 @@ class Type:
         return self.name
 
     # Classification used by the type rules.
-    is_bool = is_int = is_signed = is_bit = is_real = is_time = False
+    is_bool = is_int = is_signed = is_bit = is_real = is_time = is_string = False
     is_enum = is_array = is_struct = is_fb = False
     bits = 0
 
     @property
     def is_elementary(self):
-        return self.is_bool or self.is_int or self.is_bit or self.is_real or self.is_time
+        return self.is_bool or self.is_int or self.is_bit or self.is_real or self.is_time or self.is_string
 
     @property
     def is_numeric(self):
@@ -38,6 +38,7 @@ class Elementary(Type):
         self.is_bit = group == "bit"
         self.is_real = group == "real"
         self.is_time = group == "time"
+        self.is_string = group == "string"
         self.is_signed = signed
 
     def int_range(self):
@@ -62,6 +63,7 @@ ELEMENTARY = {
         Elementary("REAL", "real", 32),
         Elementary("LREAL", "real", 64),
         Elementary("TIME", "time", 64),
+        Elementary("STRING", "string", 0),
     ]
 }
 BOOL = ELEMENTARY["BOOL"]
@@ -69,6 +71,9 @@ INT = ELEMENTARY["INT"]
 DINT = ELEMENTARY["DINT"]
 LREAL = ELEMENTARY["LREAL"]
 TIME = ELEMENTARY["TIME"]
+STRING = ELEMENTARY["STRING"]
+# A STRING literal may not be longer than CODESYS's and TwinCAT's default STRING (80 characters).
+STRING_LITERAL_MAX = 80
 
 # Types IEC and the tools know but the portable subset leaves out, with the reason a refusal gives.
 OUTSIDE_SUBSET = {
@@ -76,7 +81,7 @@ OUTSIDE_SUBSET = {
     "ULINT": "64-bit integers are outside the portable subset",
     "LWORD": "64-bit bit strings are outside the portable subset",
     "LTIME": "LTIME is outside the portable subset (MATIEC has no LTIME)",
-    "STRING": "STRING is not used in the library (sized strings differ between MATIEC and CODESYS)",
+    "STRING": "sized STRING is outside the portable subset (MATIEC has no STRING[n]): use STRING",
     "WSTRING": "WSTRING is outside the portable subset",
     "DATE": "DATE is outside the portable subset",
     "TOD": "TIME_OF_DAY is outside the portable subset",

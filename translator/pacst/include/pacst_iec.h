@@ -32,10 +32,16 @@ typedef uint64_t LWORD;
 typedef float REAL;
 typedef double LREAL;
 typedef struct {
-    long tv_sec;
-    long tv_nsec;
+    int64_t tv_sec;
+    int32_t tv_nsec;
 } IEC_TIMESPEC;
 typedef IEC_TIMESPEC TIME;
+/* MATIEC's STRING: a length and room for 126 bytes. */
+#define STR_MAX_LEN 126
+typedef struct {
+    uint8_t len;
+    uint8_t body[STR_MAX_LEN];
+} STRING;
 
 #ifndef TRUE
 #define TRUE 1
@@ -68,6 +74,23 @@ __PACST_WRAPPER(LWORD)
 __PACST_WRAPPER(REAL)
 __PACST_WRAPPER(LREAL)
 __PACST_WRAPPER(TIME)
+__PACST_WRAPPER(STRING)
+
+static inline STRING __pacst_string(const char *text, int len) {
+    STRING s;
+    int i;
+    s.len = (uint8_t)len;
+    for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < len ? text[i] : 0);
+    return s;
+}
+static inline int __pacst_string_eq(STRING a, STRING b) {
+    int i;
+    if (a.len != b.len) return 0;
+    for (i = 0; i < a.len; i++) {
+        if (a.body[i] != b.body[i]) return 0;
+    }
+    return 1;
+}
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
 extern TIME __CURRENT_TIME;
@@ -94,13 +117,17 @@ static inline long __pacst_index(long i, long low, long high, const char *where)
 
 static inline TIME __time_make(long sec, long nsec) {
     TIME t;
-    t.tv_sec = sec + nsec / 1000000000L;
-    t.tv_nsec = nsec % 1000000000L;
+    t.tv_sec = (int64_t)sec + nsec / 1000000000L;
+    t.tv_nsec = (int32_t)(nsec % 1000000000L);
     if (t.tv_nsec < 0) { t.tv_nsec += 1000000000L; t.tv_sec -= 1; }
     return t;
 }
-static inline TIME __time_add(TIME a, TIME b) { return __time_make(a.tv_sec + b.tv_sec, a.tv_nsec + b.tv_nsec); }
-static inline TIME __time_sub(TIME a, TIME b) { return __time_make(a.tv_sec - b.tv_sec, a.tv_nsec - b.tv_nsec); }
+static inline TIME __time_add(TIME a, TIME b) {
+    return __time_make((long)(a.tv_sec + b.tv_sec), (long)a.tv_nsec + (long)b.tv_nsec);
+}
+static inline TIME __time_sub(TIME a, TIME b) {
+    return __time_make((long)(a.tv_sec - b.tv_sec), (long)a.tv_nsec - (long)b.tv_nsec);
+}
 static inline int __time_cmp(TIME a, TIME b) {
     if (a.tv_sec != b.tv_sec) return a.tv_sec < b.tv_sec ? -1 : 1;
     if (a.tv_nsec != b.tv_nsec) return a.tv_nsec < b.tv_nsec ? -1 : 1;
