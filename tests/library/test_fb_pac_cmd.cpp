@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/scan_test.hpp"
 #include "pac/st_program.hpp"
@@ -13,10 +14,12 @@ namespace {
 
 using Image = std::array<std::uint8_t, 8>;
 
-constexpr std::uint16_t kErrAckTimeout = 0x8001;
-constexpr std::uint16_t kErrNotReady = 0x8003;
-constexpr std::uint16_t kErrConnectionLost = 0x8004;
-constexpr std::uint16_t kErrInvalidCode = 0x8005;
+// The library's error codes by the names PLC programmers use (st/gvl/GVL_PAC.st).
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kErrAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
+const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kErrConnectionLost = kGvl["PAC_LIB_ERR_CONNECTION_LOST"];
+const std::uint32_t kErrInvalidCode = kGvl["PAC_LIB_ERR_INVALID_CODE"];
 
 // A reply of the PA-CONTROL (2.4.2): acknowledgement data, FE + operating status, RF KF BF + error number.
 Image Reply(bool rf, bool kf, bool bf, std::uint16_t errorNumber = 0, std::uint8_t status = 1,
