@@ -20,6 +20,7 @@ const std::uint32_t kErrAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
 const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
 const std::uint32_t kErrConnectionLost = kGvl["PAC_LIB_ERR_CONNECTION_LOST"];
 const std::uint32_t kErrInvalidCode = kGvl["PAC_LIB_ERR_INVALID_CODE"];
+const std::uint32_t kErrInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
 
 // A reply of the PA-CONTROL (2.4.2): acknowledgement data, FE + operating status, RF KF BF + error number.
 Image Reply(bool rf, bool kf, bool bf, std::uint16_t errorNumber = 0, std::uint8_t status = 1,
@@ -37,7 +38,10 @@ protected:
     FbPacCmd() {
         fromPac_ = Reply(false, false, true);
         task_.AddProgram([this] {
-            for (int i = 0; i < 8; ++i) cmd_->FROMPAC.value.table[i] = fromPac_[i];
+            for (int i = 0; i < 8; ++i) {
+                cmd_->FROMPAC.value.table[i] = fromPac_[i];
+                cmd_->TOPAC.value.table[i] = toPac_[i];
+            }
             cmd_();
             for (int i = 0; i < 8; ++i) toPac_[i] = cmd_->TOPAC.value.table[i];
             CheckExclusiveOutputs();
@@ -172,25 +176,68 @@ TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
     EXPECT_EQ(toPac_[5], 1);
 }
 
-TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagAfterRestart) {
+TEST_F(FbPacCmd, AfterPlcRestartWaitsUntilTheControllerHasAcknowledgedTheModule) {
     fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
-    Cycle(1);
-    EXPECT_TRUE(SendFlag()) << "synchronised, no toggle: no spurious command";
+    Cycle(1);                             // ... and the restarted PLC's module shows SEND = 0
+    EXPECT_FALSE(SendFlag()) << "idle, the FB starts nothing";
     Request(0x1906, 1, 0);
+    Cycle(2);
+    EXPECT_TRUE(Busy());
+    EXPECT_FALSE(SendFlag()) << "no toggle while RECEIVE and SEND disagree";
+    EXPECT_EQ(toPac_[7], 0x0B) << "the module still carries the harmless 190B";
+    fromPac_ = Reply(false, false, true);  // the controller took the module over
     Cycle(1);
-    EXPECT_FALSE(SendFlag()) << "the next command toggles from the synchronised state";
-    fromPac_ = Reply(false, false, true, 0, 1, 5);
+    EXPECT_TRUE(SendFlag()) << "exactly one toggle, in the first scan that shows them equal";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06}));
+    fromPac_ = Reply(true, false, true, 0, 1, 5);
     Cycle(1);
     EXPECT_TRUE(Done());
 }
 
-TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
+TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
+    fromPac_ = Reply(false, false, true);
+    Request(0x0906, 1, 7);
+    Cycle(1);
     fromPac_ = Reply(true, false, true);
     Cycle(1);
+    ASSERT_TRUE(Done());
+    ASSERT_TRUE(SendFlag());
+    cmd_->EXECUTE.value = FALSE;
+    fromPac_ = Reply(false, false, false, 0, 0);  // restarting: status 0, RECEIVE back to 0
+    Cycle(1);
+    EXPECT_FALSE(SendFlag());
+    EXPECT_EQ(toPac_[7], 0x06) << "only the SEND flag changes";
+    fromPac_ = Reply(false, false, true);  // booted
+    Request(0x1906, 2, 0);
+    Cycle(1);
+    EXPECT_TRUE(SendFlag()) << "the next command is one clean toggle";
+}
+
+TEST_F(FbPacCmd, InterfaceThatNeverFreesIsAnErrorAfterTimeout) {
+    cmd_->TIMEOUT.value = TIME{0, 5'000'000};
+    fromPac_ = Reply(true, false, false);  // SEND 0 in the module, RECEIVE 1: another command is pending
     Request(0x1906, 1, 0);
+    Cycle(5);
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrInterfaceBusy);
+    EXPECT_FALSE(SendFlag());
+}
+
+TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
+    Request(0x1906, 1, 0);
+    Cycle(1);  // SEND toggles to 1
+    ASSERT_TRUE(SendFlag());
+    fromPac_ = Reply(true, false, true);
+    Cycle(1);
+    ASSERT_TRUE(Done());
+    Request(0x1906, 2, 0, false);
+    Cycle(1);
+    Request(0x1906, 2, 0);
     Cycle(1);  // SEND toggles to 0
     ASSERT_FALSE(SendFlag());
-    fromPac_ = Reply(false, false, false, 0, 0);  // rebooting: status 0, RF = 0
+    fromPac_ = Reply(false, false, false, 0, 0);  // rebooting: status 0, RF = 0 = SEND
     Cycle(1);
     EXPECT_TRUE(Error());
     EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
@@ -232,6 +279,55 @@ TEST_F(FbPacCmd, GoodCommandAfterCommandError) {
     Cycle(1);
     EXPECT_TRUE(Done());
     EXPECT_EQ(cmd_->ACKDATA.value, 7u);
+}
+
+// Two command FBs on one CMD interface: the second waits until the first is acknowledged.
+class TwoFbPacCmd : public pac::ScanTest {
+protected:
+    TwoFbPacCmd() {
+        task_.AddProgram([this] {
+            Call(first_);
+            Call(second_);
+        });
+    }
+
+    void Call(pac::FbInstance<FB_PAC_CMD>& fb) {
+        for (int i = 0; i < 8; ++i) {
+            fb->FROMPAC.value.table[i] = fromPac_[i];
+            fb->TOPAC.value.table[i] = toPac_[i];
+        }
+        fb();
+        for (int i = 0; i < 8; ++i) toPac_[i] = fb->TOPAC.value.table[i];
+    }
+
+    pac::FbInstance<FB_PAC_CMD> first_ = PAC_FB(FB_PAC_CMD);
+    pac::FbInstance<FB_PAC_CMD> second_ = PAC_FB(FB_PAC_CMD);
+    Image fromPac_ = Reply(false, false, true);
+    Image toPac_{};
+};
+
+TEST_F(TwoFbPacCmd, SecondCommandWaitsForTheFirstAcknowledgement) {
+    first_->CODE.value = 0x0906;
+    first_->PARAM.value = 3;
+    first_->DATA.value = 333;
+    first_->EXECUTE.value = TRUE;
+    second_->CODE.value = 0x1906;
+    second_->PARAM.value = 2;
+    second_->EXECUTE.value = TRUE;
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0x00, 0x00, 0x01, 0x4D, 0x00, 0x03, 0x89, 0x06})) << "the first command alone";
+    EXPECT_TRUE(first_->BUSY.value);
+    EXPECT_TRUE(second_->BUSY.value);
+    fromPac_ = Reply(true, false, true, 0, 1, 333);
+    Cycle(1);
+    EXPECT_TRUE(first_->DONE.value);
+    EXPECT_EQ(first_->ACKDATA.value, 333u);
+    EXPECT_EQ(toPac_, (Image{0x00, 0x00, 0x00, 0x00, 0x00, 0x02, 0x19, 0x06})) << "second sent in the same scan";
+    EXPECT_FALSE(second_->ACKNOWLEDGED.value) << "the first one's acknowledgement is not the second's";
+    fromPac_ = Reply(false, false, true, 0, 1, 12345678);
+    Cycle(1);
+    EXPECT_TRUE(second_->DONE.value);
+    EXPECT_EQ(second_->ACKDATA.value, 12345678u);
 }
 
 }  // namespace
