@@ -1,0 +1,38 @@
+// Everything the simulated PA-CONTROL knows, apart from the CMD handshake: operating status, system
+// error number, elements, system parameters and axes. PaControl owns one; CommandExecutor works on it.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "pac/sim/axis_group.hpp"
+#include "pac/sim/elements.hpp"
+#include "pac/sim/operating_status.hpp"
+#include "pac/sim/parameter_table.hpp"
+
+namespace pac::sim {
+
+struct ControllerState {
+    ControllerState(const ElementCounts& counts, const std::vector<ParameterSpec>& systemSpecs, int axisCapacity,
+                    const std::vector<ParameterSpec>& axisSpecs)
+        : elements(counts),
+          systemParameters(ParameterType::kInt32, systemSpecs),
+          axes(axisCapacity, axisSpecs) {}
+
+    // Addressable axes: system parameter 2 ("Number of axes"), within 0..axes.Capacity().
+    int NumberOfAxes() const {
+        const auto n = systemParameters.IntValue(sysparam::kNumberOfAxes).value_or(0);
+        return std::clamp(static_cast<int>(n), 0, axes.Capacity());
+    }
+    bool AxisAddressable(int axis) const { return axis >= 1 && axis <= NumberOfAxes(); }
+    Mode CurrentMode() const { return ModeOf(operatingStatus); }
+
+    std::uint8_t operatingStatus = status::kNotInitialized;
+    std::uint16_t systemError = 0;  // PA-CONTROL error number (1909); FE = systemError != 0
+    Elements elements;
+    ParameterTable systemParameters;
+    AxisGroup axes;
+};
+
+}  // namespace pac::sim

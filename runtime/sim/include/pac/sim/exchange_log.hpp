@@ -1,0 +1,42 @@
+// What the simulated PA-CONTROL saw and answered, cycle by cycle: for timelines in test failures
+// (Format()) and for tests that check when a reply appeared. Keeps the newest `capacity` records.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <deque>
+#include <string>
+
+#include "pac/sim/image8.hpp"
+
+namespace pac::sim {
+
+struct ExchangeRecord {
+    std::chrono::nanoseconds time{0};
+    Image8 master{};      // the master image the cycle read from the bus
+    Image8 reply{};       // the reply it wrote
+    bool newCommand = false;  // the cycle recognised a SEND flag change
+};
+
+class ExchangeLog {
+public:
+    explicit ExchangeLog(std::size_t capacity) : capacity_(capacity) {}
+
+    void Add(const ExchangeRecord& record);
+    void Clear() { records_.clear(); }
+    const std::deque<ExchangeRecord>& Records() const { return records_; }
+    std::size_t Capacity() const { return capacity_; }
+
+    // One line per record: "   40 ms  M 00 00 00 00 00 05 99 00  S 00 00 00 01 00 01 A0 00  <- new".
+    // With changesOnly, a record is left out when both images equal the previous record's.
+    std::string Format(bool changesOnly = true) const;
+
+private:
+    std::size_t capacity_;
+    std::deque<ExchangeRecord> records_;
+};
+
+// "12 ms", "12.5 ms": exact.
+std::string FormatTime(std::chrono::nanoseconds t);
+
+}  // namespace pac::sim

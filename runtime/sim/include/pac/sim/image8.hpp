@@ -1,0 +1,33 @@
+// The 8-byte CMD module (manual 2.4, 4.2.2) as the bus carries it, and big-endian access at PAC byte
+// offsets: word n is bytes 2n (high) and 2n+1 (low); a dword at byte offset k is bytes k..k+3, MSB
+// first. Offsets outside the image throw std::out_of_range.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace pac::sim {
+
+using Image8 = std::array<std::uint8_t, 8>;
+
+// Word n (0..3) of the image.
+std::uint16_t ReadWord(const Image8& image, int word);
+void WriteWord(Image8& image, int word, std::uint16_t value);
+
+// Dword at PAC byte offset 0..4 (the CMD data dword is at 0).
+std::uint32_t ReadDword(const Image8& image, int byteOffset);
+void WriteDword(Image8& image, int byteOffset, std::uint32_t value);
+
+// IEEE-754 single precision, as the PA-CONTROL carries REAL values in a dword (manual 6.1).
+std::uint32_t FloatToBits(float value);
+float BitsToFloat(std::uint32_t bits);
+
+// "00 00 00 01 00 01 A0 00": upper-case hex, one space between bytes, PAC byte 0 first.
+std::string ToHex(const Image8& image);
+// The reverse: 8 hex bytes, separated by single spaces or not at all; std::invalid_argument otherwise.
+Image8 FromHex(const std::string& text);
+
+bool IsAllZero(const Image8& image);
+
+}  // namespace pac::sim

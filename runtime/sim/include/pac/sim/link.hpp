@@ -1,0 +1,80 @@
+// One direction of the fieldbus between the PLC (master) and the PA-CONTROL (slave): the writer's
+// image reaches the reader after a latency plus a seeded jitter, in order, and the link can be
+// faulted. Times are simulated (the caller's clock); nothing here reads a real clock.
+//
+//   Write(now, image): the image arrives at now + latency + jitter, jitter uniform in [0, jitter]
+//       drawn from the seed, but never before the previous write's arrival (order is preserved).
+//   Read(now): the newest image whose arrival time is <= now; 8 zero bytes before the first arrival.
+//
+// Faults (SetFault):
+//   kFrozen       the reader keeps seeing the image it would have read at the moment of the freeze;
+//                 writes still travel and the reader sees the newest one once the fault is cleared.
+//   kAllZero      the reader sees 8 zero bytes; writes still travel (cleared: the newest arrival).
+//   kDisconnected the reader sees 8 zero bytes; images in flight are lost, writes are dropped, and
+//                 after reconnection (SetFault(now, kNone)) the reader keeps seeing zeros until the
+//                 first image written after the reconnection arrives.
+// Writes must come in non-decreasing time, and so must reads and SetFault calls (a fault acts at the
+// reader's side); std::invalid_argument otherwise.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+
+#include "pac/sim/image8.hpp"
+#include "pac/sim/rng.hpp"
+
+namespace pac::sim {
+
+enum class LinkFault { kNone, kFrozen, kAllZero, kDisconnected };
+
+const char* ToString(LinkFault fault);
+
+struct LinkConfig {
+    std::chrono::nanoseconds latency{0};
+    std::chrono::nanoseconds jitter{0};  // extra delay, uniform in [0, jitter]
+    std::uint64_t seed = 1;
+};
+
+class Link {
+public:
+    explicit Link(LinkConfig config = {});  // negative latency or jitter: std::invalid_argument
+
+    void Write(std::chrono::nanoseconds now, const Image8& image);
+    Image8 Read(std::chrono::nanoseconds now);
+
+    void SetFault(std::chrono::nanoseconds now, LinkFault fault);
+    LinkFault Fault() const { return fault_; }
+    bool Connected() const { return fault_ != LinkFault::kDisconnected; }
+
+    // Take effect for later writes; order is still preserved.
+    void SetLatency(std::chrono::nanoseconds latency);
+    void SetJitter(std::chrono::nanoseconds jitter);
+    const LinkConfig& Config() const { return config_; }
+
+    // Arrival time of the newest image written so far (for tests of the ordering rule).
+    std::chrono::nanoseconds LastArrival() const { return lastArrival_; }
+    std::uint64_t WritesDropped() const { return writesDropped_; }
+
+private:
+    struct InFlight {
+        std::chrono::nanoseconds arrival;
+        Image8 image;
+    };
+
+    void Deliver(std::chrono::nanoseconds now);  // moves arrived images to delivered_
+    void CheckReaderTime(std::chrono::nanoseconds now, const char* what);
+
+    LinkConfig config_;
+    SplitMix64 rng_;
+    std::deque<InFlight> inFlight_;
+    Image8 delivered_{};
+    Image8 frozen_{};
+    LinkFault fault_ = LinkFault::kNone;
+    std::chrono::nanoseconds lastArrival_{std::chrono::nanoseconds::min()};
+    std::chrono::nanoseconds lastWrite_{std::chrono::nanoseconds::min()};
+    std::chrono::nanoseconds lastRead_{std::chrono::nanoseconds::min()};
+    std::uint64_t writesDropped_ = 0;
+};
+
+}  // namespace pac::sim

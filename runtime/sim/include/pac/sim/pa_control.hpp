@@ -1,0 +1,127 @@
+// The simulated PA-CONTROL behind its 8-byte CMD interface (manual 2.4, 4.2, chapter 5), running in
+// its own cycle: each Cycle(now) reads the master image from the bus, follows a command that is still
+// processing, recognises a SEND flag change against the last acknowledged SEND (RF), carries out the
+// command and writes its reply image. See docs/simulator.md for every decision where the manual is
+// silent (power-up, emergency stop, SEND toggles while processing, retention).
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "pac/sim/bus.hpp"
+#include "pac/sim/cmd_frame.hpp"
+#include "pac/sim/cmd_protocol.hpp"
+#include "pac/sim/command_executor.hpp"
+#include "pac/sim/controller_state.hpp"
+#include "pac/sim/exchange_log.hpp"
+#include "pac/sim/image8.hpp"
+
+namespace pac::sim {
+
+// What survives PowerCycle(). Parameters (system and axis) always survive; the system error number,
+// system elements, axis motion and the operating status never do; inputs are the outside world's and
+// stay as the test set them.
+struct RetentionRule {
+    bool intRegisters = true;   // N
+    bool realRegisters = true;  // R
+    bool flags = false;
+    bool outputs = false;
+};
+
+struct PaControlConfig {
+    std::chrono::nanoseconds bootTime{std::chrono::milliseconds(50)};  // status 0, all-zero reply
+    std::chrono::nanoseconds homeCycle{std::chrono::milliseconds(10)};  // 2.3.4: home position
+    std::chrono::nanoseconds activeCycle{std::chrono::milliseconds(10)};  // AUTOMATIC / ONLINE (< 10 ms)
+    ElementCounts counts{};
+    std::vector<ParameterSpec> systemParameters = DefaultSystemParameters();
+    std::vector<ParameterSpec> axisParameters = DefaultAxisParameters();
+    int axisCapacity = 16;  // axes held; system parameter 2 says how many are addressable
+    RetentionRule retention{};
+    bool referencedAtPowerOn = true;
+    ExecutorOptions executor{};
+    std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
+};
+
+struct CommandCounters {
+    std::uint64_t recognized = 0;  // SEND flag changes acted upon
+    std::uint64_t executed = 0;    // ... of which without command error
+    std::uint64_t failed = 0;      // ... of which with command error (KF = 1)
+    std::uint64_t emergencyStops = 0;
+    std::map<std::uint16_t, std::uint64_t> byCode;  // recognised, per command code
+
+    std::uint64_t Count(std::uint16_t code) const;
+};
+
+class PaControl {
+public:
+    // Powered on at time 0: the boot ends at config.bootTime. Bad times: std::invalid_argument.
+    explicit PaControl(Bus& bus, PaControlConfig config = {});
+
+    // One controller cycle at `now` (non-decreasing, std::invalid_argument otherwise).
+    void Cycle(std::chrono::nanoseconds now);
+    // The cycle time in the current mode: homeCycle, or activeCycle in AUTOMATIC and ONLINE.
+    std::chrono::nanoseconds CycleTime() const;
+
+    bool Booted() const { return booted_; }
+    std::uint8_t OperatingStatus() const { return state_.operatingStatus; }
+    std::uint16_t SystemError() const { return state_.systemError; }
+    bool EmergencyStopActive() const { return emergencyStop_; }
+    bool Processing() const { return booted_ && protocol_.Processing(); }
+    const Image8& LastReply() const { return lastReply_; }
+    const Image8& LastMasterImage() const { return lastMaster_; }
+
+    // ---- test hooks ----
+    // Power off and on at `now`: the reply is all zero (status 0, RF 0) at once and until the boot
+    // ends at now + bootTime; then status 1 and the power-on handshake state. Retention: RetentionRule.
+    void PowerCycle(std::chrono::nanoseconds now);
+    // Takes effect in the next reply. Set before the boot ends, it is the status the controller boots into.
+    void SetOperatingStatus(std::uint8_t status) { state_.operatingStatus = status; }
+    // The PA-CONTROL error number of 1909 / SN10; FE (word 2 bit 15) is set while it is not 0.
+    void SetSystemError(std::uint16_t number) { state_.systemError = number; }
+    // The next recognised command is not carried out but answered with KF = 1 and this number
+    // (1..16#1FFF, std::invalid_argument otherwise). One shot; a power cycle drops it.
+    void InjectCommandError(std::uint16_t errorNumber);
+
+    Elements& Io() { return state_.elements; }  // inputs to set, outputs/flags/registers to read
+    const Elements& Io() const { return state_.elements; }
+    ParameterTable& SystemParameters() { return state_.systemParameters; }
+    AxisGroup& Axes() { return state_.axes; }
+    const AxisGroup& Axes() const { return state_.axes; }
+    ControllerState& State() { return state_; }
+
+    const CommandCounters& Counters() const { return counters_; }
+    const ExchangeLog& Log() const { return log_; }
+    ExchangeLog& Log() { return log_; }
+    const PaControlConfig& Config() const { return config_; }
+
+private:
+    void CheckTime(std::chrono::nanoseconds now, const char* what);
+    void Boot();
+    void EmergencyStop(std::chrono::nanoseconds now);
+    void Execute(const MasterFrame& command, std::chrono::nanoseconds now);
+    void WriteReply(std::chrono::nanoseconds now, const Image8& reply);
+
+    Bus& bus_;
+    PaControlConfig config_;
+    ControllerState state_;
+    CommandExecutor executor_;
+    CmdProtocol protocol_;
+    PendingCommand pending_;
+    ExchangeLog log_;
+    CommandCounters counters_;
+    std::optional<std::uint16_t> injectedError_;
+
+    bool booted_ = false;
+    std::chrono::nanoseconds bootEnd_{0};
+    bool communicationActive_ = false;  // a non-zero master image was seen since power-on
+    bool emergencyStop_ = false;
+    std::optional<std::chrono::nanoseconds> lastTime_;
+    Image8 lastReply_{};
+    Image8 lastMaster_{};
+};
+
+}  // namespace pac::sim

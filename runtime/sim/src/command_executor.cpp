@@ -1,0 +1,359 @@
+// The commands of manual chapter 5 on the simulated controller (see command_executor.hpp and
+// docs/simulator.md for what the simulator decides where the manual is silent).
+#include "pac/sim/command_executor.hpp"
+
+#include <cmath>
+
+#include "pac/sim/command_table.hpp"
+
+namespace pac::sim {
+
+namespace {
+
+CommandResult Ack(std::uint32_t data) { return CommandResult{data, error::kNone, true}; }
+CommandResult Fail(std::uint16_t number, std::uint32_t data = 0) { return CommandResult{data, number, true}; }
+
+std::uint16_t LowWord(std::uint32_t data) { return static_cast<std::uint16_t>(data & 0xFFFF); }
+std::uint32_t Bit(bool value) { return value ? 1U : 0U; }
+std::uint32_t Real(double value) { return FloatToBits(static_cast<float>(value)); }
+
+bool ResetOnHome(std::uint16_t systemError) { return systemError >= 500 && systemError <= 999; }
+
+}  // namespace
+
+CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanoseconds now,
+                                       PendingCommand& pending) {
+    const CommandInfo* info = FindCommand(c.code);
+    if (info == nullptr) return Fail(error::kUnknownCommand);
+    if (!info->validIn.Contains(state_.CurrentMode())) return Fail(error::kInadmissibleCommand);
+
+    switch (c.code) {
+        case code::kStop:
+        case code::kStartAuto:
+        case code::kStartOnline:
+        case code::kAbortAuto:
+        case code::kAbortOnline:
+            return ModeCommand(c, now, pending);
+        case code::kSetSystemParameter:
+        case code::kGetSystemParameter:
+        case code::kGetSystemParameterMax:
+        case code::kGetSystemParameterMin:
+            return SystemParameterCommand(c);
+        case code::kSetAxisParameter:
+        case code::kGetAxisParameter:
+        case code::kGetAxisParameterMax:
+        case code::kGetAxisParameterMin:
+            return AxisParameterCommand(c);
+        case code::kResetError:
+        case code::kGetError:
+        case code::kGetState:
+        case code::kGetActualPos:
+        case code::kGetActualSpeed:
+        case code::kGetStatusAxis:
+        case code::kGetStatusAllAxis:
+        case code::kGetTraverseAreaMin:
+        case code::kGetTraverseAreaMax:
+            return StatusCommand(c);
+        case code::kGetSystemFlag:
+        case code::kGetSystemNReg:
+        case code::kGetSystemRReg:
+            return SystemElementCommand(c);
+        case code::kPutNoReference:
+        case code::kPosAxisAbsolute:
+        case code::kPosAxisRelative:
+        case code::kSetSpeedAxis:
+        case code::kStopAxis:
+        case code::kStartAxisAbsolute:
+        case code::kStartAxisRelative:
+            return OnlineCommand(c, now, pending);
+        default:
+            return ElementCommand(c);
+    }
+}
+
+CommandResult CommandExecutor::Poll(const PendingCommand& pending, std::chrono::nanoseconds /*now*/) {
+    switch (pending.kind) {
+        case PendingCommand::Kind::kAxisMotion: {
+            const LinearAxis& axis = state_.axes.Motion(pending.axis);
+            return CommandResult{Real(axis.Position()), error::kNone, !axis.Moving()};
+        }
+        case PendingCommand::Kind::kStopAll: {
+            const bool finished = !state_.axes.AnyMoving();
+            if (finished) {
+                if (state_.operatingStatus == status::kOnlineStopRecognized) {
+                    state_.operatingStatus = status::kOnlineStopped;
+                } else if (state_.operatingStatus == status::kAutoStopRecognized) {
+                    state_.operatingStatus = status::kAutoStopped;
+                }
+            }
+            return CommandResult{0, error::kNone, finished};
+        }
+        case PendingCommand::Kind::kNone:
+            break;
+    }
+    return Ack(0);
+}
+
+CommandResult CommandExecutor::ModeCommand(const MasterFrame& c, std::chrono::nanoseconds now,
+                                           PendingCommand& pending) {
+    switch (c.code) {
+        case code::kStop: {
+            // 5.2.1.1: stop the positionings; "stopped" (15 / 35) once all axes stand still.
+            const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
+            state_.axes.StopAll(now);
+            state_.operatingStatus = automatic ? status::kAutoStopRecognized : status::kOnlineStopRecognized;
+            pending = PendingCommand{PendingCommand::Kind::kStopAll, 0};
+            CommandResult result = Poll(pending, now);
+            if (result.finished) pending = PendingCommand{};
+            return result;
+        }
+        case code::kStartAuto:
+            state_.operatingStatus = status::kAuto;  // the AUTOMATIC mode machine comes later
+            return Ack(0);
+        case code::kStartOnline: {
+            if (options_.requireExternalStop) {
+                const auto stopInput = state_.systemParameters.IntValue(sysparam::kStopInput).value_or(0);
+                const auto& inputs = state_.elements.inputs;
+                if (stopInput == 0 || !inputs.Contains(stopInput) || !inputs.Get(stopInput)) {
+                    return Fail(error::kExternalStopNotDefined);
+                }
+            }
+            state_.axes.ApplyParametersToAll();
+            state_.operatingStatus = status::kOnline;
+            return Ack(0);
+        }
+        case code::kAbortAuto:
+        case code::kAbortOnline:
+            LeaveToHome(now);
+            return Ack(0);
+        default:
+            return Fail(error::kUnknownCommand);
+    }
+}
+
+void CommandExecutor::LeaveToHome(std::chrono::nanoseconds now) {
+    // 5.2.5.1 / 5.2.6.1: positioning stopped, current position taken over; ONLINE speed changes end
+    // (5.2.6.8); errors 500..999 are reset when going to home position (5.2.4.15).
+    state_.axes.HaltAll(now);
+    state_.axes.ApplyParametersToAll();
+    state_.operatingStatus = status::kHome;
+    if (ResetOnHome(state_.systemError)) state_.systemError = 0;
+}
+
+CommandResult CommandExecutor::SystemParameterCommand(const MasterFrame& c) {
+    ParameterTable& table = state_.systemParameters;
+    const std::uint16_t number = c.parameter;
+    if (!table.Contains(number)) return Fail(error::kSystemParameterUnknown);
+    switch (c.code) {
+        case code::kSetSystemParameter:
+            if (table.Set(number, c.data) != ParameterTable::SetResult::kOk) return Fail(error::kValueOutsideRange);
+            return Ack(c.data);
+        case code::kGetSystemParameter: return Ack(*table.Value(number));
+        case code::kGetSystemParameterMax: return Ack(*table.Max(number));
+        default: return Ack(*table.Min(number));
+    }
+}
+
+CommandResult CommandExecutor::AxisParameterCommand(const MasterFrame& c) {
+    // 5.2.3: parameter high byte = axis, low byte = axis parameter number.
+    const int axis = c.parameter >> 8;
+    const std::uint16_t number = c.parameter & 0xFF;
+    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
+    ParameterTable& table = state_.axes.Parameters(axis);
+    if (!table.Contains(number)) return Fail(error::kAxisParameterUnknown);
+    switch (c.code) {
+        case code::kSetAxisParameter:
+            if (table.Set(number, c.data) != ParameterTable::SetResult::kOk) return Fail(error::kValueOutsideRange);
+            state_.axes.ApplyParameters(axis);
+            return Ack(c.data);
+        case code::kGetAxisParameter: return Ack(*table.Value(number));
+        case code::kGetAxisParameterMax: return Ack(*table.Max(number));
+        default: return Ack(*table.Min(number));
+    }
+}
+
+CommandResult CommandExecutor::ElementCommand(const MasterFrame& c) {
+    Elements& e = state_.elements;
+    const int n = c.parameter;
+    const std::uint16_t value16 = LowWord(c.data);
+    switch (c.code) {
+        case code::kGetSingleInput:
+            return e.inputs.Contains(n) ? Ack(Bit(e.inputs.Get(n))) : Fail(error::kInadmissibleInput);
+        case code::kGetInputWord:
+            return e.inputs.Contains(n) ? Ack(e.inputs.Word(n)) : Fail(error::kInadmissibleInput);
+        case code::kPutSingleOutput:
+            if (!e.outputs.Contains(n)) return Fail(error::kInadmissibleOutput);
+            if (value16 > 1) return Fail(error::kValueOutsideRange);
+            e.outputs.Set(n, value16 != 0);
+            return Ack(value16);
+        case code::kGetSingleOutput:
+            return e.outputs.Contains(n) ? Ack(Bit(e.outputs.Get(n))) : Fail(error::kInadmissibleOutput);
+        case code::kPutOutputWord:
+            if (!e.outputs.Contains(n)) return Fail(error::kInadmissibleOutput);
+            e.outputs.SetWord(n, value16);
+            return Ack(value16);
+        case code::kGetOutputWord:
+            return e.outputs.Contains(n) ? Ack(e.outputs.Word(n)) : Fail(error::kInadmissibleOutput);
+        case code::kPutSingleFlag:
+            if (!e.flags.Contains(n)) return Fail(error::kInadmissibleFlag);
+            if (value16 > 1) return Fail(error::kValueOutsideRange);
+            e.flags.Set(n, value16 != 0);
+            return Ack(value16);
+        case code::kGetSingleFlag:
+            return e.flags.Contains(n) ? Ack(Bit(e.flags.Get(n))) : Fail(error::kInadmissibleFlag);
+        case code::kPutFlagWord:
+            if (!e.flags.Contains(n)) return Fail(error::kInadmissibleFlag);
+            e.flags.SetWord(n, value16);
+            return Ack(value16);
+        case code::kGetFlagWord:
+            return e.flags.Contains(n) ? Ack(e.flags.Word(n)) : Fail(error::kInadmissibleFlag);
+        case code::kPutIntReg:
+            if (!e.intRegisters.Contains(n)) return Fail(error::kInadmissibleNRegister);
+            e.intRegisters.Set(n, c.data);
+            return Ack(c.data);
+        case code::kGetIntReg:
+            return e.intRegisters.Contains(n) ? Ack(e.intRegisters.Get(n)) : Fail(error::kInadmissibleNRegister);
+        case code::kPutFloatReg:
+            if (!e.realRegisters.Contains(n)) return Fail(error::kInadmissibleRRegister);
+            e.realRegisters.Set(n, c.data);
+            return Ack(c.data);
+        case code::kGetFloatReg:
+            return e.realRegisters.Contains(n) ? Ack(e.realRegisters.Get(n)) : Fail(error::kInadmissibleRRegister);
+        default:
+            return Fail(error::kUnknownCommand);
+    }
+}
+
+CommandResult CommandExecutor::StatusCommand(const MasterFrame& c) {
+    switch (c.code) {
+        case code::kResetError:
+            // 5.2.4.15: CPU errors (1..99) need a power cycle: "command not executable", and the
+            // error number again in the acknowledgement data.
+            if (state_.systemError >= 1 && state_.systemError <= 99) {
+                return Fail(error::kNotExecutable, state_.systemError);
+            }
+            state_.systemError = 0;
+            return Ack(0);
+        case code::kGetError: return Ack(state_.systemError);
+        case code::kGetState: return Ack(state_.operatingStatus);
+        case code::kGetStatusAllAxis: {
+            std::uint32_t bits = 0;
+            for (int axis = 1; axis <= state_.NumberOfAxes() && axis <= 16; ++axis) {
+                if (state_.axes.Motion(axis).Moving()) bits |= 1U << (axis - 1);
+            }
+            return Ack(bits);
+        }
+        default: break;
+    }
+    const int axis = c.parameter;
+    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
+    const LinearAxis& motion = state_.axes.Motion(axis);
+    const ParameterTable& parameters = state_.axes.Parameters(axis);
+    switch (c.code) {
+        case code::kGetActualPos: return Ack(Real(motion.Position()));
+        case code::kGetActualSpeed: return Ack(Real(motion.ActualSpeed()));
+        case code::kGetStatusAxis: return Ack(static_cast<std::uint32_t>(motion.Status()));
+        case code::kGetTraverseAreaMin:
+        case code::kGetTraverseAreaMax: {
+            const auto number = c.code == code::kGetTraverseAreaMin ? axisparam::kMinTraverseArea
+                                                                   : axisparam::kMaxTraverseArea;
+            const auto value = parameters.Value(number);
+            return value ? Ack(*value) : Fail(error::kAxisParameterUnknown);
+        }
+        default: return Fail(error::kUnknownCommand);
+    }
+}
+
+CommandResult CommandExecutor::SystemElementCommand(const MasterFrame& c) {
+    // 6.2: a few system elements follow the controller's state; the rest are plain storage.
+    const int n = c.parameter;
+    const AxisGroup& axes = state_.axes;
+    Elements& e = state_.elements;
+    switch (c.code) {
+        case code::kGetSystemFlag:
+            if (!e.systemFlags.Contains(n)) return Fail(error::kInadmissibleFlag);
+            if (n >= 51 && n <= 66 && axes.Contains(n - 50)) return Ack(Bit(axes.Motion(n - 50).Referenced()));
+            if (n >= 91 && n <= 106 && axes.Contains(n - 90)) return Ack(Bit(axes.Motion(n - 90).Moving()));
+            if (n >= 231 && n <= 246 && axes.Contains(n - 230)) {
+                return Ack(Bit(axes.Motion(n - 230).Status() == AxisStatus::kMalfunction));
+            }
+            return Ack(Bit(e.systemFlags.Get(n)));
+        case code::kGetSystemNReg:
+            if (!e.systemIntRegisters.Contains(n)) return Fail(error::kInadmissibleNRegister);
+            if (n == 10) return Ack(state_.systemError);
+            if (n >= 71 && n <= 86 && axes.Contains(n - 70)) {
+                return Ack(static_cast<std::uint32_t>(axes.Motion(n - 70).Status()));
+            }
+            return Ack(e.systemIntRegisters.Get(n));
+        default:
+            if (!e.systemRealRegisters.Contains(n)) return Fail(error::kInadmissibleRRegister);
+            if (n >= 71 && n <= 86 && axes.Contains(n - 70)) return Ack(Real(axes.Motion(n - 70).Target()));
+            return Ack(e.systemRealRegisters.Get(n));
+    }
+}
+
+CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::nanoseconds now,
+                                             PendingCommand& pending) {
+    switch (c.code) {
+        case code::kPosAxisAbsolute: return StartMove(c, now, false, true, pending);
+        case code::kPosAxisRelative: return StartMove(c, now, true, true, pending);
+        case code::kStartAxisAbsolute: return StartMove(c, now, false, false, pending);
+        case code::kStartAxisRelative: return StartMove(c, now, true, false, pending);
+        default: break;
+    }
+    const int axis = c.parameter;
+    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
+    LinearAxis& motion = state_.axes.Motion(axis);
+    switch (c.code) {
+        case code::kPutNoReference:
+            motion.SetReferenced(true);
+            return Ack(0);
+        case code::kSetSpeedAxis: {
+            // 5.2.6.8: only within the limits of the traverse speed parameter.
+            const float speed = BitsToFloat(c.data);
+            const ParameterTable& parameters = state_.axes.Parameters(axis);
+            const bool limited = parameters.Contains(axisparam::kTraverseSpeed);
+            if (!(speed > 0.0F) || !std::isfinite(speed) ||
+                (limited && !parameters.WithinLimits(axisparam::kTraverseSpeed, c.data))) {
+                return Fail(error::kValueOutsideRange);
+            }
+            motion.SetSpeed(speed);
+            return Ack(c.data);
+        }
+        case code::kStopAxis: {
+            // 5.2.6.13: acknowledged with end of processing only when the axis stands still.
+            motion.Stop(now);
+            if (motion.Moving()) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
+            return CommandResult{Real(motion.Position()), error::kNone, !motion.Moving()};
+        }
+        default:
+            return Fail(error::kUnknownCommand);
+    }
+}
+
+CommandResult CommandExecutor::StartMove(const MasterFrame& c, std::chrono::nanoseconds now, bool relative,
+                                         bool waitForEnd, PendingCommand& pending) {
+    // Axes move in ONLINE proper (31), not while stopping, stopped or with malfunction.
+    if (state_.operatingStatus != status::kOnline) return Fail(error::kInadmissibleCommand);
+    const int axis = c.parameter;
+    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
+    const float value = BitsToFloat(c.data);
+    if (!std::isfinite(value)) return Fail(error::kValueOutsideRange);
+    LinearAxis& motion = state_.axes.Motion(axis);
+    if (motion.Moving()) return Fail(error::kAxisStillMoves);
+    if (!motion.Referenced()) return Fail(error::kNoReferencePoint);
+    const double start = motion.Position();
+    const double target = relative ? start + static_cast<double>(value) : static_cast<double>(value);
+    const ParameterTable& parameters = state_.axes.Parameters(axis);
+    const auto low = parameters.RealValue(axisparam::kMinTraverseArea);
+    const auto high = parameters.RealValue(axisparam::kMaxTraverseArea);
+    if ((low && target < *low) || (high && target > *high)) return Fail(error::kPositionOutsideRange);
+
+    motion.MoveTo(now, target);
+    // 5.2.6.6: the acknowledgement data is the start position; 0A94/0A95 end processing at once.
+    const bool finished = !waitForEnd || !motion.Moving();
+    if (!finished) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
+    return CommandResult{Real(start), error::kNone, finished};
+}
+
+}  // namespace pac::sim

@@ -1,0 +1,46 @@
+// The simulated controller's cycle log (see exchange_log.hpp).
+#include "pac/sim/exchange_log.hpp"
+
+#include <cstdint>
+#include <iomanip>
+#include <sstream>
+
+namespace pac::sim {
+
+void ExchangeLog::Add(const ExchangeRecord& record) {
+    if (capacity_ == 0) return;
+    if (records_.size() == capacity_) records_.pop_front();
+    records_.push_back(record);
+}
+
+std::string ExchangeLog::Format(bool changesOnly) const {
+    std::ostringstream out;
+    const ExchangeRecord* previous = nullptr;
+    for (const auto& r : records_) {
+        const bool same = previous != nullptr && previous->master == r.master && previous->reply == r.reply;
+        previous = &r;
+        if (changesOnly && same && !r.newCommand) continue;
+        out << std::setw(12) << FormatTime(r.time) << "  M " << ToHex(r.master) << "  S " << ToHex(r.reply)
+            << (r.newCommand ? "  <- new command" : "") << '\n';
+    }
+    return out.str();
+}
+
+std::string FormatTime(std::chrono::nanoseconds t) {
+    constexpr std::int64_t kNsPerMs = 1'000'000;
+    std::ostringstream out;
+    const std::int64_t ns = t.count();
+    out << ns / kNsPerMs;
+    std::int64_t frac = ns % kNsPerMs;
+    if (frac < 0) frac = -frac;
+    if (frac != 0) {
+        std::string digits = std::to_string(frac);
+        digits.insert(0, 6 - digits.size(), '0');
+        digits.erase(digits.find_last_not_of('0') + 1);
+        out << '.' << digits;
+    }
+    out << " ms";
+    return out.str();
+}
+
+}  // namespace pac::sim

@@ -1,0 +1,103 @@
+// Big-endian access to the 8-byte CMD module (see image8.hpp).
+#include "pac/sim/image8.hpp"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace pac::sim {
+
+namespace {
+
+void CheckRange(int offset, int width, const char* what) {
+    if (offset < 0 || offset + width > 8) {
+        throw std::out_of_range(std::string(what) + ": offset " + std::to_string(offset) +
+                                " outside the 8-byte image");
+    }
+}
+
+int HexDigit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+}  // namespace
+
+std::uint16_t ReadWord(const Image8& image, int word) {
+    CheckRange(word * 2, 2, "ReadWord");
+    return static_cast<std::uint16_t>((image[word * 2] << 8) | image[word * 2 + 1]);
+}
+
+void WriteWord(Image8& image, int word, std::uint16_t value) {
+    CheckRange(word * 2, 2, "WriteWord");
+    image[word * 2] = static_cast<std::uint8_t>(value >> 8);
+    image[word * 2 + 1] = static_cast<std::uint8_t>(value & 0xFF);
+}
+
+std::uint32_t ReadDword(const Image8& image, int byteOffset) {
+    CheckRange(byteOffset, 4, "ReadDword");
+    std::uint32_t value = 0;
+    for (int i = 0; i < 4; ++i) {
+        value = (value << 8) | image[byteOffset + i];
+    }
+    return value;
+}
+
+void WriteDword(Image8& image, int byteOffset, std::uint32_t value) {
+    CheckRange(byteOffset, 4, "WriteDword");
+    for (int i = 3; i >= 0; --i) {
+        image[byteOffset + i] = static_cast<std::uint8_t>(value & 0xFF);
+        value >>= 8;
+    }
+}
+
+std::uint32_t FloatToBits(float value) {
+    static_assert(sizeof(float) == 4, "IEEE single precision expected");
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+float BitsToFloat(std::uint32_t bits) {
+    float value = 0.0F;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+std::string ToHex(const Image8& image) {
+    static const char* const kDigits = "0123456789ABCDEF";
+    std::string out;
+    for (std::size_t i = 0; i < image.size(); ++i) {
+        if (i != 0) out += ' ';
+        out += kDigits[image[i] >> 4];
+        out += kDigits[image[i] & 0x0F];
+    }
+    return out;
+}
+
+Image8 FromHex(const std::string& text) {
+    Image8 image{};
+    std::size_t pos = 0;
+    for (std::size_t i = 0; i < image.size(); ++i) {
+        if (i != 0 && pos < text.size() && text[pos] == ' ') ++pos;
+        if (pos + 2 > text.size() || HexDigit(text[pos]) < 0 || HexDigit(text[pos + 1]) < 0) {
+            throw std::invalid_argument("FromHex: expected 8 hex bytes in \"" + text + "\"");
+        }
+        image[i] = static_cast<std::uint8_t>(HexDigit(text[pos]) * 16 + HexDigit(text[pos + 1]));
+        pos += 2;
+    }
+    if (pos != text.size()) {
+        throw std::invalid_argument("FromHex: trailing characters in \"" + text + "\"");
+    }
+    return image;
+}
+
+bool IsAllZero(const Image8& image) {
+    for (auto b : image) {
+        if (b != 0) return false;
+    }
+    return true;
+}
+
+}  // namespace pac::sim

@@ -1,0 +1,179 @@
+// The simulated PA-CONTROL's cycle (see pa_control.hpp and docs/simulator.md).
+#include "pac/sim/pa_control.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace pac::sim {
+
+namespace {
+
+const PaControlConfig& CheckedConfig(const PaControlConfig& config) {
+    if (config.bootTime < std::chrono::nanoseconds::zero()) {
+        throw std::invalid_argument("PaControl: boot time must be >= 0");
+    }
+    if (config.homeCycle <= std::chrono::nanoseconds::zero() ||
+        config.activeCycle <= std::chrono::nanoseconds::zero()) {
+        throw std::invalid_argument("PaControl: cycle times must be > 0");
+    }
+    return config;
+}
+
+}  // namespace
+
+std::uint64_t CommandCounters::Count(std::uint16_t code) const {
+    auto it = byCode.find(code);
+    return it == byCode.end() ? 0 : it->second;
+}
+
+PaControl::PaControl(Bus& bus, PaControlConfig config)
+    : bus_(bus),
+      config_(CheckedConfig(config)),
+      state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters),
+      executor_(state_, config_.executor),
+      log_(config_.logCapacity),
+      bootEnd_(config_.bootTime) {
+    for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
+        state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
+    }
+}
+
+std::chrono::nanoseconds PaControl::CycleTime() const {
+    const Mode mode = state_.CurrentMode();
+    return booted_ && (mode == Mode::kAutomatic || mode == Mode::kOnline) ? config_.activeCycle
+                                                                          : config_.homeCycle;
+}
+
+void PaControl::Cycle(std::chrono::nanoseconds now) {
+    CheckTime(now, "Cycle");
+    const Image8 master = bus_.SlaveRead(now);
+    lastMaster_ = master;
+    ExchangeRecord record;
+    record.time = now;
+    record.master = master;
+
+    if (!booted_) {
+        if (now < bootEnd_) {
+            WriteReply(now, Image8{});
+            record.reply = lastReply_;
+            log_.Add(record);
+            return;
+        }
+        Boot();
+    }
+
+    state_.axes.UpdateAll(now);
+    const bool allZero = IsAllZero(master);
+    if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
+
+    if (pending_.Active()) {
+        const CommandResult progress = executor_.Poll(pending_, now);
+        protocol_.Update(progress);
+        if (progress.finished) pending_ = PendingCommand{};
+    }
+
+    if (!allZero) {
+        communicationActive_ = true;
+        emergencyStop_ = false;
+        const MasterFrame command = MasterFrame::Decode(master);
+        if (protocol_.IsNewCommand(command)) {
+            record.newCommand = true;
+            Execute(command, now);
+        }
+    }
+
+    WriteReply(now, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
+    record.reply = lastReply_;
+    log_.Add(record);
+}
+
+void PaControl::PowerCycle(std::chrono::nanoseconds now) {
+    CheckTime(now, "PowerCycle");
+    booted_ = false;
+    bootEnd_ = now + config_.bootTime;
+
+    state_.axes.HaltAll(now);
+    for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
+        state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
+    }
+    state_.axes.ApplyParametersToAll();
+    Elements& e = state_.elements;
+    if (!config_.retention.intRegisters) e.intRegisters.Clear();
+    if (!config_.retention.realRegisters) e.realRegisters.Clear();
+    if (!config_.retention.flags) e.flags.Clear();
+    if (!config_.retention.outputs) e.outputs.Clear();
+    e.systemFlags.Clear();
+    e.systemIntRegisters.Clear();
+    e.systemRealRegisters.Clear();
+    state_.systemError = 0;
+    state_.operatingStatus = status::kNotInitialized;
+
+    protocol_.Reset();
+    pending_ = PendingCommand{};
+    injectedError_.reset();
+    communicationActive_ = false;
+    emergencyStop_ = false;
+    WriteReply(now, Image8{});  // the slave drops off the bus at once
+}
+
+void PaControl::InjectCommandError(std::uint16_t errorNumber) {
+    if (errorNumber == 0 || errorNumber > 0x1FFF) {
+        throw std::invalid_argument("PaControl::InjectCommandError: error number must be 1..8191");
+    }
+    injectedError_ = errorNumber;
+}
+
+void PaControl::CheckTime(std::chrono::nanoseconds now, const char* what) {
+    if (lastTime_ && now < *lastTime_) {
+        throw std::invalid_argument(std::string("PaControl::") + what + ": time runs backwards (" +
+                                    FormatTime(now) + " after " + FormatTime(*lastTime_) + ")");
+    }
+    lastTime_ = now;
+}
+
+void PaControl::Boot() {
+    booted_ = true;
+    if (state_.operatingStatus == status::kNotInitialized) state_.operatingStatus = status::kHome;
+    protocol_.Reset();
+}
+
+void PaControl::EmergencyStop(std::chrono::nanoseconds now) {
+    // 4.2.5: an all-zero master image after communication was active means EMERGENCY STOP.
+    emergencyStop_ = true;
+    ++counters_.emergencyStops;
+    state_.axes.HaltAll(now);
+    switch (state_.CurrentMode()) {
+        case Mode::kOnline: state_.operatingStatus = status::kOnlineStoppedMalfunction; break;
+        case Mode::kAutomatic: state_.operatingStatus = status::kAutoStoppedMalfunction; break;
+        default: break;
+    }
+}
+
+void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now) {
+    // A new command takes the CMD reply over; an earlier one still processing is no longer reported
+    // (its axis carries on: 1910 / 190C show it).
+    pending_ = PendingCommand{};
+    ++counters_.recognized;
+    ++counters_.byCode[command.code];
+    CommandResult result;
+    if (injectedError_) {
+        result = CommandResult{0, *injectedError_, true};
+        injectedError_.reset();
+    } else {
+        result = executor_.Execute(command, now, pending_);
+    }
+    if (result.error == 0) {
+        ++counters_.executed;
+    } else {
+        ++counters_.failed;
+        pending_ = PendingCommand{};
+    }
+    protocol_.Acknowledge(command.send, result);
+}
+
+void PaControl::WriteReply(std::chrono::nanoseconds now, const Image8& reply) {
+    lastReply_ = reply;
+    bus_.SlaveWrite(now, reply);
+}
+
+}  // namespace pac::sim

@@ -1,0 +1,74 @@
+// Mode commands of manual 5.2.1 / 5.2.5 / 5.2.6.1: 0600, 0602, 0603, 0A41, 0A81 (minimal mode model).
+#include <gtest/gtest.h>
+
+#include "sim_fixture.hpp"
+
+namespace pac::sim::testing {
+namespace {
+
+class ModeCommands : public PacBench {};
+
+TEST_F(ModeCommands, StartOnlineNeedsAPoweredExternalStopInput) {
+    // No stop input defined (system parameter 4 = 0): error 44 = 16#2C.
+    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 01 C0 2C");
+    // Defined as input 3, but without power.
+    ASSERT_EQ(pac_.SystemParameters().Set(4, 3), ParameterTable::SetResult::kOk);
+    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 01 40 2C");
+    pac_.Io().inputs.Set(3, true);
+    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 1F A0 00");  // ONLINE = 31 = 16#1F
+    EXPECT_EQ(pac_.OperatingStatus(), 31);
+}
+
+TEST_F(ModeCommands, StartOnlineWithoutTheExternalStopCheck) {
+    PaControlConfig config = QuickConfig();
+    config.executor.requireExternalStop = false;
+    Bus bus;
+    PaControl pac(bus, config);
+    bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
+    pac.Cycle(0ms);
+    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 1F A0 00");
+}
+
+TEST_F(ModeCommands, StartAutoAndStopIt) {
+    EXPECT_EQ(Send(code::kStartAuto), "00 00 00 00 00 0B A0 00");  // 11
+    // No axis moves: "stopped" (15) at once.
+    EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 0F 20 00");
+    EXPECT_EQ(Send(code::kAbortAuto), "00 00 00 00 00 01 A0 00");
+}
+
+TEST_F(ModeCommands, StopInOnlineWaitsForTheAxesToStandStill) {
+    GoOnline();                                                                   // 0 ms, SEND 1
+    EXPECT_EQ(Send(code::kStartAxisAbsolute, 1, FloatToBits(1000.0F)),           // 10 ms, SEND 0
+              "00 00 00 00 00 1F 20 00");  // 0A94: start position 0.0, BF at once
+    Idle();                                                                       // 20 ms: at 10.0
+    // 30 ms, at 20.0: 0600, ONLINE STOP recognised (32 = 16#20), BF = 0. Braking from 1000 AE/s at
+    // 10000 AE/s^2 takes 100 ms and 50 AE.
+    EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 20 80 00");
+    for (int cycle = 4; cycle <= 12; ++cycle) {
+        EXPECT_EQ(Idle(), "00 00 00 00 00 20 80 00") << "cycle at " << cycle * 10 << " ms";
+    }
+    // 130 ms: the axis stands at 70.0: ONLINE and STOPPED (35 = 16#23), BF = 1.
+    EXPECT_EQ(Idle(), "00 00 00 00 00 23 A0 00");
+    EXPECT_EQ(Send(code::kGetActualPos, 1), "42 8C 00 00 00 23 20 00");  // 70.0
+    EXPECT_EQ(Send(code::kGetStatusAxis, 1), "00 00 00 02 00 23 A0 00");  // standing, was stopped
+}
+
+TEST_F(ModeCommands, AbortOnlineReturnsToHomePosition) {
+    GoOnline();
+    EXPECT_EQ(Send(code::kAbortOnline), "00 00 00 00 00 01 20 00");
+    EXPECT_EQ(pac_.OperatingStatus(), 1);
+}
+
+TEST_F(ModeCommands, ModeCommandsOutsideTheirModesAreInadmissible) {
+    // 0600 in home position, 0A41 in home position, 0A81 in home position: error 20 = 16#14.
+    EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 01 C0 14");
+    EXPECT_EQ(Send(code::kAbortAuto), "00 00 00 00 00 01 40 14");
+    EXPECT_EQ(Send(code::kAbortOnline), "00 00 00 00 00 01 C0 14");
+    GoOnline();  // SEND 0
+    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 1F C0 14");
+    EXPECT_EQ(Send(code::kStartAuto), "00 00 00 00 00 1F 40 14");
+    EXPECT_EQ(Send(code::kAbortAuto), "00 00 00 00 00 1F C0 14");
+}
+
+}  // namespace
+}  // namespace pac::sim::testing
