@@ -12,12 +12,8 @@
 
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/scan_test.hpp"
-#include "pac/sim/bus.hpp"
-#include "pac/sim/image8.hpp"
-#include "pac/sim/pa_control.hpp"
-#include "pac/sim/slave_runner.hpp"
 #include "pac/st_program.hpp"
+#include "pac_plc_bench.hpp"
 
 namespace {
 
@@ -31,44 +27,14 @@ struct Timing {
     int latencyCycles;
 };
 
-pac::sim::BusConfig BusWith(nanoseconds latency, nanoseconds jitter = 0ns, std::uint64_t seed = 1) {
-    pac::sim::BusConfig config;
-    config.toSlave = {latency, jitter, seed};
-    config.toMaster = {latency, jitter, seed + 1};
-    return config;
-}
-
-pac::sim::PaControlConfig ControllerWith(nanoseconds cycle, nanoseconds bootTime = 0ns) {
-    pac::sim::PaControlConfig config;
-    config.bootTime = bootTime;
-    config.homeCycle = cycle;
-    config.activeCycle = cycle;
-    return config;
-}
-
 // A PLC with one FB_PAC_Cmd on the CMD interface of a simulated PA-CONTROL.
 class CmdBench {
 public:
     CmdBench(Timing timing, nanoseconds jitter = 0ns, std::uint64_t seed = 1, nanoseconds bootTime = 0ns)
-        : plcCycle_(milliseconds(timing.plcMs)),
-          latency_(plcCycle_ * timing.latencyCycles),
-          slaveCycle_(milliseconds(timing.slaveMs)),
-          task_(clock_, plcCycle_),
-          bus_(BusWith(latency_, jitter, seed)),
-          pac_(bus_, ControllerWith(slaveCycle_, bootTime)),
-          runner_(pac_) {
-        runner_.AttachTo(task_);
-        task_.AddProgram([this] {
-            const auto now = clock_.Now();
-            const pac::sim::Image8 reply = bus_.MasterRead(now);
-            for (int i = 0; i < 8; ++i) {
-                cmd_->FROMPAC.value.table[i] = reply[i];
-                cmd_->TOPAC.value.table[i] = toPac_[i];
-            }
-            cmd_();
-            for (int i = 0; i < 8; ++i) toPac_[i] = cmd_->TOPAC.value.table[i];
-            bus_.MasterWrite(now, toPac_);
-        });
+        : plc_({milliseconds(timing.plcMs), milliseconds(timing.slaveMs), timing.latencyCycles, jitter, seed,
+                bootTime}) {
+        plc_.Call(cmd_);
+        plc_.Start();
     }
 
     // Runs one command to its end: Execute edge, wait for Done or Error, Execute back to FALSE.
@@ -78,16 +44,12 @@ public:
         cmd_->PARAM.value = param;
         cmd_->DATA.value = data;
         cmd_->EXECUTE.value = TRUE;
-        task_.Scan();
-        edgeTime_ = clock_.Now();
-        int scans = 0;
-        while (!cmd_->DONE.value && !cmd_->ERROR.value) {
-            if (++scans > maxScans) return -1;
-            task_.Scan();
-        }
+        plc_.Scan();
+        edgeTime_ = plc_.Now();
+        const int scans = plc_.ScanUntil([this] { return cmd_->DONE.value || cmd_->ERROR.value; }, maxScans);
         final_ = {cmd_->DONE.value != 0, cmd_->ERROR.value != 0, cmd_->ERRORID.value, cmd_->ACKDATA.value};
         cmd_->EXECUTE.value = FALSE;
-        task_.Scan();
+        plc_.Scan();
         return scans;
     }
 
@@ -104,33 +66,26 @@ public:
     // reaches the controller after the latency, its next cycle answers (a cycle at the very time of
     // the scan that wrote has already run), the answer travels back, the next scan reads it.
     int ProtocolMinimumScans() const {
-        const nanoseconds arrival = edgeTime_ + latency_;
-        nanoseconds slaveTime = (arrival / slaveCycle_) * slaveCycle_;
-        while (slaveTime < arrival || slaveTime <= edgeTime_) slaveTime += slaveCycle_;
-        const nanoseconds replyArrival = slaveTime + latency_;
+        const auto& t = plc_.Timing();
+        const nanoseconds latency = t.plcCycle * t.latencyCycles;
+        const nanoseconds arrival = edgeTime_ + latency;
+        nanoseconds slaveTime = (arrival / t.pacCycle) * t.pacCycle;
+        while (slaveTime < arrival || slaveTime <= edgeTime_) slaveTime += t.pacCycle;
         nanoseconds scanTime = edgeTime_;
-        while (scanTime < replyArrival) scanTime += plcCycle_;
-        return static_cast<int>((scanTime - edgeTime_) / plcCycle_);
+        while (scanTime < slaveTime + latency) scanTime += t.plcCycle;
+        return static_cast<int>((scanTime - edgeTime_) / t.plcCycle);
     }
 
-    void Settle(int scans) { pac::Cycle(task_, scans); }
+    void Settle(int scans) { plc_.Scan(scans); }
 
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
-    pac::sim::PaControl& Controller() { return pac_; }
-    pac::sim::Bus& Bus() { return bus_; }
-    nanoseconds Now() const { return clock_.Now(); }
+    pac::sim::PaControl& Controller() { return plc_.Controller(); }
+    pac::sim::Bus& Bus() { return plc_.Bus(); }
+    nanoseconds Now() const { return plc_.Now(); }
 
 private:
-    nanoseconds plcCycle_;
-    nanoseconds latency_;
-    nanoseconds slaveCycle_;
-    pac::SimClock clock_;
-    pac::PlcTask task_;
-    pac::sim::Bus bus_;
-    pac::sim::PaControl pac_;
-    pac::sim::SlaveRunner runner_;
+    pac::test::PacPlcBench plc_;
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
-    pac::sim::Image8 toPac_{};
     nanoseconds edgeTime_{0};
     Final final_;
 };
