@@ -62,19 +62,7 @@ public:
     };
     const Final& Last() const { return final_; }
 
-    // The earliest scan that can see the acknowledgement of a command sent at edgeTime_: the image
-    // reaches the controller after the latency, its next cycle answers (a cycle at the very time of
-    // the scan that wrote has already run), the answer travels back, the next scan reads it.
-    int ProtocolMinimumScans() const {
-        const auto& t = plc_.Timing();
-        const nanoseconds latency = t.plcCycle * t.latencyCycles;
-        const nanoseconds arrival = edgeTime_ + latency;
-        nanoseconds slaveTime = (arrival / t.pacCycle) * t.pacCycle;
-        while (slaveTime < arrival || slaveTime <= edgeTime_) slaveTime += t.pacCycle;
-        nanoseconds scanTime = edgeTime_;
-        while (scanTime < slaveTime + latency) scanTime += t.plcCycle;
-        return static_cast<int>((scanTime - edgeTime_) / t.plcCycle);
-    }
+    int ProtocolMinimumScans() const { return plc_.ProtocolMinimumScans(edgeTime_); }
 
     void Settle(int scans) { plc_.Scan(scans); }
 

@@ -72,6 +72,20 @@ public:
         return -1;
     }
 
+    // The fewest scans after a scan at `edgeTime` that can show the PA-CONTROL's answer to a module
+    // written in it: the image reaches the controller after the latency, the controller's next cycle
+    // answers (its cycle at the very time of that scan has already run), the answer travels back and
+    // the next scan reads it. Jitter is not counted.
+    int ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
+        const auto latency = timing_.plcCycle * timing_.latencyCycles;
+        const auto arrival = edgeTime + latency;
+        auto slaveTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
+        while (slaveTime < arrival || slaveTime <= edgeTime) slaveTime += timing_.pacCycle;
+        auto scanTime = edgeTime;
+        while (scanTime < slaveTime + latency) scanTime += timing_.plcCycle;
+        return static_cast<int>((scanTime - edgeTime) / timing_.plcCycle);
+    }
+
     pac::sim::PaControl& Controller() { return pac_; }
     pac::sim::Bus& Bus() { return bus_; }
     pac::PlcTask& Task() { return task_; }
