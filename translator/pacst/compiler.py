@@ -92,11 +92,7 @@ class Pou:
         self.body_c = []
 
     def var(self, name):
-        up = name.upper()
-        for v in self.vars:
-            if v.cname == up:
-                return v
-        return None
+        return T.find_var(self.vars, name)
 
 
 class Program:

@@ -162,6 +162,12 @@ class Var:
         self.constant = constant
 
 
+def find_var(variables, name):
+    """The variable called `name` (case-insensitive), or None."""
+    up = name.upper()
+    return next((v for v in variables if v.cname == up), None)
+
+
 class FbType(Type):
     """A function block type: a user FUNCTION_BLOCK or one of the standard FBs."""
 
@@ -175,11 +181,7 @@ class FbType(Type):
         self.pou = None
 
     def var(self, name):
-        up = name.upper()
-        for v in self.vars:
-            if v.cname == up:
-                return v
-        return None
+        return find_var(self.vars, name)
 
 
 def _standard_fbs():

@@ -248,7 +248,18 @@ static inline void TON_init__(TON *d, BOOL retain) {
 static inline void TOF_init__(TOF *d, BOOL retain) { TON_init__(d, retain); }
 static inline void TP_init__(TP *d, BOOL retain) { TON_init__(d, retain); }
 
-/* STATE: 0 idle, 1 timing, 2 elapsed (MATIEC's encoding). */
+/* STATE: 0 idle, 1 timing, 2 elapsed (MATIEC's encoding). While timing, ET follows the time since the
+ * start; once PT has passed, STATE becomes 2, ET stays at PT and the caller sets Q. */
+static inline int __pacst_timer_elapsed(TON *d) {
+    if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
+        __PACST_SET(d->STATE, 2);
+        __PACST_SET(d->ET, d->PT.value);
+        return 1;
+    }
+    __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
+    return 0;
+}
+
 static inline void TON_body__(TON *d) {
     const TIME zero = {0, 0};
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
@@ -262,14 +273,8 @@ static inline void TON_body__(TON *d) {
         __PACST_SET(d->ET, zero);
         __PACST_SET(d->Q, FALSE);
         __PACST_SET(d->STATE, 0);
-    } else if (d->STATE.value == 1) {
-        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
-            __PACST_SET(d->STATE, 2);
-            __PACST_SET(d->Q, TRUE);
-            __PACST_SET(d->ET, d->PT.value);
-        } else {
-            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
-        }
+    } else if (d->STATE.value == 1 && __pacst_timer_elapsed(d)) {
+        __PACST_SET(d->Q, TRUE);
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
@@ -286,12 +291,7 @@ static inline void TOF_body__(TOF *d) {
         __PACST_SET(d->ET, zero);
         __PACST_SET(d->STATE, 0);
     } else if (d->STATE.value == 1) {
-        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
-            __PACST_SET(d->STATE, 2);
-            __PACST_SET(d->ET, d->PT.value);
-        } else {
-            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
-        }
+        __pacst_timer_elapsed(d);
     }
     __PACST_SET(d->Q, d->IN.value || d->STATE.value == 1);
     __PACST_SET(d->PREV_IN, d->IN.value);
@@ -306,14 +306,8 @@ static inline void TP_body__(TP *d) {
         __PACST_SET(d->STATE, 1);
         __PACST_SET(d->Q, TRUE);
         __PACST_SET(d->START_TIME, d->CURRENT_TIME.value);
-    } else if (d->STATE.value == 1) {
-        if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
-            __PACST_SET(d->STATE, 2);
-            __PACST_SET(d->Q, FALSE);
-            __PACST_SET(d->ET, d->PT.value);
-        } else {
-            __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
-        }
+    } else if (d->STATE.value == 1 && __pacst_timer_elapsed(d)) {
+        __PACST_SET(d->Q, FALSE);
     }
     if (d->STATE.value == 2 && !d->IN.value) {
         __PACST_SET(d->ET, zero);
