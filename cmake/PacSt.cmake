@@ -10,6 +10,9 @@
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
 set(PACST_VENV "${CMAKE_BINARY_DIR}/venv" CACHE INTERNAL "")
 set(PACST_PYTHON "${PACST_VENV}/bin/python" CACHE INTERNAL "")
+# Parses are keyed by file content and blark's version, so every build tree (default, debug...) can
+# share one cache and parse each version of a file once.
+set(PACST_CACHE_DIR "${CMAKE_CURRENT_LIST_DIR}/../build/pacst-cache" CACHE PATH "pacst's parse cache")
 
 function(_pacst_ensure_venv)
   set(req "${PACST_SOURCE_DIR}/requirements.txt")
@@ -79,7 +82,7 @@ function(pac_st_library target)
     add_custom_command(
       OUTPUT "${out}/pacst.stamp"
       BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" ${c_files}
-      COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${CMAKE_BINARY_DIR}/pacst-cache"
+      COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${PACST_CACHE_DIR}"
               --stamp "${out}/pacst.stamp" ${abs_sources}
       DEPENDS ${abs_sources} ${PACST_TOOL_FILES}
       COMMENT "pacst: translating ${target} (${CMAKE_CURRENT_SOURCE_DIR})"
