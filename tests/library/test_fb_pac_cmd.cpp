@@ -21,6 +21,7 @@ const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
 const std::uint32_t kErrConnectionLost = kGvl["PAC_LIB_ERR_CONNECTION_LOST"];
 const std::uint32_t kErrInvalidCode = kGvl["PAC_LIB_ERR_INVALID_CODE"];
 const std::uint32_t kErrInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
+const std::uint32_t kErrSuperseded = kGvl["PAC_LIB_ERR_SUPERSEDED"];
 
 // A reply of the PA-CONTROL (2.4.2): acknowledgement data, FE + operating status, RF KF BF + error number.
 Image Reply(bool rf, bool kf, bool bf, std::uint16_t errorNumber = 0, std::uint8_t status = 1,
@@ -125,6 +126,19 @@ TEST_F(FbPacCmd, LongCommandStaysBusyAcknowledgedUntilEndOfProcessing) {
     Cycle(1);
     EXPECT_TRUE(Done());
     EXPECT_EQ(cmd_->ACKDATA.value, 0x41200000u);
+}
+
+TEST_F(FbPacCmd, LongCommandSupersededByAnotherCommandIsItsOwnError) {
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(1);
+    ASSERT_TRUE(Busy());
+    fromPac_ = Reply(false, false, true, 0, 31, 0x12345678);  // RECEIVE fell back: a newer command was served
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrSuperseded);
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x40000000u) << "the other command's data is not this command's";
 }
 
 TEST_F(FbPacCmd, NoAcknowledgementWithinTimeoutIsAnError) {
