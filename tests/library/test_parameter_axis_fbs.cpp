@@ -796,10 +796,15 @@ TEST_P(ParameterAxisFbs, SetAxisAccelerationSendsTheManualsCommand) {
     EXPECT_EQ(sent.param, 3);
     EXPECT_EQ(sent.data, 0x41200000u);
     EXPECT_EQ(bench.Controller().Counters().Count(0x0A8E), 1u);
-    // The simulator does not carry out 0A8E yet (docs/simulator.md): it answers "unknown command",
-    // which the FB passes on unchanged.
-    EXPECT_TRUE(outcome.error);
-    EXPECT_EQ(outcome.errorId, kGvl["PAC_ERR_UNKNOWN_COMMAND"]);
+    // The simulated controller is configured with fewer axes than the manual's example uses.
+    EXPECT_EQ(outcome.errorId, kGvl["PAC_ERR_AXIS_NUMBER"]);
+    bench.setAccel->AXIS.value = 1;
+    outcome = bench.Run(bench.setAccel);
+    ASSERT_TRUE(outcome.done) << "ErrorID " << outcome.errorId;
+    EXPECT_EQ(bench.Controller().Axes().Motion(1).Deceleration(), 10.0);
+    // Below the acceleration parameter's minimum (1.0): value outside range.
+    bench.setAccel->ACCELERATION.value = 0.5F;
+    EXPECT_EQ(bench.Run(bench.setAccel).errorId, kGvl["PAC_ERR_VALUE_RANGE"]);
 }
 
 TEST_P(ParameterAxisFbs, MoveLongerThanEndTimeoutIsALibraryError) {

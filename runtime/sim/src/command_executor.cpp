@@ -62,6 +62,7 @@ CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanose
         case code::kPosAxisAbsolute:
         case code::kPosAxisRelative:
         case code::kSetSpeedAxis:
+        case code::kSetAccelerationAxis:
         case code::kStopAxis:
         case code::kStartAxisAbsolute:
         case code::kStartAxisRelative:
@@ -308,16 +309,22 @@ CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::
         case code::kPutNoReference:
             motion.SetReferenced(true);
             return Ack(0);
-        case code::kSetSpeedAxis: {
-            // 5.2.6.8: only within the limits of the traverse speed parameter.
-            const float speed = BitsToFloat(c.data);
+        case code::kSetSpeedAxis:
+        case code::kSetAccelerationAxis: {
+            // 5.2.6.8 / 5.2.6.9: only within the limits of the traverse speed / acceleration parameter.
+            const bool isSpeed = c.code == code::kSetSpeedAxis;
+            const std::uint16_t parameter = isSpeed ? axisparam::kTraverseSpeed : axisparam::kAcceleration;
+            const float value = BitsToFloat(c.data);
             const ParameterTable& parameters = state_.axes.Parameters(axis);
-            const bool limited = parameters.Contains(axisparam::kTraverseSpeed);
-            if (!(speed > 0.0F) || !std::isfinite(speed) ||
-                (limited && !parameters.WithinLimits(axisparam::kTraverseSpeed, c.data))) {
+            if (!(value > 0.0F) || !std::isfinite(value) ||
+                (parameters.Contains(parameter) && !parameters.WithinLimits(parameter, c.data))) {
                 return Fail(error::kValueOutsideRange);
             }
-            motion.SetSpeed(speed);
+            if (isSpeed) {
+                motion.SetSpeed(value);
+            } else {
+                motion.SetDeceleration(value);  // this linear model ramps only when braking
+            }
             return Ack(c.data);
         }
         case code::kStopAxis: {

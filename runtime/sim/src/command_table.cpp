@@ -59,6 +59,7 @@ std::vector<CommandInfo> BuildTable() {
         {code::kPosAxisAbsolute, "cmd_pos_axis_absolut", kOnlineOnly},
         {code::kPosAxisRelative, "cmd_pos_axis_relativ", kOnlineOnly},
         {code::kSetSpeedAxis, "cmd_set_speed_axis", kOnlineOnly},
+        {code::kSetAccelerationAxis, "cmd_set_acceleration", kOnlineOnly},
         {code::kStopAxis, "cmd_abort_move_axis", kOnlineOnly},
         {code::kStartAxisAbsolute, "cmd_start_axis_absolut", kOnlineOnly},
         {code::kStartAxisRelative, "cmd_start_axis_relativ", kOnlineOnly},

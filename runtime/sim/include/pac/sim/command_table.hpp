@@ -54,6 +54,7 @@ constexpr std::uint16_t kPutNoReference = 0x0A83;
 constexpr std::uint16_t kPosAxisAbsolute = 0x0A87;
 constexpr std::uint16_t kPosAxisRelative = 0x0A89;
 constexpr std::uint16_t kSetSpeedAxis = 0x0A8D;
+constexpr std::uint16_t kSetAccelerationAxis = 0x0A8E;
 constexpr std::uint16_t kStopAxis = 0x0A93;
 constexpr std::uint16_t kStartAxisAbsolute = 0x0A94;
 constexpr std::uint16_t kStartAxisRelative = 0x0A95;
