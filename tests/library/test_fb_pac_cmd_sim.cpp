@@ -185,6 +185,22 @@ TEST(CmdOverSim, PowerCycleDuringCommandThenOneCleanCommand) {
     EXPECT_EQ(bench.Controller().Counters().recognized, before + 1) << "the restart replayed nothing";
 }
 
+TEST(CmdOverSim, LinkLossAndReconnectionRepeatNoCommand) {
+    CmdBench bench({1, 3, 1});
+    bench.Settle(5);
+    ASSERT_GT(bench.Run(0x0906, 1, 5), 0);  // SEND = 1 acknowledged; the module holds 0906 N1 := 5
+    bench.Controller().Io().intRegisters.SetInt(1, 42);  // changed since by the PA-CONTROL's program
+    bench.Bus().Disconnect(bench.Now());
+    bench.Settle(50);
+    bench.Bus().Reconnect(bench.Now());
+    bench.Settle(50);
+    EXPECT_EQ(bench.Controller().Counters().Count(0x0906), 1u) << "0906 was not repeated";
+    EXPECT_EQ(bench.Controller().Io().intRegisters.GetInt(1), 42);
+    ASSERT_GT(bench.Run(0x1906, 1, 0), 0);
+    EXPECT_TRUE(bench.Last().done);
+    EXPECT_EQ(bench.Last().ackData, 42u);
+}
+
 TEST(CmdOverSim, FrozenLinkTimesOutAndRecoversAfterThaw) {
     pac::test::GvlConstants gvl;
     CmdBench bench({1, 3, 0});
