@@ -1,0 +1,31 @@
+#include "scenario.hpp"
+
+namespace pac::scenario {
+
+const char* ToString(FaultKind kind) {
+    switch (kind) {
+        case FaultKind::kPowerCycle:
+            return "power_cycle";
+        case FaultKind::kFreezeLink:
+            return "freeze_link";
+        case FaultKind::kThawLink:
+            return "thaw_link";
+        case FaultKind::kZeroLink:
+            return "zero_link";
+    }
+    return "?";
+}
+
+const char* ToString(LinkSide side) {
+    switch (side) {
+        case LinkSide::kToPac:
+            return "to_pac";
+        case LinkSide::kFromPac:
+            return "from_pac";
+        case LinkSide::kBoth:
+            return "both";
+    }
+    return "?";
+}
+
+}  // namespace pac::scenario

@@ -1,0 +1,92 @@
+// A scenario: the timing of PLC, bus and PA-CONTROL, the controller's state before the first scan,
+// and the steps to run one after the other (commands through FB_PAC_Cmd, faults, waits). Plain
+// data; ScenarioLoader builds it from a JSON file and refuses anything it cannot represent
+// (docs/scenario.md).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace pac::scenario {
+
+struct Timing {
+    int plcCycleMs = 1;
+    int pacCycleMs = 10;
+    int latencyCycles = 0;  // bus latency each way, in PLC cycles
+    int jitterMs = 0;       // extra delay of each image, uniform in [0, jitter], seeded
+    std::uint64_t seed = 1;
+    int bootMs = 50;  // the PA-CONTROL's boot after power-on: status 0, all-zero reply
+};
+
+// The controller before the first scan. Registers and inputs not named keep the simulator's
+// power-on values (0).
+struct ControllerSetup {
+    std::optional<std::uint8_t> operatingStatus;  // the status it boots into (default 1, home position)
+    std::map<int, std::int32_t> intRegisters;     // N
+    std::map<int, float> realRegisters;           // R
+    std::map<int, bool> inputs;
+};
+
+// A DWORD as the scenario wrote it: an integer, or a REAL carried as its IEEE-754 bits.
+struct DwordValue {
+    std::uint32_t bits = 0;
+    bool isReal = false;
+};
+
+// What a command step must end with; an empty optional is not checked.
+struct Expectation {
+    std::optional<bool> done;
+    std::optional<bool> error;
+    std::optional<std::uint16_t> errorId;
+    std::optional<DwordValue> ackData;
+
+    bool Empty() const { return !done && !error && !errorId && !ackData; }
+};
+
+// One command through FB_PAC_Cmd: Execute rises with these inputs and stays TRUE until Done or
+// Error; it falls in the scan after.
+struct CommandStep {
+    std::uint16_t code = 0;
+    std::string name;  // the command's PAC_CMD_ name in GVL_PAC, empty if it has none
+    std::uint16_t param = 0;
+    DwordValue data;
+    int timeoutMs = 1000;      // FB_PAC_Cmd.Timeout
+    int endTimeoutMs = 60000;  // FB_PAC_Cmd.EndTimeout
+    Expectation expect;
+};
+
+enum class FaultKind { kPowerCycle, kFreezeLink, kThawLink, kZeroLink };
+enum class LinkSide { kToPac, kFromPac, kBoth };
+
+// Acts between two scans, at the time of the last scan.
+struct FaultStep {
+    FaultKind kind = FaultKind::kPowerCycle;
+    LinkSide link = LinkSide::kBoth;  // link faults only
+};
+
+// Scans for at least `ms`, in whole PLC cycles.
+struct WaitStep {
+    int ms = 0;
+};
+
+struct Step {
+    std::variant<CommandStep, FaultStep, WaitStep> action;
+    std::string note;  // printed with the step
+};
+
+struct Scenario {
+    std::string name;
+    std::string description;
+    Timing timing;
+    ControllerSetup controller;
+    std::vector<Step> steps;
+};
+
+const char* ToString(FaultKind kind);  // "power_cycle", "freeze_link", ...
+const char* ToString(LinkSide side);   // "to_pac", "from_pac", "both"
+
+}  // namespace pac::scenario

@@ -1,0 +1,83 @@
+// Runs a Scenario against the simulated PA-CONTROL: one FB_PAC_Cmd of the library on the CMD
+// interface of a PLC task (pac::test::PacPlcBench: simulated clock, bus with latency and jitter, the
+// controller at its own cycle). Commands raise Execute and hold it until Done or Error, then drop it
+// for one scan; faults act between two scans; waits scan. An observer sees every scan and step.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pac/sim/image8.hpp"
+#include "scenario.hpp"
+
+namespace pac::scenario {
+
+// The CMD interface and FB_PAC_Cmd after one scan.
+struct ScanSample {
+    std::chrono::nanoseconds time{0};
+    std::int64_t scan = 0;
+    pac::sim::Image8 toPac{};    // the PLC's module as it goes out at the end of the scan
+    pac::sim::Image8 fromPac{};  // the PA-CONTROL's reply as the scan read it
+    bool execute = false;
+    bool busy = false;
+    bool done = false;
+    bool error = false;
+    std::uint16_t errorId = 0;
+    std::uint32_t ackData = 0;
+};
+
+// How one command ended.
+struct CommandOutcome {
+    bool finished = false;  // Done or Error came within the runner's bound (Timeout + EndTimeout + margin)
+    bool done = false;
+    bool error = false;
+    std::uint16_t errorId = 0;
+    std::uint32_t ackData = 0;
+    std::int64_t edgeScan = 0;  // the scan in which Execute rose
+    std::int64_t endScan = 0;   // the scan that showed Done or Error (the last one tried if !finished)
+    std::chrono::nanoseconds edgeTime{0};
+    std::chrono::nanoseconds endTime{0};
+};
+
+struct StepReport {
+    std::size_t index = 0;                  // into Scenario::steps
+    std::optional<CommandOutcome> outcome;  // command steps only
+    std::vector<std::string> failures;      // expectations not met
+    bool Passed() const { return failures.empty(); }
+};
+
+struct RunReport {
+    std::vector<StepReport> steps;
+
+    std::size_t Commands() const;
+    std::vector<std::size_t> FailedSteps() const;  // indices into Scenario::steps
+    bool Passed() const { return FailedSteps().empty(); }
+};
+
+class RunObserver {
+public:
+    virtual ~RunObserver() = default;
+    virtual void OnStart(const Scenario& /*scenario*/) {}
+    virtual void OnStepStart(std::size_t /*index*/, const Step& /*step*/, std::chrono::nanoseconds /*now*/) {}
+    virtual void OnScan(const ScanSample& /*sample*/) {}
+    virtual void OnStepEnd(const StepReport& /*report*/) {}
+    virtual void OnEnd(const RunReport& /*report*/) {}
+};
+
+class ScenarioRunner {
+public:
+    explicit ScenarioRunner(const Scenario& scenario) : scenario_(scenario) {}
+
+    // Each call runs on a fresh PLC and PA-CONTROL, from time 0.
+    RunReport Run(RunObserver& observer) const;
+    RunReport Run() const;
+
+private:
+    const Scenario& scenario_;
+};
+
+}  // namespace pac::scenario

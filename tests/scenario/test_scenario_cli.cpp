@@ -1,0 +1,127 @@
+// pac_scenario's command line: exit code 0 when every expectation is met, 1 when one failed, 2 for a
+// refused scenario (the reason on stderr) or bad usage. The process itself is run as well as RunCli,
+// so the exit codes are the ones a shell or CI sees.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace {
+
+using pac::scenario::RunCli;
+
+const std::string kDemo = std::string(PAC_SCENARIO_DIR) + "/demo.json";
+
+// ctest runs tests in parallel processes: every file a test writes carries the test's name.
+std::string TestName() { return testing::UnitTest::GetInstance()->current_test_info()->name(); }
+
+std::string TempFile(const std::string& name, const std::string& text) {
+    const std::string path = testing::TempDir() + "/" + TestName() + "-" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string ReadFile(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Process {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs the pac_scenario binary with `args` (shell words, already quoted where needed).
+Process RunBinary(const std::string& args) {
+    const std::string out = testing::TempDir() + "/" + TestName() + ".out";
+    const std::string err = testing::TempDir() + "/" + TestName() + ".err";
+    const std::string command = std::string("'") + PAC_SCENARIO_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
+    const int status = std::system(command.c_str());
+    Process result;
+    if (status != -1 && WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    result.out = ReadFile(out);
+    result.err = ReadFile(err);
+    return result;
+}
+
+struct Cli {
+    explicit Cli(const std::vector<std::string>& args) { exitCode = RunCli(args, out, err); }
+    int exitCode;
+    std::ostringstream out;
+    std::ostringstream err;
+};
+
+TEST(ScenarioCli, DemoExitsZero) {
+    const Process run = RunBinary("'" + kDemo + "'");
+    EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_NE(run.out.find("Result: 9 steps, 6 commands: all expectations met"), std::string::npos) << run.out;
+}
+
+TEST(ScenarioCli, FailedExpectationExitsOne) {
+    const std::string path = TempFile("failing.json", R"({"timing": {"boot_ms": 0}, "steps": [
+        {"command": "PAC_CMD_GET_INT_REG", "param": 2000, "expect": {"done": true}}]})");
+    const Process run = RunBinary("'" + path + "'");
+    EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("  => FAILED: Done is FALSE, expected TRUE\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Result: 1 step, 1 command: 1 step FAILED (step 1)"), std::string::npos) << run.out;
+    EXPECT_EQ(Cli({path}).exitCode, pac::scenario::kExitExpectationFailed);
+}
+
+TEST(ScenarioCli, InvalidScenarioExitsTwoWithTheReason) {
+    const std::string path = TempFile("invalid.json", R"({"steps": [{"command": "0906", "param": 70000}]})");
+    const Process run = RunBinary("'" + path + "'");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err, "pac_scenario: invalid scenario " + path +
+                           ": $.steps[0].param: out of range: 70000 is not in 0..65535\n");
+
+    const Cli cli({TempFile("bad-name.json", R"({"steps": [{"command": "PAC_CMD_NOPE"}]})")});
+    EXPECT_EQ(cli.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(cli.err.str().find(R"($.steps[0].command: unknown command name "PAC_CMD_NOPE")"), std::string::npos)
+        << cli.err.str();
+}
+
+TEST(ScenarioCli, CheckOnlyValidates) {
+    const Process run = RunBinary("--check '" + kDemo + "'");
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out, kDemo + ": valid scenario, 9 steps\n");
+    EXPECT_EQ(Cli({"--check", TempFile("bad.json", "{")}).exitCode, pac::scenario::kExitRefused);
+}
+
+TEST(ScenarioCli, UsageErrorsExitTwo) {
+    EXPECT_EQ(RunBinary("").exitCode, 2);
+    const Cli none({});
+    EXPECT_EQ(none.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(none.err.str().find("usage: pac_scenario [--check] [--gvl FILE] SCENARIO.json"), std::string::npos);
+    const Cli unknown({"--fast", kDemo});
+    EXPECT_EQ(unknown.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(unknown.err.str().find("pac_scenario: unknown option --fast"), std::string::npos);
+    const Cli two({kDemo, kDemo});
+    EXPECT_EQ(two.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(two.err.str().find("one scenario file at a time"), std::string::npos);
+    const Cli help({"--help"});
+    EXPECT_EQ(help.exitCode, pac::scenario::kExitOk);
+    EXPECT_NE(help.out.str().find("exit codes: 0 all expectations met"), std::string::npos);
+}
+
+TEST(ScenarioCli, MissingFilesExitTwo) {
+    const Cli scenario({testing::TempDir() + "/missing.json"});
+    EXPECT_EQ(scenario.exitCode, pac::scenario::kExitRefused);
+    EXPECT_EQ(scenario.err.str(),
+              "pac_scenario: invalid scenario " + testing::TempDir() + "/missing.json: cannot read the file\n");
+    const Cli gvl({"--gvl", testing::TempDir() + "/missing.st", kDemo});
+    EXPECT_EQ(gvl.exitCode, pac::scenario::kExitRefused);
+    EXPECT_EQ(gvl.err.str(), "pac_scenario: cannot read " + testing::TempDir() + "/missing.st (the names of GVL_PAC)\n");
+}
+
+}  // namespace

@@ -1,0 +1,337 @@
+// ScenarioLoader: what a scenario file may say, and the reason it gives, with the JSONPath, for
+// everything it refuses: invalid JSON, duplicate / unknown / missing keys, wrong types, values out
+// of range, unknown command, error and status names. It never crashes on any input.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "gvl_names.hpp"
+#include "scenario_loader.hpp"
+
+namespace {
+
+using pac::scenario::CommandStep;
+using pac::scenario::FaultKind;
+using pac::scenario::FaultStep;
+using pac::scenario::LinkSide;
+using pac::scenario::Scenario;
+using pac::scenario::ScenarioError;
+using pac::scenario::ScenarioLoader;
+using pac::scenario::WaitStep;
+
+const pac::scenario::GvlNames& Names() {
+    static const pac::scenario::GvlNames names(PAC_GVL_FILE);
+    return names;
+}
+
+Scenario Load(const std::string& text) { return ScenarioLoader(Names()).FromText(text); }
+
+// The refusal's full message ("$.steps[0].param: out of range: ..."), or "accepted".
+std::string Refusal(const std::string& text) {
+    try {
+        Load(text);
+    } catch (const ScenarioError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+// A scenario whose only step is `step`.
+std::string WithStep(const std::string& step) { return R"({"steps": [)" + step + "]}"; }
+
+std::string ReadFile(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST(ScenarioLoader, ReadsEveryField) {
+    const Scenario s = Load(R"({
+      "name": "all", "description": "every field",
+      "timing": {"plc_cycle_ms": 2, "pac_cycle_ms": 7, "latency_cycles": 3, "jitter_ms": 4, "seed": 99, "boot_ms": 0},
+      "controller": {"operating_status": "PAC_STATUS_ONLINE", "n_registers": {"3": -7, "1024": 2147483647},
+                     "r_registers": {"1": 640.0}, "inputs": {"5": true, "6": false}},
+      "steps": [
+        {"command": "PAC_CMD_PUT_FLOAT_REG", "param": 2, "data": {"real": 10.0}, "timeout_ms": 200,
+         "end_timeout_ms": 300, "note": "n", "expect": {"done": true, "ack_data": {"real": 10.0}}},
+        {"command": "1906", "param": 65535, "data": 4294967295,
+         "expect": {"error": true, "error_id": "PAC_ERR_N_REGISTER"}},
+        {"command": "16#0906", "data": -2147483648, "expect": {"error_id": "16#8001"}},
+        {"command": "7777", "expect": {"error_id": 19, "ack_data": 0}},
+        {"fault": "power_cycle", "note": "off and on"},
+        {"fault": "freeze_link", "link": "from_pac"},
+        {"fault": "zero_link", "link": "to_pac"},
+        {"fault": "thaw_link"},
+        {"wait_ms": 15}
+      ]})");
+    EXPECT_EQ(s.name, "all");
+    EXPECT_EQ(s.description, "every field");
+    EXPECT_EQ(s.timing.plcCycleMs, 2);
+    EXPECT_EQ(s.timing.pacCycleMs, 7);
+    EXPECT_EQ(s.timing.latencyCycles, 3);
+    EXPECT_EQ(s.timing.jitterMs, 4);
+    EXPECT_EQ(s.timing.seed, 99u);
+    EXPECT_EQ(s.timing.bootMs, 0);
+    EXPECT_EQ(s.controller.operatingStatus, 31);
+    EXPECT_EQ(s.controller.intRegisters.at(3), -7);
+    EXPECT_EQ(s.controller.intRegisters.at(1024), 2147483647);
+    EXPECT_EQ(s.controller.realRegisters.at(1), 640.0F);
+    EXPECT_TRUE(s.controller.inputs.at(5));
+    EXPECT_FALSE(s.controller.inputs.at(6));
+    ASSERT_EQ(s.steps.size(), 9u);
+
+    const auto& put = std::get<CommandStep>(s.steps[0].action);
+    EXPECT_EQ(put.code, 0x0907);
+    EXPECT_EQ(put.name, "PAC_CMD_PUT_FLOAT_REG");
+    EXPECT_EQ(put.param, 2);
+    EXPECT_EQ(put.data.bits, 0x41200000u);  // 10.0 (NOTES.md: not 43 20 00 00)
+    EXPECT_TRUE(put.data.isReal);
+    EXPECT_EQ(put.timeoutMs, 200);
+    EXPECT_EQ(put.endTimeoutMs, 300);
+    EXPECT_EQ(s.steps[0].note, "n");
+    EXPECT_EQ(put.expect.done, true);
+    EXPECT_FALSE(put.expect.error.has_value());
+    EXPECT_EQ(put.expect.ackData->bits, 0x41200000u);
+
+    const auto& get = std::get<CommandStep>(s.steps[1].action);
+    EXPECT_EQ(get.code, 0x1906);
+    EXPECT_EQ(get.name, "PAC_CMD_GET_INT_REG");  // named from GVL_PAC although written in hex
+    EXPECT_EQ(get.param, 65535);
+    EXPECT_EQ(get.data.bits, 0xFFFFFFFFu);
+    EXPECT_EQ(get.expect.errorId, 38);
+
+    const auto& put2 = std::get<CommandStep>(s.steps[2].action);
+    EXPECT_EQ(put2.code, 0x0906);
+    EXPECT_EQ(put2.data.bits, 0x80000000u);
+    EXPECT_EQ(put2.expect.errorId, 0x8001);
+    EXPECT_EQ(std::get<CommandStep>(s.steps[3].action).name, "");  // 7777 is no command of GVL_PAC
+
+    EXPECT_EQ(std::get<FaultStep>(s.steps[4].action).kind, FaultKind::kPowerCycle);
+    EXPECT_EQ(s.steps[4].note, "off and on");
+    EXPECT_EQ(std::get<FaultStep>(s.steps[5].action).kind, FaultKind::kFreezeLink);
+    EXPECT_EQ(std::get<FaultStep>(s.steps[5].action).link, LinkSide::kFromPac);
+    EXPECT_EQ(std::get<FaultStep>(s.steps[6].action).link, LinkSide::kToPac);
+    EXPECT_EQ(std::get<FaultStep>(s.steps[7].action).kind, FaultKind::kThawLink);
+    EXPECT_EQ(std::get<FaultStep>(s.steps[7].action).link, LinkSide::kBoth);
+    EXPECT_EQ(std::get<WaitStep>(s.steps[8].action).ms, 15);
+}
+
+TEST(ScenarioLoader, DefaultsForWhatIsLeftOut) {
+    const Scenario s = Load(WithStep(R"({"command": "PAC_CMD_GET_STAT"})"));
+    EXPECT_EQ(s.timing.plcCycleMs, 1);
+    EXPECT_EQ(s.timing.pacCycleMs, 10);
+    EXPECT_EQ(s.timing.latencyCycles, 0);
+    EXPECT_EQ(s.timing.jitterMs, 0);
+    EXPECT_EQ(s.timing.seed, 1u);
+    EXPECT_EQ(s.timing.bootMs, 50);
+    EXPECT_FALSE(s.controller.operatingStatus.has_value());
+    const auto& command = std::get<CommandStep>(s.steps[0].action);
+    EXPECT_EQ(command.code, 0x190B);
+    EXPECT_EQ(command.param, 0);
+    EXPECT_EQ(command.data.bits, 0u);
+    EXPECT_EQ(command.timeoutMs, 1000);
+    EXPECT_EQ(command.endTimeoutMs, 60000);
+    EXPECT_TRUE(command.expect.Empty());
+}
+
+TEST(ScenarioLoader, IntegralNumbersMayBeWrittenWithAFraction) {
+    const Scenario s = Load(R"({"timing": {"plc_cycle_ms": 2.0}, "steps": [{"wait_ms": 1e1}]})");
+    EXPECT_EQ(s.timing.plcCycleMs, 2);
+    EXPECT_EQ(std::get<WaitStep>(s.steps[0].action).ms, 10);
+}
+
+TEST(ScenarioLoader, RefusesInvalidJsonWithLineAndColumn) {
+    EXPECT_EQ(Refusal("{\"steps\": [\n  {\"wait_ms\": 5},\n]}"),
+              "not valid JSON: parse error at line 3, column 1: syntax error while parsing value - unexpected ']'; "
+              "expected '[', '{', or a literal");
+    EXPECT_EQ(Refusal(""),
+              "not valid JSON: parse error at line 1, column 1: syntax error while parsing value - unexpected end of "
+              "input; expected '[', '{', or a literal");
+}
+
+TEST(ScenarioLoader, RefusesADuplicateKey) {
+    EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}, {"command": "0906", "param": 1, "param": 2}]})"),
+              R"($.steps[1].param: duplicate key "param")");
+    EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}], "steps": []})"), R"($.steps: duplicate key "steps")");
+    EXPECT_EQ(Refusal(R"({"controller": {"n_registers": {"3": 1, "3": 2}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.n_registers["3"]: duplicate key "3")");
+}
+
+TEST(ScenarioLoader, RefusesUnknownKeys) {
+    EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}], "step": 1})"),
+              R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "controller" or "steps"))");
+    EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle": 2}, "steps": [{"wait_ms": 1}]})"),
+              R"($.timing.plc_cycle: unknown key "plc_cycle" (timing has "plc_cycle_ms", "pac_cycle_ms", )"
+              R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
+    EXPECT_EQ(Refusal(R"({"controller": {"n_register": {}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.n_register: unknown key "n_register" (controller has "operating_status", )"
+              R"("n_registers", "r_registers" or "inputs"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "parm": 3})")),
+              R"($.steps[0].parm: unknown key "parm" (a command step has "command", "param", "data", "timeout_ms", )"
+              R"("end_timeout_ms", "expect" or "note"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"ackdata": 3}})")),
+              R"($.steps[0].expect.ackdata: unknown key "ackdata" (an expectation has "done", "error", "error_id" or )"
+              R"("ack_data"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "data": {"float": 1.0}})")),
+              R"($.steps[0].data.float: unknown key "float" (a REAL value has "real"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"fault": "power_cycle", "link": "to_pac"})")),
+              R"($.steps[0].link: unknown key "link" (a power_cycle step has "fault" or "note"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"wait_ms": 5, "param": 1})")),
+              R"($.steps[0].param: unknown key "param" (a wait step has "wait_ms" or "note"))");
+    // Without any step kind, a misspelt key is the likelier mistake.
+    EXPECT_EQ(Refusal(WithStep(R"({"comand": "0906"})")),
+              R"($.steps[0].comand: unknown key "comand" (a step has "command", "param", "data", "timeout_ms", )"
+              R"("end_timeout_ms", "expect", "note", "fault", "link" or "wait_ms"))");
+    EXPECT_EQ(Refusal(R"({"controller": {"inputs": {"I5": true}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.inputs.I5: unknown key "I5" (the keys are input numbers 1..1024))");
+}
+
+TEST(ScenarioLoader, RefusesMissingKeys) {
+    EXPECT_EQ(Refusal(R"({"name": "x"})"), R"($: missing key "steps" (a scenario needs it))");
+    EXPECT_EQ(Refusal(WithStep(R"({"note": "what?"})")),
+              R"($.steps[0]: missing key: a step needs one of "command", "fault" or "wait_ms")");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0907", "data": {}})")),
+              R"($.steps[0].data: missing key "real" (a REAL value needs it))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "wait_ms": 5})")),
+              R"($.steps[0]: a step has exactly one of "command", "fault" or "wait_ms", this one has "command" and )"
+              R"("wait_ms")");
+}
+
+TEST(ScenarioLoader, RefusesWrongTypes) {
+    EXPECT_EQ(Refusal("[]"), "$: wrong type: expected an object, got an array");
+    EXPECT_EQ(Refusal(R"({"steps": {"wait_ms": 1}})"), "$.steps: wrong type: expected an array of steps, got an object");
+    EXPECT_EQ(Refusal(R"({"steps": [5]})"), "$.steps[0]: wrong type: expected an object, got the number 5");
+    EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle_ms": "2"}, "steps": [{"wait_ms": 1}]})"),
+              R"($.timing.plc_cycle_ms: wrong type: expected an integer, got a string "2")");
+    EXPECT_EQ(Refusal(R"({"timing": [], "steps": [{"wait_ms": 1}]})"),
+              "$.timing: wrong type: expected an object, got an array");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "param": 2.5})")),
+              "$.steps[0].param: wrong type: expected an integer, got the number 2.5");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": 906})")),
+              R"($.steps[0].command: wrong type: expected a command: 4 hex digits like "0906" or a GVL_PAC name like )"
+              R"("PAC_CMD_PUT_INT_REG", got the number 906)");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "data": "333"})")),
+              R"($.steps[0].data: wrong type: expected an integer or {"real": number}, got a string "333")");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"done": 1}})")),
+              "$.steps[0].expect.done: wrong type: expected true or false, got the number 1");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"error_id": null}})")),
+              "$.steps[0].expect.error_id: wrong type: expected an error number, \"16#8001\" or a PAC_ERR_ / "
+              "PAC_LIB_ERR_ name, got null");
+    EXPECT_EQ(Refusal(WithStep(R"({"wait_ms": 5, "note": 5})")),
+              "$.steps[0].note: wrong type: expected a string, got the number 5");
+    EXPECT_EQ(Refusal(R"({"controller": {"r_registers": {"1": "640.0"}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.r_registers["1"]: wrong type: expected a number, got a string "640.0")");
+    EXPECT_EQ(Refusal(R"({"controller": {"inputs": {"5": 1}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.inputs["5"]: wrong type: expected true or false, got the number 1)");
+}
+
+TEST(ScenarioLoader, RefusesValuesOutOfRange) {
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "param": 70000})")),
+              "$.steps[0].param: out of range: 70000 is not in 0..65535");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "param": -1})")),
+              "$.steps[0].param: out of range: -1 is not in 0..65535");
+    EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle_ms": 0}, "steps": [{"wait_ms": 1}]})"),
+              "$.timing.plc_cycle_ms: out of range: 0 is not in 1..1000");
+    EXPECT_EQ(Refusal(R"({"timing": {"seed": -1}, "steps": [{"wait_ms": 1}]})"),
+              "$.timing.seed: out of range: -1 is not in 0..18446744073709551615");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "data": 4294967296})")),
+              "$.steps[0].data: out of range: 4294967296 is not in -2147483648..4294967295");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0907", "data": {"real": 1e39}})")),
+              "$.steps[0].data.real: out of range: 1e+39 does not fit a REAL (at most 3.4028235e38)");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "timeout_ms": 0})")),
+              "$.steps[0].timeout_ms: out of range: 0 is not in 1..3600000");
+    EXPECT_EQ(Refusal(WithStep(R"({"wait_ms": 0})")), "$.steps[0].wait_ms: out of range: 0 is not in 1..3600000");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"error_id": 65536}})")),
+              "$.steps[0].expect.error_id: out of range: 65536 is not in 0..65535");
+    EXPECT_EQ(Refusal(R"({"controller": {"n_registers": {"1025": 1}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.n_registers["1025"]: out of range: N register 1025 is not in 1..1024)");
+    EXPECT_EQ(Refusal(R"({"controller": {"n_registers": {"0": 1}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.n_registers["0"]: out of range: N register 0 is not in 1..1024)");
+    EXPECT_EQ(Refusal(R"({"controller": {"n_registers": {"3": 2147483648}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.n_registers["3"]: out of range: 2147483648 is not in -2147483648..2147483647)");
+    EXPECT_EQ(Refusal(R"({"controller": {"operating_status": 40}, "steps": [{"wait_ms": 1}]})"),
+              "$.controller.operating_status: out of range: 40 is not an operating status of GVL_PAC");
+    EXPECT_EQ(Refusal(R"({"steps": []})"), "$.steps: out of range: a scenario needs at least one step");
+}
+
+TEST(ScenarioLoader, RefusesUnknownNames) {
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "PAC_CMD_PUT_INT_REGISTER"})")),
+              R"($.steps[0].command: unknown command name "PAC_CMD_PUT_INT_REGISTER" (a command is 4 hex digits like )"
+              R"("0906" or a PAC_CMD_ constant of GVL_PAC))");
+    // A name of GVL_PAC, but not a command's.
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "PAC_ERR_N_REGISTER"})")),
+              R"($.steps[0].command: unknown command name "PAC_ERR_N_REGISTER" (a command is 4 hex digits like )"
+              R"("0906" or a PAC_CMD_ constant of GVL_PAC))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "906"})")),
+              R"($.steps[0].command: unknown command name "906" (a command is 4 hex digits like "0906" or a )"
+              R"(PAC_CMD_ constant of GVL_PAC))");
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"error_id": "PAC_ERR_N_REG"}})")),
+              R"($.steps[0].expect.error_id: unknown error name "PAC_ERR_N_REG" (not a PAC_ERR_ or PAC_LIB_ERR_ )"
+              R"(constant of GVL_PAC, nor a number like "16#8001"))");
+    EXPECT_EQ(Refusal(R"({"controller": {"operating_status": "PAC_STATUS_RUNNING"}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.operating_status: unknown status name "PAC_STATUS_RUNNING" (not a PAC_STATUS_ )"
+              R"(constant of GVL_PAC))");
+    EXPECT_EQ(Refusal(WithStep(R"({"fault": "unplug"})")),
+              R"($.steps[0].fault: unknown fault "unplug" (a fault is "power_cycle", "freeze_link", "thaw_link" or )"
+              R"("zero_link"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"fault": "freeze_link", "link": "up"})")),
+              R"($.steps[0].link: unknown link "up" (a link is "to_pac", "from_pac" or "both"))");
+}
+
+TEST(ScenarioLoader, RefusesContradictoryExpectations) {
+    EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "expect": {"done": true, "error": true}})")),
+              "$.steps[0].expect: contradiction: done and error cannot both be true (FB_PAC_Cmd's outputs are exclusive)");
+}
+
+TEST(ScenarioLoader, FilesNameTheScenarioAndRefuseYaml) {
+    const ScenarioLoader loader(Names());
+    const Scenario demo = loader.FromFile(std::string(PAC_SCENARIO_DIR) + "/demo.json");
+    EXPECT_EQ(demo.name, "demo");
+    const std::string path = testing::TempDir() + "/ScenarioLoader-unnamed.json";
+    std::ofstream(path) << R"({"steps": [{"wait_ms": 1}]})";
+    EXPECT_EQ(loader.FromFile(path).name, "ScenarioLoader-unnamed.json");
+
+    try {
+        loader.FromFile(testing::TempDir() + "/scenario.yaml");
+        FAIL() << "YAML accepted";
+    } catch (const ScenarioError& e) {
+        EXPECT_STREQ(e.what(), "YAML is not supported: write the scenario as JSON (docs/scenario.md)");
+    }
+    try {
+        loader.FromFile(testing::TempDir() + "/no-such-scenario.json");
+        FAIL() << "a missing file accepted";
+    } catch (const ScenarioError& e) {
+        EXPECT_STREQ(e.what(), "cannot read the file");
+    }
+}
+
+// Every prefix of the demo and every one-byte change of it is either a scenario or a ScenarioError:
+// nothing else escapes the loader.
+TEST(ScenarioLoader, NeverCrashesOnDamagedFiles) {
+    const std::string demo = ReadFile(std::string(PAC_SCENARIO_DIR) + "/demo.json");
+    ASSERT_FALSE(demo.empty());
+    int refused = 0;
+    auto attempt = [&](const std::string& text) {
+        try {
+            Load(text);
+        } catch (const ScenarioError&) {
+            ++refused;
+        }
+    };
+    for (std::size_t length = 0; length < demo.size(); ++length) attempt(demo.substr(0, length));
+    const std::string replacements = "\"{}[],:0-9.eE \\ax";
+    std::uint64_t state = 12345;
+    for (int i = 0; i < 3000; ++i) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        std::string text = demo;
+        text[(state >> 33) % text.size()] = replacements[(state >> 17) % replacements.size()];
+        attempt(text);
+    }
+    EXPECT_GT(refused, static_cast<int>(demo.size()));
+}
+
+}  // namespace

@@ -1,0 +1,193 @@
+// ScenarioRunner and TimelinePrinter: the demo scenario and the link-fault example meet every
+// expectation; a failed expectation is reported with what was seen; the controller setup, faults
+// and waits act as described in docs/scenario.md; the timeline shows only scans with a change.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <sstream>
+#include <string>
+
+#include "gvl_names.hpp"
+#include "scenario_loader.hpp"
+#include "scenario_runner.hpp"
+#include "timeline_printer.hpp"
+
+namespace {
+
+using pac::scenario::RunReport;
+using pac::scenario::Scenario;
+using pac::scenario::ScenarioLoader;
+using pac::scenario::ScenarioRunner;
+
+const pac::scenario::GvlNames& Names() {
+    static const pac::scenario::GvlNames names(PAC_GVL_FILE);
+    return names;
+}
+
+// Runs a scenario and keeps its timeline.
+struct ScenarioRun {
+    explicit ScenarioRun(const Scenario& s) : scenario(s) {
+        pac::scenario::TimelinePrinter printer(timeline, Names());
+        report = ScenarioRunner(scenario).Run(printer);
+    }
+
+    Scenario scenario;
+    std::ostringstream timeline;
+    RunReport report;
+};
+
+Scenario FromText(const std::string& text) { return ScenarioLoader(Names()).FromText(text); }
+Scenario FromFile(const std::string& name) {
+    return ScenarioLoader(Names()).FromFile(std::string(PAC_SCENARIO_DIR) + "/" + name);
+}
+
+
+// Lines of the timeline that show a scan: they start with the time column.
+int ScanLines(const std::string& timeline) {
+    std::istringstream lines(timeline);
+    int n = 0;
+    for (std::string line; std::getline(lines, line);) {
+        const auto first = line.find_first_not_of(' ');
+        if (first != std::string::npos && std::isdigit(static_cast<unsigned char>(line[first]))) ++n;
+    }
+    return n;
+}
+
+TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
+    const ScenarioRun run(FromFile("demo.json"));
+    const std::string& out = run.timeline.str();
+    EXPECT_TRUE(run.report.Passed()) << out;
+    EXPECT_EQ(run.report.steps.size(), 9u);
+    EXPECT_EQ(run.report.Commands(), 6u);
+    EXPECT_NE(out.find("Result: 9 steps, 6 commands: all expectations met"), std::string::npos) << out;
+    // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4).
+    EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
+    // R1 = 640.0 is 44 20 00 00 (NOTES.md), printed as a REAL because the step expects one.
+    EXPECT_NE(out.find("| 44 20 00 00 00 01 A0 00 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("AckData 640.0 (16#44200000): as expected"), std::string::npos) << out;
+    EXPECT_NE(out.find("ErrorID 38 PAC_ERR_N_REGISTER \"inadmissible N register\""), std::string::npos) << out;
+    // The power cycle: the reply drops to zero, the idle FB parks the module, the boot ends.
+    EXPECT_NE(out.find("| 00 00 00 00 00 00 19 0B | 00 00 00 00 00 00 00 00 |"), std::string::npos) << out;
+    for (const auto& step : run.report.steps) {
+        if (!step.outcome) continue;
+        EXPECT_TRUE(step.outcome->finished);
+        // 2 ms PLC, 5 ms PA-CONTROL, one PLC cycle latency each way: 3 scans from edge to result.
+        EXPECT_EQ(step.outcome->endScan - step.outcome->edgeScan, 3) << "step " << step.index + 1;
+    }
+}
+
+TEST(ScenarioRunner, LinkFaultExampleMeetsEveryExpectation) {
+    const ScenarioRun run(FromFile("examples/link_faults.json"));
+    EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
+    EXPECT_EQ(run.report.Commands(), 5u);
+}
+
+TEST(ScenarioRunner, RunsAreDeterministic) {
+    const Scenario demo = FromFile("demo.json");
+    const ScenarioRun first(demo);
+    const ScenarioRun second(demo);
+    EXPECT_EQ(first.timeline.str(), second.timeline.str());
+}
+
+TEST(ScenarioRunner, AFailedExpectationSaysWhatWasSeen) {
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0}, "steps": [
+        {"command": "PAC_CMD_PUT_INT_REG", "param": 3, "data": 333, "expect": {"done": true}},
+        {"command": "PAC_CMD_GET_INT_REG", "param": 3, "expect": {"done": true, "ack_data": 334}},
+        {"command": "PAC_CMD_GET_INT_REG", "param": 2000, "expect": {"done": true, "error_id": 0}},
+        {"command": "PAC_CMD_GET_FLOAT_REG", "param": 1, "expect": {"ack_data": {"real": 640.0}}}]})"));
+    EXPECT_FALSE(run.report.Passed());
+    EXPECT_EQ(run.report.FailedSteps(), (std::vector<std::size_t>{1, 2, 3}));
+    EXPECT_EQ(run.report.steps[1].failures, (std::vector<std::string>{"AckData is 333 (16#0000014D), expected 334 (16#0000014E)"}));
+    EXPECT_EQ(run.report.steps[2].failures,
+              (std::vector<std::string>{"Done is FALSE, expected TRUE", "ErrorID is 38, expected 0"}));
+    EXPECT_EQ(run.report.steps[3].failures,
+              (std::vector<std::string>{"AckData is 0.0 (16#00000000), expected 640.0 (16#44200000)"}));
+    const std::string& out = run.timeline.str();
+    EXPECT_NE(out.find("  => FAILED: AckData is 333 (16#0000014D), expected 334 (16#0000014E)\n"), std::string::npos) << out;
+    EXPECT_NE(out.find("Result: 4 steps, 4 commands: 3 steps FAILED (step 2, 3, 4)"), std::string::npos) << out;
+}
+
+TEST(ScenarioRunner, ControllerSetupIsThereBeforeTheFirstScan) {
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0},
+        "controller": {"operating_status": "PAC_STATUS_ONLINE", "n_registers": {"9": -2},
+                       "r_registers": {"4": 0.1}, "inputs": {"17": true}},
+        "steps": [
+          {"command": "PAC_CMD_GET_STAT", "expect": {"done": true, "ack_data": 31}},
+          {"command": "PAC_CMD_GET_INT_REG", "param": 9, "expect": {"ack_data": -2}},
+          {"command": "PAC_CMD_GET_FLOAT_REG", "param": 4, "expect": {"ack_data": {"real": 0.1}}},
+          {"command": "PAC_CMD_GET_SINGLE_INPUT", "param": 17, "expect": {"ack_data": 1}},
+          {"command": "PAC_CMD_GET_INPUT_WORD", "param": 17, "expect": {"ack_data": 1}}]})"));
+    EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
+    EXPECT_NE(run.timeline.str().find("controller: boots into status 31 PAC_STATUS_ONLINE, N9 = -2, R4 = 0.1 "
+                                      "(16#3DCCCCCD), input 17 = 1"),
+              std::string::npos)
+        << run.timeline.str();
+}
+
+TEST(ScenarioRunner, TheFbRefusesWhatItMustRefuse) {
+    const ScenarioRun run(FromText(R"({"steps": [
+        {"command": "PAC_CMD_GET_STAT", "note": "still booting",
+         "expect": {"error": true, "error_id": "PAC_LIB_ERR_NOT_READY"}},
+        {"wait_ms": 60},
+        {"command": "8906", "note": "bit 15 is the SEND flag", "expect": {"error": true, "error_id": "16#8005"}},
+        {"command": "7777", "note": "no such command", "expect": {"error": true, "error_id": "PAC_ERR_UNKNOWN_COMMAND"}}
+        ]})"));
+    EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
+    // Refused at the edge: Error in the very scan in which Execute rose.
+    EXPECT_EQ(run.report.steps[0].outcome->endScan, run.report.steps[0].outcome->edgeScan);
+    EXPECT_EQ(run.report.steps[2].outcome->endScan, run.report.steps[2].outcome->edgeScan);
+    EXPECT_NE(run.timeline.str().find("step 4 at 64 ms: command (16#7777), Param 0  -- no such command"),
+              std::string::npos)
+        << run.timeline.str();
+}
+
+TEST(ScenarioRunner, WaitsScanWholePlcCyclesAndPrintOnlyChanges) {
+    const ScenarioRun run(FromText(R"({"timing": {"plc_cycle_ms": 4, "boot_ms": 10}, "steps": [{"wait_ms": 401}]})"));
+    EXPECT_TRUE(run.report.Passed());
+    const std::string& out = run.timeline.str();
+    EXPECT_NE(out.find("wait 401 ms (101 scans)"), std::string::npos) << out;
+    // The first scan (booting: zeros) and the scan that sees the boot's reply; nothing changes after.
+    EXPECT_EQ(ScanLines(out), 2) << out;
+    EXPECT_NE(out.find("      12      3 | 00 00 00 00 00 00 19 0B | 00 00 00 00 00 01 20 00 |"), std::string::npos)
+        << out;
+}
+
+TEST(ScenarioRunner, LinkFaultsActOnTheirDirection) {
+    // ToPac zeroed: the PA-CONTROL sees an all-zero module (EMERGENCY STOP) and no command; the FB
+    // times out. Thawed, the module of the timed-out command arrives and is carried out late.
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0}, "steps": [
+        {"wait_ms": 20},
+        {"fault": "zero_link", "link": "to_pac"},
+        {"command": "PAC_CMD_PUT_INT_REG", "param": 5, "data": 55, "timeout_ms": 30,
+         "expect": {"error": true, "error_id": "PAC_LIB_ERR_ACK_TIMEOUT"}},
+        {"fault": "thaw_link", "link": "to_pac"},
+        {"wait_ms": 30},
+        {"command": "PAC_CMD_GET_INT_REG", "param": 5, "expect": {"done": true, "ack_data": 55}}]})"));
+    EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
+}
+
+TEST(ScenarioRunner, JitteredBusStillMeetsTheDemo) {
+    Scenario demo = FromFile("demo.json");
+    for (std::uint64_t seed : {3u, 4u, 5u}) {
+        demo.timing.jitterMs = 3;
+        demo.timing.seed = seed;
+        const ScenarioRun run(demo);
+        EXPECT_TRUE(run.report.Passed()) << "seed " << seed << "\n" << run.timeline.str();
+        EXPECT_NE(run.timeline.str().find("+ jitter up to 3 ms (seed " + std::to_string(seed) + ")"), std::string::npos);
+    }
+}
+
+// Zeros from the PA-CONTROL read as operating status 0: the FB sends nothing until they are gone.
+TEST(ScenarioRunner, ZeroedRepliesHoldBackCommandsUntilThawed) {
+    const ScenarioRun run(FromText(R"({"timing": {"plc_cycle_ms": 1, "pac_cycle_ms": 10, "latency_cycles": 3, "boot_ms": 0},
+        "steps": [
+          {"wait_ms": 5},
+          {"fault": "zero_link", "link": "from_pac"},
+          {"command": "PAC_CMD_GET_STAT", "expect": {"error": true, "error_id": "PAC_LIB_ERR_NOT_READY"}},
+          {"fault": "thaw_link"},
+          {"wait_ms": 5},
+          {"command": "PAC_CMD_GET_STAT", "expect": {"done": true, "ack_data": 1}}]})"));
+    EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
+}
+
+}  // namespace
