@@ -15,6 +15,7 @@
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
+#include "real_bits.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac_plc_bench.hpp"
 
@@ -33,17 +34,8 @@ const pac::test::GvlConstants kGvl;
 // 1 ms PLC cycle, 10 ms controller cycle, one PLC cycle of bus latency each way.
 const PlcBenchTiming kTiming{1ms, 10ms, 1};
 
-std::uint32_t BitsOf(float f) {
-    std::uint32_t b;
-    std::memcpy(&b, &f, sizeof b);
-    return b;
-}
-
-float FloatOf(std::uint32_t b) {
-    float f;
-    std::memcpy(&f, &b, sizeof f);
-    return f;
-}
+using pac::test::BitsOf;
+using pac::test::FloatOf;
 
 struct Outcome {
     bool done = false;

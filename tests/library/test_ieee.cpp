@@ -14,23 +14,15 @@
 #include <gtest/gtest.h>
 
 #include "pac/st_program.hpp"
+#include "real_bits.hpp"
 
 namespace {
 
 static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float>::is_iec559,
               "REAL must be an IEEE-754 single");
 
-std::uint32_t BitsOf(float f) {
-    std::uint32_t b;
-    std::memcpy(&b, &f, sizeof b);
-    return b;
-}
-
-float FloatOf(std::uint32_t b) {
-    float f;
-    std::memcpy(&f, &b, sizeof f);
-    return f;
-}
+using pac::test::BitsOf;
+using pac::test::FloatOf;
 
 std::uint32_t ToDword(float value) { return F_PAC_REALTODWORD(1, nullptr, value); }
 float ToReal(std::uint32_t bits) { return F_PAC_DWORDTOREAL(1, nullptr, bits); }
