@@ -19,12 +19,15 @@ namespace pac::sim::testing {
 
 using namespace std::chrono_literals;
 
-// No boot delay, so the first cycle already answers in home position.
-inline PaControlConfig QuickConfig() {
+// A controller that boots in `bootTime` (status 0 and an all-zero reply until then).
+inline PaControlConfig BootingIn(std::chrono::nanoseconds bootTime) {
     PaControlConfig config;
-    config.bootTime = 0ns;
+    config.bootTime = bootTime;
     return config;
 }
+
+// No boot delay, so the first cycle already answers in home position.
+inline PaControlConfig QuickConfig() { return BootingIn(0ns); }
 
 // "41 20 00 00" for 10.0F: the dword of a REAL as the reply carries it.
 inline std::string RealHex(float value) {

@@ -13,15 +13,9 @@
 namespace pac::sim::testing {
 namespace {
 
-PaControlConfig BootsAt20ms() {
-    PaControlConfig config;
-    config.bootTime = 20ms;
-    return config;
-}
-
 class InterbusExample : public PacBench {
 protected:
-    InterbusExample() : PacBench(BootsAt20ms()) {}
+    InterbusExample() : PacBench(BootingIn(20ms)) {}
 };
 
 struct Row {

@@ -7,15 +7,9 @@
 namespace pac::sim::testing {
 namespace {
 
-PaControlConfig Boot30ms() {
-    PaControlConfig config;
-    config.bootTime = 30ms;
-    return config;
-}
-
 class PowerCycle : public PacBench {
 protected:
-    PowerCycle() : PacBench(Boot30ms()) {}
+    PowerCycle() : PacBench(BootingIn(30ms)) {}
 };
 
 TEST_F(PowerCycle, AllZeroUntilBootedAndCommandsWaitForTheBoot) {
