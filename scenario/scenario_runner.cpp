@@ -73,8 +73,8 @@ private:
         ScanSample sample;
         sample.time = plc_.Now();
         sample.scan = plc_.Task().ScanCount();
-        sample.toPac = plc_.ToPac();
-        sample.fromPac = plc_.FromPac();
+        sample.toPac = plc_.ToPac().Cmd();
+        sample.fromPac = plc_.FromPac().Cmd();
         sample.execute = cmd_->EXECUTE.value != 0;
         sample.busy = cmd_->BUSY.value != 0;
         sample.done = cmd_->DONE.value != 0;

@@ -58,7 +58,7 @@ public:
     Outcome Run(int maxScans = 500) {
         fb_->EXECUTE.value = TRUE;
         bench_.Scan();
-        sent_ = MasterFrame::Decode(bench_.ToPac());
+        sent_ = MasterFrame::Decode(bench_.ToPac().Cmd());
         Outcome out;
         if (Final()) {
             out.scans = 1;
@@ -687,7 +687,7 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     // The controller saw them one after the other, in call order, each with the data of its edge.
     std::vector<MasterFrame> commands;
     for (const auto& record : bench.Controller().Log().Records()) {
-        if (record.newCommand) commands.push_back(MasterFrame::Decode(record.master));
+        if (record.newCommand) commands.push_back(MasterFrame::Decode(record.master.Cmd()));
     }
     const std::vector<std::uint16_t> expectedCodes = {0x0906, 0x0907, 0x0902, 0x0905, 0x1906, 0x1906,
                                                       0x1907, 0x1902, 0x1904, 0x1900, 0x190B, 0x0906};

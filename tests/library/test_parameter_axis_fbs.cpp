@@ -173,7 +173,7 @@ public:
     void Settle(int scans) { plc_.Scan(scans); }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
     pac::sim::LinearAxis& Motion(int axis) { return plc_.Controller().Axes().Motion(axis); }
-    const pac::sim::Image8& ToPac() const { return plc_.ToPac(); }
+    pac::sim::Image8 ToPac() const { return plc_.ToPac().Cmd(); }
     nanoseconds Now() const { return plc_.Now(); }
     nanoseconds EdgeTime() const { return edgeTime_; }
 

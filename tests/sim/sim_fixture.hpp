@@ -46,7 +46,7 @@ protected:
         master_ = master;
         bus_.MasterWrite(now_, master);
         pac_.Cycle(now_);
-        const Image8 reply = bus_.MasterRead(now_);
+        const Image8 reply = bus_.MasterRead(now_).Cmd();
         now_ += step_;
         return ToHex(reply);
     }

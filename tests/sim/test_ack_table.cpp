@@ -21,7 +21,7 @@ TEST_F(AckTable, SendToggleNotRecognisedYetUntilTheControllerCycles) {
     pac_.Cycle(0ms);
     // The master toggles SEND at 5 ms; the controller's next cycle is at 10 ms.
     bus_.MasterWrite(5ms, MasterImage(0x1906, 2, 0, true));
-    const ReplyFrame before = ReplyFrame::Decode(bus_.MasterRead(5ms));
+    const ReplyFrame before = ReplyFrame::Decode(bus_.MasterRead(5ms).Cmd());
     EXPECT_FALSE(before.receiveFlag);  // SF = 1, RF = 0: not recognised yet
     EXPECT_EQ(ToHex(bus_.MasterRead(9ms)), "00 00 00 00 00 01 20 00");
     pac_.Cycle(10ms);

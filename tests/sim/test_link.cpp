@@ -71,7 +71,7 @@ TEST(Link, JitterStaysWithinBoundsAndNeverReordersWrites) {
     // The reader, sampling every 5 us, sees numbers that never go down.
     std::uint32_t seen = 0;
     for (auto t = 0us; t <= 25000us; t += 5us) {
-        const std::uint32_t n = NumberOf(link.Read(t));
+        const std::uint32_t n = NumberOf(link.Read(t).Cmd());
         ASSERT_GE(n, seen) << "at " << t.count() << " us";
         seen = n;
     }

@@ -41,7 +41,7 @@ struct Master {
 
     void operator()() {
         const auto now = task.Clock().Now();
-        const ReplyFrame reply = ReplyFrame::Decode(bus.MasterRead(now));
+        const ReplyFrame reply = ReplyFrame::Decode(bus.MasterRead(now).Cmd());
         receiveFlags.push_back(reply.receiveFlag ? 1 : 0);
         if (task.ScanCount() == toggleScan) image = MasterImage(code::kGetIntReg, 1, 0, true);
         bus.MasterWrite(now, image);

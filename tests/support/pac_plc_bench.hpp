@@ -1,18 +1,23 @@
 // A PLC wired to a simulated PA-CONTROL: simulated clock, PLC task, bus and controller running at its
-// own cycle. Tests and benchmarks add their function blocks with Call(fb), which copies the CMD
-// interface images in and out around the FB's body exactly as a PLC's I/O image would, so any
-// number of command FBs can share the one interface.
+// own cycle. Tests and benchmarks add their function blocks with Call(fb) (CMD module), CallCtrl(fb)
+// (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's images in and out around
+// the FB's body exactly as a PLC's I/O image would, so any number of command FBs can share the one
+// CMD interface. The bus carries the modules of `layout` (default: the CMD module alone).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <cstddef>
 #include <functional>
+#include <stdexcept>
+#include <utility>
 
 #include "pac/fb_instance.hpp"
 #include "pac/plc_task.hpp"
 #include "pac/sim/bus.hpp"
 #include "pac/sim/image8.hpp"
 #include "pac/sim/pa_control.hpp"
+#include "pac/sim/process_image.hpp"
 #include "pac/sim/slave_runner.hpp"
 #include "pac/sim_clock.hpp"
 
@@ -29,12 +34,15 @@ struct PlcBenchTiming {
 
 class PacPlcBench {
 public:
-    explicit PacPlcBench(PlcBenchTiming timing = {}, pac::sim::PaControlConfig config = {})
+    explicit PacPlcBench(PlcBenchTiming timing = {}, pac::sim::PaControlConfig config = {},
+                         pac::sim::ModuleLayout layout = {})
         : timing_(timing),
           task_(clock_, timing.plcCycle),
-          bus_(BusConfigFor(timing)),
+          bus_(BusConfigFor(timing, layout)),
           pac_(bus_, WithTiming(config, timing)),
-          runner_(pac_) {
+          runner_(pac_),
+          toPac_(layout.Bytes()),
+          fromPac_(layout.Bytes()) {
         runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
         task_.AddProgram([this] { fromPac_ = bus_.MasterRead(clock_.Now()); });
     }
@@ -43,15 +51,17 @@ public:
     // that scan's inputs. Call in the order the FBs should run; then call Start().
     template <class Fb>
     void Call(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
-        task_.AddProgram([this, &fb, before] {
-            if (before) before();
-            for (int i = 0; i < 8; ++i) {
-                fb->FROMPAC.value.table[i] = fromPac_[i];
-                fb->TOPAC.value.table[i] = toPac_[i];
-            }
-            fb();
-            for (int i = 0; i < 8; ++i) toPac_[i] = fb->TOPAC.value.table[i];
-        });
+        CallOnModule<8>(fb, pac::sim::ModuleLayout::kCmdOffset, std::move(before));
+    }
+    // The CTRL module (the layout must have it).
+    template <class Fb>
+    void CallCtrl(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
+        CallOnModule<8>(fb, pac::sim::ModuleLayout::kCtrlOffset, std::move(before));
+    }
+    // Axis module `module` (1..layout.axisModules).
+    template <class Fb>
+    void CallAxis(pac::FbInstance<Fb>& fb, int module, std::function<void()> before = {}) {
+        CallOnModule<12>(fb, bus_.Layout().AxisOffset(module), std::move(before));
     }
 
     // After the FBs: the master's image goes out on the bus at the end of each scan.
@@ -90,13 +100,28 @@ public:
     pac::sim::Bus& Bus() { return bus_; }
     pac::PlcTask& Task() { return task_; }
     std::chrono::nanoseconds Now() const { return clock_.Now(); }
-    const pac::sim::Image8& ToPac() const { return toPac_; }
-    const pac::sim::Image8& FromPac() const { return fromPac_; }
+    const pac::sim::ProcessImage& ToPac() const { return toPac_; }
+    const pac::sim::ProcessImage& FromPac() const { return fromPac_; }
     const PlcBenchTiming& Timing() const { return timing_; }
 
 private:
-    static pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t) {
+    template <std::size_t N, class Fb>
+    void CallOnModule(pac::FbInstance<Fb>& fb, std::size_t offset, std::function<void()> before) {
+        if (offset + N > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
+        task_.AddProgram([this, &fb, offset, before] {
+            if (before) before();
+            for (std::size_t i = 0; i < N; ++i) {
+                fb->FROMPAC.value.table[i] = fromPac_[offset + i];
+                fb->TOPAC.value.table[i] = toPac_[offset + i];
+            }
+            fb();
+            for (std::size_t i = 0; i < N; ++i) toPac_[offset + i] = fb->TOPAC.value.table[i];
+        });
+    }
+
+    static pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::ModuleLayout& layout) {
         pac::sim::BusConfig config;
+        config.layout = layout;
         const auto latency = t.plcCycle * t.latencyCycles;
         config.toSlave = {latency, t.jitter, t.seed};
         config.toMaster = {latency, t.jitter, t.seed + 1};
@@ -116,8 +141,8 @@ private:
     pac::sim::Bus bus_;
     pac::sim::PaControl pac_;
     pac::sim::SlaveRunner runner_;
-    pac::sim::Image8 toPac_{};
-    pac::sim::Image8 fromPac_{};
+    pac::sim::ProcessImage toPac_;
+    pac::sim::ProcessImage fromPac_;
 };
 
 }  // namespace pac::test

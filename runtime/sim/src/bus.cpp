@@ -3,7 +3,19 @@
 
 namespace pac::sim {
 
-Bus::Bus(BusConfig config) : toSlave_(config.toSlave), toMaster_(config.toMaster) {}
+namespace {
+
+const ModuleLayout& Validated(const ModuleLayout& layout) {
+    layout.Validate();
+    return layout;
+}
+
+}  // namespace
+
+Bus::Bus(BusConfig config)
+    : layout_(Validated(config.layout)),
+      toSlave_(config.toSlave, layout_.Bytes()),
+      toMaster_(config.toMaster, layout_.Bytes()) {}
 
 void Bus::Disconnect(std::chrono::nanoseconds now) {
     toSlave_.SetFault(now, LinkFault::kDisconnected);

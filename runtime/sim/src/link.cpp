@@ -27,12 +27,18 @@ const char* ToString(LinkFault fault) {
     return "?";
 }
 
-Link::Link(LinkConfig config) : config_(config), rng_(config.seed) {
+Link::Link(LinkConfig config, std::size_t imageBytes)
+    : config_(config), rng_(config.seed), imageBytes_(imageBytes), delivered_(imageBytes), frozen_(imageBytes) {
     CheckDelay(config_.latency, "latency");
     CheckDelay(config_.jitter, "jitter");
+    if (imageBytes == 0) throw std::invalid_argument("Link: image size 0");
 }
 
-void Link::Write(std::chrono::nanoseconds now, const Image8& image) {
+void Link::Write(std::chrono::nanoseconds now, const ProcessImage& image) {
+    if (image.Size() != imageBytes_) {
+        throw std::invalid_argument("Link::Write: a " + std::to_string(image.Size()) + "-byte image on a " +
+                                    std::to_string(imageBytes_) + "-byte link");
+    }
     if (now < lastWrite_) {
         throw std::invalid_argument("Link::Write: time runs backwards (" + std::to_string(now.count()) +
                                     " ns after " + std::to_string(lastWrite_.count()) + " ns)");
@@ -49,16 +55,16 @@ void Link::Write(std::chrono::nanoseconds now, const Image8& image) {
     inFlight_.push_back(InFlight{arrival, image});
 }
 
-Image8 Link::Read(std::chrono::nanoseconds now) {
+ProcessImage Link::Read(std::chrono::nanoseconds now) {
     CheckReaderTime(now, "Read");
     Deliver(now);
     switch (fault_) {
         case LinkFault::kNone: return delivered_;
         case LinkFault::kFrozen: return frozen_;
         case LinkFault::kAllZero:
-        case LinkFault::kDisconnected: return Image8{};
+        case LinkFault::kDisconnected: return ProcessImage(imageBytes_);
     }
-    return Image8{};
+    return ProcessImage(imageBytes_);
 }
 
 void Link::SetFault(std::chrono::nanoseconds now, LinkFault fault) {
@@ -66,11 +72,11 @@ void Link::SetFault(std::chrono::nanoseconds now, LinkFault fault) {
     Deliver(now);
     if (fault == LinkFault::kFrozen && fault_ != LinkFault::kFrozen) {
         // What the reader would see now (zeros if the link was down or zeroed until this moment).
-        frozen_ = fault_ == LinkFault::kNone ? delivered_ : Image8{};
+        frozen_ = fault_ == LinkFault::kNone ? delivered_ : ProcessImage(imageBytes_);
     }
     if (fault == LinkFault::kDisconnected && fault_ != LinkFault::kDisconnected) {
         inFlight_.clear();
-        delivered_ = Image8{};
+        delivered_ = ProcessImage(imageBytes_);
     }
     fault_ = fault;
 }

@@ -28,11 +28,14 @@ std::uint64_t CommandCounters::Count(std::uint16_t code) const {
 
 PaControl::PaControl(Bus& bus, PaControlConfig config)
     : bus_(bus),
+      layout_(bus.Layout()),
       config_(CheckedConfig(config)),
       state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters),
       executor_(state_, config_.executor),
       log_(config_.logCapacity),
-      bootEnd_(config_.bootTime) {
+      bootEnd_(config_.bootTime),
+      lastReply_(layout_.Bytes()),
+      lastMaster_(layout_.Bytes()) {
     for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
         state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
     }
@@ -46,7 +49,7 @@ std::chrono::nanoseconds PaControl::CycleTime() const {
 
 void PaControl::Cycle(std::chrono::nanoseconds now) {
     CheckTime(now, "Cycle");
-    const Image8 master = bus_.SlaveRead(now);
+    const ProcessImage master = bus_.SlaveRead(now);
     lastMaster_ = master;
     ExchangeRecord record;
     record.time = now;
@@ -54,7 +57,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
 
     if (!booted_) {
         if (now < bootEnd_) {
-            WriteReply(now, Image8{});
+            WriteReply(now, ProcessImage(layout_.Bytes()));
             record.reply = lastReply_;
             log_.Add(record);
             return;
@@ -63,7 +66,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     }
 
     state_.axes.UpdateAll(now);
-    const bool allZero = IsAllZero(master);
+    const bool allZero = master.AllZero();
     if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
 
     if (pending_.Active()) {
@@ -75,14 +78,14 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     if (!allZero) {
         communicationActive_ = true;
         emergencyStop_ = false;
-        const MasterFrame command = MasterFrame::Decode(master);
+        const MasterFrame command = MasterFrame::Decode(master.Cmd());
         if (protocol_.IsNewCommand(command)) {
             record.newCommand = true;
             Execute(command, now);
         }
     }
 
-    WriteReply(now, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
+    WriteReply(now, ComposeReply());
     record.reply = lastReply_;
     log_.Add(record);
 }
@@ -113,7 +116,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     injectedError_.reset();
     communicationActive_ = false;
     emergencyStop_ = false;
-    WriteReply(now, Image8{});  // the slave drops off the bus at once
+    WriteReply(now, ProcessImage(layout_.Bytes()));  // the slave drops off the bus at once
 }
 
 void PaControl::InjectCommandError(std::uint16_t errorNumber) {
@@ -171,7 +174,14 @@ void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now
     protocol_.Acknowledge(command.send, result);
 }
 
-void PaControl::WriteReply(std::chrono::nanoseconds now, const Image8& reply) {
+ProcessImage PaControl::ComposeReply() const {
+    ProcessImage reply(layout_.Bytes());
+    reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
+    // The CTRL module's status word and the axis modules are not served yet: they read as zero.
+    return reply;
+}
+
+void PaControl::WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply) {
     lastReply_ = reply;
     bus_.SlaveWrite(now, reply);
 }

@@ -4,7 +4,6 @@
 
 #include <chrono>
 
-#include "pac/sim/image8.hpp"
 #include "pac/sim/link.hpp"
 
 namespace pac::sim {
@@ -12,19 +11,21 @@ namespace pac::sim {
 struct BusConfig {
     LinkConfig toSlave{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 1};
     LinkConfig toMaster{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 2};
+    ModuleLayout layout{};  // the process image both directions carry: ModuleLayout::Bytes()
 };
 
 class Bus {
 public:
-    explicit Bus(BusConfig config = {});
+    explicit Bus(BusConfig config = {});  // an invalid layout: std::invalid_argument
+    const ModuleLayout& Layout() const { return layout_; }
 
     // The master's side: its output image goes to the slave, its input image is the slave's reply.
-    void MasterWrite(std::chrono::nanoseconds now, const Image8& image) { toSlave_.Write(now, image); }
-    Image8 MasterRead(std::chrono::nanoseconds now) { return toMaster_.Read(now); }
+    void MasterWrite(std::chrono::nanoseconds now, const ProcessImage& image) { toSlave_.Write(now, image); }
+    ProcessImage MasterRead(std::chrono::nanoseconds now) { return toMaster_.Read(now); }
 
     // The slave's side.
-    void SlaveWrite(std::chrono::nanoseconds now, const Image8& image) { toMaster_.Write(now, image); }
-    Image8 SlaveRead(std::chrono::nanoseconds now) { return toSlave_.Read(now); }
+    void SlaveWrite(std::chrono::nanoseconds now, const ProcessImage& image) { toMaster_.Write(now, image); }
+    ProcessImage SlaveRead(std::chrono::nanoseconds now) { return toSlave_.Read(now); }
 
     Link& ToSlave() { return toSlave_; }
     Link& ToMaster() { return toMaster_; }
@@ -36,6 +37,7 @@ public:
     void Reconnect(std::chrono::nanoseconds now);
 
 private:
+    ModuleLayout layout_;
     Link toSlave_;
     Link toMaster_;
 };

@@ -7,14 +7,14 @@
 #include <deque>
 #include <string>
 
-#include "pac/sim/image8.hpp"
+#include "pac/sim/process_image.hpp"
 
 namespace pac::sim {
 
 struct ExchangeRecord {
     std::chrono::nanoseconds time{0};
-    Image8 master{};      // the master image the cycle read from the bus
-    Image8 reply{};       // the reply it wrote
+    ProcessImage master;  // the master image the cycle read from the bus
+    ProcessImage reply;   // the reply it wrote
     bool newCommand = false;  // the cycle recognised a SEND flag change
 };
 

@@ -1,16 +1,18 @@
 // One direction of the fieldbus between the PLC (master) and the PA-CONTROL (slave): the writer's
-// image reaches the reader after a latency plus a seeded jitter, in order, and the link can be
-// faulted. Times are simulated (the caller's clock); nothing here reads a real clock.
+// process image (all modules, one consistent block, manual 2.3.3) reaches the reader after a latency
+// plus a seeded jitter, in order, and the link can be faulted. Times are simulated (the caller's
+// clock); nothing here reads a real clock.
 //
 //   Write(now, image): the image arrives at now + latency + jitter, jitter uniform in [0, jitter]
 //       drawn from the seed, but never before the previous write's arrival (order is preserved).
-//   Read(now): the newest image whose arrival time is <= now; 8 zero bytes before the first arrival.
+//   Read(now): the newest image whose arrival time is <= now; zero bytes before the first arrival.
+//   Every image has the link's size (8 bytes: the CMD module alone); another size: std::invalid_argument.
 //
 // Faults (SetFault):
 //   kFrozen       the reader keeps seeing the image it would have read at the moment of the freeze;
 //                 writes still travel and the reader sees the newest one once the fault is cleared.
-//   kAllZero      the reader sees 8 zero bytes; writes still travel (cleared: the newest arrival).
-//   kDisconnected the reader sees 8 zero bytes; images in flight are lost, writes are dropped, and
+//   kAllZero      the reader sees zero bytes; writes still travel (cleared: the newest arrival).
+//   kDisconnected the reader sees zero bytes; images in flight are lost, writes are dropped, and
 //                 after reconnection (SetFault(now, kNone)) the reader keeps seeing zeros until the
 //                 first image written after the reconnection arrives.
 // Writes must come in non-decreasing time, and so must reads and SetFault calls (a fault acts at the
@@ -18,10 +20,11 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 
-#include "pac/sim/image8.hpp"
+#include "pac/sim/process_image.hpp"
 #include "pac/sim/rng.hpp"
 
 namespace pac::sim {
@@ -38,10 +41,12 @@ struct LinkConfig {
 
 class Link {
 public:
-    explicit Link(LinkConfig config = {});  // negative latency or jitter: std::invalid_argument
+    // Negative latency or jitter, or an image size of 0: std::invalid_argument.
+    explicit Link(LinkConfig config = {}, std::size_t imageBytes = 8);
 
-    void Write(std::chrono::nanoseconds now, const Image8& image);
-    Image8 Read(std::chrono::nanoseconds now);
+    void Write(std::chrono::nanoseconds now, const ProcessImage& image);
+    ProcessImage Read(std::chrono::nanoseconds now);
+    std::size_t ImageBytes() const { return imageBytes_; }
 
     void SetFault(std::chrono::nanoseconds now, LinkFault fault);
     LinkFault Fault() const { return fault_; }
@@ -59,7 +64,7 @@ public:
 private:
     struct InFlight {
         std::chrono::nanoseconds arrival;
-        Image8 image;
+        ProcessImage image;
     };
 
     void Deliver(std::chrono::nanoseconds now);  // moves arrived images to delivered_
@@ -68,8 +73,9 @@ private:
     LinkConfig config_;
     SplitMix64 rng_;
     std::deque<InFlight> inFlight_;
-    Image8 delivered_{};
-    Image8 frozen_{};
+    std::size_t imageBytes_;
+    ProcessImage delivered_;
+    ProcessImage frozen_;
     LinkFault fault_ = LinkFault::kNone;
     std::chrono::nanoseconds lastArrival_{std::chrono::nanoseconds::min()};
     std::chrono::nanoseconds lastWrite_{std::chrono::nanoseconds::min()};

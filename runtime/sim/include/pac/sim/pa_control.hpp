@@ -1,7 +1,8 @@
-// The simulated PA-CONTROL behind its 8-byte CMD interface (manual 2.4, 4.2, chapter 5), running in
-// its own cycle: each Cycle(now) reads the master image from the bus, follows a command that is still
-// processing, recognises a SEND flag change against the last acknowledged SEND (RF), carries out the
-// command and writes its reply image. See docs/simulator.md for every decision where the manual is
+// The simulated PA-CONTROL behind its Profibus-DP modules (manual 2.3): the 8-byte CMD interface (2.4,
+// 4.2, chapter 5), and where the bus layout has them the CTRL interface (2.5) and the axis modules (2.7).
+// It runs in its own cycle: each Cycle(now) reads the master's process image from the bus, follows a
+// command that is still processing, recognises a SEND flag change against the last acknowledged SEND
+// (RF), carries out the command and writes its reply image. See docs/simulator.md for every decision where the manual is
 // silent (power-up, emergency stop, SEND toggles while processing, retention).
 #pragma once
 
@@ -19,6 +20,7 @@
 #include "pac/sim/controller_state.hpp"
 #include "pac/sim/exchange_log.hpp"
 #include "pac/sim/image8.hpp"
+#include "pac/sim/process_image.hpp"
 
 namespace pac::sim {
 
@@ -59,6 +61,7 @@ struct CommandCounters {
 class PaControl {
 public:
     // Powered on at time 0: the boot ends at config.bootTime. Bad times: std::invalid_argument.
+    // The modules served are the bus's layout (Bus::Layout()).
     explicit PaControl(Bus& bus, PaControlConfig config = {});
 
     // One controller cycle at `now` (non-decreasing, std::invalid_argument otherwise).
@@ -71,8 +74,9 @@ public:
     std::uint16_t SystemError() const { return state_.systemError; }
     bool EmergencyStopActive() const { return emergencyStop_; }
     bool Processing() const { return booted_ && protocol_.Processing(); }
-    const Image8& LastReply() const { return lastReply_; }
-    const Image8& LastMasterImage() const { return lastMaster_; }
+    const ProcessImage& LastReply() const { return lastReply_; }
+    const ProcessImage& LastMasterImage() const { return lastMaster_; }
+    const ModuleLayout& Layout() const { return layout_; }
 
     // ---- test hooks ----
     // Power off and on at `now`: the reply is all zero (status 0, RF 0) at once and until the boot
@@ -103,9 +107,11 @@ private:
     void Boot();
     void EmergencyStop(std::chrono::nanoseconds now);
     void Execute(const MasterFrame& command, std::chrono::nanoseconds now);
-    void WriteReply(std::chrono::nanoseconds now, const Image8& reply);
+    void WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply);
+    ProcessImage ComposeReply() const;
 
     Bus& bus_;
+    ModuleLayout layout_;
     PaControlConfig config_;
     ControllerState state_;
     CommandExecutor executor_;
@@ -120,8 +126,8 @@ private:
     bool communicationActive_ = false;  // a non-zero master image was seen since power-on
     bool emergencyStop_ = false;
     std::optional<std::chrono::nanoseconds> lastTime_;
-    Image8 lastReply_{};
-    Image8 lastMaster_{};
+    ProcessImage lastReply_;
+    ProcessImage lastMaster_;
 };
 
 }  // namespace pac::sim
