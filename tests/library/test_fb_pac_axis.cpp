@@ -1,0 +1,1120 @@
+// FB_PAC_Axis scan by scan against a scripted axis module (tests/support/fake_axis_module.hpp) behind a
+// bus of 0..3 scans latency each way: the control word bits and data bytes of every job in both number
+// formats, take-over and Done at their exact scans, the stale CMD error rule under both controller
+// behaviours, axis errors and their reset, Abort, Enable, link loss, a new job during a job, jog, G123,
+// Timeout and the status outputs. Every scan of every test checks that the module never carries two
+// traverse bits, never Start without exactly one, and that Busy/Done/Error/CommandAborted exclude each other.
+#include <gtest/gtest.h>
+
+#include <bitset>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+
+#include "fake_axis_module.hpp"
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/scan_test.hpp"
+#include "pac/st_program.hpp"
+#include "real_bits.hpp"
+
+namespace {
+
+using pac::test::AxisImage;
+using pac::test::BitsOf;
+using pac::test::CmdErrorStyle;
+using pac::test::FakeAxisConfig;
+using pac::test::FakeAxisModule;
+using pac::test::ReadBe16;
+using pac::test::ReadBe32;
+using pac::test::ScanDelayLine;
+namespace ctrl = pac::test::axis_ctrl;
+namespace status = pac::test::axis_status;
+
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kErrAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
+const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kErrInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
+const std::uint32_t kErrAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
+const std::uint32_t kErrInvalidVelocity = kGvl["PAC_LIB_ERR_INVALID_VELOCITY"];
+const std::uint32_t kErrInvalidAcceleration = kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"];
+const std::uint32_t kErrInvalidPosition = kGvl["PAC_LIB_ERR_INVALID_POSITION"];
+const std::uint32_t kErrNoCommand = kGvl["PAC_LIB_ERR_NO_COMMAND"];
+const std::uint32_t kNoReference = kGvl["PAC_ERR_NO_REFERENCE"];          // 43
+const std::uint32_t kPositionRange = kGvl["PAC_ERR_POSITION_RANGE"];      // 65
+const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];                  // 55
+const std::uint32_t kLimitSwitch = kGvl["PAC_ERR_LIMIT_SWITCH"];          // 64
+
+constexpr int kTimeoutScans = 20;  // Timeout in the tests, at 1 ms per scan
+
+std::uint32_t TraverseBits(std::uint32_t control) { return control & ctrl::kTraverseBits; }
+int CountBits(std::uint32_t v) { return static_cast<int>(std::bitset<32>(v).count()); }
+
+// How a job ended, and at which scans (absolute scan numbers of the task).
+struct Outcome {
+    bool done = false;
+    bool error = false;
+    bool aborted = false;
+    std::uint32_t errorId = 0;
+    std::int64_t edgeScan = -1;   // the scan that saw the Execute edge
+    std::int64_t startScan = -1;  // the scan that raised Start
+    std::int64_t finalScan = -1;  // the scan that showed the final output
+};
+
+// The PLC: FB_PAC_Axis on one axis module, the bus (a delay line each way, whole scans) and the fake
+// axis, which runs one controller cycle per scan after the PLC program.
+class FbPacAxis : public pac::ScanTest {
+protected:
+    FbPacAxis() {
+        Configure({});
+        fb_->ENABLE.value = TRUE;
+        fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(kTimeoutScans));
+        task_.AddProgram([this] { OneScan(); });
+    }
+
+    // Before the first scan only.
+    void Configure(const FakeAxisConfig& config, int outLatency = 0, int inLatency = 0) {
+        axis_ = std::make_unique<FakeAxisModule>(config);
+        outLatency_ = outLatency;
+        inLatency_ = inLatency;
+        visible_ = axis_->Reply();
+        atController_ = AxisImage{};
+        out_ = std::make_unique<ScanDelayLine<AxisImage>>(outLatency, AxisImage{});
+        in_ = std::make_unique<ScanDelayLine<AxisImage>>(inLatency, visible_);
+        fb_->INTEGERMODE.value = config.integerFormat;
+    }
+
+    void OneScan() {
+        AxisImage input = linkLost_ ? AxisImage{} : visible_;
+        if (forcedReply_) input = *forcedReply_;
+        for (int i = 0; i < 12; ++i) {
+            fb_->FROMPAC.value.table[i] = input[i];
+            fb_->TOPAC.value.table[i] = toPac_[i];
+        }
+        fb_();
+        const bool startBefore = StartBit();
+        for (int i = 0; i < 12; ++i) toPac_[i] = fb_->TOPAC.value.table[i];
+        if (StartBit() && !startBefore) lastStartScan_ = task_.ScanCount();
+        CheckInvariants();
+        // A lost link carries nothing either way: the controller keeps the last module it received.
+        if (!linkLost_) atController_ = out_->Push(toPac_);
+        visible_ = in_->Push(axis_->Cycle(atController_));
+    }
+
+    void CheckInvariants() {
+        const std::uint32_t control = ControlWord();
+        const std::int64_t scan = task_.ScanCount();
+        EXPECT_LE(CountBits(TraverseBits(control)), 1) << "two traverse bits in scan " << scan;
+        if ((control & ctrl::kStart) != 0) {
+            EXPECT_EQ(CountBits(TraverseBits(control)), 1) << "Start without exactly one traverse bit, scan " << scan;
+        }
+        const int finals = Done() + Busy() + Error() + Aborted();
+        EXPECT_LE(finals, 1) << "Busy, Done, Error, CommandAborted overlap in scan " << scan;
+        EXPECT_EQ(Error(), fb_->ERRORID.value != 0) << "ErrorID without Error or Error without ErrorID, scan " << scan;
+    }
+
+    // --- inputs -----------------------------------------------------------------------------------
+    void SetJob(E_PAC_AXISCOMMAND command, float position = 0.0f, unsigned velocity = 1000,
+                unsigned acceleration = 1000) {
+        fb_->COMMAND.value = command;
+        fb_->POSITION.value = position;
+        fb_->VELOCITY.value = static_cast<UINT>(velocity);
+        fb_->ACCELERATION.value = static_cast<UINT>(acceleration);
+    }
+    void Execute(bool on) { fb_->EXECUTE.value = on; }
+
+    // Execute edge (the next scan sees it), then scans until a final output; Execute stays TRUE.
+    Outcome StartAndWait(int maxScans = 300) {
+        Outcome o;
+        Execute(true);
+        o.edgeScan = task_.ScanCount() + 1;
+        const std::int64_t startBefore = lastStartScan_;
+        for (int i = 0; i < maxScans && !Final(); ++i) Cycle(1);
+        if (lastStartScan_ != startBefore) o.startScan = lastStartScan_;
+        o.done = Done();
+        o.error = Error();
+        o.aborted = Aborted();
+        o.errorId = fb_->ERRORID.value;
+        if (Final()) o.finalScan = task_.ScanCount();
+        return o;
+    }
+
+    // A whole job as a PLC program runs it: edge, wait, Execute back to FALSE for one scan.
+    Outcome Run(int maxScans = 300) {
+        Outcome o = StartAndWait(maxScans);
+        Execute(false);
+        Cycle(1);
+        EXPECT_FALSE(Final()) << "the final output clears in the scan that sees Execute FALSE";
+        return o;
+    }
+
+    // --- outputs and the module -------------------------------------------------------------------
+    bool Done() const { return fb_->DONE.value != 0; }
+    bool Busy() const { return fb_->BUSY.value != 0; }
+    bool Error() const { return fb_->ERROR.value != 0; }
+    bool Aborted() const { return fb_->COMMANDABORTED.value != 0; }
+    bool Final() const { return Done() || Error() || Aborted(); }
+    std::uint32_t ControlWord() const { return ReadBe32(toPac_, 0); }
+    bool StartBit() const { return (ControlWord() & ctrl::kStart) != 0; }
+    std::uint32_t Traverse() const { return TraverseBits(ControlWord()); }
+    int RoundTrip() const { return outLatency_ + inLatency_ + 1; }  // scans from writing to seeing the answer
+    void Settle() { Cycle(RoundTrip() + 2); }
+
+    pac::FbInstance<FB_PAC_AXIS> fb_ = PAC_FB(FB_PAC_AXIS);
+    std::unique_ptr<FakeAxisModule> axis_;
+    std::unique_ptr<ScanDelayLine<AxisImage>> out_;
+    std::unique_ptr<ScanDelayLine<AxisImage>> in_;
+    AxisImage toPac_{};
+    AxisImage visible_{};
+    AxisImage atController_{};
+    std::optional<AxisImage> forcedReply_;
+    bool linkLost_ = false;
+    int outLatency_ = 0;
+    int inLatency_ = 0;
+    std::int64_t lastStartScan_ = -1;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Every command: its traverse bit, and acceleration, speed and position bytes, in both number formats.
+
+struct CommandCase {
+    E_PAC_AXISCOMMAND command;
+    std::uint32_t bit;
+    bool needsReference;
+    const char* name;
+};
+
+const CommandCase kCommands[] = {
+    {E_PAC_AXISCOMMAND__PAC_AX_HOME, ctrl::kHome, false, "Home"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, ctrl::kAbsolute, true, "MoveAbsolute"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, ctrl::kRelative, true, "MoveRelative"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, ctrl::kToMax, true, "MoveToMax"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN, ctrl::kToMin, true, "MoveToMin"},
+    {E_PAC_AXISCOMMAND__PAC_AX_SET_REFERENCED, ctrl::kSetReferenced, false, "SetReferenced"},
+    {E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, ctrl::kSetPosition, false, "SetPosition"},
+    {E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET, ctrl::kClearOffset, false, "ClearOffset"},
+    {E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED, ctrl::kClearDisplaced, false, "ClearDisplaced"},
+};
+
+class FbPacAxisCommand : public FbPacAxis, public ::testing::WithParamInterface<std::tuple<CommandCase, bool>> {};
+
+TEST_P(FbPacAxisCommand, BitAndDataBytesGoOutWithStartAndTheBitStaysUntilDone) {
+    const auto [c, integer] = GetParam();
+    FakeAxisConfig config;
+    config.integerFormat = integer;
+    Configure(config);
+    Settle();
+    SetJob(c.command, -12.5f, 250, 40000);
+    Execute(true);
+    Cycle(1);
+    ASSERT_TRUE(StartBit()) << "the axis is free: Start goes out in the edge scan";
+    const std::uint32_t position = integer ? static_cast<std::uint32_t>(-12500) : BitsOf(-12.5f);
+    const AxisImage expected = {0, 0, static_cast<std::uint8_t>((ctrl::kStart | ctrl::kAxisOn | c.bit) >> 8),
+                                static_cast<std::uint8_t>(ctrl::kStart | ctrl::kAxisOn | c.bit),
+                                0x9C, 0x40, 0x00, 0xFA,
+                                static_cast<std::uint8_t>(position >> 24), static_cast<std::uint8_t>(position >> 16),
+                                static_cast<std::uint8_t>(position >> 8), static_cast<std::uint8_t>(position)};
+    EXPECT_EQ(toPac_, expected) << c.name;
+    EXPECT_TRUE(Busy());
+    Cycle(1);  // the axis answers with ACTIVE: Start drops, the traverse bit stays
+    EXPECT_FALSE(StartBit());
+    EXPECT_EQ(Traverse(), c.bit);
+    EXPECT_EQ(ReadBe32(toPac_, 8), position) << "data unchanged during the job";
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 50, "final output"));
+    EXPECT_TRUE(Done()) << c.name;
+    EXPECT_EQ(Traverse(), 0u) << "released in the Done scan";
+    ASSERT_EQ(axis_->Jobs().size(), 1u);
+    EXPECT_EQ(axis_->Jobs()[0].control, ctrl::kAxisOn | ctrl::kStart | c.bit);
+    EXPECT_EQ(axis_->Jobs()[0].acceleration, 40000);
+    EXPECT_EQ(axis_->Jobs()[0].speed, 250);
+    EXPECT_EQ(axis_->Jobs()[0].position, position);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCommands, FbPacAxisCommand,
+                         ::testing::Combine(::testing::ValuesIn(kCommands), ::testing::Bool()),
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param).name) +
+                                    (std::get<1>(info.param) ? "_Integer" : "_Ieee");
+                         });
+
+TEST_F(FbPacAxis, PositionBytesInBothFormatsExactly) {
+    struct Case {
+        float position;
+        bool integer;
+        std::uint32_t bytes;
+    };
+    const Case cases[] = {
+        {12.345f, false, BitsOf(12.345f)},
+        {640.0f, false, 0x44200000u},  // NOTES.md: the real bytes of 640.0
+        {10.0f, false, 0x41200000u},
+        {12.345f, true, 12345u},
+        {25.045f, true, 25045u},
+        {-25.045f, true, static_cast<std::uint32_t>(-25045)},
+        {0.0f, true, 0u},
+        {-0.0f, true, 0u},
+        {2147483.5f, true, 2147483500u},                                 // the largest REAL that fits x1000
+        {-2147483.5f, true, static_cast<std::uint32_t>(-2147483500)},    // and the smallest
+        {1.0e30f, false, BitsOf(1.0e30f)},                               // fine as IEEE
+    };
+    Settle();
+    for (const Case& c : cases) {
+        fb_->INTEGERMODE.value = c.integer;
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, c.position);
+        Execute(true);
+        Cycle(1);
+        ASSERT_TRUE(StartBit()) << c.position;
+        EXPECT_EQ(ReadBe32(toPac_, 8), c.bytes) << c.position << (c.integer ? " integer" : " IEEE");
+        ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+        EXPECT_TRUE(Done());
+        Execute(false);
+        Cycle(2);
+    }
+}
+
+TEST_F(FbPacAxis, PositionIsConvertedAtTheEdgeOnly) {
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 7.0f);
+    axis_->SetReferenced(true);
+    Execute(true);
+    Cycle(1);
+    fb_->POSITION.value = 99.0f;
+    fb_->VELOCITY.value = 1;
+    Cycle(2);
+    EXPECT_EQ(ReadBe32(toPac_, 8), BitsOf(7.0f)) << "the latched job's data stay on the wire";
+    EXPECT_EQ(ReadBe16(toPac_, 6), 1000);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Invalid inputs: an error at the edge and nothing sent.
+
+TEST_F(FbPacAxis, InvalidInputsAreRefusedAndNothingIsSent) {
+    struct Case {
+        const char* what;
+        E_PAC_AXISCOMMAND command;
+        float position;
+        unsigned velocity;
+        unsigned acceleration;
+        bool integer;
+        std::uint32_t errorId;
+    };
+    const float inf = std::numeric_limits<float>::infinity();
+    const Case cases[] = {
+        {"no command", E_PAC_AXISCOMMAND__PAC_AX_NONE, 1.0f, 1000, 1000, false, kErrNoCommand},
+        {"velocity 0", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 1.0f, 0, 1000, false, kErrInvalidVelocity},
+        {"velocity 1001", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 1.0f, 1001, 1000, false, kErrInvalidVelocity},
+        {"velocity 65535", E_PAC_AXISCOMMAND__PAC_AX_HOME, 1.0f, 65535, 1000, false, kErrInvalidVelocity},
+        {"acceleration 0", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 1.0f, 500, 0, false, kErrInvalidAcceleration},
+        {"NaN", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, std::numeric_limits<float>::quiet_NaN(), 500, 500, false,
+         kErrInvalidPosition},
+        {"+inf", E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, inf, 500, 500, false, kErrInvalidPosition},
+        {"-inf", E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, -inf, 500, 500, false, kErrInvalidPosition},
+        {"NaN integer", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, std::numeric_limits<float>::quiet_NaN(), 500, 500,
+         true, kErrInvalidPosition},
+        {"-inf integer", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, -inf, 500, 500, true, kErrInvalidPosition},
+        {"beyond DINT", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 2147483.75f, 500, 500, true, kErrInvalidPosition},
+        {"below DINT", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, -2147483.75f, 500, 500, true, kErrInvalidPosition},
+        {"far beyond DINT", E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 3.0e38f, 500, 500, true, kErrInvalidPosition},
+        {"no command with bad data", E_PAC_AXISCOMMAND__PAC_AX_NONE, inf, 0, 0, false, kErrNoCommand},
+    };
+    Settle();
+    const AxisImage idle = toPac_;
+    for (const Case& c : cases) {
+        fb_->INTEGERMODE.value = c.integer;
+        SetJob(c.command, c.position, c.velocity, c.acceleration);
+        Execute(true);
+        Cycle(1);
+        EXPECT_TRUE(Error()) << c.what << ": refused in the edge scan";
+        EXPECT_EQ(fb_->ERRORID.value, c.errorId) << c.what;
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(toPac_, idle) << c.what << ": nothing written";
+            EXPECT_TRUE(Error()) << c.what << ": held while Execute";
+            Cycle(1);
+        }
+        Execute(false);
+        Cycle(1);
+        EXPECT_FALSE(Error());
+    }
+    EXPECT_TRUE(axis_->Jobs().empty());
+}
+
+TEST_F(FbPacAxis, BoundaryValuesAreAccepted) {
+    Settle();
+    fb_->INTEGERMODE.value = FALSE;
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 1.0f, 1, 65535);
+    Outcome o = Run();
+    EXPECT_TRUE(o.done);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 1.0f, 1000, 1);
+    o = Run();
+    EXPECT_TRUE(o.done);
+    ASSERT_EQ(axis_->Jobs().size(), 2u);
+    EXPECT_EQ(axis_->Jobs()[0].speed, 1);
+    EXPECT_EQ(axis_->Jobs()[0].acceleration, 65535);
+    EXPECT_EQ(axis_->Jobs()[1].speed, 1000);
+    EXPECT_EQ(axis_->Jobs()[1].acceleration, 1);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Take-over and Done at their exact scans, on every latency.
+
+class FbPacAxisLatency : public FbPacAxis, public ::testing::WithParamInterface<std::tuple<int, int>> {
+protected:
+    void SetUp() override {
+        FakeAxisConfig config;
+        config.moveCycles = 10;  // longer than the longest round trip, so the move decides when ACTIVE falls
+        Configure(config, std::get<0>(GetParam()), std::get<1>(GetParam()));
+        Settle();
+    }
+};
+
+TEST_P(FbPacAxisLatency, InstantJobStartDropsAtTakeOverAndDoneWhenActiveFalls) {
+    const int k = RoundTrip();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 3.0f);
+    Execute(true);
+    Cycle(1);
+    const std::int64_t s = task_.ScanCount();
+    EXPECT_TRUE(StartBit()) << "scan " << s << ": Start with the edge";
+    for (int i = 1; i < k; ++i) {
+        Cycle(1);
+        EXPECT_TRUE(StartBit()) << "no answer seen yet, scan s+" << i;
+        EXPECT_TRUE(Busy());
+    }
+    Cycle(1);
+    EXPECT_FALSE(StartBit()) << "ACTIVE seen at s+" << k << ": Start drops";
+    EXPECT_EQ(Traverse(), ctrl::kSetPosition) << "the traverse bit stays";
+    EXPECT_TRUE(Busy());
+    EXPECT_TRUE(fb_->ACTIVE.value);
+    for (int i = 1; i < k; ++i) {
+        Cycle(1);
+        EXPECT_TRUE(Busy()) << "ACTIVE still up, scan s+" << k + i;
+    }
+    Cycle(1);
+    EXPECT_TRUE(Done()) << "ACTIVE fell, seen at s+" << 2 * k;
+    EXPECT_EQ(Traverse(), 0u);
+    EXPECT_FALSE(fb_->ACTIVE.value);
+    EXPECT_EQ(axis_->Position(), 3.0f);
+}
+
+TEST_P(FbPacAxisLatency, MoveIsDoneInTheScanThatShowsActiveFallen) {
+    axis_->SetReferenced(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 50.0f, 500, 500);
+    const Outcome o = Run();
+    ASSERT_TRUE(o.done);
+    EXPECT_EQ(o.startScan, o.edgeScan);
+    // The controller takes over at s + out, moves 10 cycles; ACTIVE falls in the last (Start is long 0)
+    // and the PLC sees it in + 1 scans later.
+    EXPECT_EQ(o.finalScan, o.startScan + outLatency_ + 10 + inLatency_ + 1);
+    EXPECT_EQ(axis_->Position(), 50.0f);
+    EXPECT_EQ(BitsOf(fb_->ACTUALPOSITION.value), BitsOf(50.0f));
+}
+
+INSTANTIATE_TEST_SUITE_P(OutIn, FbPacAxisLatency, ::testing::Combine(::testing::Range(0, 4), ::testing::Range(0, 4)),
+                         [](const auto& info) {
+                             return "Out" + std::to_string(std::get<0>(info.param)) + "In" +
+                                    std::to_string(std::get<1>(info.param));
+                         });
+
+TEST_F(FbPacAxis, StartNeverGoesOutInTheFirstScan) {
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(1);
+    EXPECT_FALSE(StartBit()) << "the PA-CONTROL may still see a Start from before a PLC restart";
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_TRUE(StartBit());
+}
+
+TEST_F(FbPacAxis, DoneShowsForExactlyOneScanWhenExecuteFellEarly) {
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET);
+    Execute(true);
+    Cycle(1);
+    Execute(false);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Done());
+    Cycle(1);
+    EXPECT_FALSE(Done());
+    EXPECT_FALSE(Busy());
+}
+
+TEST_F(FbPacAxis, DoneHoldsWhileExecuteStaysTrue) {
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED);
+    axis_->SetDisplaced(true);
+    Outcome o = StartAndWait();
+    ASSERT_TRUE(o.done);
+    Cycle(10);
+    EXPECT_TRUE(Done());
+    EXPECT_FALSE(fb_->DISPLACEDWHILEOFF.value);
+    Execute(false);
+    Cycle(1);
+    EXPECT_FALSE(Done());
+}
+
+// ---------------------------------------------------------------------------------------------------
+// CMD errors and the stale CMD error rule.
+
+TEST_F(FbPacAxis, CmdError43EndsTheJobWithThePacNumber) {
+    FakeAxisConfig config;
+    config.referenced = false;
+    config.cmdErrorStyle = CmdErrorStyle::kSameCycle;
+    Configure(config);
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, 5.0f);
+    Execute(true);
+    Cycle(1);
+    ASSERT_TRUE(StartBit());
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kNoReference);
+    EXPECT_EQ(fb_->CMDERRORNUMBER.value, kNoReference);
+    EXPECT_TRUE(fb_->CMDERROR.value);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and traverse bit off in the error scan";
+    Cycle(5);
+    EXPECT_TRUE(Error()) << "held while Execute";
+}
+
+// A failed job (43), then a second one, on every latency, both CMD error behaviours and with the
+// answer held back 0 or 2 controller cycles. The first job's error is measured (its bit rose from 0),
+// so the rule knows the take-over time k.
+class FbPacAxisStale : public FbPacAxis,
+                       public ::testing::WithParamInterface<std::tuple<int, int, CmdErrorStyle, int>> {
+protected:
+    void SetUp() override {
+        FakeAxisConfig config;
+        config.referenced = false;
+        config.cmdErrorStyle = Style();
+        config.answerDelay = std::get<3>(GetParam());
+        Configure(config, std::get<0>(GetParam()), std::get<1>(GetParam()));
+        Settle();
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 10.0f);
+        first_ = Run();
+        ASSERT_TRUE(first_.error);
+        ASSERT_EQ(first_.errorId, kNoReference);
+        EXPECT_EQ(first_.startScan, first_.edgeScan);
+        EXPECT_EQ(first_.finalScan, first_.startScan + K() + (SetsLate() ? 1 : 0));
+    }
+
+    CmdErrorStyle Style() const { return std::get<2>(GetParam()); }
+    bool SetsLate() const { return Style() == CmdErrorStyle::kClearThenSet; }
+    // Scans from raising Start to the answer: bus both ways, the controller cycle, the held-back answer.
+    int K() const { return RoundTrip() + std::get<3>(GetParam()); }
+    // The longest take-over time the FB has measured: the first job's.
+    int Measured() const { return K() + (SetsLate() ? 1 : 0); }
+
+    Outcome first_;
+};
+
+TEST_P(FbPacAxisStale, FailedThenGood) {
+    axis_->SetReferenced(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 10.0f);
+    const Outcome second = Run();
+    EXPECT_TRUE(second.done) << "errorId " << second.errorId;
+    ASSERT_EQ(axis_->Jobs().size(), 2u);
+    EXPECT_EQ(axis_->Position(), 10.0f);
+}
+
+TEST_P(FbPacAxisStale, FailedThenFailedWithTheSameNumber) {
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 10.0f);
+    const Outcome second = Run();
+    ASSERT_TRUE(second.error);
+    EXPECT_EQ(second.errorId, kNoReference);
+    ASSERT_EQ(axis_->Jobs().size(), 2u) << "Start was 0 long enough for the PA-CONTROL to see a new edge";
+    EXPECT_GE(second.startScan - first_.finalScan, Measured() + 1) << "Start 0 for the measured take-over time";
+    EXPECT_GE(second.finalScan, second.startScan + K()) << "not before the controller answered";
+    if (SetsLate()) {
+        EXPECT_EQ(second.finalScan, second.startScan + K() + 1) << "bit seen 0, then 1";
+    } else {
+        EXPECT_EQ(second.finalScan, second.startScan + 2 * Measured()) << "twice the measured take-over time";
+    }
+}
+
+TEST_P(FbPacAxisStale, FailedThenFailedWithAnotherNumber) {
+    axis_->SetReferenced(true);
+    axis_->RefuseJobsWith(static_cast<std::uint16_t>(kPositionRange));
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 10.0f);
+    const Outcome second = Run();
+    ASSERT_TRUE(second.error);
+    EXPECT_EQ(second.errorId, kPositionRange);
+    EXPECT_EQ(second.finalScan, second.startScan + K() + (SetsLate() ? 1 : 0)) << "number changed";
+}
+
+TEST_P(FbPacAxisStale, FailedFailedGoodFailed) {
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 10.0f);
+    Outcome o = Run();
+    EXPECT_EQ(o.errorId, kNoReference);
+    axis_->SetReferenced(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, 1.0f);
+    o = Run();
+    EXPECT_TRUE(o.done);
+    axis_->SetReferenced(false);
+    o = Run();
+    EXPECT_EQ(o.errorId, kNoReference);
+    EXPECT_EQ(o.finalScan, o.startScan + K() + (SetsLate() ? 1 : 0)) << "after a good job the bit was 0";
+    EXPECT_EQ(axis_->Jobs().size(), 4u);
+    EXPECT_EQ(axis_->Position(), 1.0f) << "only the relative move ran";
+}
+
+std::string StyleName(CmdErrorStyle s) { return s == CmdErrorStyle::kClearThenSet ? "ClearThenSet" : "SameCycle"; }
+
+INSTANTIATE_TEST_SUITE_P(Timings, FbPacAxisStale,
+                         ::testing::Combine(::testing::Range(0, 4), ::testing::Range(0, 4),
+                                            ::testing::Values(CmdErrorStyle::kClearThenSet, CmdErrorStyle::kSameCycle),
+                                            ::testing::Values(0, 2)),
+                         [](const auto& info) {
+                             return "Out" + std::to_string(std::get<0>(info.param)) + "In" +
+                                    std::to_string(std::get<1>(info.param)) + StyleName(std::get<2>(info.param)) +
+                                    "Held" + std::to_string(std::get<3>(info.param));
+                         });
+
+// A CMD error from before a PLC restart: nothing measured yet, so only a change of the bit or number
+// or Timeout decides.
+class FbPacAxisRestart : public FbPacAxis, public ::testing::WithParamInterface<CmdErrorStyle> {
+protected:
+    void SetUp() override {
+        FakeAxisConfig config;
+        config.cmdErrorStyle = GetParam();
+        Configure(config, 1, 1);
+        axis_->SetCmdError(static_cast<std::uint16_t>(kNoReference));
+        Settle();
+        ASSERT_TRUE(fb_->CMDERROR.value);
+    }
+};
+
+TEST_P(FbPacAxisRestart, GoodJobIsDone) {
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 4.0f);
+    const Outcome o = Run();
+    EXPECT_TRUE(o.done) << o.errorId;
+}
+
+TEST_P(FbPacAxisRestart, FailingJobWithTheSameNumber) {
+    axis_->SetReferenced(false);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 4.0f);
+    const Outcome o = Run();
+    ASSERT_TRUE(o.error);
+    EXPECT_EQ(o.errorId, kNoReference);
+    if (GetParam() == CmdErrorStyle::kClearThenSet) {
+        EXPECT_EQ(o.finalScan, o.startScan + RoundTrip() + 1);
+    } else {
+        EXPECT_EQ(o.finalScan, o.startScan + kTimeoutScans) << "nothing measured, no change: Timeout decides";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, FbPacAxisRestart,
+                         ::testing::Values(CmdErrorStyle::kClearThenSet, CmdErrorStyle::kSameCycle),
+                         [](const auto& info) { return StyleName(info.param); });
+
+// ---------------------------------------------------------------------------------------------------
+// Timeout.
+
+TEST_F(FbPacAxis, NoTakeOverWithinTimeout) {
+    Settle();
+    axis_->Mute(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    const Outcome o = StartAndWait();
+    ASSERT_TRUE(o.error);
+    EXPECT_EQ(o.errorId, kErrAckTimeout);
+    EXPECT_EQ(o.finalScan, o.startScan + kTimeoutScans);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn);
+}
+
+TEST_F(FbPacAxis, TimeoutWithAStaleCmdErrorReportsItsNumber) {
+    axis_->SetCmdError(static_cast<std::uint16_t>(kPositionRange));
+    Settle();
+    axis_->Mute(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    const Outcome o = StartAndWait();
+    ASSERT_TRUE(o.error);
+    EXPECT_EQ(o.errorId, kPositionRange);
+    EXPECT_EQ(o.finalScan, o.startScan + kTimeoutScans);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Axis errors and ResetError.
+
+TEST_F(FbPacAxis, AxisErrorDuringAMoveAndItsReset) {
+    FakeAxisConfig config;
+    config.moveCycles = 30;
+    Configure(config, 1, 2);
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, 100.0f);
+    Execute(true);
+    Cycle(8);
+    ASSERT_TRUE(Busy());
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
+    const std::int64_t raised = task_.ScanCount();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_EQ(task_.ScanCount(), raised + 1 + inLatency_ + 1) << "the first scan that can show the axis error";
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(fb_->AXISERRORNUMBER.value, kLimitSwitch);
+    EXPECT_TRUE(fb_->AXISERROR.value);
+    EXPECT_TRUE(fb_->FAULT.value);
+    EXPECT_EQ(Traverse(), 0u);
+    Execute(false);
+    Cycle(2);
+
+    // A job while the error is pending: refused at the edge, nothing sent.
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Outcome o = Run();
+    EXPECT_EQ(o.errorId, kErrAxisError);
+    EXPECT_EQ(o.finalScan, o.edgeScan);
+    EXPECT_EQ(axis_->Jobs().size(), 1u);
+
+    // ResetError: bit 16 from the edge until the axis error bit is seen 0: one round trip.
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    const std::int64_t r = task_.ScanCount();
+    EXPECT_EQ(ControlWord() & ctrl::kResetAxisError, ctrl::kResetAxisError);
+    ASSERT_TRUE(RunUntil([&] { return (ControlWord() & ctrl::kResetAxisError) == 0; }, 10, "reset bit off"));
+    EXPECT_EQ(task_.ScanCount(), r + RoundTrip());
+    EXPECT_FALSE(fb_->AXISERROR.value);
+    EXPECT_EQ(fb_->AXISERRORNUMBER.value, 0);
+    Cycle(5);
+    EXPECT_EQ(ControlWord() & ctrl::kResetAxisError, 0u) << "a pulse, although ResetError stays TRUE";
+    fb_->RESETERROR.value = FALSE;
+
+    o = Run();
+    EXPECT_TRUE(o.done) << "the axis moves again";
+}
+
+TEST_F(FbPacAxis, ResetPulseEndsAfterTimeoutWhileTheCauseRemains) {
+    Settle();
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch), true);
+    Cycle(3);
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    const std::int64_t r = task_.ScanCount();
+    ASSERT_TRUE(RunUntil([&] { return (ControlWord() & ctrl::kResetAxisError) == 0; }, 40, "reset bit off"));
+    EXPECT_EQ(task_.ScanCount(), r + kTimeoutScans);
+    EXPECT_TRUE(fb_->AXISERROR.value);
+    fb_->RESETERROR.value = FALSE;
+    Cycle(1);
+    axis_->ClearAxisErrorCause();
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    ASSERT_TRUE(RunUntil([&] { return !fb_->AXISERROR.value; }, 5, "axis error cleared"));
+}
+
+TEST_F(FbPacAxis, ResetWithoutAnAxisErrorIsOneScan) {
+    Settle();
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    EXPECT_NE(ControlWord() & ctrl::kResetAxisError, 0u);
+    Cycle(1);
+    EXPECT_EQ(ControlWord() & ctrl::kResetAxisError, 0u);
+    EXPECT_EQ(axis_->ResetCycles(), 1);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Abort, Enable, link loss, a new job during a job.
+
+class FbPacAxisLongMove : public FbPacAxis {
+protected:
+    void SetUp() override {
+        FakeAxisConfig config;
+        config.moveCycles = 40;
+        config.brakeCycles = 3;
+        Configure(config);
+        Settle();
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 400.0f, 800, 800);
+        Execute(true);
+        Cycle(10);
+        ASSERT_TRUE(Busy());
+        ASSERT_TRUE(axis_->IsMoving());
+    }
+};
+
+TEST_F(FbPacAxisLongMove, AbortInterruptsAndEndsWhenTheAxisIsFree) {
+    fb_->ABORT.value = TRUE;
+    Cycle(1);
+    const std::int64_t a = task_.ScanCount();
+    EXPECT_EQ(Traverse(), 0u) << "the traverse bit goes off in the Abort scan";
+    EXPECT_TRUE(Busy());
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_EQ(task_.ScanCount(), a + 3) << "the axis stands in cycle a + 2 (3 braking cycles), seen at a + 3";
+    EXPECT_TRUE(fb_->HALTED.value);
+    EXPECT_FALSE(fb_->ACTIVE.value);
+    EXPECT_LT(axis_->Position(), 400.0f);
+    Cycle(3);
+    EXPECT_TRUE(Aborted()) << "held while Execute";
+    // A job while Abort is held: aborted at once, nothing sent.
+    Execute(false);
+    Cycle(1);
+    const Outcome o = Run();
+    EXPECT_TRUE(o.aborted);
+    EXPECT_EQ(o.finalScan, o.edgeScan);
+    EXPECT_EQ(axis_->Jobs().size(), 1u);
+    fb_->ABORT.value = FALSE;
+    EXPECT_TRUE(Run().done);
+}
+
+TEST_F(FbPacAxisLongMove, AbortEndsAfterTimeoutWhenActiveStaysUp) {
+    axis_->HoldActive(true);
+    fb_->ABORT.value = TRUE;
+    Cycle(1);
+    const std::int64_t a = task_.ScanCount();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_EQ(task_.ScanCount(), a + kTimeoutScans);
+    EXPECT_TRUE(fb_->ACTIVE.value) << "Active tells the truth";
+    // The next job waits for the axis to be free, bounded by Timeout.
+    fb_->ABORT.value = FALSE;
+    Execute(false);
+    Cycle(1);
+    const Outcome o = Run();
+    ASSERT_TRUE(o.error);
+    EXPECT_EQ(o.errorId, kErrInterfaceBusy);
+    EXPECT_EQ(o.startScan, -1) << "no Start while the axis is ACTIVE";
+    EXPECT_EQ(o.finalScan, o.edgeScan + kTimeoutScans);
+    EXPECT_EQ(axis_->Jobs().size(), 1u);
+}
+
+TEST_F(FbPacAxisLongMove, EnableFallingInterruptsTheJob) {
+    fb_->ENABLE.value = FALSE;
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), 0u) << "Axis ON and the traverse bit off";
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_FALSE(fb_->ENABLED.value);
+    EXPECT_TRUE(fb_->IDLE.value);
+}
+
+TEST_F(FbPacAxisLongMove, LinkLostAbortsTheJobAtOnce) {
+    linkLost_ = true;
+    Cycle(1);
+    EXPECT_TRUE(Aborted()) << "an all-zero link aborts the job like Abort (issue: Enable falling, an all-zero "
+                              "link or another Execute edge abort it the same way)";
+    EXPECT_FALSE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, 0u);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and traverse bit off";
+    EXPECT_FALSE(fb_->STATUSVALID.value);
+    EXPECT_FALSE(fb_->NEGATIVELIMITACTUATED.value) << "no status, no limit switch";
+    EXPECT_FALSE(fb_->POSITIVELIMITACTUATED.value);
+    EXPECT_GT(fb_->ACTUALPOSITION.value, 0.0f) << "the last position is kept";
+    Execute(false);
+    Cycle(1);
+    const Outcome o = Run();
+    EXPECT_EQ(o.errorId, kErrNotReady) << "no job while the link is lost";
+    EXPECT_EQ(o.finalScan, o.edgeScan);
+    linkLost_ = false;
+    Cycle(3);
+    EXPECT_TRUE(fb_->STATUSVALID.value);
+    EXPECT_FALSE(axis_->IsMoving()) << "the controller saw the traverse bit go";
+    EXPECT_TRUE(Run().done);
+}
+
+TEST_F(FbPacAxisLongMove, NewExecuteAbortsTheJobAndStartsTheNewOneWhenTheAxisIsFree) {
+    Execute(false);
+    Cycle(1);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, -5.0f, 300, 300);
+    Execute(true);
+    Cycle(1);
+    const std::int64_t e = task_.ScanCount();
+    EXPECT_TRUE(Aborted()) << "the old job: CommandAborted in the edge scan";
+    EXPECT_FALSE(Busy());
+    EXPECT_EQ(Traverse(), 0u) << "its traverse bit off";
+    Cycle(1);
+    EXPECT_FALSE(Aborted()) << "for one scan";
+    EXPECT_TRUE(Busy()) << "the new job";
+    EXPECT_FALSE(StartBit()) << "not while ACTIVE";
+    ASSERT_TRUE(RunUntil([&] { return StartBit(); }, 20, "Start of the new job"));
+    EXPECT_EQ(task_.ScanCount(), e + 3) << "the scan that sees ACTIVE fallen";
+    EXPECT_EQ(Traverse(), ctrl::kRelative);
+    EXPECT_EQ(ReadBe16(toPac_, 6), 300);
+    const float stoppedAt = axis_->Position();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 60, "final output"));
+    EXPECT_TRUE(Done());
+    ASSERT_EQ(axis_->Jobs().size(), 2u);
+    EXPECT_EQ(axis_->Jobs()[1].control, ctrl::kAxisOn | ctrl::kStart | ctrl::kRelative);
+    EXPECT_EQ(axis_->Position(), stoppedAt - 5.0f);
+}
+
+TEST_F(FbPacAxisLongMove, InterruptionFromOutsideIsCommandAborted) {
+    axis_->InterruptFromOutside();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Aborted()) << "ACTIVE fell with HALT: not at the target";
+    EXPECT_TRUE(fb_->HALTED.value);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Jog.
+
+class FbPacAxisJog : public FbPacAxis {
+protected:
+    void SetUp() override {
+        FakeAxisConfig config;
+        config.moveCycles = 20;
+        config.referenced = false;
+        Configure(config);
+        Settle();
+        fb_->POSITION.value = 200.0f;  // the longest distance
+        fb_->VELOCITY.value = 100;
+        fb_->ACCELERATION.value = 50;
+    }
+};
+
+TEST_F(FbPacAxisJog, JogPositiveWhileHeldStopsWhenReleased) {
+    fb_->JOGPOSITIVE.value = TRUE;
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kStart | ctrl::kJogPositive) << "no reference needed";
+    EXPECT_EQ(ReadBe32(toPac_, 8), BitsOf(200.0f));
+    EXPECT_EQ(ReadBe16(toPac_, 6), 100);
+    EXPECT_EQ(ReadBe16(toPac_, 4), 50);
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kJogPositive) << "taken over: Start off, the bit stays";
+    Cycle(5);
+    EXPECT_TRUE(Busy());
+    fb_->JOGPOSITIVE.value = FALSE;
+    Cycle(1);
+    const std::int64_t r = task_.ScanCount();
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "released: the bit goes";
+    EXPECT_TRUE(Busy());
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Done());
+    EXPECT_EQ(task_.ScanCount(), r + 2) << "2 braking cycles from r, seen the scan after";
+    Cycle(1);
+    EXPECT_FALSE(Done()) << "one scan: the jog input is FALSE";
+    EXPECT_GT(axis_->Position(), 0.0f);
+    EXPECT_LT(axis_->Position(), 200.0f);
+}
+
+TEST_F(FbPacAxisJog, JogNegativeToItsDistanceHoldsDoneWhileHeld) {
+    fb_->JOGNEGATIVE.value = TRUE;
+    Cycle(1);
+    EXPECT_EQ(Traverse(), ctrl::kJogNegative);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
+    EXPECT_TRUE(Done());
+    EXPECT_EQ(Traverse(), 0u);
+    EXPECT_EQ(axis_->Position(), -200.0f);
+    Cycle(5);
+    EXPECT_TRUE(Done()) << "held while JogNegative";
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "no second jog while held";
+    fb_->JOGNEGATIVE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Done());
+    EXPECT_EQ(axis_->Jobs().size(), 1u);
+}
+
+TEST_F(FbPacAxisJog, JogErrorIsReportedWhileHeld) {
+    fb_->ENABLE.value = FALSE;
+    Cycle(2);
+    fb_->JOGPOSITIVE.value = TRUE;
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kAxisOff);
+    Cycle(5);
+    EXPECT_TRUE(Error());
+    fb_->JOGPOSITIVE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Error());
+}
+
+TEST_F(FbPacAxisJog, InvalidJogDataIsRefusedWhileHeld) {
+    fb_->VELOCITY.value = 0;
+    fb_->JOGNEGATIVE.value = TRUE;
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrInvalidVelocity);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn);
+    Cycle(3);
+    EXPECT_TRUE(Error());
+    fb_->JOGNEGATIVE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Error());
+    EXPECT_TRUE(axis_->Jobs().empty());
+}
+
+TEST_F(FbPacAxisJog, BothJogInputsMoveNothing) {
+    fb_->JOGPOSITIVE.value = TRUE;
+    fb_->JOGNEGATIVE.value = TRUE;
+    Cycle(3);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn);
+    EXPECT_FALSE(Busy());
+    fb_->JOGNEGATIVE.value = FALSE;
+    Cycle(3);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "a jog starts on its own edge only";
+}
+
+TEST_F(FbPacAxisJog, ExecuteDuringAJogEndsTheJog) {
+    fb_->JOGPOSITIVE.value = TRUE;
+    Cycle(4);
+    ASSERT_TRUE(Busy());
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 0.0f);
+    Execute(true);
+    Cycle(1);
+    EXPECT_TRUE(Aborted()) << "the jog ends";
+    EXPECT_EQ(Traverse(), 0u);
+    Cycle(1);
+    EXPECT_TRUE(Busy()) << "the job owns the outputs";
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Done()) << "the job ran";
+    EXPECT_EQ(axis_->Jobs().size(), 2u);
+    EXPECT_EQ(axis_->Position(), 0.0f);
+    Cycle(3);
+    EXPECT_EQ(axis_->Jobs().size(), 2u) << "the jog input still held starts nothing";
+}
+
+TEST_F(FbPacAxisJog, JogIgnoredWhileAJobRuns) {
+    axis_->SetReferenced(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 30.0f);
+    Execute(true);
+    Cycle(3);
+    fb_->JOGNEGATIVE.value = TRUE;
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
+    EXPECT_TRUE(Done());
+    EXPECT_EQ(axis_->Jobs().size(), 1u);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// G123, Axis ON, DisableDrive, DisableLimitSwitches.
+
+TEST_F(FbPacAxis, ConditionBitsGoWithAbsoluteAndRelativeMovesOnly) {
+    struct Case {
+        E_PAC_AXISCOMMAND command;
+        E_PAC_MOVECONDITION condition;
+        std::uint32_t bits;
+    };
+    const Case cases[] = {
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
+         ctrl::kAbsolute | ctrl::kWhileInput1},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0,
+         ctrl::kAbsolute | ctrl::kWhileInput0},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
+         ctrl::kRelative | ctrl::kWhileInput1},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0,
+         ctrl::kRelative | ctrl::kWhileInput0},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_NONE, ctrl::kRelative},
+        {E_PAC_AXISCOMMAND__PAC_AX_HOME, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1, ctrl::kHome},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0, ctrl::kToMax},
+        {E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1, ctrl::kSetPosition},
+    };
+    Settle();
+    for (const Case& c : cases) {
+        SetJob(c.command, 1.0f);
+        fb_->CONDITION.value = c.condition;
+        Execute(true);
+        Cycle(1);
+        EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kStart | c.bits);
+        Cycle(1);
+        EXPECT_EQ(ControlWord(), ctrl::kAxisOn | c.bits) << "the G123 bits stay with the traverse bit";
+        ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+        EXPECT_TRUE(Done());
+        Execute(false);
+        Cycle(2);
+    }
+}
+
+TEST_F(FbPacAxis, MoveEndedByItsConditionIsDone) {
+    FakeAxisConfig config;
+    config.moveCycles = 30;
+    Configure(config);
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
+    fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
+    Execute(true);
+    Cycle(6);
+    axis_->StopByCondition();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Done());
+    EXPECT_TRUE(fb_->STOPPEDBYCONDITION.value);
+    EXPECT_TRUE(fb_->HALTED.value);
+}
+
+TEST_F(FbPacAxis, LevelBitsFollowTheirInputsEveryScan) {
+    Settle();
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn);
+    fb_->DISABLEDRIVE.value = TRUE;
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kDisableDrive);
+    fb_->DISABLEDRIVE.value = FALSE;
+    fb_->ENABLE.value = FALSE;
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), 0u);
+    fb_->ENABLE.value = TRUE;
+    fb_->DISABLELIMITSWITCHES.value = TRUE;
+    Cycle(3);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, 2.0f);
+    Execute(true);
+    Cycle(1);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kStart | ctrl::kRelative | ctrl::kDisableLimitSwitches);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    ASSERT_EQ(axis_->Jobs().size(), 1u);
+    EXPECT_NE(axis_->Jobs()[0].control & ctrl::kDisableLimitSwitches, 0u) << "taken over with Start";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Status outputs.
+
+TEST_F(FbPacAxis, EveryStatusBitHasItsOutputLimitSwitchesLowActive) {
+    auto outputs = [&] {
+        const auto& f = fb_.Data();
+        return std::array<bool, 16>{f.ENABLED.value != 0,  f.HALTED.value != 0,     f.DRIVEDISABLED.value != 0,
+                                    f.SAFE.value != 0,     f.IDLE.value != 0,       f.DISABLED.value != 0,
+                                    f.FAULT.value != 0,    f.ACTIVE.value != 0,     f.REFERENCED.value != 0,
+                                    f.NEGATIVELIMITACTUATED.value != 0, f.POSITIVELIMITACTUATED.value != 0,
+                                    f.STOPPEDBYCONDITION.value != 0, f.DISPLACEDWHILEOFF.value != 0,
+                                    f.GROUPDISPLACEDWHILEOFF.value != 0, f.CMDERROR.value != 0,
+                                    f.AXISERROR.value != 0};
+    };
+    const std::uint32_t limitsFree = status::kNegativeLimitNotActuated | status::kPositiveLimitNotActuated;
+    for (int bit = 0; bit < 16; ++bit) {
+        const std::uint32_t word = limitsFree ^ (1u << bit);  // bits 9 and 10: 0 means actuated
+        AxisImage reply{};
+        pac::test::WriteBe32(reply, 0, word);
+        forcedReply_ = reply;
+        Cycle(1);
+        const auto out = outputs();
+        for (int i = 0; i < 16; ++i) EXPECT_EQ(out[i], i == bit) << "status bit " << bit << ", output " << i;
+        EXPECT_EQ(fb_->STATUSWORD.value, word);
+        EXPECT_TRUE(fb_->STATUSVALID.value);
+    }
+}
+
+TEST_F(FbPacAxis, LimitSwitchesFromTheAxis) {
+    axis_->SetLimitSwitches(true, false);
+    Settle();
+    EXPECT_TRUE(fb_->NEGATIVELIMITACTUATED.value);
+    EXPECT_FALSE(fb_->POSITIVELIMITACTUATED.value);
+    EXPECT_EQ(fb_->STATUSWORD.value & (status::kNegativeLimitNotActuated | status::kPositiveLimitNotActuated),
+              status::kPositiveLimitNotActuated);
+    axis_->SetLimitSwitches(false, true);
+    Settle();
+    EXPECT_FALSE(fb_->NEGATIVELIMITACTUATED.value);
+    EXPECT_TRUE(fb_->POSITIVELIMITACTUATED.value);
+}
+
+TEST_F(FbPacAxis, NumbersAndActualPositionInBothFormats) {
+    AxisImage reply{};
+    pac::test::WriteBe32(reply, 0, status::kDriveEnabled | status::kCmdError | status::kAxisError);
+    pac::test::WriteBe16(reply, 4, 0x1234);
+    pac::test::WriteBe16(reply, 6, 999);
+    pac::test::WriteBe32(reply, 8, static_cast<std::uint32_t>(-25045));
+    forcedReply_ = reply;
+    fb_->INTEGERMODE.value = TRUE;
+    Cycle(1);
+    EXPECT_EQ(fb_->CMDERRORNUMBER.value, 0x1234);
+    EXPECT_EQ(fb_->AXISERRORNUMBER.value, 999);
+    EXPECT_EQ(BitsOf(fb_->ACTUALPOSITION.value), BitsOf(-25.045f));
+    pac::test::WriteBe32(reply, 8, 2147483647u);
+    forcedReply_ = reply;
+    Cycle(1);
+    EXPECT_EQ(BitsOf(fb_->ACTUALPOSITION.value), BitsOf(2147483.647f));
+    fb_->INTEGERMODE.value = FALSE;
+    pac::test::WriteBe32(reply, 8, 0x44200000u);
+    forcedReply_ = reply;
+    Cycle(1);
+    EXPECT_EQ(fb_->ACTUALPOSITION.value, 640.0f);
+    pac::test::WriteBe32(reply, 8, 0x7FC00000u);  // NaN from the wire: decoded to 0.0, never a NaN REAL
+    forcedReply_ = reply;
+    Cycle(1);
+    EXPECT_EQ(fb_->ACTUALPOSITION.value, 0.0f);
+}
+
+}  // namespace
