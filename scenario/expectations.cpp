@@ -1,5 +1,8 @@
 #include "expectations.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "text_format.hpp"
 
 namespace pac::scenario {
@@ -29,6 +32,36 @@ std::vector<std::string> CheckExpectation(const Expectation& expect, const Comma
     if (expect.ackData && expect.ackData->bits != outcome.ackData) {
         failures.push_back("AckData is " + DwordText(outcome.ackData, expect.ackData->isReal) + ", expected " +
                            DwordText(*expect.ackData));
+    }
+    return failures;
+}
+
+std::vector<std::string> CheckAxisExpectation(const AxisJob& job, const AxisOutcome& outcome) {
+    std::vector<std::string> failures;
+    const AxisExpectation& expect = job.expect;
+    if (!outcome.finished) {
+        failures.push_back(job.HasJob() ? "neither Done, Error nor CommandAborted within " + std::to_string(job.maxMs) + " ms"
+                                        : std::string("Enabled did not follow Enable within ") + std::to_string(job.maxMs) +
+                                              " ms");
+        return failures;
+    }
+    auto flag = [&failures](const char* name, const std::optional<bool>& expected, bool actual) {
+        if (expected && *expected != actual) {
+            failures.push_back(std::string(name) + " is " + Bool(actual) + ", expected " + Bool(*expected));
+        }
+    };
+    flag("Done", expect.done, outcome.done);
+    flag("Error", expect.error, outcome.error);
+    flag("CommandAborted", expect.aborted, outcome.aborted);
+    flag("Referenced", expect.referenced, outcome.referenced);
+    if (expect.errorId && *expect.errorId != outcome.errorId) {
+        failures.push_back("ErrorID is " + ErrorIdText(outcome.errorId) + ", expected " + ErrorIdText(*expect.errorId));
+    }
+    if (expect.position && !(std::fabs(outcome.position - *expect.position) <= expect.positionTolerance)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "ActualPosition is %.4f, expected %.4f +- %g", outcome.position,
+                      *expect.position, expect.positionTolerance);
+        failures.push_back(text);
     }
     return failures;
 }

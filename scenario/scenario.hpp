@@ -1,6 +1,7 @@
-// A scenario: the timing of PLC, bus and PA-CONTROL, the controller's state before the first scan,
-// and the steps to run one after the other (commands through FB_PAC_Cmd, faults, waits). Plain
-// data; ScenarioLoader builds it from a JSON file and refuses anything it cannot represent
+// A scenario: the timing of PLC, bus and PA-CONTROL, the Profibus modules, the controller's state
+// before the first scan, and the steps to run one after the other (commands through FB_PAC_Cmd,
+// mode requests through FB_PAC_Ctrl, axis jobs through FB_PAC_Axis, faults, waits). Plain data;
+// ScenarioLoader builds it from a JSON file and refuses anything it cannot represent
 // (docs/scenario.md).
 #pragma once
 
@@ -22,6 +23,13 @@ struct Timing {
     int bootMs = 50;  // the PA-CONTROL's boot after power-on: status 0, all-zero reply
 };
 
+// The Profibus modules besides the CMD interface (manual 2.3): the CTRL interface and 0..8 axis
+// modules (which need the CTRL interface).
+struct Modules {
+    bool ctrl = false;
+    int axes = 0;
+};
+
 // The controller before the first scan. Registers and inputs not named keep the simulator's
 // power-on values (0).
 struct ControllerSetup {
@@ -29,6 +37,7 @@ struct ControllerSetup {
     std::map<int, std::int32_t> intRegisters;     // N
     std::map<int, float> realRegisters;           // R
     std::map<int, bool> inputs;
+    std::map<int, std::int32_t> systemParameters;  // 0700 values, e.g. 4: the external stop input
 };
 
 // A DWORD as the scenario wrote it: an integer, or a REAL carried as its IEEE-754 bits.
@@ -59,6 +68,51 @@ struct CommandStep {
     Expectation expect;
 };
 
+// One request through FB_PAC_Ctrl on the CTRL interface, run like a command step. `request` is the
+// E_PAC_CtrlRequest name (PAC_REQ_START_ONLINE, ...). IntegerMode keeps its value for later steps.
+struct CtrlStep {
+    std::string request;
+    bool integerMode = false;
+    int timeoutMs = 10000;  // FB_PAC_Ctrl.Timeout
+    Expectation expect;     // done, error, error_id (no ack_data)
+};
+
+// What an axis must show at the end of its job (or, without a job, once Enabled has followed Enable).
+struct AxisExpectation {
+    std::optional<bool> done;
+    std::optional<bool> error;
+    std::optional<bool> aborted;  // CommandAborted
+    std::optional<std::uint16_t> errorId;
+    std::optional<bool> referenced;
+    std::optional<double> position;  // ActualPosition, within positionTolerance
+    double positionTolerance = 0.001;
+
+    bool Empty() const { return !done && !error && !aborted && !errorId && !referenced && !position; }
+};
+
+// One axis of an axes step: Enable (a level that stays for later steps) and optionally a job through
+// FB_PAC_Axis. `command` and `condition` are the E_PAC_AxisCommand / E_PAC_MoveCondition names.
+struct AxisJob {
+    int axis = 1;  // the axis module, 1..Modules::axes
+    std::optional<bool> enable;
+    std::string command;  // empty: no job, only Enable
+    double position = 0.0;
+    int velocity = 1000;      // per mille
+    int acceleration = 1000;  // per mille
+    std::string condition = "PAC_COND_NONE";
+    int timeoutMs = 1000;  // FB_PAC_Axis.Timeout (take-over)
+    int maxMs = 60000;     // the longest the runner waits for the job to end
+    AxisExpectation expect;
+
+    bool HasJob() const { return !command.empty(); }
+};
+
+// Axis jobs that run at the same time: every Execute rises in the same scan and stays TRUE until
+// every job has ended (Done, Error or CommandAborted); then all fall for one scan.
+struct AxesStep {
+    std::vector<AxisJob> jobs;
+};
+
 enum class FaultKind { kPowerCycle, kFreezeLink, kThawLink, kZeroLink };
 enum class LinkSide { kToPac, kFromPac, kBoth };
 
@@ -74,7 +128,7 @@ struct WaitStep {
 };
 
 struct Step {
-    std::variant<CommandStep, FaultStep, WaitStep> action;
+    std::variant<CommandStep, CtrlStep, AxesStep, FaultStep, WaitStep> action;
     std::string note;  // printed with the step
 };
 
@@ -82,6 +136,7 @@ struct Scenario {
     std::string name;
     std::string description;
     Timing timing;
+    Modules modules;
     ControllerSetup controller;
     std::vector<Step> steps;
 };

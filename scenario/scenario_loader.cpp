@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "json_fields.hpp"
+#include "module_steps.hpp"
 #include "pac/sim/elements.hpp"
 #include "pac/sim/image8.hpp"
 
@@ -40,13 +41,15 @@ public:
     explicit Reader(const GvlNames& names) : names_(names) {}
 
     Scenario ReadScenario(const Json& document) const {
-        const json::Object top(document, "$", {"name", "description", "timing", "controller", "steps"}, "a scenario");
+        const json::Object top(document, "$", {"name", "description", "timing", "modules", "controller", "steps"},
+                               "a scenario");
         Scenario scenario;
         if (const Json* name = top.Find("name")) scenario.name = json::String(*name, top.PathOf("name"));
         if (const Json* text = top.Find("description")) {
             scenario.description = json::String(*text, top.PathOf("description"));
         }
         if (const Json* timing = top.Find("timing")) scenario.timing = ReadTiming(*timing, top.PathOf("timing"));
+        if (const Json* modules = top.Find("modules")) scenario.modules = ReadModules(*modules, top.PathOf("modules"));
         if (const Json* controller = top.Find("controller")) {
             scenario.controller = ReadController(*controller, top.PathOf("controller"));
         }
@@ -54,7 +57,12 @@ public:
         const std::string stepsPath = top.PathOf("steps");
         if (!steps.is_array()) json::RefuseType(stepsPath, "an array of steps", steps);
         if (steps.empty()) json::Refuse(stepsPath, "out of range: a scenario needs at least one step");
-        for (std::size_t i = 0; i < steps.size(); ++i) scenario.steps.push_back(ReadStep(steps[i], json::Element(stepsPath, i)));
+        const ModuleStepReader moduleSteps(scenario.modules, [this](const Json& value, const std::string& path) {
+            return ReadErrorId(value, path);
+        });
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            scenario.steps.push_back(ReadStep(steps[i], json::Element(stepsPath, i), moduleSteps));
+        }
         return scenario;
     }
 
@@ -83,6 +91,20 @@ private:
         return result;
     }
 
+    static Modules ReadModules(const Json& value, const std::string& path) {
+        const json::Object object(value, path, {"ctrl", "axes"}, "modules");
+        Modules modules;
+        if (const Json* ctrl = object.Find("ctrl")) modules.ctrl = json::Bool(*ctrl, object.PathOf("ctrl"));
+        if (const Json* axes = object.Find("axes")) {
+            modules.axes = static_cast<int>(json::Integer(*axes, object.PathOf("axes"), 0, 8));
+            if (modules.axes > 0 && !modules.ctrl) {
+                json::Refuse(object.PathOf("axes"),
+                             "axis modules need the CTRL interface (extensions 2..9 come after it): set \"ctrl\": true");
+            }
+        }
+        return modules;
+    }
+
     // Keys of a register or input table: element numbers 1..count.
     template <class Value, class ReadValue>
     static std::map<int, Value> ReadNumbered(const Json& value, const std::string& path, int count, const char* what,
@@ -108,8 +130,8 @@ private:
     }
 
     ControllerSetup ReadController(const Json& value, const std::string& path) const {
-        const json::Object controller(value, path, {"operating_status", "n_registers", "r_registers", "inputs"},
-                                      "controller");
+        const json::Object controller(
+            value, path, {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters"}, "controller");
         const pac::sim::ElementCounts counts;
         ControllerSetup setup;
         if (const Json* status = controller.Find("operating_status")) {
@@ -129,6 +151,14 @@ private:
         if (const Json* inputs = controller.Find("inputs")) {
             setup.inputs = ReadNumbered<bool>(*inputs, controller.PathOf("inputs"), counts.inputs, "input",
                                               [](const Json& v, const std::string& p) { return json::Bool(v, p); });
+        }
+        if (const Json* parameters = controller.Find("system_parameters")) {
+            // The simulator's table knows which numbers exist and their limits; the runner reports a refusal.
+            setup.systemParameters = ReadNumbered<std::int32_t>(
+                *parameters, controller.PathOf("system_parameters"), 65535, "system parameter",
+                [](const Json& v, const std::string& p) {
+                    return static_cast<std::int32_t>(json::Integer(v, p, INT32_MIN, INT32_MAX));
+                });
         }
         return setup;
     }
@@ -216,8 +246,10 @@ private:
         return result;
     }
 
-    Step ReadStep(const Json& value, const std::string& path) const {
-        static const std::vector<std::string> kinds = {"command", "fault", "wait_ms"};
+    Step ReadStep(const Json& value, const std::string& path, const ModuleStepReader& moduleSteps) const {
+        static const std::vector<std::string> kinds = {"command", "ctrl", "axes", "fault", "wait_ms"};
+        static const std::vector<std::string> ctrlKeys = {"ctrl", "integer_mode", "timeout_ms", "expect", "note"};
+        static const std::vector<std::string> axesKeys = {"axes", "note"};
         static const std::vector<std::string> commandKeys = {"command", "param", "data", "timeout_ms",
                                                              "end_timeout_ms", "expect", "note"};
         static const std::vector<std::string> waitKeys = {"wait_ms", "note"};
@@ -232,7 +264,7 @@ private:
         }
         if (present.empty()) {
             std::vector<std::string> all = commandKeys;
-            all.insert(all.end(), {"fault", "link", "wait_ms"});
+            all.insert(all.end(), {"ctrl", "integer_mode", "axes", "fault", "link", "wait_ms"});
             json::Object(value, path, all, "a step");  // an unknown key is the likelier mistake: report it
             json::Refuse(path, "missing key: a step needs one of " + json::ListKeys(kinds));
         }
@@ -240,6 +272,14 @@ private:
         if (present[0] == "command") {
             const json::Object object(value, path, commandKeys, "a command step");
             step.action = ReadCommand(object);
+            step.note = ReadNote(object);
+        } else if (present[0] == "ctrl") {
+            const json::Object object(value, path, ctrlKeys, "a ctrl step");
+            step.action = moduleSteps.ReadCtrl(object);
+            step.note = ReadNote(object);
+        } else if (present[0] == "axes") {
+            const json::Object object(value, path, axesKeys, "an axes step");
+            step.action = moduleSteps.ReadAxes(object);
             step.note = ReadNote(object);
         } else if (present[0] == "fault") {
             step.action = ReadFault(value, path, step.note);

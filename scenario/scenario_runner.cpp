@@ -1,9 +1,13 @@
 #include "scenario_runner.hpp"
 
+#include <cmath>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "expectations.hpp"
+#include "module_steps.hpp"
+#include "scenario_error.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
 #include "pac_plc_bench.hpp"
@@ -21,17 +25,54 @@ TIME ToTime(int ms) {
     return time;
 }
 
+pac::sim::ModuleLayout Layout(const Modules& modules) { return pac::sim::ModuleLayout{modules.ctrl, modules.axes}; }
+
+// The C enumerators of the ST enums, in their declaration order (module_steps.hpp has the names).
+E_PAC_CTRLREQUEST CtrlRequest(const std::string& name) {
+    static const E_PAC_CTRLREQUEST values[] = {
+        E_PAC_CTRLREQUEST__PAC_REQ_NONE,   E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC,
+        E_PAC_CTRLREQUEST__PAC_REQ_STOP,   E_PAC_CTRLREQUEST__PAC_REQ_CANCEL,       E_PAC_CTRLREQUEST__PAC_REQ_RESET_ERROR};
+    return values[IndexOf(kCtrlRequestNames, name)];
+}
+
+E_PAC_AXISCOMMAND AxisCommand(const std::string& name) {
+    static const E_PAC_AXISCOMMAND values[] = {
+        E_PAC_AXISCOMMAND__PAC_AX_NONE,          E_PAC_AXISCOMMAND__PAC_AX_HOME,
+        E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE,
+        E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX,   E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN,
+        E_PAC_AXISCOMMAND__PAC_AX_SET_REFERENCED, E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION,
+        E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET,  E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED};
+    return values[IndexOf(kAxisCommandNames, name)];
+}
+
+E_PAC_MOVECONDITION MoveCondition(const std::string& name) {
+    static const E_PAC_MOVECONDITION values[] = {E_PAC_MOVECONDITION__PAC_COND_NONE,
+                                                 E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
+                                                 E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0};
+    return values[IndexOf(kMoveConditionNames, name)];
+}
+
 pac::test::PlcBenchTiming BenchTiming(const Timing& t) {
     return {milliseconds(t.plcCycleMs), milliseconds(t.pacCycleMs), t.latencyCycles, milliseconds(t.jitterMs),
             t.seed, milliseconds(t.bootMs)};
 }
 
-// One PLC with FB_PAC_Cmd on the CMD interface of one simulated PA-CONTROL, run step by step.
+// One PLC with FB_PAC_Cmd on the CMD interface of one simulated PA-CONTROL, FB_PAC_Ctrl on its CTRL
+// interface and FB_PAC_Axis on each axis module, run step by step.
 class Session {
 public:
     Session(const Scenario& scenario, RunObserver& observer)
-        : scenario_(scenario), observer_(observer), plc_(BenchTiming(scenario.timing)) {
+        : scenario_(scenario),
+          observer_(observer),
+          axes_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AXIS)),
+          plc_(BenchTiming(scenario.timing), pac::sim::PaControlConfig{}, Layout(scenario.modules)) {
         plc_.Call(cmd_);
+        if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
+        for (std::size_t k = 0; k < axes_.size(); ++k) {
+            // As a PLC program wires them: each axis takes the format in force from FB_PAC_Ctrl.
+            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1,
+                          [this, k] { axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+        }
         plc_.Start();
         SetUp(scenario.controller);
     }
@@ -45,6 +86,16 @@ public:
                 if constexpr (std::is_same_v<Action, CommandStep>) {
                     report.outcome = RunCommand(action);
                     report.failures = CheckExpectation(action.expect, *report.outcome);
+                } else if constexpr (std::is_same_v<Action, CtrlStep>) {
+                    report.request = RunCtrl(action);
+                    report.failures = CheckExpectation(action.expect, *report.request);
+                } else if constexpr (std::is_same_v<Action, AxesStep>) {
+                    report.axes = RunAxes(action);
+                    for (std::size_t i = 0; i < action.jobs.size(); ++i) {
+                        for (const auto& failure : CheckAxisExpectation(action.jobs[i], report.axes[i])) {
+                            report.failures.push_back("axis " + std::to_string(action.jobs[i].axis) + ": " + failure);
+                        }
+                    }
                 } else if constexpr (std::is_same_v<Action, FaultStep>) {
                     Inject(action);
                 } else {
@@ -64,6 +115,13 @@ private:
         for (const auto& [number, value] : setup.intRegisters) pac.Io().intRegisters.SetInt(number, value);
         for (const auto& [number, value] : setup.realRegisters) pac.Io().realRegisters.SetReal(number, value);
         for (const auto& [number, value] : setup.inputs) pac.Io().inputs.Set(number, value);
+        for (const auto& [number, value] : setup.systemParameters) {
+            if (pac.SystemParameters().Set(number, value) != pac::sim::ParameterTable::SetResult::kOk) {
+                throw ScenarioError("$.controller.system_parameters[\"" + std::to_string(number) + "\"]",
+                                    "refused by the simulated PA-CONTROL: no such system parameter, or " +
+                                        std::to_string(value) + " is outside its limits");
+            }
+        }
     }
 
     bool Finished() { return cmd_->DONE.value || cmd_->ERROR.value; }
@@ -81,6 +139,35 @@ private:
         sample.error = cmd_->ERROR.value != 0;
         sample.errorId = static_cast<std::uint16_t>(cmd_->ERRORID.value);
         sample.ackData = static_cast<std::uint32_t>(cmd_->ACKDATA.value);
+        if (scenario_.modules.ctrl) {
+            CtrlSample ctrl;
+            ctrl.toPac = plc_.ToPac().Module8(pac::sim::ModuleLayout::kCtrlOffset);
+            ctrl.fromPac = plc_.FromPac().Module8(pac::sim::ModuleLayout::kCtrlOffset);
+            ctrl.execute = ctrl_->EXECUTE.value != 0;
+            ctrl.busy = ctrl_->BUSY.value != 0;
+            ctrl.done = ctrl_->DONE.value != 0;
+            ctrl.error = ctrl_->ERROR.value != 0;
+            ctrl.errorId = static_cast<std::uint16_t>(ctrl_->ERRORID.value);
+            sample.ctrl = ctrl;
+        }
+        const auto layout = Layout(scenario_.modules);
+        for (std::size_t k = 0; k < axes_.size(); ++k) {
+            auto& fb = axes_[k];
+            AxisSample axis;
+            axis.axis = static_cast<int>(k) + 1;
+            axis.toPac = plc_.ToPac().Module12(layout.AxisOffset(axis.axis));
+            axis.fromPac = plc_.FromPac().Module12(layout.AxisOffset(axis.axis));
+            axis.enable = fb->ENABLE.value != 0;
+            axis.execute = fb->EXECUTE.value != 0;
+            axis.busy = fb->BUSY.value != 0;
+            axis.done = fb->DONE.value != 0;
+            axis.error = fb->ERROR.value != 0;
+            axis.aborted = fb->COMMANDABORTED.value != 0;
+            axis.errorId = static_cast<std::uint16_t>(fb->ERRORID.value);
+            axis.actualPosition = fb->ACTUALPOSITION.value;
+            axis.integerMode = fb->INTEGERMODE.value != 0;
+            sample.axes.push_back(axis);
+        }
         observer_.OnScan(sample);
     }
 
@@ -118,6 +205,97 @@ private:
         return outcome;
     }
 
+    CommandOutcome RunCtrl(const CtrlStep& step) {
+        ctrl_->REQUEST.value = CtrlRequest(step.request);
+        ctrl_->INTEGERMODE.value = step.integerMode ? TRUE : FALSE;
+        ctrl_->TIMEOUT.value = ToTime(step.timeoutMs);
+        ctrl_->EXECUTE.value = TRUE;
+        CommandOutcome outcome;
+        Scan();
+        outcome.edgeScan = plc_.Task().ScanCount();
+        outcome.edgeTime = plc_.Now();
+        const Timing& t = scenario_.timing;
+        const std::int64_t maxScans =
+            (static_cast<std::int64_t>(step.timeoutMs) + 2LL * t.jitterMs + 2LL * t.pacCycleMs) / t.plcCycleMs +
+            2LL * t.latencyCycles + 10;
+        auto finished = [this] { return ctrl_->DONE.value || ctrl_->ERROR.value; };
+        for (std::int64_t scans = 0; !finished() && scans < maxScans; ++scans) Scan();
+        outcome.finished = finished();
+        outcome.done = ctrl_->DONE.value != 0;
+        outcome.error = ctrl_->ERROR.value != 0;
+        outcome.errorId = static_cast<std::uint16_t>(ctrl_->ERRORID.value);
+        outcome.endScan = plc_.Task().ScanCount();
+        outcome.endTime = plc_.Now();
+        ctrl_->EXECUTE.value = FALSE;
+        Scan();
+        return outcome;
+    }
+
+    // An axis has ended its part of the step: its job's final output, or Enabled following Enable.
+    bool AxisFinished(const AxisJob& job) {
+        auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
+        if (job.HasJob()) return fb->DONE.value || fb->ERROR.value || fb->COMMANDABORTED.value;
+        return (fb->ENABLED.value != 0) == job.enable.value_or(false);
+    }
+
+    std::vector<AxisOutcome> RunAxes(const AxesStep& step) {
+        for (const auto& job : step.jobs) {
+            auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
+            if (job.enable) fb->ENABLE.value = *job.enable ? TRUE : FALSE;
+            if (!job.HasJob()) continue;
+            fb->COMMAND.value = AxisCommand(job.command);
+            fb->POSITION.value = static_cast<float>(job.position);
+            fb->VELOCITY.value = static_cast<UINT>(job.velocity);
+            fb->ACCELERATION.value = static_cast<UINT>(job.acceleration);
+            fb->CONDITION.value = MoveCondition(job.condition);
+            fb->TIMEOUT.value = ToTime(job.timeoutMs);
+            fb->EXECUTE.value = TRUE;
+        }
+        Scan();
+        const std::int64_t edgeScan = plc_.Task().ScanCount();
+        std::vector<AxisOutcome> outcomes(step.jobs.size());
+        std::vector<std::int64_t> limits;
+        for (std::size_t i = 0; i < step.jobs.size(); ++i) {
+            outcomes[i].axis = step.jobs[i].axis;
+            outcomes[i].hasJob = step.jobs[i].HasJob();
+            outcomes[i].edgeScan = edgeScan;
+            limits.push_back(edgeScan + step.jobs[i].maxMs / scenario_.timing.plcCycleMs + 1);
+        }
+        // Every axis's outputs are taken in the scan its part ends; the step ends when all have.
+        for (;;) {
+            bool open = false;
+            for (std::size_t i = 0; i < step.jobs.size(); ++i) {
+                AxisOutcome& outcome = outcomes[i];
+                if (outcome.endScan != 0) continue;
+                const bool ended = AxisFinished(step.jobs[i]);
+                if (ended || plc_.Task().ScanCount() >= limits[i]) {
+                    Take(step.jobs[i].axis, ended, outcome);
+                } else {
+                    open = true;
+                }
+            }
+            if (!open) break;
+            Scan();
+        }
+        for (const auto& job : step.jobs) axes_[static_cast<std::size_t>(job.axis - 1)]->EXECUTE.value = FALSE;
+        Scan();
+        return outcomes;
+    }
+
+    void Take(int axis, bool finished, AxisOutcome& outcome) {
+        auto& fb = axes_[static_cast<std::size_t>(axis - 1)];
+        outcome.finished = finished;
+        outcome.done = fb->DONE.value != 0;
+        outcome.error = fb->ERROR.value != 0;
+        outcome.aborted = fb->COMMANDABORTED.value != 0;
+        outcome.errorId = static_cast<std::uint16_t>(fb->ERRORID.value);
+        outcome.enabled = fb->ENABLED.value != 0;
+        outcome.referenced = fb->REFERENCED.value != 0;
+        outcome.position = fb->ACTUALPOSITION.value;
+        outcome.endScan = plc_.Task().ScanCount();
+        outcome.endTime = plc_.Now();
+    }
+
     void Inject(const FaultStep& fault) {
         const auto now = plc_.Now();
         if (fault.kind == FaultKind::kPowerCycle) {
@@ -138,7 +316,10 @@ private:
 
     const Scenario& scenario_;
     RunObserver& observer_;
-    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);  // before plc_, whose programs refer to it
+    // The FBs come before plc_, whose programs refer to them.
+    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
+    pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
     pac::test::PacPlcBench plc_;
 };
 
@@ -148,6 +329,20 @@ std::size_t RunReport::Commands() const {
     std::size_t commands = 0;
     for (const auto& step : steps) commands += step.outcome ? 1 : 0;
     return commands;
+}
+
+std::size_t RunReport::Requests() const {
+    std::size_t requests = 0;
+    for (const auto& step : steps) requests += step.request ? 1 : 0;
+    return requests;
+}
+
+std::size_t RunReport::AxisJobs() const {
+    std::size_t jobs = 0;
+    for (const auto& step : steps) {
+        for (const auto& axis : step.axes) jobs += axis.hasJob ? 1 : 0;
+    }
+    return jobs;
 }
 
 std::vector<std::size_t> RunReport::FailedSteps() const {

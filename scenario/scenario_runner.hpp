@@ -1,7 +1,9 @@
 // Runs a Scenario against the simulated PA-CONTROL: one FB_PAC_Cmd of the library on the CMD
 // interface of a PLC task (pac::test::PacPlcBench: simulated clock, bus with latency and jitter, the
-// controller at its own cycle). Commands raise Execute and hold it until Done or Error, then drop it
-// for one scan; faults act between two scans; waits scan. An observer sees every scan and step.
+// controller at its own cycle), one FB_PAC_Ctrl on the CTRL interface and one FB_PAC_Axis on each
+// axis module where the scenario has them. Commands, requests and axis jobs raise Execute and hold
+// it until the job ends, then drop it for one scan; faults act between two scans; waits scan. An
+// observer sees every scan and step.
 #pragma once
 
 #include <chrono>
@@ -12,11 +14,39 @@
 #include <vector>
 
 #include "pac/sim/image8.hpp"
+#include "pac/sim/process_image.hpp"
 #include "scenario.hpp"
 
 namespace pac::scenario {
 
-// The CMD interface and FB_PAC_Cmd after one scan.
+// The CTRL interface and FB_PAC_Ctrl after one scan.
+struct CtrlSample {
+    pac::sim::Image8 toPac{};
+    pac::sim::Image8 fromPac{};
+    bool execute = false;
+    bool busy = false;
+    bool done = false;
+    bool error = false;
+    std::uint16_t errorId = 0;
+};
+
+// One axis module and its FB_PAC_Axis after one scan.
+struct AxisSample {
+    int axis = 1;
+    pac::sim::Image12 toPac{};
+    pac::sim::Image12 fromPac{};
+    bool enable = false;
+    bool execute = false;
+    bool busy = false;
+    bool done = false;
+    bool error = false;
+    bool aborted = false;
+    std::uint16_t errorId = 0;
+    float actualPosition = 0.0F;
+    bool integerMode = false;  // how the module's positions are coded
+};
+
+// The modules and their FBs after one scan.
 struct ScanSample {
     std::chrono::nanoseconds time{0};
     std::int64_t scan = 0;
@@ -28,6 +58,8 @@ struct ScanSample {
     bool error = false;
     std::uint16_t errorId = 0;
     std::uint32_t ackData = 0;
+    std::optional<CtrlSample> ctrl;  // where the scenario has the CTRL interface
+    std::vector<AxisSample> axes;    // one per axis module
 };
 
 // How one command ended.
@@ -43,9 +75,29 @@ struct CommandOutcome {
     std::chrono::nanoseconds endTime{0};
 };
 
+// How one axis of an axes step ended: its job's final outputs, or, without a job, Enabled following
+// Enable.
+struct AxisOutcome {
+    int axis = 1;
+    bool hasJob = false;
+    bool finished = false;  // the job ended (Done, Error, CommandAborted), or Enabled = Enable, within max_ms
+    bool done = false;
+    bool error = false;
+    bool aborted = false;
+    std::uint16_t errorId = 0;
+    bool enabled = false;
+    bool referenced = false;
+    double position = 0.0;
+    std::int64_t edgeScan = 0;
+    std::int64_t endScan = 0;
+    std::chrono::nanoseconds endTime{0};
+};
+
 struct StepReport {
     std::size_t index = 0;                  // into Scenario::steps
-    std::optional<CommandOutcome> outcome;  // command steps only
+    std::optional<CommandOutcome> outcome;  // command steps
+    std::optional<CommandOutcome> request;  // ctrl steps (AckData unused)
+    std::vector<AxisOutcome> axes;          // axes steps
     std::vector<std::string> failures;      // expectations not met
     bool Passed() const { return failures.empty(); }
 };
@@ -53,7 +105,9 @@ struct StepReport {
 struct RunReport {
     std::vector<StepReport> steps;
 
-    std::size_t Commands() const;
+    std::size_t Commands() const;   // command steps run
+    std::size_t Requests() const;   // ctrl steps run
+    std::size_t AxisJobs() const;   // axis jobs run (an axis that only changed Enable is not one)
     std::vector<std::size_t> FailedSteps() const;  // indices into Scenario::steps
     bool Passed() const { return FailedSteps().empty(); }
 };

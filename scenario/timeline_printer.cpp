@@ -25,9 +25,33 @@ std::string MsNumber(std::chrono::nanoseconds t) {
 
 std::string Ms(std::chrono::nanoseconds t) { return MsNumber(t) + " ms"; }
 
-bool SameInterface(const ScanSample& a, const ScanSample& b) {
+bool SameCmd(const ScanSample& a, const ScanSample& b) {
     return a.toPac == b.toPac && a.fromPac == b.fromPac && a.execute == b.execute && a.busy == b.busy &&
            a.done == b.done && a.error == b.error && a.errorId == b.errorId && a.ackData == b.ackData;
+}
+
+bool SameCtrl(const CtrlSample& a, const CtrlSample& b) {
+    return a.toPac == b.toPac && a.fromPac == b.fromPac && a.execute == b.execute && a.busy == b.busy &&
+           a.done == b.done && a.error == b.error && a.errorId == b.errorId;
+}
+
+bool SameAxis(const AxisSample& a, const AxisSample& b) {
+    return a.toPac == b.toPac && a.fromPac == b.fromPac && a.enable == b.enable && a.execute == b.execute &&
+           a.busy == b.busy && a.done == b.done && a.error == b.error && a.aborted == b.aborted &&
+           a.errorId == b.errorId;
+}
+
+std::uint16_t Word(std::uint8_t high, std::uint8_t low) { return static_cast<std::uint16_t>(high << 8 | low); }
+
+// A position field of an axis module (2.7.7, 2.7.8): IEEE REAL, or DINT x 1000 in integer format (2.5.3).
+std::string PositionText(std::uint32_t bits, bool integerMode) {
+    char text[32];
+    if (integerMode) {
+        std::snprintf(text, sizeof text, "%.3f", static_cast<double>(static_cast<std::int32_t>(bits)) / 1000.0);
+    } else {
+        std::snprintf(text, sizeof text, "%.3f", static_cast<double>(pac::sim::BitsToFloat(bits)));
+    }
+    return text;
 }
 
 std::string Plural(long long n, const char* one, const char* many) {
@@ -75,24 +99,73 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
         add("R" + std::to_string(n) + " = " + DwordText(pac::sim::FloatToBits(value), true));
     }
     for (const auto& [n, value] : setup.inputs) add("input " + std::to_string(n) + " = " + (value ? "1" : "0"));
+    for (const auto& [n, value] : setup.systemParameters) {
+        add("system parameter " + std::to_string(n) + " = " + std::to_string(value));
+    }
     out_ << "  controller: " << (items.empty() ? "power-on state" : items) << "\n";
-    out_ << "  one FB_PAC_Cmd on the CMD interface; a line for each scan in which the interface or the FB's outputs"
-            " changed\n\n";
+    const Modules& m = scenario.modules;
+    out_ << "  modules: CMD";
+    if (m.ctrl) out_ << ", CTRL";
+    if (m.axes > 0) out_ << ", " << Plural(m.axes, "axis module", "axis modules");
+    out_ << "; one FB_PAC_Cmd on the CMD interface";
+    if (m.ctrl) out_ << ", FB_PAC_Ctrl on the CTRL interface";
+    if (m.axes > 0) out_ << ", an FB_PAC_Axis on each axis module";
+    out_ << "\n  a line for each scan in which the step's module or its FB's outputs changed\n\n";
+    view_ = View::kCmd;
+    viewAxes_.clear();
+    PrintColumns();
+}
+
+void TimelinePrinter::SetView(View view, std::vector<int> axes) {
+    if (view == view_ && axes == viewAxes_) return;
+    view_ = view;
+    viewAxes_ = std::move(axes);
+    last_.reset();  // the first scan of a new view is always shown
     PrintColumns();
 }
 
 void TimelinePrinter::PrintColumns() {
-    out_ << "  t [ms]   scan | ToPac (PLC -> PAC)      | FromPac (PAC -> PLC)    | SEND RF KF BF Status |"
-            " Execute Busy Done Error ErrorID AckData\n";
+    switch (view_) {
+        case View::kCmd:
+            out_ << "  t [ms]   scan | ToPac (PLC -> PAC)      | FromPac (PAC -> PLC)    | SEND RF KF BF Status |"
+                    " Execute Busy Done Error ErrorID AckData\n";
+            break;
+        case View::kCtrl:
+            out_ << "  t [ms]   scan | CTRL ToPac              | CTRL FromPac            | control status  SysErrNo |"
+                    " Rdy Bat Err AuA AuS OnA OnS Int | Execute Busy Done Error ErrorID\n";
+            break;
+        case View::kAxes:
+            out_ << "  t [ms]   scan | axis | control     acc  vel   position | status      CmdErr AxErr   position |"
+                    " Enable Execute Busy Done Error Aborted ErrorID\n";
+            break;
+    }
 }
 
 void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chrono::nanoseconds now) {
+    std::visit(
+        [this](const auto& action) {
+            using Action = std::decay_t<decltype(action)>;
+            if constexpr (std::is_same_v<Action, CommandStep>) {
+                SetView(View::kCmd, {});
+            } else if constexpr (std::is_same_v<Action, CtrlStep>) {
+                SetView(View::kCtrl, {});
+            } else if constexpr (std::is_same_v<Action, AxesStep>) {
+                std::vector<int> axes;
+                for (const auto& job : action.jobs) axes.push_back(job.axis);
+                SetView(View::kAxes, axes);
+            }
+        },
+        step.action);
     out_ << "\nstep " << index + 1 << " at " << Ms(now) << ": ";
     std::visit(
         [this](const auto& action) {
             using Action = std::decay_t<decltype(action)>;
             if constexpr (std::is_same_v<Action, CommandStep>) {
                 PrintCommand(action);
+            } else if constexpr (std::is_same_v<Action, CtrlStep>) {
+                PrintCtrl(action);
+            } else if constexpr (std::is_same_v<Action, AxesStep>) {
+                PrintAxes(action);
             } else if constexpr (std::is_same_v<Action, FaultStep>) {
                 PrintFault(action);
             } else {
@@ -114,6 +187,25 @@ void TimelinePrinter::PrintCommand(const CommandStep& command) {
     if (command.endTimeoutMs != defaults.endTimeoutMs) out_ << ", EndTimeout " << command.endTimeoutMs << " ms";
 }
 
+void TimelinePrinter::PrintCtrl(const CtrlStep& step) {
+    out_ << "FB_PAC_Ctrl " << step.request << ", IntegerMode " << (step.integerMode ? "TRUE" : "FALSE");
+    if (step.timeoutMs != CtrlStep{}.timeoutMs) out_ << ", Timeout " << step.timeoutMs << " ms";
+}
+
+void TimelinePrinter::PrintAxes(const AxesStep& step) {
+    for (std::size_t i = 0; i < step.jobs.size(); ++i) {
+        const AxisJob& job = step.jobs[i];
+        out_ << (i == 0 ? "" : "; ") << "axis " << job.axis << ":";
+        if (job.enable) out_ << " Enable " << (*job.enable ? "TRUE" : "FALSE");
+        if (!job.HasJob()) continue;
+        char position[32];
+        std::snprintf(position, sizeof position, "%g", job.position);
+        out_ << (job.enable ? "," : "") << " " << job.command << " Position " << position << ", Velocity "
+             << job.velocity << ", Acceleration " << job.acceleration;
+        if (job.condition != "PAC_COND_NONE") out_ << ", " << job.condition;
+    }
+}
+
 void TimelinePrinter::PrintFault(const FaultStep& fault) {
     switch (fault.kind) {
         case FaultKind::kPowerCycle:
@@ -124,7 +216,7 @@ void TimelinePrinter::PrintFault(const FaultStep& fault) {
             out_ << "freeze " << LinkText(fault.link) << ": the reader keeps seeing the last image";
             break;
         case FaultKind::kZeroLink:
-            out_ << "zero " << LinkText(fault.link) << ": the reader sees 8 zero bytes";
+            out_ << "zero " << LinkText(fault.link) << ": the reader sees zero bytes";
             break;
         case FaultKind::kThawLink:
             out_ << "thaw " << LinkText(fault.link) << ": the newest image gets through again";
@@ -132,9 +224,37 @@ void TimelinePrinter::PrintFault(const FaultStep& fault) {
     }
 }
 
+bool TimelinePrinter::Changed(const ScanSample& s) const {
+    if (!last_) return true;
+    switch (view_) {
+        case View::kCmd: return !SameCmd(*last_, s);
+        case View::kCtrl: return !(last_->ctrl && s.ctrl && SameCtrl(*last_->ctrl, *s.ctrl));
+        case View::kAxes:
+            for (int axis : viewAxes_) {
+                const auto k = static_cast<std::size_t>(axis - 1);
+                if (k >= s.axes.size() || k >= last_->axes.size() || !SameAxis(last_->axes[k], s.axes[k])) return true;
+            }
+            return false;
+    }
+    return true;
+}
+
 void TimelinePrinter::OnScan(const ScanSample& s) {
-    if (last_ && SameInterface(*last_, s)) return;
+    if (!Changed(s)) return;
     last_ = s;
+    switch (view_) {
+        case View::kCmd: PrintCmdLine(s); break;
+        case View::kCtrl: PrintCtrlLine(s); break;
+        case View::kAxes:
+            for (int axis : viewAxes_) {
+                const auto k = static_cast<std::size_t>(axis - 1);
+                if (k < s.axes.size()) PrintAxisLine(s, s.axes[k]);
+            }
+            break;
+    }
+}
+
+void TimelinePrinter::PrintCmdLine(const ScanSample& s) {
     const auto master = pac::sim::MasterFrame::Decode(s.toPac);
     const auto reply = pac::sim::ReplyFrame::Decode(s.fromPac);
     char line[256];
@@ -146,11 +266,65 @@ void TimelinePrinter::OnScan(const ScanSample& s) {
     out_ << line;
 }
 
+// Control word 2.5.1; status word and system error number 2.5.2 (docs/fb/FB_PAC_Ctrl.md).
+void TimelinePrinter::PrintCtrlLine(const ScanSample& s) {
+    if (!s.ctrl) return;
+    const CtrlSample& c = *s.ctrl;
+    const std::uint16_t control = Word(c.toPac[0], c.toPac[1]);
+    const std::uint16_t status = Word(c.fromPac[0], c.fromPac[1]);
+    auto bit = [status](int n) { return (status >> n) & 1; };
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "%8s %6lld | %s | %s | %s %s %8u | %3d %3d %3d %3d %3d %3d %3d %3d | %7d %4d %4d %5d %7s\n",
+                  MsNumber(s.time).c_str(), static_cast<long long>(s.scan), pac::sim::ToHex(c.toPac).c_str(),
+                  pac::sim::ToHex(c.fromPac).c_str(), Hex4(control).c_str(), Hex4(status).c_str(),
+                  static_cast<unsigned>(Word(c.fromPac[4], c.fromPac[5])), bit(0), bit(1), bit(2), bit(8), bit(9),
+                  bit(10), bit(11), bit(15), c.execute, c.busy, c.done, c.error, ErrorIdText(c.errorId).c_str());
+    out_ << line;
+}
+
+// Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
+// error number, target / current position.
+void TimelinePrinter::PrintAxisLine(const ScanSample& s, const AxisSample& a) {
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "%8s %6lld | %4d | %s %4u %4u %10s | %s %6u %5u %10s | %6d %7d %4d %4d %5d %7d %7s\n",
+                  MsNumber(s.time).c_str(), static_cast<long long>(s.scan), a.axis,
+                  Hex8(pac::sim::ReadDword(a.toPac, 0)).c_str(), static_cast<unsigned>(pac::sim::ReadWordAt(a.toPac, 4)),
+                  static_cast<unsigned>(pac::sim::ReadWordAt(a.toPac, 6)),
+                  PositionText(pac::sim::ReadDword(a.toPac, 8), a.integerMode).c_str(),
+                  Hex8(pac::sim::ReadDword(a.fromPac, 0)).c_str(),
+                  static_cast<unsigned>(pac::sim::ReadWordAt(a.fromPac, 4)),
+                  static_cast<unsigned>(pac::sim::ReadWordAt(a.fromPac, 6)),
+                  PositionText(pac::sim::ReadDword(a.fromPac, 8), a.integerMode).c_str(), a.enable, a.execute, a.busy,
+                  a.done, a.error, a.aborted, ErrorIdText(a.errorId).c_str());
+    out_ << line;
+}
+
 void TimelinePrinter::OnStepEnd(const StepReport& report) {
-    if (!report.outcome) return;
-    const auto& command = std::get<CommandStep>(scenario_->steps[report.index].action);
-    PrintOutcome(command, *report.outcome);
-    if (command.expect.Empty() && report.Passed()) {
+    const Step& step = scenario_->steps[report.index];
+    if (report.outcome) {
+        const auto& command = std::get<CommandStep>(step.action);
+        const bool asReal = command.data.isReal || (command.expect.ackData && command.expect.ackData->isReal);
+        PrintOutcome(*report.outcome, true, asReal);
+        PrintVerdict(command.expect.Empty(), report);
+    } else if (report.request) {
+        PrintOutcome(*report.request, false, false);
+        PrintVerdict(std::get<CtrlStep>(step.action).expect.Empty(), report);
+    } else if (!report.axes.empty()) {
+        const auto& axes = std::get<AxesStep>(step.action);
+        bool nothing = true;
+        for (std::size_t i = 0; i < axes.jobs.size(); ++i) {
+            PrintAxisOutcome(axes.jobs[i], report.axes[i]);
+            nothing = nothing && axes.jobs[i].expect.Empty();
+        }
+        out_ << "  => axes";
+        PrintVerdict(nothing, report);
+    }
+}
+
+void TimelinePrinter::PrintVerdict(bool expectedNothing, const StepReport& report) {
+    if (expectedNothing && report.Passed()) {
         out_ << " (nothing expected)\n";
     } else if (report.Passed()) {
         out_ << ": as expected\n";
@@ -161,7 +335,7 @@ void TimelinePrinter::OnStepEnd(const StepReport& report) {
 }
 
 // "  => Done in scan 36 (72 ms), 3 scans after the Execute edge; AckData 333 (16#0000014D)"
-void TimelinePrinter::PrintOutcome(const CommandStep& command, const CommandOutcome& outcome) {
+void TimelinePrinter::PrintOutcome(const CommandOutcome& outcome, bool showAckData, bool ackAsReal) {
     out_ << "  => ";
     const auto scans = outcome.endScan - outcome.edgeScan;
     if (!outcome.finished) {
@@ -175,14 +349,41 @@ void TimelinePrinter::PrintOutcome(const CommandStep& command, const CommandOutc
         out_ << "; ErrorID " << ErrorIdText(outcome.errorId) << (name.empty() ? "" : " " + name) << " \""
              << ErrorText(outcome.errorId) << "\"";
     }
-    const bool asReal = command.data.isReal || (command.expect.ackData && command.expect.ackData->isReal);
-    out_ << "; AckData " << DwordText(outcome.ackData, asReal);
+    if (showAckData) out_ << "; AckData " << DwordText(outcome.ackData, ackAsReal);
+}
+
+// "  => axis 1: Done in scan 80 (160 ms), 40 scans after the Execute edge; position 100.000, referenced"
+void TimelinePrinter::PrintAxisOutcome(const AxisJob& job, const AxisOutcome& outcome) {
+    out_ << "  => axis " << outcome.axis << ": ";
+    const auto scans = outcome.endScan - outcome.edgeScan;
+    if (!outcome.finished) {
+        out_ << (job.HasJob() ? "the job did not end" : "Enabled did not follow Enable") << " within "
+             << Plural(scans, "scan", "scans") << "\n";
+        return;
+    }
+    if (job.HasJob()) {
+        out_ << (outcome.done ? "Done" : outcome.error ? "Error" : "CommandAborted");
+    } else {
+        out_ << (outcome.enabled ? "Enabled" : "not Enabled");
+    }
+    out_ << " in scan " << outcome.endScan << " (" << Ms(outcome.endTime) << "), " << Plural(scans, "scan", "scans")
+         << " after the step began";
+    if (outcome.error) {
+        const std::string name = names_.ErrorName(outcome.errorId);
+        out_ << "; ErrorID " << ErrorIdText(outcome.errorId) << (name.empty() ? "" : " " + name);
+    }
+    char position[48];
+    std::snprintf(position, sizeof position, "; position %.3f", outcome.position);
+    out_ << position << (outcome.referenced ? ", referenced" : ", not referenced") << "\n";
 }
 
 void TimelinePrinter::OnEnd(const RunReport& report) {
     const auto failed = report.FailedSteps();
     out_ << "\nResult: " << Plural(static_cast<long long>(report.steps.size()), "step", "steps") << ", "
-         << Plural(static_cast<long long>(report.Commands()), "command", "commands") << ": ";
+         << Plural(static_cast<long long>(report.Commands()), "command", "commands");
+    if (report.Requests() > 0) out_ << ", " << Plural(static_cast<long long>(report.Requests()), "mode request", "mode requests");
+    if (report.AxisJobs() > 0) out_ << ", " << Plural(static_cast<long long>(report.AxisJobs()), "axis job", "axis jobs");
+    out_ << ": ";
     if (failed.empty()) {
         out_ << "all expectations met\n";
         return;

@@ -163,13 +163,14 @@ TEST(ScenarioLoader, RefusesADuplicateKey) {
 
 TEST(ScenarioLoader, RefusesUnknownKeys) {
     EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}], "step": 1})"),
-              R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "controller" or "steps"))");
+              R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "modules", "controller" or )"
+              R"("steps"))");
     EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle": 2}, "steps": [{"wait_ms": 1}]})"),
               R"($.timing.plc_cycle: unknown key "plc_cycle" (timing has "plc_cycle_ms", "pac_cycle_ms", )"
               R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"n_register": {}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.n_register: unknown key "n_register" (controller has "operating_status", )"
-              R"("n_registers", "r_registers" or "inputs"))");
+              R"("n_registers", "r_registers", "inputs" or "system_parameters"))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "parm": 3})")),
               R"($.steps[0].parm: unknown key "parm" (a command step has "command", "param", "data", "timeout_ms", )"
               R"("end_timeout_ms", "expect" or "note"))");
@@ -185,7 +186,7 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
     // Without any step kind, a misspelt key is the likelier mistake.
     EXPECT_EQ(Refusal(WithStep(R"({"comand": "0906"})")),
               R"($.steps[0].comand: unknown key "comand" (a step has "command", "param", "data", "timeout_ms", )"
-              R"("end_timeout_ms", "expect", "note", "fault", "link" or "wait_ms"))");
+              R"("end_timeout_ms", "expect", "note", "ctrl", "integer_mode", "axes", "fault", "link" or "wait_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"inputs": {"I5": true}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.inputs.I5: unknown key "I5" (the keys are input numbers 1..1024))");
 }
@@ -193,11 +194,11 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
 TEST(ScenarioLoader, RefusesMissingKeys) {
     EXPECT_EQ(Refusal(R"({"name": "x"})"), R"($: missing key "steps" (a scenario needs it))");
     EXPECT_EQ(Refusal(WithStep(R"({"note": "what?"})")),
-              R"($.steps[0]: missing key: a step needs one of "command", "fault" or "wait_ms")");
+              R"($.steps[0]: missing key: a step needs one of "command", "ctrl", "axes", "fault" or "wait_ms")");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0907", "data": {}})")),
               R"($.steps[0].data: missing key "real" (a REAL value needs it))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "wait_ms": 5})")),
-              R"($.steps[0]: a step has exactly one of "command", "fault" or "wait_ms", this one has "command" and )"
+              R"($.steps[0]: a step has exactly one of "command", "ctrl", "axes", "fault" or "wait_ms", this one has "command" and )"
               R"("wait_ms")");
 }
 
@@ -335,3 +336,69 @@ TEST(ScenarioLoader, NeverCrashesOnDamagedFiles) {
 }
 
 }  // namespace
+
+TEST(ScenarioLoader, ReadsModulesCtrlAndAxesSteps) {
+    const Scenario s = Load(R"({
+      "modules": {"ctrl": true, "axes": 2},
+      "controller": {"system_parameters": {"4": 1}},
+      "steps": [
+        {"ctrl": "PAC_REQ_START_ONLINE", "integer_mode": true, "timeout_ms": 500, "expect": {"done": true}},
+        {"axes": [{"axis": 2, "enable": true},
+                  {"axis": 1, "command": "PAC_AX_MOVE_RELATIVE", "position": -12.5, "velocity": 500,
+                   "acceleration": 2000, "condition": "PAC_COND_WHILE_INPUT_0", "max_ms": 9000,
+                   "expect": {"done": true, "position": -12.5, "position_tolerance": 0.01, "referenced": true}}]}
+      ]})");
+    EXPECT_TRUE(s.modules.ctrl);
+    EXPECT_EQ(s.modules.axes, 2);
+    EXPECT_EQ(s.controller.systemParameters.at(4), 1);
+    const auto& ctrl = std::get<pac::scenario::CtrlStep>(s.steps[0].action);
+    EXPECT_EQ(ctrl.request, "PAC_REQ_START_ONLINE");
+    EXPECT_TRUE(ctrl.integerMode);
+    EXPECT_EQ(ctrl.timeoutMs, 500);
+    EXPECT_EQ(ctrl.expect.done, true);
+    const auto& axes = std::get<pac::scenario::AxesStep>(s.steps[1].action);
+    ASSERT_EQ(axes.jobs.size(), 2u);
+    EXPECT_EQ(axes.jobs[0].axis, 2);
+    EXPECT_EQ(axes.jobs[0].enable, true);
+    EXPECT_FALSE(axes.jobs[0].HasJob());
+    const auto& move = axes.jobs[1];
+    EXPECT_EQ(move.command, "PAC_AX_MOVE_RELATIVE");
+    EXPECT_FALSE(move.enable.has_value());
+    EXPECT_DOUBLE_EQ(move.position, -12.5);
+    EXPECT_EQ(move.velocity, 500);
+    EXPECT_EQ(move.acceleration, 2000);
+    EXPECT_EQ(move.condition, "PAC_COND_WHILE_INPUT_0");
+    EXPECT_EQ(move.maxMs, 9000);
+    EXPECT_EQ(move.expect.position, -12.5);
+    EXPECT_DOUBLE_EQ(move.expect.positionTolerance, 0.01);
+    EXPECT_EQ(move.expect.referenced, true);
+}
+
+TEST(ScenarioLoader, RefusesModuleStepsItCannotRun) {
+    EXPECT_EQ(Refusal(R"({"modules": {"axes": 1}, "steps": [{"wait_ms": 1}]})"),
+              R"($.modules.axes: axis modules need the CTRL interface (extensions 2..9 come after it): set "ctrl": true)");
+    EXPECT_EQ(Refusal(R"({"modules": {"ctrl": true, "axes": 9}, "steps": [{"wait_ms": 1}]})"),
+              "$.modules.axes: out of range: 9 is not in 0..8");
+    EXPECT_EQ(Refusal(WithStep(R"({"ctrl": "PAC_REQ_STOP"})")),
+              R"($.steps[0].ctrl: a ctrl step needs the CTRL interface: set "modules": {"ctrl": true})");
+    EXPECT_EQ(Refusal(WithStep(R"({"axes": [{"axis": 1, "enable": true}]})")),
+              R"($.steps[0].axes: an axes step needs axis modules: set "modules": {"ctrl": true, "axes": 1..8})");
+    const std::string modules = R"({"modules": {"ctrl": true, "axes": 2}, "steps": [)";
+    EXPECT_EQ(Refusal(modules + R"({"ctrl": "START_ONLINE"}]})"),
+              R"($.steps[0].ctrl: unknown request "START_ONLINE" (one of "PAC_REQ_NONE", "PAC_REQ_START_ONLINE", )"
+              R"("PAC_REQ_START_AUTOMATIC", "PAC_REQ_STOP", "PAC_REQ_CANCEL" or "PAC_REQ_RESET_ERROR"))");
+    EXPECT_EQ(Refusal(modules + R"({"ctrl": "PAC_REQ_STOP", "expect": {"ack_data": 1}}]})"),
+              R"($.steps[0].expect.ack_data: unknown key "ack_data" (a ctrl expectation has "done", "error" or "error_id"))");
+    EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 3, "enable": true}]}]})"),
+              "$.steps[0].axes[0].axis: out of range: 3 is not in 1..2");
+    EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1}]}]})"),
+              R"($.steps[0].axes[0]: missing key: an axis job needs "enable", "command" or both)");
+    EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1, "enable": true}, {"axis": 1, "enable": false}]}]})"),
+              "$.steps[0].axes[1].axis: axis 1 appears twice in this step (one FB_PAC_Axis per axis)");
+    EXPECT_EQ(Refusal(modules + R"({"axes": []}]})"), "$.steps[0].axes: out of range: an axes step needs at least one axis");
+    EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1, "command": "HOME"}]}]})").substr(0, 62),
+              R"($.steps[0].axes[0].command: unknown axis command "HOME" (one o)");
+    EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1, "command": "PAC_AX_HOME", "expect": {"done": true, "aborted": true}}]}]})"),
+              "$.steps[0].axes[0].expect: contradiction: at most one of done, error and aborted can be true "
+              "(FB_PAC_Axis's outputs are exclusive)");
+}

@@ -1,0 +1,43 @@
+// Reads the steps of the CTRL interface and the axis modules of a scenario (docs/scenario.md):
+//   {"ctrl": "PAC_REQ_START_ONLINE", "integer_mode": false, "timeout_ms": 10000, "expect": {...}}
+//   {"axes": [{"axis": 1, "enable": true, "command": "PAC_AX_HOME", "expect": {...}}, ...]}
+// Every refusal is a ScenarioError naming the JSONPath and the reason, like the rest of the loader.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "json_fields.hpp"
+#include "scenario.hpp"
+
+namespace pac::scenario {
+
+// The names a PLC programmer writes in ST, in their declaration order (st/types).
+extern const std::vector<std::string> kCtrlRequestNames;   // E_PAC_CtrlRequest
+extern const std::vector<std::string> kAxisCommandNames;   // E_PAC_AxisCommand
+extern const std::vector<std::string> kMoveConditionNames;  // E_PAC_MoveCondition
+
+// The position of `name` in `names`, or -1.
+int IndexOf(const std::vector<std::string>& names, const std::string& name);
+
+class ModuleStepReader {
+public:
+    using ErrorIdReader = std::function<std::uint16_t(const json::Json&, const std::string&)>;
+
+    // `modules`: what the scenario configured (a step on a module it lacks is refused).
+    ModuleStepReader(const Modules& modules, ErrorIdReader readErrorId)
+        : modules_(modules), readErrorId_(std::move(readErrorId)) {}
+
+    CtrlStep ReadCtrl(const json::Object& step) const;
+    AxesStep ReadAxes(const json::Object& step) const;
+
+private:
+    AxisJob ReadJob(const json::Json& value, const std::string& path) const;
+    AxisExpectation ReadAxisExpectation(const json::Json& value, const std::string& path) const;
+
+    const Modules& modules_;
+    ErrorIdReader readErrorId_;
+};
+
+}  // namespace pac::scenario
