@@ -124,8 +124,6 @@ private:
         }
     }
 
-    bool Finished() { return cmd_->DONE.value || cmd_->ERROR.value; }
-
     void Scan() {
         plc_.Scan();
         ScanSample sample;
@@ -171,12 +169,11 @@ private:
         observer_.OnScan(sample);
     }
 
-    // The most scans a command may take before the runner gives up on it: the FB's own bounds
-    // (Timeout, then EndTimeout), the bus both ways with its jitter, and a margin.
-    std::int64_t MaxScans(const CommandStep& command) const {
+    // The most scans a job whose FB bounds its own waits by `fbLimitMs` may take before the runner gives
+    // up on it: that bound, the bus both ways with its jitter, and a margin.
+    std::int64_t MaxScans(std::int64_t fbLimitMs) const {
         const Timing& t = scenario_.timing;
-        const std::int64_t ms = static_cast<std::int64_t>(command.timeoutMs) + command.endTimeoutMs + 2LL * t.jitterMs +
-                                2LL * t.pacCycleMs;
+        const std::int64_t ms = fbLimitMs + 2LL * t.jitterMs + 2LL * t.pacCycleMs;
         return ms / t.plcCycleMs + 2LL * t.latencyCycles + 10;
     }
 
@@ -186,47 +183,38 @@ private:
         cmd_->DATA.value = command.data.bits;
         cmd_->TIMEOUT.value = ToTime(command.timeoutMs);
         cmd_->ENDTIMEOUT.value = ToTime(command.endTimeoutMs);
-        cmd_->EXECUTE.value = TRUE;
-        CommandOutcome outcome;
-        Scan();
-        outcome.edgeScan = plc_.Task().ScanCount();
-        outcome.edgeTime = plc_.Now();
-        const std::int64_t maxScans = MaxScans(command);
-        for (std::int64_t scans = 0; !Finished() && scans < maxScans; ++scans) Scan();
-        outcome.finished = Finished();
-        outcome.done = cmd_->DONE.value != 0;
-        outcome.error = cmd_->ERROR.value != 0;
-        outcome.errorId = static_cast<std::uint16_t>(cmd_->ERRORID.value);
-        outcome.ackData = static_cast<std::uint32_t>(cmd_->ACKDATA.value);
-        outcome.endScan = plc_.Task().ScanCount();
-        outcome.endTime = plc_.Now();
-        cmd_->EXECUTE.value = FALSE;  // PLCopen: Done / Error clear in the scan that sees Execute fall
-        Scan();
-        return outcome;
+        return RunToFinalOutput(cmd_, MaxScans(static_cast<std::int64_t>(command.timeoutMs) + command.endTimeoutMs),
+                                [this](CommandOutcome& outcome) {
+                                    outcome.ackData = static_cast<std::uint32_t>(cmd_->ACKDATA.value);
+                                });
     }
 
     CommandOutcome RunCtrl(const CtrlStep& step) {
         ctrl_->REQUEST.value = CtrlRequest(step.request);
         ctrl_->INTEGERMODE.value = step.integerMode ? TRUE : FALSE;
         ctrl_->TIMEOUT.value = ToTime(step.timeoutMs);
-        ctrl_->EXECUTE.value = TRUE;
+        return RunToFinalOutput(ctrl_, MaxScans(step.timeoutMs), [](CommandOutcome&) {});
+    }
+
+    // Raises Execute, scans until Done or Error (at most maxScans), takes the outputs of that scan,
+    // then drops Execute for one scan (PLCopen: Done / Error clear in the scan that sees it fall).
+    template <class Fb, class TakeMore>
+    CommandOutcome RunToFinalOutput(pac::FbInstance<Fb>& fb, std::int64_t maxScans, TakeMore takeMore) {
+        fb->EXECUTE.value = TRUE;
         CommandOutcome outcome;
         Scan();
         outcome.edgeScan = plc_.Task().ScanCount();
         outcome.edgeTime = plc_.Now();
-        const Timing& t = scenario_.timing;
-        const std::int64_t maxScans =
-            (static_cast<std::int64_t>(step.timeoutMs) + 2LL * t.jitterMs + 2LL * t.pacCycleMs) / t.plcCycleMs +
-            2LL * t.latencyCycles + 10;
-        auto finished = [this] { return ctrl_->DONE.value || ctrl_->ERROR.value; };
+        auto finished = [&fb] { return fb->DONE.value || fb->ERROR.value; };
         for (std::int64_t scans = 0; !finished() && scans < maxScans; ++scans) Scan();
         outcome.finished = finished();
-        outcome.done = ctrl_->DONE.value != 0;
-        outcome.error = ctrl_->ERROR.value != 0;
-        outcome.errorId = static_cast<std::uint16_t>(ctrl_->ERRORID.value);
+        outcome.done = fb->DONE.value != 0;
+        outcome.error = fb->ERROR.value != 0;
+        outcome.errorId = static_cast<std::uint16_t>(fb->ERRORID.value);
+        takeMore(outcome);
         outcome.endScan = plc_.Task().ScanCount();
         outcome.endTime = plc_.Now();
-        ctrl_->EXECUTE.value = FALSE;
+        fb->EXECUTE.value = FALSE;
         Scan();
         return outcome;
     }

@@ -65,16 +65,18 @@ float BitsToFloat(std::uint32_t bits) {
     return value;
 }
 
-std::string ToHex(const Image8& image) {
+std::string HexBytes(const std::uint8_t* bytes, std::size_t count) {
     static const char* const kDigits = "0123456789ABCDEF";
     std::string out;
-    for (std::size_t i = 0; i < image.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         if (i != 0) out += ' ';
-        out += kDigits[image[i] >> 4];
-        out += kDigits[image[i] & 0x0F];
+        out += kDigits[bytes[i] >> 4];
+        out += kDigits[bytes[i] & 0x0F];
     }
     return out;
 }
+
+std::string ToHex(const Image8& image) { return HexBytes(image.data(), image.size()); }
 
 Image8 FromHex(const std::string& text) {
     Image8 image{};

@@ -75,25 +75,15 @@ bool ProcessImage::AllZero() const {
     return std::all_of(bytes_.begin(), bytes_.end(), [](std::uint8_t b) { return b == 0; });
 }
 
-std::string ToHex(const ProcessImage& image) {
-    static const char* const kDigits = "0123456789ABCDEF";
-    std::string out;
-    for (std::size_t i = 0; i < image.Size(); ++i) {
-        if (i != 0) out += ' ';
-        out += kDigits[image[i] >> 4];
-        out += kDigits[image[i] & 0xF];
-    }
-    return out;
-}
+std::string ToHex(const ProcessImage& image) { return HexBytes(image.Bytes().data(), image.Size()); }
 
 std::string ToHex(const ProcessImage& image, const ModuleLayout& layout) {
-    std::string out = ToHex(ProcessImage(image.Cmd()));
+    const std::uint8_t* bytes = image.Bytes().data();
+    std::string out = HexBytes(bytes, std::min<std::size_t>(8, image.Size()));
     std::size_t offset = 8;
     auto append = [&](std::size_t length) {
         if (offset + length > image.Size()) return;
-        ProcessImage part(length);
-        for (std::size_t i = 0; i < length; ++i) part[i] = image[offset + i];
-        out += " | " + ToHex(part);
+        out += " | " + HexBytes(bytes + offset, length);
         offset += length;
     };
     if (layout.ctrl) append(8);

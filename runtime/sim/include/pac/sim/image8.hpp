@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -25,6 +26,8 @@ float BitsToFloat(std::uint32_t bits);
 
 // "00 00 00 01 00 01 A0 00": upper-case hex, one space between bytes, PAC byte 0 first.
 std::string ToHex(const Image8& image);
+// The same for any run of bytes.
+std::string HexBytes(const std::uint8_t* bytes, std::size_t count);
 // The reverse: 8 hex bytes, separated by single spaces or not at all; std::invalid_argument otherwise.
 Image8 FromHex(const std::string& text);
 
