@@ -1,6 +1,8 @@
 // A test bench for the simulated PA-CONTROL: a bus, a controller, and the master's side written by
 // hand. Exchange() is one step of simulated time: the master writes its image, the controller runs
 // one cycle, the master reads the reply; then time moves on by step_ (10 ms, the home-position cycle).
+// With a CTRL module in the bus layout (CtrlBus()), the master's image carries ctrlWord_ as the CTRL
+// control word (default: no request, every low-active bit held at 1).
 #pragma once
 
 #include <chrono>
@@ -12,8 +14,10 @@
 #include "pac/sim/bus.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
+#include "pac/sim/ctrl_interface.hpp"
 #include "pac/sim/image8.hpp"
 #include "pac/sim/pa_control.hpp"
+#include "pac/sim/process_image.hpp"
 
 namespace pac::sim::testing {
 
@@ -29,6 +33,13 @@ inline PaControlConfig BootingIn(std::chrono::nanoseconds bootTime) {
 // No boot delay, so the first cycle already answers in home position.
 inline PaControlConfig QuickConfig() { return BootingIn(0ns); }
 
+// A bus with the CMD and the CTRL module (16 bytes), no latency.
+inline BusConfig CtrlBus() {
+    BusConfig bus;
+    bus.layout = ModuleLayout{true, 0};
+    return bus;
+}
+
 // "41 20 00 00" for 10.0F: the dword of a REAL as the reply carries it.
 inline std::string RealHex(float value) {
     Image8 image{};
@@ -41,14 +52,26 @@ protected:
     explicit PacBench(PaControlConfig config = QuickConfig(), BusConfig bus = {})
         : bus_(bus), pac_(bus_, config) {}
 
-    // One step: master writes, controller cycles, master reads; returns the reply as hex.
+    // One step: master writes, controller cycles, master reads; returns the CMD reply as hex.
     std::string Exchange(const Image8& master) {
         master_ = master;
+        ProcessImage image(bus_.Layout().Bytes());
+        image.SetModule8(ModuleLayout::kCmdOffset, master);
+        if (bus_.Layout().ctrl) {
+            Image8 ctrl{};
+            WriteWord(ctrl, 0, ctrlWord_);
+            image.SetModule8(ModuleLayout::kCtrlOffset, ctrl);
+        }
+        return ToHex(ExchangeImage(image).Cmd());
+    }
+
+    // One step with the whole master image as given (e.g. all zero).
+    ProcessImage ExchangeImage(const ProcessImage& master) {
         bus_.MasterWrite(now_, master);
         pac_.Cycle(now_);
-        const Image8 reply = bus_.MasterRead(now_).Cmd();
+        reply_ = bus_.MasterRead(now_);
         now_ += step_;
-        return ToHex(reply);
+        return reply_;
     }
 
     // A step with the master image unchanged.
@@ -63,13 +86,32 @@ protected:
         return ReplyFrame::Decode(FromHex(Send(code, parameter, data)));
     }
 
-    // Stop input 1 defined and powered (5.2.1.3), then 0603: status 31.
-    void GoOnline() {
+    // Stop input 1 defined and powered (5.2.1.3), then 0603: ONLINE started (30) with BF = 0.
+    void StartOnline() {
         ASSERT_EQ(pac_.SystemParameters().Set(4, 1), ParameterTable::SetResult::kOk);
         pac_.Io().inputs.Set(1, true);
         const ReplyFrame reply = SendFrame(code::kStartOnline);
         ASSERT_FALSE(reply.commandErrorFlag) << "0603 failed with error " << reply.errorNumber;
+        ASSERT_EQ(reply.operatingStatus, 30);
+        ASSERT_FALSE(reply.endOfProcessing);
+    }
+    // StartOnline(), then one cycle later ONLINE (31) with BF = 1: two steps.
+    void GoOnline() {
+        StartOnline();
+        const ReplyFrame reply = ReplyFrame::Decode(FromHex(Idle()));
         ASSERT_EQ(reply.operatingStatus, 31);
+        ASSERT_TRUE(reply.endOfProcessing);
+    }
+
+    // The CTRL module of the last reply (CtrlBus() layout): status word, system error number.
+    std::uint16_t StatusWord() const { return ReadWord(reply_.Module8(ModuleLayout::kCtrlOffset), 0); }
+    std::uint16_t CtrlErrorNumber() const { return ReadWord(reply_.Module8(ModuleLayout::kCtrlOffset), 2); }
+    std::string CtrlHex() const { return ToHex(reply_.Module8(ModuleLayout::kCtrlOffset)); }
+    // One step with this control word (held from then on); returns the status word.
+    std::uint16_t Control(std::uint16_t word) {
+        ctrlWord_ = word;
+        Idle();
+        return StatusWord();
     }
 
     // "... 00 1F A0 00": the reply's status and flag bytes as the master sees them.
@@ -82,6 +124,8 @@ protected:
     std::chrono::nanoseconds step_{10ms};
     bool send_ = false;
     Image8 master_{};
+    std::uint16_t ctrlWord_ = ctrl::kNoRequest;
+    ProcessImage reply_;
 };
 
 }  // namespace pac::sim::testing

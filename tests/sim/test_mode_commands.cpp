@@ -1,4 +1,5 @@
-// Mode commands of manual 5.2.1 / 5.2.5 / 5.2.6.1: 0600, 0602, 0603, 0A41, 0A81 (minimal mode model).
+// Mode commands of manual 5.2.1 / 5.2.5 / 5.2.6.1: 0600, 0602, 0603, 0A41, 0A81 on the CMD interface
+// (the whole mode machine: test_mode_machine.cpp).
 #include <gtest/gtest.h>
 
 #include "sim_fixture.hpp"
@@ -15,24 +16,32 @@ TEST_F(ModeCommands, StartOnlineNeedsAPoweredExternalStopInput) {
     ASSERT_EQ(pac_.SystemParameters().Set(4, 3), ParameterTable::SetResult::kOk);
     EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 01 40 2C");
     pac_.Io().inputs.Set(3, true);
-    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 1F A0 00");  // ONLINE = 31 = 16#1F
+    // ONLINE started (30 = 16#1E) for one controller cycle, BF = 0; then ONLINE (31 = 16#1F), BF = 1.
+    EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 1E 80 00");
+    EXPECT_EQ(Idle(), "00 00 00 00 00 1F A0 00");
     EXPECT_EQ(pac_.OperatingStatus(), 31);
 }
 
 TEST_F(ModeCommands, StartOnlineWithoutTheExternalStopCheck) {
     PaControlConfig config = QuickConfig();
-    config.executor.requireExternalStop = false;
+    config.modes.requireExternalStop = false;
     Bus bus;
     PaControl pac(bus, config);
     bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
     pac.Cycle(0ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 1F A0 00");
+    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 1E 80 00");
+    pac.Cycle(10ms);
+    EXPECT_EQ(ToHex(bus.MasterRead(10ms)), "00 00 00 00 00 1F A0 00");
 }
 
 TEST_F(ModeCommands, StartAutoAndStopIt) {
-    EXPECT_EQ(Send(code::kStartAuto), "00 00 00 00 00 0B A0 00");  // 11
-    // No axis moves: "stopped" (15) at once.
-    EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 0F 20 00");
+    // AUTOMATIC started (10) for one cycle with BF = 0, then AUTOMATIC (11) and BF = 1.
+    EXPECT_EQ(Send(code::kStartAuto), "00 00 00 00 00 0A 80 00");
+    EXPECT_EQ(Idle(), "00 00 00 00 00 0B A0 00");
+    // No axis moves, so STOP recognised (12) passes at once: the STOP program (13) runs one cycle
+    // with BF = 0, then "stopped" (15) and BF = 1.
+    EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 0D 00 00");
+    EXPECT_EQ(Idle(), "00 00 00 00 00 0F 20 00");
     EXPECT_EQ(Send(code::kAbortAuto), "00 00 00 00 00 01 A0 00");
 }
 

@@ -103,14 +103,14 @@ TEST_F(PowerCycle, RetentionIsConfigurable) {
 
 TEST_F(PowerCycle, PowerCycleDuringAMoveStopsTheAxisAndDropsTheCommand) {
     now_ = 30ms;
-    GoOnline();                                                                     // 30 ms, SEND 1
-    EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 00 00");  // 40
-    Idle();                                                                         // 50 ms: 10.0
-    pac_.PowerCycle(55ms);
+    GoOnline();                                                                     // 30, 40 ms, SEND 1
+    EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 00 00");  // 50
+    Idle();                                                                         // 60 ms: 10.0
+    pac_.PowerCycle(65ms);
     EXPECT_FALSE(pac_.Axes().Motion(1).Moving());
     EXPECT_EQ(pac_.Axes().Motion(1).Position(), 15.0);
-    for (int i = 0; i < 3; ++i) Idle();                                              // 60..80 ms
-    // 90 ms: booted in home position; the master's SEND (0) equals RF (0): nothing outstanding.
+    for (int i = 0; i < 3; ++i) Idle();                                              // 70..90 ms
+    // 100 ms: booted in home position; the master's SEND (0) equals RF (0): nothing outstanding.
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");
 }
 

@@ -17,8 +17,6 @@ std::uint16_t LowWord(std::uint32_t data) { return static_cast<std::uint16_t>(da
 std::uint32_t Bit(bool value) { return value ? 1U : 0U; }
 std::uint32_t Real(double value) { return FloatToBits(static_cast<float>(value)); }
 
-bool ResetOnHome(std::uint16_t systemError) { return systemError >= 500 && systemError <= 999; }
-
 }  // namespace
 
 CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanoseconds now,
@@ -78,17 +76,10 @@ CommandResult CommandExecutor::Poll(const PendingCommand& pending, std::chrono::
             const LinearAxis& axis = state_.axes.Motion(pending.axis);
             return CommandResult{Real(axis.Position()), error::kNone, !axis.Moving()};
         }
-        case PendingCommand::Kind::kStopAll: {
-            const bool finished = !state_.axes.AnyMoving();
-            if (finished) {
-                if (state_.operatingStatus == status::kOnlineStopRecognized) {
-                    state_.operatingStatus = status::kOnlineStopped;
-                } else if (state_.operatingStatus == status::kAutoStopRecognized) {
-                    state_.operatingStatus = status::kAutoStopped;
-                }
-            }
-            return CommandResult{0, error::kNone, finished};
-        }
+        case PendingCommand::Kind::kModeChange:
+            // Ends when the status settles, whatever it settles on (a stop may turn into a
+            // malfunction, a start may be cancelled through the CTRL interface).
+            return CommandResult{0, error::kNone, !modes_.Transitional()};
         case PendingCommand::Kind::kNone:
             break;
     }
@@ -97,48 +88,25 @@ CommandResult CommandExecutor::Poll(const PendingCommand& pending, std::chrono::
 
 CommandResult CommandExecutor::ModeCommand(const MasterFrame& c, std::chrono::nanoseconds now,
                                            PendingCommand& pending) {
+    ModeRequestResult result = ModeRequestResult::kNotInThisStatus;
     switch (c.code) {
-        case code::kStop: {
-            // 5.2.1.1: stop the positionings; "stopped" (15 / 35) once all axes stand still.
-            const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
-            state_.axes.StopAll(now);
-            state_.operatingStatus = automatic ? status::kAutoStopRecognized : status::kOnlineStopRecognized;
-            pending = PendingCommand{PendingCommand::Kind::kStopAll, 0};
-            CommandResult result = Poll(pending, now);
-            if (result.finished) pending = PendingCommand{};
-            return result;
-        }
-        case code::kStartAuto:
-            state_.operatingStatus = status::kAuto;  // the AUTOMATIC mode machine comes later
-            return Ack(0);
-        case code::kStartOnline: {
-            if (options_.requireExternalStop) {
-                const auto stopInput = state_.systemParameters.IntValue(sysparam::kStopInput).value_or(0);
-                const auto& inputs = state_.elements.inputs;
-                if (stopInput == 0 || !inputs.Contains(stopInput) || !inputs.Get(stopInput)) {
-                    return Fail(error::kExternalStopNotDefined);
-                }
-            }
-            state_.axes.ApplyParametersToAll();
-            state_.operatingStatus = status::kOnline;
-            return Ack(0);
-        }
+        case code::kStop: result = modes_.Stop(now); break;
+        case code::kStartAuto: result = modes_.StartAutomatic(now); break;
+        case code::kStartOnline: result = modes_.StartOnline(now); break;
         case code::kAbortAuto:
-        case code::kAbortOnline:
-            LeaveToHome(now);
-            return Ack(0);
-        default:
-            return Fail(error::kUnknownCommand);
+        case code::kAbortOnline: result = modes_.Cancel(now); break;
+        default: return Fail(error::kUnknownCommand);
     }
-}
-
-void CommandExecutor::LeaveToHome(std::chrono::nanoseconds now) {
-    // 5.2.5.1 / 5.2.6.1: positioning stopped, current position taken over; ONLINE speed changes end
-    // (5.2.6.8); errors 500..999 are reset when going to home position (5.2.4.15).
-    state_.axes.HaltAll(now);
-    state_.axes.ApplyParametersToAll();
-    state_.operatingStatus = status::kHome;
-    if (ResetOnHome(state_.systemError)) state_.systemError = 0;
+    switch (result) {
+        case ModeRequestResult::kAccepted: break;
+        case ModeRequestResult::kSystemErrorPending: return Fail(error::kNotExecutable);
+        case ModeRequestResult::kNoExternalStop: return Fail(error::kExternalStopNotDefined);
+        default: return Fail(error::kInadmissibleCommand);
+    }
+    // 5.2.1: the acknowledgement shows the status the command leads to (11, 15, 31, 35), so the
+    // command is processing while the status is transitional (10, 12, 13, 16, 30, 32).
+    if (modes_.Transitional()) pending = PendingCommand{PendingCommand::Kind::kModeChange, 0};
+    return CommandResult{0, error::kNone, !modes_.Transitional()};
 }
 
 CommandResult CommandExecutor::SystemParameterCommand(const MasterFrame& c) {
@@ -230,11 +198,11 @@ CommandResult CommandExecutor::StatusCommand(const MasterFrame& c) {
         case code::kResetError:
             // 5.2.4.15: CPU errors (1..99) need a power cycle: "command not executable", and the
             // error number again in the acknowledgement data.
-            if (state_.systemError >= 1 && state_.systemError <= 99) {
-                return Fail(error::kNotExecutable, state_.systemError);
+            switch (modes_.ResetError()) {
+                case ModeRequestResult::kAccepted: return Ack(0);
+                case ModeRequestResult::kCpuError: return Fail(error::kNotExecutable, state_.systemError);
+                default: return Fail(error::kInadmissibleCommand);
             }
-            state_.systemError = 0;
-            return Ack(0);
         case code::kGetError: return Ack(state_.systemError);
         case code::kGetState: return Ack(state_.operatingStatus);
         case code::kGetStatusAllAxis: {

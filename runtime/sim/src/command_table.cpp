@@ -14,8 +14,10 @@ std::vector<CommandInfo> BuildTable() {
     return {
         // 5.1.1: the table marks 0600 for AUTOMATIC only, its description (5.2.1.1) for ONLINE too.
         {code::kStop, "cmd_stop", ModeSet{Mode::kAutomatic, Mode::kOnline}},
-        {code::kStartAuto, "cmd_start_auto", kHomeOnly},
-        {code::kStartOnline, "cmd_start_online", kHomeOnly},
+        // 5.1.1 marks home position only; 5.2.1.1 restarts a stopped AUTOMATIC with 0602, and the
+        // simulator resumes a stopped ONLINE with 0603 alike (ModeMachine: 15 / 19, 35 / 39 only).
+        {code::kStartAuto, "cmd_start_auto", ModeSet{Mode::kHome, Mode::kAutomatic}},
+        {code::kStartOnline, "cmd_start_online", ModeSet{Mode::kHome, Mode::kOnline}},
         // 5.1.2, 5.1.3: parameters only in home position.
         {code::kSetSystemParameter, "cmd_set_system_parameter", kHomeOnly},
         {code::kGetSystemParameter, "cmd_get_system_parameter", kHomeOnly},

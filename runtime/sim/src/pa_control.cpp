@@ -31,7 +31,9 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       layout_(bus.Layout()),
       config_(CheckedConfig(config)),
       state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters),
-      executor_(state_, config_.executor),
+      modes_(state_, config_.modes),
+      executor_(state_, modes_),
+      ctrl_(modes_, state_),
       log_(config_.logCapacity),
       bootEnd_(config_.bootTime),
       lastReply_(layout_.Bytes()),
@@ -68,6 +70,10 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     state_.axes.UpdateAll(now);
     const bool allZero = master.AllZero();
     if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
+    modes_.Step(now);
+    // An all-zero image is no control word (all requests low-active would cancel): it is the
+    // emergency stop above, or no communication yet.
+    if (layout_.ctrl && !allZero) ctrl_.Apply(master.Module8(ModuleLayout::kCtrlOffset), now);
 
     if (pending_.Active()) {
         const CommandResult progress = executor_.Poll(pending_, now);
@@ -108,8 +114,8 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     e.systemFlags.Clear();
     e.systemIntRegisters.Clear();
     e.systemRealRegisters.Clear();
-    state_.systemError = 0;
-    state_.operatingStatus = status::kNotInitialized;
+    modes_.PowerOff();
+    ctrl_.Reset();
 
     protocol_.Reset();
     pending_ = PendingCommand{};
@@ -136,7 +142,7 @@ void PaControl::CheckTime(std::chrono::nanoseconds now, const char* what) {
 
 void PaControl::Boot() {
     booted_ = true;
-    if (state_.operatingStatus == status::kNotInitialized) state_.operatingStatus = status::kHome;
+    modes_.Boot();
     protocol_.Reset();
 }
 
@@ -144,12 +150,7 @@ void PaControl::EmergencyStop(std::chrono::nanoseconds now) {
     // 4.2.5: an all-zero master image after communication was active means EMERGENCY STOP.
     emergencyStop_ = true;
     ++counters_.emergencyStops;
-    state_.axes.HaltAll(now);
-    switch (state_.CurrentMode()) {
-        case Mode::kOnline: state_.operatingStatus = status::kOnlineStoppedMalfunction; break;
-        case Mode::kAutomatic: state_.operatingStatus = status::kAutoStoppedMalfunction; break;
-        default: break;
-    }
+    modes_.EmergencyStop(now);
 }
 
 void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now) {
@@ -177,7 +178,8 @@ void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now
 ProcessImage PaControl::ComposeReply() const {
     ProcessImage reply(layout_.Bytes());
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
-    // The CTRL module's status word and the axis modules are not served yet: they read as zero.
+    if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
+    // The axis modules are not served yet: they read as zero.
     return reply;
 }
 

@@ -1,7 +1,8 @@
 // Carries out one CMD command on the controller state (manual 5.2) and says what to acknowledge:
 // acknowledgement data, command error number, and whether processing has ended. Commands that end
-// later (axis moves, axis stop, cmd_stop) leave a PendingCommand that Poll() follows cycle by cycle.
-// The SEND/RECEIVE handshake is not its business (CmdProtocol).
+// later (axis moves, axis stop, and the mode commands 0600 / 0602 / 0603 while the status is
+// transitional) leave a PendingCommand that Poll() follows cycle by cycle. Mode changes are the
+// ModeMachine's; the SEND/RECEIVE handshake is CmdProtocol's.
 #pragma once
 
 #include <chrono>
@@ -9,6 +10,7 @@
 
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/controller_state.hpp"
+#include "pac/sim/mode_machine.hpp"
 
 namespace pac::sim {
 
@@ -19,21 +21,15 @@ struct CommandResult {
 };
 
 struct PendingCommand {
-    enum class Kind { kNone, kAxisMotion, kStopAll };
+    enum class Kind { kNone, kAxisMotion, kModeChange };
     Kind kind = Kind::kNone;
     int axis = 0;  // kAxisMotion
     bool Active() const { return kind != Kind::kNone; }
 };
 
-struct ExecutorOptions {
-    // 5.2.1.3: ONLINE needs an external stop input (system parameter 4) that has power; otherwise
-    // 0603 fails with error 44.
-    bool requireExternalStop = true;
-};
-
 class CommandExecutor {
 public:
-    CommandExecutor(ControllerState& state, ExecutorOptions options) : state_(state), options_(options) {}
+    CommandExecutor(ControllerState& state, ModeMachine& modes) : state_(state), modes_(modes) {}
 
     // `pending` is set when the command ends later, and left alone otherwise.
     CommandResult Execute(const MasterFrame& command, std::chrono::nanoseconds now, PendingCommand& pending);
@@ -51,10 +47,9 @@ private:
     CommandResult OnlineCommand(const MasterFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
     CommandResult StartMove(const MasterFrame& c, std::chrono::nanoseconds now, bool relative, bool waitForEnd,
                             PendingCommand& pending);
-    void LeaveToHome(std::chrono::nanoseconds now);
 
     ControllerState& state_;
-    ExecutorOptions options_;
+    ModeMachine& modes_;
 };
 
 }  // namespace pac::sim

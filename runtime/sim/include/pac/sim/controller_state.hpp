@@ -1,5 +1,6 @@
 // Everything the simulated PA-CONTROL knows, apart from the CMD handshake: operating status, system
-// error number, elements, system parameters and axes. PaControl owns one; CommandExecutor works on it.
+// error number, format in force, battery, elements, system parameters and axes. PaControl owns one;
+// CommandExecutor works on it; ModeMachine alone changes the status, error number and format.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +31,8 @@ struct ControllerState {
 
     std::uint8_t operatingStatus = status::kNotInitialized;
     std::uint16_t systemError = 0;  // PA-CONTROL error number (1909); FE = systemError != 0
+    bool integerFormat = false;     // 2.5.3: axis positions and R registers as integers x1000
+    bool batteryOk = true;          // 2.5.2 status word bit 1
     Elements elements;
     ParameterTable systemParameters;
     AxisGroup axes;

@@ -1,9 +1,10 @@
 // The simulated PA-CONTROL behind its Profibus-DP modules (manual 2.3): the 8-byte CMD interface (2.4,
 // 4.2, chapter 5), and where the bus layout has them the CTRL interface (2.5) and the axis modules (2.7).
-// It runs in its own cycle: each Cycle(now) reads the master's process image from the bus, follows a
-// command that is still processing, recognises a SEND flag change against the last acknowledged SEND
-// (RF), carries out the command and writes its reply image. See docs/simulator.md for every decision where the manual is
-// silent (power-up, emergency stop, SEND toggles while processing, retention).
+// It runs in its own cycle: each Cycle(now) reads the master's process image from the bus, steps the
+// operating-mode machine, applies the CTRL control word, follows a command that is still processing,
+// recognises a SEND flag change against the last acknowledged SEND (RF), carries out the command and
+// writes its reply image. See docs/simulator.md for every decision where the manual is silent
+// (power-up, operating modes, emergency stop, SEND toggles while processing, retention).
 #pragma once
 
 #include <chrono>
@@ -18,8 +19,10 @@
 #include "pac/sim/cmd_protocol.hpp"
 #include "pac/sim/command_executor.hpp"
 #include "pac/sim/controller_state.hpp"
+#include "pac/sim/ctrl_interface.hpp"
 #include "pac/sim/exchange_log.hpp"
 #include "pac/sim/image8.hpp"
+#include "pac/sim/mode_machine.hpp"
 #include "pac/sim/process_image.hpp"
 
 namespace pac::sim {
@@ -44,7 +47,7 @@ struct PaControlConfig {
     int axisCapacity = 16;  // axes held; system parameter 2 says how many are addressable
     RetentionRule retention{};
     bool referencedAtPowerOn = true;
-    ExecutorOptions executor{};
+    ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
     std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
 };
 
@@ -72,6 +75,11 @@ public:
     bool Booted() const { return booted_; }
     std::uint8_t OperatingStatus() const { return state_.operatingStatus; }
     std::uint16_t SystemError() const { return state_.systemError; }
+    bool IntegerFormat() const { return state_.integerFormat; }  // 2.5.3: the format in force
+    bool BatteryOk() const { return state_.batteryOk; }
+    // The CTRL status word as the controller writes it (also without a CTRL module in the layout).
+    std::uint16_t CtrlStatusWord() const { return ctrl_.StatusWord(); }
+    const ModeMachine& Modes() const { return modes_; }
     bool EmergencyStopActive() const { return emergencyStop_; }
     bool Processing() const { return booted_ && protocol_.Processing(); }
     const ProcessImage& LastReply() const { return lastReply_; }
@@ -82,10 +90,18 @@ public:
     // Power off and on at `now`: the reply is all zero (status 0, RF 0) at once and until the boot
     // ends at now + bootTime; then status 1 and the power-on handshake state. Retention: RetentionRule.
     void PowerCycle(std::chrono::nanoseconds now);
-    // Takes effect in the next reply. Set before the boot ends, it is the status the controller boots into.
-    void SetOperatingStatus(std::uint8_t status) { state_.operatingStatus = status; }
-    // The PA-CONTROL error number of 1909 / SN10; FE (word 2 bit 15) is set while it is not 0.
+    // Takes effect in the next reply. Set before the boot ends, it is the status the controller boots
+    // into. The status is held: the mode machine makes no transition out of it by itself (no timed
+    // step, no external stop check) until a request, a system error or an emergency stop moves it.
+    void SetOperatingStatus(std::uint8_t status) { modes_.Force(status); }
+    // The PA-CONTROL error number of 1909 / SN10 as is; FE (word 2 bit 15) is set while it is not 0.
+    // The status does not change: RaiseSystemError() is the controller's reaction to an error.
     void SetSystemError(std::uint16_t number) { state_.systemError = number; }
+    // A system error of the number's class (5.2.4.15; 1..999, std::invalid_argument otherwise),
+    // noticed by the next cycle: home -> 9; ONLINE -> 37 -> 39; AUTOMATIC -> 17 -> 18 -> 19.
+    void RaiseSystemError(std::uint16_t number) { modes_.RaiseSystemError(number); }
+    // 2.5.2 status word bit 1 (true at construction; survives power cycles).
+    void SetBatteryOk(bool ok) { state_.batteryOk = ok; }
     // The next recognised command is not carried out but answered with KF = 1 and this number
     // (1..16#1FFF, std::invalid_argument otherwise). One shot; a power cycle drops it.
     void InjectCommandError(std::uint16_t errorNumber);
@@ -114,7 +130,9 @@ private:
     ModuleLayout layout_;
     PaControlConfig config_;
     ControllerState state_;
+    ModeMachine modes_;
     CommandExecutor executor_;
+    CtrlInterface ctrl_;
     CmdProtocol protocol_;
     PendingCommand pending_;
     ExchangeLog log_;
