@@ -82,6 +82,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         TimelinePrinter printer(out, *names);
         const RunReport report = ScenarioRunner(scenario).Run(printer);
         return report.Passed() ? kExitOk : kExitExpectationFailed;
+    } catch (const ScenarioError& e) {
+        err << kProgram << ": invalid scenario " << scenarioFile << ": " << e.what() << "\n";
+        return kExitRefused;
     } catch (const std::exception& e) {
         err << kProgram << ": internal error: " << e.what() << "\n";
         return kExitInternalError;

@@ -342,8 +342,8 @@ std::vector<std::size_t> RunReport::FailedSteps() const {
 }
 
 RunReport ScenarioRunner::Run(RunObserver& observer) const {
+    Session session(scenario_, observer);  // refuses a controller setup the simulator rejects, before any output
     observer.OnStart(scenario_);
-    Session session(scenario_, observer);
     RunReport report;
     for (std::size_t i = 0; i < scenario_.steps.size(); ++i) {
         // Steps start between scans: at the time of the last scan (0 before the first).

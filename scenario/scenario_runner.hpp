@@ -126,7 +126,9 @@ class ScenarioRunner {
 public:
     explicit ScenarioRunner(const Scenario& scenario) : scenario_(scenario) {}
 
-    // Each call runs on a fresh PLC and PA-CONTROL, from time 0.
+    // Each call runs on a fresh PLC and PA-CONTROL, from time 0. A controller setup the simulator
+    // rejects (a system parameter it does not have, a value outside its limits) is a ScenarioError,
+    // thrown before the observer hears of the run.
     RunReport Run(RunObserver& observer) const;
     RunReport Run() const;
 

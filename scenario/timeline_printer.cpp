@@ -116,12 +116,12 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
     PrintColumns();
 }
 
-void TimelinePrinter::SetView(View view, std::vector<int> axes) {
-    if (view == view_ && axes == viewAxes_) return;
+bool TimelinePrinter::SetView(View view, std::vector<int> axes) {
+    if (view == view_ && axes == viewAxes_) return false;
     view_ = view;
     viewAxes_ = std::move(axes);
     last_.reset();  // the first scan of a new view is always shown
-    PrintColumns();
+    return true;
 }
 
 void TimelinePrinter::PrintColumns() {
@@ -142,17 +142,19 @@ void TimelinePrinter::PrintColumns() {
 }
 
 void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chrono::nanoseconds now) {
-    std::visit(
+    const bool newView = std::visit(
         [this](const auto& action) {
             using Action = std::decay_t<decltype(action)>;
             if constexpr (std::is_same_v<Action, CommandStep>) {
-                SetView(View::kCmd, {});
+                return SetView(View::kCmd, {});
             } else if constexpr (std::is_same_v<Action, CtrlStep>) {
-                SetView(View::kCtrl, {});
+                return SetView(View::kCtrl, {});
             } else if constexpr (std::is_same_v<Action, AxesStep>) {
                 std::vector<int> axes;
                 for (const auto& job : action.jobs) axes.push_back(job.axis);
-                SetView(View::kAxes, axes);
+                return SetView(View::kAxes, axes);
+            } else {
+                return false;
             }
         },
         step.action);
@@ -176,6 +178,7 @@ void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chro
         step.action);
     if (!step.note.empty()) out_ << "  -- " << step.note;
     out_ << "\n";
+    if (newView) PrintColumns();
 }
 
 void TimelinePrinter::PrintCommand(const CommandStep& command) {

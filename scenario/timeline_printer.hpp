@@ -29,7 +29,7 @@ public:
 private:
     enum class View { kCmd, kCtrl, kAxes };
 
-    void SetView(View view, std::vector<int> axes);
+    bool SetView(View view, std::vector<int> axes);  // true if the view changed
     void PrintColumns();
     bool Changed(const ScanSample& sample) const;
     void PrintCmdLine(const ScanSample& s);

@@ -64,7 +64,7 @@ TEST(ScenarioCli, DemoExitsZero) {
     const Process run = RunBinary("'" + kDemo + "'");
     EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_EQ(run.err, "");
-    EXPECT_NE(run.out.find("Result: 9 steps, 6 commands: all expectations met"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Result: 12 steps, 7 commands, 2 mode requests: all expectations met"), std::string::npos) << run.out;
 }
 
 TEST(ScenarioCli, FailedExpectationExitsOne) {
@@ -91,10 +91,20 @@ TEST(ScenarioCli, InvalidScenarioExitsTwoWithTheReason) {
         << cli.err.str();
 }
 
+TEST(ScenarioCli, ASetupTheSimulatorRejectsExitsTwoBeforeAnyOutput) {
+    const Cli cli({TempFile("bad-parameter.json",
+                            R"({"controller": {"system_parameters": {"60000": 1}}, "steps": [{"wait_ms": 1}]})")});
+    EXPECT_EQ(cli.exitCode, pac::scenario::kExitRefused);
+    EXPECT_EQ(cli.out.str(), "");
+    EXPECT_NE(cli.err.str().find(R"($.controller.system_parameters["60000"]: refused by the simulated PA-CONTROL)"),
+              std::string::npos)
+        << cli.err.str();
+}
+
 TEST(ScenarioCli, CheckOnlyValidates) {
     const Process run = RunBinary("--check '" + kDemo + "'");
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_EQ(run.out, kDemo + ": valid scenario, 9 steps\n");
+    EXPECT_EQ(run.out, kDemo + ": valid scenario, 12 steps\n");
     EXPECT_EQ(Cli({"--check", TempFile("bad.json", "{")}).exitCode, pac::scenario::kExitRefused);
 }
 

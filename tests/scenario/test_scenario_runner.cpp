@@ -57,9 +57,10 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     const ScenarioRun run(FromFile("demo.json"));
     const std::string& out = run.timeline.str();
     EXPECT_TRUE(run.report.Passed()) << out;
-    EXPECT_EQ(run.report.steps.size(), 9u);
-    EXPECT_EQ(run.report.Commands(), 6u);
-    EXPECT_NE(out.find("Result: 9 steps, 6 commands: all expectations met"), std::string::npos) << out;
+    EXPECT_EQ(run.report.steps.size(), 12u);
+    EXPECT_EQ(run.report.Commands(), 7u);
+    EXPECT_EQ(run.report.Requests(), 2u);
+    EXPECT_NE(out.find("Result: 12 steps, 7 commands, 2 mode requests: all expectations met"), std::string::npos) << out;
     // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4).
     EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
     // R1 = 640.0 is 44 20 00 00 (NOTES.md), printed as a REAL because the step expects one.
@@ -68,6 +69,12 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     EXPECT_NE(out.find("ErrorID 38 PAC_ERR_N_REGISTER \"inadmissible N register\""), std::string::npos) << out;
     // The power cycle: the reply drops to zero, the idle FB parks the module, the boot ends.
     EXPECT_NE(out.find("| 00 00 00 00 00 00 19 0B | 00 00 00 00 00 00 00 00 |"), std::string::npos) << out;
+    // ONLINE through FB_PAC_Ctrl: Start ONLINE (bit 4) with Stop, Cancel and Error reset held at 1,
+    // then the status word shows ONLINE active (bit 10); Cancel is bit 2 taken to 0.
+    EXPECT_NE(out.find("| 00 17 00 00 00 00 00 00 | 00 03 00 00 00 00 00 00 | 16#0017 16#0003"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 00 07 00 00 00 00 00 00 | 04 03 00 00 00 00 00 00 | 16#0007 16#0403"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 00 03 00 00 00 00 00 00 | 04 03 00 00 00 00 00 00 | 16#0003 16#0403"), std::string::npos) << out;
+    EXPECT_NE(out.find("AckData 31 (16#0000001F): as expected"), std::string::npos) << out;
     for (const auto& step : run.report.steps) {
         if (!step.outcome) continue;
         EXPECT_TRUE(step.outcome->finished);
@@ -191,3 +198,20 @@ TEST(ScenarioRunner, ZeroedRepliesHoldBackCommandsUntilThawed) {
 }
 
 }  // namespace
+
+TEST(ScenarioRunner, ACtrlRequestTheControllerIgnoresEndsInTheFbsTimeout) {
+    // No external stop input (system parameter 4 is 0): the PA-CONTROL ignores Start ONLINE on the
+    // CTRL interface, which has no error channel, so FB_PAC_Ctrl ends with 16#8009 after Timeout.
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0, "plc_cycle_ms": 2}, "modules": {"ctrl": true},
+      "steps": [{"ctrl": "PAC_REQ_START_ONLINE", "timeout_ms": 100,
+                 "expect": {"error": true, "error_id": "PAC_LIB_ERR_REQUEST_TIMEOUT"}},
+                {"ctrl": "PAC_REQ_STOP", "expect": {"error": true, "error_id": "PAC_LIB_ERR_NOT_ALLOWED"}}]})"));
+    const std::string& out = run.timeline.str();
+    EXPECT_TRUE(run.report.Passed()) << out;
+    ASSERT_TRUE(run.report.steps[0].request.has_value());
+    const auto& timeout = *run.report.steps[0].request;
+    // Timeout 100 ms at 2 ms per scan: the TON's Q shows in the 50th scan after the edge's.
+    EXPECT_EQ(timeout.endScan - timeout.edgeScan, 50) << out;
+    EXPECT_EQ(run.report.steps[1].request->endScan, run.report.steps[1].request->edgeScan) << "refused in the edge scan";
+    EXPECT_NE(out.find("ErrorID 16#8009 PAC_LIB_ERR_REQUEST_TIMEOUT"), std::string::npos) << out;
+}
