@@ -172,7 +172,8 @@ public:
 
     void Settle(int scans) { plc_.Scan(scans); }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
-    pac::sim::LinearAxis& Motion(int axis) { return plc_.Controller().Axes().Motion(axis); }
+    pac::sim::ServoAxis& Motion(int axis) { return plc_.Controller().Axes().Motion(axis); }
+    const pac::sim::Dynamics& SessionDynamics(int axis) { return plc_.Controller().Axes().SessionDynamics(axis); }
     pac::sim::Image8 ToPac() const { return plc_.ToPac().Cmd(); }
     nanoseconds Now() const { return plc_.Now(); }
     nanoseconds EdgeTime() const { return edgeTime_; }
@@ -487,7 +488,7 @@ TEST_P(ParameterAxisFbs, ParameterCommandsAreRefusedOutsideHomePosition) {
 TEST_P(ParameterAxisFbs, AxisPositionIsBitExact) {
     AxisBench bench(Param());
     for (float position : {-1234.5678F, 0.1F, 5000.0F, 1.0e-40F}) {
-        bench.Motion(2).SetPosition(static_cast<double>(position));
+        bench.Motion(2).Place(bench.Now(), static_cast<double>(position));
         bench.readPos->AXIS.value = 2;
         Outcome outcome = bench.Run(bench.readPos);
         ASSERT_TRUE(outcome.done);
@@ -511,7 +512,7 @@ TEST_P(ParameterAxisFbs, AxisStatusDecodesTheManualsValues) {
     EXPECT_FALSE(bench.readStatus->MOVING.value || bench.readStatus->STOPPED.value ||
                  bench.readStatus->MALFUNCTION.value || bench.readStatus->MEASURINGMODE.value);
 
-    bench.Motion(2).SetMalfunction(true);
+    bench.Motion(2).RaiseAxisError(bench.Now(), 500);
     bench.readStatus->AXIS.value = 2;
     ASSERT_TRUE(bench.Run(bench.readStatus).done);
     EXPECT_EQ(Sent(bench.ToPac()).param, 2);
@@ -531,7 +532,7 @@ TEST_P(ParameterAxisFbs, AxisStatusDecodesTheManualsValues) {
 TEST_P(ParameterAxisFbs, AbsoluteMoveStaysBusyWithThePositionFollowingAndEndsDoneAtTheTarget) {
     AxisBench bench(Param());
     ASSERT_TRUE(bench.GoOnline());
-    const float target = 123.456F;  // 1000 AE/s (axis parameter 1): about 123 ms
+    const float target = 123.456F;  // 1000 AE/s (axis parameter 1), ramps of 100 ms: about 223 ms
     bench.moveAbs->AXIS.value = 1;
     bench.moveAbs->POSITION.value = target;
     bench.Start(bench.moveAbs);
@@ -581,7 +582,7 @@ TEST_P(ParameterAxisFbs, AbsoluteMoveStaysBusyWithThePositionFollowingAndEndsDon
 TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     AxisBench bench(Param());
     ASSERT_TRUE(bench.GoOnline());
-    bench.Motion(2).SetPosition(100.0);
+    bench.Motion(2).Place(bench.Now(), 100.0);
     bench.moveRel->AXIS.value = 2;
     bench.moveRel->DISTANCE.value = -30.5F;
     float first = -1.0F;
@@ -758,7 +759,7 @@ TEST_P(ParameterAxisFbs, SetAxisSpeedChangesTheTraverseSpeed) {
     EXPECT_EQ(sent.code, 0x0A8D);
     EXPECT_EQ(sent.param, 1);
     EXPECT_EQ(sent.data, 0x44FA0000u);
-    EXPECT_EQ(bench.Motion(1).Speed(), 2000.0);
+    EXPECT_EQ(bench.SessionDynamics(1).speed, 2000.0);
     // Limits of axis parameter 1 (1..50000), and > 0.
     bench.setSpeed->SPEED.value = 50001.0F;
     EXPECT_EQ(bench.Run(bench.setSpeed).errorId, kGvl["PAC_ERR_VALUE_RANGE"]);
@@ -767,15 +768,15 @@ TEST_P(ParameterAxisFbs, SetAxisSpeedChangesTheTraverseSpeed) {
     bench.setSpeed->AXIS.value = 3;
     bench.setSpeed->SPEED.value = 100.0F;
     EXPECT_EQ(bench.Run(bench.setSpeed).errorId, kGvl["PAC_ERR_AXIS_NUMBER"]);
-    EXPECT_EQ(bench.Motion(1).Speed(), 2000.0);
-    // 200 AE at 2000 AE/s: 100 ms, not 200.
+    EXPECT_EQ(bench.SessionDynamics(1).speed, 2000.0);
+    // 2000 AE at 2000 AE/s with ramps of 10000 AE/s^2 (200 ms, 200 AE each): 1.2 s, not 2.1 s as at 1000 AE/s.
     bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 200.0F;
+    bench.moveAbs->POSITION.value = 2000.0F;
     bench.Start(bench.moveAbs);
     const auto edge = bench.EdgeTime();
     ASSERT_TRUE(bench.Wait(bench.moveAbs).done);
-    EXPECT_GE(bench.Now() - edge, 100ms);
-    EXPECT_LT(bench.Now() - edge, 160ms);
+    EXPECT_GE(bench.Now() - edge, 1200ms);
+    EXPECT_LT(bench.Now() - edge, 1260ms);
     bench.Release(bench.moveAbs);
     // Home position: refused.
     bench.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
@@ -801,7 +802,8 @@ TEST_P(ParameterAxisFbs, SetAxisAccelerationSendsTheManualsCommand) {
     bench.setAccel->AXIS.value = 1;
     outcome = bench.Run(bench.setAccel);
     ASSERT_TRUE(outcome.done) << "ErrorID " << outcome.errorId;
-    EXPECT_EQ(bench.Controller().Axes().Motion(1).Deceleration(), 10.0);
+    EXPECT_EQ(bench.SessionDynamics(1).acceleration, 10.0);  // one value for both ramps of the CMD moves
+    EXPECT_EQ(bench.SessionDynamics(1).deceleration, 10.0);
     // Below the acceleration parameter's minimum (1.0): value outside range.
     bench.setAccel->ACCELERATION.value = 0.5F;
     EXPECT_EQ(bench.Run(bench.setAccel).errorId, kGvl["PAC_ERR_VALUE_RANGE"]);

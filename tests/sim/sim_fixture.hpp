@@ -2,15 +2,18 @@
 // hand. Exchange() is one step of simulated time: the master writes its image, the controller runs
 // one cycle, the master reads the reply; then time moves on by step_ (10 ms, the home-position cycle).
 // With a CTRL module in the bus layout (CtrlBus()), the master's image carries ctrlWord_ as the CTRL
-// control word (default: no request, every low-active bit held at 1).
+// control word (default: no request, every low-active bit held at 1); with axis modules (AxisBus(n)),
+// axisMaster_[k - 1] as the module of axis k.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "pac/sim/axis_module.hpp"
 #include "pac/sim/bus.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
@@ -40,6 +43,13 @@ inline BusConfig CtrlBus() {
     return bus;
 }
 
+// CMD, CTRL and `n` axis modules (2.3.2.3), no latency.
+inline BusConfig AxisBus(int n) {
+    BusConfig bus;
+    bus.layout = ModuleLayout{true, n};
+    return bus;
+}
+
 // "41 20 00 00" for 10.0F: the dword of a REAL as the reply carries it.
 inline std::string RealHex(float value) {
     Image8 image{};
@@ -50,7 +60,7 @@ inline std::string RealHex(float value) {
 class PacBench : public ::testing::Test {
 protected:
     explicit PacBench(PaControlConfig config = QuickConfig(), BusConfig bus = {})
-        : bus_(bus), pac_(bus_, config) {}
+        : bus_(bus), pac_(bus_, config), axisMaster_(static_cast<std::size_t>(bus.layout.axisModules)) {}
 
     // One step: master writes, controller cycles, master reads; returns the CMD reply as hex.
     std::string Exchange(const Image8& master) {
@@ -61,6 +71,9 @@ protected:
             Image8 ctrl{};
             WriteWord(ctrl, 0, ctrlWord_);
             image.SetModule8(ModuleLayout::kCtrlOffset, ctrl);
+        }
+        for (int axis = 1; axis <= bus_.Layout().axisModules; ++axis) {
+            image.SetModule12(bus_.Layout().AxisOffset(axis), axisMaster_[static_cast<std::size_t>(axis - 1)].Encode());
         }
         return ToHex(ExchangeImage(image).Cmd());
     }
@@ -107,6 +120,9 @@ protected:
     std::uint16_t StatusWord() const { return ReadWord(reply_.Module8(ModuleLayout::kCtrlOffset), 0); }
     std::uint16_t CtrlErrorNumber() const { return ReadWord(reply_.Module8(ModuleLayout::kCtrlOffset), 2); }
     std::string CtrlHex() const { return ToHex(reply_.Module8(ModuleLayout::kCtrlOffset)); }
+    // The axis module of axis k in the last reply.
+    Image12 AxisModuleBytes(int axis) const { return reply_.Module12(bus_.Layout().AxisOffset(axis)); }
+    AxisModuleReply AxisReply(int axis) const { return AxisModuleReply::Decode(AxisModuleBytes(axis)); }
     // One step with this control word (held from then on); returns the status word.
     std::uint16_t Control(std::uint16_t word) {
         ctrlWord_ = word;
@@ -125,6 +141,7 @@ protected:
     bool send_ = false;
     Image8 master_{};
     std::uint16_t ctrlWord_ = ctrl::kNoRequest;
+    std::vector<AxisModuleCommand> axisMaster_;  // axis k's module at [k - 1]
     ProcessImage reply_;
 };
 

@@ -19,15 +19,15 @@ TEST_F(BusFaults, AllZeroBeforeCommunicationIsNoEmergencyStop) {
 TEST_F(BusFaults, AllZeroMasterImageInOnlineIsAnEmergencyStop) {
     GoOnline();                                                                     // 0 ms, SEND 1
     EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 00 00");  // 10
-    EXPECT_EQ(Idle(), "41 20 00 00 00 1F 00 00");                                   // 20 ms: 10.0
-    // 30 ms: the master writes 8 zero bytes. The axis halts without ramp (at 20.0), the move ends
+    EXPECT_EQ(Idle(), "3F 00 00 00 00 1F 00 00");                                   // 20 ms: 0.5
+    // 30 ms: the master writes 8 zero bytes. The axis halts without ramp (at 2.0), the move ends
     // (BF = 1, data = stop position), the status becomes ONLINE STOPPED with MALFUNCTION (39 =
     // 16#27). SEND = 0 in the zero image is no command; RF stays.
-    EXPECT_EQ(Exchange(Image8{}), "41 A0 00 00 00 27 20 00");
+    EXPECT_EQ(Exchange(Image8{}), "40 00 00 00 00 27 20 00");
     EXPECT_TRUE(pac_.EmergencyStopActive());
-    EXPECT_EQ(Idle(), "41 A0 00 00 00 27 20 00");
+    EXPECT_EQ(Idle(), "40 00 00 00 00 27 20 00");
     EXPECT_EQ(pac_.Counters().emergencyStops, 1U);
-    EXPECT_EQ(pac_.Axes().Motion(1).Position(), 20.0);
+    EXPECT_DOUBLE_EQ(pac_.Axes().Motion(1).Position(), 2.0);
     EXPECT_EQ(pac_.Axes().Motion(1).Status(), AxisStatus::kStopped);
     // Back on the bus: moves are inadmissible in 39; 0A81 returns to home position.
     send_ = false;

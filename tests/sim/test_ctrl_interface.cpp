@@ -39,7 +39,12 @@ protected:
     }
 
     std::uint8_t Status() const { return pac_.OperatingStatus(); }
-    void MoveAxis1() { pac_.Axes().Motion(1).MoveTo(now_, 1000.0); }
+    // Axis 1 travels at 1000 AE/s from the next cycle on (a ramp of 10 ms / 5 AE from the last cycle); a
+    // stop brakes it with 10000 AE/s^2 in 100 ms (10 cycles, 50 AE).
+    void MoveAxis1() {
+        ServoAxis& axis = pac_.Axes().Motion(1);
+        ASSERT_EQ(axis.MoveAbsolute(axis.Now(), 1000.0, Dynamics{1000.0, 100000.0, 10000.0}), 0);
+    }
     std::string ReplyHex() const { return ToHex(reply_); }
 };
 

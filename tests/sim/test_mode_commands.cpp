@@ -46,19 +46,19 @@ TEST_F(ModeCommands, StartAutoAndStopIt) {
 }
 
 TEST_F(ModeCommands, StopInOnlineWaitsForTheAxesToStandStill) {
-    GoOnline();                                                                   // 0 ms, SEND 1
-    EXPECT_EQ(Send(code::kStartAxisAbsolute, 1, FloatToBits(1000.0F)),           // 10 ms, SEND 0
+    GoOnline();                                                                   // 0, 10 ms, SEND 1
+    EXPECT_EQ(Send(code::kStartAxisAbsolute, 1, FloatToBits(1000.0F)),           // 20 ms, SEND 0
               "00 00 00 00 00 1F 20 00");  // 0A94: start position 0.0, BF at once
-    Idle();                                                                       // 20 ms: at 10.0
-    // 30 ms, at 20.0: 0600, ONLINE STOP recognised (32 = 16#20), BF = 0. Braking from 1000 AE/s at
+    for (int i = 0; i < 10; ++i) Idle();  // 30..120 ms: the ramp of 100 ms to 1000 AE/s, at 50.0
+    // 130 ms, at 60.0: 0600, ONLINE STOP recognised (32 = 16#20), BF = 0. Braking from 1000 AE/s at
     // 10000 AE/s^2 takes 100 ms and 50 AE.
     EXPECT_EQ(Send(code::kStop), "00 00 00 00 00 20 80 00");
-    for (int cycle = 4; cycle <= 12; ++cycle) {
+    for (int cycle = 14; cycle <= 22; ++cycle) {
         EXPECT_EQ(Idle(), "00 00 00 00 00 20 80 00") << "cycle at " << cycle * 10 << " ms";
     }
-    // 130 ms: the axis stands at 70.0: ONLINE and STOPPED (35 = 16#23), BF = 1.
+    // 230 ms: the axis stands at 110.0: ONLINE and STOPPED (35 = 16#23), BF = 1.
     EXPECT_EQ(Idle(), "00 00 00 00 00 23 A0 00");
-    EXPECT_EQ(Send(code::kGetActualPos, 1), "42 8C 00 00 00 23 20 00");  // 70.0
+    EXPECT_EQ(Send(code::kGetActualPos, 1), "42 DC 00 00 00 23 20 00");  // 110.0
     EXPECT_EQ(Send(code::kGetStatusAxis, 1), "00 00 00 02 00 23 A0 00");  // standing, was stopped
 }
 

@@ -43,8 +43,12 @@ protected:
         }
         return out;
     }
-    // Axis 1 travels at 1000 AE/s from the next cycle on; a stop brakes it in 100 ms (10 cycles).
-    void MoveAxis1() { pac_.Axes().Motion(1).MoveTo(now_, 1000.0); }
+    // Axis 1 travels at 1000 AE/s from the next cycle on (a ramp of 10 ms / 5 AE from the last cycle); a
+    // stop brakes it with 10000 AE/s^2 in 100 ms (10 cycles, 50 AE).
+    void MoveAxis1() {
+        ServoAxis& axis = pac_.Axes().Motion(1);
+        ASSERT_EQ(axis.MoveAbsolute(axis.Now(), 1000.0, Dynamics{1000.0, 100000.0, 10000.0}), 0);
+    }
 };
 
 TEST_F(ModeMachineTest, OnlineStartStopResumeAndCancel) {
@@ -55,9 +59,9 @@ TEST_F(ModeMachineTest, OnlineStartStopResumeAndCancel) {
     EXPECT_EQ(Cmd(code::kStop), "35/1");
     // Resume (decision): 0603 in 35 goes straight back to 31; the session's speed stays.
     EXPECT_EQ(Cmd(code::kStartOnline), "31/1");
-    EXPECT_EQ(pac_.Axes().Motion(1).Speed(), 2000.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(1).speed, 2000.0);
     EXPECT_EQ(Cmd(code::kAbortOnline), "1/1");
-    EXPECT_EQ(pac_.Axes().Motion(1).Speed(), 1000.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(1).speed, 1000.0);
     EXPECT_EQ(pac_.Counters().failed, 0U);
 }
 
@@ -66,7 +70,7 @@ TEST_F(ModeMachineTest, OnlineStopWaitsForTheAxesAndThe0600EndsWithIt) {
     MoveAxis1();
     EXPECT_EQ(Cmd(code::kStop), "32/0");
     EXPECT_EQ(Trace(10), "32/0 32/0 32/0 32/0 32/0 32/0 32/0 32/0 32/0 35/1");
-    EXPECT_EQ(pac_.Axes().Motion(1).Position(), 50.0);
+    EXPECT_DOUBLE_EQ(pac_.Axes().Motion(1).Position(), 55.0);  // 5 AE of ramp, 50 AE of braking
 }
 
 class ScriptedAutomatic : public ModeMachineTest {

@@ -1,12 +1,16 @@
 // ONLINE commands of manual 5.2.6: moves that end later (0A87, 0A89: RF = SF with BF = 0 at once,
 // acknowledgement data following the axis position, BF = 1 at the target), 0A93, 0A94/0A95, 0A8D,
-// 0A83, and their errors; a SEND toggle while a move is processing (docs/simulator.md).
+// 0A83, and their errors; a SEND toggle while a move is processing (docs/simulator.md). The axes have the
+// default parameters: 1000 AE/s, ramps of 10000 AE/s^2 (100 ms, 50 AE to full speed).
 #include <gtest/gtest.h>
 
 #include "sim_fixture.hpp"
 
 namespace pac::sim::testing {
 namespace {
+
+// A move of 100 AE from standstill is a triangle of 200 ms peaking at 1000 AE/s: the distance after t s.
+double Triangle100(double t) { return t <= 0.1 ? 5000.0 * t * t : 100.0 - 5000.0 * (0.2 - t) * (0.2 - t); }
 
 class OnlineCommands : public PacBench {
 protected:
@@ -17,56 +21,73 @@ protected:
 };
 
 TEST_F(OnlineCommands, AbsoluteMoveReportsBf0ThenTheTravelThenBf1) {
-    // 20 ms: 0A87 axis 1 to 100.0 at 1000 AE/s; 10 AE per 10 ms cycle.
+    // 20 ms: 0A87 axis 1 to 100.0: 0.5, 2.0, 4.5, ... 50.0 (120 ms), ... 99.5, 100.0 at 220 ms.
     EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 80 00");
-    for (int k = 1; k <= 9; ++k) {
-        const float position = 10.0F * static_cast<float>(k);
+    for (int k = 1; k <= 19; ++k) {
+        const float position = static_cast<float>(Triangle100(k / 100.0));
         EXPECT_EQ(Idle(), RealHex(position) + " 00 1F 80 00") << "cycle " << k;
     }
-    EXPECT_EQ(Idle(), "42 C8 00 00 00 1F A0 00");  // 120 ms: at 100.0, BF = 1
+    EXPECT_EQ(Idle(), "42 C8 00 00 00 1F A0 00");  // 220 ms: at 100.0, BF = 1
     EXPECT_EQ(Idle(), "42 C8 00 00 00 1F A0 00");
     EXPECT_EQ(pac_.Counters().Count(code::kPosAxisAbsolute), 1U);
 }
 
 TEST_F(OnlineCommands, RelativeMoveFromTheCurrentPosition) {
-    pac_.Axes().Motion(2).SetPosition(100.0);
-    // 0A89 axis 2 by -30.0: start 100.0 (42 C8 00 00), then 90, 80, 70.
-    EXPECT_EQ(Send(code::kPosAxisRelative, 2, FloatToBits(-30.0F)), "42 C8 00 00 00 1F 80 00");
-    EXPECT_EQ(Idle(), "42 B4 00 00 00 1F 80 00");  // 90.0
-    EXPECT_EQ(Idle(), "42 A0 00 00 00 1F 80 00");  // 80.0
-    EXPECT_EQ(Idle(), "42 8C 00 00 00 1F A0 00");  // 70.0, done
+    pac_.Axes().Motion(2).Place(now_, 100.0);
+    // 0A89 axis 2 by -25.0: start 100.0 (42 C8 00 00); a triangle of 100 ms peaking at 500 AE/s after 12.5 AE.
+    EXPECT_EQ(Send(code::kPosAxisRelative, 2, FloatToBits(-25.0F)), "42 C8 00 00 00 1F 80 00");
+    EXPECT_EQ(Idle(), "42 C7 00 00 00 1F 80 00");  // 99.5
+    EXPECT_EQ(Idle(), "42 C4 00 00 00 1F 80 00");  // 98.0
+    EXPECT_EQ(Idle(), "42 BF 00 00 00 1F 80 00");  // 95.5
+    EXPECT_EQ(Idle(), "42 B8 00 00 00 1F 80 00");  // 92.0
+    EXPECT_EQ(Idle(), "42 AF 00 00 00 1F 80 00");  // 87.5: at the peak speed
+    EXPECT_EQ(Idle(), "42 A6 00 00 00 1F 80 00");  // 83.0 = 75 + 5000 * 0.04^2
+    EXPECT_EQ(Idle(), "42 9F 00 00 00 1F 80 00");  // 79.5
+    EXPECT_EQ(Idle(), "42 9A 00 00 00 1F 80 00");  // 77.0
+    EXPECT_EQ(Idle(), "42 97 00 00 00 1F 80 00");  // 75.5
+    EXPECT_EQ(Idle(), "42 96 00 00 00 1F A0 00");  // 75.0, done
 }
 
 TEST_F(OnlineCommands, StopAxisEndsWhenTheAxisStandsStill) {
     // 0A94: start and end of processing at once (ack: start position 0.0).
     EXPECT_EQ(Send(code::kStartAxisAbsolute, 1, FloatToBits(1000.0F)), "00 00 00 00 00 1F A0 00");  // 20 ms
-    EXPECT_EQ(Idle(), "00 00 00 00 00 1F A0 00");                                                // 30 ms
-    // 40 ms, at 20.0: 0A93 brakes (1000 AE/s, 10000 AE/s^2: 100 ms, 50 AE) with BF = 0.
-    EXPECT_EQ(Send(code::kStopAxis, 1), "41 A0 00 00 00 1F 00 00");  // 20.0
-    // 50 ms: 20 + 1000*0.01 - 10000*0.01^2/2 = 29.5
-    EXPECT_EQ(Idle(), "41 EC 00 00 00 1F 00 00");
-    for (int i = 0; i < 8; ++i) Idle();  // 60..130 ms
-    EXPECT_EQ(Idle(), "42 8C 00 00 00 1F 20 00");  // 140 ms: standing at 70.0, BF = 1
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(Idle(), "00 00 00 00 00 1F A0 00");                  // 30..120 ms
+    // 130 ms, at full speed since 120 ms: 50 + 10 = 60.0. 0A93 brakes (1000 AE/s, 10000 AE/s^2: 100 ms,
+    // 50 AE) with BF = 0.
+    EXPECT_EQ(Send(code::kStopAxis, 1), "42 70 00 00 00 1F 00 00");  // 60.0
+    // 140 ms: 60 + 1000*0.01 - 10000*0.01^2/2 = 69.5
+    EXPECT_EQ(Idle(), "42 8B 00 00 00 1F 00 00");
+    for (int i = 0; i < 8; ++i) Idle();  // 150..220 ms
+    EXPECT_EQ(Idle(), "42 DC 00 00 00 1F 20 00");  // 230 ms: standing at 110.0, BF = 1
     EXPECT_EQ(Send(code::kGetStatusAxis, 1), "00 00 00 02 00 1F A0 00");
 }
 
 TEST_F(OnlineCommands, StopAxisOnAStandingAxisEndsAtOnce) {
-    pac_.Axes().Motion(1).SetPosition(10.0);
+    pac_.Axes().Motion(1).Place(now_, 10.0);
     EXPECT_EQ(Send(code::kStopAxis, 1), "41 20 00 00 00 1F A0 00");
 }
 
 TEST_F(OnlineCommands, SetSpeedWithinTheParameterLimits) {
+    // 2000 AE/s (0A8D) with ramps of 100000 AE/s^2 (0A8E): 20 ms / 20 AE to full speed. Relative 100.0:
+    // 5, 20, then 20 AE per 10 ms cycle (2000 AE/s): 40, 60, 80, then braking: 95, 100.
     EXPECT_EQ(Send(code::kSetSpeedAxis, 1, FloatToBits(2000.0F)), "44 FA 00 00 00 1F A0 00");
-    EXPECT_EQ(Send(code::kPosAxisRelative, 1, FloatToBits(40.0F)), "00 00 00 00 00 1F 00 00");
-    EXPECT_EQ(Idle(), "41 A0 00 00 00 1F 00 00");  // 20.0 after 10 ms
-    EXPECT_EQ(Idle(), "42 20 00 00 00 1F 20 00");  // 40.0: done
+    EXPECT_EQ(Send(code::kSetAccelerationAxis, 1, FloatToBits(100000.0F)), "47 C3 50 00 00 1F 20 00");
+    EXPECT_EQ(Send(code::kPosAxisRelative, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 80 00");
+    EXPECT_EQ(Idle(), "40 A0 00 00 00 1F 80 00");  // 5.0
+    EXPECT_EQ(Idle(), "41 A0 00 00 00 1F 80 00");  // 20.0
+    EXPECT_EQ(Idle(), "42 20 00 00 00 1F 80 00");  // 40.0
+    EXPECT_EQ(Idle(), "42 70 00 00 00 1F 80 00");  // 60.0
+    EXPECT_EQ(Idle(), "42 A0 00 00 00 1F 80 00");  // 80.0
+    EXPECT_EQ(Idle(), "42 BE 00 00 00 1F 80 00");  // 95.0
+    EXPECT_EQ(Idle(), "42 C8 00 00 00 1F A0 00");  // 100.0: done
     // 60000 > max 50000, 0, NaN: error 41.
-    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, FloatToBits(60000.0F)), "00 00 00 00 00 1F C0 29");
-    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, 0), "00 00 00 00 00 1F 40 29");
-    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, 0x7FC00000), "00 00 00 00 00 1F C0 29");
-    // Leaving ONLINE restores the parameter's speed.
+    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, FloatToBits(60000.0F)), "00 00 00 00 00 1F 40 29");
+    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, 0), "00 00 00 00 00 1F C0 29");
+    EXPECT_EQ(Send(code::kSetSpeedAxis, 1, 0x7FC00000), "00 00 00 00 00 1F 40 29");
+    // Leaving ONLINE restores the parameters' speed and acceleration.
     Send(code::kAbortOnline);
-    EXPECT_EQ(pac_.Axes().Motion(1).Speed(), 1000.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(1).speed, 1000.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(1).acceleration, 10000.0);
 }
 
 TEST_F(OnlineCommands, MoveErrors) {
@@ -101,15 +122,15 @@ TEST_F(OnlineCommands, MovesOnlyInOnlineProper) {
 
 TEST_F(OnlineCommands, SendToggleWhileAMoveIsProcessingTakesTheReplyOver) {
     pac_.Io().intRegisters.SetInt(4, 44);
-    EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(50.0F)), "00 00 00 00 00 1F 80 00");  // 20 ms
-    EXPECT_EQ(Idle(), "41 20 00 00 00 1F 80 00");  // 30 ms: 10.0
+    EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(25.0F)), "00 00 00 00 00 1F 80 00");  // 20 ms
+    EXPECT_EQ(Idle(), "3F 00 00 00 00 1F 80 00");  // 30 ms: 0.5
     // 40 ms: 1906 N4. The reply is now 1906's; the axis carries on.
     EXPECT_EQ(Send(code::kGetIntReg, 4), "00 00 00 2C 00 1F 20 00");
     EXPECT_EQ(Idle(), "00 00 00 2C 00 1F 20 00");
     // A second move of the same axis meanwhile: error 42.
     EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(0.0F)), "00 00 00 00 00 1F C0 2A");
-    Idle();  // 70 ms: at 50.0
-    EXPECT_EQ(Send(code::kGetActualPos, 1), "42 48 00 00 00 1F 20 00");
+    for (int i = 0; i < 6; ++i) Idle();  // 70..120 ms: at 25.0 at 120 ms (a triangle of 100 ms)
+    EXPECT_EQ(Send(code::kGetActualPos, 1), "41 C8 00 00 00 1F 20 00");
     EXPECT_EQ(Send(code::kGetStatusAxis, 1), "00 00 00 00 00 1F A0 00");
 }
 

@@ -44,7 +44,10 @@ TEST_F(ParameterCommands, SetAndGetAxisParameters) {
     // Minimum acceleration of axis 4 (16#0406): 1.0 in the default table.
     EXPECT_EQ(Send(code::kGetAxisParameterMin, 0x0406), "3F 80 00 00 00 01 20 00");
     EXPECT_EQ(pac_.Axes().Parameters(3).RealValue(6), 200.0F);
-    EXPECT_EQ(pac_.Axes().Motion(3).Deceleration(), 200.0);
+    // The axis takes it over for both ramps, and so do the CMD moves of an ONLINE session.
+    EXPECT_EQ(pac_.Axes().Motion(3).Config().acceleration, 200.0);
+    EXPECT_EQ(pac_.Axes().Motion(3).Config().deceleration, 200.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(3).deceleration, 200.0);
 }
 
 TEST_F(ParameterCommands, AxisParameterErrors) {

@@ -80,7 +80,8 @@ TEST_F(PowerCycle, RetentionRule) {
     EXPECT_EQ(pac_.Io().systemIntRegisters.GetInt(3), 0);
     EXPECT_EQ(pac_.SystemParameters().IntValue(1), 2);
     EXPECT_EQ(pac_.Axes().Parameters(1).RealValue(1), 300.0F);
-    EXPECT_EQ(pac_.Axes().Motion(1).Speed(), 300.0);
+    EXPECT_EQ(pac_.Axes().Motion(1).Config().traverseSpeed, 300.0);
+    EXPECT_EQ(pac_.Axes().SessionDynamics(1).speed, 300.0);
     EXPECT_EQ(pac_.SystemError(), 0);
     EXPECT_TRUE(pac_.Axes().Motion(1).Referenced());
     EXPECT_EQ(pac_.OperatingStatus(), 0);
@@ -105,10 +106,10 @@ TEST_F(PowerCycle, PowerCycleDuringAMoveStopsTheAxisAndDropsTheCommand) {
     now_ = 30ms;
     GoOnline();                                                                     // 30, 40 ms, SEND 1
     EXPECT_EQ(Send(code::kPosAxisAbsolute, 1, FloatToBits(100.0F)), "00 00 00 00 00 1F 00 00");  // 50
-    Idle();                                                                         // 60 ms: 10.0
-    pac_.PowerCycle(65ms);
+    Idle();                                                                         // 60 ms: 0.5
+    pac_.PowerCycle(65ms);  // 15 ms into the ramp of 10000 AE/s^2: 5000 * 0.015^2 = 1.125
     EXPECT_FALSE(pac_.Axes().Motion(1).Moving());
-    EXPECT_EQ(pac_.Axes().Motion(1).Position(), 15.0);
+    EXPECT_DOUBLE_EQ(pac_.Axes().Motion(1).Position(), 1.125);
     for (int i = 0; i < 3; ++i) Idle();                                              // 70..90 ms
     // 100 ms: booted in home position; the master's SEND (0) equals RF (0): nothing outstanding.
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");

@@ -43,7 +43,7 @@ TEST_F(StatusCommands, GetStateGivesTheDecimalStatusCode) {
 }
 
 TEST_F(StatusCommands, AxisPositionSpeedAndStatus) {
-    pac_.Axes().Motion(2).SetPosition(5000.0);
+    pac_.Axes().Motion(2).Place(now_, 5000.0);
     EXPECT_EQ(Send(code::kGetActualPos, 2), "45 9C 40 00 00 01 A0 00");  // 5000.0 (not 45 48 00 00)
     EXPECT_EQ(Send(code::kGetStatusAxis, 2), "00 00 00 00 00 01 20 00");  // standing, in position
     EXPECT_EQ(Send(code::kGetActualSpeed, 2), "00 00 00 00 00 01 A0 00");
@@ -57,15 +57,16 @@ TEST_F(StatusCommands, AxisPositionSpeedAndStatus) {
 
 TEST_F(StatusCommands, AxisStatusWhileMovingAndAfterAStop) {
     GoOnline();                                                       // 0 ms, SEND 1
+    // Ramps of 10000 AE/s^2 (axis parameter 6): 10000 t AE/s and 5000 t^2 AE after t s.
     Send(code::kStartAxisRelative, 2, FloatToBits(100.0F));          // 10 ms, SEND 0
     EXPECT_EQ(Send(code::kGetStatusAxis, 2), "00 00 00 01 00 1F A0 00");     // 20 ms: moving
     EXPECT_EQ(Send(code::kGetStatusAllAxis), "00 00 00 02 00 1F 20 00");     // bit 1 = axis 2
-    EXPECT_EQ(Send(code::kGetActualSpeed, 2), "44 7A 00 00 00 1F A0 00");    // 1000.0 AE/s
-    EXPECT_EQ(Send(code::kGetActualPos, 2), "42 20 00 00 00 1F 20 00");      // 50 ms: 40.0
-    pac_.Axes().Motion(2).Halt(now_);
+    EXPECT_EQ(Send(code::kGetActualSpeed, 2), "43 96 00 00 00 1F A0 00");    // 40 ms: 300.0 AE/s
+    EXPECT_EQ(Send(code::kGetActualPos, 2), "41 00 00 00 00 1F 20 00");      // 50 ms: 8.0
+    pac_.Axes().Motion(2).EmergencyStop(now_);
     EXPECT_EQ(Send(code::kGetStatusAxis, 2), "00 00 00 02 00 1F A0 00");     // was stopped
     EXPECT_EQ(Send(code::kGetStatusAllAxis), "00 00 00 00 00 1F 20 00");
-    pac_.Axes().Motion(1).SetMalfunction(true);
+    pac_.Axes().RaiseAxisError(1, now_, 500);
     EXPECT_EQ(Send(code::kGetStatusAxis, 1), "00 00 00 04 00 1F A0 00");     // malfunction
 }
 
@@ -77,10 +78,10 @@ TEST_F(StatusCommands, SystemElements) {
     EXPECT_EQ(Send(code::kGetSystemFlag, 51), "00 00 00 01 00 01 20 00");
     pac_.Axes().Motion(1).SetReferenced(false);
     EXPECT_EQ(Send(code::kGetSystemFlag, 51), "00 00 00 00 00 01 A0 00");
-    pac_.Axes().Motion(2).SetMalfunction(true);
+    pac_.Axes().RaiseAxisError(2, now_, 500);
     EXPECT_EQ(Send(code::kGetSystemNReg, 72), "00 00 00 04 00 01 20 00");
     EXPECT_EQ(Send(code::kGetSystemFlag, 232), "00 00 00 01 00 01 A0 00");
-    pac_.Axes().Motion(2).SetPosition(200.0);
+    pac_.Axes().Motion(2).Place(now_, 200.0);
     EXPECT_EQ(Send(code::kGetSystemRReg, 72), "43 48 00 00 00 01 20 00");
     // Plain storage elsewhere.
     pac_.Io().systemFlags.Set(5, true);

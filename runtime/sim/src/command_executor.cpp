@@ -64,6 +64,8 @@ CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanose
         case code::kStopAxis:
         case code::kStartAxisAbsolute:
         case code::kStartAxisRelative:
+            // 2.7 note: with axis modules configured, the axes move only through them.
+            if (state_.axisModules > 0) return Fail(error::kInadmissibleCommand);
             return OnlineCommand(c, now, pending);
         default:
             return ElementCommand(c);
@@ -73,8 +75,9 @@ CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanose
 CommandResult CommandExecutor::Poll(const PendingCommand& pending, std::chrono::nanoseconds /*now*/) {
     switch (pending.kind) {
         case PendingCommand::Kind::kAxisMotion: {
-            const LinearAxis& axis = state_.axes.Motion(pending.axis);
-            return CommandResult{Real(axis.Position()), error::kNone, !axis.Moving()};
+            // A move ends in position (the tolerance window of the axis), a stop once the axis stands.
+            const ServoAxis& axis = state_.axes.Motion(pending.axis);
+            return CommandResult{Real(axis.Position()), error::kNone, !axis.JobActive() && !axis.Moving()};
         }
         case PendingCommand::Kind::kModeChange:
             // Ends when the status settles, whatever it settles on (a stop may turn into a
@@ -216,7 +219,7 @@ CommandResult CommandExecutor::StatusCommand(const MasterFrame& c) {
     }
     const int axis = c.parameter;
     if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
-    const LinearAxis& motion = state_.axes.Motion(axis);
+    const ServoAxis& motion = state_.axes.Motion(axis);
     const ParameterTable& parameters = state_.axes.Parameters(axis);
     switch (c.code) {
         case code::kGetActualPos: return Ack(Real(motion.Position()));
@@ -272,7 +275,7 @@ CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::
     }
     const int axis = c.parameter;
     if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
-    LinearAxis& motion = state_.axes.Motion(axis);
+    ServoAxis& motion = state_.axes.Motion(axis);
     switch (c.code) {
         case code::kPutNoReference:
             motion.SetReferenced(true);
@@ -289,15 +292,15 @@ CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::
                 return Fail(error::kValueOutsideRange);
             }
             if (isSpeed) {
-                motion.SetSpeed(value);
+                state_.axes.SetSessionSpeed(axis, value);
             } else {
-                motion.SetDeceleration(value);  // this linear model ramps only when braking
+                state_.axes.SetSessionAcceleration(axis, value);  // one parameter for both ramps
             }
             return Ack(c.data);
         }
         case code::kStopAxis: {
             // 5.2.6.13: acknowledged with end of processing only when the axis stands still.
-            motion.Stop(now);
+            motion.Interrupt(now);
             if (motion.Moving()) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
             return CommandResult{Real(motion.Position()), error::kNone, !motion.Moving()};
         }
@@ -314,19 +317,16 @@ CommandResult CommandExecutor::StartMove(const MasterFrame& c, std::chrono::nano
     if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
     const float value = BitsToFloat(c.data);
     if (!std::isfinite(value)) return Fail(error::kValueOutsideRange);
-    LinearAxis& motion = state_.axes.Motion(axis);
-    if (motion.Moving()) return Fail(error::kAxisStillMoves);
-    if (!motion.Referenced()) return Fail(error::kNoReferencePoint);
+    ServoAxis& motion = state_.axes.Motion(axis);
     const double start = motion.Position();
-    const double target = relative ? start + static_cast<double>(value) : static_cast<double>(value);
-    const ParameterTable& parameters = state_.axes.Parameters(axis);
-    const auto low = parameters.RealValue(axisparam::kMinTraverseArea);
-    const auto high = parameters.RealValue(axisparam::kMaxTraverseArea);
-    if ((low && target < *low) || (high && target > *high)) return Fail(error::kPositionOutsideRange);
-
-    motion.MoveTo(now, target);
+    // The axis checks the rest (46 axis error, 55 not switched on, 56 displaced, 42 still moves, 43 no
+    // reference, 65 outside the traverse range, 64 into an actuated limit switch) with the session dynamics.
+    const Dynamics& dynamics = state_.axes.SessionDynamics(axis);
+    const std::uint16_t refusal = relative ? motion.MoveRelative(now, value, dynamics)
+                                           : motion.MoveAbsolute(now, value, dynamics);
+    if (refusal != 0) return Fail(refusal);
     // 5.2.6.6: the acknowledgement data is the start position; 0A94/0A95 end processing at once.
-    const bool finished = !waitForEnd || !motion.Moving();
+    const bool finished = !waitForEnd || (!motion.JobActive() && !motion.Moving());
     if (!finished) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
     return CommandResult{Real(start), error::kNone, finished};
 }

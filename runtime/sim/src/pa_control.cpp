@@ -19,6 +19,14 @@ const PaControlConfig& CheckedConfig(const PaControlConfig& config) {
     return config;
 }
 
+int CheckedAxisModules(const ModuleLayout& layout, const PaControlConfig& config) {
+    if (config.axisCapacity < layout.axisModules) {
+        throw std::invalid_argument("PaControl: " + std::to_string(layout.axisModules) +
+                                    " axis modules need an axis capacity of at least as many axes");
+    }
+    return layout.axisModules;
+}
+
 }  // namespace
 
 std::uint64_t CommandCounters::Count(std::uint16_t code) const {
@@ -30,7 +38,8 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
     : bus_(bus),
       layout_(bus.Layout()),
       config_(CheckedConfig(config)),
-      state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters),
+      state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters,
+             config_.axisMachine),
       modes_(state_, config_.modes),
       executor_(state_, modes_),
       ctrl_(modes_, state_),
@@ -38,9 +47,25 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       bootEnd_(config_.bootTime),
       lastReply_(layout_.Bytes()),
       lastMaster_(layout_.Bytes()) {
+    state_.axisModules = CheckedAxisModules(layout_, config_);
+    modules_.assign(static_cast<std::size_t>(state_.axisModules), AxisModule(config_.axisModule));
     for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
         state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
     }
+}
+
+AxisModule& PaControl::Module(int axis) {
+    if (axis < 1 || axis > static_cast<int>(modules_.size())) {
+        throw std::out_of_range("PaControl: no axis module for axis " + std::to_string(axis));
+    }
+    return modules_[static_cast<std::size_t>(axis - 1)];
+}
+
+const AxisModule& PaControl::Module(int axis) const {
+    if (axis < 1 || axis > static_cast<int>(modules_.size())) {
+        throw std::out_of_range("PaControl: no axis module for axis " + std::to_string(axis));
+    }
+    return modules_[static_cast<std::size_t>(axis - 1)];
 }
 
 std::chrono::nanoseconds PaControl::CycleTime() const {
@@ -89,11 +114,40 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
             record.newCommand = true;
             Execute(command, now);
         }
+        // Last, so that a mode change by CTRL or CMD in this cycle applies to the axis modules at once. Like
+        // the CTRL module, they take no control word from an all-zero image (the emergency stop has halted
+        // the axes); they report all the same.
+        ServeAxisModules(master, now);
     }
 
-    WriteReply(now, ComposeReply());
+    WriteReply(now, ComposeReply(now));
     record.reply = lastReply_;
     log_.Add(record);
+}
+
+AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
+    AxisModuleContext context;
+    context.now = now;
+    // Jobs in ONLINE proper; Axis ON, DISABLE DRIVE and reset axis error in every ONLINE status.
+    if (state_.operatingStatus == status::kOnline) {
+        context.service = AxisModuleService::kJobs;
+    } else if (state_.CurrentMode() == Mode::kOnline) {
+        context.service = AxisModuleService::kControl;
+    }
+    context.integerFormat = state_.integerFormat;
+    context.inputs = &state_.elements.inputs;
+    // 2.7.4.13: the group is every axis with a module.
+    for (int axis = 1; axis <= state_.axisModules; ++axis) {
+        if (state_.axes.Motion(axis).DisplacedDuringOff()) context.groupDisplaced = true;
+    }
+    return context;
+}
+
+void PaControl::ServeAxisModules(const ProcessImage& master, std::chrono::nanoseconds now) {
+    const AxisModuleContext context = ModuleContext(now);
+    for (int axis = 1; axis <= state_.axisModules; ++axis) {
+        Module(axis).Serve(master.Module12(layout_.AxisOffset(axis)), state_.axes.Motion(axis), context);
+    }
 }
 
 void PaControl::PowerCycle(std::chrono::nanoseconds now) {
@@ -101,11 +155,8 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     booted_ = false;
     bootEnd_ = now + config_.bootTime;
 
-    state_.axes.HaltAll(now);
-    for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
-        state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
-    }
-    state_.axes.ApplyParametersToAll();
+    state_.axes.Restart(now, config_.referencedAtPowerOn);
+    for (AxisModule& module : modules_) module.Reset();
     Elements& e = state_.elements;
     if (!config_.retention.intRegisters) e.intRegisters.Clear();
     if (!config_.retention.realRegisters) e.realRegisters.Clear();
@@ -175,11 +226,14 @@ void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now
     protocol_.Acknowledge(command.send, result);
 }
 
-ProcessImage PaControl::ComposeReply() const {
+ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {
     ProcessImage reply(layout_.Bytes());
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
-    // The axis modules are not served yet: they read as zero.
+    const AxisModuleContext context = ModuleContext(now);
+    for (int axis = 1; axis <= state_.axisModules; ++axis) {
+        reply.SetModule12(layout_.AxisOffset(axis), Module(axis).Reply(state_.axes.Motion(axis), context));
+    }
     return reply;
 }
 

@@ -16,10 +16,10 @@ namespace pac::sim {
 
 struct ControllerState {
     ControllerState(const ElementCounts& counts, const std::vector<ParameterSpec>& systemSpecs, int axisCapacity,
-                    const std::vector<ParameterSpec>& axisSpecs)
+                    const std::vector<ParameterSpec>& axisSpecs, const ServoAxisConfig& axisMachine = {})
         : elements(counts),
           systemParameters(ParameterType::kInt32, systemSpecs),
-          axes(axisCapacity, axisSpecs) {}
+          axes(axisCapacity, axisSpecs, axisMachine) {}
 
     // Addressable axes: system parameter 2 ("Number of axes"), within 0..axes.Capacity().
     int NumberOfAxes() const {
@@ -33,6 +33,7 @@ struct ControllerState {
     std::uint16_t systemError = 0;  // PA-CONTROL error number (1909); FE = systemError != 0
     bool integerFormat = false;     // 2.5.3: axis positions and R registers as integers x1000
     bool batteryOk = true;          // 2.5.2 status word bit 1
+    int axisModules = 0;            // axis modules in the bus layout: CMD axis commands blocked (2.7 note)
     Elements elements;
     ParameterTable systemParameters;
     AxisGroup axes;

@@ -2,9 +2,10 @@
 // 4.2, chapter 5), and where the bus layout has them the CTRL interface (2.5) and the axis modules (2.7).
 // It runs in its own cycle: each Cycle(now) reads the master's process image from the bus, steps the
 // operating-mode machine, applies the CTRL control word, follows a command that is still processing,
-// recognises a SEND flag change against the last acknowledged SEND (RF), carries out the command and
-// writes its reply image. See docs/simulator.md for every decision where the manual is silent
-// (power-up, operating modes, emergency stop, SEND toggles while processing, retention).
+// recognises a SEND flag change against the last acknowledged SEND (RF), carries out the command, serves
+// the axis modules (AxisModule, one per axis) and writes its reply image. See docs/simulator.md for every
+// decision where the manual is silent (power-up, operating modes, emergency stop, SEND toggles while
+// processing, retention, axis modules).
 #pragma once
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "pac/sim/axis_module.hpp"
 #include "pac/sim/bus.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/cmd_protocol.hpp"
@@ -44,7 +46,9 @@ struct PaControlConfig {
     ElementCounts counts{};
     std::vector<ParameterSpec> systemParameters = DefaultSystemParameters();
     std::vector<ParameterSpec> axisParameters = DefaultAxisParameters();
-    int axisCapacity = 16;  // axes held; system parameter 2 says how many are addressable
+    int axisCapacity = 16;  // axes held (>= the layout's axis modules); system parameter 2: addressable by CMD
+    ServoAxisConfig axisMachine{};  // the machine around every axis (switches, homing, enable mode, ...)
+    AxisModuleConfig axisModule{};  // how the axis modules show a CMD error at the next Start edge
     RetentionRule retention{};
     bool referencedAtPowerOn = true;
     ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
@@ -106,6 +110,12 @@ public:
     // (1..16#1FFF, std::invalid_argument otherwise). One shot; a power cycle drops it.
     void InjectCommandError(std::uint16_t errorNumber);
 
+    // The axis module of axis `axis` (1..Layout().axisModules; std::out_of_range otherwise).
+    AxisModule& Module(int axis);
+    const AxisModule& Module(int axis) const;
+    // G123 (2.7.3.10): the input the axis module of `axis` watches from now on; back to 1 when ONLINE starts.
+    void SetConditionInput(int axis, int input) { Module(axis).SetConditionInput(input); }
+
     Elements& Io() { return state_.elements; }  // inputs to set, outputs/flags/registers to read
     const Elements& Io() const { return state_.elements; }
     ParameterTable& SystemParameters() { return state_.systemParameters; }
@@ -124,7 +134,9 @@ private:
     void EmergencyStop(std::chrono::nanoseconds now);
     void Execute(const MasterFrame& command, std::chrono::nanoseconds now);
     void WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply);
-    ProcessImage ComposeReply() const;
+    void ServeAxisModules(const ProcessImage& master, std::chrono::nanoseconds now);
+    AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
+    ProcessImage ComposeReply(std::chrono::nanoseconds now) const;
 
     Bus& bus_;
     ModuleLayout layout_;
@@ -138,6 +150,7 @@ private:
     ExchangeLog log_;
     CommandCounters counters_;
     std::optional<std::uint16_t> injectedError_;
+    std::vector<AxisModule> modules_;  // module k serves axis k
 
     bool booted_ = false;
     std::chrono::nanoseconds bootEnd_{0};

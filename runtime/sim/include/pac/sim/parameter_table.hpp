@@ -38,9 +38,12 @@ constexpr std::uint16_t kStopInput = 4;
 
 namespace axisparam {
 constexpr std::uint16_t kTraverseSpeed = 1;
+constexpr std::uint16_t kReferenceSpeed = 2;
+constexpr std::uint16_t kCreepSpeed = 4;
 constexpr std::uint16_t kAcceleration = 6;
 constexpr std::uint16_t kMinTraverseArea = 8;
 constexpr std::uint16_t kMaxTraverseArea = 9;
+constexpr std::uint16_t kRampType = 30;
 }  // namespace axisparam
 
 class ParameterTable {

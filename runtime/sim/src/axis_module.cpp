@@ -1,0 +1,262 @@
+// One axis module in ONLINE mode (see axis_module.hpp and docs/simulator.md "Axis modules (2.7)").
+#include "pac/sim/axis_module.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+
+#include "pac/sim/command_table.hpp"
+#include "pac/sim/image8.hpp"
+
+namespace pac::sim {
+
+static_assert(AxisModule::kInadmissible == error::kInadmissibleCommand);
+
+namespace {
+
+using namespace axis_control;
+
+bool Rising(std::uint32_t control, std::uint32_t last, std::uint32_t bit) {
+    return (control & bit) != 0 && (last & bit) == 0;
+}
+
+bool SingleBit(std::uint32_t bits) { return bits != 0 && (bits & (bits - 1)) == 0; }
+
+}  // namespace
+
+// ---- the bytes ----------------------------------------------------------------------------------------
+
+AxisModuleCommand AxisModuleCommand::Decode(const Image12& module) {
+    AxisModuleCommand c;
+    c.control = ReadDword(module, 0);
+    c.accelerationPerMille = ReadWordAt(module, 4);
+    c.speedPerMille = ReadWordAt(module, 6);
+    c.position = ReadDword(module, 8);
+    return c;
+}
+
+Image12 AxisModuleCommand::Encode() const {
+    Image12 module{};
+    WriteDword(module, 0, control);
+    WriteWordAt(module, 4, accelerationPerMille);
+    WriteWordAt(module, 6, speedPerMille);
+    WriteDword(module, 8, position);
+    return module;
+}
+
+AxisModuleReply AxisModuleReply::Decode(const Image12& module) {
+    AxisModuleReply r;
+    r.status = ReadDword(module, 0);
+    r.cmdError = ReadWordAt(module, 4);
+    r.axisError = ReadWordAt(module, 6);
+    r.position = ReadDword(module, 8);
+    return r;
+}
+
+Image12 AxisModuleReply::Encode() const {
+    Image12 module{};
+    WriteDword(module, 0, status);
+    WriteWordAt(module, 4, cmdError);
+    WriteWordAt(module, 6, axisError);
+    WriteDword(module, 8, position);
+    return module;
+}
+
+std::uint32_t EncodeModulePosition(double position, bool integerFormat) {
+    if (!integerFormat) return FloatToBits(static_cast<float>(position));
+    const double scaled = std::round(position * 1000.0);
+    constexpr double kMin = std::numeric_limits<std::int32_t>::min();
+    constexpr double kMax = std::numeric_limits<std::int32_t>::max();
+    if (std::isnan(scaled)) return 0;
+    const double clamped = scaled < kMin ? kMin : (scaled > kMax ? kMax : scaled);
+    return static_cast<std::uint32_t>(static_cast<std::int32_t>(clamped));
+}
+
+double DecodeModulePosition(std::uint32_t raw, bool integerFormat) {
+    if (!integerFormat) return static_cast<double>(BitsToFloat(raw));
+    return static_cast<double>(static_cast<std::int32_t>(raw)) / 1000.0;
+}
+
+// ---- the module ---------------------------------------------------------------------------------------
+
+AxisModule::AxisModule(AxisModuleConfig config) : config_(config) {}
+
+void AxisModule::Reset() { *this = AxisModule(config_); }
+
+void AxisModule::SetConditionInput(int input) {
+    if (input < 1) throw std::invalid_argument("AxisModule::SetConditionInput: input must be >= 1");
+    conditionInput_ = input;
+}
+
+Image12 AxisModule::Cycle(const Image12& master, ServoAxis& axis, const AxisModuleContext& context) {
+    Serve(master, axis, context);
+    return Reply(axis, context);
+}
+
+void AxisModule::Serve(const Image12& master, ServoAxis& axis, const AxisModuleContext& context) {
+    const AxisModuleCommand command = AxisModuleCommand::Decode(master);
+    const std::uint32_t control = command.control;
+    axis.Update(context.now);
+    if (pendingCmdError_ != 0) {  // kOneCycleClear: the refusal of the last cycle's Start edge
+        cmdError_ = pendingCmdError_;
+        pendingCmdError_ = 0;
+    }
+    FollowMode(axis, context);
+    if (context.service != AxisModuleService::kReportOnly) ApplyDrive(control, axis, context);
+    FollowJob(control, axis, context);
+    // 2.7.4.8: ACTIVE falls at the earliest when the job is complete and Start is 0 again.
+    if (active_ && jobComplete_ && (control & kStart) == 0) active_ = false;
+    // 2.7.3.2: a job is recognised on the Start edge while none is processed; an edge during a job is lost.
+    if (Rising(control, lastControl_, kStart) && !active_) StartEdge(command, axis, context);
+    lastControl_ = control;
+}
+
+void AxisModule::FollowMode(ServoAxis& axis, const AxisModuleContext& context) {
+    const bool online = context.service != AxisModuleService::kReportOnly;
+    if (online && !served_) conditionInput_ = kDefaultConditionInput;  // 2.7.3.10: input 1 when ONLINE starts
+    if (!online && served_) {
+        // Outside ONLINE the axis is operational again, whatever Axis ON said (2.7.2, last note).
+        const auto now = context.now;
+        axis.SetDriveDisabled(now, false);
+        axis.SetAxisOn(now, true);
+    }
+    served_ = online;
+}
+
+void AxisModule::ApplyDrive(std::uint32_t control, ServoAxis& axis, const AxisModuleContext& context) {
+    const auto now = context.now;
+    // Levels: the axis follows bits 0 and 1 every cycle; switching off brakes a moving axis first.
+    const bool disable = (control & kDisableDrive) != 0;
+    if (axis.DriveDisabled() != disable) axis.SetDriveDisabled(now, disable);
+    const bool on = (control & kAxisOn) != 0;
+    if (axis.AxisOn() != on) axis.SetAxisOn(now, on);
+    // Edge: an error raised between two cycles is always shown for at least one cycle, even with bit 16
+    // held; a reset refused because the cause persists (ServoAxis::ResetAxisError) needs a new edge.
+    if (Rising(control, lastControl_, kResetAxisError)) axis.ResetAxisError(now);
+}
+
+void AxisModule::FollowJob(std::uint32_t control, ServoAxis& axis, const AxisModuleContext& context) {
+    if (job_ == 0 || jobComplete_) return;
+    if (axis.JobActive() && !interrupted_) {
+        if ((control & job_) == 0) {
+            // 2.7.3 note: removing the traverse bit interrupts the job (the axis brakes, HALT).
+            axis.Interrupt(context.now);
+            interrupted_ = true;
+        } else if (condition_ != Condition::kNone && !ConditionHolds(context)) {
+            // 2.7.3.10 / 2.7.3.11: the input left the condition: the traverse ends, braking from here.
+            axis.Interrupt(context.now);
+            interrupted_ = true;
+            stoppedByG123_ = true;
+        }
+    }
+    if (!axis.JobActive()) jobComplete_ = true;
+}
+
+void AxisModule::StartEdge(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context) {
+    const std::uint16_t refusal = TakeOver(command, axis, context);
+    if (refusal == 0) {
+        cmdError_ = 0;
+        pendingCmdError_ = 0;
+        active_ = true;  // taken over: ACTIVE in the same cycle, even for a job that is already complete
+        return;
+    }
+    ShowCmdError(refusal);
+}
+
+void AxisModule::ShowCmdError(std::uint16_t number) {
+    if (config_.cmdErrorRestart == CmdErrorRestart::kSameCycle) {
+        cmdError_ = number;
+    } else {
+        cmdError_ = 0;
+        pendingCmdError_ = number;
+    }
+}
+
+std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& axis,
+                                   const AxisModuleContext& context) {
+    if (context.service != AxisModuleService::kJobs) return kInadmissible;
+    const std::uint32_t control = command.control;
+    const std::uint32_t traverse = control & kTraverseBits;
+    if (!SingleBit(traverse)) return kInadmissible;  // none, or several traverse bits (2.7.2 notes)
+    const bool whileOne = (control & kWhileInputOne) != 0;
+    const bool whileZero = (control & kWhileInputZero) != 0;
+    const Condition condition =
+        whileOne ? Condition::kWhileOne : (whileZero ? Condition::kWhileZero : Condition::kNone);
+    if (whileOne && whileZero) return kInadmissible;
+    if (condition != Condition::kNone && traverse != kAbsolute && traverse != kRelative) return kInadmissible;
+
+    const auto now = context.now;
+    const double position = DecodeModulePosition(command.position, context.integerFormat);
+    // Invalid per mille: dynamics the axis refuses with 41, in its own order of checks (after 46/55/56/42).
+    const Dynamics dynamics = ScaledDynamics(axis.Config(), command.speedPerMille, command.accelerationPerMille)
+                                  .value_or(Dynamics{0.0, 0.0, 0.0});
+    const JobOptions options{(control & kLimitSwitchMonitoringOff) == 0};  // bit 17, taken over with Start
+
+    std::uint16_t result = axis_error::kNone;
+    switch (traverse) {
+        case kHome: result = axis.Home(now); break;
+        case kSetReferenced: result = axis.SetPositionReferenced(now, position); break;
+        case kShift: result = axis.ShiftPosition(now, position); break;
+        case kAbsolute: result = axis.MoveAbsolute(now, position, dynamics, options); break;
+        case kRelative: result = axis.MoveRelative(now, position, dynamics, options); break;
+        case kJogPositive: result = axis.Jog(now, Direction::kPositive, std::fabs(position), dynamics, options); break;
+        case kJogNegative: result = axis.Jog(now, Direction::kNegative, std::fabs(position), dynamics, options); break;
+        case kDeleteShift: result = axis.DeleteShift(now); break;
+        case kResetDisplaced: result = axis.ResetDisplaced(now); break;
+        case kToMaxRange: result = axis.MoveToMaxRange(now, dynamics, options); break;
+        default: result = axis.MoveToMinRange(now, dynamics, options); break;  // kToMinRange
+    }
+    if (result != axis_error::kNone) return result;
+
+    job_ = traverse;
+    interrupted_ = false;
+    condition_ = condition;
+    if (condition != Condition::kNone) {
+        stoppedByG123_ = false;  // bit 11 is about the last job with G123
+        if (!ConditionHolds(context)) {
+            // "It will not start at all and is thus terminated already": taken over and ended in this cycle.
+            axis.EmergencyStop(now);
+            interrupted_ = true;
+            stoppedByG123_ = true;
+        }
+    }
+    jobComplete_ = !axis.JobActive();
+    return 0;
+}
+
+bool AxisModule::ConditionHolds(const AxisModuleContext& context) const {
+    const bool input = context.inputs != nullptr && context.inputs->Contains(conditionInput_) &&
+                       context.inputs->Get(conditionInput_);
+    return condition_ == Condition::kWhileOne ? input : !input;
+}
+
+Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& context) const {
+    using namespace axis_status;
+    const DriveState drive = axis.Drive();
+    std::uint32_t status = 0;
+    if (drive == DriveState::kEnabled) status |= kDriveEnabled;
+    if (drive == DriveState::kHalt || (drive == DriveState::kEnabled && axis.Interrupted())) status |= kHalt;
+    if (!IsPowered(drive)) status |= kDriveDisabled;
+    if (drive == DriveState::kSafe) status |= kSafe;
+    if (drive == DriveState::kIdle) status |= kIdle;
+    if (drive == DriveState::kDisabled) status |= kDisabled;
+    if (axis.Fault()) status |= kFault | kAxisError;
+    if (active_) status |= kActive;
+    if (axis.Referenced()) status |= kReferenced;
+    if (!axis.NegativeLimitSwitch()) status |= kNegativeLimitSwitch;
+    if (!axis.PositiveLimitSwitch()) status |= kPositiveLimitSwitch;
+    if (stoppedByG123_) status |= kStoppedByG123;
+    if (axis.DisplacedDuringOff()) status |= kDisplaced;
+    if (axis.DisplacedDuringOff() || context.groupDisplaced) status |= kGroupDisplaced;
+    if (cmdError_ != 0) status |= kCmdError;
+
+    AxisModuleReply reply;
+    reply.status = status;
+    reply.cmdError = cmdError_;
+    reply.axisError = axis.AxisError();
+    reply.position = EncodeModulePosition(axis.Position(), context.integerFormat);
+    return reply.Encode();
+}
+
+}  // namespace pac::sim
