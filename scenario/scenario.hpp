@@ -38,6 +38,7 @@ struct ControllerSetup {
     std::map<int, float> realRegisters;           // R
     std::map<int, bool> inputs;
     std::map<int, std::int32_t> systemParameters;  // 0700 values, e.g. 4: the external stop input
+    bool axesReferenced = true;  // at power-on (an absolute measuring system); false: G25 first
 };
 
 // A DWORD as the scenario wrote it: an integer, or a REAL carried as its IEEE-754 bits.

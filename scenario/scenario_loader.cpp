@@ -131,7 +131,8 @@ private:
 
     ControllerSetup ReadController(const Json& value, const std::string& path) const {
         const json::Object controller(
-            value, path, {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters"}, "controller");
+            value, path, {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced"},
+            "controller");
         const pac::sim::ElementCounts counts;
         ControllerSetup setup;
         if (const Json* status = controller.Find("operating_status")) {
@@ -151,6 +152,9 @@ private:
         if (const Json* inputs = controller.Find("inputs")) {
             setup.inputs = ReadNumbered<bool>(*inputs, controller.PathOf("inputs"), counts.inputs, "input",
                                               [](const Json& v, const std::string& p) { return json::Bool(v, p); });
+        }
+        if (const Json* referenced = controller.Find("axes_referenced")) {
+            setup.axesReferenced = json::Bool(*referenced, controller.PathOf("axes_referenced"));
         }
         if (const Json* parameters = controller.Find("system_parameters")) {
             // The simulator's table knows which numbers exist and their limits; the runner reports a refusal.

@@ -52,6 +52,12 @@ E_PAC_MOVECONDITION MoveCondition(const std::string& name) {
     return values[IndexOf(kMoveConditionNames, name)];
 }
 
+pac::sim::PaControlConfig ControllerConfig(const ControllerSetup& setup) {
+    pac::sim::PaControlConfig config;
+    config.referencedAtPowerOn = setup.axesReferenced;
+    return config;
+}
+
 pac::test::PlcBenchTiming BenchTiming(const Timing& t) {
     return {milliseconds(t.plcCycleMs), milliseconds(t.pacCycleMs), t.latencyCycles, milliseconds(t.jitterMs),
             t.seed, milliseconds(t.bootMs)};
@@ -65,7 +71,7 @@ public:
         : scenario_(scenario),
           observer_(observer),
           axes_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AXIS)),
-          plc_(BenchTiming(scenario.timing), pac::sim::PaControlConfig{}, Layout(scenario.modules)) {
+          plc_(BenchTiming(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
         plc_.Call(cmd_);
         if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
         for (std::size_t k = 0; k < axes_.size(); ++k) {

@@ -102,6 +102,7 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
     for (const auto& [n, value] : setup.systemParameters) {
         add("system parameter " + std::to_string(n) + " = " + std::to_string(value));
     }
+    if (scenario.modules.axes > 0 && !setup.axesReferenced) add("axes not referenced at power-on");
     out_ << "  controller: " << (items.empty() ? "power-on state" : items) << "\n";
     const Modules& m = scenario.modules;
     out_ << "  modules: CMD";

@@ -64,7 +64,7 @@ TEST(ScenarioCli, DemoExitsZero) {
     const Process run = RunBinary("'" + kDemo + "'");
     EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_EQ(run.err, "");
-    EXPECT_NE(run.out.find("Result: 12 steps, 7 commands, 2 mode requests: all expectations met"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met"), std::string::npos) << run.out;
 }
 
 TEST(ScenarioCli, FailedExpectationExitsOne) {
@@ -104,7 +104,7 @@ TEST(ScenarioCli, ASetupTheSimulatorRejectsExitsTwoBeforeAnyOutput) {
 TEST(ScenarioCli, CheckOnlyValidates) {
     const Process run = RunBinary("--check '" + kDemo + "'");
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_EQ(run.out, kDemo + ": valid scenario, 12 steps\n");
+    EXPECT_EQ(run.out, kDemo + ": valid scenario, 16 steps\n");
     EXPECT_EQ(Cli({"--check", TempFile("bad.json", "{")}).exitCode, pac::scenario::kExitRefused);
 }
 

@@ -170,7 +170,7 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
               R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"n_register": {}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.n_register: unknown key "n_register" (controller has "operating_status", )"
-              R"("n_registers", "r_registers", "inputs" or "system_parameters"))");
+              R"("n_registers", "r_registers", "inputs", "system_parameters" or "axes_referenced"))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "parm": 3})")),
               R"($.steps[0].parm: unknown key "parm" (a command step has "command", "param", "data", "timeout_ms", )"
               R"("end_timeout_ms", "expect" or "note"))");

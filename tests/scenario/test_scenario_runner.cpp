@@ -57,10 +57,11 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     const ScenarioRun run(FromFile("demo.json"));
     const std::string& out = run.timeline.str();
     EXPECT_TRUE(run.report.Passed()) << out;
-    EXPECT_EQ(run.report.steps.size(), 12u);
+    EXPECT_EQ(run.report.steps.size(), 16u);
     EXPECT_EQ(run.report.Commands(), 7u);
     EXPECT_EQ(run.report.Requests(), 2u);
-    EXPECT_NE(out.find("Result: 12 steps, 7 commands, 2 mode requests: all expectations met"), std::string::npos) << out;
+    EXPECT_EQ(run.report.AxisJobs(), 5u);
+    EXPECT_NE(out.find("Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met"), std::string::npos) << out;
     // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4).
     EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
     // R1 = 640.0 is 44 20 00 00 (NOTES.md), printed as a REAL because the step expects one.
@@ -75,6 +76,16 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     EXPECT_NE(out.find("| 00 07 00 00 00 00 00 00 | 04 03 00 00 00 00 00 00 | 16#0007 16#0403"), std::string::npos) << out;
     EXPECT_NE(out.find("| 00 03 00 00 00 00 00 00 | 04 03 00 00 00 00 00 00 | 16#0003 16#0403"), std::string::npos) << out;
     EXPECT_NE(out.find("AckData 31 (16#0000001F): as expected"), std::string::npos) << out;
+    // Axis 1 before its reference run: Axis ON + Start + absolute (16#45) with 10.0, refused with
+    // CMD error 43 (status bit 14); the reference run then ends Done although bit 14 was still set.
+    EXPECT_NE(out.find("|    1 | 16#00000045 1000 1000     10.000 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 16#00004601     43     0      0.000 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("=> axis 1: Error in scan 76 (152 ms), 3 scans after the step began; ErrorID 43 PAC_ERR_NO_REFERENCE"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("=> axis 1: Done in scan 291 (582 ms), 78 scans after the step began; position 50.000, referenced"),
+              std::string::npos)
+        << out;
     for (const auto& step : run.report.steps) {
         if (!step.outcome) continue;
         EXPECT_TRUE(step.outcome->finished);
@@ -214,4 +225,18 @@ TEST(ScenarioRunner, ACtrlRequestTheControllerIgnoresEndsInTheFbsTimeout) {
     EXPECT_EQ(timeout.endScan - timeout.edgeScan, 50) << out;
     EXPECT_EQ(run.report.steps[1].request->endScan, run.report.steps[1].request->edgeScan) << "refused in the edge scan";
     EXPECT_NE(out.find("ErrorID 16#8009 PAC_LIB_ERR_REQUEST_TIMEOUT"), std::string::npos) << out;
+}
+
+TEST(ScenarioRunner, AnAxisExpectationNotMetSaysWhatWasSeen) {
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0}, "modules": {"ctrl": true, "axes": 1},
+      "controller": {"inputs": {"1": true}, "system_parameters": {"4": 1}},
+      "steps": [{"ctrl": "PAC_REQ_START_ONLINE", "expect": {"done": true}},
+                {"axes": [{"axis": 1, "enable": true, "command": "PAC_AX_MOVE_RELATIVE", "position": 5.0,
+                           "expect": {"done": true, "position": 5.5, "referenced": false}}]}]})"));
+    const std::string& out = run.timeline.str();
+    EXPECT_FALSE(run.report.Passed()) << out;
+    EXPECT_EQ(run.report.FailedSteps(), std::vector<std::size_t>{1}) << out;
+    EXPECT_NE(out.find("  => FAILED: axis 1: Referenced is TRUE, expected FALSE\n"), std::string::npos) << out;
+    EXPECT_NE(out.find("  => FAILED: axis 1: ActualPosition is 5.0000, expected 5.5000 +- 0.001\n"), std::string::npos)
+        << out;
 }

@@ -125,15 +125,24 @@ TEST_F(CtrlInterfaceBooting, PowerCycleInTheMiddleOfAStartRequest) {
         Idle();
         EXPECT_EQ(ReplyHex(), Zeros());
     }
-    // 80 ms: booted in home position. The start bit was high before and after: no edge, no start.
-    EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");
-    EXPECT_EQ(StatusWord(), kHomeWord);
-    EXPECT_EQ(Control(kStartOnline), kHomeWord);
-    EXPECT_EQ(Status(), 1);
-    // The master's next edge starts it.
-    Control(kIdle);
-    Control(kStartOnline);
+    // 80 ms: booted. Before the first word after the boot the bits count as idle, so the start bit the
+    // master still holds is a rising edge: ONLINE starts again (docs/simulator.md).
+    EXPECT_EQ(Idle(), "00 00 00 00 00 1E 20 00");
     EXPECT_EQ(Status(), 30);
+    EXPECT_EQ(Control(kStartOnline), kHomeWord | ctrl::kOnlineActive);
+    EXPECT_EQ(Status(), 31);
+}
+
+TEST_F(CtrlInterfaceBooting, AStartBitInTheFirstWordAfterTheBootIsAnEdge) {
+    // The master's request is out before the controller has seen any control word of it.
+    ctrlWord_ = kStartOnline;
+    for (int i = 0; i < 3; ++i) {  // 0, 10, 20 ms: booting
+        Idle();
+        EXPECT_EQ(ReplyHex(), Zeros());
+    }
+    EXPECT_EQ(Idle(), "00 00 00 00 00 1E 20 00");  // 30 ms: booted, and the first word starts ONLINE
+    EXPECT_EQ(Idle(), "00 00 00 00 00 1F 20 00");
+    EXPECT_EQ(StatusWord(), kHomeWord | ctrl::kOnlineActive);
 }
 
 TEST_F(CtrlInterfaceBooting, PowerCycleInTheMiddleOfAStop) {

@@ -33,7 +33,9 @@ std::uint16_t ModeBits(std::uint8_t s) {
 
 void CtrlInterface::Apply(const Image8& masterModule, std::chrono::nanoseconds now) {
     const std::uint16_t word = ReadWord(masterModule, 0);
-    const std::uint16_t before = previous_.value_or(word);  // no edge on the first word after a boot
+    // Before the first word after a boot the bits count as idle (starts 0, the low-active bits 1): a
+    // master whose very first image carries a request is served (docs/simulator.md).
+    const std::uint16_t before = previous_.value_or(ctrl::kNoRequest);
     previous_ = word;
     auto rose = [&](std::uint16_t bit) { return (word & bit) != 0 && (before & bit) == 0; };
     auto fell = [&](std::uint16_t bit) { return (word & bit) == 0 && (before & bit) != 0; };
