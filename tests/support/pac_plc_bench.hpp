@@ -2,7 +2,8 @@
 // own cycle. Tests and benchmarks add their function blocks with Call(fb) (CMD module), CallCtrl(fb)
 // (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's images in and out around
 // the FB's body exactly as a PLC's I/O image would, so any number of command FBs can share the one
-// CMD interface. The bus carries the modules of `layout` (default: the CMD module alone).
+// CMD interface; CallRaw8 adds a hand-written master program on an 8-byte module. The bus carries the
+// modules of `layout` (default: the CMD module alone).
 #pragma once
 
 #include <chrono>
@@ -62,6 +63,20 @@ public:
     template <class Fb>
     void CallAxis(pac::FbInstance<Fb>& fb, int module, std::function<void()> before = {}) {
         CallOnModule<12>(fb, bus_.Layout().AxisOffset(module), std::move(before));
+    }
+
+    // A hand-written master program on the 8-byte module at `offset` (CMD or CTRL), run where it is
+    // registered: it reads the module's input image and may rewrite the output image the FBs before it
+    // left, e.g. a master that writes zeros where an FB holds low-active bits.
+    void CallRaw8(std::size_t offset,
+                  std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
+        if (!program) throw std::invalid_argument("PacPlcBench::CallRaw8: empty program");
+        if (offset + 8 > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
+        task_.AddProgram([this, offset, program] {
+            pac::sim::Image8 out = toPac_.Module8(offset);
+            program(fromPac_.Module8(offset), out);
+            toPac_.SetModule8(offset, out);
+        });
     }
 
     // After the FBs: the master's image goes out on the bus at the end of each scan.

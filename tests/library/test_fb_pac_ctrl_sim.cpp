@@ -1,0 +1,1261 @@
+// FB_PAC_Ctrl (the library's ST, compiled to C) driving the simulated PA-CONTROL over the simulated bus,
+// with the CMD and the CTRL module (ModuleLayout{true, 0}; manual 2.3.1, 2.5), scan by scan, on the bus
+// timings of the FB_PAC_Cmd simulator tests: PLC cycle 1/2/5/10 ms x PA-CONTROL cycle 1/3/10 ms x
+// latency 0..3 PLC cycles each way, and some jittered buses (the seed is in the test name and in every
+// failure). Every scan checks the PLCopen outputs and the control word on the wire (ScanRules);
+// every Done, error and timeout is checked against the scan window the protocol allows (ProtocolWindow):
+// an exact scan without jitter.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/scan_test.hpp"
+#include "pac/st_program.hpp"
+#include "pac_plc_bench.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using std::chrono::microseconds;
+using std::chrono::milliseconds;
+using std::chrono::nanoseconds;
+namespace sim = pac::sim;
+
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kErrConnectionLost = kGvl["PAC_LIB_ERR_CONNECTION_LOST"];
+const std::uint32_t kErrNotAllowed = kGvl["PAC_LIB_ERR_NOT_ALLOWED"];
+const std::uint32_t kErrRequestTimeout = kGvl["PAC_LIB_ERR_REQUEST_TIMEOUT"];
+
+using Request = E_PAC_CTRLREQUEST;
+constexpr Request kStartOnline = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+constexpr Request kStartAutomatic = E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC;
+constexpr Request kStop = E_PAC_CTRLREQUEST__PAC_REQ_STOP;
+constexpr Request kCancel = E_PAC_CTRLREQUEST__PAC_REQ_CANCEL;
+constexpr Request kResetError = E_PAC_CTRLREQUEST__PAC_REQ_RESET_ERROR;
+
+// Mode commands of the CMD interface (5.2.1, 5.2.5.1, 5.2.6.1).
+constexpr std::uint16_t kCmdStop = 0x0600;
+constexpr std::uint16_t kCmdStartAutomatic = 0x0602;
+constexpr std::uint16_t kCmdStartOnline = 0x0603;
+constexpr std::uint16_t kCmdCancelAutomatic = 0x0A41;
+constexpr std::uint16_t kCmdCancelOnline = 0x0A81;
+
+// The external stop input (system parameter 4, 5.2.1.3) the fixture wires: input 1.
+constexpr std::uint32_t kStopInput = 1;
+
+const char* Name(Request r) {
+    switch (r) {
+        case E_PAC_CTRLREQUEST__PAC_REQ_NONE: return "NONE";
+        case kStartOnline: return "START_ONLINE";
+        case kStartAutomatic: return "START_AUTOMATIC";
+        case kStop: return "STOP";
+        case kCancel: return "CANCEL";
+        case kResetError: return "RESET_ERROR";
+    }
+    return "?";
+}
+
+// Low byte of the control word (2.5.1) as FB_PAC_Ctrl must write it: outside a request Error reset, Stop
+// and Cancel at 1 and no start bit; during one, exactly the request's bit differs.
+constexpr std::uint8_t kIdleByte = 0x07;
+std::uint8_t RequestByte(Request r) {
+    switch (r) {
+        case kStartOnline: return 0x17;
+        case kStartAutomatic: return 0x0F;
+        case kStop: return 0x05;
+        case kCancel: return 0x03;
+        case kResetError: return 0x06;
+        default: return kIdleByte;
+    }
+}
+
+// The mode bit the CTRL status word shows for an operating status, written out from the project's
+// decisions (docs/fb/FB_PAC_Ctrl.md) rather than taken from the simulator.
+enum class Shown { kNoMode, kAutomaticActive, kAutomaticStopped, kOnlineActive, kOnlineStopped };
+
+Shown ShownFor(int status) {
+    switch (status) {
+        case 11: case 12: case 13: case 16: case 17: case 18: return Shown::kAutomaticActive;
+        case 15: case 19: return Shown::kAutomaticStopped;
+        case 31: case 32: case 37: return Shown::kOnlineActive;
+        case 35: case 39: return Shown::kOnlineStopped;
+        default: return Shown::kNoMode;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Bus timings
+
+struct BusTiming {
+    int plcMs;
+    int pacMs;
+    int latency;  // PLC cycles, each way
+    int jitterUs = 0;
+    std::uint64_t seed = 1;
+};
+
+std::string Describe(const BusTiming& t) {
+    std::ostringstream out;
+    out << "PLC " << t.plcMs << " ms, PA-CONTROL " << t.pacMs << " ms, latency " << t.latency << " PLC cycles";
+    if (t.jitterUs != 0) out << ", jitter " << t.jitterUs << " us, seed " << t.seed;
+    return out.str();
+}
+
+void PrintTo(const BusTiming& t, std::ostream* out) { *out << Describe(t); }
+
+std::string TimingName(const ::testing::TestParamInfo<BusTiming>& info) {
+    const BusTiming& t = info.param;
+    std::ostringstream name;
+    name << "Plc" << t.plcMs << "ms_Pac" << t.pacMs << "ms_Latency" << t.latency;
+    if (t.jitterUs != 0) name << "_Jitter" << t.jitterUs << "us_Seed" << t.seed;
+    return name.str();
+}
+
+// The full cross product without jitter, and some jittered buses: seeds fixed here, so every run is the
+// same; the seed is part of the test's name.
+std::vector<BusTiming> AllTimings() {
+    std::vector<BusTiming> all;
+    for (int plc : {1, 2, 5, 10}) {
+        for (int pac : {1, 3, 10}) {
+            for (int latency : {0, 1, 2, 3}) all.push_back({plc, pac, latency});
+        }
+    }
+    all.push_back({1, 3, 1, 2500, 101});
+    all.push_back({2, 10, 2, 6000, 202});
+    all.push_back({5, 1, 3, 4000, 303});
+    all.push_back({10, 3, 0, 9000, 404});
+    all.push_back({1, 10, 0, 700, 505});
+    all.push_back({2, 1, 1, 1500, 606});
+    return all;
+}
+
+pac::test::PlcBenchTiming BenchTiming(const BusTiming& t, nanoseconds bootTime) {
+    pac::test::PlcBenchTiming timing;
+    timing.plcCycle = milliseconds(t.plcMs);
+    timing.pacCycle = milliseconds(t.pacMs);
+    timing.latencyCycles = t.latency;
+    timing.jitter = microseconds(t.jitterUs);
+    timing.seed = t.seed;
+    timing.bootTime = bootTime;
+    return timing;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The scans the protocol needs
+
+struct ScanWindow {
+    int min;
+    int max;
+    bool Contains(int scans) const { return scans >= min && scans <= max; }
+};
+
+std::ostream& operator<<(std::ostream& out, const ScanWindow& w) {
+    if (w.min == w.max) return out << w.min << " scans";
+    return out << w.min << ".." << w.max << " scans";
+}
+
+// The scans after a given scan until the first scan that can read a reply, from the bus timing alone:
+// the controller's cycles fall on multiples of its cycle time (the bench runs the controller's cycle
+// before a PLC scan at the same time), each direction delays an image by the latency plus up to the
+// jitter, and a scan reads the newest image that has arrived. min is without jitter, max with the whole
+// jitter both ways; without jitter the window is one exact scan.
+class ProtocolWindow {
+public:
+    explicit ProtocolWindow(const pac::test::PlcBenchTiming& t) : t_(t) {}
+
+    // A request whose bit goes out in the scan at `edge`: the controller's first cycle that reads it
+    // acts on it, `extraCycles` more cycles pass its transitional statuses (30 before 31, 10 before 11,
+    // 13 before 15, as many as the status lasts), and the reply of that cycle travels back.
+    ScanWindow Request(nanoseconds edge, int extraCycles) const {
+        return {Scans(edge, true, extraCycles, 0ns), Scans(edge, true, extraCycles, t_.jitter)};
+    }
+    // Something that happens to the controller between the scan at `after` and the next one (a system
+    // error raised): its next cycle notices it, and the reply of that cycle travels back.
+    ScanWindow Event(nanoseconds after) const {
+        return {Scans(after, false, 0, 0ns), Scans(after, false, 0, t_.jitter)};
+    }
+    // A reply the controller writes at once at `after` (PowerCycle drops the reply to zero at once).
+    ScanWindow ImmediateReply(nanoseconds after) const {
+        return {Read(after, after, 0ns), Read(after, after, t_.jitter)};
+    }
+    // The FB's Timeout runs from the edge scan: the first scan at least `timeout` later.
+    int TimeoutScans(nanoseconds timeout) const {
+        return static_cast<int>((timeout + t_.plcCycle - 1ns) / t_.plcCycle);
+    }
+    // Enough scans for the controller to read what the PLC writes now, to pass a few one-cycle
+    // transitional statuses (17 -> 18 -> 19, 16 -> 11) and for the PLC to read the answer: five
+    // controller cycles and both directions with their whole jitter.
+    int RoundTripScans() const {
+        const nanoseconds way = t_.plcCycle * t_.latencyCycles + t_.jitter;
+        return static_cast<int>((5 * t_.pacCycle + 2 * way) / t_.plcCycle) + 2;
+    }
+
+    // Whether some controller cycle reads the image written in the scan at `first` before the one
+    // written in the scan at `later` reaches it (without jitter): with latency an image written at s
+    // is read by the cycles from s + latency on, without latency by the cycles after s.
+    bool CycleReadsOnlyTheFirst(nanoseconds first, nanoseconds later) const {
+        const nanoseconds latency = t_.plcCycle * t_.latencyCycles;
+        for (nanoseconds cycle{0}; cycle <= later + latency; cycle += t_.pacCycle) {
+            const bool readsFirst = latency > 0ns ? cycle >= first + latency : cycle > first;
+            const bool readsLater = latency > 0ns ? cycle >= later + latency : cycle > later;
+            if (readsFirst && !readsLater) return true;
+        }
+        return false;
+    }
+
+private:
+    int Scans(nanoseconds from, bool throughTheBus, int extraCycles, nanoseconds jitter) const {
+        const nanoseconds arrival = throughTheBus ? from + t_.plcCycle * t_.latencyCycles + jitter : from;
+        nanoseconds cycle = (arrival / t_.pacCycle) * t_.pacCycle;
+        while (cycle < arrival || cycle <= from) cycle += t_.pacCycle;
+        return Read(from, cycle + extraCycles * t_.pacCycle, jitter);
+    }
+    int Read(nanoseconds from, nanoseconds written, nanoseconds jitter) const {
+        const nanoseconds arrival = written + t_.plcCycle * t_.latencyCycles + jitter;
+        nanoseconds scan = from + t_.plcCycle;
+        while (scan < arrival) scan += t_.plcCycle;
+        return static_cast<int>((scan - from) / t_.plcCycle);
+    }
+
+    pac::test::PlcBenchTiming t_;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// The PLC
+
+// How a request or command ended: its final output and the scans from its edge scan to that output
+// (0: in the edge scan itself; -1: no final output within the scans allowed).
+struct Final {
+    bool done = false;
+    bool error = false;
+    std::uint32_t errorId = 0;
+    int scans = -1;
+};
+
+std::ostream& operator<<(std::ostream& out, const Final& f) {
+    if (f.scans < 0) return out << "no final output (still Busy)";
+    out << (f.done ? "Done" : f.error ? "Error" : "nothing") << " after " << f.scans << " scans";
+    if (f.error) out << ", ErrorID 16#" << std::hex << std::uppercase << f.errorId << std::dec;
+    return out;
+}
+
+// What must hold after every scan: the PLCopen outputs of both FBs (Busy, Done and Error exclusive;
+// FB_PAC_Ctrl's ErrorID <> 0 exactly with Error) and the control word rules of 2.5.1 and
+// docs/fb/FB_PAC_Ctrl.md: never all zero, only bits 0..4 and 15, bit 15 = IntegerMode, idle (16#07)
+// outside a request and exactly the request's bit during one, words 1..3 zero; and the controller never
+// read an all-zero control word. Reports the first violations, with the bus timing and the scan.
+class ScanRules {
+public:
+    explicit ScanRules(const BusTiming& timing) : timing_(timing) {}
+
+    void Check(const FB_PAC_CTRL& c, const FB_PAC_CMD& m, Request latched, const sim::ProcessImage& toPac,
+               const sim::ProcessImage& controllerRead, const pac::PlcTask& task) {
+        Expect(c.DONE.value + c.BUSY.value + c.ERROR.value <= 1, "FB_PAC_Ctrl: Busy, Done and Error at once", task);
+        Expect((c.ERROR.value != 0) == (c.ERRORID.value != 0), "FB_PAC_Ctrl: ErrorID <> 0 not exactly with Error",
+               task);
+        Expect(m.DONE.value + m.BUSY.value + m.ERROR.value <= 1, "FB_PAC_Cmd: Busy, Done and Error at once", task);
+        const std::uint16_t word = ControlWord(toPac);
+        Expect(word != 0, "all-zero control word on the wire", task);
+        Expect((word & 0x8000U) == (c.INTEGERMODE.value ? 0x8000U : 0U), "bit 15 does not follow IntegerMode", task);
+        const std::uint8_t expected = c.BUSY.value ? RequestByte(latched) : kIdleByte;
+        Expect((word & 0x7FFFU) == expected,
+               "control word 16#" + Hex(word) + ", expected low byte 16#" + Hex(expected), task);
+        for (std::size_t i = 10; i < 16; ++i) Expect(toPac[i] == 0, "CTRL words 1..3 not zero", task);
+        if (!controllerRead.AllZero()) {
+            Expect(ControlWord(controllerRead) != 0, "the controller read an all-zero control word", task);
+        }
+    }
+
+    // Word 0 of the CTRL module (PAC bytes 8, 9 of the image), big-endian.
+    static std::uint16_t ControlWord(const sim::ProcessImage& image) {
+        return static_cast<std::uint16_t>((image[8] << 8) | image[9]);
+    }
+
+private:
+    void Expect(bool ok, const std::string& what, const pac::PlcTask& task) {
+        if (ok || ++violations_ > 10) return;
+        ADD_FAILURE() << what << " (" << Describe(timing_) << ", " << pac::detail::Position(task) << ")";
+    }
+    static std::string Hex(unsigned v) {
+        std::ostringstream out;
+        out << std::hex << std::uppercase << v;
+        return out.str();
+    }
+
+    BusTiming timing_;
+    int violations_ = 0;
+};
+
+// A PLC with FB_PAC_Cmd on the CMD module and FB_PAC_Ctrl on the CTRL module of a simulated
+// PA-CONTROL, the external stop input wired and powered. After each of its FBs a hand-written "naive
+// master" may zero the module (off unless a test turns it on). Scan() applies ScanRules after every
+// scan (not once a naive master has written).
+class CtrlSimPlc {
+public:
+    explicit CtrlSimPlc(const BusTiming& timing, sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
+        : timing_(timing),
+          bench_(BenchTiming(timing, bootTime), config, sim::ModuleLayout{true, 0}),
+          window_(bench_.Timing()),
+          rules_(timing) {
+        bench_.Call(cmd_);
+        bench_.CallRaw8(sim::ModuleLayout::kCmdOffset, [this](const sim::Image8&, sim::Image8& out) {
+            if (zeroCmdModule_) out = sim::Image8{};
+        });
+        bench_.CallCtrl(ctrl_);
+        bench_.CallRaw8(sim::ModuleLayout::kCtrlOffset, [this](const sim::Image8&, sim::Image8& out) {
+            if (zeroCtrlModule_) out = sim::Image8{};
+        });
+        bench_.Start();
+        WireExternalStop(true);
+    }
+
+    // System parameter 4 = input 1 (5.2.1.3), with or without power.
+    void WireExternalStop(bool powered) {
+        EXPECT_EQ(Controller().SystemParameters().Set(4, kStopInput), sim::ParameterTable::SetResult::kOk);
+        Controller().Io().inputs.Set(static_cast<int>(kStopInput), powered);
+    }
+    void UnwireExternalStop() {
+        EXPECT_EQ(Controller().SystemParameters().Set(4, 0), sim::ParameterTable::SetResult::kOk);
+    }
+
+    void Scan(int n = 1) {
+        for (int i = 0; i < n; ++i) {
+            bench_.Scan();
+            if (!naiveSeen_) {
+                rules_.Check(ctrl_.Data(), cmd_.Data(), latched_, bench_.ToPac(), Controller().LastMasterImage(),
+                             bench_.Task());
+            }
+        }
+    }
+    // Scans until `predicate` holds; the scans run, or -1 after maxScans.
+    int ScanUntil(const std::function<bool()>& predicate, int maxScans) {
+        for (int scans = 1; scans <= maxScans; ++scans) {
+            Scan();
+            if (predicate()) return scans;
+        }
+        return -1;
+    }
+    // Until the FB shows Ready, then until the controller has read the idle control word and the FB
+    // shows the controller's answer (the first control word after the boot is only the reference for
+    // the edges).
+    void Settle() {
+        EXPECT_GE(ScanUntil([this] { return ctrl_->READY.value != 0; }, ScansFor(2s)), 0) << "never Ready";
+        Scan(window_.RoundTripScans());
+    }
+    void Wait() { Scan(window_.RoundTripScans()); }
+
+    // ---- FB_PAC_Ctrl ----
+    // Execute rises: runs the edge scan.
+    void Begin(Request r) {
+        EXPECT_FALSE(ctrl_->EXECUTE.value || Busy()) << Name(r) << ": Execute still high or Busy";
+        ctrl_->REQUEST.value = r;
+        ctrl_->EXECUTE.value = TRUE;
+        latched_ = r;
+        Scan();
+        edge_ = Now();
+    }
+    // Scans until Done or Error, at most maxScans after the edge scan.
+    Final WaitEnd(int maxScans) {
+        int scans = 0;
+        while (!Ended() && scans < maxScans) {
+            Scan();
+            ++scans;
+        }
+        return Final{Done(), Error(), ErrorId(), Ended() ? scans : -1};
+    }
+    // Execute falls: the final output clears in the scan that sees it.
+    void Release() {
+        ctrl_->EXECUTE.value = FALSE;
+        Scan();
+        EXPECT_FALSE(Done() || Error() || ErrorId() != 0) << "the final output did not clear with Execute FALSE";
+    }
+    // One request from edge to release; the final output must hold one more scan while Execute is high.
+    Final Run(Request r, int maxScans = -1) {
+        Begin(r);
+        const Final f = WaitEnd(maxScans < 0 ? ScansFor(3s) : maxScans);
+        Scan();
+        EXPECT_TRUE(f.scans < 0 || (Done() == f.done && Error() == f.error && ErrorId() == f.errorId))
+            << Name(r) << ": the final output did not hold while Execute stayed high";
+        Release();
+        return f;
+    }
+    // The window for Done of the request whose edge scan ran last.
+    ScanWindow DoneWindow(int extraCycles) const { return window_.Request(edge_, extraCycles); }
+
+    // A fresh FB_PAC_Ctrl instance: the first scan after a PLC restart with a new program.
+    void RestartPlcProgram() {
+        ctrl_ = PAC_FB(FB_PAC_CTRL);
+        latched_ = E_PAC_CTRLREQUEST__PAC_REQ_NONE;
+    }
+
+    // ---- FB_PAC_Cmd ----
+    Final Command(std::uint16_t code) {
+        cmd_->CODE.value = code;
+        cmd_->PARAM.value = 0;
+        cmd_->DATA.value = 0;
+        cmd_->EXECUTE.value = TRUE;
+        Scan();
+        edge_ = Now();
+        const int scans = ScanUntil([this] { return cmd_->DONE.value || cmd_->ERROR.value; }, ScansFor(3s));
+        const Final f{cmd_->DONE.value != 0, cmd_->ERROR.value != 0, cmd_->ERRORID.value, scans};
+        cmdOpStatus_ = cmd_->OPSTATUS.value;
+        ctrlAtCmdEnd_ = ctrl_.Data();
+        cmd_->EXECUTE.value = FALSE;
+        Scan();
+        return f;
+    }
+    int CmdOpStatusAtEnd() const { return cmdOpStatus_; }
+    const FB_PAC_CTRL& CtrlAtCmdEnd() const { return ctrlAtCmdEnd_; }
+
+    // ---- naive masters (contrast) ----
+    void ZeroCtrlModule(bool on) {
+        zeroCtrlModule_ = on;
+        naiveSeen_ = naiveSeen_ || on;
+    }
+    void ZeroCmdModule(bool on) {
+        zeroCmdModule_ = on;
+        naiveSeen_ = naiveSeen_ || on;
+    }
+
+    // ---- what the FB and the controller show ----
+    // The controller's operating status and system error, and the FB's status outputs decoded from the
+    // reply, agree with `status` and `errorNumber`. Call when both have settled.
+    ::testing::AssertionResult Shows(int status, std::uint16_t errorNumber = 0) {
+        std::ostringstream bad;
+        if (Controller().OperatingStatus() != status) {
+            bad << " controller status " << int{Controller().OperatingStatus()} << " (expected " << status << ")";
+        }
+        if (Controller().SystemError() != errorNumber) {
+            bad << " controller system error " << Controller().SystemError() << " (expected " << errorNumber << ")";
+        }
+        const Shown shown = ShownFor(status);
+        const bool cpuError = errorNumber >= 1 && errorNumber <= 99;
+        auto pin = [&](const char* name, bool actual, bool expected) {
+            if (actual != expected) bad << ' ' << name << '=' << actual;
+        };
+        pin("Ready", ctrl_->READY.value, !cpuError);
+        pin("BatteryOk", ctrl_->BATTERYOK.value, true);
+        pin("SystemError", ctrl_->SYSTEMERROR.value, errorNumber != 0);
+        pin("AutomaticActive", ctrl_->AUTOMATICACTIVE.value, shown == Shown::kAutomaticActive);
+        pin("AutomaticStopped", ctrl_->AUTOMATICSTOPPED.value, shown == Shown::kAutomaticStopped);
+        pin("OnlineActive", ctrl_->ONLINEACTIVE.value, shown == Shown::kOnlineActive);
+        pin("OnlineStopped", ctrl_->ONLINESTOPPED.value, shown == Shown::kOnlineStopped);
+        pin("IntegerModeActive", ctrl_->INTEGERMODEACTIVE.value, Controller().IntegerFormat());
+        if (ctrl_->SYSTEMERRORNUMBER.value != errorNumber) {
+            bad << " SystemErrorNumber=" << ctrl_->SYSTEMERRORNUMBER.value;
+        }
+        if (bad.str().empty()) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "expected status " << status << " error " << errorNumber << ":"
+                                             << bad.str();
+    }
+    ::testing::AssertionResult SettledAt(int status, std::uint16_t errorNumber = 0) {
+        Wait();
+        return Shows(status, errorNumber);
+    }
+
+    // The CTRL control word the PLC wrote in its last scan, and the one the controller read last.
+    std::uint16_t WireControlWord() const { return ScanRules::ControlWord(bench_.ToPac()); }
+    std::uint16_t ControlWordSeenByController() { return ScanRules::ControlWord(Controller().LastMasterImage()); }
+    std::uint16_t IdleWord() { return static_cast<std::uint16_t>((ctrl_->INTEGERMODE.value ? 0x8000 : 0) | kIdleByte); }
+
+    bool Done() const { return ctrl_->DONE.value != 0; }
+    bool Busy() const { return ctrl_->BUSY.value != 0; }
+    bool Error() const { return ctrl_->ERROR.value != 0; }
+    bool Ended() const { return Done() || Error(); }
+    std::uint32_t ErrorId() const { return ctrl_->ERRORID.value; }
+
+    int ScansFor(nanoseconds t) const { return static_cast<int>(t / milliseconds(timing_.plcMs)) + 1; }
+    pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
+    pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
+    sim::PaControl& Controller() { return bench_.Controller(); }
+    sim::Bus& Bus() { return bench_.Bus(); }
+    nanoseconds Now() const { return bench_.Now(); }
+    nanoseconds Edge() const { return edge_; }
+    const ProtocolWindow& Window() const { return window_; }
+    const BusTiming& Timing() const { return timing_; }
+
+private:
+    BusTiming timing_;
+    pac::test::PacPlcBench bench_;
+    ProtocolWindow window_;
+    ScanRules rules_;
+    pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
+    Request latched_ = E_PAC_CTRLREQUEST__PAC_REQ_NONE;
+    nanoseconds edge_{0};
+    bool zeroCtrlModule_ = false;
+    bool zeroCmdModule_ = false;
+    bool naiveSeen_ = false;
+    int cmdOpStatus_ = -1;
+    FB_PAC_CTRL ctrlAtCmdEnd_{};
+};
+
+// A config whose AUTOMATIC stand-in takes the given controller cycles in 10, 13, 16 and 18.
+sim::PaControlConfig Script(int started, int stopProgram, int startAfterStop, int malfunctionProgram) {
+    sim::PaControlConfig config;
+    config.modes.automatic = {started, stopProgram, startAfterStop, malfunctionProgram};
+    return config;
+}
+
+// Axis 1 travels far at 1000 AE/s in ONLINE, with a braking deceleration (axis parameter 6) low enough
+// that a stop (32) or a malfunction (37) lasts while the test looks at it. Set before START ONLINE,
+// which takes the parameters over.
+void SlowBraking(CtrlSimPlc& plc, float deceleration) {
+    ASSERT_EQ(plc.Controller().Axes().Parameters(1).Set(6, sim::FloatToBits(deceleration)),
+              sim::ParameterTable::SetResult::kOk);
+}
+void MoveAxis1(CtrlSimPlc& plc) { plc.Controller().Axes().Motion(1).MoveTo(plc.Now(), 1.0e6); }
+
+class CtrlSim : public ::testing::TestWithParam<BusTiming> {
+protected:
+    void SetUp() override { RecordProperty("bus", Describe(GetParam())); }
+};
+
+// Runs `r`: Done in the scan window of `extraCycles` transitional controller cycles.
+::testing::AssertionResult DoneInWindow(CtrlSimPlc& plc, Request r, int extraCycles) {
+    const Final f = plc.Run(r);
+    const ScanWindow w = plc.DoneWindow(extraCycles);
+    if (f.done && w.Contains(f.scans)) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << Name(r) << ": " << f << ", the protocol allows " << w;
+}
+
+// Runs `r`: decided in the edge scan, Done at once (errorId 0) or the error `errorId`.
+::testing::AssertionResult DecidedAtOnce(CtrlSimPlc& plc, Request r, std::uint32_t errorId) {
+    const Final f = plc.Run(r);
+    if (f.scans == 0 && f.errorId == errorId && f.done == (errorId == 0)) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << Name(r) << ": " << f << ", expected in the edge scan "
+                                         << (errorId == 0 ? std::string("Done") : "ErrorID " + std::to_string(errorId));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Every transition through CTRL, Done at the first scan the protocol allows
+
+TEST_P(CtrlSim, OnlineStartStopResumeCancel) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    ASSERT_TRUE(plc.Shows(1));
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));  // 1 -> 30 (one cycle) -> 31
+    EXPECT_TRUE(plc.SettledAt(31));
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 0));  // no axis moves: 31 -> 32 -> 35 within the cycle
+    EXPECT_TRUE(plc.SettledAt(35));
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 0));  // resume: 35 -> 31
+    EXPECT_TRUE(plc.SettledAt(31));
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+    plc.Scan(plc.ScansFor(500ms));
+    EXPECT_TRUE(plc.Shows(1)) << "nothing more happens after the last request";
+    EXPECT_EQ(plc.Controller().Counters().recognized, 0u) << "no command on the CMD interface";
+}
+
+TEST_P(CtrlSim, AutomaticStartStopResumeCancel) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 1));  // 1 -> 10 (startedCycles = 1) -> 11
+    EXPECT_TRUE(plc.SettledAt(11));
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 1));  // 11 -> 12 -> 13 (stopProgramCycles = 1) -> 15
+    EXPECT_TRUE(plc.SettledAt(15));
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 0));  // resume: 15 -> 16, which shows AUTOMATIC active
+    EXPECT_TRUE(plc.SettledAt(11)) << "16 -> 11 after startAfterStopCycles";
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+}
+
+TEST_P(CtrlSim, DoneFollowsTheAutomaticScriptsTransitionalCycles) {
+    CtrlSimPlc plc(GetParam(), Script(3, 4, 2, 1));
+    plc.Settle();
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 3));
+    EXPECT_TRUE(plc.SettledAt(11));
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 4));
+    EXPECT_TRUE(plc.SettledAt(15));
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 0));
+    EXPECT_TRUE(plc.SettledAt(11));
+}
+
+TEST_P(CtrlSim, StopWaitsForTheBrakingAxis) {
+    CtrlSimPlc plc(GetParam());
+    SlowBraking(plc, 4000.0F);  // 1000 AE/s: 250 ms of braking
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Begin(kStop);
+    const nanoseconds edge = plc.Edge();
+    const Final f = plc.WaitEnd(plc.ScansFor(2s));
+    ASSERT_TRUE(f.done) << f;
+    EXPECT_GE(plc.Now() - edge, 250ms) << "Done before the axis stood";
+    EXPECT_LE(plc.Now() - edge, 250ms + milliseconds(2 * GetParam().pacMs) +
+                                    2 * (milliseconds(GetParam().plcMs * GetParam().latency) +
+                                         microseconds(GetParam().jitterUs)) +
+                                    milliseconds(GetParam().plcMs))
+        << "Done later than braking plus the bus";
+    EXPECT_FALSE(plc.Controller().Axes().AnyMoving());
+    plc.Release();
+    EXPECT_TRUE(plc.SettledAt(35));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// System error classes (5.2.4.15)
+
+TEST_P(CtrlSim, Class2ErrorIsResetInHomePosition) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    plc.Controller().RaiseSystemError(150);
+    const ScanWindow shown = plc.Window().Event(plc.Now());
+    const int scans = plc.ScanUntil([&] { return plc.Ctrl()->SYSTEMERROR.value != 0; }, 1000);
+    EXPECT_TRUE(shown.Contains(scans)) << "SystemError after " << scans << ", expected " << shown;
+    EXPECT_TRUE(plc.SettledAt(9, 150));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotAllowed));
+    EXPECT_TRUE(DoneInWindow(plc, kResetError, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, 0));  // nothing left to reset
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+}
+
+TEST_P(CtrlSim, Class2ErrorInOnlineNeedsCancelThenReset) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    plc.Controller().RaiseSystemError(230);
+    EXPECT_TRUE(plc.SettledAt(39, 230));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotAllowed));  // no resume with an error pending
+    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, kErrNotAllowed));  // not in home position
+    EXPECT_TRUE(DecidedAtOnce(plc, kStop, 0));  // stopped already
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(9, 230)) << "class 2 stays in home position";
+    EXPECT_TRUE(DoneInWindow(plc, kResetError, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+}
+
+TEST_P(CtrlSim, Class3ErrorIsClearedOnReturningHome) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    plc.Controller().RaiseSystemError(600);
+    EXPECT_TRUE(plc.SettledAt(39, 600));
+    plc.Begin(kCancel);
+    const Final f = plc.WaitEnd(1000);
+    EXPECT_TRUE(f.done && plc.DoneWindow(0).Contains(f.scans)) << f;
+    EXPECT_FALSE(plc.Ctrl()->SYSTEMERROR.value) << "cleared in the reply that shows home position";
+    EXPECT_EQ(plc.Ctrl()->SYSTEMERRORNUMBER.value, 0);
+    plc.Release();
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, 0));
+
+    ASSERT_TRUE(plc.Run(kStartAutomatic).done);
+    plc.Controller().RaiseSystemError(700);
+    EXPECT_TRUE(plc.SettledAt(19, 700));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStartAutomatic, kErrNotAllowed));
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+}
+
+TEST_P(CtrlSim, Class1ErrorOnlyByPowerCycle) {
+    CtrlSimPlc plc(GetParam(), {}, 50ms);
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    plc.Controller().RaiseSystemError(42);
+    EXPECT_TRUE(plc.SettledAt(39, 42));
+    EXPECT_FALSE(plc.Ctrl()->READY.value);
+    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, kErrNotAllowed));  // only a power cycle clears a CPU error
+    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, kErrNotReady));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotReady));
+    plc.Controller().PowerCycle(plc.Now());
+    plc.Settle();
+    EXPECT_TRUE(plc.Shows(1));
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    EXPECT_TRUE(plc.SettledAt(31));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// CTRL and CMD together
+
+TEST_P(CtrlSim, CtrlStartsOnlineAndCmdStopsIt) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    const Final stop = plc.Command(kCmdStop);
+    ASSERT_TRUE(stop.done) << stop;
+    EXPECT_EQ(plc.CmdOpStatusAtEnd(), 35);
+    EXPECT_TRUE(plc.CtrlAtCmdEnd().ONLINESTOPPED.value) << "one consistent reply: OnlineStopped with 0600's Done";
+    EXPECT_FALSE(plc.CtrlAtCmdEnd().ONLINEACTIVE.value);
+    EXPECT_TRUE(plc.SettledAt(35));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStop, 0));  // stopped already: nothing to send
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 0));  // resume through CTRL
+    EXPECT_TRUE(plc.SettledAt(31));
+    ASSERT_TRUE(plc.Command(kCmdCancelOnline).done);
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, 0));
+    EXPECT_EQ(plc.Controller().Counters().recognized, 2u);
+}
+
+TEST_P(CtrlSim, CmdStartsAndCtrlCancels) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    const Final start = plc.Command(kCmdStartOnline);
+    ASSERT_TRUE(start.done) << start;
+    EXPECT_EQ(plc.CmdOpStatusAtEnd(), 31);
+    EXPECT_TRUE(plc.CtrlAtCmdEnd().ONLINEACTIVE.value);
+    EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, 0));  // ONLINE active already
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+
+    ASSERT_TRUE(plc.Command(kCmdStartAutomatic).done);
+    EXPECT_TRUE(plc.SettledAt(11));
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 1));
+    EXPECT_TRUE(plc.SettledAt(15));
+    ASSERT_TRUE(plc.Command(kCmdStartAutomatic).done);  // resume through CMD
+    EXPECT_TRUE(plc.SettledAt(11));
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_EQ(plc.Controller().Counters().Count(kCmdCancelOnline), 0u);
+    EXPECT_EQ(plc.Controller().Counters().Count(kCmdCancelAutomatic), 0u);
+}
+
+// A cancel over CMD while a CTRL stop waits for the braking axis: the controller goes home, which is not
+// the stop's result ("stopped"), so the stop request ends with 16#8009 at its Timeout, not earlier.
+TEST_P(CtrlSim, CmdCancelWhileACtrlStopWaitsEndsTheStopByTimeout) {
+    CtrlSimPlc plc(GetParam());
+    SlowBraking(plc, 1000.0F);  // 1 s
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(400ms);
+    plc.Begin(kStop);
+    const nanoseconds edge = plc.Edge();
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 32; }, 1000), 0);
+    plc.Cmd()->CODE.value = kCmdCancelOnline;
+    plc.Cmd()->EXECUTE.value = TRUE;
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Cmd()->DONE.value != 0; }, 1000), 0);
+    EXPECT_TRUE(plc.Busy()) << "home position is not the stop's result";
+    const Final f = plc.WaitEnd(1000);
+    EXPECT_EQ(f.errorId, kErrRequestTimeout) << f;
+    EXPECT_EQ(plc.Now() - edge, milliseconds(GetParam().plcMs) * plc.Window().TimeoutScans(400ms));
+    plc.Release();
+    plc.Cmd()->EXECUTE.value = FALSE;
+    EXPECT_TRUE(plc.SettledAt(1));
+}
+
+// The FB_PAC_Ctrl called in every scan holds Stop and Cancel at 1: modes driven over the CMD interface
+// stay where the commands put them, scan after scan, and take the integer format from its bit 15.
+TEST_P(CtrlSim, IdleCtrlModuleNeverDisturbsCmdDrivenModes) {
+    CtrlSimPlc plc(GetParam());
+    plc.Ctrl()->INTEGERMODE.value = TRUE;
+    plc.Settle();
+    const struct {
+        std::uint16_t code;
+        int status;
+    } steps[] = {{kCmdStartOnline, 31}, {kCmdStop, 35},           {kCmdStartOnline, 31},
+                 {kCmdCancelOnline, 1}, {kCmdStartAutomatic, 11}, {kCmdStop, 15},
+                 {kCmdStartAutomatic, 11}, {kCmdCancelAutomatic, 1}};
+    for (const auto& step : steps) {
+        std::ostringstream code;
+        code << "command " << std::hex << std::setw(4) << std::setfill('0') << step.code;
+        SCOPED_TRACE(code.str());
+        const Final f = plc.Command(step.code);
+        ASSERT_TRUE(f.done) << f;
+        const int scans = plc.ScansFor(300ms);
+        for (int i = 0; i < scans; ++i) {
+            plc.Scan();
+            ASSERT_EQ(plc.Controller().OperatingStatus(), step.status) << "scan " << i << " after the command";
+        }
+        EXPECT_TRUE(plc.Shows(step.status));
+        EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "0603 / 0602 took CTRL bit 15 over";
+    }
+    EXPECT_EQ(plc.Controller().Counters().recognized, 8u);
+    EXPECT_EQ(plc.Controller().Counters().failed, 0u);
+}
+
+// Contrast: a CTRL module left at zero cancels a mode started over CMD (the low-active Cancel), so the
+// test above could fail.
+TEST_P(CtrlSim, ContrastAnAllZeroCtrlModuleCancelsACmdStart) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    plc.ZeroCtrlModule(true);
+    plc.Wait();
+    const Final f = plc.Command(kCmdStartOnline);
+    ASSERT_TRUE(f.done) << f;
+    EXPECT_EQ(plc.CmdOpStatusAtEnd(), 1) << "0603 ends in the status it settles on: home position";
+    EXPECT_EQ(plc.Controller().OperatingStatus(), 1);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Requests that do not apply: refused in the edge scan, nothing sent; and where the FB cannot know
+
+enum class Outcome { kWaits, kDoneAtOnce, kNotAllowed, kNotReady };
+
+struct StateCase {
+    const char* name;
+    sim::PaControlConfig config;
+    std::function<void(CtrlSimPlc&)> reach;
+    int status;
+    std::uint16_t errorNumber;
+    Outcome startOnline, startAutomatic, stop, cancel, resetError;
+};
+
+std::vector<StateCase> States() {
+    const Outcome W = Outcome::kWaits, D = Outcome::kDoneAtOnce, N = Outcome::kNotAllowed, R = Outcome::kNotReady;
+    auto run = [](std::initializer_list<Request> requests) {
+        return [requests = std::vector<Request>(requests)](CtrlSimPlc& plc) {
+            for (Request r : requests) ASSERT_TRUE(plc.Run(r).done) << Name(r);
+        };
+    };
+    auto raise = [](std::vector<Request> requests, std::uint16_t number, bool moving) {
+        return [requests, number, moving](CtrlSimPlc& plc) {
+            for (Request r : requests) ASSERT_TRUE(plc.Run(r).done) << Name(r);
+            if (moving) MoveAxis1(plc);
+            plc.Controller().RaiseSystemError(number);
+        };
+    };
+    sim::PaControlConfig longMalfunctionProgram = Script(1, 1, 1, 1'000'000);
+    //                      START_ONL START_AUT STOP CANCEL RESET
+    return {
+        {"Home1", {}, run({}), 1, 0, W, W, N, D, D},
+        {"Home9Class2", {}, raise({}, 150, false), 9, 150, N, N, N, D, W},
+        {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, R, R, N},
+        {"Automatic11", {}, run({kStartAutomatic}), 11, 0, N, D, W, W, N},
+        {"AutomaticStopped15", {}, run({kStartAutomatic, kStop}), 15, 0, N, W, D, W, N},
+        {"AutomaticMalfunction18", longMalfunctionProgram, raise({kStartAutomatic}, 600, false), 18, 600,
+         N, N, W, W, N},
+        {"AutomaticStoppedMalfunction19", {}, raise({kStartAutomatic}, 600, false), 19, 600, N, N, D, W, N},
+        {"Online31", {}, run({kStartOnline}), 31, 0, D, N, W, W, N},
+        {"OnlineStopped35", {}, run({kStartOnline, kStop}), 35, 0, W, N, D, W, N},
+        {"OnlineMalfunction37", {}, raise({kStartOnline}, 600, true), 37, 600, N, N, W, W, N},
+        {"OnlineStoppedMalfunction39", {}, raise({kStartOnline}, 600, false), 39, 600, N, N, D, W, N},
+        {"OnlineCpuError39", {}, raise({kStartOnline}, 42, false), 39, 42, R, R, R, R, N},
+    };
+}
+
+TEST_P(CtrlSim, RequestsThatDoNotApplyAreDecidedInTheEdgeScanWithNothingSent) {
+    bool integerMode = false;
+    for (const StateCase& state : States()) {
+        SCOPED_TRACE(state.name);
+        CtrlSimPlc plc(GetParam(), state.config);
+        if (state.status == 37) SlowBraking(plc, 1.0F);  // 37 lasts while the axis brakes: 1000 s
+        integerMode = !integerMode;
+        plc.Ctrl()->INTEGERMODE.value = integerMode;
+        plc.Settle();
+        state.reach(plc);
+        ASSERT_TRUE(plc.SettledAt(state.status, state.errorNumber));
+        const struct {
+            Request request;
+            Outcome expected;
+        } rows[] = {{kStartOnline, state.startOnline},
+                    {kStartAutomatic, state.startAutomatic},
+                    {kStop, state.stop},
+                    {kCancel, state.cancel},
+                    {kResetError, state.resetError}};
+        for (const auto& row : rows) {
+            if (row.expected == Outcome::kWaits) continue;
+            SCOPED_TRACE(Name(row.request));
+            plc.Begin(row.request);
+            EXPECT_TRUE(plc.Ended()) << "decided in the edge scan";
+            EXPECT_EQ(plc.WireControlWord(), plc.IdleWord()) << "nothing sent";
+            const std::uint32_t id = row.expected == Outcome::kDoneAtOnce   ? 0
+                                     : row.expected == Outcome::kNotAllowed ? kErrNotAllowed
+                                                                            : kErrNotReady;
+            EXPECT_EQ(plc.ErrorId(), id);
+            EXPECT_EQ(plc.Done(), id == 0);
+            // Execute held: the result holds, the wire stays idle (ScanRules in every scan), and the
+            // controller neither sees nor does anything.
+            plc.Wait();
+            EXPECT_EQ(plc.ErrorId(), id);
+            EXPECT_EQ(plc.ControlWordSeenByController(), plc.IdleWord());
+            plc.Release();
+            EXPECT_TRUE(plc.Shows(state.status, state.errorNumber));
+        }
+        EXPECT_EQ(plc.Controller().Counters().recognized, 0u);
+    }
+}
+
+// The controller ignores a start without the external stop input (5.2.1.3): the CTRL interface has no
+// error channel, so the FB can only wait: 16#8009 in the first scan Timeout after the edge.
+TEST_P(CtrlSim, StartOnlineWithoutTheExternalStopInputTimesOut) {
+    CtrlSimPlc plc(GetParam());
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(95ms);
+    const int timeoutScans = plc.Window().TimeoutScans(95ms);
+    plc.UnwireExternalStop();
+    plc.Settle();
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        SCOPED_TRACE(attempt == 0 ? "system parameter 4 = 0" : "input defined, no power");
+        const Final f = plc.Run(kStartOnline);
+        EXPECT_TRUE(f.error) << f;
+        EXPECT_EQ(f.errorId, kErrRequestTimeout);
+        EXPECT_EQ(f.scans, timeoutScans) << "Timeout 95 ms at a " << GetParam().plcMs << " ms PLC cycle";
+        EXPECT_TRUE(plc.SettledAt(1));
+        plc.WireExternalStop(false);
+    }
+    // With power, a new edge: the controller has seen the start bit fall (Settle above and Wait below).
+    plc.WireExternalStop(true);
+    plc.Wait();
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(10s);
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    EXPECT_TRUE(plc.SettledAt(31));
+}
+
+// The CTRL status word shows no mode bit in manual operation either: a start there runs into Timeout.
+TEST_P(CtrlSim, StartInManualOperationTimesOut) {
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    plc.Controller().SetOperatingStatus(2);
+    plc.Wait();
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(50ms);
+    for (Request r : {kStartOnline, kStartAutomatic}) {
+        const Final f = plc.Run(r);
+        EXPECT_EQ(f.errorId, kErrRequestTimeout) << Name(r) << ": " << f;
+        EXPECT_EQ(f.scans, plc.Window().TimeoutScans(50ms)) << Name(r);
+        EXPECT_EQ(plc.Controller().OperatingStatus(), 2);
+    }
+    EXPECT_TRUE(DecidedAtOnce(plc, kStop, kErrNotAllowed));
+    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, 0));
+}
+
+// A stop that takes longer than Timeout: 16#8009 at the exact scan, the stop bit released; the
+// controller still ends the stop it has begun.
+TEST_P(CtrlSim, StopSlowerThanTimeoutIsRequestTimeout) {
+    CtrlSimPlc plc(GetParam());
+    SlowBraking(plc, 2000.0F);  // 500 ms
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(100ms);
+    const Final f = plc.Run(kStop);
+    EXPECT_EQ(f.errorId, kErrRequestTimeout) << f;
+    EXPECT_EQ(f.scans, plc.Window().TimeoutScans(100ms));
+    plc.Scan(plc.ScansFor(500ms));
+    EXPECT_TRUE(plc.SettledAt(35));
+    EXPECT_TRUE(DecidedAtOnce(plc, kStop, 0));
+}
+
+TEST_P(CtrlSim, TimeoutZeroWaitsWithoutLimit) {
+    CtrlSimPlc plc(GetParam());
+    SlowBraking(plc, 1000.0F);  // 1 s, longer than every other wait here
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(0s);
+    const Final f = plc.Run(kStop);
+    EXPECT_TRUE(f.done) << f;
+    EXPECT_GE(f.scans, plc.ScansFor(1s) - 1);
+    EXPECT_TRUE(plc.SettledAt(35));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// A system error during a request: ErrorID = the system error number
+
+TEST_P(CtrlSim, SystemErrorBeforeTheStartArrivesIsTheRequestsError) {
+    for (Request r : {kStartOnline, kStartAutomatic}) {
+        SCOPED_TRACE(Name(r));
+        CtrlSimPlc plc(GetParam());
+        plc.Settle();
+        plc.Begin(r);
+        plc.Controller().RaiseSystemError(310);  // noticed before the start bit is looked at: 1 -> 9
+        const ScanWindow shown = plc.Window().Event(plc.Edge());
+        const Final f = plc.WaitEnd(1000);
+        EXPECT_TRUE(f.error && shown.Contains(f.scans)) << f << ", the protocol allows " << shown;
+        EXPECT_EQ(f.errorId, 310u);
+        EXPECT_EQ(plc.WireControlWord(), plc.IdleWord()) << "the start bit falls with the error";
+        plc.Release();
+        EXPECT_TRUE(plc.SettledAt(9, 310)) << "the start was refused";
+    }
+}
+
+TEST_P(CtrlSim, SystemErrorWhileAutomaticStartsIsTheRequestsError) {
+    CtrlSimPlc plc(GetParam(), Script(20, 1, 1, 1));
+    plc.Settle();
+    plc.Begin(kStartAutomatic);
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 10; }, 1000), 0);
+    plc.Controller().RaiseSystemError(555);
+    const nanoseconds raised = plc.Now();
+    const Final f = plc.WaitEnd(1000);
+    const ScanWindow shown = plc.Window().Event(raised);
+    EXPECT_TRUE(f.error) << f;
+    EXPECT_EQ(f.errorId, 555u);
+    const int sinceRaised = static_cast<int>((plc.Now() - raised) / milliseconds(GetParam().plcMs));
+    EXPECT_TRUE(shown.Contains(sinceRaised)) << sinceRaised << " scans after the raise, expected " << shown;
+    plc.Release();
+    EXPECT_TRUE(plc.SettledAt(19, 555)) << "10 -> 17 -> 18 -> 19";
+}
+
+// ONLINE started (30) lasts one controller cycle; the test can raise the error inside it only where a
+// controller cycle is not shorter than a scan.
+TEST_P(CtrlSim, SystemErrorWhileOnlineStartsIsTheRequestsError) {
+    if (GetParam().pacMs < GetParam().plcMs) GTEST_SKIP() << "30 passes within one scan";
+    CtrlSimPlc plc(GetParam());
+    plc.Settle();
+    plc.Begin(kStartOnline);
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 30; }, 1000), 0);
+    plc.Controller().RaiseSystemError(520);
+    const nanoseconds raised = plc.Now();
+    const Final f = plc.WaitEnd(1000);
+    EXPECT_TRUE(f.error) << f;
+    EXPECT_EQ(f.errorId, 520u);
+    const int sinceRaised = static_cast<int>((plc.Now() - raised) / milliseconds(GetParam().plcMs));
+    EXPECT_TRUE(plc.Window().Event(raised).Contains(sinceRaised)) << sinceRaised;
+    plc.Release();
+    EXPECT_TRUE(plc.SettledAt(39, 520)) << "30 -> 37 -> 39";
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+}
+
+TEST_P(CtrlSim, SystemErrorWhileStoppingIsTheRequestsError) {
+    {
+        SCOPED_TRACE("ONLINE, axis braking (32)");
+        CtrlSimPlc plc(GetParam());
+        SlowBraking(plc, 2000.0F);
+        plc.Settle();
+        ASSERT_TRUE(plc.Run(kStartOnline).done);
+        MoveAxis1(plc);
+        plc.Begin(kStop);
+        ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 32; }, 1000), 0);
+        plc.Controller().RaiseSystemError(640);
+        const nanoseconds raised = plc.Now();
+        const Final f = plc.WaitEnd(1000);
+        EXPECT_EQ(f.errorId, 640u) << f;
+        const int sinceRaised = static_cast<int>((plc.Now() - raised) / milliseconds(GetParam().plcMs));
+        EXPECT_TRUE(plc.Window().Event(raised).Contains(sinceRaised)) << sinceRaised;
+        plc.Release();
+        plc.Scan(plc.ScansFor(600ms));
+        EXPECT_TRUE(plc.SettledAt(39, 640)) << "32 -> 37 -> 39 once the axis stands";
+    }
+    {
+        SCOPED_TRACE("AUTOMATIC, stop program (13)");
+        CtrlSimPlc plc(GetParam(), Script(1, 30, 1, 1));
+        plc.Settle();
+        ASSERT_TRUE(plc.Run(kStartAutomatic).done);
+        plc.Begin(kStop);
+        ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 13; }, 1000), 0);
+        plc.Controller().RaiseSystemError(710);
+        const Final f = plc.WaitEnd(1000);
+        EXPECT_EQ(f.errorId, 710u) << f;
+        plc.Release();
+        EXPECT_TRUE(plc.SettledAt(19, 710)) << "13 -> 17 -> 18 -> 19";
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Power cycle and link loss in the middle of a request
+
+TEST_P(CtrlSim, PowerCycleDuringEachRequestIsConnectionLost) {
+    struct Case {
+        const char* name;
+        std::vector<Request> before;
+        std::uint16_t error;
+        Request request;
+    };
+    const Case cases[] = {{"START_ONLINE", {}, 0, kStartOnline},
+                          {"START_AUTOMATIC", {}, 0, kStartAutomatic},
+                          {"STOP", {kStartOnline}, 0, kStop},
+                          {"CANCEL", {kStartAutomatic}, 0, kCancel},
+                          {"RESET_ERROR", {}, 150, kResetError}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        CtrlSimPlc plc(GetParam(), {}, 100ms);
+        plc.Settle();
+        for (Request r : c.before) ASSERT_TRUE(plc.Run(r).done) << Name(r);
+        if (c.error != 0) plc.Controller().RaiseSystemError(c.error);
+        plc.Wait();
+        plc.Begin(c.request);
+        ASSERT_TRUE(plc.Busy());
+        plc.Controller().PowerCycle(plc.Now());
+        const ScanWindow lost = plc.Window().ImmediateReply(plc.Now());
+        const Final f = plc.WaitEnd(1000);
+        EXPECT_TRUE(f.error && lost.Contains(f.scans)) << f << ", the protocol allows " << lost;
+        EXPECT_EQ(f.errorId, kErrConnectionLost);
+        EXPECT_FALSE(plc.Ctrl()->READY.value);
+        plc.Release();
+        // While the controller boots, a request is refused at once; afterwards it works.
+        EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotReady));
+        plc.Settle();
+        EXPECT_TRUE(plc.Shows(1)) << "booted into home position, no error";
+        EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    }
+}
+
+TEST_P(CtrlSim, PowerCycleWhileTheAxisBrakesForAStop) {
+    CtrlSimPlc plc(GetParam(), {}, 100ms);
+    SlowBraking(plc, 2000.0F);
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Begin(kStop);
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Controller().OperatingStatus() == 32; }, 1000), 0);
+    plc.Scan(plc.ScansFor(100ms));
+    ASSERT_TRUE(plc.Busy());
+    plc.Controller().PowerCycle(plc.Now());
+    const ScanWindow lost = plc.Window().ImmediateReply(plc.Now());
+    const Final f = plc.WaitEnd(1000);
+    EXPECT_TRUE(f.error && lost.Contains(f.scans)) << f << ", the protocol allows " << lost;
+    EXPECT_EQ(f.errorId, kErrConnectionLost);
+    plc.Release();
+    plc.Settle();
+    EXPECT_TRUE(plc.Shows(1));
+}
+
+// A pulled cable: the FB sees zeros (16#8004); the controller sees an all-zero master image, the
+// emergency stop (4.2.5): ONLINE stopped with malfunction (39) but no system error, so START ONLINE
+// resumes after the link is back.
+TEST_P(CtrlSim, LinkLossDuringAStopThenResume) {
+    CtrlSimPlc plc(GetParam());
+    SlowBraking(plc, 2000.0F);
+    plc.Settle();
+    ASSERT_TRUE(plc.Run(kStartOnline).done);
+    MoveAxis1(plc);
+    plc.Begin(kStop);
+    plc.Bus().Disconnect(plc.Now());
+    const Final f = plc.WaitEnd(1000);
+    EXPECT_EQ(f.errorId, kErrConnectionLost) << f;
+    plc.Release();
+    plc.Scan(plc.ScansFor(100ms));
+    plc.Bus().Reconnect(plc.Now());
+    plc.Settle();
+    EXPECT_TRUE(plc.Shows(39)) << "emergency stop";
+    EXPECT_FALSE(plc.Controller().Axes().AnyMoving());
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 0));
+    EXPECT_TRUE(plc.SettledAt(31));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The first scan after a PLC restart
+
+// A new PLC program: a fresh FB_PAC_Ctrl instance (with the other IntegerMode) takes over the CTRL module
+// of a controller in ONLINE or AUTOMATIC. Its very first scan holds Stop and Cancel at 1: the controller
+// stays where it is, scan after scan.
+TEST_P(CtrlSim, FreshInstanceAfterAPlcRestartStopsAndCancelsNothing) {
+    const struct {
+        std::vector<Request> reach;
+        int status;
+    } cases[] = {{{kStartOnline}, 31}, {{kStartOnline, kStop}, 35}, {{kStartAutomatic}, 11},
+                 {{kStartAutomatic, kStop}, 15}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE("status " + std::to_string(c.status));
+        CtrlSimPlc plc(GetParam());
+        plc.Settle();
+        for (Request r : c.reach) ASSERT_TRUE(plc.Run(r).done) << Name(r);
+        ASSERT_TRUE(plc.SettledAt(c.status));
+        plc.RestartPlcProgram();
+        plc.Ctrl()->INTEGERMODE.value = TRUE;
+        const int scans = std::max(plc.ScansFor(1s), 200);
+        for (int i = 0; i < scans; ++i) {
+            plc.Scan();
+            ASSERT_EQ(plc.Controller().OperatingStatus(), c.status) << "scan " << i + 1 << " of the new program";
+            ASSERT_EQ(plc.ControlWordSeenByController() & 0x7FFF, kIdleByte) << "scan " << i + 1;
+        }
+        EXPECT_TRUE(plc.Shows(c.status));
+        EXPECT_FALSE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "the format in force is the old one";
+    }
+}
+
+// Contrast: a new program that leaves the CTRL module at zero (the CMD module carries FB_PAC_Cmd's
+// idle 190B, so the image is not all zero) cancels ONLINE to home position at the first cycle that
+// reads it; one that zeroes the whole image is the emergency stop (39).
+TEST_P(CtrlSim, ContrastANaiveMasterWithAnAllZeroControlWordCancels) {
+    {
+        SCOPED_TRACE("CTRL module zero");
+        CtrlSimPlc plc(GetParam());
+        plc.Settle();
+        ASSERT_TRUE(plc.Run(kStartOnline).done);
+        plc.Wait();
+        plc.ZeroCtrlModule(true);
+        plc.Scan();
+        const ScanWindow w = plc.Window().Request(plc.Now(), 0);
+        const int scans = plc.ScanUntil([&] { return !plc.Ctrl()->ONLINEACTIVE.value; }, 1000);
+        EXPECT_TRUE(w.Contains(scans)) << scans << " scans, the protocol allows " << w;
+        EXPECT_EQ(plc.Controller().OperatingStatus(), 1) << "cancelled";
+    }
+    {
+        SCOPED_TRACE("whole image zero");
+        CtrlSimPlc plc(GetParam());
+        plc.Settle();
+        ASSERT_TRUE(plc.Run(kStartOnline).done);
+        plc.Wait();
+        plc.ZeroCtrlModule(true);
+        plc.ZeroCmdModule(true);
+        plc.Wait();
+        EXPECT_EQ(plc.Controller().OperatingStatus(), 39) << "emergency stop, not a cancel";
+        EXPECT_TRUE(plc.Controller().EmergencyStopActive());
+    }
+}
+
+// The first start after the controller came up: it takes the first control word it reads as the
+// reference for the edges (docs/simulator.md), so a start bit in that very word is not seen. Execute
+// rising in the first scan that shows Ready works only where a controller cycle read one of the FB's
+// idle words before the start bit arrived; elsewhere the FB waits until Timeout (16#8009, never stuck
+// Busy). Waiting a controller cycle plus the bus both ways after Ready always works (every other test).
+TEST_P(CtrlSim, StartInTheFirstScansAfterPowerOnNeedsTheControllerToHaveReadAnIdleWord) {
+    CtrlSimPlc plc(GetParam());
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(200ms);
+    const nanoseconds firstScan = milliseconds(GetParam().plcMs);
+    ASSERT_GT(plc.ScanUntil([&] { return plc.Ctrl()->READY.value != 0; }, 1000), 0);
+    plc.Begin(kStartOnline);
+    const Final f = plc.WaitEnd(plc.ScansFor(1s));
+    if (GetParam().jitterUs == 0) {
+        if (plc.Window().CycleReadsOnlyTheFirst(firstScan, plc.Edge())) {
+            EXPECT_TRUE(f.done && plc.DoneWindow(1).Contains(f.scans)) << f << ", allowed " << plc.DoneWindow(1);
+        } else {
+            EXPECT_EQ(f.errorId, kErrRequestTimeout) << f << ": the controller read the start bit first";
+            EXPECT_EQ(f.scans, plc.Window().TimeoutScans(200ms));
+        }
+    } else {
+        EXPECT_TRUE((f.done && plc.DoneWindow(1).Contains(f.scans)) ||
+                    (f.errorId == kErrRequestTimeout && f.scans == plc.Window().TimeoutScans(200ms)))
+            << f;
+    }
+    plc.Release();
+    plc.Wait();
+    if (!f.done) {
+        EXPECT_TRUE(plc.Shows(1)) << "the start was not seen";
+        EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    }
+    EXPECT_TRUE(plc.SettledAt(31));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Integer format (2.5.3)
+
+TEST_P(CtrlSim, IntegerModeIsTakenOverOnlyWhenEnteringFromHome) {
+    CtrlSimPlc plc(GetParam());
+    plc.Ctrl()->INTEGERMODE.value = TRUE;
+    plc.Settle();
+    EXPECT_FALSE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "float after power-on";
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value);
+    EXPECT_TRUE(plc.Controller().IntegerFormat());
+
+    plc.Ctrl()->INTEGERMODE.value = FALSE;  // while ONLINE: no effect until the next entry from home
+    plc.Scan(plc.ScansFor(200ms));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value);
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 0));
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 0));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "a resume does not pass 30";
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(1));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "unchanged on returning home";
+    EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
+    EXPECT_FALSE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "taken over at the next entry";
+
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    plc.Ctrl()->INTEGERMODE.value = TRUE;
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 1));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value);
+    plc.Ctrl()->INTEGERMODE.value = FALSE;
+    EXPECT_TRUE(DoneInWindow(plc, kStop, 1));
+    EXPECT_TRUE(DoneInWindow(plc, kStartAutomatic, 0));
+    EXPECT_TRUE(plc.SettledAt(11));
+    EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value);
+}
+
+INSTANTIATE_TEST_SUITE_P(BusTimings, CtrlSim, ::testing::ValuesIn(AllTimings()), TimingName);
+
+}  // namespace
