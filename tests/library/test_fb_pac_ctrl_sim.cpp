@@ -202,19 +202,6 @@ public:
         return static_cast<int>((5 * t_.pacCycle + 2 * way) / t_.plcCycle) + 2;
     }
 
-    // Whether some controller cycle reads the image written in the scan at `first` before the one
-    // written in the scan at `later` reaches it (without jitter): with latency an image written at s
-    // is read by the cycles from s + latency on, without latency by the cycles after s.
-    bool CycleReadsOnlyTheFirst(nanoseconds first, nanoseconds later) const {
-        const nanoseconds latency = t_.plcCycle * t_.latencyCycles;
-        for (nanoseconds cycle{0}; cycle <= later + latency; cycle += t_.pacCycle) {
-            const bool readsFirst = latency > 0ns ? cycle >= first + latency : cycle > first;
-            const bool readsLater = latency > 0ns ? cycle >= later + latency : cycle > later;
-            if (readsFirst && !readsLater) return true;
-        }
-        return false;
-    }
-
 private:
     int Scans(nanoseconds from, bool throughTheBus, int extraCycles, nanoseconds jitter) const {
         const nanoseconds arrival = throughTheBus ? from + t_.plcCycle * t_.latencyCycles + jitter : from;
@@ -516,7 +503,16 @@ void SlowBraking(CtrlSimPlc& plc, float deceleration) {
     ASSERT_EQ(plc.Controller().Axes().Parameters(1).Set(6, sim::FloatToBits(deceleration)),
               sim::ParameterTable::SetResult::kOk);
 }
-void MoveAxis1(CtrlSimPlc& plc) { plc.Controller().Axes().Motion(1).MoveTo(plc.Now(), 1.0e6); }
+// The test hook starts at full speed at once (no ramp up, so the braking time is speed / deceleration)
+// towards the far end of the traverse range, braking at the session's deceleration.
+void MoveAxis1(CtrlSimPlc& plc) {
+    sim::AxisGroup& axes = plc.Controller().Axes();
+    sim::Dynamics dynamics = axes.SessionDynamics(1);
+    dynamics.speed = 1000.0;
+    dynamics.acceleration = 1.0e12;
+    sim::ServoAxis& axis = axes.Motion(1);
+    ASSERT_EQ(axis.MoveAbsolute(plc.Now(), axis.MaxRange(), dynamics), 0u);
+}
 
 class CtrlSim : public ::testing::TestWithParam<BusTiming> {
 protected:
@@ -1193,31 +1189,18 @@ TEST_P(CtrlSim, ContrastANaiveMasterWithAnAllZeroControlWordCancels) {
 // rising in the first scan that shows Ready works only where a controller cycle read one of the FB's
 // idle words before the start bit arrived; elsewhere the FB waits until Timeout (16#8009, never stuck
 // Busy). Waiting a controller cycle plus the bus both ways after Ready always works (every other test).
-TEST_P(CtrlSim, StartInTheFirstScansAfterPowerOnNeedsTheControllerToHaveReadAnIdleWord) {
+// A start raised as soon as Ready shows may be in the first control word the controller reads after its
+// boot (where its cycle is longer than the PLC's). The simulator counts the bits as idle before that
+// word, so the start is an edge and is served on every timing (docs/simulator.md).
+TEST_P(CtrlSim, StartInTheFirstScansAfterPowerOnIsServed) {
     CtrlSimPlc plc(GetParam());
     plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(200ms);
-    const nanoseconds firstScan = milliseconds(GetParam().plcMs);
     ASSERT_GT(plc.ScanUntil([&] { return plc.Ctrl()->READY.value != 0; }, 1000), 0);
     plc.Begin(kStartOnline);
     const Final f = plc.WaitEnd(plc.ScansFor(1s));
-    if (GetParam().jitterUs == 0) {
-        if (plc.Window().CycleReadsOnlyTheFirst(firstScan, plc.Edge())) {
-            EXPECT_TRUE(f.done && plc.DoneWindow(1).Contains(f.scans)) << f << ", allowed " << plc.DoneWindow(1);
-        } else {
-            EXPECT_EQ(f.errorId, kErrRequestTimeout) << f << ": the controller read the start bit first";
-            EXPECT_EQ(f.scans, plc.Window().TimeoutScans(200ms));
-        }
-    } else {
-        EXPECT_TRUE((f.done && plc.DoneWindow(1).Contains(f.scans)) ||
-                    (f.errorId == kErrRequestTimeout && f.scans == plc.Window().TimeoutScans(200ms)))
-            << f;
-    }
+    EXPECT_TRUE(f.done && plc.DoneWindow(1).Contains(f.scans)) << f << ", allowed " << plc.DoneWindow(1);
     plc.Release();
     plc.Wait();
-    if (!f.done) {
-        EXPECT_TRUE(plc.Shows(1)) << "the start was not seen";
-        EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
-    }
     EXPECT_TRUE(plc.SettledAt(31));
 }
 
