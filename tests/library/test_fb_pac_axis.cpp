@@ -6,6 +6,7 @@
 // traverse bits, never Start without exactly one, and that Busy/Done/Error/CommandAborted exclude each other.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bitset>
 #include <chrono>
 #include <cstdint>
@@ -51,6 +52,9 @@ const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];                  // 55
 const std::uint32_t kLimitSwitch = kGvl["PAC_ERR_LIMIT_SWITCH"];          // 64
 
 constexpr int kTimeoutScans = 20;  // Timeout in the tests, at 1 ms per scan
+// FB_PAC_Axis's bound for the PA-CONTROL's update time (2.3.4: < 10 ms in ONLINE), at 1 ms per scan: Start and
+// the reset bit must have been 0 that long before the FB can be sure the PA-CONTROL has seen them 0.
+constexpr int kPacUpdateScans = 10;
 
 std::uint32_t TraverseBits(std::uint32_t control) { return control & ctrl::kTraverseBits; }
 int CountBits(std::uint32_t v) { return static_cast<int>(std::bitset<32>(v).count()); }
@@ -163,7 +167,8 @@ protected:
     bool StartBit() const { return (ControlWord() & ctrl::kStart) != 0; }
     std::uint32_t Traverse() const { return TraverseBits(ControlWord()); }
     int RoundTrip() const { return outLatency_ + inLatency_ + 1; }  // scans from writing to seeing the answer
-    void Settle() { Cycle(RoundTrip() + 2); }
+    // Long enough for the FB to count the axis as free after a (re)start: Start 0 for the update time.
+    void Settle() { Cycle(RoundTrip() + 2 + kPacUpdateScans); }
 
     pac::FbInstance<FB_PAC_AXIS> fb_ = PAC_FB(FB_PAC_AXIS);
     std::unique_ptr<FakeAxisModule> axis_;
@@ -418,14 +423,18 @@ INSTANTIATE_TEST_SUITE_P(OutIn, FbPacAxisLatency, ::testing::Combine(::testing::
                                     std::to_string(std::get<1>(info.param));
                          });
 
-TEST_F(FbPacAxis, StartNeverGoesOutInTheFirstScan) {
+TEST_F(FbPacAxis, StartWaitsForTheUpdateTimeAfterARestart) {
+    // The PA-CONTROL may still see a Start from before a PLC restart: Start goes out once it has been 0 on the
+    // wire for the PA-CONTROL's longest update time, so the PA-CONTROL has seen it 0 and sees a new edge.
     SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
     Execute(true);
+    for (int i = 0; i < kPacUpdateScans; ++i) {
+        Cycle(1);
+        EXPECT_FALSE(StartBit()) << "scan " << task_.ScanCount();
+        EXPECT_TRUE(Busy());
+    }
     Cycle(1);
-    EXPECT_FALSE(StartBit()) << "the PA-CONTROL may still see a Start from before a PLC restart";
-    EXPECT_TRUE(Busy());
-    Cycle(1);
-    EXPECT_TRUE(StartBit());
+    EXPECT_TRUE(StartBit()) << "0 since the first scan, seen from the second: 10 ms at scan 11";
 }
 
 TEST_F(FbPacAxis, DoneShowsForExactlyOneScanWhenExecuteFellEarly) {
@@ -529,7 +538,9 @@ TEST_P(FbPacAxisStale, FailedThenFailedWithTheSameNumber) {
     if (SetsLate()) {
         EXPECT_EQ(second.finalScan, second.startScan + K() + 1) << "bit seen 0, then 1";
     } else {
-        EXPECT_EQ(second.finalScan, second.startScan + 2 * Measured()) << "twice the measured take-over time";
+        // Twice the measured take-over time plus the update time (the take-over bound), or Timeout first.
+        EXPECT_EQ(second.finalScan, second.startScan + std::min(2 * Measured() + kPacUpdateScans, kTimeoutScans))
+            << "the take-over bound";
     }
 }
 
@@ -692,11 +703,17 @@ TEST_F(FbPacAxis, ResetPulseEndsAfterTimeoutWhileTheCauseRemains) {
     ASSERT_TRUE(RunUntil([&] { return (ControlWord() & ctrl::kResetAxisError) == 0; }, 40, "reset bit off"));
     EXPECT_EQ(task_.ScanCount(), r + kTimeoutScans);
     EXPECT_TRUE(fb_->AXISERROR.value);
+    const std::int64_t off = task_.ScanCount();
     fb_->RESETERROR.value = FALSE;
     Cycle(1);
     axis_->ClearAxisErrorCause();
     fb_->RESETERROR.value = TRUE;
     Cycle(1);
+    // A PA-CONTROL may act on the rising edge only: the new pulse waits until bit 16 has been 0 for the
+    // update time (read back from the scan after it fell).
+    EXPECT_EQ(ControlWord() & ctrl::kResetAxisError, 0u);
+    ASSERT_TRUE(RunUntil([&] { return (ControlWord() & ctrl::kResetAxisError) != 0; }, 20, "reset bit on"));
+    EXPECT_EQ(task_.ScanCount(), off + 1 + kPacUpdateScans);
     ASSERT_TRUE(RunUntil([&] { return !fb_->AXISERROR.value; }, 5, "axis error cleared"));
 }
 

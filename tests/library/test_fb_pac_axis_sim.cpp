@@ -1,0 +1,1306 @@
+// FB_PAC_Axis (the library's ST compiled to C) driving the axis modules of the simulated PA-CONTROL (manual
+// 2.7) over the simulated bus, scan by scan: FB_PAC_Ctrl brings the controller to ONLINE (external stop:
+// system parameter 4 = input 1), then the four sequences of 2.7.9, every command in both number formats,
+// every error path and its recovery, Abort / Enable / link loss / a new job during a move, jog, G123 and eight
+// axes at once, on every combination of PLC cycle (1, 2, 5, 10 ms), PA-CONTROL cycle (1, 3, 10 ms) and bus
+// latency (0..3 PLC cycles each way), and on jittered buses (seeds printed). Every scan checks that the module
+// never carries two traverse bits nor Start without exactly one, that Busy / Done / Error / CommandAborted
+// exclude each other and that ErrorID is not 0 exactly when Error; the controller's own log shows that every
+// Start edge the FB sent was recognised (none arrived while the axis was ACTIVE) and no job was sent twice.
+#include <gtest/gtest.h>
+
+#include <bitset>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/sim/axis_module.hpp"
+#include "pac/sim/pa_control.hpp"
+#include "pac/st_program.hpp"
+#include "pac_plc_bench.hpp"
+#include "real_bits.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using std::chrono::milliseconds;
+using std::chrono::nanoseconds;
+namespace ac = pac::sim::axis_control;
+namespace as = pac::sim::axis_status;
+using pac::sim::CmdErrorRestart;
+using pac::sim::EnableMode;
+
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kErrAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
+const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kNoReference = kGvl["PAC_ERR_NO_REFERENCE"];      // 43
+const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];              // 55
+const std::uint32_t kAxisDisplaced = kGvl["PAC_ERR_AXIS_DISPLACED"];  // 56
+const std::uint32_t kLimitSwitch = kGvl["PAC_ERR_LIMIT_SWITCH"];      // 64
+const std::uint32_t kPositionRange = kGvl["PAC_ERR_POSITION_RANGE"];  // 65
+const std::uint32_t kInadmissible = kGvl["PAC_ERR_INADMISSIBLE_COMMAND"];  // 20
+constexpr std::uint16_t kFollowingError = pac::sim::axis_error::kFollowingError;  // 66, the simulator's number
+
+constexpr auto kHome = E_PAC_AXISCOMMAND__PAC_AX_HOME;
+constexpr auto kAbsolute = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
+constexpr auto kRelative = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
+constexpr auto kToMax = E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX;
+constexpr auto kToMin = E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN;
+constexpr auto kSetReferenced = E_PAC_AXISCOMMAND__PAC_AX_SET_REFERENCED;
+constexpr auto kSetPosition = E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION;
+constexpr auto kClearOffset = E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET;
+constexpr auto kClearDisplaced = E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED;
+constexpr auto kWhileInput1 = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
+
+// Status words as the simulator composes them (2.7.2; limit switch bits 9 / 10 are 1 while free).
+constexpr std::uint32_t kFree = as::kNegativeLimitSwitch | as::kPositiveLimitSwitch;            // 0x600
+constexpr std::uint32_t kOnUnreferenced = as::kDriveEnabled | kFree;                            // 0x601
+constexpr std::uint32_t kOnReferenced = as::kDriveEnabled | as::kReferenced | kFree;            // 0x701
+constexpr std::uint32_t kOnActive = kOnReferenced | as::kActive;                                 // 0x781
+constexpr std::uint32_t kOn = ac::kAxisOn;
+
+constexpr int kExternalStopInput = 1;  // system parameter 4 (5.2.1.3)
+constexpr int kConditionInput = 5;     // G123 (input 1 is the external stop here)
+
+int CountBits(std::uint32_t v) { return static_cast<int>(std::bitset<32>(v).count()); }
+
+struct Timing {
+    int plcMs;
+    int pacMs;
+    int latency;  // PLC cycles each way
+};
+
+std::string Describe(const Timing& t) {
+    return "PLC " + std::to_string(t.plcMs) + " ms, PA-CONTROL " + std::to_string(t.pacMs) + " ms, latency " +
+           std::to_string(t.latency) + " PLC cycle(s) each way";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// What one scan of one axis looked like: the control word the FB wrote, the status word it read and its
+// final output. The trace of an axis merges consecutive equal scans, so a sequence of 2.7.9 reads the same
+// on every bus timing; each step keeps the scan it began in.
+
+struct AxisStep {
+    std::uint32_t control = 0;
+    std::uint32_t status = 0;
+    char output = '-';  // '-' none, 'B' Busy, 'D' Done, 'E' Error, 'A' CommandAborted, '!' several
+
+    friend bool operator==(const AxisStep& a, const AxisStep& b) {
+        return a.control == b.control && a.status == b.status && a.output == b.output;
+    }
+    friend bool operator!=(const AxisStep& a, const AxisStep& b) { return !(a == b); }
+    friend std::ostream& operator<<(std::ostream& out, const AxisStep& s) {
+        return out << "{CW " << std::hex << std::uppercase << std::setw(5) << std::setfill('0') << s.control
+                   << ", SW " << std::setw(4) << s.status << std::dec << ", " << s.output << "}";
+    }
+};
+using Steps = std::vector<AxisStep>;
+
+std::string Show(const Steps& steps) {
+    std::ostringstream out;
+    for (const AxisStep& s : steps) out << "\n  " << s;
+    return out.str();
+}
+
+class AxisTrace {
+public:
+    void Add(std::int64_t scan, const AxisStep& step) {
+        if (!steps_.empty() && steps_.back() == step) return;
+        steps_.push_back(step);
+        scans_.push_back(scan);
+    }
+    // The step showing now; Since(mark) starts with it.
+    std::size_t Mark() const { return steps_.empty() ? 0 : steps_.size() - 1; }
+    Steps Since(std::size_t mark) const {
+        return Steps(steps_.begin() + static_cast<std::ptrdiff_t>(mark), steps_.end());
+    }
+    // The scan the first step after `mark` matching `predicate` began in; -1 if none.
+    std::int64_t ScanOf(std::size_t mark, const std::function<bool(const AxisStep&)>& predicate) const {
+        for (std::size_t i = mark; i < steps_.size(); ++i) {
+            if (predicate(steps_[i])) return scans_[i];
+        }
+        return -1;
+    }
+
+private:
+    Steps steps_;
+    std::vector<std::int64_t> scans_;
+};
+
+// The rules every scan must keep (FB_PAC_Axis.md, the issue): never two traverse bits, Start only with
+// exactly one, the final outputs and Busy exclusive, ErrorID <> 0 exactly when Error. Reports the first few
+// violations with their scan.
+class ScanInvariants {
+public:
+    void Check(int axis, std::int64_t scan, std::uint32_t control, const FB_PAC_AXIS& fb) {
+        const int traverse = CountBits(control & ac::kTraverseBits);
+        const int outputs = (fb.BUSY.value != 0) + (fb.DONE.value != 0) + (fb.ERROR.value != 0) +
+                            (fb.COMMANDABORTED.value != 0);
+        if (traverse > 1) Report(axis, scan, "two traverse bits", control);
+        if ((control & ac::kStart) != 0 && traverse != 1) {
+            Report(axis, scan, "Start without exactly one traverse bit", control);
+        }
+        if (outputs > 1) Report(axis, scan, "Busy, Done, Error, CommandAborted overlap", control);
+        if ((fb.ERROR.value != 0) != (fb.ERRORID.value != 0)) {
+            Report(axis, scan, "ErrorID <> 0 differs from Error", control);
+        }
+    }
+    int Violations() const { return violations_; }
+
+private:
+    void Report(int axis, std::int64_t scan, const char* what, std::uint32_t control) {
+        if (++violations_ <= 5) {
+            ADD_FAILURE() << "axis " << axis << ", scan " << scan << ": " << what << " (control word 16#" << std::hex
+                          << control << std::dec << ")";
+        }
+    }
+    int violations_ = 0;
+};
+
+// The controller's side, from its exchange log: the Start edges it saw on each module, and those that came
+// while the module showed ACTIVE (lost, 2.7.3.2). An all-zero image is no control word (4.2.5).
+class ControllerView {
+public:
+    explicit ControllerView(const pac::sim::ModuleLayout& layout)
+        : layout_(layout), last_(static_cast<std::size_t>(layout.axisModules) + 1) {}
+
+    void Follow(const pac::sim::ExchangeLog& log) {
+        for (const pac::sim::ExchangeRecord& r : log.Records()) {
+            if (seenAny_ && r.time <= lastTime_) continue;
+            seenAny_ = true;
+            lastTime_ = r.time;
+            for (int k = 1; k <= layout_.axisModules; ++k) {
+                Module& m = last_[static_cast<std::size_t>(k)];
+                const std::size_t offset = layout_.AxisOffset(k);
+                if (!r.master.AllZero()) {
+                    const std::uint32_t control = pac::sim::ReadDword(r.master.Module12(offset), 0);
+                    if ((control & ac::kStart) != 0 && (m.control & ac::kStart) == 0) {
+                        ++m.edges;
+                        if ((m.status & as::kActive) != 0) ++m.lostEdges;
+                        m.jobs.push_back(pac::sim::AxisModuleCommand::Decode(r.master.Module12(offset)));
+                    }
+                    m.control = control;
+                }
+                m.status = pac::sim::ReadDword(r.reply.Module12(offset), 0);
+            }
+        }
+    }
+    int StartEdges(int k) const { return last_[static_cast<std::size_t>(k)].edges; }
+    int LostEdges(int k) const { return last_[static_cast<std::size_t>(k)].lostEdges; }
+    // The module as the PA-CONTROL read it in the cycle of each Start edge.
+    const std::vector<pac::sim::AxisModuleCommand>& Jobs(int k) const {
+        return last_[static_cast<std::size_t>(k)].jobs;
+    }
+
+private:
+    struct Module {
+        std::uint32_t control = 0;
+        std::uint32_t status = 0;
+        int edges = 0;
+        int lostEdges = 0;
+        std::vector<pac::sim::AxisModuleCommand> jobs;
+    };
+    pac::sim::ModuleLayout layout_;
+    std::vector<Module> last_;
+    bool seenAny_ = false;
+    nanoseconds lastTime_{0};
+};
+
+// ---------------------------------------------------------------------------------------------------
+// The PLC: FB_PAC_Ctrl on the CTRL module and one FB_PAC_Axis per axis module of a simulated PA-CONTROL,
+// each axis taking the format in force from FB_PAC_Ctrl as a PLC program wires them.
+
+struct BenchOptions {
+    Timing timing{1, 10, 0};
+    int axes = 1;
+    nanoseconds jitter{0};
+    std::uint64_t seed = 1;
+    EnableMode enableMode = EnableMode::kHalt;
+    bool referenced = true;  // at power-on
+    CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
+};
+
+struct Job {
+    E_PAC_AXISCOMMAND command = E_PAC_AXISCOMMAND__PAC_AX_NONE;
+    float position = 0.0f;
+    unsigned velocity = 1000;
+    unsigned acceleration = 1000;
+    E_PAC_MOVECONDITION condition = E_PAC_MOVECONDITION__PAC_COND_NONE;
+};
+
+struct Outcome {
+    bool done = false;
+    bool error = false;
+    bool aborted = false;
+    std::uint32_t errorId = 0;
+    std::int64_t edgeScan = -1;
+    std::int64_t finalScan = -1;
+    std::size_t mark = 0;  // trace mark before the edge
+};
+
+std::ostream& operator<<(std::ostream& out, const Outcome& o) {
+    return out << (o.done ? "Done" : o.error ? "Error" : o.aborted ? "CommandAborted" : "no final output")
+               << " ErrorID 16#" << std::hex << o.errorId << std::dec << " (edge scan " << o.edgeScan
+               << ", final scan " << o.finalScan << ")";
+}
+
+pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
+    pac::sim::PaControlConfig config;
+    config.axisMachine.enableMode = o.enableMode;
+    config.referencedAtPowerOn = o.referenced;
+    config.axisModule.cmdErrorRestart = o.cmdErrorRestart;
+    return config;
+}
+
+pac::test::PlcBenchTiming BenchTiming(const BenchOptions& o) {
+    return {milliseconds(o.timing.plcMs), milliseconds(o.timing.pacMs), o.timing.latency, o.jitter, o.seed, 0ns};
+}
+
+class AxisSimBench {
+public:
+    explicit AxisSimBench(const BenchOptions& options)
+        : options_(options),
+          layout_{true, options.axes},
+          plc_(BenchTiming(options), ConfigFor(options), layout_),
+          view_(layout_) {
+        auto& pac = plc_.Controller();
+        EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
+                  pac::sim::ParameterTable::SetResult::kOk);
+        pac.Io().inputs.Set(kExternalStopInput, true);
+        for (int k = 0; k < options.axes; ++k) axes_.push_back(std::make_unique<AxisFb>(PAC_FB(FB_PAC_AXIS)));
+        traces_.resize(static_cast<std::size_t>(options.axes));
+        plc_.CallCtrl(ctrl_);
+        for (int k = 1; k <= options.axes; ++k) {
+            plc_.CallAxis(Fb(k), k, [this, k] { Fb(k)->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+            Fb(k)->ENABLE.value = TRUE;
+        }
+        plc_.Start();
+        plc_.Task().AddProgram([this] { Record(); });
+    }
+
+    // ONLINE through FB_PAC_Ctrl, with the integer format (2.5.3) taken over on the way; then long enough for
+    // the axis FBs to treat the axes as free (more than the PA-CONTROL's longest update time, 2.3.4).
+    void GoOnline(bool integer = false) {
+        // As a PLC program would: the request once the controller shows Ready, not in the very first scans (the
+        // first control word after the boot is only the reference for the CTRL edges, docs/simulator.md).
+        ASSERT_GT(ScanUntil([this] { return ctrl_->READY.value != 0; }, 200), 0) << "Ready";
+        ScanMs(20);
+        ctrl_->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+        ctrl_->INTEGERMODE.value = integer ? TRUE : FALSE;
+        ctrl_->EXECUTE.value = TRUE;
+        const int scans = ScanUntil([this] { return ctrl_->DONE.value || ctrl_->ERROR.value; }, 500);
+        ASSERT_GT(scans, 0) << "START_ONLINE ended";
+        ASSERT_TRUE(ctrl_->DONE.value) << "START_ONLINE: ErrorID 16#" << std::hex << ctrl_->ERRORID.value;
+        ctrl_->EXECUTE.value = FALSE;
+        ASSERT_EQ(plc_.Controller().OperatingStatus(), 31);
+        ASSERT_EQ(ctrl_->INTEGERMODEACTIVE.value != 0, integer);
+        ASSERT_EQ(plc_.Controller().IntegerFormat(), integer);
+        ScanMs(30);
+    }
+
+    using AxisFb = pac::FbInstance<FB_PAC_AXIS>;
+    AxisFb& Fb(int k) { return *axes_.at(static_cast<std::size_t>(k - 1)); }
+    pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
+    pac::sim::PaControl& Pac() { return plc_.Controller(); }
+    pac::sim::ServoAxis& Motion(int k) { return plc_.Controller().Axes().Motion(k); }
+    pac::test::PacPlcBench& Plc() { return plc_; }
+    nanoseconds Now() const { return plc_.Now(); }
+    std::int64_t ScanCount() { return plc_.Task().ScanCount(); }
+    const AxisTrace& Trace(int k) const { return traces_.at(static_cast<std::size_t>(k - 1)); }
+    const ControllerView& View() const { return view_; }
+    const ScanInvariants& Invariants() const { return invariants_; }
+    const BenchOptions& Options() const { return options_; }
+
+    std::uint32_t Control(int k) const {
+        return pac::sim::ReadDword(plc_.ToPac().Module12(layout_.AxisOffset(k)), 0);
+    }
+    bool Final(int k) { return Fb(k)->DONE.value || Fb(k)->ERROR.value || Fb(k)->COMMANDABORTED.value; }
+
+    void Scan(int n = 1) { plc_.Scan(n); }
+    int ScansFor(int ms) const { return ms / options_.timing.plcMs + 1; }
+    void ScanMs(int ms) { Scan(ScansFor(ms)); }
+    int ScanUntil(const std::function<bool()>& predicate, int maxScans) { return plc_.ScanUntil(predicate, maxScans); }
+    // Scans until the predicate holds, at most `ms` of simulated time; false (with the reason) if it never did.
+    ::testing::AssertionResult WaitFor(const std::function<bool()>& predicate, int ms, const std::string& what) {
+        if (ScanUntil(predicate, ScansFor(ms)) > 0) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << what << " not within " << ms << " ms (scan " << ScanCount() << ")";
+    }
+
+    void SetJob(int k, const Job& job) {
+        Fb(k)->COMMAND.value = job.command;
+        Fb(k)->POSITION.value = job.position;
+        Fb(k)->VELOCITY.value = static_cast<UINT>(job.velocity);
+        Fb(k)->ACCELERATION.value = static_cast<UINT>(job.acceleration);
+        Fb(k)->CONDITION.value = job.condition;
+    }
+
+    // Execute edge with `job` (the next scan sees it), then scans until a final output (Execute stays TRUE).
+    Outcome StartAndWait(int k, const Job& job, int maxMs = 3000) {
+        SetJob(k, job);
+        Outcome o;
+        o.mark = Trace(k).Mark();
+        Fb(k)->EXECUTE.value = TRUE;
+        Scan();
+        o.edgeScan = ScanCount();
+        if (!Final(k)) ScanUntil([this, k] { return Final(k); }, ScansFor(maxMs));
+        o.done = Fb(k)->DONE.value != 0;
+        o.error = Fb(k)->ERROR.value != 0;
+        o.aborted = Fb(k)->COMMANDABORTED.value != 0;
+        o.errorId = Fb(k)->ERRORID.value;
+        if (Final(k)) o.finalScan = ScanCount();
+        return o;
+    }
+
+    // A whole job as a PLC program runs it: edge, wait, Execute back to FALSE for one scan, in which the final
+    // output must clear.
+    Outcome Run(int k, const Job& job, int maxMs = 3000) {
+        Outcome o = StartAndWait(k, job, maxMs);
+        Fb(k)->EXECUTE.value = FALSE;
+        Scan();
+        EXPECT_FALSE(Final(k)) << "axis " << k << ": the final output clears in the scan that sees Execute FALSE";
+        return o;
+    }
+
+    float Position(int k) { return Fb(k)->ACTUALPOSITION.value; }
+
+    // Every Start edge the FB sent was one job the PA-CONTROL recognised: `jobs` edges, none while ACTIVE.
+    void ExpectJobsSeen(int k, int jobs) {
+        EXPECT_EQ(view_.StartEdges(k), jobs) << "axis " << k << ": Start edges seen by the PA-CONTROL";
+        EXPECT_EQ(view_.LostEdges(k), 0) << "axis " << k << ": Start edges that came while ACTIVE";
+    }
+
+private:
+    void Record() {
+        view_.Follow(plc_.Controller().Log());
+        const std::int64_t scan = plc_.Task().ScanCount();
+        for (int k = 1; k <= options_.axes; ++k) {
+            const FB_PAC_AXIS& fb = Fb(k).Data();
+            const std::uint32_t control = Control(k);
+            invariants_.Check(k, scan, control, fb);
+            AxisStep step;
+            step.control = control;
+            step.status = fb.STATUSWORD.value;
+            const int outputs = (fb.BUSY.value != 0) + (fb.DONE.value != 0) + (fb.ERROR.value != 0) +
+                                (fb.COMMANDABORTED.value != 0);
+            if (outputs > 1) {
+                step.output = '!';
+            } else if (fb.BUSY.value) {
+                step.output = 'B';
+            } else if (fb.DONE.value) {
+                step.output = 'D';
+            } else if (fb.ERROR.value) {
+                step.output = 'E';
+            } else if (fb.COMMANDABORTED.value) {
+                step.output = 'A';
+            }
+            traces_[static_cast<std::size_t>(k - 1)].Add(scan, step);
+        }
+    }
+
+    BenchOptions options_;
+    pac::sim::ModuleLayout layout_;
+    pac::test::PacPlcBench plc_;
+    pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    std::vector<std::unique_ptr<AxisFb>> axes_;  // never moved: the PLC's programs hold references
+    std::vector<AxisTrace> traces_;
+    ScanInvariants invariants_;
+    ControllerView view_;
+};
+
+// Axis parameters 8 / 9 (traverse range) and the limit switches (machine positions) of axis k.
+void SetRange(AxisSimBench& bench, int k, float min, float max) {
+    auto& parameters = bench.Pac().Axes().Parameters(k);
+    ASSERT_EQ(parameters.Set(pac::sim::axisparam::kMinTraverseArea, pac::test::BitsOf(min)),
+              pac::sim::ParameterTable::SetResult::kOk);
+    ASSERT_EQ(parameters.Set(pac::sim::axisparam::kMaxTraverseArea, pac::test::BitsOf(max)),
+              pac::sim::ParameterTable::SetResult::kOk);
+    ASSERT_TRUE(bench.Pac().Axes().ApplyParameters(k));
+}
+
+AxisStep S(std::uint32_t control, std::uint32_t status, char output) { return {control, status, output}; }
+
+// ---------------------------------------------------------------------------------------------------
+// Every timing of the FB_PAC_Cmd simulator tests: PLC cycle x PA-CONTROL cycle x latency.
+
+class AxisSimTiming : public ::testing::TestWithParam<std::tuple<int, int, int>> {
+protected:
+    Timing Param() const { return {std::get<0>(GetParam()), std::get<1>(GetParam()), std::get<2>(GetParam())}; }
+    BenchOptions Options() const {
+        BenchOptions o;
+        o.timing = Param();
+        return o;
+    }
+    void SetUp() override { trace_ = std::make_unique<::testing::ScopedTrace>(__FILE__, __LINE__, Describe(Param())); }
+    void TearDown() override { trace_.reset(); }
+
+private:
+    std::unique_ptr<::testing::ScopedTrace> trace_;
+};
+
+// ---- the four sequences of 2.7.9 ----------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, AxisOnOff_2_7_9_1_InEveryEnableMode) {
+    struct Mode {
+        EnableMode mode;
+        std::uint32_t off;  // the status word with Axis ON = 0
+        const char* name;
+    };
+    const Mode modes[] = {
+        {EnableMode::kHalt, as::kHalt | as::kReferenced | kFree, "HALT"},                            // 0x702
+        {EnableMode::kIdle, as::kDriveDisabled | as::kIdle | as::kReferenced | kFree, "IDLE"},       // 0x714
+        {EnableMode::kSafe, as::kDriveDisabled | as::kSafe | as::kReferenced | kFree, "SAFE"},       // 0x70C
+    };
+    constexpr std::uint32_t kDisabledStatus = as::kDriveDisabled | as::kDisabled | as::kReferenced | kFree;  // 0x724
+    for (const Mode& m : modes) {
+        SCOPED_TRACE(m.name);
+        BenchOptions o = Options();
+        o.enableMode = m.mode;
+        AxisSimBench bench(o);
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        const std::size_t mark = bench.Trace(1).Mark();
+        fb->ENABLE.value = FALSE;
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->STATUSWORD.value == m.off; }, 200, "Axis OFF"));
+        EXPECT_FALSE(fb->ENABLED.value);
+        EXPECT_EQ(fb->HALTED.value != 0, m.mode == EnableMode::kHalt);
+        EXPECT_EQ(fb->IDLE.value != 0, m.mode == EnableMode::kIdle);
+        EXPECT_EQ(fb->SAFE.value != 0, m.mode == EnableMode::kSafe);
+        EXPECT_EQ(fb->DRIVEDISABLED.value != 0, m.mode != EnableMode::kHalt);
+        bench.ScanMs(20);
+        fb->ENABLE.value = TRUE;
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+        bench.ScanMs(20);
+        fb->DISABLEDRIVE.value = TRUE;
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->DISABLED.value != 0; }, 200, "DISABLED"));
+        EXPECT_TRUE(fb->DRIVEDISABLED.value);
+        bench.ScanMs(20);
+        fb->DISABLEDRIVE.value = FALSE;
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON again"));
+        bench.ScanMs(20);
+        const Steps expected = {S(kOn, kOnReferenced, '-'),
+                                S(0, kOnReferenced, '-'),
+                                S(0, m.off, '-'),
+                                S(kOn, m.off, '-'),
+                                S(kOn, kOnReferenced, '-'),
+                                S(kOn | ac::kDisableDrive, kOnReferenced, '-'),
+                                S(kOn | ac::kDisableDrive, kDisabledStatus, '-'),
+                                S(kOn, kDisabledStatus, '-'),
+                                S(kOn, kOnReferenced, '-')};
+        EXPECT_EQ(bench.Trace(1).Since(mark), expected) << Show(bench.Trace(1).Since(mark));
+        bench.ExpectJobsSeen(1, 0);
+    }
+}
+
+TEST_P(AxisSimTiming, Referencing_2_7_9_2) {
+    BenchOptions o = Options();
+    o.referenced = false;
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    EXPECT_FALSE(bench.Fb(1)->REFERENCED.value);
+    const Outcome home = bench.Run(1, {kHome});
+    ASSERT_TRUE(home.done) << home;
+    // G25 with the axis parameters: search negative to the cam edge (machine -20), creep back, load 0 there,
+    // brake 0.5 AE past it (docs/sim_axis.md, homing mode 0).
+    const Steps expected = {S(kOn, kOnUnreferenced, '-'),
+                            S(kOn | ac::kStart | ac::kHome, kOnUnreferenced, 'B'),
+                            S(kOn | ac::kHome, kOnUnreferenced | as::kActive, 'B'),
+                            S(kOn | ac::kHome, kOnActive, 'B'),
+                            S(kOn, kOnReferenced, 'D'),
+                            S(kOn, kOnReferenced, '-')};
+    EXPECT_EQ(bench.Trace(1).Since(home.mark), expected) << Show(bench.Trace(1).Since(home.mark));
+    EXPECT_TRUE(bench.Fb(1)->REFERENCED.value);
+    EXPECT_EQ(bench.Position(1), 0.5f);
+    bench.ExpectJobsSeen(1, 1);
+}
+
+TEST_P(AxisSimTiming, RelativeTraversing_2_7_9_3_InBothFormats) {
+    for (const bool integer : {false, true}) {
+        SCOPED_TRACE(integer ? "integer format" : "IEEE format");
+        AxisSimBench bench(Options());
+        bench.GoOnline(integer);
+        const Outcome move = bench.Run(1, {kRelative, 37.625f});
+        ASSERT_TRUE(move.done) << move;
+        const Steps expected = {S(kOn, kOnReferenced, '-'),
+                                S(kOn | ac::kStart | ac::kRelative, kOnReferenced, 'B'),
+                                S(kOn | ac::kRelative, kOnActive, 'B'),
+                                S(kOn, kOnReferenced, 'D'),
+                                S(kOn, kOnReferenced, '-')};
+        EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
+        EXPECT_EQ(bench.Position(1), 37.625f);
+        EXPECT_EQ(bench.Motion(1).Position(), 37.625);
+        // The position bytes on the wire, in the format in force (2.5.3): 37.625 or 37625.
+        const pac::sim::Image12 reply = bench.Plc().FromPac().Module12(16);
+        EXPECT_EQ(pac::sim::ReadDword(reply, 8), integer ? 37625u : pac::test::BitsOf(37.625f));
+        const pac::sim::Image12 sent = bench.Plc().ToPac().Module12(16);
+        EXPECT_EQ(pac::sim::ReadDword(sent, 8), integer ? 37625u : pac::test::BitsOf(37.625f));
+        bench.ExpectJobsSeen(1, 1);
+    }
+}
+
+TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
+    AxisSimBench bench(Options());
+    bench.Pac().Axes().SetLimitSwitches(1, -50.0, 60.0);
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    // The move runs into the positive limit switch: the axis stops on it at once with axis error 64 (FAULT,
+    // axis error bit, HALT, the switch bit 0); the job ends with 16#800A and the number in AxisErrorNumber.
+    const Outcome move = bench.StartAndWait(1, {kRelative, 100.0f});
+    ASSERT_TRUE(move.error) << move;
+    EXPECT_EQ(move.errorId, kErrAxisError);
+    constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitSwitch;
+    constexpr std::uint32_t kFault = kOnSwitch | as::kFault | as::kAxisError;  // 0x8343
+    const Steps expected = {S(kOn, kOnReferenced, '-'),
+                            S(kOn | ac::kStart | ac::kRelative, kOnReferenced, 'B'),
+                            S(kOn | ac::kRelative, kOnActive, 'B'),
+                            S(kOn, kFault, 'E')};
+    EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
+    EXPECT_TRUE(fb->AXISERROR.value);
+    EXPECT_TRUE(fb->FAULT.value);
+    EXPECT_EQ(fb->AXISERRORNUMBER.value, kLimitSwitch);
+    EXPECT_TRUE(fb->POSITIVELIMITACTUATED.value);
+    EXPECT_FALSE(fb->NEGATIVELIMITACTUATED.value);
+    EXPECT_EQ(bench.Position(1), 60.0f) << "stopped on the switch";
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    // A job while the axis error is pending: refused at the edge, nothing sent.
+    Outcome refused = bench.Run(1, {kRelative, -10.0f});
+    EXPECT_EQ(refused.errorId, kErrAxisError);
+    EXPECT_EQ(refused.finalScan, refused.edgeScan);
+    // ResetError: bit 16 until the axis error bit is seen 0.
+    std::size_t mark = bench.Trace(1).Mark();
+    fb->RESETERROR.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
+    bench.ScanMs(20);
+    fb->RESETERROR.value = FALSE;
+    bench.Scan();
+    const Steps reset = {S(kOn, kFault, '-'), S(kOn | ac::kResetAxisError, kFault, '-'), S(kOn, kOnSwitch, '-')};
+    EXPECT_EQ(bench.Trace(1).Since(mark), reset) << Show(bench.Trace(1).Since(mark));
+    EXPECT_EQ(fb->AXISERRORNUMBER.value, 0);
+    // Further into the switch: refused (CMD error 64); away from it: moves.
+    const Outcome further = bench.Run(1, {kRelative, 10.0f});
+    ASSERT_TRUE(further.error) << further;
+    EXPECT_EQ(further.errorId, kLimitSwitch);
+    const Steps refusal = {S(kOn, kOnSwitch, '-'),
+                           S(kOn | ac::kStart | ac::kRelative, kOnSwitch, 'B'),
+                           S(kOn, kOnSwitch | as::kCmdError, 'E'),
+                           S(kOn, kOnSwitch | as::kCmdError, '-')};
+    EXPECT_EQ(bench.Trace(1).Since(further.mark), refusal) << Show(bench.Trace(1).Since(further.mark));
+    EXPECT_TRUE(fb->CMDERROR.value);
+    EXPECT_EQ(fb->CMDERRORNUMBER.value, kLimitSwitch);
+    const Outcome away = bench.Run(1, {kRelative, -30.0f});
+    ASSERT_TRUE(away.done) << away;
+    EXPECT_EQ(bench.Position(1), 30.0f);
+    EXPECT_FALSE(fb->POSITIVELIMITACTUATED.value);
+    EXPECT_FALSE(fb->CMDERROR.value) << "cleared by the Start edge of the good job (2.7.4.14)";
+    bench.ExpectJobsSeen(1, 3);
+}
+
+// ---- every command, both formats ------------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, EveryCommandInBothFormats) {
+    for (const bool integer : {false, true}) {
+        SCOPED_TRACE(integer ? "integer format" : "IEEE format");
+        BenchOptions o = Options();
+        o.referenced = false;
+        AxisSimBench bench(o);
+        SetRange(bench, 1, -50.0f, 150.0f);
+        bench.Pac().Axes().SetLimitSwitches(1, -80.0, 180.0);
+        bench.GoOnline(integer);
+        auto& fb = bench.Fb(1);
+        auto run = [&](const Job& job) {
+            const Outcome outcome = bench.Run(1, job);
+            EXPECT_TRUE(outcome.done) << "command " << job.command << " " << job.position << ": " << outcome;
+            return outcome;
+        };
+        run({kHome});
+        EXPECT_TRUE(fb->REFERENCED.value);
+        EXPECT_EQ(bench.Position(1), 0.5f);
+        run({kAbsolute, 100.0f, 800, 2000});
+        EXPECT_EQ(bench.Position(1), 100.0f);
+        // The job as the PA-CONTROL took it over with the Start edge: data, bit and Start in one image (2.3.3).
+        ASSERT_EQ(bench.View().Jobs(1).size(), 2u);
+        const pac::sim::AxisModuleCommand job = bench.View().Jobs(1).back();
+        EXPECT_EQ(job.control, kOn | ac::kStart | ac::kAbsolute);
+        EXPECT_EQ(job.speedPerMille, 800);
+        EXPECT_EQ(job.accelerationPerMille, 2000);
+        EXPECT_EQ(job.position, integer ? 100000u : pac::test::BitsOf(100.0f));
+        run({kRelative, -20.5f, 500, 500});
+        EXPECT_EQ(bench.Position(1), 79.5f);
+        run({kToMax});
+        EXPECT_EQ(bench.Position(1), 150.0f) << "axis parameter 9";
+        run({kToMin, 0.0f, 1000, 3000});
+        EXPECT_EQ(bench.Position(1), -50.0f) << "axis parameter 8";
+        run({kAbsolute, 100.0f});
+        // G29: the position becomes 125.25 and the software limits move with it (2.7.3.5): -24.75..175.25.
+        run({kSetPosition, 125.25f});
+        EXPECT_EQ(bench.View().Jobs(1).back().position, integer ? 125250u : pac::test::BitsOf(125.25f));
+        EXPECT_EQ(bench.Position(1), 125.25f);
+        EXPECT_EQ(bench.Motion(1).MaxRange(), 175.25);
+        EXPECT_TRUE(fb->REFERENCED.value) << "G29 leaves the reference as it is";
+        run({kToMax});
+        EXPECT_EQ(bench.Position(1), 175.25f) << "the maximum shifted by G29";
+        Outcome outside = bench.Run(1, {kAbsolute, 180.0f});
+        EXPECT_EQ(outside.errorId, kPositionRange) << outside;
+        run({kAbsolute, -24.75f});
+        EXPECT_EQ(bench.Position(1), -24.75f) << "the minimum shifted by G29";
+        // Delete the G29 offsets: position and limits back by 25.25.
+        run({kClearOffset});
+        EXPECT_EQ(bench.Position(1), -50.0f);
+        EXPECT_EQ(bench.Motion(1).MaxRange(), 150.0);
+        outside = bench.Run(1, {kAbsolute, 160.0f});
+        EXPECT_EQ(outside.errorId, kPositionRange) << outside;
+        run({kAbsolute, 100.0f});
+        // G26: position 10, referenced, the limits as they are (2.7.3.4).
+        run({kSetReferenced, 10.0f});
+        EXPECT_EQ(bench.Position(1), 10.0f);
+        EXPECT_EQ(bench.Motion(1).MinRange(), -50.0);
+        run({kToMin});
+        EXPECT_EQ(bench.Position(1), -50.0f);
+        run({kClearDisplaced});
+        EXPECT_EQ(bench.Position(1), -50.0f);
+        EXPECT_EQ(bench.Motion(1).Position(), -50.0);
+        bench.ExpectJobsSeen(1, 16);
+    }
+}
+
+TEST_P(AxisSimTiming, DisplacedWhileOffAndClearDisplaced) {
+    BenchOptions o = Options();
+    o.enableMode = EnableMode::kIdle;
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    fb->ENABLE.value = FALSE;
+    ASSERT_TRUE(bench.WaitFor([&] { return fb->IDLE.value != 0; }, 200, "IDLE"));
+    ASSERT_TRUE(bench.Pac().Axes().Displace(1, bench.Now(), 5.0));
+    fb->ENABLE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    EXPECT_TRUE(fb->DISPLACEDWHILEOFF.value);
+    EXPECT_TRUE(fb->GROUPDISPLACEDWHILEOFF.value);
+    EXPECT_EQ(bench.Position(1), 5.0f) << "the displaced position is taken over";
+    const Outcome refused = bench.Run(1, {kRelative, 1.0f});
+    EXPECT_EQ(refused.errorId, kAxisDisplaced) << refused;
+    const Outcome clear = bench.Run(1, {kClearDisplaced});
+    EXPECT_TRUE(clear.done) << clear;
+    EXPECT_FALSE(fb->DISPLACEDWHILEOFF.value);
+    EXPECT_FALSE(fb->GROUPDISPLACEDWHILEOFF.value);
+    const Outcome move = bench.Run(1, {kRelative, 1.0f});
+    EXPECT_TRUE(move.done) << move;
+    EXPECT_EQ(bench.Position(1), 6.0f);
+    bench.ExpectJobsSeen(1, 3);
+}
+
+// ---- CMD errors, both restart styles --------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, CmdErrorsAndRecoveryOnBothRestartStyles) {
+    for (const CmdErrorRestart style : {CmdErrorRestart::kSameCycle, CmdErrorRestart::kOneCycleClear}) {
+        SCOPED_TRACE(style == CmdErrorRestart::kSameCycle ? "kSameCycle" : "kOneCycleClear");
+        BenchOptions o = Options();
+        o.referenced = false;
+        o.cmdErrorRestart = style;
+        AxisSimBench bench(o);
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        auto expectError = [&](const Job& job, std::uint32_t number) {
+            const Outcome outcome = bench.Run(1, job);
+            EXPECT_TRUE(outcome.error) << outcome;
+            EXPECT_EQ(outcome.errorId, number) << outcome;
+            EXPECT_EQ(fb->CMDERRORNUMBER.value, number);
+            EXPECT_TRUE(fb->CMDERROR.value);
+        };
+        auto expectDone = [&](const Job& job) {
+            const Outcome outcome = bench.Run(1, job);
+            EXPECT_TRUE(outcome.done) << outcome;
+        };
+        // 43 twice in a row with the same number, then good: G26, which the stale 43 must not fail.
+        expectError({kAbsolute, 10.0f}, kNoReference);
+        expectError({kAbsolute, 10.0f}, kNoReference);
+        EXPECT_EQ(bench.Position(1), 0.0f);
+        expectDone({kSetReferenced, 0.0f});
+        EXPECT_FALSE(fb->CMDERROR.value);
+        expectDone({kAbsolute, 10.0f});
+        EXPECT_EQ(bench.Position(1), 10.0f);
+        // 55: the job goes out with Axis ON 0 and the PA-CONTROL refuses it; twice, then good.
+        fb->ENABLE.value = FALSE;
+        bench.ScanMs(30);
+        expectError({kRelative, 5.0f}, kAxisOff);
+        expectError({kRelative, 5.0f}, kAxisOff);
+        fb->ENABLE.value = TRUE;
+        bench.ScanMs(30);
+        // 65 after 55 (another number), twice, then a good one after the same failed job.
+        expectError({kAbsolute, 20000.0f}, kPositionRange);
+        expectError({kAbsolute, 20000.0f}, kPositionRange);
+        expectDone({kRelative, 5.0f});
+        EXPECT_EQ(bench.Position(1), 15.0f);
+        // Failed, good, failed with the same number: the good job cleared the bit in between.
+        expectError({kAbsolute, -1.0f}, kPositionRange);
+        expectDone({kAbsolute, 12.0f});
+        expectError({kAbsolute, -1.0f}, kPositionRange);
+        EXPECT_EQ(bench.Position(1), 12.0f);
+        bench.ExpectJobsSeen(1, 12);
+    }
+}
+
+// ---- axis errors and ResetError -------------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, FollowingErrorOfABlockedAxisAndItsReset) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    const Outcome start = bench.StartAndWait(1, {kAbsolute, 200.0f}, 60);
+    ASSERT_FALSE(start.done || start.error || start.aborted) << start;
+    ASSERT_TRUE(bench.WaitFor([&] { return fb->ACTIVE.value != 0; }, 200, "ACTIVE"));
+    bench.Pac().Axes().SetBlocked(1, bench.Now(), true);
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    EXPECT_TRUE(fb->ERROR.value);
+    EXPECT_EQ(fb->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(fb->AXISERRORNUMBER.value, kFollowingError);
+    EXPECT_TRUE(fb->FAULT.value);
+    EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off";
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    bench.Pac().Axes().SetBlocked(1, bench.Now(), false);
+    fb->RESETERROR.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value && (bench.Control(1) & ac::kResetAxisError) == 0; },
+                              300, "reset"));
+    fb->RESETERROR.value = FALSE;
+    const float stoppedAt = bench.Position(1);
+    EXPECT_LT(stoppedAt, 200.0f);
+    const Outcome move = bench.Run(1, {kAbsolute, 200.0f});
+    EXPECT_TRUE(move.done) << move;
+    EXPECT_EQ(bench.Position(1), 200.0f);
+    bench.ExpectJobsSeen(1, 2);
+}
+
+TEST_P(AxisSimTiming, DisturbanceKeepsTheAxisErrorUntilItsCauseIsGone) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 5.0);
+    ASSERT_TRUE(bench.WaitFor([&] { return fb->AXISERROR.value != 0; }, 200, "axis error"));
+    EXPECT_EQ(fb->AXISERRORNUMBER.value, kFollowingError);
+    // The reset is refused while the cause persists: the pulse ends after Timeout, the error stays.
+    fb->RESETERROR.value = TRUE;
+    bench.Scan();
+    ASSERT_NE(bench.Control(1) & ac::kResetAxisError, 0u);
+    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kResetAxisError) == 0; }, 1500, "pulse ended"));
+    EXPECT_TRUE(fb->AXISERROR.value);
+    fb->RESETERROR.value = FALSE;
+    bench.Scan();
+    const Outcome refused = bench.Run(1, {kRelative, 1.0f});
+    EXPECT_EQ(refused.errorId, kErrAxisError) << refused;
+    EXPECT_EQ(refused.finalScan, refused.edgeScan) << "refused at the edge, nothing sent";
+    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 0.0);
+    fb->RESETERROR.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
+    fb->RESETERROR.value = FALSE;
+    const Outcome move = bench.Run(1, {kRelative, 1.0f});
+    EXPECT_TRUE(move.done) << move;
+    EXPECT_EQ(bench.Position(1), 1.0f);
+    bench.ExpectJobsSeen(1, 1);
+}
+
+// ---- interruptions: Abort, Enable, link, a new job -----------------------------------------------------
+
+// A long move under way (0 -> 400, 1000 AE/s), taken over and running.
+void StartLongMove(AxisSimBench& bench, Outcome& started) {
+    started = bench.StartAndWait(1, {kAbsolute, 400.0f}, 150);
+    ASSERT_FALSE(started.done || started.error || started.aborted) << started;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 20.0f; }, 300, "moving"));
+    ASSERT_TRUE(bench.Fb(1)->ACTIVE.value);
+}
+
+TEST_P(AxisSimTiming, AbortMidMoveThenANewJob) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    Outcome started;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    fb->ABORT.value = TRUE;
+    bench.Scan();
+    EXPECT_EQ(bench.Control(1), kOn) << "the traverse bit goes off in the Abort scan";
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    EXPECT_TRUE(fb->COMMANDABORTED.value);
+    EXPECT_TRUE(fb->HALTED.value) << "the axis stands: HALT";
+    EXPECT_FALSE(fb->ACTIVE.value);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    const float stoppedAt = bench.Position(1);
+    EXPECT_LT(stoppedAt, 400.0f);
+    EXPECT_EQ(stoppedAt, static_cast<float>(bench.Motion(1).Position()));
+    fb->ABORT.value = FALSE;
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    const Outcome next = bench.Run(1, {kRelative, -10.0f});
+    EXPECT_TRUE(next.done) << next;
+    EXPECT_NEAR(bench.Position(1), stoppedAt - 10.0f, 1e-3);
+    EXPECT_FALSE(fb->HALTED.value);
+    bench.ExpectJobsSeen(1, 2);
+}
+
+TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    Outcome started;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    fb->ENABLE.value = FALSE;
+    bench.Scan();
+    EXPECT_EQ(bench.Control(1), 0u) << "Axis ON and the traverse bit off";
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    EXPECT_TRUE(fb->COMMANDABORTED.value);
+    EXPECT_TRUE(fb->HALTED.value);
+    EXPECT_FALSE(fb->ENABLED.value);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    const float stoppedAt = bench.Position(1);
+    fb->EXECUTE.value = FALSE;
+    fb->ENABLE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
+    EXPECT_TRUE(next.done) << next;
+    EXPECT_EQ(bench.Position(1), 50.0f);
+    EXPECT_NE(stoppedAt, 50.0f);
+    bench.ExpectJobsSeen(1, 2);
+}
+
+TEST_P(AxisSimTiming, AllZeroLinkOnThePlcSideMidMove) {
+    for (const auto fault : {pac::sim::LinkFault::kAllZero, pac::sim::LinkFault::kDisconnected}) {
+        SCOPED_TRACE(fault == pac::sim::LinkFault::kAllZero ? "kAllZero" : "kDisconnected");
+        AxisSimBench bench(Options());
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        Outcome started;
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+        bench.Plc().Bus().ToMaster().SetFault(bench.Now(), fault);
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 200, "final output"));
+        EXPECT_TRUE(fb->COMMANDABORTED.value) << "an all-zero module aborts the job at once";
+        EXPECT_FALSE(fb->STATUSVALID.value);
+        EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off";
+        // The PA-CONTROL still gets the module: it sees the traverse bit go and stops the axis (HALT).
+        bench.ScanMs(300);
+        EXPECT_FALSE(bench.Motion(1).Moving());
+        EXPECT_TRUE(bench.Motion(1).Interrupted());
+        EXPECT_EQ(bench.Pac().OperatingStatus(), 31) << "the controller saw no all-zero image";
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        const Outcome whileLost = bench.Run(1, {kRelative, 5.0f});
+        EXPECT_EQ(whileLost.errorId, kErrNotReady) << whileLost;
+        bench.Plc().Bus().ToMaster().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->STATUSVALID.value != 0; }, 200, "link back"));
+        EXPECT_TRUE(fb->HALTED.value);
+        const float stoppedAt = bench.Position(1);
+        EXPECT_EQ(stoppedAt, static_cast<float>(bench.Motion(1).Position()));
+        const Outcome next = bench.Run(1, {kRelative, 5.0f});
+        EXPECT_TRUE(next.done) << next;
+        EXPECT_NEAR(bench.Position(1), stoppedAt + 5.0f, 1e-3);
+        bench.ExpectJobsSeen(1, 2);
+    }
+}
+
+TEST_P(AxisSimTiming, NewExecuteEdgeMidMoveAbortsTheOldJobAndRunsTheNewOne) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    Outcome started;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    EXPECT_TRUE(fb->BUSY.value);
+    bench.SetJob(1, {kRelative, -30.0f, 500, 1000});
+    fb->EXECUTE.value = TRUE;
+    bench.Scan();
+    EXPECT_TRUE(fb->COMMANDABORTED.value) << "the old job, in the edge scan";
+    EXPECT_EQ(bench.Control(1) & ac::kTraverseBits, 0u) << "its traverse bit goes off";
+    bench.Scan();
+    EXPECT_FALSE(fb->COMMANDABORTED.value) << "for exactly one scan";
+    EXPECT_TRUE(fb->BUSY.value) << "the new job owns the outputs";
+    // The old move brakes from full speed (50 AE); the new one starts once the axis is free, from where it stands.
+    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 500, "Start of the new job"));
+    EXPECT_EQ(bench.Control(1), kOn | ac::kStart | ac::kRelative);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    const double stoppedAt = bench.Motion(1).Position();
+    EXPECT_GT(stoppedAt, 20.0 + 49.0) << "braked from full speed";
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1500, "final output"));
+    EXPECT_TRUE(fb->DONE.value) << "ErrorID 16#" << std::hex << fb->ERRORID.value;
+    EXPECT_NEAR(bench.Position(1), stoppedAt - 30.0, 1e-3);
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    bench.ExpectJobsSeen(1, 2);
+}
+
+TEST_P(AxisSimTiming, StopOnlineMidMoveIsCommandAbortedAndJobsWaitForTheResume) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    auto& ctrl = bench.Ctrl();
+    Outcome started;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    // STOP ONLINE (CTRL): the PA-CONTROL brakes every axis and interrupts its job; the move ends with HALT, which
+    // FB_PAC_Axis reports as CommandAborted (interrupted from outside).
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_STOP;
+    ctrl->EXECUTE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    EXPECT_TRUE(fb->COMMANDABORTED.value);
+    EXPECT_TRUE(fb->HALTED.value);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    ASSERT_TRUE(bench.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE stopped"));
+    EXPECT_TRUE(ctrl->ONLINESTOPPED.value);
+    ctrl->EXECUTE.value = FALSE;
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    // No jobs while ONLINE is stopped: CMD error 20, passed through.
+    const Outcome whileStopped = bench.Run(1, {kRelative, 5.0f});
+    EXPECT_EQ(whileStopped.errorId, kInadmissible) << whileStopped;
+    // The resume does not continue the interrupted job; a new one runs.
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+    ctrl->EXECUTE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE again"));
+    ctrl->EXECUTE.value = FALSE;
+    const float stoppedAt = bench.Position(1);
+    EXPECT_LT(stoppedAt, 400.0f);
+    const Outcome next = bench.Run(1, {kRelative, 5.0f});
+    EXPECT_TRUE(next.done) << next;
+    EXPECT_NEAR(bench.Position(1), stoppedAt + 5.0f, 1e-3);
+    bench.ExpectJobsSeen(1, 3);
+}
+
+// ---- jog -------------------------------------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, JogMovesWhileHeldAndAtMostItsDistance) {
+    BenchOptions o = Options();
+    o.referenced = false;  // a jog needs no reference
+    AxisSimBench bench(o);
+    bench.Pac().Axes().SetLimitSwitches(1, -500.0, 500.0);
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.SetJob(1, {E_PAC_AXISCOMMAND__PAC_AX_NONE, 150.0f, 500, 1000});
+    // Positive, held for 60 ms more once it moves, then released: the axis brakes and stands; Done for one scan.
+    fb->JOGPOSITIVE.value = TRUE;
+    bench.Scan();
+    ASSERT_TRUE(fb->BUSY.value);
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 0.0f; }, 200, "jogging"));
+    bench.ScanMs(60);
+    EXPECT_TRUE(fb->BUSY.value);
+    EXPECT_EQ(bench.Control(1) & ac::kTraverseBits, ac::kJogPositive);
+    const float held = bench.Position(1);
+    fb->JOGPOSITIVE.value = FALSE;
+    bench.Scan();
+    EXPECT_EQ(bench.Control(1), kOn) << "released: the bit goes";
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    EXPECT_TRUE(fb->DONE.value);
+    bench.Scan();
+    EXPECT_FALSE(fb->DONE.value) << "one scan: the jog input is FALSE";
+    const float released = bench.Position(1);
+    EXPECT_GT(released, held);
+    EXPECT_LT(released, 150.0f) << "released before its distance";
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_FALSE(fb->REFERENCED.value);
+    // Negative, held to its distance: stops after 150, Done held while the input is held.
+    fb->JOGNEGATIVE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1500, "final output"));
+    EXPECT_TRUE(fb->DONE.value);
+    EXPECT_NEAR(bench.Position(1), released - 150.0f, 1e-3) << "at most Position";
+    bench.ScanMs(50);
+    EXPECT_TRUE(fb->DONE.value);
+    EXPECT_EQ(bench.Control(1), kOn) << "no second jog while held";
+    fb->JOGNEGATIVE.value = FALSE;
+    bench.Scan();
+    EXPECT_FALSE(fb->DONE.value);
+    bench.ExpectJobsSeen(1, 2);
+}
+
+// ---- G123 ------------------------------------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, G123StopsTheMoveWhenTheInputDrops) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.Pac().SetConditionInput(1, kConditionInput);  // after ONLINE started (it sets input 1)
+    bench.Pac().Io().inputs.Set(kConditionInput, true);
+    const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 1000, 1000, kWhileInput1}, 100);
+    ASSERT_FALSE(started.done || started.error || started.aborted) << started;
+    EXPECT_EQ(bench.Trace(1).Since(started.mark).at(1).control,
+              kOn | ac::kStart | ac::kAbsolute | ac::kWhileInputOne);
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 50.0f; }, 300, "moving"));
+    bench.Pac().Io().inputs.Set(kConditionInput, false);
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    EXPECT_TRUE(fb->DONE.value) << "its own condition ended it (FB_PAC_Axis.md): Done";
+    EXPECT_TRUE(fb->STOPPEDBYCONDITION.value);
+    EXPECT_TRUE(fb->HALTED.value);
+    EXPECT_LT(bench.Position(1), 300.0f);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    // The condition does not hold at the start: taken over and ended at once, without a move.
+    const float standing = bench.Position(1);
+    const Outcome notMet = bench.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
+    EXPECT_TRUE(notMet.done) << notMet;
+    EXPECT_EQ(bench.Position(1), standing);
+    EXPECT_TRUE(fb->STOPPEDBYCONDITION.value);
+    // The condition holds: the move ends at its target, and its take-over cleared bit 11.
+    bench.Pac().Io().inputs.Set(kConditionInput, true);
+    const Outcome met = bench.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
+    EXPECT_TRUE(met.done) << met;
+    EXPECT_NEAR(bench.Position(1), standing + 10.0f, 1e-3);
+    EXPECT_FALSE(fb->STOPPEDBYCONDITION.value);
+    EXPECT_FALSE(fb->HALTED.value);
+    bench.ExpectJobsSeen(1, 3);
+}
+
+// ---- the FB adds no scan: an instant job at the protocol minimum ---------------------------------------
+
+TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
+    AxisSimBench bench(Options());
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.SetJob(1, {kSetPosition, 3.0f});
+    fb->EXECUTE.value = TRUE;
+    bench.Scan();
+    const std::int64_t edge = bench.ScanCount();
+    ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kShift) << "the axis is free: Start in the edge scan";
+    const nanoseconds edgeTime = bench.Now();
+    const int takeOver = bench.Plc().ProtocolMinimumScans(edgeTime);
+    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
+    EXPECT_EQ(bench.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
+    EXPECT_TRUE(fb->ACTIVE.value);
+    EXPECT_EQ(bench.Control(1), kOn | ac::kShift) << "the traverse bit stays";
+    const std::int64_t drop = bench.ScanCount();
+    const int release = bench.Plc().ProtocolMinimumScans(bench.Now());
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    EXPECT_TRUE(fb->DONE.value);
+    EXPECT_EQ(bench.ScanCount(), drop + release) << "Done in the scan that sees ACTIVE fall";
+    EXPECT_EQ(bench.Control(1), kOn);
+    EXPECT_EQ(bench.Position(1), 3.0f);
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    bench.ExpectJobsSeen(1, 1);
+}
+
+// ---- eight axes at once ----------------------------------------------------------------------------------
+
+TEST_P(AxisSimTiming, EightAxesAtOnceWithIndependentErrors) {
+    BenchOptions o = Options();
+    o.axes = 8;
+    AxisSimBench bench(o);
+    bench.Pac().Axes().SetLimitSwitches(3, -50.0, 45.0);
+    bench.GoOnline();
+    for (int k = 1; k <= 8; ++k) {
+        bench.SetJob(k, {kRelative, 20.0f * static_cast<float>(k)});
+        bench.Fb(k)->EXECUTE.value = TRUE;
+    }
+    bench.Scan();
+    for (int k = 1; k <= 8; ++k) {
+        EXPECT_EQ(bench.Control(k), kOn | ac::kStart | ac::kRelative) << "axis " << k << ": Start in the edge scan";
+    }
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Fb(6)->ACTIVE.value != 0 && bench.Position(6) > 10.0f; }, 300,
+                              "axis 6 moving"));
+    bench.Pac().Axes().SetBlocked(6, bench.Now(), true);
+    auto allFinal = [&] {
+        for (int k = 1; k <= 8; ++k) {
+            if (!bench.Final(k)) return false;
+        }
+        return true;
+    };
+    ASSERT_TRUE(bench.WaitFor(allFinal, 1500, "every axis's final output"));
+    for (int k = 1; k <= 8; ++k) {
+        SCOPED_TRACE("axis " + std::to_string(k));
+        auto& fb = bench.Fb(k);
+        if (k == 3 || k == 6) {
+            EXPECT_TRUE(fb->ERROR.value);
+            EXPECT_EQ(fb->ERRORID.value, kErrAxisError);
+            EXPECT_EQ(fb->AXISERRORNUMBER.value, k == 3 ? kLimitSwitch : kFollowingError);
+        } else {
+            EXPECT_TRUE(fb->DONE.value);
+            EXPECT_FALSE(fb->AXISERROR.value);
+            EXPECT_EQ(bench.Position(k), 20.0f * static_cast<float>(k));
+        }
+    }
+    EXPECT_EQ(bench.Position(3), 45.0f);
+    EXPECT_LT(bench.Position(6), 120.0f);
+    EXPECT_EQ(bench.Pac().OperatingStatus(), 31) << "an axis error is no system error (2.7)";
+    for (int k = 1; k <= 8; ++k) bench.Fb(k)->EXECUTE.value = FALSE;
+    bench.Scan();
+    // Reset both; each moves again, the others stay where they are.
+    bench.Pac().Axes().SetBlocked(6, bench.Now(), false);
+    bench.Fb(3)->RESETERROR.value = TRUE;
+    bench.Fb(6)->RESETERROR.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Fb(3)->AXISERROR.value && !bench.Fb(6)->AXISERROR.value; }, 300,
+                              "both reset"));
+    bench.Fb(3)->RESETERROR.value = FALSE;
+    bench.Fb(6)->RESETERROR.value = FALSE;
+    bench.SetJob(3, {kRelative, -20.0f});
+    bench.SetJob(6, {kAbsolute, 120.0f});
+    bench.Fb(3)->EXECUTE.value = TRUE;
+    bench.Fb(6)->EXECUTE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(3) && bench.Final(6); }, 1000, "final outputs"));
+    EXPECT_TRUE(bench.Fb(3)->DONE.value);
+    EXPECT_TRUE(bench.Fb(6)->DONE.value);
+    EXPECT_EQ(bench.Position(3), 25.0f);
+    EXPECT_EQ(bench.Position(6), 120.0f);
+    for (int k = 1; k <= 8; ++k) {
+        if (k != 3 && k != 6) {
+            EXPECT_EQ(bench.Position(k), 20.0f * static_cast<float>(k));
+        }
+        bench.ExpectJobsSeen(k, k == 3 || k == 6 ? 2 : 1);
+    }
+}
+
+// ---- the take-over bound (FB_PAC_Axis.md, "Stale CMD error") ---------------------------------------------
+
+// PLC 1 ms, PA-CONTROL 10 ms, no latency: a take-over takes 1 to 10 ms, depending on where the Start falls in
+// the controller's cycle. The first job is refused (43) 1 ms after its Start; the next one, with the 43 still
+// showing, is taken over 8 ms after its Start. Counting the unchanged 43 as the new job's refusal after twice the
+// longest measured take-over (2 ms) reported Error 43 for a good job the controller had not even seen yet; the
+// bound now adds the controller's longest update time (2.3.4).
+TEST(AxisSimTakeOverBound, GoodJobAfterARefusalMayTakeLongerThanTwiceTheFirstTakeOver) {
+    BenchOptions o;
+    o.timing = {1, 10, 0};
+    o.referenced = false;
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    // The edge in the scan 1 ms before a controller cycle.
+    ASSERT_GT(bench.ScanUntil([&] { return bench.Now() % 10ms == 8ms; }, 20), 0);
+    const Outcome refused = bench.Run(1, {kAbsolute, 10.0f});
+    ASSERT_TRUE(refused.error) << refused;
+    EXPECT_EQ(refused.errorId, kNoReference);
+    EXPECT_EQ(refused.finalScan, refused.edgeScan + 1) << "take-over time measured: 1 ms";
+    const Outcome good = bench.Run(1, {kSetReferenced, 0.0f});
+    EXPECT_TRUE(good.done) << good;
+    const auto isStart = [](const AxisStep& step) { return (step.control & ac::kStart) != 0; };
+    const auto isActive = [](const AxisStep& step) { return (step.status & as::kActive) != 0; };
+    const std::int64_t start = bench.Trace(1).ScanOf(good.mark, isStart);
+    const std::int64_t takeOver = bench.Trace(1).ScanOf(good.mark, isActive);
+    ASSERT_GT(start, 0);
+    EXPECT_GT(takeOver - start, 2) << "longer than twice the first take-over";
+    EXPECT_TRUE(bench.Fb(1)->REFERENCED.value);
+    const Outcome move = bench.Run(1, {kAbsolute, 10.0f});
+    EXPECT_TRUE(move.done) << move;
+    EXPECT_EQ(bench.Position(1), 10.0f);
+    bench.ExpectJobsSeen(1, 3);
+}
+
+// ---- jittered buses --------------------------------------------------------------------------------------
+
+// Two axes through a session of jobs, refusals, interruptions and an axis error, on a bus whose every image is
+// delayed by the latency plus a seeded uniform draw from [0, jitter] (never overtaking the one before).
+void MixedSession(AxisSimBench& bench, bool integer) {
+    bench.Pac().Axes().SetLimitSwitches(2, -50.0, 40.0);
+    bench.GoOnline(integer);
+    auto& one = bench.Fb(1);
+    auto& two = bench.Fb(2);
+    auto expect = [&](int k, const Job& job, char result, std::uint32_t errorId = 0) {
+        const Outcome o = bench.Run(k, job);
+        if (result == 'D') {
+            EXPECT_TRUE(o.done) << "axis " << k << ": " << o;
+        } else {
+            EXPECT_TRUE(o.error) << "axis " << k << ": " << o;
+            EXPECT_EQ(o.errorId, errorId) << "axis " << k << ": " << o;
+        }
+    };
+    // Axis 2 references while axis 1 is refused twice with the same number, then referenced and moved.
+    bench.SetJob(2, {kHome});
+    two->EXECUTE.value = TRUE;
+    expect(1, {kAbsolute, 10.0f}, 'E', kNoReference);
+    expect(1, {kAbsolute, 10.0f}, 'E', kNoReference);
+    expect(1, {kSetReferenced, 0.0f}, 'D');
+    expect(1, {kAbsolute, 10.0f}, 'D');
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(2); }, 1000, "axis 2 referenced"));
+    EXPECT_TRUE(two->DONE.value);
+    two->EXECUTE.value = FALSE;
+    expect(1, {kAbsolute, 20000.0f}, 'E', kPositionRange);
+    expect(1, {kAbsolute, 20000.0f}, 'E', kPositionRange);
+    expect(1, {kRelative, 5.0f}, 'D');
+    EXPECT_EQ(bench.Position(1), 15.0f);
+    // Axis 2 runs into its limit switch (machine 40 = 60 after homing) while axis 1 is aborted mid-move.
+    bench.SetJob(2, {kRelative, 100.0f});
+    two->EXECUTE.value = TRUE;
+    const Outcome longMove = bench.StartAndWait(1, {kAbsolute, 300.0f}, 100);
+    EXPECT_FALSE(longMove.done || longMove.error || longMove.aborted) << longMove;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 40.0f; }, 300, "axis 1 moving"));
+    one->ABORT.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "axis 1 aborted"));
+    EXPECT_TRUE(one->COMMANDABORTED.value);
+    one->ABORT.value = FALSE;
+    one->EXECUTE.value = FALSE;
+    bench.Scan();
+    expect(1, {kRelative, -5.0f}, 'D');
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(2); }, 1000, "axis 2 on its switch"));
+    EXPECT_EQ(two->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(two->AXISERRORNUMBER.value, kLimitSwitch);
+    two->EXECUTE.value = FALSE;
+    two->RESETERROR.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return !two->AXISERROR.value; }, 300, "axis 2 reset"));
+    two->RESETERROR.value = FALSE;
+    expect(2, {kRelative, -10.0f}, 'D');
+    EXPECT_EQ(bench.Position(2), 50.0f);
+    // A new job while axis 1 moves: the old one aborted, the new one done.
+    const Outcome back = bench.StartAndWait(1, {kAbsolute, 10.0f}, 50);
+    EXPECT_FALSE(back.done || back.error || back.aborted) << back;
+    ASSERT_TRUE(bench.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "axis 1 moving back"));
+    one->EXECUTE.value = FALSE;
+    bench.Scan();
+    bench.SetJob(1, {kRelative, 2.0f});
+    one->EXECUTE.value = TRUE;
+    bench.Scan();
+    EXPECT_TRUE(one->COMMANDABORTED.value);
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1000, "the new job"));
+    EXPECT_TRUE(one->DONE.value);
+    one->EXECUTE.value = FALSE;
+    // A short jog.
+    bench.Scan();
+    one->JOGNEGATIVE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "jogging"));
+    one->JOGNEGATIVE.value = FALSE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "jog ended"));
+    EXPECT_TRUE(one->DONE.value);
+    bench.Scan();
+    bench.ExpectJobsSeen(1, 12);
+    bench.ExpectJobsSeen(2, 3);
+}
+
+TEST(AxisSimJitter, MixedSessionOnJitteredBuses) {
+    struct Case {
+        Timing timing;
+        int jitterMs;
+    };
+    // The FB's bounds assume the shortest take-over is at least twice the jitter plus one scan (FB_PAC_Axis.md):
+    // the jitter stays within the latency here.
+    const Case cases[] = {{{1, 10, 3}, 2}, {{2, 3, 2}, 2}, {{5, 1, 1}, 2}, {{10, 10, 1}, 4}};
+    for (const Case& c : cases) {
+        for (const std::uint64_t seed : {101u, 202u, 303u}) {
+            const std::string what = Describe(c.timing) + ", jitter " + std::to_string(c.jitterMs) + " ms, seed " +
+                                      std::to_string(seed);
+            std::cout << "[ jitter   ] " << what << "\n";
+            SCOPED_TRACE(what);
+            BenchOptions o;
+            o.timing = c.timing;
+            o.axes = 2;
+            o.referenced = false;
+            o.jitter = milliseconds(c.jitterMs);
+            o.seed = seed;
+            AxisSimBench bench(o);
+            MixedSession(bench, seed % 2 == 0);
+        }
+    }
+}
+
+std::string TimingName(const ::testing::TestParamInfo<std::tuple<int, int, int>>& info) {
+    std::ostringstream name;
+    name << "Plc" << std::get<0>(info.param) << "ms_Pac" << std::get<1>(info.param) << "ms_Latency"
+         << std::get<2>(info.param);
+    return name.str();
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTimings, AxisSimTiming,
+                         ::testing::Combine(::testing::Values(1, 2, 5, 10), ::testing::Values(1, 3, 10),
+                                            ::testing::Values(0, 1, 2, 3)),
+                         TimingName);
+
+}  // namespace
