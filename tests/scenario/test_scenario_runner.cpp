@@ -83,7 +83,7 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     EXPECT_NE(out.find("=> axis 1: Error in scan 76 (152 ms), 3 scans after the step began; ErrorID 43 PAC_ERR_NO_REFERENCE"),
               std::string::npos)
         << out;
-    EXPECT_NE(out.find("=> axis 1: Done in scan 291 (582 ms), 78 scans after the step began; position 50.000, referenced"),
+    EXPECT_NE(out.find("=> axis 1: Done in scan 296 (592 ms), 78 scans after the step began; position 50.000, referenced"),
               std::string::npos)
         << out;
     for (const auto& step : run.report.steps) {
