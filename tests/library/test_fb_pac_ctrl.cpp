@@ -586,6 +586,18 @@ TEST_F(FbPacCtrl, StopWhileAMalfunctionIsProcessedEndsDoneWhenStopped) {
     EXPECT_TRUE(Done());
 }
 
+TEST_F(FbPacCtrl, StopEndsNotAllowedWhenTheModeIsLeftWhileItWaits) {
+    fromPac_ = StatusImage(kBooted | kOnlineActive);  // 32: braking
+    Execute(kReqStop);
+    Cycle(2);
+    ASSERT_TRUE(Busy());
+    fromPac_ = StatusImage(kBooted);  // home: cancelled over the CMD interface (0A81)
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(ErrorId(), kErrNotAllowed);
+    EXPECT_EQ(Control(), kIdle) << "the stop bit is released in the same scan";
+}
+
 TEST_F(FbPacCtrl, CancelEndsDoneInHomePositionWithAClass2ErrorLeft) {
     fromPac_ = StatusImage(kBooted | kSystemError | kOnlineStopped, 150);  // 39
     Execute(kReqCancel);
