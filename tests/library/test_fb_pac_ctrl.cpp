@@ -514,7 +514,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         StateRow{"Home1", kBooted, 0, W, W, N, D, D},
         StateRow{"Home9Class2Error", kBooted | kSystemError, 150, N, N, N, D, W},
-        StateRow{"Home9CpuError", kBatteryOk | kSystemError, 5, R, R, R, R, N},
+        StateRow{"Home9CpuError", kBatteryOk | kSystemError, 5, R, R, N, D, N},
         StateRow{"LinkLost", 0, 0, R, R, R, R, R},
         StateRow{"BatteryLowHome1", kReady, 0, W, W, N, D, D},
         StateRow{"Started10Or30LooksLikeHome", kBooted, 0, W, W, N, D, D},

@@ -665,8 +665,12 @@ TEST_P(CtrlSim, Class1ErrorOnlyByPowerCycle) {
     EXPECT_TRUE(plc.SettledAt(39, 42));
     EXPECT_FALSE(plc.Ctrl()->READY.value);
     EXPECT_TRUE(DecidedAtOnce(plc, kResetError, kErrNotAllowed));  // only a power cycle clears a CPU error
-    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, kErrNotReady));
     EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotReady));
+    // Stop and cancel stay possible: the controller is stopped already (39) and goes home (9).
+    EXPECT_TRUE(DecidedAtOnce(plc, kStop, 0));
+    EXPECT_TRUE(DoneInWindow(plc, kCancel, 0));
+    EXPECT_TRUE(plc.SettledAt(9, 42));
+    EXPECT_FALSE(plc.Ctrl()->READY.value);
     plc.Controller().PowerCycle(plc.Now());
     plc.Settle();
     EXPECT_TRUE(plc.Shows(1));
@@ -818,7 +822,7 @@ std::vector<StateCase> States() {
     return {
         {"Home1", {}, run({}), 1, 0, W, W, N, D, D},
         {"Home9Class2", {}, raise({}, 150, false), 9, 150, N, N, N, D, W},
-        {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, R, R, N},
+        {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, N, D, N},
         {"Automatic11", {}, run({kStartAutomatic}), 11, 0, N, D, W, W, N},
         {"AutomaticStopped15", {}, run({kStartAutomatic, kStop}), 15, 0, N, W, D, W, N},
         {"AutomaticMalfunction18", longMalfunctionProgram, raise({kStartAutomatic}, 600, false), 18, 600,
@@ -828,7 +832,7 @@ std::vector<StateCase> States() {
         {"OnlineStopped35", {}, run({kStartOnline, kStop}), 35, 0, W, N, D, W, N},
         {"OnlineMalfunction37", {}, raise({kStartOnline}, 600, true), 37, 600, N, N, W, W, N},
         {"OnlineStoppedMalfunction39", {}, raise({kStartOnline}, 600, false), 39, 600, N, N, D, W, N},
-        {"OnlineCpuError39", {}, raise({kStartOnline}, 42, false), 39, 42, R, R, R, R, N},
+        {"OnlineCpuError39", {}, raise({kStartOnline}, 42, false), 39, 42, R, R, D, W, N},
     };
 }
 
