@@ -266,7 +266,7 @@ void ServoAxis::BrakeJob() {
         return;
     }
     if (trajectory_.PhaseAt(Seconds()) == MotionPhase::kDecelerating) {
-        // Already braking with the job's deceleration: a move ends at its target (LinearAxis does the same),
+        // Already braking with the job's deceleration: a move ends at its target,
         // a homing run at the end of this ramp.
         if (activity_ == Activity::kHoming) {
             homingStep_ = HomingStep::kNone;

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "pac/sim/linear_axis.hpp"  // AxisStatus (cmd_get_status_axis)
+#include "pac/sim/axis_status.hpp"
 #include "pac/sim/servo_axis_config.hpp"
 #include "pac/sim/trajectory.hpp"
 
@@ -142,9 +142,9 @@ public:
     void SetBlocked(std::chrono::nanoseconds now, bool blocked);
     // Pushes an axis without current (IDLE / SAFE / DISABLED) by `delta`; false (ignored) while powered or blocked.
     bool Displace(std::chrono::nanoseconds now, double delta);
-    // Puts the axis at `position` (axis coordinates), standing, in position, no job (LinearAxis::SetPosition).
+    // Puts the axis at `position` (axis coordinates), standing, in position, no job.
     void Place(std::chrono::nanoseconds now, double position);
-    // An axis error with this number (not 0): the axis stops at once (LinearAxis::SetMalfunction).
+    // An axis error with this number (not 0): the axis stops at once.
     void RaiseAxisError(std::chrono::nanoseconds now, std::uint16_t number);
 
 private:
