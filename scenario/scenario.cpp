@@ -12,6 +12,10 @@ const char* ToString(FaultKind kind) {
             return "thaw_link";
         case FaultKind::kZeroLink:
             return "zero_link";
+        case FaultKind::kSystemError:
+            return "system_error";
+        case FaultKind::kSetInput:
+            return "set_input";
     }
     return "?";
 }

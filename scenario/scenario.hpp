@@ -114,13 +114,15 @@ struct AxesStep {
     std::vector<AxisJob> jobs;
 };
 
-enum class FaultKind { kPowerCycle, kFreezeLink, kThawLink, kZeroLink };
+enum class FaultKind { kPowerCycle, kFreezeLink, kThawLink, kZeroLink, kSystemError, kSetInput };
 enum class LinkSide { kToPac, kFromPac, kBoth };
 
 // Acts between two scans, at the time of the last scan.
 struct FaultStep {
     FaultKind kind = FaultKind::kPowerCycle;
     LinkSide link = LinkSide::kBoth;  // link faults only
+    int number = 0;                   // kSystemError: the error number (1..999); kSetInput: the input
+    bool value = false;               // kSetInput: the input's new state
 };
 
 // Scans for at least `ms`, in whole PLC cycles.

@@ -317,7 +317,9 @@ private:
         static const std::vector<std::pair<std::string, FaultKind>> faults = {{"power_cycle", FaultKind::kPowerCycle},
                                                                               {"freeze_link", FaultKind::kFreezeLink},
                                                                               {"thaw_link", FaultKind::kThawLink},
-                                                                              {"zero_link", FaultKind::kZeroLink}};
+                                                                              {"zero_link", FaultKind::kZeroLink},
+                                                                              {"system_error", FaultKind::kSystemError},
+                                                                              {"set_input", FaultKind::kSetInput}};
         static const std::vector<std::pair<std::string, LinkSide>> sides = {
             {"to_pac", LinkSide::kToPac}, {"from_pac", LinkSide::kFromPac}, {"both", LinkSide::kBoth}};
         const std::string faultPath = json::Child(path, "fault");
@@ -325,13 +327,29 @@ private:
         const auto fault = std::find_if(faults.begin(), faults.end(), [&](const auto& f) { return f.first == name; });
         if (fault == faults.end()) {
             json::Refuse(faultPath, "unknown fault " + Quoted(name) +
-                                        " (a fault is \"power_cycle\", \"freeze_link\", \"thaw_link\" or \"zero_link\")");
+                                        " (a fault is \"power_cycle\", \"freeze_link\", \"thaw_link\", \"zero_link\", "
+                                        "\"system_error\" or \"set_input\")");
         }
         FaultStep step;
         step.kind = fault->second;
         if (step.kind == FaultKind::kPowerCycle) {
             const json::Object object(value, path, {"fault", "note"}, "a power_cycle step");
             note = ReadNote(object);
+            return step;
+        }
+        if (step.kind == FaultKind::kSystemError) {
+            // 5.2.4.15: 1..99 CPU errors, 100..499 hardware, 500..999 errors of the ONLINE / AUTOMATIC mode.
+            const json::Object object(value, path, {"fault", "number", "note"}, "a system_error step");
+            note = ReadNote(object);
+            step.number = static_cast<int>(json::Integer(object.Get("number"), object.PathOf("number"), 1, 999));
+            return step;
+        }
+        if (step.kind == FaultKind::kSetInput) {
+            const json::Object object(value, path, {"fault", "input", "value", "note"}, "a set_input step");
+            note = ReadNote(object);
+            step.number = static_cast<int>(
+                json::Integer(object.Get("input"), object.PathOf("input"), 1, pac::sim::ElementCounts{}.inputs));
+            step.value = json::Bool(object.Get("value"), object.PathOf("value"));
             return step;
         }
         const json::Object object(value, path, {"fault", "link", "note"}, "a link fault step");

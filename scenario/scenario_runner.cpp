@@ -292,9 +292,18 @@ private:
 
     void Inject(const FaultStep& fault) {
         const auto now = plc_.Now();
-        if (fault.kind == FaultKind::kPowerCycle) {
-            plc_.Controller().PowerCycle(now);
-            return;
+        switch (fault.kind) {
+            case FaultKind::kPowerCycle:
+                plc_.Controller().PowerCycle(now);
+                return;
+            case FaultKind::kSystemError:
+                plc_.Controller().RaiseSystemError(static_cast<std::uint16_t>(fault.number));
+                return;
+            case FaultKind::kSetInput:
+                plc_.Controller().Io().inputs.Set(fault.number, fault.value);
+                return;
+            default:
+                break;
         }
         pac::sim::LinkFault linkFault = pac::sim::LinkFault::kNone;
         if (fault.kind == FaultKind::kFreezeLink) linkFault = pac::sim::LinkFault::kFrozen;

@@ -225,6 +225,12 @@ void TimelinePrinter::PrintFault(const FaultStep& fault) {
         case FaultKind::kThawLink:
             out_ << "thaw " << LinkText(fault.link) << ": the newest image gets through again";
             break;
+        case FaultKind::kSystemError:
+            out_ << "system error " << fault.number << " raised in the PA-CONTROL";
+            break;
+        case FaultKind::kSetInput:
+            out_ << "input " << fault.number << " := " << (fault.value ? 1 : 0);
+            break;
     }
 }
 

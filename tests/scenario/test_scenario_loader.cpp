@@ -277,8 +277,12 @@ TEST(ScenarioLoader, RefusesUnknownNames) {
               R"($.controller.operating_status: unknown status name "PAC_STATUS_RUNNING" (not a PAC_STATUS_ )"
               R"(constant of GVL_PAC))");
     EXPECT_EQ(Refusal(WithStep(R"({"fault": "unplug"})")),
-              R"($.steps[0].fault: unknown fault "unplug" (a fault is "power_cycle", "freeze_link", "thaw_link" or )"
-              R"("zero_link"))");
+              R"($.steps[0].fault: unknown fault "unplug" (a fault is "power_cycle", "freeze_link", "thaw_link", )"
+              R"("zero_link", "system_error" or "set_input"))");
+    EXPECT_EQ(Refusal(WithStep(R"({"fault": "system_error", "number": 1000})")),
+              "$.steps[0].number: out of range: 1000 is not in 1..999");
+    EXPECT_EQ(Refusal(WithStep(R"({"fault": "set_input", "input": 1})")),
+              R"($.steps[0]: missing key "value" (a set_input step needs it))");
     EXPECT_EQ(Refusal(WithStep(R"({"fault": "freeze_link", "link": "up"})")),
               R"($.steps[0].link: unknown link "up" (a link is "to_pac", "from_pac" or "both"))");
 }

@@ -100,6 +100,21 @@ TEST(ScenarioRunner, LinkFaultExampleMeetsEveryExpectation) {
     EXPECT_EQ(run.report.Commands(), 5u);
 }
 
+TEST(ScenarioRunner, ModesExampleMeetsEveryExpectation) {
+    const ScenarioRun run(FromFile("examples/modes.json"));
+    const std::string& out = run.timeline.str();
+    EXPECT_TRUE(run.report.Passed()) << out;
+    EXPECT_EQ(run.report.Requests(), 10u);
+    // The external stop input dropped: ONLINE stopped (bit 11) in the integer format (bit 15).
+    EXPECT_NE(out.find("| 16#8007 16#8803        0 |"), std::string::npos) << out;
+    // System error 600 (16#0258) in word 2 of the status module, with ONLINE stopped and bit 2.
+    EXPECT_NE(out.find("| 88 07 00 00 02 58 00 00 | 16#0007 16#8807      600 |"), std::string::npos) << out;
+    // Error reset: bit 0 taken to 0 (16#0006) until the system error bit clears.
+    EXPECT_NE(out.find("| 00 06 00 00 00 00 00 00 | 80 07 00 00 00 96 00 00 | 16#0006 16#8007      150 |"),
+              std::string::npos)
+        << out;
+}
+
 TEST(ScenarioRunner, RunsAreDeterministic) {
     const Scenario demo = FromFile("demo.json");
     const ScenarioRun first(demo);
