@@ -173,13 +173,15 @@ TEST(AxisModulesCmd, WithoutAxisModulesTheCmdMovesWork) {
 
 // ---- the four sequences of 2.7.9 through the bus -------------------------------------------------------
 
+// Axes whose enable mode is IDLE: Axis ON 0 takes the current off (2.7.3.1).
+PaControlConfig IdleMachine() {
+    PaControlConfig config = QuickConfig();
+    config.axisMachine.enableMode = EnableMode::kIdle;
+    return config;
+}
+
 class AxisModulesIdle : public AxisModules {
 protected:
-    static PaControlConfig IdleMachine() {
-        PaControlConfig config = QuickConfig();
-        config.axisMachine.enableMode = EnableMode::kIdle;
-        return config;
-    }
     AxisModulesIdle() : AxisModules(1, IdleMachine()) {}
 };
 
@@ -370,11 +372,6 @@ TEST_F(AxisModules, PowerCycleForgetsTheCmdError) {
 
 class TwoIdleAxes : public AxisModules {
 protected:
-    static PaControlConfig IdleMachine() {
-        PaControlConfig config = QuickConfig();
-        config.axisMachine.enableMode = EnableMode::kIdle;
-        return config;
-    }
     TwoIdleAxes() : AxisModules(2, IdleMachine()) {}
 };
 
