@@ -16,8 +16,6 @@ bool IsIdentifier(const std::string& key) {
                        [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
-std::string Quoted(const std::string& text) { return Json(text).dump(); }
-
 // Follows the parser's events to know where it is, so a duplicate key is refused with its path.
 class DuplicateKeyFinder {
 public:
@@ -207,6 +205,13 @@ bool Bool(const Json& value, const std::string& path) {
 std::string String(const Json& value, const std::string& path) {
     if (!value.is_string()) RefuseType(path, "a string", value);
     return value.get<std::string>();
+}
+
+std::string Quoted(const std::string& text) { return Json(text).dump(); }
+
+int Duration(const Object& object, const std::string& key, int fallback) {
+    const Json* value = object.Find(key);
+    return value ? static_cast<int>(Integer(*value, object.PathOf(key), 1, kMaxDurationMs)) : fallback;
 }
 
 }  // namespace pac::scenario::json

@@ -58,4 +58,12 @@ double Number(const Json& value, const std::string& path);
 bool Bool(const Json& value, const std::string& path);
 std::string String(const Json& value, const std::string& path);
 
+// "abc" with JSON's quotes and escapes, for messages.
+std::string Quoted(const std::string& text);
+
+// The longest wait, timeout or end timeout a scenario may ask for: one hour.
+constexpr int kMaxDurationMs = 3'600'000;
+// The duration `key` of `object` in ms, 1..kMaxDurationMs, or `fallback` when it is absent.
+int Duration(const Object& object, const std::string& key, int fallback);
+
 }  // namespace pac::scenario::json

@@ -10,9 +10,7 @@ namespace {
 
 using json::Json;
 
-constexpr int kMaxMs = 3'600'000;
-
-std::string Quoted(const std::string& text) { return Json(text).dump(); }
+using json::Quoted;
 
 // One of `names`, refused with the list otherwise.
 std::string Name(const Json& value, const std::string& path, const std::vector<std::string>& names,
@@ -22,10 +20,6 @@ std::string Name(const Json& value, const std::string& path, const std::vector<s
     return text;
 }
 
-int Ms(const json::Object& object, const std::string& key, int fallback) {
-    const Json* value = object.Find(key);
-    return value ? static_cast<int>(json::Integer(*value, object.PathOf(key), 1, kMaxMs)) : fallback;
-}
 
 }  // namespace
 
@@ -49,7 +43,7 @@ CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
     CtrlStep ctrl;
     ctrl.request = Name(step.Get("ctrl"), step.PathOf("ctrl"), kCtrlRequestNames, "request");
     if (const Json* integer = step.Find("integer_mode")) ctrl.integerMode = json::Bool(*integer, step.PathOf("integer_mode"));
-    ctrl.timeoutMs = Ms(step, "timeout_ms", ctrl.timeoutMs);
+    ctrl.timeoutMs = json::Duration(step, "timeout_ms", ctrl.timeoutMs);
     if (const Json* value = step.Find("expect")) {
         const std::string path = step.PathOf("expect");
         const json::Object expect(*value, path, {"done", "error", "error_id"}, "a ctrl expectation");
@@ -113,8 +107,8 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     if (const Json* c = object.Find("condition")) {
         job.condition = Name(*c, object.PathOf("condition"), kMoveConditionNames, "condition");
     }
-    job.timeoutMs = Ms(object, "timeout_ms", job.timeoutMs);
-    job.maxMs = Ms(object, "max_ms", job.maxMs);
+    job.timeoutMs = json::Duration(object, "timeout_ms", job.timeoutMs);
+    job.maxMs = json::Duration(object, "max_ms", job.maxMs);
     if (const Json* expect = object.Find("expect")) job.expect = ReadAxisExpectation(*expect, object.PathOf("expect"));
     return job;
 }

@@ -19,7 +19,6 @@ namespace {
 
 using json::Json;
 
-constexpr int kMaxMs = 3'600'000;  // one hour: the longest wait, timeout or end timeout
 
 // "0906" or "16#0906" (4 hex digits); with anyWidthWithPrefix also "16#26" (1..3 digits after 16#).
 std::optional<std::uint16_t> ParseHex(const std::string& text, bool anyWidthWithPrefix) {
@@ -34,7 +33,7 @@ std::optional<std::uint16_t> ParseHex(const std::string& text, bool anyWidthWith
     return static_cast<std::uint16_t>(std::stoul(digits, nullptr, 16));
 }
 
-std::string Quoted(const std::string& text) { return Json(text).dump(); }
+using json::Quoted;
 
 class Reader {
 public:
@@ -67,11 +66,6 @@ public:
     }
 
 private:
-    // A duration of a step, 1 ms .. kMaxMs.
-    static int Ms(const json::Object& object, const std::string& key, int fallback) {
-        const Json* value = object.Find(key);
-        return value ? static_cast<int>(json::Integer(*value, object.PathOf(key), 1, kMaxMs)) : fallback;
-    }
 
     static Timing ReadTiming(const Json& value, const std::string& path) {
         const json::Object timing(value, path,
@@ -289,7 +283,7 @@ private:
             step.action = ReadFault(value, path, step.note);
         } else {
             const json::Object object(value, path, waitKeys, "a wait step");
-            step.action = WaitStep{Ms(object, "wait_ms", 0)};
+            step.action = WaitStep{json::Duration(object, "wait_ms", 0)};
             step.note = ReadNote(object);
         }
         return step;
@@ -307,8 +301,8 @@ private:
             command.param = static_cast<std::uint16_t>(json::Integer(*param, object.PathOf("param"), 0, 0xFFFF));
         }
         if (const Json* data = object.Find("data")) command.data = ReadDword(*data, object.PathOf("data"));
-        command.timeoutMs = Ms(object, "timeout_ms", command.timeoutMs);
-        command.endTimeoutMs = Ms(object, "end_timeout_ms", command.endTimeoutMs);
+        command.timeoutMs = json::Duration(object, "timeout_ms", command.timeoutMs);
+        command.endTimeoutMs = json::Duration(object, "end_timeout_ms", command.endTimeoutMs);
         if (const Json* expect = object.Find("expect")) command.expect = ReadExpectation(*expect, object.PathOf("expect"));
         return command;
     }

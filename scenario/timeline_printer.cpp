@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "pac/format_time.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "text_format.hpp"
 
@@ -12,18 +13,9 @@ namespace pac::scenario {
 
 namespace {
 
-// "60", "60.5": milliseconds, exact.
-std::string MsNumber(std::chrono::nanoseconds t) {
-    const auto ns = t.count();
-    if (ns % 1000000 == 0) return std::to_string(ns / 1000000);
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6f", static_cast<double>(ns) / 1e6);
-    std::string number = text;
-    number.erase(number.find_last_not_of('0') + 1);
-    return number;
-}
+using pac::FormatMs;
+using pac::FormatMsNumber;
 
-std::string Ms(std::chrono::nanoseconds t) { return MsNumber(t) + " ms"; }
 
 bool SameCmd(const ScanSample& a, const ScanSample& b) {
     return a.toPac == b.toPac && a.fromPac == b.fromPac && a.execute == b.execute && a.busy == b.busy &&
@@ -159,7 +151,7 @@ void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chro
             }
         },
         step.action);
-    out_ << "\nstep " << index + 1 << " at " << Ms(now) << ": ";
+    out_ << "\nstep " << index + 1 << " at " << FormatMs(now) << ": ";
     std::visit(
         [this](const auto& action) {
             using Action = std::decay_t<decltype(action)>;
@@ -269,7 +261,7 @@ void TimelinePrinter::PrintCmdLine(const ScanSample& s) {
     const auto reply = pac::sim::ReplyFrame::Decode(s.fromPac);
     char line[256];
     std::snprintf(line, sizeof line, "%8s %6lld | %s | %s | %4d %2d %2d %2d %6d | %7d %4d %4d %5d %7s %s\n",
-                  MsNumber(s.time).c_str(), static_cast<long long>(s.scan),
+                  FormatMsNumber(s.time).c_str(), static_cast<long long>(s.scan),
                   pac::sim::ToHex(s.toPac).c_str(), pac::sim::ToHex(s.fromPac).c_str(), master.send,
                   reply.receiveFlag, reply.commandErrorFlag, reply.endOfProcessing, reply.operatingStatus, s.execute,
                   s.busy, s.done, s.error, ErrorIdText(s.errorId).c_str(), Hex8(s.ackData).c_str());
@@ -286,7 +278,7 @@ void TimelinePrinter::PrintCtrlLine(const ScanSample& s) {
     char line[320];
     std::snprintf(line, sizeof line,
                   "%8s %6lld | %s | %s | %s %s %8u | %3d %3d %3d %3d %3d %3d %3d %3d | %7d %4d %4d %5d %7s\n",
-                  MsNumber(s.time).c_str(), static_cast<long long>(s.scan), pac::sim::ToHex(c.toPac).c_str(),
+                  FormatMsNumber(s.time).c_str(), static_cast<long long>(s.scan), pac::sim::ToHex(c.toPac).c_str(),
                   pac::sim::ToHex(c.fromPac).c_str(), Hex4(control).c_str(), Hex4(status).c_str(),
                   static_cast<unsigned>(Word(c.fromPac[4], c.fromPac[5])), bit(0), bit(1), bit(2), bit(8), bit(9),
                   bit(10), bit(11), bit(15), c.execute, c.busy, c.done, c.error, ErrorIdText(c.errorId).c_str());
@@ -299,7 +291,7 @@ void TimelinePrinter::PrintAxisLine(const ScanSample& s, const AxisSample& a) {
     char line[320];
     std::snprintf(line, sizeof line,
                   "%8s %6lld | %4d | %s %4u %4u %10s | %s %6u %5u %10s | %6d %7d %4d %4d %5d %7d %7s\n",
-                  MsNumber(s.time).c_str(), static_cast<long long>(s.scan), a.axis,
+                  FormatMsNumber(s.time).c_str(), static_cast<long long>(s.scan), a.axis,
                   Hex8(pac::sim::ReadDword(a.toPac, 0)).c_str(), static_cast<unsigned>(pac::sim::ReadWordAt(a.toPac, 4)),
                   static_cast<unsigned>(pac::sim::ReadWordAt(a.toPac, 6)),
                   PositionText(pac::sim::ReadDword(a.toPac, 8), a.integerMode).c_str(),
@@ -352,7 +344,7 @@ void TimelinePrinter::PrintOutcome(const CommandOutcome& outcome, bool showAckDa
         out_ << "no Done or Error within " << Plural(scans, "scan", "scans") << " of the Execute edge";
         return;
     }
-    out_ << (outcome.done ? "Done" : "Error") << " in scan " << outcome.endScan << " (" << Ms(outcome.endTime)
+    out_ << (outcome.done ? "Done" : "Error") << " in scan " << outcome.endScan << " (" << FormatMs(outcome.endTime)
          << "), " << Plural(scans, "scan", "scans") << " after the Execute edge";
     if (outcome.error) {
         const std::string name = names_.ErrorName(outcome.errorId);
@@ -376,7 +368,7 @@ void TimelinePrinter::PrintAxisOutcome(const AxisJob& job, const AxisOutcome& ou
     } else {
         out_ << (outcome.enabled ? "Enabled" : "not Enabled");
     }
-    out_ << " in scan " << outcome.endScan << " (" << Ms(outcome.endTime) << "), " << Plural(scans, "scan", "scans")
+    out_ << " in scan " << outcome.endScan << " (" << FormatMs(outcome.endTime) << "), " << Plural(scans, "scan", "scans")
          << " after the step began";
     if (outcome.error) {
         const std::string name = names_.ErrorName(outcome.errorId);

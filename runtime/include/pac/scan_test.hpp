@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "pac/format_time.hpp"
 #include "pac/plc_task.hpp"
 #include "pac/sim_clock.hpp"
 
@@ -20,21 +21,7 @@ namespace pac {
 
 namespace detail {
 
-// "12 ms" or "12.5 ms": exact, since cycle times below 1 ms are common.
-inline std::string FormatMs(std::chrono::nanoseconds t) {
-    constexpr std::int64_t kNsPerMs = 1'000'000;
-    std::ostringstream out;
-    out << t.count() / kNsPerMs;
-    std::int64_t frac = t.count() % kNsPerMs;
-    if (frac != 0) {
-        std::string digits = std::to_string(frac);
-        digits.insert(0, 6 - digits.size(), '0');
-        digits.erase(digits.find_last_not_of('0') + 1);
-        out << '.' << digits;
-    }
-    out << " ms";
-    return out.str();
-}
+using pac::FormatMs;
 
 // Where the task stands, for messages: absolute scan number and simulated time.
 inline std::string Position(const PlcTask& task) {

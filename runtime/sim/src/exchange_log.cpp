@@ -1,6 +1,8 @@
 // The simulated controller's cycle log (see exchange_log.hpp).
 #include "pac/sim/exchange_log.hpp"
 
+#include "pac/format_time.hpp"
+
 #include <cstdint>
 #include <iomanip>
 #include <sstream>
@@ -26,21 +28,6 @@ std::string ExchangeLog::Format(bool changesOnly) const {
     return out.str();
 }
 
-std::string FormatTime(std::chrono::nanoseconds t) {
-    constexpr std::int64_t kNsPerMs = 1'000'000;
-    std::ostringstream out;
-    const std::int64_t ns = t.count();
-    out << ns / kNsPerMs;
-    std::int64_t frac = ns % kNsPerMs;
-    if (frac < 0) frac = -frac;
-    if (frac != 0) {
-        std::string digits = std::to_string(frac);
-        digits.insert(0, 6 - digits.size(), '0');
-        digits.erase(digits.find_last_not_of('0') + 1);
-        out << '.' << digits;
-    }
-    out << " ms";
-    return out.str();
-}
+std::string FormatTime(std::chrono::nanoseconds t) { return pac::FormatMs(t); }
 
 }  // namespace pac::sim
