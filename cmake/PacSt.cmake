@@ -1,10 +1,12 @@
-# pac_st_library(<target> SOURCES <file.st>...): translate Structured Text into a static C library.
+# pac_st_library(<target> SOURCES <file.st>... [GVL <list.st>...]): translate Structured Text into a static C
+# library; GVL names global constant lists to check with it (docs/constants.md).
 #
 # With PAC_ST_COMPILER=pacst (default) the project's translator runs from a venv inside the build
 # tree. It writes POUS.h (all types and POU interfaces) and one C file per ST file, and rewrites only
 # the files whose text changed, so touching one .st file recompiles only that file's C unless its
 # interface changed. With PAC_ST_COMPILER=matiec, iec2c compiles the ST files concatenated in the
-# order given, and one C translation unit includes the POUS.c it writes.
+# order given and one C translation unit includes the POUS.c it writes; C++ code sees pacst's POUS.h
+# for the same files, and layout_check.c proves at compile time that both headers agree.
 # List SOURCES in declaration order: a type before its users, a POU before its callers.
 
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
@@ -39,23 +41,22 @@ function(_pacst_ensure_venv)
   file(TOUCH "${stamp}")
 endfunction()
 
-if(PAC_ST_COMPILER STREQUAL "pacst")
-  _pacst_ensure_venv()
-  file(GLOB_RECURSE PACST_TOOL_FILES CONFIGURE_DEPENDS "${PACST_SOURCE_DIR}/pacst/*.py"
-       "${PACST_SOURCE_DIR}/pacst/include/*.h")
-  # The translator as a command, for tests that run it on snippets.
-  set(PACST_COMMAND env "PYTHONPATH=${PACST_SOURCE_DIR}" "${PACST_PYTHON}" -m pacst CACHE INTERNAL "")
-elseif(PAC_ST_COMPILER STREQUAL "matiec")
+# pacst is needed with either compiler: with MATIEC it writes the declarations C++ code includes.
+_pacst_ensure_venv()
+file(GLOB_RECURSE PACST_TOOL_FILES CONFIGURE_DEPENDS "${PACST_SOURCE_DIR}/pacst/*.py"
+     "${PACST_SOURCE_DIR}/pacst/include/*.h")
+set(PACST_COMMAND env "PYTHONPATH=${PACST_SOURCE_DIR}" "${PACST_PYTHON}" -m pacst CACHE INTERNAL "")
+if(PAC_ST_COMPILER STREQUAL "matiec")
   if(NOT EXISTS "${IEC2C}" OR NOT EXISTS "${MATIEC_LIB}/C/iec_std_lib.h")
     message(FATAL_ERROR "PAC_ST_COMPILER=matiec needs -DIEC2C=<path to iec2c> and "
                         "-DMATIEC_LIB=<MATIEC's lib folder, holding C/iec_std_lib.h>")
   endif()
-else()
+elseif(NOT PAC_ST_COMPILER STREQUAL "pacst")
   message(FATAL_ERROR "PAC_ST_COMPILER must be pacst or matiec, not '${PAC_ST_COMPILER}'")
 endif()
 
 function(pac_st_library target)
-  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;GVL" ${ARGN})
   if(NOT ARG_SOURCES)
     message(FATAL_ERROR "pac_st_library(${target}): no SOURCES")
   endif()
@@ -65,6 +66,20 @@ function(pac_st_library target)
     get_filename_component(abs "${src}" ABSOLUTE)
     list(APPEND abs_sources "${abs}")
   endforeach()
+  # Global constant lists: checked with the POUs (whose constants must repeat them unchanged) and
+  # written as <stem>.h, a name/value table for C and C++ code.
+  set(gvl_args "")
+  set(gvl_sources "")
+  set(gvl_headers "")
+  foreach(gvl IN LISTS ARG_GVL)
+    get_filename_component(abs "${gvl}" ABSOLUTE)
+    get_filename_component(stem "${gvl}" NAME_WE)
+    list(APPEND gvl_args --gvl "${abs}")
+    list(APPEND gvl_sources "${abs}")
+    list(APPEND gvl_headers "${stem}.h")
+  endforeach()
+  list(TRANSFORM gvl_headers PREPEND "${out}/" OUTPUT_VARIABLE out_gvl_headers)
+  list(TRANSFORM gvl_headers PREPEND "${out}/decl/" OUTPUT_VARIABLE decl_gvl_headers)
 
   if(PAC_ST_COMPILER STREQUAL "pacst")
     set(c_files "")
@@ -81,10 +96,10 @@ function(pac_st_library target)
     # their text did not change, so Ninja and Make recompile only what really changed.
     add_custom_command(
       OUTPUT "${out}/pacst.stamp"
-      BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" ${c_files}
+      BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" ${c_files} ${out_gvl_headers}
       COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${PACST_CACHE_DIR}"
-              --stamp "${out}/pacst.stamp" ${abs_sources}
-      DEPENDS ${abs_sources} ${PACST_TOOL_FILES}
+              --stamp "${out}/pacst.stamp" ${gvl_args} ${abs_sources}
+      DEPENDS ${abs_sources} ${gvl_sources} ${PACST_TOOL_FILES}
       COMMENT "pacst: translating ${target} (${CMAKE_CURRENT_SOURCE_DIR})"
       VERBATIM)
     add_custom_target(${target}_translate DEPENDS "${out}/pacst.stamp")
@@ -92,22 +107,49 @@ function(pac_st_library target)
     add_dependencies(${target} ${target}_translate)
     target_include_directories(${target} PUBLIC "${out}")
   else()
-    set(all_st "${out}/all.st")
+    # MATIEC's object code, pacst's declarations for C++ (MATIEC's POUS.h is not valid C++), and a
+    # compile-time check that both lay out every type and FB alike (docs/translator.md).
+    set(decl "${out}/decl")  # where decl_gvl_headers are
+    set(mat "${out}/matiec")
+    set(all_st "${mat}/all.st")
     add_custom_command(
-      OUTPUT "${out}/POUS.c" "${out}/POUS.h"
-      COMMAND ${CMAKE_COMMAND} -E make_directory "${out}"
+      OUTPUT "${mat}/POUS.c" "${mat}/POUS.h"
+      COMMAND ${CMAKE_COMMAND} -E make_directory "${mat}"
       COMMAND ${CMAKE_COMMAND} "-DOUT=${all_st}" "-DSOURCES=${abs_sources}"
               -P "${PROJECT_SOURCE_DIR}/cmake/PacConcat.cmake"
-      COMMAND "${IEC2C}" -I "${MATIEC_LIB}" -T "${out}" "${all_st}"
+      COMMAND "${IEC2C}" -I "${MATIEC_LIB}" -T "${mat}" "${all_st}"
       DEPENDS ${abs_sources}
       COMMENT "iec2c: compiling ${target}"
       VERBATIM)
-    file(MAKE_DIRECTORY "${out}")
-    file(WRITE "${out}/unit.c.in" "#include \"POUS.c\"\n")
-    configure_file("${out}/unit.c.in" "${out}/unit.c" COPYONLY)
-    add_library(${target} STATIC "${out}/unit.c")
-    set_source_files_properties("${out}/unit.c" PROPERTIES OBJECT_DEPENDS "${out}/POUS.c")
-    target_include_directories(${target} PUBLIC "${out}" "${MATIEC_LIB}/C")
+    add_custom_command(
+      OUTPUT "${decl}/pacst.stamp"
+      BYPRODUCTS "${decl}/POUS.h" "${decl}/pacst_iec.h" "${decl}/layout_probe.c" "${mat}/layout_check.c"
+                 ${decl_gvl_headers}
+      COMMAND ${PACST_COMMAND} declare --out "${decl}" --check-out "${mat}" --cache "${PACST_CACHE_DIR}"
+              --stamp "${decl}/pacst.stamp" ${gvl_args} ${abs_sources}
+      DEPENDS ${abs_sources} ${gvl_sources} ${PACST_TOOL_FILES}
+      COMMENT "pacst: declarations of ${target} for C++"
+      VERBATIM)
+    add_custom_target(${target}_declare DEPENDS "${decl}/pacst.stamp")
+    add_executable(${target}_layout_probe "${decl}/layout_probe.c")
+    add_dependencies(${target}_layout_probe ${target}_declare)
+    target_include_directories(${target}_layout_probe PRIVATE "${decl}")
+    add_custom_command(
+      OUTPUT "${mat}/layout_expected.h"
+      COMMAND ${target}_layout_probe "${mat}/layout_expected.h"
+      DEPENDS ${target}_layout_probe
+      COMMENT "pacst: measuring the layout of ${target}'s declarations"
+      VERBATIM)
+    file(MAKE_DIRECTORY "${mat}")
+    # MATIEC's POUS.c includes nothing itself: its library and declarations come first.
+    file(WRITE "${mat}/unit.c.in" "#include \"iec_std_lib.h\"\n#include \"POUS.h\"\n#include \"POUS.c\"\n")
+    configure_file("${mat}/unit.c.in" "${mat}/unit.c" COPYONLY)
+    add_library(${target} STATIC "${mat}/unit.c" "${mat}/layout_check.c")
+    add_dependencies(${target} ${target}_declare)
+    set_source_files_properties("${mat}/unit.c" PROPERTIES OBJECT_DEPENDS "${mat}/POUS.c;${mat}/POUS.h")
+    set_source_files_properties("${mat}/layout_check.c" PROPERTIES GENERATED TRUE
+                                OBJECT_DEPENDS "${mat}/layout_expected.h;${mat}/POUS.h")
+    target_include_directories(${target} PRIVATE "${mat}" "${MATIEC_LIB}/C" INTERFACE "${decl}")
   endif()
   # IEC integer overflow wraps; C only promises that with -fwrapv.
   target_compile_options(${target} PRIVATE -fwrapv -Wno-unused-function -Wno-unused-variable

@@ -92,7 +92,7 @@ TEST(ConformanceCalls, StructsPassByValueAndOmittedStructTakesTypeDefaults) {
 
 TEST(ConformanceCalls, NestedFunctionBlockInstances) {
     auto fb = PAC_FB(CONF_FBNESTED);
-    fb();  // Step = 5
+    fb();  // Stride = 5
     EXPECT_EQ(fb->FIRST.value, 5);
     EXPECT_EQ(fb->OUTVIAARROW.value, 5);
     EXPECT_EQ(fb->SECOND.value, 30);  // inputs written as AccB.Amount := 10, AccB.Gain := 3

@@ -1,4 +1,5 @@
-// Control statements of translated ST: IF, CASE, WHILE, REPEAT, FOR, EXIT, CONTINUE, RETURN.
+// Control statements of translated ST: IF, CASE, WHILE, REPEAT, EXIT, CONTINUE, RETURN (FOR is refused:
+// MATIEC miscompiles it).
 #include <gtest/gtest.h>
 
 #include "pac/fb_instance.hpp"
@@ -130,60 +131,7 @@ TEST(ConformanceControl, ExitLeavesOnlyTheInnerLoop) {
     EXPECT_EQ(fb->OUTER.value, 4);
     EXPECT_EQ(fb->INNER.value, 4);
     EXPECT_EQ(fb->TOTAL.value, 10);      // 1 + 2 + 3 + 4
-    EXPECT_EQ(fb->FORTOTAL.value, 306);  // (1 + 2 + 3) inner passes + 3 * 100 outer passes
-}
-
-TEST(ConformanceControl, ForStepsAndFinalValue) {
-    auto fb = PAC_FB(CONF_FORSTEPS);
-    fb();
-    EXPECT_EQ(fb->UPSUM.value, 55);
-    EXPECT_EQ(fb->UPAFTER.value, 11);        // last value 10 + step 1
-    EXPECT_EQ(fb->DOWNORDER.value, 54321);   // 5, 4, 3, 2, 1 in that order
-    EXPECT_EQ(fb->DOWNAFTER.value, 0);       // last value 1 + step -1
-    EXPECT_EQ(fb->BY3COUNT.value, 3);        // 1, 4, 7
-    EXPECT_EQ(fb->BY3LAST.value, 7);
-    EXPECT_EQ(fb->BY3AFTER.value, 10);       // 7 + 3 overshoots the end 9
-    EXPECT_EQ(fb->BY3EXACT.value, 10);       // 1, 4, 7, 10: the end value itself runs
-}
-
-TEST(ConformanceControl, ForRunsOnceOrZeroTimes) {
-    auto fb = PAC_FB(CONF_FOREDGES);
-    fb();  // First = Last = 5
-    EXPECT_EQ(fb->ONCECOUNT.value, 1);  // FOR 5 TO 5 runs exactly once
-    EXPECT_EQ(fb->ONCEAFTER.value, 6);
-    EXPECT_EQ(fb->ZEROCOUNT.value, 0);  // FOR 6 TO 5 never runs
-    EXPECT_EQ(fb->ZEROAFTER.value, 6);  // and leaves the start value
-    EXPECT_EQ(fb->VARCOUNT.value, 1);
-    EXPECT_EQ(fb->VARAFTER.value, 6);
-    EXPECT_EQ(fb->DOWNZEROCOUNT.value, 0);  // FOR 1 TO 5 BY -1 never runs
-    fb->FIRST.value = -3;
-    fb->LAST.value = 2;
-    fb();
-    EXPECT_EQ(fb->VARCOUNT.value, 6);
-    EXPECT_EQ(fb->VARAFTER.value, 3);
-    fb->FIRST.value = 3;
-    fb();
-    EXPECT_EQ(fb->VARCOUNT.value, 0);
-    EXPECT_EQ(fb->VARAFTER.value, 3);
-}
-
-TEST(ConformanceControl, ForToTheTypeLimitTerminates) {
-    auto fb = PAC_FB(CONF_FORLIMITS);
-    fb();
-    EXPECT_EQ(fb->INTCOUNT.value, 8);  // 32760 .. 32767
-    EXPECT_EQ(fb->INTLASTSEEN.value, 32767);
-    EXPECT_EQ(fb->SINTCOUNT.value, 256);
-    EXPECT_EQ(fb->DOWNCOUNT.value, 3);   // -32766, -32767, -32768
-    EXPECT_EQ(fb->USINTCOUNT.value, 3);  // 250, 252, 254
-}
-
-TEST(ConformanceControl, ContinueAndExitInFor) {
-    auto fb = PAC_FB(CONF_FORCONTINUE);
-    fb();
-    EXPECT_EQ(fb->EVENSUM.value, 30);  // 2 + 4 + 6 + 8 + 10
-    EXPECT_EQ(fb->PASSES.value, 10);   // CONTINUE still steps to the next value
-    EXPECT_EQ(fb->AFTER.value, 11);
-    EXPECT_EQ(fb->EXITAT.value, 4);    // EXIT leaves the variable where it was
+    EXPECT_EQ(fb->NESTEDTOTAL.value, 306);  // (1 + 2 + 3) inner passes + 3 * 100 outer passes
 }
 
 TEST(ConformanceControl, ReturnInFunctionBlockAndFunction) {
@@ -192,7 +140,7 @@ TEST(ConformanceControl, ReturnInFunctionBlockAndFunction) {
     fb();
     EXPECT_EQ(fb->FROMFUNCTION.value, 6);
     EXPECT_EQ(fb->BEFORE.value, 3);
-    EXPECT_EQ(fb->LOOPRETURN.value, 3);  // RETURN from inside the FOR loop
+    EXPECT_EQ(fb->LOOPRETURN.value, 3);  // RETURN from inside the loop
     EXPECT_EQ(fb->AFTER.value, 0);       // never reached
     fb->X.value = -2;
     fb();

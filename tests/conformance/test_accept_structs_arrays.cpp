@@ -88,19 +88,6 @@ TEST(ConformanceStructsArrays, StructContainingAnArray) {
     EXPECT_EQ(fb->SCALED.value, 0.0);
 }
 
-TEST(ConformanceStructsArrays, ArrayOfArrayType) {
-    auto fb = PAC_FB(CONF_ARRAYOFARRAY);
-    fb();
-    const INT m0[] = {11, 12, 13};  // M[0] := RowCopy, a copy of M[1]
-    const INT m1[] = {11, -1, 13};  // M[1][2] := -1
-    for (int c = 1; c <= 3; ++c) {
-        EXPECT_EQ(fb->M.value.table[0].table[c - 1], m0[c - 1]) << "M[0][" << c << "]";
-        EXPECT_EQ(fb->M.value.table[1].table[c - 1], m1[c - 1]) << "M[1][" << c << "]";
-        EXPECT_EQ(fb->ROWCOPY.value.table[c - 1], 10 + c) << "RowCopy[" << c << "]";
-    }
-    EXPECT_EQ(fb->TRACE.value, 23);
-}
-
 TEST(ConformanceStructsArrays, EnumDefaultAssignmentAndComparison) {
     auto fb = PAC_FB(CONF_ENUMBASIC);
     EXPECT_EQ(fb->COLOUR.value, E_CONFCOLOUR__CONF_COL_RED);  // the first value is the default

@@ -1,15 +1,22 @@
 // TIME semantics of translated ST: literals, addition and subtraction, comparison.
 #include <gtest/gtest.h>
 
+#include "matiec_deviations.hpp"
 #include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
 #include "pac/st_program.hpp"
 
 namespace {
 
-// TIME is {tv_sec, tv_nsec} with tv_nsec in [0, 1e9) and the sign carried by tv_sec.
+using pac::test::kTimeLiteralShortfall;
+
+// The value of a TIME, sec + nsec. pacst keeps tv_nsec in [0, 1e9) with the sign in tv_sec; MATIEC gives
+// a negative TIME a negative tv_nsec ({0, -250000000} for T#-250MS), so the tests compare values.
 void ExpectTime(const TIME& t, long sec, long nsec) {
-    EXPECT_EQ(t.tv_sec, sec);
-    EXPECT_EQ(t.tv_nsec, nsec);
+    const std::chrono::nanoseconds want = std::chrono::seconds(sec) + std::chrono::nanoseconds(nsec);
+    const std::chrono::nanoseconds got = pac::FromIecTime(t);
+    EXPECT_LE(got, want);
+    EXPECT_GE(got, want - kTimeLiteralShortfall);
 }
 
 TEST(ConformanceTime, Literals) {

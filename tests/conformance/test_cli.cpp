@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "translator_runner.hpp"
 
@@ -117,6 +118,65 @@ TEST_F(TranslatorCli, DeclarationAfterUseIsRefused) {
     EXPECT_NE(result.output.find(user + ":2:9: error: type 'T_Pair' is used before its declaration"),
               std::string::npos)
         << result.output;
+}
+
+// --gvl: the global constant list is checked, POU constants named like its constants must repeat them
+// unchanged, and a build writes the list as a name/type/value table.
+const char* kList =
+    "VAR_GLOBAL CONSTANT\n"
+    "  K_CODE : WORD := 16#0A93;\n"
+    "  K_LIMIT : INT := -5;\n"
+    "END_VAR\n";
+
+std::string UserOf(const std::string& value) {
+    return "FUNCTION_BLOCK FB_User\nVAR_OUTPUT Code : WORD; END_VAR\nVAR CONSTANT\n  K_CODE : WORD := " + value +
+           ";\nEND_VAR\nCode := K_CODE;\nEND_FUNCTION_BLOCK\n";
+}
+
+TEST_F(TranslatorCli, ConstantRepeatedFromTheListBuildsAndTheListBecomesATable) {
+    auto list = Write("GVL_Probe.st", kList);
+    auto user = Write("FB_User.st", UserOf("WORD#2707"));  // the same value in another spelling
+    auto result = RunTranslator({"build", "--out", Out(), "--gvl", list, user});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream table(dir_ / "out" / "GVL_Probe.h");
+    std::string text((std::istreambuf_iterator<char>(table)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("{\"K_CODE\", \"WORD\", 2707LL}"), std::string::npos) << text;
+    EXPECT_NE(text.find("{\"K_LIMIT\", \"INT\", -5LL}"), std::string::npos) << text;
+}
+
+TEST_F(TranslatorCli, ConstantThatDiffersFromTheListIsRefused) {
+    auto list = Write("GVL_Probe.st", kList);
+    auto user = Write("FB_User.st", UserOf("16#0A94"));
+    auto result = RunTranslator({"build", "--out", Out(), "--gvl", list, user});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(user + ":4:3: error: constant K_CODE differs from GVL_Probe.st:2 (WORD#16#0A93)"),
+              std::string::npos)
+        << result.output;
+    EXPECT_FALSE(Generated("GVL_Probe.h"));
+    auto retyped = Write("FB_User.st", "FUNCTION_BLOCK FB_User\nVAR_OUTPUT L : DINT; END_VAR\nVAR CONSTANT\n"
+                                       "  K_LIMIT : DINT := -5;\nEND_VAR\nL := K_LIMIT;\nEND_FUNCTION_BLOCK\n");
+    result = RunTranslator({"check", "--gvl", list, retyped});
+    EXPECT_NE(result.output.find(retyped + ":4:3: error: constant K_LIMIT is DINT here but INT in GVL_Probe.st:3"),
+              std::string::npos)
+        << result.output;
+}
+
+TEST_F(TranslatorCli, ListOutsideItsRulesIsRefused) {
+    auto user = Write("FB_Counter.st", kCounter);
+    const std::pair<const char*, const char*> cases[] = {
+        {"VAR_GLOBAL\n  K : WORD := 1;\nEND_VAR\n", ":1:1: error: VAR_GLOBAL without CONSTANT"},
+        {"VAR_GLOBAL CONSTANT\n  K : REAL := 1.5;\nEND_VAR\n", ":2:7: error: global constant of type REAL"},
+        {"VAR_GLOBAL CONSTANT\n  K : BYTE := 256;\nEND_VAR\n", ":2:15: error: 256 does not fit BYTE"},
+        {"VAR_GLOBAL CONSTANT\n  K : WORD := 1;\n  k : WORD := 2;\nEND_VAR\n",
+         ":3:3: error: constant 'k' is declared twice"},
+        {"VAR_GLOBAL CONSTANT\n  K : WORD;\nEND_VAR\n", ":2:3: error: a global constant needs a value"},
+    };
+    for (const auto& [text, words] : cases) {
+        auto list = Write("GVL_Probe.st", text);
+        auto result = RunTranslator({"check", "--gvl", list, user});
+        EXPECT_EQ(result.exitCode, 1) << text;
+        EXPECT_NE(result.output.find(list + words), std::string::npos) << text << result.output;
+    }
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
-"""Command line: `pacst build` translates ST files to C; `pacst check` only checks them."""
+"""Command line: `pacst build` translates ST files to C; `pacst declare` writes only the declarations that
+C++ code of a MATIEC build includes, and the check that MATIEC lays them out the same; `pacst check`
+only checks."""
 import argparse
 import os
 import sys
 import time
 
 from .compiler import Compiler
+from . import gvl, layout
 from .emit import Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_file
@@ -22,18 +25,34 @@ def _parse_all(files, cache_dir):
     return sources
 
 
-def translate(files, cache_dir=None):
-    """Parse and compile `files` in declaration order; returns (compiler, program) or raises StErrors."""
+def translate(files, cache_dir=None, gvl_files=()):
+    """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
+    against them; returns (compiler, program, {gvl file: constants}) or raises StErrors."""
     sources = _parse_all(files, cache_dir)
+    lists = _parse_all(gvl_files, cache_dir)
     comp = Compiler()
     program = comp.compile(sources)
-    return comp, program
+    constants = {}
+    errors = []
+    for src in lists:
+        try:
+            constants[src.path] = gvl.read_list(comp, src)
+            gvl.check_pous(comp, program, constants[src.path])
+        except StErrors as e:
+            errors += e.errors
+    if errors:
+        raise StErrors(errors)
+    return comp, program, constants
+
+
+def _tables(constants):
+    return {_stem(path) + ".h": gvl.table_header(_stem(path), items) for path, items in constants.items()}
 
 
 def _build(args):
-    names = ["POUS.h", "pacst_iec.h"] + [_stem(f) + ".c" for f in args.files]
+    names = ["POUS.h", "pacst_iec.h"] + [_stem(f) + ".c" for f in args.files] + [_stem(f) + ".h" for f in args.gvl]
     try:
-        comp, program = translate(args.files, args.cache)
+        comp, program, constants = translate(args.files, args.cache, args.gvl)
     except StErrors as e:
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
@@ -41,12 +60,38 @@ def _build(args):
         for err in e.errors:
             print(err, file=sys.stderr)
         return 1
-    written = write_outputs(args.out, Emitter(comp, program).outputs(args.files))
+    outputs = Emitter(comp, program).outputs(args.files)
+    outputs.update(_tables(constants))
+    written = write_outputs(args.out, outputs)
     if args.stamp:
         with open(args.stamp, "w", encoding="utf-8") as f:
             f.write(f"{time.time()}\n")
     if args.verbose:
         print(f"pacst: {len(args.files)} file(s), rewrote {', '.join(written) or 'nothing'}")
+    return 0
+
+
+def _declare(args):
+    names = ["POUS.h", "pacst_iec.h", "layout_probe.c"] + [_stem(f) + ".h" for f in args.gvl]
+    check_name = os.path.join(args.check_out, "layout_check.c")
+    try:
+        comp, program, constants = translate(args.files, args.cache, args.gvl)
+    except StErrors as e:
+        remove_outputs(args.out, names)
+        if os.path.exists(check_name):
+            os.remove(check_name)
+        for err in e.errors:
+            print(err, file=sys.stderr)
+        return 1
+    outputs = {name: text for name, text in Emitter(comp, program).outputs(args.files).items() if name in names}
+    outputs["layout_probe.c"] = layout.probe_source(program, args.files)
+    outputs.update(_tables(constants))
+    write_outputs(args.out, outputs)
+    # Beside MATIEC's POUS.h: a quoted include looks in the including file's folder first.
+    write_outputs(args.check_out, {"layout_check.c": layout.check_source(program, args.files)})
+    if args.stamp:
+        with open(args.stamp, "w", encoding="utf-8") as f:
+            f.write(f"{time.time()}\n")
     return 0
 
 
@@ -56,7 +101,7 @@ def _check(args):
     failed = False
     for files in groups:
         try:
-            translate(files, args.cache)
+            translate(files, args.cache, args.gvl)
         except StErrors as e:
             failed = True
             for err in e.errors:
@@ -70,12 +115,25 @@ def main(argv=None):
     build = sub.add_parser("build", help="translate ST files (in declaration order) to C")
     build.add_argument("--out", required=True, help="folder for POUS.h, pacst_iec.h and one .c per ST file")
     build.add_argument("--cache", help="folder for the per-file parse cache")
+    build.add_argument("--gvl", action="append", default=[], metavar="FILE",
+                       help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
     build.add_argument("--stamp", help="file written after a successful build, removed after a refusal")
     build.add_argument("-v", "--verbose", action="store_true")
     build.add_argument("files", nargs="+")
     build.set_defaults(run=_build)
+    declare = sub.add_parser("declare", help="write POUS.h and the layout check for C++ code of a MATIEC build")
+    declare.add_argument("--out", required=True, help="folder for POUS.h, pacst_iec.h and layout_probe.c")
+    declare.add_argument("--check-out", required=True, help="folder of MATIEC's POUS.h, for layout_check.c")
+    declare.add_argument("--cache", help="folder for the per-file parse cache")
+    declare.add_argument("--gvl", action="append", default=[], metavar="FILE",
+                       help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
+    declare.add_argument("--stamp", help="file written after success")
+    declare.add_argument("files", nargs="+")
+    declare.set_defaults(run=_declare)
     check = sub.add_parser("check", help="check ST files against the portable subset, generate nothing")
     check.add_argument("--cache", help="folder for the per-file parse cache")
+    check.add_argument("--gvl", action="append", default=[], metavar="FILE",
+                       help="a global constant list: checked, and checked against the POUs' constants")
     check.add_argument("--separately", action="store_true", help="check each file as a program of its own")
     check.add_argument("files", nargs="+")
     check.set_defaults(run=_check)

@@ -110,6 +110,7 @@ class Compiler:
         self.declared_at = {}  # upper name -> (file, line) for every global name, including later ones
         self.program = Program()
         self.errors = []
+        self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
 
     # ------------------------------------------------------------------ errors
@@ -133,6 +134,9 @@ class Compiler:
                     self._item(item, src)
                 except StError as e:
                     self.errors.append(e)
+                    name = self._item_name(item)
+                    if name is not None:
+                        self.refused.add(name.upper())
         if self.errors:
             raise StErrors(self.errors)
         return self.program
@@ -201,6 +205,8 @@ class Compiler:
                     raise self.err(token, f"a function block ({name}) cannot be used here")
                 return pou.fbtype
             raise self.err(token, f"'{name}' is a FUNCTION, not a type")
+        if up in self.refused:
+            raise self.err(token, f"type '{name}' cannot be used: its declaration was refused (above)")
         if up in self.declared_at:
             file, line = self.declared_at[up]
             raise self.err(token, f"type '{name}' is used before its declaration ({file}:{line}): "
@@ -267,6 +273,9 @@ class Compiler:
             if elem.is_fb:
                 raise self.err(spec.type, f"array of function block instances ({elem.name}) is outside the "
                                           "portable subset: declare the instances one by one")
+            if elem.is_array:
+                raise self.err(spec.type, f"array of the array type {elem.name}: iec2c accepts it but writes C "
+                                          "that does not compile; use an array of a STRUCT that holds the row")
             t = T.ArrayType(_name(decl.name), low, high, elem)
         elif cls == "StructureTypeDeclaration":
             self._declare_global(decl.name, "type")
@@ -362,7 +371,16 @@ class Compiler:
                 raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
                 else self._resolve_type(node.return_type, allow_fb=False)
+        constant_block = None
         for block in node.declarations:
+            attrs = getattr(block, "attrs", None)
+            is_constant = attrs is not None and str(attrs.name).lower() == "constant"
+            if kind == "function" and constant_block is not None and not is_constant \
+                    and self._SECTIONS.get(_cls(block)) == "var":
+                raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
+                                      "for constants too; put VAR CONSTANT last")
+            if is_constant:
+                constant_block = block
             self._var_block(pou, block)
         if kind == "fb":
             pou.fbtype.vars = pou.vars
@@ -440,6 +458,9 @@ class Compiler:
                                                    "variables: give defaults in the TYPE or in code")
                     if section == "inout":
                         raise self.err(init.value, "a VAR_IN_OUT has no initial value")
+                    if section == "temp":
+                        raise self.err(init.value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
+                                                   "from zero in every call; assign it in the body")
                     self._init_code(v, "x")
                 pou.vars.append(v)
 
@@ -1062,8 +1083,10 @@ class BodyCompiler:
     # ------------------------------------------------------------------ POU
     def compile(self):
         pou = self.pou
-        lines = self.block(pou.node.body.statements if pou.node.body is not None else [], 1, pou.node,
-                           allow_empty=True)
+        statements = pou.node.body.statements if pou.node.body is not None else []
+        if not statements:
+            raise self.err(pou.node, f"{pou.name} has an empty body: MATIEC needs at least one statement")
+        lines = self.block(statements, 1, pou.node)
         if pou.kind == "function" and not self.result_assigned:
             raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
         return lines
@@ -1122,7 +1145,8 @@ class BodyCompiler:
             self.loops.pop()
             return out + [f"{ind}}} while (!{self.cond(node.expression)});"]
         if cls == "ForStatement":
-            return self.for_loop(node, d)
+            raise self.err(node, "MATIEC miscompiles FOR (FOR I := 5 TO 5 runs zero times there, and the variable "
+                                 "ends at the last value instead of last + step): write a WHILE loop")
         if cls == "ExitStatement":
             if not self.loops:
                 raise self.err(node, "EXIT outside a loop")
@@ -1130,8 +1154,7 @@ class BodyCompiler:
         if cls == "ContinueStatement":
             if not self.loops:
                 raise self.err(node, "CONTINUE outside a loop")
-            kind = self.loops[-1]
-            return [f"{ind}goto {kind};"] if kind.startswith("__for") else [f"{ind}continue;"]
+            return [f"{ind}continue;"]
         if cls == "ReturnStatement":
             return [f"{ind}goto __end;"]
         if cls == "FunctionCallStatement":
@@ -1226,49 +1249,6 @@ class BodyCompiler:
             out += self.block(self._stmts(node.else_clause.statements), d + 2, node.else_clause)
             out.append(f"{ind}  }}")
         out.append(f"{ind}}}")
-        return out
-
-    def for_loop(self, node, d):
-        ind = "  " * d
-        r = self.ref(node.control)
-        if _cls(node.control) != "SimpleVariable" or not r.type.is_int:
-            raise self.err(node.control, "the FOR control variable must be a plain integer variable")
-        if not r.writable or r.var.section in ("inout", "output", "input"):
-            raise self.err(node.control, "the FOR control variable must be a local variable")
-        t = r.type
-        start = self.ex.coerce(self.ex.expr(node.from_, t), t, node.from_)
-        end = self.ex.coerce(self.ex.expr(node.to, t), t, node.to)
-        if node.step is not None:
-            ste = self.ex.expr(node.step, t)
-            if ste.type is T.ANY_INT and ste.value == 0:
-                raise self.err(node.step, "FOR with BY 0 never ends")
-            step = self.ex.coerce(ste, t, node.step)
-        else:
-            step = f"(({t.cname})1)"
-        self.counter += 1
-        n = self.counter
-        label = f"__for{n}_next"
-        # IEC: the body runs while the variable has not passed the end value, and the variable ends at
-        # the last value + step. The comparisons use 64 bits so that an end value at the type's limit
-        # cannot make the loop run forever.
-        out = [f"{ind}{{",
-               f"{ind}  {t.cname} __end{n} = {end};",
-               f"{ind}  {t.cname} __by{n} = {step};",
-               f"{ind}  {r.write(start)}",
-               f"{ind}  if (__by{n} > 0 ? (int64_t){r.read()} <= (int64_t)__end{n} : "
-               f"(__by{n} < 0 && (int64_t){r.read()} >= (int64_t)__end{n})) for (;;) {{"]
-        self.loops.append(label)
-        out += self.block(self._stmts(node.statements), d + 2, node)
-        self.loops.pop()
-        nxt = f"(int64_t){r.read()} + (int64_t)__by{n}"
-        out += [f"{ind}  {label}: ;",
-                f"{ind}    {{",
-                f"{ind}      int64_t __next{n} = {nxt};",
-                f"{ind}      {r.write(f'(({t.cname})__next{n})')}",
-                f"{ind}      if (__by{n} > 0 ? __next{n} > (int64_t)__end{n} : __next{n} < (int64_t)__end{n}) break;",
-                f"{ind}    }}",
-                f"{ind}  }}",
-                f"{ind}}}"]
         return out
 
     def fb_call(self, node, d):

@@ -42,6 +42,14 @@ def _check_underscores(digits, file, line, col):
             raise StError(file, line, col, f"malformed number '{digits}': no leading, doubled or trailing '_'")
 
 
+def _check_real_point(digits, file, line, col):
+    """A REAL literal has a decimal point: MATIEC reads `1E5` as no literal at all."""
+    if "#" not in digits and "." not in digits and re.search(r"[eE]", digits):
+        with_point = re.sub(r"([eE])", r".0\1", digits, count=1)
+        raise StError(file, line, col, f"REAL literal '{digits}' without a decimal point: MATIEC refuses it, "
+                                       f"write {with_point}")
+
+
 def tokenize(text, file):
     """Tokens without comments; raises StError on what MATIEC's lexer would refuse."""
     tokens = []
@@ -85,8 +93,10 @@ def tokenize(text, file):
         if c == "{":
             raise StError(file, line, col, "pragma '{...}': MATIEC copies or rejects pragmas; none are allowed")
         if c in "'\"":
-            end = text.find(c, i + 1)
-            if end < 0:
+            end = i + 1  # '$' escapes the next character, a quote included ('it$'s')
+            while end < n and text[end] != c:
+                end += 2 if text[end] == "$" else 1
+            if end >= n:
                 raise StError(file, line, col, "string literal is not closed")
             tokens.append(_Token("string", text[i:end + 1], line, col))
             advance(end + 1)
@@ -103,6 +113,7 @@ def tokenize(text, file):
                         text, m.end())
                     if lit and (lit.group(0)[1:2].isdigit() or lit.group(0)[1:2] == "-"):
                         _check_underscores(lit.group(0)[1:].lstrip("-"), file, line, col)
+                        _check_real_point(lit.group(0)[1:].lstrip("-"), file, line, col)
                     elif lit and word.upper() != "BOOL":  # E_Mode#MODE_RUN (BOOL#TRUE is a typed literal)
                         raise StError(file, line, col, f"qualified enumeration value '{text[i:lit.end()]}': write "
                                                        "the value alone (E#A and E.A are not accepted by every tool)")
@@ -123,6 +134,7 @@ def tokenize(text, file):
             if re.match(r"[0-9_]+\.\.", text[i:]):  # range 0..7: the number stops before '..'
                 lit = re.match(r"[0-9_]+", text[i:]).group(0)
             _check_underscores(lit, file, line, col)
+            _check_real_point(lit, file, line, col)
             tokens.append(_Token("number", lit, line, col))
             advance(i + len(lit))
             continue
@@ -149,6 +161,11 @@ def check(text, file):
         if tok.kind == "punct" and tok.text == "**":
             raise StError(file, tok.line, tok.col, "'**' is not supported (blark has no exponent operator and "
                                                    "pacst no EXPT): multiply, or write a loop")
+        if tok.kind == "punct" and tok.text == "&":
+            raise StError(file, tok.line, tok.col, "'&' for AND: pacst's parser (blark) does not read it; write AND")
+        if tok.kind == "punct" and tok.text == ":=" and nxt is not None and nxt.text == "[":
+            raise StError(file, nxt.line, nxt.col, "array initial values are outside the portable subset: "
+                                                   "initialise in code")
         if up in _OPENS_BRANCH and nxt is not None and nxt.kind == "ident" and nxt_up in _ENDS_BRANCH:
             raise StError(file, nxt.line, nxt.col, f"empty {_OPENS_BRANCH[up]}: MATIEC needs at least one "
                                                    f"statement before {nxt_up}")

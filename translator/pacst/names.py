@@ -30,9 +30,26 @@ TYPE_NAMES = {"BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "
               "DT", "TIME_OF_DAY", "DATE_AND_TIME", "ANY", "ANY_INT", "ANY_REAL", "ANY_NUM", "ANY_BIT"}
 
 
+# MATIEC's lexer reserves the keywords of every IEC 61131-3 language and of configurations, not only
+# ST's, in every context of a POU (measured: ../shared/matiec-verdicts/, ident_*.st). Words it reads as
+# keywords only where a task or an IL operand may stand (PRIORITY, INTERVAL, SINGLE, Q, PT, IN...) stay free.
+IEC_KEYWORDS = {
+    "STEP", "END_STEP", "INITIAL_STEP", "TRANSITION", "END_TRANSITION", "ACTION", "END_ACTION", "FROM",
+    "CONFIGURATION", "END_CONFIGURATION", "RESOURCE", "END_RESOURCE", "TASK", "ON", "WITH", "PROGRAM",
+    "END_PROGRAM", "VAR_ACCESS", "VAR_CONFIG", "VAR_GLOBAL", "VAR_EXTERNAL", "READ_ONLY", "READ_WRITE", "AT",
+    "RETAIN", "NON_RETAIN", "CONSTANT", "CONTINUE", "EXIT", "R_EDGE", "F_EDGE", "REF", "REF_TO", "DREF",
+    "VOID", "ANY_DERIVED", "ANY_ELEMENTARY", "ANY_MAGNITUDE", "ANY_STRING", "ANY_DATE",
+    "SAFEBOOL", "SAFEBYTE", "SAFEWORD", "SAFEDWORD", "SAFELWORD", "SAFESINT", "SAFEINT", "SAFEDINT",
+    "SAFELINT", "SAFEUSINT", "SAFEUINT", "SAFEUDINT", "SAFEULINT", "SAFEREAL", "SAFELREAL", "SAFETIME",
+    "SAFEDATE", "SAFETOD", "SAFEDT", "SAFETIME_OF_DAY", "SAFEDATE_AND_TIME", "SAFESTRING", "SAFEWSTRING",
+}
+
+
 def reserved_reason(name):
     """Why `name` may not be declared, or None when it may."""
     up = name.upper()
+    if up in IEC_KEYWORDS:
+        return f"'{name}' is a keyword of IEC 61131-3 (SFC, IL or configurations) that MATIEC reserves"
     if up in C_KEYWORDS:
         return f"'{name}' is a C keyword in the generated code"
     if up in C_MACROS:

@@ -1,22 +1,11 @@
-// The IEC TIME type of the selected ST compiler's C interface (pacst's pacst_iec.h, or MATIEC's
-// iec_types_all.h when PAC_ST_MATIEC is defined), the declarations of the two C globals that
-// interface requires, and conversions between TIME and std::chrono.
+// The IEC TIME type of the generated code's C interface (pacst_iec.h, laid out as MATIEC's TIME), the
+// declarations of the two C globals that interface requires, and conversions between TIME and std::chrono.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 
-#ifdef PAC_ST_MATIEC
-extern "C" {
-#include "iec_types_all.h"
-// MATIEC declares these in iec_std_lib.h, which carries the whole function library; the clock only
-// needs the types, so the declarations are repeated here with the C linkage of the generated code.
-extern TIME __CURRENT_TIME;
-extern BOOL __DEBUG;
-}
-#else
-#include "pacst_iec.h"  // declares __CURRENT_TIME and __DEBUG itself
-#endif
+#include "pacst_iec.h"  // declares __CURRENT_TIME and __DEBUG
 
 namespace pac {
 
@@ -30,7 +19,6 @@ inline TIME ToIecTime(std::chrono::nanoseconds t) {
         --sec;
     }
     TIME out{};
-    // The member types differ between interfaces (long/long here, int64/int32 in newer MATIEC).
     out.tv_sec = static_cast<decltype(out.tv_sec)>(sec);
     out.tv_nsec = static_cast<decltype(out.tv_nsec)>(nsec);
     return out;

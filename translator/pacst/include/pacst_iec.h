@@ -31,9 +31,11 @@ typedef uint32_t DWORD;
 typedef uint64_t LWORD;
 typedef float REAL;
 typedef double LREAL;
+/* MATIEC's IEC_TIMESPEC member for member (long, long): the C++ side of a MATIEC build reads and writes
+ * TIME values that MATIEC's code uses, so the layout must be the same (checked, docs/translator.md). */
 typedef struct {
-    int64_t tv_sec;
-    int32_t tv_nsec;
+    long tv_sec;
+    long tv_nsec;
 } IEC_TIMESPEC;
 typedef IEC_TIMESPEC TIME;
 /* MATIEC's STRING: a length and room for 126 bytes. */
@@ -117,8 +119,8 @@ static inline long __pacst_index(long i, long low, long high, const char *where)
 
 static inline TIME __time_make(long sec, long nsec) {
     TIME t;
-    t.tv_sec = (int64_t)sec + nsec / 1000000000L;
-    t.tv_nsec = (int32_t)(nsec % 1000000000L);
+    t.tv_sec = sec + nsec / 1000000000L;
+    t.tv_nsec = nsec % 1000000000L;
     if (t.tv_nsec < 0) { t.tv_nsec += 1000000000L; t.tv_sec -= 1; }
     return t;
 }
