@@ -96,7 +96,7 @@ function(pac_st_library target)
     # their text did not change, so Ninja and Make recompile only what really changed.
     add_custom_command(
       OUTPUT "${out}/pacst.stamp"
-      BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" ${c_files} ${out_gvl_headers}
+      BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" "${out}/pacst_enum_names.h" ${c_files} ${out_gvl_headers}
       COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${PACST_CACHE_DIR}"
               --stamp "${out}/pacst.stamp" ${gvl_args} ${abs_sources}
       DEPENDS ${abs_sources} ${gvl_sources} ${PACST_TOOL_FILES}
@@ -123,7 +123,7 @@ function(pac_st_library target)
       VERBATIM)
     add_custom_command(
       OUTPUT "${decl}/pacst.stamp"
-      BYPRODUCTS "${decl}/POUS.h" "${decl}/pacst_iec.h" "${decl}/layout_probe.c" "${mat}/layout_check.c"
+      BYPRODUCTS "${decl}/POUS.h" "${decl}/pacst_iec.h" "${decl}/pacst_enum_names.h" "${decl}/layout_probe.c" "${mat}/layout_check.c"
                  ${decl_gvl_headers}
       COMMAND ${PACST_COMMAND} declare --out "${decl}" --check-out "${mat}" --cache "${PACST_CACHE_DIR}"
               --stamp "${decl}/pacst.stamp" ${gvl_args} ${abs_sources}

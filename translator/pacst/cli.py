@@ -8,7 +8,7 @@ import time
 
 from .compiler import Compiler
 from . import gvl, layout
-from .emit import Emitter, remove_outputs, write_outputs, _stem
+from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_file
 
@@ -50,7 +50,7 @@ def _tables(constants):
 
 
 def _build(args):
-    names = ["POUS.h", "pacst_iec.h"] + [_stem(f) + ".c" for f in args.files] + [_stem(f) + ".h" for f in args.gvl]
+    names = ["POUS.h", "pacst_iec.h", ENUM_NAMES] + [_stem(f) + ".c" for f in args.files] + [_stem(f) + ".h" for f in args.gvl]
     try:
         comp, program, constants = translate(args.files, args.cache, args.gvl)
     except StErrors as e:
@@ -72,7 +72,7 @@ def _build(args):
 
 
 def _declare(args):
-    names = ["POUS.h", "pacst_iec.h", "layout_probe.c"] + [_stem(f) + ".h" for f in args.gvl]
+    names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, "layout_probe.c"] + [_stem(f) + ".h" for f in args.gvl]
     check_name = os.path.join(args.check_out, "layout_check.c")
     try:
         comp, program, constants = translate(args.files, args.cache, args.gvl)
