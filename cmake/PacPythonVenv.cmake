@@ -1,14 +1,15 @@
 # pac_python_venv(<venv dir> REQUIREMENTS <file> [NO_DEPS <file>]): creates a Python venv and pip-installs
 # the pinned packages of REQUIREMENTS, then those of NO_DEPS without their dependencies. It runs at
 # configure time, once for each content of the two files.
+include_guard(GLOBAL)
+
 function(pac_python_venv venv)
   cmake_parse_arguments(ARG "" "REQUIREMENTS;NO_DEPS" "" ${ARGN})
-  set(key "")
-  foreach(req IN ITEMS ${ARG_REQUIREMENTS} ${ARG_NO_DEPS})
-    file(SHA256 "${req}" hash)
-    string(APPEND key "${hash}")
-  endforeach()
-  string(SHA256 key "${key}")
+  file(SHA256 "${ARG_REQUIREMENTS}" key)
+  if(ARG_NO_DEPS)
+    file(SHA256 "${ARG_NO_DEPS}" no_deps_hash)
+    string(SHA256 key "${key}${no_deps_hash}")
+  endif()
   set(stamp "${venv}/.requirements-${key}")
   if(EXISTS "${stamp}")
     return()
