@@ -54,13 +54,18 @@ def variables_of(where, code, item):
     spec = getattr(item, "spec", None) if init is None else getattr(init, "spec", None)
     if spec is None or getattr(init, "indirection", None) is not None:
         raise ExportError(where, f"declaration '{_plain(item)}' has no plain type the export can write")
-    try:
-        ref = parse_type(str(spec))
-    except ValueError as exc:
-        raise ExportError(where, f"{', '.join(names)}: {exc}") from None
+    ref = type_of(where, spec, ", ".join(names))
     initial = initial_text(where, code, getattr(init, "value", None) if init is not None else None)
     doc = doc_of(item)
     return [Variable(n, ref, initial, doc) for n in names]
+
+
+def type_of(where, spec, what):
+    """The type of a blark type specification, or the reason the export cannot write it."""
+    try:
+        return parse_type(str(spec))
+    except ValueError as exc:
+        raise ExportError(where, f"{what}: {exc}") from None
 
 
 def initial_text(where, code, value):
@@ -83,7 +88,7 @@ def data_type_shape(where, code, declaration):
     if kind == "EnumeratedTypeDeclaration":
         spec = declaration.init.spec
         values = tuple((str(v.name), None if v.value is None else str(v.value)) for v in spec.values)
-        base = None if spec.type_name is None else parse_type(str(spec.type_name))
+        base = None if spec.type_name is None else type_of(where, spec.type_name, declaration.name)
         return EnumShape(values, base), initial_text(where, code, declaration.init.value)
     if kind == "StructureTypeDeclaration":
         if declaration.extends is not None or declaration.indirection is not None:
@@ -91,16 +96,13 @@ def data_type_shape(where, code, declaration):
         members = tuple(v for item in declaration.declarations for v in variables_of(where, code, item))
         return StructShape(members), None
     if kind == "StringTypeDeclaration":
-        return AliasShape(parse_type(str(declaration.string_type))), initial_text(where, code, declaration.value)
+        ref = type_of(where, declaration.string_type, declaration.name)
+        return AliasShape(ref), initial_text(where, code, declaration.value)
     if kind in ("ArrayTypeDeclaration", "SimpleTypeDeclaration"):
         init = declaration.init
         if getattr(declaration, "extends", None) is not None or getattr(init, "indirection", None):
             raise ExportError(where, f"{declaration.name}: EXTENDS or a pointer is not exported")
-        try:
-            ref = parse_type(str(init.spec))
-        except ValueError as exc:
-            raise ExportError(where, str(exc)) from None
-        return AliasShape(ref), initial_text(where, code, getattr(init, "value", None))
+        return AliasShape(type_of(where, init.spec, declaration.name)), initial_text(where, code, init.value)
     raise ExportError(where, f"{kind} is not a type this export writes (enumeration, array, structure "
                              "or alias)")
 

@@ -3,12 +3,11 @@ from dataclasses import dataclass
 from typing import List
 
 from .blarkparse import ParseFailure, source_items
-from .declarations import data_type_shape, var_blocks
+from .declarations import data_type_shape, type_of, var_blocks
 from .errors import ExportError
 from .metadata import LibraryInfo
 from .model import DataType, GlobalList, Pou
 from .splitting import read_source
-from .types import parse_type
 
 # A global list is used as GVL_PAC.PAC_CMD_STOP: the FBs' local constants of the same names
 # (docs/constants.md) then never meet the list's (docs/import.md).
@@ -32,9 +31,9 @@ def load_library(info, sources, global_lists, cache):
     names = {}
     for path in [*sources, *global_lists]:
         source = read_source(path)
-        other = names.setdefault(source.name.upper(), path)
-        if other != path:
-            raise ExportError(path, f"{source.name} is declared in {other} too")
+        if source.name.upper() in names:
+            raise ExportError(path, f"{source.name} is declared in {names[source.name.upper()]} too")
+        names[source.name.upper()] = path
         items = source_items(source.kind, source.name, source.declaration, source.body)
         try:
             parsed = [cache.parse_item(item, path) for item in items]
@@ -61,9 +60,4 @@ def _single(path, items):
 
 def _return_type(path, node):
     ret = getattr(node, "return_type", None)
-    if ret is None:
-        return None
-    try:
-        return parse_type(str(ret))
-    except ValueError as exc:
-        raise ExportError(path, f"return type: {exc}") from None
+    return None if ret is None else type_of(path, ret, "return type")

@@ -102,6 +102,7 @@ class UnusedShapes(unittest.TestCase):
         cls.directory = tempfile.TemporaryDirectory()
         paths = _write_sources(cls.directory.name)
         cls.cache = ParseCache(support.config()["cache"])
+        cls.image = paths["T_Image.st"]
         gvl = paths.pop("GVL_Test.st")
         cls.library = load_library(INFO, list(paths.values()), [gvl], cls.cache)
         cls.out = os.path.join(cls.directory.name, "out")
@@ -135,6 +136,10 @@ class UnusedShapes(unittest.TestCase):
         root = etree.fromstring(self.data)
         values = {v.get("value") for v in root.iter("{*}simpleValue")}
         self.assertLessEqual({"T#1S", "-5", "'x'", "VAL_TWO", "'abc'", "3", "10"}, values)
+
+    def test_an_object_named_twice_is_refused(self):
+        with self.assertRaises(ExportError):
+            load_library(INFO, [self.image, self.image], [], self.cache)
 
     def test_an_initial_array_is_refused(self):
         path = os.path.join(self.directory.name, "FB_Init.st")
