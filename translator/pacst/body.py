@@ -173,17 +173,19 @@ class BodyCompiler:
 
     def _s_WhileStatement(self, node, ind, d):
         out = [f"{ind}while ({self.cond(node.expression)}) {{"]
-        self.loops.append("while")
-        out += self.block(self._stmts(node.statements), d + 1, node)
-        self.loops.pop()
+        out += self._loop_body(node, "while", d)
         return out + [f"{ind}}}"]
 
     def _s_RepeatStatement(self, node, ind, d):
-        out = [f"{ind}do {{"]
-        self.loops.append("repeat")
-        out += self.block(self._stmts(node.statements), d + 1, node)
-        self.loops.pop()
+        out = [f"{ind}do {{"] + self._loop_body(node, "repeat", d)
         return out + [f"{ind}}} while (!{self.cond(node.expression)});"]
+
+    def _loop_body(self, node, kind, d):
+        """The loop's statements, inside which EXIT and CONTINUE are allowed."""
+        self.loops.append(kind)
+        lines = self.block(self._stmts(node.statements), d + 1, node)
+        self.loops.pop()
+        return lines
 
     def _s_ForStatement(self, node, ind, d):
         raise self.err(node, "MATIEC miscompiles FOR (FOR I := 5 TO 5 runs zero times there, and the variable "
@@ -318,19 +320,11 @@ class BodyCompiler:
         for p in node.parameters:
             if p.name is None:
                 raise self.err(p, "function block calls must be formal: name every argument (Pin := value)")
+            fv = self.ex.formal_pin(p, fbt, given)
             pname = _name(p.name.name)
-            fv = fbt.var(pname)
-            if fv is None or fv.section not in ("input", "output", "inout"):
-                raise self.err(p, f"{fbt.name} has no input, output or in-out '{pname}'")
-            if fv.cname in given:
-                raise self.err(p, f"'{pname}' is given twice")
             given.add(fv.cname)
             member = f"{inst}.{fv.cname}"
             if _cls(p) == "OutputParameterAssignment":
-                if fv.section != "output":
-                    raise self.err(p, f"'{pname}' is not an output: use :=")
-                if p.inverted:
-                    raise self.err(p, "inverted output assignment is outside the portable subset")
                 target = self.ref(p.value)
                 if not target.writable:
                     raise self.err(p.value, f"'{target.var.name}' cannot be written: {target.why_not}")
@@ -338,8 +332,6 @@ class BodyCompiler:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
                 post.append(ind + target.write(f"{member}.value"))
-            elif fv.section == "output":
-                raise self.err(p, f"'{pname}' is an output: use =>")
             elif fv.section == "input":
                 te = self.ex.expr(p.value, fv.type)
                 pre.append(f"{ind}__PACST_SETP({member}, , {self.ex.coerce(te, fv.type, p.value, 'argument')});")

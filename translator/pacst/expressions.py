@@ -414,6 +414,24 @@ class ExprCompiler:
             raise self.err(node, f"{fn} on {t.name}")
         return TE(t, f"__{fn.lower()}_{t.cname}({', '.join(codes)})")
 
+    def formal_pin(self, p, callee, given):
+        """The variable of `callee` (a POU or FB type) that the formal argument `p` names; `given` holds
+        the C names of the pins named before it."""
+        pname = _name(p.name.name)
+        v = callee.var(pname)
+        if v is None or v.section not in ("input", "output", "inout"):
+            raise self.err(p, f"{callee.name} has no input, output or in-out '{pname}'")
+        if v.cname in given:
+            raise self.err(p, f"'{pname}' is given twice")
+        if _cls(p) == "OutputParameterAssignment":
+            if v.section != "output":
+                raise self.err(p, f"'{pname}' is not an output: use :=")
+            if p.inverted:
+                raise self.err(p, "inverted output assignment is outside the portable subset")
+        elif v.section == "output":
+            raise self.err(p, f"'{pname}' is an output: use =>")
+        return v
+
     def _user_call(self, node, pou):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
@@ -429,20 +447,7 @@ class ExprCompiler:
                 given[v.cname] = p.value
         else:
             for p in node.parameters:
-                pname = _name(p.name.name)
-                v = pou.var(pname)
-                if v is None or v.section not in ("input", "output", "inout"):
-                    raise self.err(p, f"{pou.name} has no input, output or in-out '{pname}'")
-                if v.cname in given:
-                    raise self.err(p, f"'{pname}' is given twice")
-                if _cls(p) == "OutputParameterAssignment":
-                    if v.section != "output":
-                        raise self.err(p, f"'{pname}' is not an output: use :=")
-                    if p.inverted:
-                        raise self.err(p, "inverted output assignment is outside the portable subset")
-                elif v.section == "output":
-                    raise self.err(p, f"'{pname}' is an output: use =>")
-                given[v.cname] = p.value if _cls(p) != "OutputParameterAssignment" else p.value
+                given[self.formal_pin(p, pou, given).cname] = p.value
         args = []
         for v in interface:
             arg = given.get(v.cname)
