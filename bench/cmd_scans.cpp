@@ -5,7 +5,7 @@
 
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
@@ -16,8 +16,8 @@ struct Row {
     int aboveMinimum = 0;
 };
 
-Row Measure(const pac::test::PlcBenchTiming& timing, int commands) {
-    pac::test::PacPlcBench plc(timing);
+Row Measure(const pac::PlcBenchTiming& timing, int commands) {
+    pac::PacPlcBench plc(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
     plc.Call(cmd);
     plc.Start();
@@ -52,7 +52,7 @@ int main() {
     for (int latency = 0; latency <= 3; ++latency) {
         for (int plcMs : {1, 2, 5, 10}) {
             for (int pacMs : {1, 3, 10}) {
-                pac::test::PlcBenchTiming timing;
+                pac::PlcBenchTiming timing;
                 timing.plcCycle = milliseconds(plcMs);
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;

@@ -1,7 +1,6 @@
 #include "cli.hpp"
 
 #include <exception>
-#include <optional>
 
 #include "gvl_names.hpp"
 #include "scenario_loader.hpp"
@@ -15,11 +14,11 @@ namespace {
 constexpr const char* kProgram = "pac_scenario";
 
 void Usage(std::ostream& out) {
-    out << "usage: " << kProgram << " [--check] [--gvl FILE] SCENARIO.json\n"
-        << "  Runs the scenario's commands through FB_PAC_Cmd against the simulated PA-CONTROL and prints\n"
-        << "  a scan-by-scan timeline of the handshake (format: docs/scenario.md).\n"
-        << "  --check     only check the scenario, do not run it\n"
-        << "  --gvl FILE  read command, status and error names from FILE (default " << PAC_GVL_FILE << ")\n"
+    out << "usage: " << kProgram << " [--check] SCENARIO.json\n"
+        << "  Runs the scenario's commands, mode requests and axis jobs through FB_PAC_Cmd, FB_PAC_Ctrl and\n"
+        << "  FB_PAC_Axis against the simulated PA-CONTROL and prints a scan-by-scan timeline of the\n"
+        << "  modules' images and the FBs' pins (format: docs/scenario.md).\n"
+        << "  --check  only check the scenario, do not run it\n"
         << "exit codes: 0 all expectations met, 1 an expectation failed, 2 invalid scenario or usage,\n"
         << "            3 internal error\n";
 }
@@ -28,18 +27,14 @@ void Usage(std::ostream& out) {
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     bool checkOnly = false;
-    std::string gvlFile = PAC_GVL_FILE;
     std::string scenarioFile;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
+    for (const std::string& arg : args) {
         if (arg == "-h" || arg == "--help") {
             Usage(out);
             return kExitOk;
         }
         if (arg == "--check") {
             checkOnly = true;
-        } else if (arg == "--gvl" && i + 1 < args.size()) {
-            gvlFile = args[++i];
         } else if (arg.size() > 1 && arg[0] == '-') {
             err << kProgram << ": unknown option " << arg << "\n";
             Usage(err);
@@ -56,16 +51,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         return kExitRefused;
     }
 
-    std::optional<GvlNames> names;
-    try {
-        names.emplace(gvlFile);
-    } catch (const std::exception& e) {
-        err << kProgram << ": " << e.what() << " (the names of GVL_PAC)\n";
-        return kExitRefused;
-    }
+    const GvlNames names;
     Scenario scenario;
     try {
-        scenario = ScenarioLoader(*names).FromFile(scenarioFile);
+        scenario = ScenarioLoader(names).FromFile(scenarioFile);
     } catch (const ScenarioError& e) {
         err << kProgram << ": invalid scenario " << scenarioFile << ": " << e.what() << "\n";
         return kExitRefused;
@@ -79,7 +68,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         return kExitOk;
     }
     try {
-        TimelinePrinter printer(out, *names);
+        TimelinePrinter printer(out, names);
         const RunReport report = ScenarioRunner(scenario).Run(printer);
         return report.Passed() ? kExitOk : kExitExpectationFailed;
     } catch (const ScenarioError& e) {

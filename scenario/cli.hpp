@@ -1,7 +1,7 @@
 // The command line of pac_scenario, as a function so tests can run it in-process:
-//   pac_scenario [--check] [--gvl FILE] SCENARIO.json
+//   pac_scenario [--check] SCENARIO.json
 // Exit codes: 0 every expectation met (or --check: valid), 1 an expectation failed, 2 the scenario
-// was refused (or bad usage, or GVL_PAC unreadable), 3 an internal error.
+// was refused (or bad usage), 3 an internal error.
 #pragma once
 
 #include <ostream>

@@ -1,5 +1,5 @@
-// pac_scenario: runs a scenario file of commands against the simulated PA-CONTROL and prints a
-// scan-by-scan timeline of FB_PAC_Cmd's handshake (docs/scenario.md).
+// pac_scenario: runs a scenario file of commands, mode requests and axis jobs against the simulated
+// PA-CONTROL and prints a scan-by-scan timeline of the library's FBs at work (docs/scenario.md).
 #include <iostream>
 #include <string>
 #include <vector>

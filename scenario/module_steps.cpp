@@ -1,8 +1,9 @@
 #include "module_steps.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "pac/enum_names.hpp"
 
 namespace pac::scenario {
 
@@ -13,35 +14,22 @@ using json::Json;
 using json::Quoted;
 
 // One of `names`, refused with the list otherwise.
-std::string Name(const Json& value, const std::string& path, const std::vector<std::string>& names,
-                 const char* what) {
+std::string Name(const Json& value, const std::string& path, const pac::EnumNames& names, const char* what) {
     const std::string text = json::String(value, path);
-    if (IndexOf(names, text) < 0) json::Refuse(path, "unknown " + std::string(what) + " " + Quoted(text) + " (one of " + json::ListKeys(names) + ")");
+    if (!names.Contains(text)) {
+        json::Refuse(path, "unknown " + std::string(what) + " " + Quoted(text) + " (one of " + json::ListKeys(names.All()) + ")");
+    }
     return text;
 }
 
-
 }  // namespace
-
-const std::vector<std::string> kCtrlRequestNames = {"PAC_REQ_NONE",   "PAC_REQ_START_ONLINE", "PAC_REQ_START_AUTOMATIC",
-                                                     "PAC_REQ_STOP",   "PAC_REQ_CANCEL",       "PAC_REQ_RESET_ERROR"};
-const std::vector<std::string> kAxisCommandNames = {
-    "PAC_AX_NONE",        "PAC_AX_HOME",        "PAC_AX_MOVE_ABSOLUTE",   "PAC_AX_MOVE_RELATIVE",
-    "PAC_AX_MOVE_TO_MAX", "PAC_AX_MOVE_TO_MIN", "PAC_AX_SET_REFERENCED",  "PAC_AX_SET_POSITION",
-    "PAC_AX_CLEAR_OFFSET", "PAC_AX_CLEAR_DISPLACED"};
-const std::vector<std::string> kMoveConditionNames = {"PAC_COND_NONE", "PAC_COND_WHILE_INPUT_1", "PAC_COND_WHILE_INPUT_0"};
-
-int IndexOf(const std::vector<std::string>& names, const std::string& name) {
-    const auto it = std::find(names.begin(), names.end(), name);
-    return it == names.end() ? -1 : static_cast<int>(it - names.begin());
-}
 
 CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
     if (!modules_.ctrl) {
         json::Refuse(step.PathOf("ctrl"), "a ctrl step needs the CTRL interface: set \"modules\": {\"ctrl\": true}");
     }
     CtrlStep ctrl;
-    ctrl.request = Name(step.Get("ctrl"), step.PathOf("ctrl"), kCtrlRequestNames, "request");
+    ctrl.request = Name(step.Get("ctrl"), step.PathOf("ctrl"), pac::EnumNames(E_PAC_CTRLREQUEST__NAMES), "request");
     if (const Json* integer = step.Find("integer_mode")) ctrl.integerMode = json::Bool(*integer, step.PathOf("integer_mode"));
     ctrl.timeoutMs = json::Duration(step, "timeout_ms", ctrl.timeoutMs);
     if (const Json* value = step.Find("expect")) {
@@ -87,7 +75,7 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     job.axis = static_cast<int>(json::Integer(object.Get("axis"), object.PathOf("axis"), 1, modules_.axes));
     if (const Json* enable = object.Find("enable")) job.enable = json::Bool(*enable, object.PathOf("enable"));
     if (const Json* command = object.Find("command")) {
-        job.command = Name(*command, object.PathOf("command"), kAxisCommandNames, "axis command");
+        job.command = Name(*command, object.PathOf("command"), pac::EnumNames(E_PAC_AXISCOMMAND__NAMES), "axis command");
     }
     if (!job.enable && !job.HasJob()) {
         json::Refuse(path, "missing key: an axis job needs \"enable\", \"command\" or both");
@@ -105,7 +93,7 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
         job.acceleration = static_cast<int>(json::Integer(*a, object.PathOf("acceleration"), 0, 65535));
     }
     if (const Json* c = object.Find("condition")) {
-        job.condition = Name(*c, object.PathOf("condition"), kMoveConditionNames, "condition");
+        job.condition = Name(*c, object.PathOf("condition"), pac::EnumNames(E_PAC_MOVECONDITION__NAMES), "condition");
     }
     job.timeoutMs = json::Duration(object, "timeout_ms", job.timeoutMs);
     job.maxMs = json::Duration(object, "max_ms", job.maxMs);

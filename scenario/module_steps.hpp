@@ -1,6 +1,8 @@
 // Reads the steps of the CTRL interface and the axis modules of a scenario (docs/scenario.md):
 //   {"ctrl": "PAC_REQ_START_ONLINE", "integer_mode": false, "timeout_ms": 10000, "expect": {...}}
 //   {"axes": [{"axis": 1, "enable": true, "command": "PAC_AX_HOME", "expect": {...}}, ...]}
+// Requests, axis commands and conditions are the names a PLC programmer writes in ST (E_PAC_CtrlRequest,
+// E_PAC_AxisCommand, E_PAC_MoveCondition), read from the enumerations themselves (pac::EnumNames).
 // Every refusal is a ScenarioError naming the JSONPath and the reason, like the rest of the loader.
 #pragma once
 
@@ -12,14 +14,6 @@
 #include "scenario.hpp"
 
 namespace pac::scenario {
-
-// The names a PLC programmer writes in ST, in their declaration order (st/types).
-extern const std::vector<std::string> kCtrlRequestNames;   // E_PAC_CtrlRequest
-extern const std::vector<std::string> kAxisCommandNames;   // E_PAC_AxisCommand
-extern const std::vector<std::string> kMoveConditionNames;  // E_PAC_MoveCondition
-
-// The position of `name` in `names`, or -1.
-int IndexOf(const std::vector<std::string>& names, const std::string& name);
 
 class ModuleStepReader {
 public:

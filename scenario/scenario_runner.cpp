@@ -1,16 +1,17 @@
 #include "scenario_runner.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "expectations.hpp"
-#include "module_steps.hpp"
 #include "scenario_error.hpp"
+#include "pac/enum_names.hpp"
 #include "pac/fb_instance.hpp"
+#include "pac/pac_plc_bench.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
 
 namespace pac::scenario {
 
@@ -27,29 +28,12 @@ TIME ToTime(int ms) {
 
 pac::sim::ModuleLayout Layout(const Modules& modules) { return pac::sim::ModuleLayout{modules.ctrl, modules.axes}; }
 
-// The C enumerators of the ST enums, in their declaration order (module_steps.hpp has the names).
-E_PAC_CTRLREQUEST CtrlRequest(const std::string& name) {
-    static const E_PAC_CTRLREQUEST values[] = {
-        E_PAC_CTRLREQUEST__PAC_REQ_NONE,   E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC,
-        E_PAC_CTRLREQUEST__PAC_REQ_STOP,   E_PAC_CTRLREQUEST__PAC_REQ_CANCEL,       E_PAC_CTRLREQUEST__PAC_REQ_RESET_ERROR};
-    return values[IndexOf(kCtrlRequestNames, name)];
-}
-
-E_PAC_AXISCOMMAND AxisCommand(const std::string& name) {
-    static const E_PAC_AXISCOMMAND values[] = {
-        E_PAC_AXISCOMMAND__PAC_AX_NONE,          E_PAC_AXISCOMMAND__PAC_AX_HOME,
-        E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE,
-        E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX,   E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN,
-        E_PAC_AXISCOMMAND__PAC_AX_SET_REFERENCED, E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION,
-        E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET,  E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED};
-    return values[IndexOf(kAxisCommandNames, name)];
-}
-
-E_PAC_MOVECONDITION MoveCondition(const std::string& name) {
-    static const E_PAC_MOVECONDITION values[] = {E_PAC_MOVECONDITION__PAC_COND_NONE,
-                                                 E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
-                                                 E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0};
-    return values[IndexOf(kMoveConditionNames, name)];
+// The C enumerator of an ST enum's value name; the loader has refused every other name.
+template <class Enum, std::size_t N>
+Enum Enumerator(const char* const (&names)[N], const std::string& name) {
+    const auto value = pac::EnumNames(names).Find<Enum>(name);
+    if (!value) throw std::logic_error("not an enumerator: " + name);
+    return *value;
 }
 
 pac::sim::PaControlConfig ControllerConfig(const ControllerSetup& setup) {
@@ -58,7 +42,7 @@ pac::sim::PaControlConfig ControllerConfig(const ControllerSetup& setup) {
     return config;
 }
 
-pac::test::PlcBenchTiming BenchTiming(const Timing& t) {
+pac::PlcBenchTiming BenchTiming(const Timing& t) {
     return {milliseconds(t.plcCycleMs), milliseconds(t.pacCycleMs), t.latencyCycles, milliseconds(t.jitterMs),
             t.seed, milliseconds(t.bootMs)};
 }
@@ -196,7 +180,7 @@ private:
     }
 
     CommandOutcome RunCtrl(const CtrlStep& step) {
-        ctrl_->REQUEST.value = CtrlRequest(step.request);
+        ctrl_->REQUEST.value = Enumerator<E_PAC_CTRLREQUEST>(E_PAC_CTRLREQUEST__NAMES, step.request);
         ctrl_->INTEGERMODE.value = step.integerMode ? TRUE : FALSE;
         ctrl_->TIMEOUT.value = ToTime(step.timeoutMs);
         return RunToFinalOutput(ctrl_, MaxScans(step.timeoutMs), [](CommandOutcome&) {});
@@ -237,11 +221,11 @@ private:
             auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
             if (job.enable) fb->ENABLE.value = *job.enable ? TRUE : FALSE;
             if (!job.HasJob()) continue;
-            fb->COMMAND.value = AxisCommand(job.command);
+            fb->COMMAND.value = Enumerator<E_PAC_AXISCOMMAND>(E_PAC_AXISCOMMAND__NAMES, job.command);
             fb->POSITION.value = static_cast<float>(job.position);
             fb->VELOCITY.value = static_cast<UINT>(job.velocity);
             fb->ACCELERATION.value = static_cast<UINT>(job.acceleration);
-            fb->CONDITION.value = MoveCondition(job.condition);
+            fb->CONDITION.value = Enumerator<E_PAC_MOVECONDITION>(E_PAC_MOVECONDITION__NAMES, job.condition);
             fb->TIMEOUT.value = ToTime(job.timeoutMs);
             fb->EXECUTE.value = TRUE;
         }
@@ -323,7 +307,7 @@ private:
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
-    pac::test::PacPlcBench plc_;
+    pac::PacPlcBench plc_;
 };
 
 }  // namespace

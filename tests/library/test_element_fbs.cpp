@@ -17,14 +17,14 @@
 #include "pac/st_program.hpp"
 #include "real_bits.hpp"
 #include "pac/sim/cmd_frame.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
 using pac::sim::MasterFrame;
-using pac::test::PacPlcBench;
-using pac::test::PlcBenchTiming;
+using pac::PacPlcBench;
+using pac::PlcBenchTiming;
 
 static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float>::is_iec559,
               "REAL must be an IEEE-754 single");

@@ -26,7 +26,7 @@
 #include "pac/sim/axis_module.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 #include "real_bits.hpp"
 
 namespace {
@@ -261,7 +261,7 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     return config;
 }
 
-pac::test::PlcBenchTiming BenchTiming(const BenchOptions& o) {
+pac::PlcBenchTiming BenchTiming(const BenchOptions& o) {
     return {milliseconds(o.timing.plcMs), milliseconds(o.timing.pacMs), o.timing.latency, o.jitter, o.seed, 0ns};
 }
 
@@ -312,7 +312,7 @@ public:
     pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::sim::PaControl& Pac() { return plc_.Controller(); }
     pac::sim::ServoAxis& Motion(int k) { return plc_.Controller().Axes().Motion(k); }
-    pac::test::PacPlcBench& Plc() { return plc_; }
+    pac::PacPlcBench& Plc() { return plc_; }
     nanoseconds Now() const { return plc_.Now(); }
     std::int64_t ScanCount() { return plc_.Task().ScanCount(); }
     const AxisTrace& Trace(int k) const { return traces_.at(static_cast<std::size_t>(k - 1)); }
@@ -408,7 +408,7 @@ private:
 
     BenchOptions options_;
     pac::sim::ModuleLayout layout_;
-    pac::test::PacPlcBench plc_;
+    pac::PacPlcBench plc_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<AxisFb>> axes_;  // never moved: the PLC's programs hold references
     std::vector<AxisTrace> traces_;

@@ -11,7 +11,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/sim/image8.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
@@ -26,7 +26,7 @@ struct Step {
 };
 
 TEST(FbPacCmdInterbus, ComplexExampleByteForByte) {
-    pac::test::PacPlcBench plc({1ms, 10ms, 1});
+    pac::PacPlcBench plc({1ms, 10ms, 1});
     plc.Controller().Io().inputs.Set(5, true);
     plc.Controller().Io().intRegisters.SetInt(2, 12345678);
     plc.Controller().Io().realRegisters.SetReal(1, 640.0F);

@@ -13,7 +13,7 @@
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
@@ -72,7 +72,7 @@ public:
     nanoseconds Now() const { return plc_.Now(); }
 
 private:
-    pac::test::PacPlcBench plc_;
+    pac::PacPlcBench plc_;
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     nanoseconds edgeTime_{0};
     Final final_;

@@ -22,7 +22,7 @@
 #include "pac/iec_time.hpp"
 #include "pac/scan_test.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
@@ -141,8 +141,8 @@ std::vector<BusTiming> AllTimings() {
     return all;
 }
 
-pac::test::PlcBenchTiming BenchTiming(const BusTiming& t, nanoseconds bootTime) {
-    pac::test::PlcBenchTiming timing;
+pac::PlcBenchTiming BenchTiming(const BusTiming& t, nanoseconds bootTime) {
+    pac::PlcBenchTiming timing;
     timing.plcCycle = milliseconds(t.plcMs);
     timing.pacCycle = milliseconds(t.pacMs);
     timing.latencyCycles = t.latency;
@@ -173,7 +173,7 @@ std::ostream& operator<<(std::ostream& out, const ScanWindow& w) {
 // jitter both ways; without jitter the window is one exact scan.
 class ProtocolWindow {
 public:
-    explicit ProtocolWindow(const pac::test::PlcBenchTiming& t) : t_(t) {}
+    explicit ProtocolWindow(const pac::PlcBenchTiming& t) : t_(t) {}
 
     // A request whose bit goes out in the scan at `edge`: the controller's first cycle that reads it
     // acts on it, `extraCycles` more cycles pass its transitional statuses (30 before 31, 10 before 11,
@@ -216,7 +216,7 @@ private:
         return static_cast<int>((scan - from) / t_.plcCycle);
     }
 
-    pac::test::PlcBenchTiming t_;
+    pac::PlcBenchTiming t_;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -475,7 +475,7 @@ public:
 
 private:
     BusTiming timing_;
-    pac::test::PacPlcBench bench_;
+    pac::PacPlcBench bench_;
     ProtocolWindow window_;
     ScanRules rules_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);

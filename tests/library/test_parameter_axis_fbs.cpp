@@ -22,7 +22,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
+#include "pac/pac_plc_bench.hpp"
 
 namespace {
 
@@ -217,7 +217,7 @@ private:
         CheckExclusive("SetAxisAcceleration", setAccel);
     }
 
-    pac::test::PacPlcBench plc_;
+    pac::PacPlcBench plc_;
     nanoseconds edgeTime_{0};
 };
 

@@ -1,10 +1,12 @@
 // pac_scenario's command line: exit code 0 when every expectation is met, 1 when one failed, 2 for a
 // refused scenario (the reason on stderr) or bad usage. The process itself is run as well as RunCli,
-// so the exit codes are the ones a shell or CI sees.
+// so the exit codes are the ones a shell or CI sees, and a copy of it runs away from the source and
+// build trees, which it does not need.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -40,18 +42,40 @@ struct Process {
     std::string err;
 };
 
-// Runs the pac_scenario binary with `args` (shell words, already quoted where needed).
-Process RunBinary(const std::string& args) {
+std::string Quoted(const std::string& word) { return "'" + word + "'"; }
+
+// Runs `command` in a shell (words already quoted where needed) and keeps its output.
+Process RunShell(const std::string& command) {
     const std::string out = testing::TempDir() + "/" + TestName() + ".out";
     const std::string err = testing::TempDir() + "/" + TestName() + ".err";
-    const std::string command = std::string("'") + PAC_SCENARIO_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
-    const int status = std::system(command.c_str());
+    const int status = std::system((command + " >" + Quoted(out) + " 2>" + Quoted(err)).c_str());
     Process result;
     if (status != -1 && WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
     result.out = ReadFile(out);
     result.err = ReadFile(err);
     return result;
 }
+
+// Runs the pac_scenario binary with `args` (shell words, already quoted where needed).
+Process RunBinary(const std::string& args) { return RunShell(Quoted(PAC_SCENARIO_BINARY) + " " + args); }
+
+// A folder of the test's own holding a copy of the pac_scenario binary and of the demo.
+std::string CopyBinaryAndDemo() {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(testing::TempDir()) / (TestName() + "-copy");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(PAC_SCENARIO_BINARY, dir / "pac_scenario");
+    fs::copy_file(kDemo, dir / "demo.json");
+    return dir.string();
+}
+
+bool IsWithin(const std::filesystem::path& path, const std::filesystem::path& folder) {
+    const auto relative = std::filesystem::weakly_canonical(path).lexically_relative(std::filesystem::weakly_canonical(folder));
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+const std::string kDemoResult = "Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met";
 
 struct Cli {
     explicit Cli(const std::vector<std::string>& args) { exitCode = RunCli(args, out, err); }
@@ -64,7 +88,39 @@ TEST(ScenarioCli, DemoExitsZero) {
     const Process run = RunBinary("'" + kDemo + "'");
     EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
     EXPECT_EQ(run.err, "");
-    EXPECT_NE(run.out.find("Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(kDemoResult), std::string::npos) << run.out;
+}
+
+TEST(ScenarioCli, ACopyInAnotherFolderRunsTheDemo) {
+    const std::string dir = CopyBinaryAndDemo();
+    const Process run = RunShell("cd " + Quoted(dir) + " && ./pac_scenario demo.json");
+    EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_NE(run.out.find(kDemoResult), std::string::npos) << run.out;
+}
+
+// The copy again, with the source and build trees hidden under empty file systems in a mount namespace
+// of its own (unshare, where the kernel lets an unprivileged user have one): it reads no file there.
+TEST(ScenarioCli, ACopyRunsWithTheSourceAndBuildTreesHidden) {
+    const std::string dir = CopyBinaryAndDemo();
+    std::string hidden = Quoted(PAC_SOURCE_DIR);
+    if (!IsWithin(PAC_BINARY_DIR, PAC_SOURCE_DIR)) hidden += " " + Quoted(PAC_BINARY_DIR);
+    if (IsWithin(dir, PAC_SOURCE_DIR) || IsWithin(dir, PAC_BINARY_DIR)) {
+        GTEST_SKIP() << "the temporary folder " << dir << " lies in a tree the test hides";
+    }
+    // sh -c SCRIPT $0 TREE...: the trees are hidden, then SCRIPT's tail runs on $0.
+    const auto inSandbox = [&](const std::string& tail, const std::string& zero) {
+        return RunShell("unshare --user --map-root-user --mount sh -c "
+                        "'for tree; do mount -t tmpfs tmpfs \"$tree\" || exit 99; done; " +
+                        tail + "' " + Quoted(zero) + " " + hidden);
+    };
+    const Process probe = inSandbox("test ! -e \"$0\"", PAC_SCENARIO_BINARY);
+    if (probe.exitCode != 0) GTEST_SKIP() << "no mount namespace to hide the trees in: " << probe.err;
+
+    const Process run = inSandbox("cd \"$0\" && exec ./pac_scenario demo.json", dir);
+    EXPECT_EQ(run.exitCode, 0) << run.out << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_NE(run.out.find(kDemoResult), std::string::npos) << run.out;
 }
 
 TEST(ScenarioCli, FailedExpectationExitsOne) {
@@ -112,10 +168,14 @@ TEST(ScenarioCli, UsageErrorsExitTwo) {
     EXPECT_EQ(RunBinary("").exitCode, 2);
     const Cli none({});
     EXPECT_EQ(none.exitCode, pac::scenario::kExitRefused);
-    EXPECT_NE(none.err.str().find("usage: pac_scenario [--check] [--gvl FILE] SCENARIO.json"), std::string::npos);
+    EXPECT_NE(none.err.str().find("usage: pac_scenario [--check] SCENARIO.json"), std::string::npos);
     const Cli unknown({"--fast", kDemo});
     EXPECT_EQ(unknown.exitCode, pac::scenario::kExitRefused);
     EXPECT_NE(unknown.err.str().find("pac_scenario: unknown option --fast"), std::string::npos);
+    // The names of GVL_PAC are compiled in: there is no other list to read.
+    const Cli gvl({"--gvl", "GVL_PAC.st", kDemo});
+    EXPECT_EQ(gvl.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(gvl.err.str().find("pac_scenario: unknown option --gvl"), std::string::npos);
     const Cli two({kDemo, kDemo});
     EXPECT_EQ(two.exitCode, pac::scenario::kExitRefused);
     EXPECT_NE(two.err.str().find("one scenario file at a time"), std::string::npos);
@@ -124,14 +184,11 @@ TEST(ScenarioCli, UsageErrorsExitTwo) {
     EXPECT_NE(help.out.str().find("exit codes: 0 all expectations met"), std::string::npos);
 }
 
-TEST(ScenarioCli, MissingFilesExitTwo) {
+TEST(ScenarioCli, AMissingScenarioFileExitsTwo) {
     const Cli scenario({testing::TempDir() + "/missing.json"});
     EXPECT_EQ(scenario.exitCode, pac::scenario::kExitRefused);
     EXPECT_EQ(scenario.err.str(),
               "pac_scenario: invalid scenario " + testing::TempDir() + "/missing.json: cannot read the file\n");
-    const Cli gvl({"--gvl", testing::TempDir() + "/missing.st", kDemo});
-    EXPECT_EQ(gvl.exitCode, pac::scenario::kExitRefused);
-    EXPECT_EQ(gvl.err.str(), "pac_scenario: cannot read " + testing::TempDir() + "/missing.st (the names of GVL_PAC)\n");
 }
 
 }  // namespace

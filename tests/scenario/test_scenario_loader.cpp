@@ -23,7 +23,7 @@ using pac::scenario::ScenarioLoader;
 using pac::scenario::WaitStep;
 
 const pac::scenario::GvlNames& Names() {
-    static const pac::scenario::GvlNames names(PAC_GVL_FILE);
+    static const pac::scenario::GvlNames names;
     return names;
 }
 

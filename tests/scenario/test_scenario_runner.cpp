@@ -20,7 +20,7 @@ using pac::scenario::ScenarioLoader;
 using pac::scenario::ScenarioRunner;
 
 const pac::scenario::GvlNames& Names() {
-    static const pac::scenario::GvlNames names(PAC_GVL_FILE);
+    static const pac::scenario::GvlNames names;
     return names;
 }
 

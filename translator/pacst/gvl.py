@@ -10,8 +10,9 @@ also writes the list as a table that C and C++ code reads by name (`<stem>.h`).
 import os
 
 from . import literals
-from .compiler import ExprCompiler, _cls, _name, pos
+from .common import _cls, _name, pos
 from .errors import StError, StErrors
+from .expressions import ExprCompiler
 
 
 class Constant:

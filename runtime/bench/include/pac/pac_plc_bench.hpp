@@ -1,9 +1,9 @@
 // A PLC wired to a simulated PA-CONTROL: simulated clock, PLC task, bus and controller running at its
-// own cycle. Tests and benchmarks add their function blocks with Call(fb) (CMD module), CallCtrl(fb)
-// (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's images in and out around
-// the FB's body exactly as a PLC's I/O image would, so any number of command FBs can share the one
-// CMD interface; CallRaw8 adds a hand-written master program on an 8-byte module. The bus carries the
-// modules of `layout` (default: the CMD module alone).
+// own cycle. Tests, benchmarks and the scenario program add their function blocks with Call(fb) (CMD
+// module), CallCtrl(fb) (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's
+// images in and out around the FB's body exactly as a PLC's I/O image would, so any number of command
+// FBs can share the one CMD interface; CallRaw8 adds a hand-written master program on an 8-byte
+// module. The bus carries the modules of `layout` (default: the CMD module alone).
 #pragma once
 
 #include <chrono>
@@ -22,7 +22,7 @@
 #include "pac/sim/slave_runner.hpp"
 #include "pac/sim_clock.hpp"
 
-namespace pac::test {
+namespace pac {
 
 struct PlcBenchTiming {
     std::chrono::nanoseconds plcCycle{std::chrono::milliseconds(1)};
@@ -36,19 +36,9 @@ struct PlcBenchTiming {
 class PacPlcBench {
 public:
     explicit PacPlcBench(PlcBenchTiming timing = {}, pac::sim::PaControlConfig config = {},
-                         pac::sim::ModuleLayout layout = {})
-        : timing_(timing),
-          task_(clock_, timing.plcCycle),
-          bus_(BusConfigFor(timing, layout)),
-          pac_(bus_, WithTiming(config, timing)),
-          runner_(pac_),
-          toPac_(layout.Bytes()),
-          fromPac_(layout.Bytes()) {
-        runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
-        task_.AddProgram([this] { fromPac_ = bus_.MasterRead(clock_.Now()); });
-    }
+                         pac::sim::ModuleLayout layout = {});
 
-    // Registers `fb` as a program on the CMD interface: inputs set by the test before a scan are
+    // Registers `fb` as a program on the CMD interface: inputs set by the caller before a scan are
     // that scan's inputs. Call in the order the FBs should run; then call Start().
     template <class Fb>
     void Call(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
@@ -69,47 +59,21 @@ public:
     // registered: it reads the module's input image and may rewrite the output image the FBs before it
     // left, e.g. a master that writes zeros where an FB holds low-active bits.
     void CallRaw8(std::size_t offset,
-                  std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
-        if (!program) throw std::invalid_argument("PacPlcBench::CallRaw8: empty program");
-        if (offset + 8 > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
-        task_.AddProgram([this, offset, program] {
-            pac::sim::Image8 out = toPac_.Module8(offset);
-            program(fromPac_.Module8(offset), out);
-            toPac_.SetModule8(offset, out);
-        });
-    }
+                  std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program);
 
     // After the FBs: the master's image goes out on the bus at the end of each scan.
-    void Start() {
-        task_.AddProgram([this] { bus_.MasterWrite(clock_.Now(), toPac_); });
-    }
+    void Start();
 
-    void Scan(int n = 1) {
-        for (int i = 0; i < n; ++i) task_.Scan();
-    }
+    void Scan(int n = 1);
 
     // Scans until `predicate` holds; returns the scans run, or -1 after maxScans.
-    int ScanUntil(const std::function<bool()>& predicate, int maxScans) {
-        for (int scans = 1; scans <= maxScans; ++scans) {
-            task_.Scan();
-            if (predicate()) return scans;
-        }
-        return -1;
-    }
+    int ScanUntil(const std::function<bool()>& predicate, int maxScans);
 
     // The fewest scans after a scan at `edgeTime` that can show the PA-CONTROL's answer to a module
     // written in it: the image reaches the controller after the latency, the controller's next cycle
     // answers (its cycle at the very time of that scan has already run), the answer travels back and
     // the next scan reads it. Jitter is not counted.
-    int ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
-        const auto latency = timing_.plcCycle * timing_.latencyCycles;
-        const auto arrival = edgeTime + latency;
-        auto slaveTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
-        while (slaveTime < arrival || slaveTime <= edgeTime) slaveTime += timing_.pacCycle;
-        auto scanTime = edgeTime;
-        while (scanTime < slaveTime + latency) scanTime += timing_.plcCycle;
-        return static_cast<int>((scanTime - edgeTime) / timing_.plcCycle);
-    }
+    int ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const;
 
     pac::sim::PaControl& Controller() { return pac_; }
     pac::sim::Bus& Bus() { return bus_; }
@@ -122,7 +86,7 @@ public:
 private:
     template <std::size_t N, class Fb>
     void CallOnModule(pac::FbInstance<Fb>& fb, std::size_t offset, std::function<void()> before) {
-        if (offset + N > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
+        RequireModule(offset, N);
         task_.AddProgram([this, &fb, offset, before] {
             if (before) before();
             for (std::size_t i = 0; i < N; ++i) {
@@ -134,21 +98,8 @@ private:
         });
     }
 
-    static pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::ModuleLayout& layout) {
-        pac::sim::BusConfig config;
-        config.layout = layout;
-        const auto latency = t.plcCycle * t.latencyCycles;
-        config.toSlave = {latency, t.jitter, t.seed};
-        config.toMaster = {latency, t.jitter, t.seed + 1};
-        return config;
-    }
-
-    static pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const PlcBenchTiming& t) {
-        config.bootTime = t.bootTime;
-        config.homeCycle = t.pacCycle;
-        config.activeCycle = t.pacCycle;
-        return config;
-    }
+    // std::out_of_range unless the bus layout has `size` bytes at `offset`.
+    void RequireModule(std::size_t offset, std::size_t size) const;
 
     PlcBenchTiming timing_;
     pac::SimClock clock_;
@@ -160,4 +111,4 @@ private:
     pac::sim::ProcessImage fromPac_;
 };
 
-}  // namespace pac::test
+}  // namespace pac

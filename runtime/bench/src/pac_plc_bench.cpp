@@ -1,0 +1,78 @@
+#include "pac/pac_plc_bench.hpp"
+
+namespace pac {
+
+namespace {
+
+pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::ModuleLayout& layout) {
+    pac::sim::BusConfig config;
+    config.layout = layout;
+    const auto latency = t.plcCycle * t.latencyCycles;
+    config.toSlave = {latency, t.jitter, t.seed};
+    config.toMaster = {latency, t.jitter, t.seed + 1};
+    return config;
+}
+
+pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const PlcBenchTiming& t) {
+    config.bootTime = t.bootTime;
+    config.homeCycle = t.pacCycle;
+    config.activeCycle = t.pacCycle;
+    return config;
+}
+
+}  // namespace
+
+PacPlcBench::PacPlcBench(PlcBenchTiming timing, pac::sim::PaControlConfig config, pac::sim::ModuleLayout layout)
+    : timing_(timing),
+      task_(clock_, timing.plcCycle),
+      bus_(BusConfigFor(timing, layout)),
+      pac_(bus_, WithTiming(config, timing)),
+      runner_(pac_),
+      toPac_(layout.Bytes()),
+      fromPac_(layout.Bytes()) {
+    runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
+    task_.AddProgram([this] { fromPac_ = bus_.MasterRead(clock_.Now()); });
+}
+
+void PacPlcBench::CallRaw8(std::size_t offset,
+                           std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
+    if (!program) throw std::invalid_argument("PacPlcBench::CallRaw8: empty program");
+    RequireModule(offset, 8);
+    task_.AddProgram([this, offset, program] {
+        pac::sim::Image8 out = toPac_.Module8(offset);
+        program(fromPac_.Module8(offset), out);
+        toPac_.SetModule8(offset, out);
+    });
+}
+
+void PacPlcBench::Start() {
+    task_.AddProgram([this] { bus_.MasterWrite(clock_.Now(), toPac_); });
+}
+
+void PacPlcBench::Scan(int n) {
+    for (int i = 0; i < n; ++i) task_.Scan();
+}
+
+int PacPlcBench::ScanUntil(const std::function<bool()>& predicate, int maxScans) {
+    for (int scans = 1; scans <= maxScans; ++scans) {
+        task_.Scan();
+        if (predicate()) return scans;
+    }
+    return -1;
+}
+
+int PacPlcBench::ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
+    const auto latency = timing_.plcCycle * timing_.latencyCycles;
+    const auto arrival = edgeTime + latency;
+    auto slaveTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
+    while (slaveTime < arrival || slaveTime <= edgeTime) slaveTime += timing_.pacCycle;
+    auto scanTime = edgeTime;
+    while (scanTime < slaveTime + latency) scanTime += timing_.plcCycle;
+    return static_cast<int>((scanTime - edgeTime) / timing_.plcCycle);
+}
+
+void PacPlcBench::RequireModule(std::size_t offset, std::size_t size) const {
+    if (offset + size > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
+}
+
+}  // namespace pac

@@ -1,0 +1,70 @@
+"""pacexport export: the library as PLCopen XML and TwinCAT 3 files; pacexport validate: check PLCopen
+XML files against the TC6 schema. See docs/import.md."""
+import argparse
+import os
+import shutil
+import sys
+
+from .blarkparse import ParseCache
+from .errors import ExportError
+from .library import load_library
+from .metadata import read_library_info
+from .plcopen_write import plcopen_bytes
+from .schema import SchemaUnavailable, load_schema, schema_errors
+from .twincat import write_twincat
+
+
+def plcopen_file_name(info):
+    return info.name.lower() + ".xml"
+
+
+def export(library, out):
+    """Writes <out>/<name>.xml and <out>/twincat/, replacing what an earlier export left there."""
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, plcopen_file_name(library.info)), "wb") as f:
+        f.write(plcopen_bytes(library))
+    twincat = os.path.join(out, "twincat")
+    shutil.rmtree(twincat, ignore_errors=True)
+    write_twincat(library, twincat)
+
+
+def _export_command(args):
+    info = read_library_info(args.library)
+    library = load_library(info, args.sources, args.gvl, ParseCache(args.cache))
+    export(library, args.out)
+    if args.stamp:
+        with open(args.stamp, "w", encoding="utf-8") as f:
+            f.write(f"{info.name} {info.version}\n")
+    return 0
+
+
+def _validate_command(args):
+    schema = load_schema()
+    failed = 0
+    for path in args.files:
+        with open(path, "rb") as f:
+            errors = schema_errors(schema, f.read())
+        for error in errors:
+            print(f"{path}: {error}", file=sys.stderr)
+        failed += bool(errors)
+    return 1 if failed else 0
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="pacexport", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+    ex = commands.add_parser("export", help="write <out>/<name>.xml (PLCopen) and <out>/twincat/")
+    ex.add_argument("--library", required=True, help="st/library.json: name and version")
+    ex.add_argument("--out", required=True)
+    ex.add_argument("--gvl", action="append", default=[], help="a global constant list (repeatable)")
+    ex.add_argument("--cache", help="directory for blark's parses, shared between runs")
+    ex.add_argument("--stamp", help="file to write when the export succeeded")
+    ex.add_argument("sources", nargs="+", help="the library's ST files in declaration order")
+    va = commands.add_parser("validate", help="validate PLCopen XML files against TC6 XML v2.01")
+    va.add_argument("files", nargs="+")
+    args = parser.parse_args(argv)
+    try:
+        return _export_command(args) if args.command == "export" else _validate_command(args)
+    except (ExportError, SchemaUnavailable) as exc:
+        print(f"pacexport: {exc}", file=sys.stderr)
+        return 1

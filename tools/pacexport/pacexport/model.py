@@ -1,0 +1,90 @@
+"""The library as the exports see it: each object's source text and its structured interface."""
+from dataclasses import dataclass
+from typing import Optional, Tuple, Union
+
+from .lexer import scan
+from .splitting import SourceObject
+from .types import TypeRef
+
+# PLCopen's variable lists and the ST keyword that opens each.
+SECTION_KEYWORDS = {
+    "inputVars": "VAR_INPUT",
+    "outputVars": "VAR_OUTPUT",
+    "inOutVars": "VAR_IN_OUT",
+    "localVars": "VAR",
+    "tempVars": "VAR_TEMP",
+    "externalVars": "VAR_EXTERNAL",
+    "globalVars": "VAR_GLOBAL",
+}
+
+
+@dataclass(frozen=True)
+class Variable:
+    name: str
+    type: TypeRef
+    initial: Optional[str]  # the initial value as the source spells it
+    doc: Optional[str]
+
+
+@dataclass(frozen=True)
+class VarBlock:
+    section: str  # a key of SECTION_KEYWORDS
+    constant: bool
+    variables: Tuple[Variable, ...]
+    doc: Optional[str]
+
+
+@dataclass(frozen=True)
+class EnumShape:
+    values: Tuple[Tuple[str, Optional[str]], ...]  # name, explicit value
+    base: Optional[TypeRef]
+
+
+@dataclass(frozen=True)
+class AliasShape:
+    """TYPE T : ARRAY[0..7] OF BYTE; or TYPE T : INT := 5;"""
+    type: TypeRef
+
+
+@dataclass(frozen=True)
+class StructShape:
+    members: Tuple[Variable, ...]
+
+
+@dataclass(frozen=True)
+class DataType:
+    source: SourceObject
+    shape: Union[EnumShape, AliasShape, StructShape]
+    initial: Optional[str]
+
+    @property
+    def declaration(self):
+        return self.source.declaration
+
+
+@dataclass(frozen=True)
+class Pou:
+    source: SourceObject
+    return_type: Optional[TypeRef]
+    blocks: Tuple[VarBlock, ...]
+
+    @property
+    def declaration(self):
+        return self.source.declaration
+
+
+@dataclass(frozen=True)
+class GlobalList:
+    source: SourceObject
+    block: VarBlock
+    attributes: Tuple[str, ...]  # pragmas the IDEs get, e.g. qualified_only
+
+    @property
+    def declaration(self):
+        """The list as CODESYS and TwinCAT hold it: the source with the attributes on the lines just
+        before VAR_GLOBAL, after the header comment."""
+        text = self.source.declaration
+        tokens, _ = scan(text)
+        line_start = text.rfind("\n", 0, tokens[0].start) + 1
+        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes)
+        return text[:line_start] + pragmas + text[line_start:]

@@ -1,0 +1,19 @@
+"""Names of PLCopen TC6 XML and of the CODESYS extensions (addData) that CODESYS and TwinCAT read."""
+
+# CODESYS 3.5 and TwinCAT 3.1 write and read TC6 XML under the namespace of version 2.00; version
+# 2.01 (the schema CI validates against) is the same structure under its own namespace.
+NS = "http://www.plcopen.org/xml/tc6_0200"
+SCHEMA_NS = "http://www.plcopen.org/xml/tc6_0201"
+XHTML = "http://www.w3.org/1999/xhtml"
+
+_CODESYS = "http://www.3s-software.com/plcopenxml/"
+PLAIN_TEXT = _CODESYS + "interfaceasplaintext"  # the declaration as text, comments and layout kept
+ATTRIBUTES = _CODESYS + "attributes"  # {attribute '...'} pragmas
+GLOBAL_VARS = _CODESYS + "globalvars"  # a global variable list outside any configuration
+
+POU_KEYWORDS = {"functionBlock": "FUNCTION_BLOCK", "function": "FUNCTION", "program": "PROGRAM"}
+
+
+def q(tag):
+    """A tag in the TC6 namespace."""
+    return f"{{{NS}}}{tag}"

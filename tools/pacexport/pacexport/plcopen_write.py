@@ -1,0 +1,156 @@
+"""Writes the library as one PLCopen XML project for CODESYS's and TwinCAT's PLCopenXML import.
+
+Every object carries both forms of its declaration: the structured interface of TC6 XML (variable
+lists with types, initial values and documentation), which any importer reads, and the declaration
+as text (CODESYS's InterfaceAsPlainText), with which CODESYS and TwinCAT keep the source's comments
+and layout. Global lists go where CODESYS puts them, in the project's addData, not in a
+configuration (a library has none).
+"""
+from lxml import etree
+
+from . import __version__
+from .model import AliasShape, EnumShape, StructShape
+from .plcopen_names import ATTRIBUTES, GLOBAL_VARS, NS, PLAIN_TEXT, XHTML, q
+from .types import ArrayType, Derived, Elementary, StringType
+
+
+def plcopen_bytes(library):
+    root = _project(library)
+    etree.indent(root, space="  ")
+    # The declaration as CODESYS writes it (lxml's own uses single quotes).
+    return b'<?xml version="1.0" encoding="utf-8"?>\n' + etree.tostring(root, encoding="utf-8", pretty_print=True)
+
+
+def _el(parent, tag, **attrib):
+    return etree.SubElement(parent, q(tag), {k: v for k, v in attrib.items() if v is not None})
+
+
+def _xhtml(parent, tag, text):
+    holder = _el(parent, tag)
+    etree.SubElement(holder, f"{{{XHTML}}}xhtml", nsmap={None: XHTML}).text = text
+    return holder
+
+
+def _documentation(parent, text):
+    if text:
+        _xhtml(parent, "documentation", text)
+
+
+def _add_data(parent, entries):
+    """entries: (name, element-building function) in order; nothing when there are none."""
+    if not entries:
+        return
+    add = _el(parent, "addData")
+    for name, build in entries:
+        build(_el(add, "data", name=name, handleUnknown="implementation"))
+
+
+def _plain_text(declaration):
+    return PLAIN_TEXT, lambda data: _xhtml(data, "InterfaceAsPlainText", declaration)
+
+
+def _attributes(names):
+    def build(data):
+        holder = _el(data, "Attributes")
+        for name in names:
+            _el(holder, "Attribute", Name=name, Value="")
+    return ATTRIBUTES, build
+
+
+def _project(library):
+    info = library.info
+    root = etree.Element(q("project"), nsmap={None: NS})
+    _el(root, "fileHeader", companyName=info.company, productName="pacexport", productVersion=__version__,
+        creationDateTime=info.timestamp, contentDescription=f"{info.title} {info.version}")
+    header = _el(root, "contentHeader", name=info.name, version=info.version,
+                 modificationDateTime=info.timestamp, organization=info.company, language="en")
+    etree.SubElement(header, q("Comment")).text = f"{info.title} {info.version}: {info.description}"
+    coordinates = _el(header, "coordinateInfo")
+    for language in ("fbd", "ld", "sfc"):
+        _el(_el(coordinates, language), "scaling", x="1", y="1")
+    types = _el(root, "types")
+    data_types = _el(types, "dataTypes")
+    for data_type in library.data_types:
+        _data_type(data_types, data_type)
+    pous = _el(types, "pous")
+    for pou in library.pous:
+        _pou(pous, pou)
+    _el(_el(root, "instances"), "configurations")
+    _add_data(root, [(GLOBAL_VARS, lambda data, g=g: _global_list(data, g)) for g in library.global_lists])
+    _documentation(root, f"{info.title} {info.version} ({info.released}). {info.description}")
+    return root
+
+
+def type_element(parent, ref):
+    if isinstance(ref, Elementary):
+        return _el(parent, ref.name)
+    if isinstance(ref, StringType):
+        return _el(parent, "wstring" if ref.wide else "string", length=ref.length)
+    if isinstance(ref, Derived):
+        return _el(parent, "derived", name=ref.name)
+    assert isinstance(ref, ArrayType)
+    array = _el(parent, "array")
+    for lower, upper in ref.dimensions:
+        _el(array, "dimension", lower=lower, upper=upper)
+    type_element(_el(array, "baseType"), ref.base)
+    return array
+
+
+def _initial_value(parent, text):
+    if text is not None:
+        _el(_el(parent, "initialValue"), "simpleValue", value=text)
+
+
+def _variables(parent, variables):
+    for variable in variables:
+        element = _el(parent, "variable", name=variable.name)
+        type_element(_el(element, "type"), variable.type)
+        _initial_value(element, variable.initial)
+        _documentation(element, variable.doc)
+
+
+def _var_list(parent, block, tag=None, name=None):
+    element = _el(parent, tag or block.section, name=name, constant="true" if block.constant else None)
+    _variables(element, block.variables)
+    return element
+
+
+def _data_type(parent, data_type):
+    element = _el(parent, "dataType", name=data_type.source.name)
+    base = _el(element, "baseType")
+    shape = data_type.shape
+    if isinstance(shape, EnumShape):
+        enum = _el(base, "enum")
+        values = _el(enum, "values")
+        for name, value in shape.values:
+            _el(values, "value", name=name, value=value)
+        if shape.base is not None:
+            type_element(_el(enum, "baseType"), shape.base)
+    elif isinstance(shape, StructShape):
+        _variables(_el(base, "struct"), shape.members)
+    else:
+        assert isinstance(shape, AliasShape)
+        type_element(base, shape.type)
+    _initial_value(element, data_type.initial)
+    _add_data(element, [_plain_text(data_type.declaration)])
+    _documentation(element, data_type.source.doc)
+
+
+def _pou(parent, pou):
+    source = pou.source
+    element = _el(parent, "pou", name=source.name, pouType=source.kind)
+    interface = _el(element, "interface")
+    if pou.return_type is not None:
+        type_element(_el(interface, "returnType"), pou.return_type)
+    for block in pou.blocks:
+        element_block = _var_list(interface, block)
+        _documentation(element_block, block.doc)
+    _xhtml(_el(element, "body"), "ST", source.body)
+    _add_data(element, [_plain_text(pou.declaration)])
+    _documentation(element, source.doc)
+
+
+def _global_list(data, global_list):
+    element = _var_list(data, global_list.block, tag="globalVars", name=global_list.source.name)
+    _add_data(element, [_attributes(global_list.attributes), _plain_text(global_list.declaration)])
+    _documentation(element, global_list.source.doc)

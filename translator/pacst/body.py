@@ -1,0 +1,350 @@
+"""Translates one POU's body: variable access, statements, CASE and function block calls."""
+import re
+
+from . import literals
+from . import types as T
+from .common import _BIT_LITERALS, Ref, _cls, _name, pos
+from .expressions import ExprCompiler
+
+
+class BodyCompiler:
+    """Translates one POU's variables and statements to C."""
+
+    def __init__(self, comp, pou):
+        self.comp = comp
+        self.pou = pou
+        self.ex = ExprCompiler(comp, self)
+        self.loops = []
+        self.counter = 0
+        self.result_assigned = False
+
+    def err(self, node, message):
+        return self.comp.err(node, message)
+
+    def lookup(self, name):
+        return self.pou.var(name)
+
+    # ------------------------------------------------------------------ variable access
+    def _root(self, token):
+        name = _name(token)
+        up = name.upper()
+        pou = self.pou
+        if pou.kind == "function" and up == pou.cname:
+            return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
+        v = pou.var(name)
+        if v is None:
+            if up in self.comp.enum_values:
+                raise self.err(token, f"enumeration value '{name}' cannot be written")
+            if up in self.comp.types:
+                raise self.err(token, f"'{name}' is a type, not a variable")
+            raise self.err(token, f"undeclared name '{name}'")
+        writable, why = True, ""
+        if v.constant:
+            writable, why = False, "it is a CONSTANT"
+        if pou.kind == "fb":
+            return Ref(f"data__->{v.cname}", not v.type.is_fb, v.type, v, writable=writable, why_not=why)
+        if v.section in ("output", "inout"):
+            return Ref(f"(*{v.cname})", False, v.type, v, writable=writable, why_not=why)
+        return Ref(v.cname, False, v.type, v, writable=writable, why_not=why)
+
+    def ref(self, node):
+        cls = _cls(node)
+        if cls == "SimpleVariable":
+            if node.dereferenced:
+                raise self.err(node, "pointers are outside the portable subset")
+            return self._root(node.name)
+        if cls != "MultiElementVariable":
+            raise self.err(node, "a variable is expected here")
+        if node.dereferenced or node.name.dereferenced:
+            raise self.err(node, "pointers are outside the portable subset")
+        root = _name(node.name.name).upper()
+        if self.pou.var(root) is None and root in self.comp.types and self.comp.types[root].is_enum:
+            raise self.err(node, "qualified enumeration value: write the value alone (E.A and E#A are not "
+                                 "accepted by every tool)")
+        r = self._root(node.name.name)
+        for el in node.elements:
+            ecls = _cls(el)
+            if ecls == "FieldSelector":
+                if el.dereferenced:
+                    raise self.err(el, "pointers are outside the portable subset")
+                field = el.field
+                if _cls(field) != "SimpleVariable":
+                    raise self.err(el, "bit access (w.15) is outside the portable subset: use "
+                                       "(w AND WORD#16#8000) <> WORD#0")
+                fname = _name(field.name)
+                if r.type.is_struct:
+                    m = next((m for m in r.type.members if m.cname == fname.upper()), None)
+                    if m is None:
+                        raise self.err(field, f"{r.type.name} has no member '{fname}'")
+                    r = Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
+                            r.subscripted)
+                elif r.type.is_fb:
+                    fv = r.type.var(fname)
+                    if fv is None:
+                        raise self.err(field, f"{r.type.name} has no variable '{fname}'")
+                    if fv.section not in ("input", "output"):
+                        raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
+                                              "another FB's private variables")
+                    writable = fv.section == "input"
+                    r = Ref(f"{r.base}{r.suffix}.{fv.cname}", True, fv.type, r.var, "", writable,
+                            "an FB's outputs are written only by the FB itself")
+                else:
+                    raise self.err(field, f"'{fname}': {r.type.name} has no members")
+            elif ecls == "SubscriptList":
+                if not r.type.is_array:
+                    raise self.err(el, f"{r.type.name} is not an array")
+                if len(el.subscripts) != 1:
+                    raise self.err(el, "multi-dimensional index is outside the portable subset")
+                idx_node = el.subscripts[0]
+                te = self.ex.expr(idx_node, T.DINT)
+                at = r.type
+                if te.type is T.ANY_INT:
+                    if not at.low <= te.value <= at.high:
+                        raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
+                    idx = f"{te.value - at.low}"
+                else:
+                    if not te.type.is_int:
+                        raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
+                    line, col = pos(idx_node)
+                    where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+                    idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
+                r = Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
+            else:
+                raise self.err(el, f"{ecls} is outside the portable subset")
+        return r
+
+    # ------------------------------------------------------------------ POU
+    def compile(self):
+        pou = self.pou
+        statements = pou.node.body.statements if pou.node.body is not None else []
+        if not statements:
+            raise self.err(pou.node, f"{pou.name} has an empty body: MATIEC needs at least one statement")
+        lines = self.block(statements, 1, pou.node)
+        if pou.kind == "function" and not self.result_assigned:
+            raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
+        return lines
+
+    def block(self, statements, depth, owner, allow_empty=False):
+        if not statements and not allow_empty:
+            raise self.err(owner, "empty branch: MATIEC needs at least one statement")
+        out = []
+        for st in statements:
+            out.extend(self.stmt(st, depth))
+        return out
+
+    @staticmethod
+    def _stmts(stmt_list):
+        return stmt_list.statements if stmt_list is not None else []
+
+    def stmt(self, node, d):
+        """C lines of one statement at depth d: `_s_<blark class>(node, indentation, d)` translates it."""
+        cls = _cls(node)
+        method = getattr(self, "_s_" + cls, None)
+        if method is None:
+            raise self.err(node, f"{cls} is outside the portable subset")
+        return method(node, "  " * d, d)
+
+    # ------------------------------------------------------------------ statements
+    def _s_AssignmentStatement(self, node, ind, d):
+        if len(node.variables) != 1:
+            raise self.err(node, "chained assignment is outside the portable subset")
+        target = node.variables[0]
+        r = self.ref(target)
+        if r.var.section == "result":
+            self.result_assigned = True
+        if not r.writable:
+            raise self.err(target, f"'{r.var.name}' cannot be written: {r.why_not}")
+        if r.type.is_fb:
+            raise self.err(target, "function block instances cannot be assigned")
+        te = self.ex.expr(node.expression, r.type)
+        return [ind + r.write(self.ex.coerce(te, r.type, node.expression))]
+
+    def _s_IfStatement(self, node, ind, d):
+        out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
+        out += self.block(self._stmts(node.statements), d + 1, node)
+        for eif in node.else_ifs:
+            out.append(f"{ind}}} else if ({self.cond(eif.if_expression)}) {{")
+            out += self.block(self._stmts(eif.statements), d + 1, eif)
+        if node.else_clause is not None:
+            out.append(f"{ind}}} else {{")
+            out += self.block(self._stmts(node.else_clause.statements), d + 1, node.else_clause)
+        out.append(f"{ind}}}")
+        return out
+
+    def _s_WhileStatement(self, node, ind, d):
+        out = [f"{ind}while ({self.cond(node.expression)}) {{"]
+        out += self._loop_body(node, "while", d)
+        return out + [f"{ind}}}"]
+
+    def _s_RepeatStatement(self, node, ind, d):
+        out = [f"{ind}do {{"] + self._loop_body(node, "repeat", d)
+        return out + [f"{ind}}} while (!{self.cond(node.expression)});"]
+
+    def _loop_body(self, node, kind, d):
+        """The loop's statements, inside which EXIT and CONTINUE are allowed."""
+        self.loops.append(kind)
+        lines = self.block(self._stmts(node.statements), d + 1, node)
+        self.loops.pop()
+        return lines
+
+    def _s_ForStatement(self, node, ind, d):
+        raise self.err(node, "MATIEC miscompiles FOR (FOR I := 5 TO 5 runs zero times there, and the variable "
+                             "ends at the last value instead of last + step): write a WHILE loop")
+
+    def _s_ExitStatement(self, node, ind, d):
+        if not self.loops:
+            raise self.err(node, "EXIT outside a loop")
+        return [f"{ind}break;"]
+
+    def _s_ContinueStatement(self, node, ind, d):
+        if not self.loops:
+            raise self.err(node, "CONTINUE outside a loop")
+        return [f"{ind}continue;"]
+
+    def _s_ReturnStatement(self, node, ind, d):
+        return [f"{ind}goto __end;"]
+
+    def _s_NoOpStatement(self, node, ind, d):
+        raise self.err(node, "a statement that only names a variable does nothing")
+
+    def _s_SetStatement(self, node, ind, d):
+        raise self.err(node, "S= and R= are outside the portable subset")
+
+    _s_ResetStatement = _s_SetStatement
+
+    def _s_JumpStatement(self, node, ind, d):
+        raise self.err(node, "JMP and labels are outside the portable subset")
+
+    _s_LabeledStatement = _s_JumpStatement
+
+    def cond(self, node):
+        te = self.ex.expr(node, T.BOOL)
+        return self.ex.coerce(te, T.BOOL, node, "condition")
+
+    def _case_label(self, node, sel_type):
+        cls = _cls(node)
+        # blark parses a name as a CASE label into an EnumeratedValue (E#A and E.A included).
+        label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
+        if cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
+            raise self.err(node, "qualified enumeration value: write the value alone (E#A and E.A are not "
+                                 "accepted by every tool)")
+        if sel_type.is_enum:
+            if label is None or label.upper() not in self.comp.enum_values:
+                raise self.err(node, f"CASE label must be a value of {sel_type.name}")
+            et = self.comp.enum_values[label.upper()]
+            if et is not sel_type:
+                raise self.err(node, f"'{label}' is a value of {et.name}, not of {sel_type.name}")
+            return et.values.index(next(v for v in et.values if v.upper() == label.upper()))
+        negative = False
+        if cls == "UnaryOperation" and str(node.op) == "-":
+            negative, node, cls = True, node.expr, _cls(node.expr)
+        if cls in ("HexInteger", "BinaryInteger", "OctalInteger") or cls in _BIT_LITERALS:
+            raise self.err(node, "CASE labels must be decimal literals (MATIEC)")
+        if label is not None:
+            raise self.err(node, "CASE labels must be decimal literals, not named constants (MATIEC)")
+        if cls != "Integer" or node.type_name is not None:
+            raise self.err(node, "CASE labels must be decimal literals")
+        value = literals.int_value(node)
+        value = -value if negative else value
+        lo, hi = sel_type.int_range()
+        if not lo <= value <= hi:
+            raise self.err(node, f"CASE label {value} outside {sel_type.name}'s range")
+        return value
+
+    def _s_CaseStatement(self, node, ind, d):
+        te = self.ex.expr(node.expression)
+        if te.narrow:
+            raise self.err(node.expression, "CASE on a small-type arithmetic result: MATIEC switches on the "
+                                            "promoted C int; store it in a variable first")
+        t = te.type
+        if t is T.ANY_INT:
+            raise self.err(node.expression, "CASE on a literal")
+        if t.is_bit:
+            raise self.err(node.expression, f"CASE on {t.name}: MATIEC selects only on integers and "
+                                            "enumerations; convert to INT or DINT")
+        if not (t.is_int or t.is_enum):
+            raise self.err(node.expression, f"CASE on {t.name}")
+        self.counter += 1
+        sel = f"__case{self.counter}"
+        out = [f"{ind}{{", f"{ind}  {t.cname} {sel} = {te.code};"]
+        seen = []
+        keyword = "if"
+        for el in node.cases:
+            conds = []
+            for m in el.matches:
+                if _cls(m) == "PartialSubrange":
+                    if t.is_enum:
+                        raise self.err(m, "ranges of enumeration values are outside the portable subset")
+                    lo, hi = self._case_label(m.start, t), self._case_label(m.stop, t)
+                    if lo > hi:
+                        raise self.err(m, f"empty CASE range {lo}..{hi}")
+                    conds.append(f"({sel} >= {lo} && {sel} <= {hi})")
+                else:
+                    lo = hi = self._case_label(m, t)
+                    conds.append(f"{sel} == {t.cvalue(t.values[lo]) if t.is_enum else lo}")
+                for slo, shi in seen:
+                    if lo <= shi and slo <= hi:
+                        raise self.err(m, "CASE label used twice")
+                seen.append((lo, hi))
+            out.append(f"{ind}  {keyword} ({' || '.join(conds)}) {{")
+            out += self.block(self._stmts(el.statements), d + 2, el)
+            out.append(f"{ind}  }}")
+            keyword = "else if"
+        if node.else_clause is not None:
+            if keyword == "if":
+                out.append(f"{ind}  {{")
+            else:
+                out[-1] = f"{ind}  }} else {{"
+            out += self.block(self._stmts(node.else_clause.statements), d + 2, node.else_clause)
+            out.append(f"{ind}  }}")
+        out.append(f"{ind}}}")
+        return out
+
+    def _s_FunctionCallStatement(self, node, ind, d):
+        if _cls(node.name) != "SimpleVariable":
+            raise self.err(node, "only a function block instance declared in VAR can be called")
+        name = _name(node.name.name)
+        up = name.upper()
+        v = self.pou.var(name)
+        if v is None:
+            if up in self.comp.pous and self.comp.pous[up].kind == "function" or up in ("SHL", "SHR", "ABS") \
+                    or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up):
+                raise self.err(node, f"FUNCTION {name} called as a statement: assign its result (MATIEC)")
+            raise self.err(node, f"undeclared function block instance '{name}'")
+        if not v.type.is_fb:
+            raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
+        fbt = v.type
+        inst = f"data__->{v.cname}"
+        pre, post = [], []
+        given = set()
+        for p in node.parameters:
+            if p.name is None:
+                raise self.err(p, "function block calls must be formal: name every argument (Pin := value)")
+            fv = self.ex.formal_pin(p, fbt, given)
+            pname = _name(p.name.name)
+            given.add(fv.cname)
+            member = f"{inst}.{fv.cname}"
+            if _cls(p) == "OutputParameterAssignment":
+                target = self.ref(p.value)
+                if not target.writable:
+                    raise self.err(p.value, f"'{target.var.name}' cannot be written: {target.why_not}")
+                if target.type is not fv.type:
+                    raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
+                                            f"'{target.var.name}' is {target.type.name}")
+                post.append(ind + target.write(f"{member}.value"))
+            elif fv.section == "input":
+                te = self.ex.expr(p.value, fv.type)
+                pre.append(f"{ind}__PACST_SETP({member}, , {self.ex.coerce(te, fv.type, p.value, 'argument')});")
+            else:
+                arg = self.ref(p.value)
+                if arg.type is not fv.type:
+                    raise self.err(p.value, f"type mismatch: VAR_IN_OUT {pname} is {fv.type.name}, "
+                                            f"'{arg.var.name}' is {arg.type.name}")
+                if not arg.writable:
+                    raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
+                pre.append(f"{ind}{member}.value = {arg.read()};")
+                post.insert(0, ind + arg.write(f"{member}.value"))
+        missing = [fv.name for fv in fbt.vars if fv.section == "inout" and fv.cname not in given]
+        if missing:
+            raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
+        return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post

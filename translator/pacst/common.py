@@ -1,0 +1,65 @@
+"""What the translator's modules share: positions and names of blark nodes, and the typed C values
+(an expression's `TE`, a variable access's `Ref`) that declarations, expressions and statements pass
+between each other."""
+import lark
+
+_INT_LITERALS = {"Integer", "HexInteger", "BinaryInteger", "OctalInteger"}
+_BIT_LITERALS = {"BitString", "HexBitString", "BinaryBitString", "OctalBitString"}
+
+
+def pos(node):
+    """(line, column) of a blark node or token."""
+    if isinstance(node, lark.Token):
+        return node.line or 1, node.column or 1
+    meta = getattr(node, "meta", None)
+    if meta is not None and getattr(meta, "line", None):
+        return meta.line, meta.column
+    for field in getattr(node, "__dataclass_fields__", {}):
+        if field == "meta":
+            continue
+        child = getattr(node, field, None)
+        if isinstance(child, list):
+            child = child[0] if child else None
+        if child is not None and (isinstance(child, lark.Token) or hasattr(child, "__dataclass_fields__")):
+            return pos(child)
+    return 1, 1
+
+
+def _cls(node):
+    return type(node).__name__
+
+
+def _name(token):
+    return str(token)
+
+
+class TE:
+    """A typed C expression. For untyped literals `value` holds the exact number and `code` is None."""
+
+    def __init__(self, type_, code=None, value=None, narrow=False):
+        self.type = type_
+        self.code = code
+        self.value = value
+        self.narrow = narrow  # a small-type arithmetic result that MATIEC compares as a promoted C int
+
+
+class Ref:
+    """An ST variable access path and its C spelling (`base` is a {value; flags} wrapper when `wrapped`)."""
+
+    def __init__(self, base, wrapped, type_, var, suffix="", writable=True, why_not="", subscripted=False):
+        self.base = base
+        self.wrapped = wrapped
+        self.type = type_
+        self.var = var
+        self.suffix = suffix
+        self.writable = writable
+        self.why_not = why_not
+        self.subscripted = subscripted
+
+    def read(self):
+        return f"{self.base}.value{self.suffix}" if self.wrapped else f"{self.base}{self.suffix}"
+
+    def write(self, value):
+        if self.wrapped:
+            return f"__PACST_SETP({self.base}, {self.suffix}, {value});"
+        return f"{self.base}{self.suffix} = {value};"

@@ -1,0 +1,479 @@
+"""Types and translates expressions: literals, operators, conversions and calls of functions."""
+import re
+
+from . import literals
+from . import types as T
+from .common import TE, _cls, _name, pos
+from .names import STANDARD_FUNCTIONS
+
+_CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
+_CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
+
+
+class ExprCompiler:
+    """Types and translates expressions inside one POU (or an initial value, with pou None)."""
+
+    def __init__(self, comp, body):
+        self.comp = comp
+        self.body = body
+
+    def err(self, node, message):
+        return self.comp.err(node, message)
+
+    # ------------------------------------------------------------------ coercion
+    def coerce(self, te, target, node, what="value"):
+        """C code of `te` as type `target`; ST has no implicit conversion, so types must match."""
+        if te.type is target:
+            return te.code
+        if te.type is T.ANY_INT:
+            if target.is_int or target.is_bit:
+                lo, hi = target.int_range()
+                if not lo <= te.value <= hi:
+                    raise self.err(node, f"{te.value} does not fit {target.name} ({lo}..{hi})")
+                return f"(({target.cname}){te.value}LL)"
+            if target.is_real:
+                raise self.err(node, f"integer literal {te.value} where {target.name} is expected: write "
+                                     f"{te.value}.0 (an integer literal never becomes REAL)")
+            raise self.err(node, f"integer literal where {target.name} is expected")
+        if te.type is T.ANY_REAL:
+            if target.is_real:
+                code = literals.real_c(te.value, target.cname)
+                if code is None:
+                    raise self.err(node, f"{float(te.value)} does not fit {target.name}")
+                return code
+            raise self.err(node, f"REAL literal where {target.name} is expected")
+        if te.type.is_fb:
+            raise self.err(node, f"function block instance used as a {what}")
+        hint = ""
+        if te.type.is_elementary and target.is_elementary and \
+                te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
+            hint = f" (write {te.type.name}_TO_{target.name})"
+        raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
+                             f"implicit conversion{hint}")
+
+    def default_type(self, te, want):
+        if te.type is T.ANY_INT:
+            if want is not None and (want.is_int or want.is_bit):
+                return want
+            return T.DINT
+        if te.type is T.ANY_REAL:
+            if want is not None and want.is_real:
+                return want
+            return T.LREAL
+        return te.type
+
+    def unify(self, a, b, want, node):
+        """The common type of two operands and both their C codes."""
+        if a.type.kind in ("anyint", "anyreal") and b.type.kind in ("anyint", "anyreal"):
+            if a.type is not b.type:
+                raise self.err(node, "integer and REAL literals mixed: write the integer as REAL (3.0)")
+            t = self.default_type(a, want)
+        elif a.type.kind in ("anyint", "anyreal"):
+            t = b.type
+        else:
+            t = a.type
+        # A mismatch is reported at the operand that does not fit (a binary operation has left/right).
+        left, right = getattr(node, "left", node), getattr(node, "right", node)
+        return t, self.coerce(a, t, left, "operand"), self.coerce(b, t, right, "operand")
+
+    # ------------------------------------------------------------------ expressions
+    def expr(self, node, want=None):
+        cls = _cls(node)
+        method = getattr(self, "_e_" + cls, None)
+        if method is None:
+            if cls in ("Lduration", "Date", "DateTime", "TimeOfDay", "Ldate", "LdateTime", "LtimeOfDay"):
+                raise self.err(node, f"{cls} literals are outside the portable subset")
+            raise self.err(node, f"{cls} is outside the portable subset")
+        return method(node, want)
+
+    def _typed_int(self, node, value, tname):
+        t = self.comp._resolve_type(tname, allow_fb=False)
+        if not (t.is_int or t.is_bit or t.is_bool):
+            raise self.err(node, f"{t.name}# needs a {t.name} literal")
+        if t.is_bool:
+            if value not in (0, 1):
+                raise self.err(node, "BOOL# takes 0 or 1")
+            return TE(t, "TRUE" if value else "FALSE")
+        return TE(t, self.coerce(TE(T.ANY_INT, value=value), t, node))
+
+    def _e_Integer(self, node, want):
+        value = literals.int_value(node)
+        if node.type_name is not None:
+            return self._typed_int(node, value, node.type_name)
+        return TE(T.ANY_INT, value=value)
+
+    _e_HexInteger = _e_BinaryInteger = _e_OctalInteger = _e_Integer
+    _e_BitString = _e_HexBitString = _e_BinaryBitString = _e_OctalBitString = _e_Integer
+
+    def _e_Real(self, node, want):
+        value = literals.real_value(node)
+        if node.type_name is not None:
+            t = self.comp._resolve_type(node.type_name, allow_fb=False)
+            return TE(t, self.coerce(TE(T.ANY_REAL, value=value), t, node))
+        return TE(T.ANY_REAL, value=value)
+
+    def _e_Boolean(self, node, want):
+        return TE(T.BOOL, "TRUE" if str(node.value).upper() == "TRUE" else "FALSE")
+
+    def _e_String(self, node, want):
+        text = str(node.value)
+        if not text.startswith("'"):
+            raise self.err(node, "double-quoted WSTRING literals are outside the portable subset")
+        body, out, i = text[1:-1], [], 0
+        escapes = {"$": "$", "'": "'", "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        while i < len(body):
+            c = body[i]
+            if c == "$":
+                nxt = body[i + 1:i + 2].upper()
+                if nxt in escapes:
+                    out.append(escapes[nxt])
+                    i += 2
+                    continue
+                if re.fullmatch(r"[0-9A-Fa-f]{2}", body[i + 1:i + 3]):
+                    out.append(chr(int(body[i + 1:i + 3], 16)))
+                    i += 3
+                    continue
+                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a STRING literal")
+            out.append(c)
+            i += 1
+        value = "".join(out)
+        if len(value) > T.STRING_LITERAL_MAX:
+            raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
+                                 "the default STRING length of CODESYS and TwinCAT")
+        c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
+        return TE(T.STRING, f'__pacst_string("{c_text}", {len(value)})')
+
+    def _e_Duration(self, node, want):
+        line, col = pos(node)
+        return TE(T.TIME, literals.time_c(literals.duration_ns(node, self.comp.file, line, col)))
+
+    def _e_ParenthesizedExpression(self, node, want):
+        inner = self.expr(node.expr, want)
+        if inner.code is None:
+            return inner
+        return TE(inner.type, f"({inner.code})", narrow=inner.narrow)
+
+    def _e_BracketedExpression(self, node, want):
+        raise self.err(node, "bracketed expression is outside the portable subset")
+
+    def _e_SimpleVariable(self, node, want):
+        return self._value_of(node)
+
+    def _e_MultiElementVariable(self, node, want):
+        return self._value_of(node)
+
+    def _value_of(self, node):
+        name = _name(node.name) if _cls(node) == "SimpleVariable" else None
+        if name is not None and (self.body is None or self.body.lookup(name) is None) \
+                and name.upper() in self.comp.enum_values:
+            et = self.comp.enum_values[name.upper()]
+            value = next(v for v in et.values if v.upper() == name.upper())
+            return TE(et, et.cvalue(value))
+        if self.body is None:
+            raise self.err(node, "initial value must be a literal")
+        ref = self.body.ref(node)
+        if ref.type.is_fb:
+            raise self.err(node, f"function block instance '{ref.var.name}' used as a value")
+        return TE(ref.type, ref.read())
+
+    def _e_UnaryOperation(self, node, want):
+        op = str(node.op).upper()
+        inner = self.expr(node.expr, want)
+        if op == "-":
+            if inner.type is T.ANY_INT or inner.type is T.ANY_REAL:
+                return TE(inner.type, value=-inner.value)
+            t = inner.type
+            if t.is_real:
+                return TE(t, f"(-{inner.code})")
+            if t.is_int and t.is_signed:
+                return TE(t, f"(({t.cname})-{inner.code})", narrow=t.bits < 32)
+            raise self.err(node, f"unary minus on {t.name}: only signed integers and REAL have a sign")
+        if op == "NOT":
+            if inner.type is T.ANY_INT:
+                t = self.default_type(inner, want)
+                if not t.is_bit:
+                    raise self.err(node, "NOT of an integer literal needs a typed literal (WORD#16#FF)")
+                inner = TE(t, self.coerce(inner, t, node))
+            t = inner.type
+            if t.is_bool:
+                return TE(t, f"(!{inner.code})")
+            if t.is_bit:
+                return TE(t, f"(({t.cname})~{inner.code})", narrow=t.bits < 32)
+            raise self.err(node, f"NOT on {t.name}: only BOOL, BYTE, WORD and DWORD")
+        if op == "+":
+            return inner
+        raise self.err(node, f"unary operator {op} is outside the portable subset")
+
+    def _e_BinaryOperation(self, node, want):
+        op = str(node.op).upper()
+        if op in ("AND_THEN", "OR_ELSE"):
+            raise self.err(node.op, f"{op} is a CODESYS/TwinCAT extension outside the portable subset")
+        if op == "&":
+            op = "AND"
+        if op in ("+", "-", "*", "/", "MOD"):
+            return self._arith(node, op, want)
+        if op in _CMP_C:
+            return self._compare(node, op)
+        if op in ("AND", "OR", "XOR"):
+            return self._logic(node, op, want)
+        raise self.err(node, f"operator {op} is outside the portable subset")
+
+    def _arith(self, node, op, want):
+        a = self.expr(node.left, want)
+        b = self.expr(node.right, want)
+        if a.type is T.ANY_INT and b.type is T.ANY_INT:
+            return TE(T.ANY_INT, value=self._fold(node, op, a.value, b.value))
+        # The operator's own rules come before the operands' types must agree (W + I is refused for the
+        # WORD, T * N for the TIME), and are reported at the operator.
+        for te in (a, b):
+            if te.type.is_time and op not in ("+", "-"):
+                raise self.err(node.op, f"TIME {op}: TIME only adds and subtracts (MATIEC overflows otherwise)")
+            if te.type.is_bit:
+                raise self.err(node.op, f"arithmetic on {te.type.name}: bit strings have no arithmetic; convert "
+                                        "to an integer type first")
+        t, ca, cb = self.unify(a, b, want, node)
+        if t.is_time:
+            if op == "+":
+                return TE(t, f"__time_add({ca}, {cb})")
+            if op == "-":
+                return TE(t, f"__time_sub({ca}, {cb})")
+        if not t.is_numeric:
+            raise self.err(node.op, f"arithmetic on {t.name}")
+        if op == "MOD" and not t.is_int:
+            raise self.err(node.op, "MOD needs integer operands")
+        if t.is_real:
+            return TE(t, f"(({t.cname})({ca} {op} {cb}))")
+        if op == "/":
+            return TE(t, f"__div_{t.cname}({ca}, {cb})")
+        if op == "MOD":
+            return TE(t, f"__mod_{t.cname}({ca}, {cb})")
+        return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32)
+
+    def _fold(self, node, op, a, b):
+        if op == "+":
+            return a + b
+        if op == "-":
+            return a - b
+        if op == "*":
+            return a * b
+        if b == 0:
+            raise self.err(node, "division by zero in a constant expression")
+        q = abs(a) // abs(b) * (1 if (a >= 0) == (b >= 0) else -1)
+        return q if op == "/" else a - q * b
+
+    def _compare(self, node, op):
+        a = self.expr(node.left)
+        b = self.expr(node.right)
+        for side, te in ((node.left, a), (node.right, b)):
+            if te.narrow:
+                raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
+                                     "MATIEC compares it as a promoted C int; store it in a variable first")
+        t, ca, cb = self.unify(a, b, None, node)
+        if t.is_array or t.is_struct or t.is_fb:
+            raise self.err(node.op, f"{t.name} values cannot be compared")
+        if op not in ("=", "<>") and (t.is_bool or t.is_enum):
+            raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
+        if t.is_string:
+            if op not in ("=", "<>"):
+                raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+            return TE(T.BOOL, f"({'' if op == '=' else '!'}__pacst_string_eq({ca}, {cb}))")
+        if t.is_time:
+            return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
+        return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _logic(self, node, op, want):
+        a = self.expr(node.left, want)
+        b = self.expr(node.right, want)
+        if a.type is T.ANY_INT and b.type is T.ANY_INT and (want is None or not want.is_bit):
+            raise self.err(node.op, f"{op} of two integer literals: give one a type (WORD#16#FF)")
+        for te in (a, b):  # INT AND BOOL is refused for the INT, at the operator
+            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit):
+                raise self.err(node.op, f"{op} on {te.type.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
+        t, ca, cb = self.unify(a, b, want, node)
+        if t.is_bool:
+            c_op = {"AND": "&&", "OR": "||", "XOR": "!="}[op]
+            return TE(t, f"({ca} {c_op} {cb})")
+        if t.is_bit:
+            c_op = {"AND": "&", "OR": "|", "XOR": "^"}[op]
+            return TE(t, f"(({t.cname})({ca} {c_op} {cb}))")
+        raise self.err(node.op, f"{op} on {t.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
+
+    # ------------------------------------------------------------------ calls
+    def _e_FunctionCall(self, node, want):
+        if _cls(node.name) != "SimpleVariable":
+            raise self.err(node, "only plain function names can be called")
+        name = _name(node.name.name)
+        up = name.upper()
+        m = re.fullmatch(r"([A-Z]+)_TO_([A-Z]+)", up)
+        if m:
+            return self._conversion(node, m.group(1), m.group(2))
+        if up in ("SHL", "SHR", "ROL", "ROR"):
+            return self._shift(node, up, want)
+        if up in ("ABS", "MIN", "MAX", "LIMIT", "SEL"):
+            return self._std_numeric(node, up, want)
+        if up in self.comp.pous:
+            pou = self.comp.pous[up]
+            if pou.kind == "fb":
+                raise self.err(node, f"function block type '{name}' called like a function: declare an instance")
+            if self.body is not None and pou is self.body.pou:
+                raise self.err(node, "recursion is outside the portable subset")
+            return self._user_call(node, pou)
+        if self.body is not None and self.body.lookup(name) is not None:
+            raise self.err(node, f"function block instance '{name}' called inside an expression: call it as a "
+                                 "statement and read its outputs")
+        if up in self.comp.declared_at:
+            file, line = self.comp.declared_at[up]
+            raise self.err(node, f"'{name}' is called before its declaration ({file}:{line}): declare before use")
+        if up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS:
+            raise self.err(node, f"{up} is a function block: declare an instance")
+        if up in STANDARD_FUNCTIONS:
+            raise self.err(node, f"standard function {up} is not supported by pacst")
+        raise self.err(node, f"undeclared function '{name}'")
+
+    def _positional(self, node, count, names):
+        """Arguments of a standard function: all positional, or all formal with the IEC pin names."""
+        params = node.parameters
+        if len(params) != count:
+            raise self.err(node, f"{_name(node.name.name).upper()} takes {count} argument(s), not {len(params)}")
+        if all(_cls(p) == "InputParameterAssignment" and p.name is None for p in params):
+            return [p.value for p in params]
+        by_name = {}
+        for p in params:
+            if _cls(p) != "InputParameterAssignment" or p.name is None:
+                raise self.err(p, "mix of formal and positional arguments")
+            by_name[_name(p.name.name).upper()] = p.value
+        if set(by_name) != set(names):
+            raise self.err(node, f"the inputs are {', '.join(names)}")
+        return [by_name[n] for n in names]
+
+    def _conversion(self, node, src, dst):
+        for tname in (src, dst):
+            if tname in T.OUTSIDE_SUBSET:
+                raise self.err(node, T.OUTSIDE_SUBSET[tname])
+            if tname == "TIME":
+                raise self.err(node, "TIME is never converted to or from numbers (MATIEC counts seconds, "
+                                     "CODESYS milliseconds)")
+            if tname not in _CONVERTIBLE:
+                raise self.err(node, f"unknown conversion {src}_TO_{dst}")
+        if src == dst:
+            raise self.err(node, f"{src}_TO_{dst} converts nothing and is not a standard function (MATIEC)")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st, dt = T.ELEMENTARY[src], T.ELEMENTARY[dst]
+        te = self.expr(arg, st)
+        code = self.coerce(te, st, arg, "argument")
+        if dt.is_bool:
+            return TE(dt, f"(({code}) != 0)")
+        if st.is_real and not dt.is_real:
+            helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
+            return TE(dt, f"(({dt.cname}){helper}({code}))")
+        return TE(dt, f"(({dt.cname})({code}))")
+
+    def _shift(self, node, fn, want):
+        value, count = self._positional(node, 2, ["IN", "N"])
+        te = self.expr(value, want)
+        if te.type is T.ANY_INT:
+            if want is None or not want.is_bit:
+                raise self.err(value, f"{fn} of an integer literal needs a typed literal (WORD#16#FF)")
+            te = TE(want, self.coerce(te, want, value))
+        t = te.type
+        if not t.is_bit:
+            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
+        ne = self.expr(count, T.INT)
+        if ne.type is T.ANY_INT:
+            if not 0 <= ne.value < t.bits:
+                raise self.err(count, f"shift count {ne.value} outside 0..{t.bits - 1} for {t.name}")
+        ncode = self.coerce(ne, T.INT, count, "shift count")
+        return TE(t, f"__{fn.lower()}_{t.cname}({te.code}, (long){ncode})", narrow=(fn != "SHR" and t.bits < 32))
+
+    def _std_numeric(self, node, fn, want):
+        if fn == "SEL":
+            g, a, b = self._positional(node, 3, ["G", "IN0", "IN1"])
+            gte = self.expr(g, T.BOOL)
+            gcode = self.coerce(gte, T.BOOL, g, "selector")
+            t, ca, cb = self.unify(self.expr(a, want), self.expr(b, want), want, node)
+            return TE(t, f"({gcode} ? {cb} : {ca})")
+        if fn == "ABS":
+            (a,) = self._positional(node, 1, ["IN"])
+            te = self.expr(a, want)
+            if te.type is T.ANY_INT or te.type is T.ANY_REAL:
+                return TE(te.type, value=abs(te.value))
+            if not te.type.is_numeric:
+                raise self.err(a, f"ABS on {te.type.name}")
+            if te.type.is_int and not te.type.is_signed:
+                return te
+            return TE(te.type, f"__abs_{te.type.cname}({te.code})")
+        if fn == "LIMIT":
+            args = self._positional(node, 3, ["MN", "IN", "MX"])
+        else:
+            args = self._positional(node, 2, ["IN1", "IN2"])
+        tes = [self.expr(a, want) for a in args]
+        concrete = [te.type for te in tes if te.type.kind not in ("anyint", "anyreal")]
+        t = concrete[0] if concrete else self.default_type(tes[0], want)
+        codes = [self.coerce(te, t, a, "argument") for te, a in zip(tes, args)]
+        if not (t.is_numeric or t.is_bit):
+            raise self.err(node, f"{fn} on {t.name}")
+        return TE(t, f"__{fn.lower()}_{t.cname}({', '.join(codes)})")
+
+    def formal_pin(self, p, callee, given):
+        """The variable of `callee` (a POU or FB type) that the formal argument `p` names; `given` holds
+        the C names of the pins named before it."""
+        pname = _name(p.name.name)
+        v = callee.var(pname)
+        if v is None or v.section not in ("input", "output", "inout"):
+            raise self.err(p, f"{callee.name} has no input, output or in-out '{pname}'")
+        if v.cname in given:
+            raise self.err(p, f"'{pname}' is given twice")
+        if _cls(p) == "OutputParameterAssignment":
+            if v.section != "output":
+                raise self.err(p, f"'{pname}' is not an output: use :=")
+            if p.inverted:
+                raise self.err(p, "inverted output assignment is outside the portable subset")
+        elif v.section == "output":
+            raise self.err(p, f"'{pname}' is an output: use =>")
+        return v
+
+    def _user_call(self, node, pou):
+        params = pou.vars
+        interface = [v for v in params if v.section in ("input", "output", "inout")]
+        inputs = [v for v in interface if v.section == "input"]
+        given = {}
+        positional = [p for p in node.parameters if _cls(p) == "InputParameterAssignment" and p.name is None]
+        if positional and len(positional) != len(node.parameters):
+            raise self.err(node, "mix of formal and positional arguments")
+        if positional:
+            if len(positional) != len(inputs) or any(v.section == "inout" for v in interface):
+                raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
+            for v, p in zip(inputs, positional):
+                given[v.cname] = p.value
+        else:
+            for p in node.parameters:
+                given[self.formal_pin(p, pou, given).cname] = p.value
+        args = []
+        for v in interface:
+            arg = given.get(v.cname)
+            if v.section == "input":
+                if arg is None:
+                    args.append(self.comp.default_c(v.type) if v.type.is_elementary or v.type.is_enum
+                                else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
+                    if v.init is not None:
+                        args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
+                else:
+                    args.append(self.coerce(self.expr(arg, v.type), v.type, arg, "argument"))
+                continue
+            if arg is None:
+                if v.section == "inout":
+                    raise self.err(node, f"VAR_IN_OUT '{v.name}' of {pou.name} must be passed")
+                args.append(f"&({v.type.cname}){{0}}")
+                continue
+            ref = self.body.ref(arg) if self.body is not None else None
+            if ref is None:
+                raise self.err(arg, "initial value must be a literal")
+            if ref.type is not v.type:
+                raise self.err(arg, f"type mismatch: {ref.type.name} passed to {v.section} '{v.name}' of type "
+                                    f"{v.type.name}")
+            if not ref.writable:
+                raise self.err(arg, f"'{ref.var.name}' cannot be written: {ref.why_not}")
+            if v.section == "inout" and ref.subscripted:
+                raise self.err(arg, "never pass an array element to a FUNCTION's VAR_IN_OUT (MATIEC)")
+            args.append(f"&({ref.read()})")
+        return TE(pou.ret, f"{pou.cname}(TRUE, NULL{''.join(', ' + a for a in args)})")
