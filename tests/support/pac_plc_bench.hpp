@@ -19,7 +19,7 @@
 #include "pac/sim/image8.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "pac/sim/process_image.hpp"
-#include "pac/sim/slave_runner.hpp"
+#include "pac/sim/pac_runner.hpp"
 #include "pac/sim_clock.hpp"
 
 namespace pac::test {
@@ -45,7 +45,7 @@ public:
           toPac_(layout.Bytes()),
           fromPac_(layout.Bytes()) {
         runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
-        task_.AddProgram([this] { fromPac_ = bus_.MasterRead(clock_.Now()); });
+        task_.AddProgram([this] { fromPac_ = bus_.ReadFromPac(clock_.Now()); });
     }
 
     // Registers `fb` as a program on the CMD interface: inputs set by the test before a scan are
@@ -81,7 +81,7 @@ public:
 
     // After the FBs: the master's image goes out on the bus at the end of each scan.
     void Start() {
-        task_.AddProgram([this] { bus_.MasterWrite(clock_.Now(), toPac_); });
+        task_.AddProgram([this] { bus_.WriteToPac(clock_.Now(), toPac_); });
     }
 
     void Scan(int n = 1) {
@@ -138,8 +138,8 @@ private:
         pac::sim::BusConfig config;
         config.layout = layout;
         const auto latency = t.plcCycle * t.latencyCycles;
-        config.toSlave = {latency, t.jitter, t.seed};
-        config.toMaster = {latency, t.jitter, t.seed + 1};
+        config.toPac = {latency, t.jitter, t.seed};
+        config.fromPac = {latency, t.jitter, t.seed + 1};
         return config;
     }
 
@@ -155,7 +155,7 @@ private:
     pac::PlcTask task_;
     pac::sim::Bus bus_;
     pac::sim::PaControl pac_;
-    pac::sim::SlaveRunner runner_;
+    pac::sim::PacRunner runner_;
     pac::sim::ProcessImage toPac_;
     pac::sim::ProcessImage fromPac_;
 };
