@@ -292,8 +292,8 @@ private:
         pac::sim::LinkFault linkFault = pac::sim::LinkFault::kNone;
         if (fault.kind == FaultKind::kFreezeLink) linkFault = pac::sim::LinkFault::kFrozen;
         if (fault.kind == FaultKind::kZeroLink) linkFault = pac::sim::LinkFault::kAllZero;
-        if (fault.link != LinkSide::kFromPac) plc_.Bus().ToSlave().SetFault(now, linkFault);
-        if (fault.link != LinkSide::kToPac) plc_.Bus().ToMaster().SetFault(now, linkFault);
+        if (fault.link != LinkSide::kFromPac) plc_.Bus().ToPacLink().SetFault(now, linkFault);
+        if (fault.link != LinkSide::kToPac) plc_.Bus().FromPacLink().SetFault(now, linkFault);
     }
 
     void Wait(const WaitStep& wait) {

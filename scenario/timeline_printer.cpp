@@ -257,7 +257,7 @@ void TimelinePrinter::OnScan(const ScanSample& s) {
 }
 
 void TimelinePrinter::PrintCmdLine(const ScanSample& s) {
-    const auto master = pac::sim::MasterFrame::Decode(s.toPac);
+    const auto master = pac::sim::CommandFrame::Decode(s.toPac);
     const auto reply = pac::sim::ReplyFrame::Decode(s.fromPac);
     char line[256];
     std::snprintf(line, sizeof line, "%8s %6lld | %s | %s | %4d %2d %2d %2d %6d | %7d %4d %4d %5d %7s %s\n",

@@ -22,7 +22,7 @@
 namespace {
 
 using namespace std::chrono_literals;
-using pac::sim::MasterFrame;
+using pac::sim::CommandFrame;
 using pac::PacPlcBench;
 using pac::PlcBenchTiming;
 
@@ -58,7 +58,7 @@ public:
     Outcome Run(int maxScans = 500) {
         fb_->EXECUTE.value = TRUE;
         bench_.Scan();
-        sent_ = MasterFrame::Decode(bench_.ToPac().Cmd());
+        sent_ = CommandFrame::Decode(bench_.ToPac().Cmd());
         Outcome out;
         if (Final()) {
             out.scans = 1;
@@ -78,14 +78,14 @@ public:
     PacPlcBench& Bench() { return bench_; }
     pac::sim::PaControl& Pac() { return bench_.Controller(); }
     // The module as the FB wrote it in the Execute edge scan of the last Run().
-    const MasterFrame& Sent() const { return sent_; }
+    const CommandFrame& Sent() const { return sent_; }
 
 private:
     bool Final() { return fb_->DONE.value || fb_->ERROR.value; }
 
     pac::FbInstance<T> fb_;  // declared before the bench, which calls it
     PacPlcBench bench_;
-    MasterFrame sent_;
+    CommandFrame sent_;
 };
 
 #define EXPECT_FRAME(single, expectedCode, expectedParam, expectedData)                   \
@@ -441,7 +441,7 @@ TEST(ElementFbs, LibraryErrorsPassThrough) {
     Single<FB_PAC_READINTREG> s(PAC_FB(FB_PAC_READINTREG));
     s.Fb()->NUMBER.value = 1;
     s.Fb()->TIMEOUT.value = TIME{0, 30'000'000};
-    s.Bench().Bus().ToMaster().SetFault(s.Bench().Now(), pac::sim::LinkFault::kFrozen);
+    s.Bench().Bus().FromPacLink().SetFault(s.Bench().Now(), pac::sim::LinkFault::kFrozen);
     const Outcome out = s.Run();
     ASSERT_TRUE(out.error);
     EXPECT_EQ(out.errorId, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
@@ -685,9 +685,9 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     EXPECT_EQ(readState->OPSTATUS.value, kGvl["PAC_STATUS_HOME_POSITION"]);
 
     // The controller saw them one after the other, in call order, each with the data of its edge.
-    std::vector<MasterFrame> commands;
+    std::vector<CommandFrame> commands;
     for (const auto& record : bench.Controller().Log().Records()) {
-        if (record.newCommand) commands.push_back(MasterFrame::Decode(record.master.Cmd()));
+        if (record.newCommand) commands.push_back(CommandFrame::Decode(record.toPac.Cmd()));
     }
     const std::vector<std::uint16_t> expectedCodes = {0x0906, 0x0907, 0x0902, 0x0905, 0x1906, 0x1906,
                                                       0x1907, 0x1902, 0x1904, 0x1900, 0x190B, 0x0906};

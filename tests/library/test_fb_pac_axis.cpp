@@ -34,8 +34,8 @@ using pac::test::FakeAxisModule;
 using pac::test::ReadBe16;
 using pac::test::ReadBe32;
 using pac::test::ScanDelayLine;
-namespace ctrl = pac::test::axis_ctrl;
-namespace status = pac::test::axis_status;
+namespace ctrl = pac::axis_control;
+namespace status = pac::axis_status;
 
 const pac::test::GvlConstants kGvl;
 const std::uint32_t kErrAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
@@ -196,10 +196,10 @@ struct CommandCase {
 
 const CommandCase kCommands[] = {
     {E_PAC_AXISCOMMAND__PAC_AX_HOME, ctrl::kHome, false, "Home"},
-    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, ctrl::kAbsolute, true, "MoveAbsolute"},
-    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, ctrl::kRelative, true, "MoveRelative"},
-    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, ctrl::kToMax, true, "MoveToMax"},
-    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN, ctrl::kToMin, true, "MoveToMin"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, ctrl::kMoveAbsolute, true, "MoveAbsolute"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, ctrl::kMoveRelative, true, "MoveRelative"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, ctrl::kMoveToMax, true, "MoveToMax"},
+    {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MIN, ctrl::kMoveToMin, true, "MoveToMin"},
     {E_PAC_AXISCOMMAND__PAC_AX_SET_REFERENCED, ctrl::kSetReferenced, false, "SetReferenced"},
     {E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, ctrl::kSetPosition, false, "SetPosition"},
     {E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET, ctrl::kClearOffset, false, "ClearOffset"},
@@ -842,13 +842,13 @@ TEST_F(FbPacAxisLongMove, NewExecuteAbortsTheJobAndStartsTheNewOneWhenTheAxisIsF
     EXPECT_FALSE(StartBit()) << "not while ACTIVE";
     ASSERT_TRUE(RunUntil([&] { return StartBit(); }, 20, "Start of the new job"));
     EXPECT_EQ(task_.ScanCount(), e + 3) << "the scan that sees ACTIVE fallen";
-    EXPECT_EQ(Traverse(), ctrl::kRelative);
+    EXPECT_EQ(Traverse(), ctrl::kMoveRelative);
     EXPECT_EQ(ReadBe16(toPac_, 6), 300);
     const float stoppedAt = axis_->Position();
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 60, "final output"));
     EXPECT_TRUE(Done());
     ASSERT_EQ(axis_->Jobs().size(), 2u);
-    EXPECT_EQ(axis_->Jobs()[1].control, ctrl::kAxisOn | ctrl::kStart | ctrl::kRelative);
+    EXPECT_EQ(axis_->Jobs()[1].control, ctrl::kAxisOn | ctrl::kStart | ctrl::kMoveRelative);
     EXPECT_EQ(axis_->Position(), stoppedAt - 5.0f);
 }
 
@@ -1000,16 +1000,16 @@ TEST_F(FbPacAxis, ConditionBitsGoWithAbsoluteAndRelativeMovesOnly) {
     };
     const Case cases[] = {
         {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
-         ctrl::kAbsolute | ctrl::kWhileInput1},
+         ctrl::kMoveAbsolute | ctrl::kWhileInput1},
         {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0,
-         ctrl::kAbsolute | ctrl::kWhileInput0},
+         ctrl::kMoveAbsolute | ctrl::kWhileInput0},
         {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1,
-         ctrl::kRelative | ctrl::kWhileInput1},
+         ctrl::kMoveRelative | ctrl::kWhileInput1},
         {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0,
-         ctrl::kRelative | ctrl::kWhileInput0},
-        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_NONE, ctrl::kRelative},
+         ctrl::kMoveRelative | ctrl::kWhileInput0},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_MOVECONDITION__PAC_COND_NONE, ctrl::kMoveRelative},
         {E_PAC_AXISCOMMAND__PAC_AX_HOME, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1, ctrl::kHome},
-        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0, ctrl::kToMax},
+        {E_PAC_AXISCOMMAND__PAC_AX_MOVE_TO_MAX, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_0, ctrl::kMoveToMax},
         {E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1, ctrl::kSetPosition},
     };
     Settle();
@@ -1060,7 +1060,7 @@ TEST_F(FbPacAxis, LevelBitsFollowTheirInputsEveryScan) {
     SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, 2.0f);
     Execute(true);
     Cycle(1);
-    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kStart | ctrl::kRelative | ctrl::kDisableLimitSwitches);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn | ctrl::kStart | ctrl::kMoveRelative | ctrl::kDisableLimitSwitches);
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
     ASSERT_EQ(axis_->Jobs().size(), 1u);
     EXPECT_NE(axis_->Jobs()[0].control & ctrl::kDisableLimitSwitches, 0u) << "taken over with Start";

@@ -34,8 +34,8 @@ namespace {
 using namespace std::chrono_literals;
 using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
-namespace ac = pac::sim::axis_control;
-namespace as = pac::sim::axis_status;
+namespace ac = pac::axis_control;
+namespace as = pac::axis_status;
 using pac::sim::CmdErrorRestart;
 using pac::sim::EnableMode;
 
@@ -62,7 +62,7 @@ constexpr auto kClearDisplaced = E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED;
 constexpr auto kWhileInput1 = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
 
 // Status words as the simulator composes them (2.7.2; limit switch bits 9 / 10 are 1 while free).
-constexpr std::uint32_t kFree = as::kNegativeLimitSwitch | as::kPositiveLimitSwitch;            // 0x600
+constexpr std::uint32_t kFree = as::kNegativeLimitNotActuated | as::kPositiveLimitNotActuated;  // 0x600
 constexpr std::uint32_t kOnUnreferenced = as::kDriveEnabled | kFree;                            // 0x601
 constexpr std::uint32_t kOnReferenced = as::kDriveEnabled | as::kReferenced | kFree;            // 0x701
 constexpr std::uint32_t kOnActive = kOnReferenced | as::kActive;                                 // 0x781
@@ -181,16 +181,16 @@ public:
             for (int k = 1; k <= layout_.axisModules; ++k) {
                 Module& m = last_[static_cast<std::size_t>(k)];
                 const std::size_t offset = layout_.AxisOffset(k);
-                if (!r.master.AllZero()) {
-                    const std::uint32_t control = pac::sim::ReadDword(r.master.Module12(offset), 0);
+                if (!r.toPac.AllZero()) {
+                    const std::uint32_t control = pac::sim::ReadDword(r.toPac.Module12(offset), 0);
                     if ((control & ac::kStart) != 0 && (m.control & ac::kStart) == 0) {
                         ++m.edges;
                         if ((m.status & as::kActive) != 0) ++m.lostEdges;
-                        m.jobs.push_back(pac::sim::AxisModuleCommand::Decode(r.master.Module12(offset)));
+                        m.jobs.push_back(pac::sim::AxisModuleCommand::Decode(r.toPac.Module12(offset)));
                     }
                     m.control = control;
                 }
-                m.status = pac::sim::ReadDword(r.reply.Module12(offset), 0);
+                m.status = pac::sim::ReadDword(r.fromPac.Module12(offset), 0);
             }
         }
     }
@@ -530,8 +530,8 @@ TEST_P(AxisSimTiming, RelativeTraversing_2_7_9_3_InBothFormats) {
         const Outcome move = bench.Run(1, {kRelative, 37.625f});
         ASSERT_TRUE(move.done) << move;
         const Steps expected = {S(kOn, kOnReferenced, '-'),
-                                S(kOn | ac::kStart | ac::kRelative, kOnReferenced, 'B'),
-                                S(kOn | ac::kRelative, kOnActive, 'B'),
+                                S(kOn | ac::kStart | ac::kMoveRelative, kOnReferenced, 'B'),
+                                S(kOn | ac::kMoveRelative, kOnActive, 'B'),
                                 S(kOn, kOnReferenced, 'D'),
                                 S(kOn, kOnReferenced, '-')};
         EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
@@ -556,11 +556,11 @@ TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     const Outcome move = bench.StartAndWait(1, {kRelative, 100.0f});
     ASSERT_TRUE(move.error) << move;
     EXPECT_EQ(move.errorId, kErrAxisError);
-    constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitSwitch;
+    constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitNotActuated;
     constexpr std::uint32_t kFault = kOnSwitch | as::kFault | as::kAxisError;  // 0x8343
     const Steps expected = {S(kOn, kOnReferenced, '-'),
-                            S(kOn | ac::kStart | ac::kRelative, kOnReferenced, 'B'),
-                            S(kOn | ac::kRelative, kOnActive, 'B'),
+                            S(kOn | ac::kStart | ac::kMoveRelative, kOnReferenced, 'B'),
+                            S(kOn | ac::kMoveRelative, kOnActive, 'B'),
                             S(kOn, kFault, 'E')};
     EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
     EXPECT_TRUE(fb->AXISERROR.value);
@@ -590,7 +590,7 @@ TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     ASSERT_TRUE(further.error) << further;
     EXPECT_EQ(further.errorId, kLimitSwitch);
     const Steps refusal = {S(kOn, kOnSwitch, '-'),
-                           S(kOn | ac::kStart | ac::kRelative, kOnSwitch, 'B'),
+                           S(kOn | ac::kStart | ac::kMoveRelative, kOnSwitch, 'B'),
                            S(kOn, kOnSwitch | as::kCmdError, 'E'),
                            S(kOn, kOnSwitch | as::kCmdError, '-')};
     EXPECT_EQ(bench.Trace(1).Since(further.mark), refusal) << Show(bench.Trace(1).Since(further.mark));
@@ -629,7 +629,7 @@ TEST_P(AxisSimTiming, EveryCommandInBothFormats) {
         // The job as the PA-CONTROL took it over with the Start edge: data, bit and Start in one image (2.3.3).
         ASSERT_EQ(bench.View().Jobs(1).size(), 2u);
         const pac::sim::AxisModuleCommand job = bench.View().Jobs(1).back();
-        EXPECT_EQ(job.control, kOn | ac::kStart | ac::kAbsolute);
+        EXPECT_EQ(job.control, kOn | ac::kStart | ac::kMoveAbsolute);
         EXPECT_EQ(job.speedPerMille, 800);
         EXPECT_EQ(job.accelerationPerMille, 2000);
         EXPECT_EQ(job.position, integer ? 100000u : pac::test::BitsOf(100.0f));
@@ -878,7 +878,7 @@ TEST_P(AxisSimTiming, AllZeroLinkOnThePlcSideMidMove) {
         auto& fb = bench.Fb(1);
         Outcome started;
         ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
-        bench.Plc().Bus().ToMaster().SetFault(bench.Now(), fault);
+        bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), fault);
         ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 200, "final output"));
         EXPECT_TRUE(fb->COMMANDABORTED.value) << "an all-zero module aborts the job at once";
         EXPECT_FALSE(fb->STATUSVALID.value);
@@ -892,7 +892,7 @@ TEST_P(AxisSimTiming, AllZeroLinkOnThePlcSideMidMove) {
         bench.Scan();
         const Outcome whileLost = bench.Run(1, {kRelative, 5.0f});
         EXPECT_EQ(whileLost.errorId, kErrNotReady) << whileLost;
-        bench.Plc().Bus().ToMaster().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
+        bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
         ASSERT_TRUE(bench.WaitFor([&] { return fb->STATUSVALID.value != 0; }, 200, "link back"));
         EXPECT_TRUE(fb->HALTED.value);
         const float stoppedAt = bench.Position(1);
@@ -923,7 +923,7 @@ TEST_P(AxisSimTiming, NewExecuteEdgeMidMoveAbortsTheOldJobAndRunsTheNewOne) {
     EXPECT_TRUE(fb->BUSY.value) << "the new job owns the outputs";
     // The old move brakes from full speed (50 AE); the new one starts once the axis is free, from where it stands.
     ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 500, "Start of the new job"));
-    EXPECT_EQ(bench.Control(1), kOn | ac::kStart | ac::kRelative);
+    EXPECT_EQ(bench.Control(1), kOn | ac::kStart | ac::kMoveRelative);
     EXPECT_FALSE(bench.Motion(1).Moving());
     const double stoppedAt = bench.Motion(1).Position();
     EXPECT_GT(stoppedAt, 20.0 + 49.0) << "braked from full speed";
@@ -1027,7 +1027,7 @@ TEST_P(AxisSimTiming, G123StopsTheMoveWhenTheInputDrops) {
     const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 1000, 1000, kWhileInput1}, 100);
     ASSERT_FALSE(started.done || started.error || started.aborted) << started;
     EXPECT_EQ(bench.Trace(1).Since(started.mark).at(1).control,
-              kOn | ac::kStart | ac::kAbsolute | ac::kWhileInputOne);
+              kOn | ac::kStart | ac::kMoveAbsolute | ac::kWhileInput1);
     ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 50.0f; }, 300, "moving"));
     bench.Pac().Io().inputs.Set(kConditionInput, false);
     ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
@@ -1064,13 +1064,13 @@ TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
     fb->EXECUTE.value = TRUE;
     bench.Scan();
     const std::int64_t edge = bench.ScanCount();
-    ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kShift) << "the axis is free: Start in the edge scan";
+    ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kSetPosition) << "the axis is free: Start in the edge scan";
     const nanoseconds edgeTime = bench.Now();
     const int takeOver = bench.Plc().ProtocolMinimumScans(edgeTime);
     ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
     EXPECT_EQ(bench.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
     EXPECT_TRUE(fb->ACTIVE.value);
-    EXPECT_EQ(bench.Control(1), kOn | ac::kShift) << "the traverse bit stays";
+    EXPECT_EQ(bench.Control(1), kOn | ac::kSetPosition) << "the traverse bit stays";
     const std::int64_t drop = bench.ScanCount();
     const int release = bench.Plc().ProtocolMinimumScans(bench.Now());
     ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
@@ -1097,7 +1097,7 @@ TEST_P(AxisSimTiming, EightAxesAtOnceWithIndependentErrors) {
     }
     bench.Scan();
     for (int k = 1; k <= 8; ++k) {
-        EXPECT_EQ(bench.Control(k), kOn | ac::kStart | ac::kRelative) << "axis " << k << ": Start in the edge scan";
+        EXPECT_EQ(bench.Control(k), kOn | ac::kStart | ac::kMoveRelative) << "axis " << k << ": Start in the edge scan";
     }
     ASSERT_TRUE(bench.WaitFor([&] { return bench.Fb(6)->ACTIVE.value != 0 && bench.Position(6) > 10.0f; }, 300,
                               "axis 6 moving"));

@@ -206,10 +206,10 @@ TEST(CmdOverSim, FrozenLinkTimesOutAndRecoversAfterThaw) {
     CmdBench bench({1, 3, 0});
     bench.Settle(5);
     bench.Cmd()->TIMEOUT.value = TIME{0, 50'000'000};
-    bench.Bus().ToMaster().SetFault(bench.Now(), pac::sim::LinkFault::kFrozen);
+    bench.Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kFrozen);
     ASSERT_GT(bench.Run(0x0906, 1, 9), 0);
     EXPECT_EQ(bench.Last().errorId, gvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
-    bench.Bus().ToMaster().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
+    bench.Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
     bench.Settle(10);
     ASSERT_GT(bench.Run(0x1906, 1, 0), 0);
     EXPECT_TRUE(bench.Last().done);

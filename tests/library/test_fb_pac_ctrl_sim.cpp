@@ -321,7 +321,7 @@ public:
         for (int i = 0; i < n; ++i) {
             bench_.Scan();
             if (!naiveSeen_) {
-                rules_.Check(ctrl_.Data(), cmd_.Data(), latched_, bench_.ToPac(), Controller().LastMasterImage(),
+                rules_.Check(ctrl_.Data(), cmd_.Data(), latched_, bench_.ToPac(), Controller().LastToPacImage(),
                              bench_.Task());
             }
         }
@@ -454,7 +454,7 @@ public:
 
     // The CTRL control word the PLC wrote in its last scan, and the one the controller read last.
     std::uint16_t WireControlWord() const { return ScanRules::ControlWord(bench_.ToPac()); }
-    std::uint16_t ControlWordSeenByController() { return ScanRules::ControlWord(Controller().LastMasterImage()); }
+    std::uint16_t ControlWordSeenByController() { return ScanRules::ControlWord(Controller().LastToPacImage()); }
     std::uint16_t IdleWord() { return static_cast<std::uint16_t>((ctrl_->INTEGERMODE.value ? 0x8000 : 0) | kIdleByte); }
 
     bool Done() const { return ctrl_->DONE.value != 0; }

@@ -1,9 +1,9 @@
-// A test bench for the simulated PA-CONTROL: a bus, a controller, and the master's side written by
-// hand. Exchange() is one step of simulated time: the master writes its image, the controller runs
-// one cycle, the master reads the reply; then time moves on by step_ (10 ms, the home-position cycle).
-// With a CTRL module in the bus layout (CtrlBus()), the master's image carries ctrlWord_ as the CTRL
+// A test bench for the simulated PA-CONTROL: a bus, a controller, and the PLC's side written by
+// hand. Exchange() is one step of simulated time: the PLC writes its image, the controller runs
+// one cycle, the PLC reads the reply; then time moves on by step_ (10 ms, the home-position cycle).
+// With a CTRL module in the bus layout (CtrlBus()), the to-PAC image carries ctrlWord_ as the CTRL
 // control word (default: no request, every low-active bit held at 1); with axis modules (AxisBus(n)),
-// axisMaster_[k - 1] as the module of axis k.
+// axisToPac_[k - 1] as the module of axis k.
 #pragma once
 
 #include <chrono>
@@ -60,40 +60,40 @@ inline std::string RealHex(float value) {
 class PacBench : public ::testing::Test {
 protected:
     explicit PacBench(PaControlConfig config = QuickConfig(), BusConfig bus = {})
-        : bus_(bus), pac_(bus_, config), axisMaster_(static_cast<std::size_t>(bus.layout.axisModules)) {}
+        : bus_(bus), pac_(bus_, config), axisToPac_(static_cast<std::size_t>(bus.layout.axisModules)) {}
 
-    // One step: master writes, controller cycles, master reads; returns the CMD reply as hex.
-    std::string Exchange(const Image8& master) {
-        master_ = master;
+    // One step: PLC writes, controller cycles, PLC reads; returns the CMD reply as hex.
+    std::string Exchange(const Image8& cmd) {
+        cmd_ = cmd;
         ProcessImage image(bus_.Layout().Bytes());
-        image.SetModule8(ModuleLayout::kCmdOffset, master);
+        image.SetModule8(ModuleLayout::kCmdOffset, cmd);
         if (bus_.Layout().ctrl) {
             Image8 ctrl{};
             WriteWord(ctrl, 0, ctrlWord_);
             image.SetModule8(ModuleLayout::kCtrlOffset, ctrl);
         }
         for (int axis = 1; axis <= bus_.Layout().axisModules; ++axis) {
-            image.SetModule12(bus_.Layout().AxisOffset(axis), axisMaster_[static_cast<std::size_t>(axis - 1)].Encode());
+            image.SetModule12(bus_.Layout().AxisOffset(axis), axisToPac_[static_cast<std::size_t>(axis - 1)].Encode());
         }
         return ToHex(ExchangeImage(image).Cmd());
     }
 
-    // One step with the whole master image as given (e.g. all zero).
-    ProcessImage ExchangeImage(const ProcessImage& master) {
-        bus_.MasterWrite(now_, master);
+    // One step with the whole to-PAC image as given (e.g. all zero).
+    ProcessImage ExchangeImage(const ProcessImage& toPac) {
+        bus_.WriteToPac(now_, toPac);
         pac_.Cycle(now_);
-        reply_ = bus_.MasterRead(now_);
+        reply_ = bus_.ReadFromPac(now_);
         now_ += step_;
         return reply_;
     }
 
-    // A step with the master image unchanged.
-    std::string Idle() { return Exchange(master_); }
+    // A step with the to-PAC image unchanged.
+    std::string Idle() { return Exchange(cmd_); }
 
     // Toggles SEND and sends a command; returns the reply of the cycle that saw it.
     std::string Send(std::uint16_t code, std::uint16_t parameter = 0, std::uint32_t data = 0) {
         send_ = !send_;
-        return Exchange(MasterImage(code, parameter, data, send_));
+        return Exchange(CommandImage(code, parameter, data, send_));
     }
     ReplyFrame SendFrame(std::uint16_t code, std::uint16_t parameter = 0, std::uint32_t data = 0) {
         return ReplyFrame::Decode(FromHex(Send(code, parameter, data)));
@@ -130,7 +130,7 @@ protected:
         return StatusWord();
     }
 
-    // "... 00 1F A0 00": the reply's status and flag bytes as the master sees them.
+    // "... 00 1F A0 00": the reply's status and flag bytes as the PLC sees them.
     static std::string Tail(const std::string& replyHex) { return replyHex.substr(12); }
     static std::string Data(const std::string& replyHex) { return replyHex.substr(0, 11); }
 
@@ -139,9 +139,9 @@ protected:
     std::chrono::nanoseconds now_{0};
     std::chrono::nanoseconds step_{10ms};
     bool send_ = false;
-    Image8 master_{};
+    Image8 cmd_{};  // the CMD module to PAC
     std::uint16_t ctrlWord_ = ctrl::kNoRequest;
-    std::vector<AxisModuleCommand> axisMaster_;  // axis k's module at [k - 1]
+    std::vector<AxisModuleCommand> axisToPac_;  // axis k's module at [k - 1]
     ProcessImage reply_;
 };
 

@@ -1,4 +1,4 @@
-// Each row of the acknowledgement table of manual 2.4.2 / 4.2.3, seen by the master byte by byte:
+// Each row of the acknowledgement table of manual 2.4.2 / 4.2.3, seen by the PLC byte by byte:
 //   SF != RF            not recognised yet
 //   SF = RF, KF = 1     command error (error number)
 //   SF = RF, KF = 0, BF = 0   recognised, not executed yet
@@ -19,13 +19,13 @@ TEST_F(AckTable, IdleAfterBootIsRf0Bf1InHomePosition) {
 TEST_F(AckTable, SendToggleNotRecognisedYetUntilTheControllerCycles) {
     pac_.Io().intRegisters.SetInt(2, 7);
     pac_.Cycle(0ms);
-    // The master toggles SEND at 5 ms; the controller's next cycle is at 10 ms.
-    bus_.MasterWrite(5ms, MasterImage(0x1906, 2, 0, true));
-    const ReplyFrame before = ReplyFrame::Decode(bus_.MasterRead(5ms).Cmd());
+    // The PLC toggles SEND at 5 ms; the controller's next cycle is at 10 ms.
+    bus_.WriteToPac(5ms, CommandImage(0x1906, 2, 0, true));
+    const ReplyFrame before = ReplyFrame::Decode(bus_.ReadFromPac(5ms).Cmd());
     EXPECT_FALSE(before.receiveFlag);  // SF = 1, RF = 0: not recognised yet
-    EXPECT_EQ(ToHex(bus_.MasterRead(9ms)), "00 00 00 00 00 01 20 00");
+    EXPECT_EQ(ToHex(bus_.ReadFromPac(9ms)), "00 00 00 00 00 01 20 00");
     pac_.Cycle(10ms);
-    EXPECT_EQ(ToHex(bus_.MasterRead(10ms)), "00 00 00 07 00 01 A0 00");
+    EXPECT_EQ(ToHex(bus_.ReadFromPac(10ms)), "00 00 00 07 00 01 A0 00");
 }
 
 TEST_F(AckTable, CommandErrorSetsKfWithTheErrorNumber) {
@@ -54,7 +54,7 @@ TEST_F(AckTable, NewDataWithoutASendToggleIsNotACommand) {
     pac_.Io().intRegisters.SetInt(5, 1);
     EXPECT_EQ(Send(code::kGetIntReg, 5), "00 00 00 01 00 01 A0 00");
     // Same SEND flag, other code and data: nothing happens, the reply stays.
-    EXPECT_EQ(Exchange(MasterImage(code::kPutIntReg, 5, 99, true)), "00 00 00 01 00 01 A0 00");
+    EXPECT_EQ(Exchange(CommandImage(code::kPutIntReg, 5, 99, true)), "00 00 00 01 00 01 A0 00");
     EXPECT_EQ(Idle(), "00 00 00 01 00 01 A0 00");
     EXPECT_EQ(pac_.Io().intRegisters.GetInt(5), 1);
     EXPECT_EQ(pac_.Counters().recognized, 1U);

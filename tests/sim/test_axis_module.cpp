@@ -1,6 +1,6 @@
 // The controller's side of one 12-byte axis module (runtime/sim axis_module.hpp, manual 2.7,
 // /work/briefs/axis.md, docs/simulator.md "Axis modules (2.7)"), driven cycle by cycle: one Step() is one
-// controller cycle of 10 ms with the master's 12 bytes, against a ServoAxis with the default parameters
+// controller cycle of 10 ms with the PLC's 12 bytes, against a ServoAxis with the default parameters
 // (1000 units/s, 10000 units/s^2: a 100-unit move is a triangle of 0.2 s peaking at 50 units). Expected
 // positions are worked out in the comments.
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ namespace ac = axis_control;
 namespace as = axis_status;
 
 // Status words that recur: limit switches not actuated (bits 9 and 10 high, low-active).
-constexpr std::uint32_t kSwitchesFree = as::kNegativeLimitSwitch | as::kPositiveLimitSwitch;
+constexpr std::uint32_t kSwitchesFree = as::kNegativeLimitNotActuated | as::kPositiveLimitNotActuated;
 constexpr std::uint32_t kOnReferenced = as::kDriveEnabled | as::kReferenced | kSwitchesFree;  // 0x701
 constexpr std::uint32_t kOnActive = kOnReferenced | as::kActive;                              // 0x781
 constexpr std::uint32_t kOn = ac::kAxisOn;
@@ -56,7 +56,7 @@ ServoAxisConfig Referenced() {
 // Position of a triangle move of 100 units, s seconds after its start (a = 10000 units/s^2).
 double Triangle100(double s) { return s <= 0.1 ? 5000.0 * s * s : 100.0 - 5000.0 * (0.2 - s) * (0.2 - s); }
 
-// One row of a cycle-by-cycle sequence: what the master sends, what the reply must say.
+// One row of a cycle-by-cycle sequence: what the PLC sends, what the reply must say.
 struct Row {
     std::uint32_t control;
     std::uint32_t status;
@@ -69,8 +69,8 @@ class AxisModuleBench : public ::testing::Test {
 protected:
     explicit AxisModuleBench(ServoAxisConfig config = Referenced(), AxisModuleConfig moduleConfig = {})
         : axis_(config), module_(moduleConfig) {
-        master_.speedPerMille = 1000;
-        master_.accelerationPerMille = 1000;
+        toPac_.speedPerMille = 1000;
+        toPac_.accelerationPerMille = 1000;
     }
 
     AxisModuleContext Context() const {
@@ -83,18 +83,18 @@ protected:
         return c;
     }
 
-    // One controller cycle with the master's current bytes; then time moves on by 10 ms.
+    // One controller cycle with the PLC's current bytes; then time moves on by 10 ms.
     AxisModuleReply Step() {
-        reply_ = module_.Cycle(master_.Encode(), axis_, Context());
+        reply_ = module_.Cycle(toPac_.Encode(), axis_, Context());
         now_ += 10ms;
         return AxisModuleReply::Decode(reply_);
     }
     AxisModuleReply Step(std::uint32_t control) {
-        master_.control = control;
+        toPac_.control = control;
         return Step();
     }
     AxisModuleReply Step(std::uint32_t control, double position) {
-        master_.position = EncodeModulePosition(position, integer_);
+        toPac_.position = EncodeModulePosition(position, integer_);
         return Step(control);
     }
     // Steps with `control` until the reply's status has none of `bits` (at most `limit` cycles).
@@ -123,7 +123,7 @@ protected:
 
     ServoAxis axis_;
     AxisModule module_;
-    AxisModuleCommand master_;
+    AxisModuleCommand toPac_;
     BitBank inputs_{16};
     std::chrono::nanoseconds now_{0};
     AxisModuleService service_ = AxisModuleService::kJobs;
@@ -136,7 +136,7 @@ protected:
 
 TEST(AxisModuleBytes, FieldsAreBigEndianAtTheirOffsets) {
     const AxisModuleCommand c = AxisModuleCommand::Decode(Hex12("00 02 00 45 03 E8 01 F4 42 C8 00 00"));
-    EXPECT_EQ(c.control, ac::kAxisOn | ac::kStart | ac::kAbsolute | ac::kLimitSwitchMonitoringOff);
+    EXPECT_EQ(c.control, ac::kAxisOn | ac::kStart | ac::kMoveAbsolute | ac::kDisableLimitSwitches);
     EXPECT_EQ(c.accelerationPerMille, 1000);
     EXPECT_EQ(c.speedPerMille, 500);
     EXPECT_EQ(c.position, 0x42C80000u);
@@ -316,30 +316,30 @@ TEST_F(AxisModuleUnreferenced, Referencing_2_7_9_2) {
         {kG25, kHoming, 0, 0, -20.5},                             // 250 ms
         {kG25, kHoming | as::kReferenced, 0, 0, 0.375},           // 260 ms: loaded at 255 ms, braking
         {kG25, kOnFree | as::kReferenced, 0, 0, 0.5},             // 270 ms: complete, Start 0: ACTIVE falls
-        {kOn, kOnFree | as::kReferenced, 0, 0, 0.5},              // the master takes G25 away
+        {kOn, kOnFree | as::kReferenced, 0, 0, 0.5},              // the PLC takes G25 away
     });
 }
 
 // 2.7.9.3 in both formats: relative +100 started at 10 ms; the triangle ends at 210 ms.
 std::vector<Row> RelativeTraversing() {
-    constexpr std::uint32_t kRel = kOn | ac::kRelative;
+    constexpr std::uint32_t kRel = kOn | ac::kMoveRelative;
     std::vector<Row> rows;
     rows.push_back({kOn, kOnReferenced, 0, 0, 0.0});
     rows.push_back({kRel | ac::kStart, kOnActive, 0, 0, 0.0});
     for (int ms = 10; ms <= 190; ms += 10) rows.push_back({kRel, kOnActive, 0, 0, Triangle100(ms / 1000.0)});
     rows.push_back({kRel, kOnReferenced, 0, 0, 100.0});  // 210 ms: in position and Start 0: ACTIVE falls
-    rows.push_back({kOn, kOnReferenced, 0, 0, 100.0});   // the master takes the traverse bit away
+    rows.push_back({kOn, kOnReferenced, 0, 0, 100.0});   // the PLC takes the traverse bit away
     return rows;
 }
 
 TEST_F(AxisModuleSequences, RelativeTraversingFloat_2_7_9_3) {
-    master_.position = EncodeModulePosition(100.0, false);
+    toPac_.position = EncodeModulePosition(100.0, false);
     Run(RelativeTraversing());
 }
 
 TEST_F(AxisModuleSequences, RelativeTraversingInteger_2_7_9_3) {
     integer_ = true;
-    master_.position = 100000;
+    toPac_.position = 100000;
     Run(RelativeTraversing());
 }
 
@@ -356,11 +356,11 @@ protected:
 TEST_F(AxisModuleLimitSwitch, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     // Relative +300 from 0 at 10 ms: ramp to 1000 units/s in 100 ms (50 units), then 1000 units/s; the switch
     // at 155 is reached 205 ms after the start (215 ms): stop there at once, axis error 64.
-    constexpr std::uint32_t kRel = kOn | ac::kRelative;
+    constexpr std::uint32_t kRel = kOn | ac::kMoveRelative;
     constexpr std::uint32_t kFaultHalt = as::kDriveEnabled | as::kHalt | as::kFault | as::kReferenced |
-                                         as::kNegativeLimitSwitch | as::kAxisError;  // positive switch actuated
-    constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitSwitch;
-    master_.position = EncodeModulePosition(300.0, false);
+                                         as::kNegativeLimitNotActuated | as::kAxisError;  // positive switch actuated
+    constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitNotActuated;
+    toPac_.position = EncodeModulePosition(300.0, false);
     std::vector<Row> rows{{kOn, kOnReferenced, 0, 0, 0.0}, {kRel | ac::kStart, kOnActive, 0, 0, 0.0}};
     for (int ms = 10; ms <= 200; ms += 10) {
         const double s = ms / 1000.0;
@@ -375,8 +375,8 @@ TEST_F(AxisModuleLimitSwitch, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     Run({{kRel | ac::kStart, kOnSwitch | as::kCmdError, 64, 0, 155.0},
          {kRel, kOnSwitch | as::kCmdError, 64, 0, 155.0},
          {kOn, kOnSwitch | as::kCmdError, 64, 0, 155.0}});
-    master_.position = EncodeModulePosition(-100.0, false);
-    Run({{kRel | ac::kStart, as::kDriveEnabled | as::kActive | as::kReferenced | as::kNegativeLimitSwitch, 0, 0, 155.0},
+    toPac_.position = EncodeModulePosition(-100.0, false);
+    Run({{kRel | ac::kStart, as::kDriveEnabled | as::kActive | as::kReferenced | as::kNegativeLimitNotActuated, 0, 0, 155.0},
          {kRel, kOnActive, 0, 0, 154.5}});  // off the switch again
 }
 
@@ -385,8 +385,8 @@ TEST_F(AxisModuleLimitSwitch, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
 class AxisModuleHandshake : public AxisModuleBench {};
 
 TEST_F(AxisModuleHandshake, ActiveStaysWhileStartIsHeldAfterTheJob) {
-    master_.position = EncodeModulePosition(100.0, false);
-    constexpr std::uint32_t kRel = kOn | ac::kRelative;
+    toPac_.position = EncodeModulePosition(100.0, false);
+    constexpr std::uint32_t kRel = kOn | ac::kMoveRelative;
     Step(kOn);
     EXPECT_EQ(Step(kRel | ac::kStart).status, kOnActive);
     for (int i = 0; i < 25; ++i) EXPECT_EQ(Step(kRel | ac::kStart).status, kOnActive) << i;  // done at 210 ms
@@ -396,37 +396,37 @@ TEST_F(AxisModuleHandshake, ActiveStaysWhileStartIsHeldAfterTheJob) {
 }
 
 TEST_F(AxisModuleHandshake, InstantJobsShowActiveUntilStartFalls) {
-    master_.position = EncodeModulePosition(7.0, false);
+    toPac_.position = EncodeModulePosition(7.0, false);
     Step(kOn);
-    auto r = Step(kOn | ac::kShift | ac::kStart);  // G29 to 7.0: done in this cycle
+    auto r = Step(kOn | ac::kSetPosition | ac::kStart);  // G29 to 7.0: done in this cycle
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 7.0);
     EXPECT_FALSE(module_.JobRunning());
-    EXPECT_EQ(Step(kOn | ac::kShift | ac::kStart).status, kOnActive);
-    EXPECT_EQ(Step(kOn | ac::kShift).status, kOnReferenced);
+    EXPECT_EQ(Step(kOn | ac::kSetPosition | ac::kStart).status, kOnActive);
+    EXPECT_EQ(Step(kOn | ac::kSetPosition).status, kOnReferenced);
 }
 
 TEST_F(AxisModuleHandshake, StartEdgeDuringAJobIsLost) {
-    master_.position = EncodeModulePosition(1000.0, false);
-    constexpr std::uint32_t kAbs = kOn | ac::kAbsolute;
+    toPac_.position = EncodeModulePosition(1000.0, false);
+    constexpr std::uint32_t kAbs = kOn | ac::kMoveAbsolute;
     Step(kOn);
     EXPECT_EQ(Step(kAbs | ac::kStart).status, kOnActive);
     Step(kAbs);
     // A new edge with two traverse bits while the job runs: not recognised, so no CMD error 20 either.
-    auto r = Step(kAbs | ac::kRelative | ac::kStart);
+    auto r = Step(kAbs | ac::kMoveRelative | ac::kStart);
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(r.cmdError, 0);
-    r = StepUntilClear(kAbs | ac::kRelative, as::kActive);
+    r = StepUntilClear(kAbs | ac::kMoveRelative, as::kActive);
     EXPECT_EQ(r.status, kOnReferenced);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 1000.0);
-    master_.position = EncodeModulePosition(0.0, false);
+    toPac_.position = EncodeModulePosition(0.0, false);
     EXPECT_EQ(Step(kAbs | ac::kStart).status, kOnActive);  // now an edge (Start was 0 in the last cycle)
 }
 
 TEST_F(AxisModuleHandshake, StartHeldFromOutsideOnlineIsNoEdge) {
     service_ = AxisModuleService::kReportOnly;
-    master_.position = EncodeModulePosition(100.0, false);
-    constexpr std::uint32_t kRel = kOn | ac::kRelative | ac::kStart;
+    toPac_.position = EncodeModulePosition(100.0, false);
+    constexpr std::uint32_t kRel = kOn | ac::kMoveRelative | ac::kStart;
     auto r = Step(kRel);  // an edge outside ONLINE: CMD error 20
     EXPECT_EQ(r.cmdError, AxisModule::kInadmissible);
     service_ = AxisModuleService::kJobs;
@@ -444,40 +444,40 @@ TEST_F(AxisModuleHandshake, TraverseBitsMustBeExactlyOne) {
     EXPECT_EQ(r.status, kOnReferenced | as::kCmdError);
     EXPECT_EQ(r.cmdError, 20);
     Step(kOn);
-    r = Step(kOn | ac::kAbsolute | ac::kRelative | ac::kStart);  // two traverse bits (2.7.2 notes)
+    r = Step(kOn | ac::kMoveAbsolute | ac::kMoveRelative | ac::kStart);  // two traverse bits (2.7.2 notes)
     EXPECT_EQ(r.cmdError, 20);
     EXPECT_FALSE(axis_.JobActive());
     Step(kOn);
-    r = Step(kOn | ac::kToMaxRange | ac::kToMinRange | ac::kStart);
+    r = Step(kOn | ac::kMoveToMax | ac::kMoveToMin | ac::kStart);
     EXPECT_EQ(r.cmdError, 20);
     Step(kOn);
-    r = Step(kOn | ac::kHome | ac::kWhileInputOne | ac::kStart);  // G123 only with absolute / relative
+    r = Step(kOn | ac::kHome | ac::kWhileInput1 | ac::kStart);  // G123 only with absolute / relative
     EXPECT_EQ(r.cmdError, 20);
     Step(kOn);
-    r = Step(kOn | ac::kAbsolute | ac::kWhileInputOne | ac::kWhileInputZero | ac::kStart);  // both conditions
+    r = Step(kOn | ac::kMoveAbsolute | ac::kWhileInput1 | ac::kWhileInput0 | ac::kStart);  // both conditions
     EXPECT_EQ(r.cmdError, 20);
     EXPECT_FALSE(axis_.JobActive());
     Step(kOn);
-    r = Step(kOn | ac::kAbsolute | ac::kStart | (1U << 20));  // reserve bits are ignored
+    r = Step(kOn | ac::kMoveAbsolute | ac::kStart | (1U << 20));  // reserve bits are ignored
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(r.cmdError, 0);
 }
 
 TEST_F(AxisModuleHandshake, PerMilleOutsideItsRangeIs41) {
     Step(kOn);
-    master_.position = EncodeModulePosition(100.0, false);
+    toPac_.position = EncodeModulePosition(100.0, false);
     for (const auto& [speed, acceleration] : std::vector<std::pair<int, int>>{{0, 1000}, {1001, 1000}, {1000, 0}}) {
-        master_.speedPerMille = static_cast<std::uint16_t>(speed);
-        master_.accelerationPerMille = static_cast<std::uint16_t>(acceleration);
-        const auto r = Step(kOn | ac::kAbsolute | ac::kStart);
+        toPac_.speedPerMille = static_cast<std::uint16_t>(speed);
+        toPac_.accelerationPerMille = static_cast<std::uint16_t>(acceleration);
+        const auto r = Step(kOn | ac::kMoveAbsolute | ac::kStart);
         EXPECT_EQ(r.cmdError, axis_error::kValueOutsideRange) << speed << " / " << acceleration;
         EXPECT_EQ(r.status & as::kActive, 0u);
         Step(kOn);
     }
     // The axis's own order: not switched on (55) comes before 41.
-    master_.speedPerMille = 0;
+    toPac_.speedPerMille = 0;
     Step(0);
-    EXPECT_EQ(Step(ac::kAbsolute | ac::kStart).cmdError, axis_error::kAxisNotSwitchedOn);
+    EXPECT_EQ(Step(ac::kMoveAbsolute | ac::kStart).cmdError, axis_error::kAxisNotSwitchedOn);
     // Jobs that do not move ignore the per-mille fields (G26), and so does G25 (parameters only, 2.7.5 note).
     Step(kOn);
     EXPECT_EQ(Step(kOn | ac::kSetReferenced | ac::kStart).status, kOnActive);
@@ -488,15 +488,15 @@ TEST_F(AxisModuleHandshake, PerMilleOutsideItsRangeIs41) {
 TEST_F(AxisModuleHandshake, PerMilleScalesTheMove) {
     // 500 per mille of 1000 units/s, 2000 per mille of 10000 units/s^2: ramps of 25 ms / 6.25 units;
     // 100 ms after the start: 6.25 + 500 * 0.075 = 43.75; done 25 + 175 + 25 = 225 ms after the start (235 ms).
-    master_.speedPerMille = 500;
-    master_.accelerationPerMille = 2000;
+    toPac_.speedPerMille = 500;
+    toPac_.accelerationPerMille = 2000;
     Step(kOn);
-    Step(kOn | ac::kRelative | ac::kStart, 100.0);
-    for (int i = 0; i < 9; ++i) Step(kOn | ac::kRelative);
-    EXPECT_EQ(DecodeModulePosition(Step(kOn | ac::kRelative).position, false), 43.75f);
-    for (int i = 0; i < 11; ++i) EXPECT_TRUE(Step(kOn | ac::kRelative).status & as::kActive) << i;  // to 220 ms
-    EXPECT_TRUE(Step(kOn | ac::kRelative).status & as::kActive);   // 230 ms: 5 ms to go
-    const auto r = Step(kOn | ac::kRelative);                      // 240 ms
+    Step(kOn | ac::kMoveRelative | ac::kStart, 100.0);
+    for (int i = 0; i < 9; ++i) Step(kOn | ac::kMoveRelative);
+    EXPECT_EQ(DecodeModulePosition(Step(kOn | ac::kMoveRelative).position, false), 43.75f);
+    for (int i = 0; i < 11; ++i) EXPECT_TRUE(Step(kOn | ac::kMoveRelative).status & as::kActive) << i;  // to 220 ms
+    EXPECT_TRUE(Step(kOn | ac::kMoveRelative).status & as::kActive);   // 230 ms: 5 ms to go
+    const auto r = Step(kOn | ac::kMoveRelative);                      // 240 ms
     EXPECT_EQ(r.status, kOnReferenced);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 100.0);
 }
@@ -505,20 +505,20 @@ TEST_F(AxisModuleHandshake, PerMilleScalesTheMove) {
 
 TEST_F(AxisModuleUnreferenced, CmdErrorStaysUntilTheNextStartEdgeSameCycleRestart) {
     constexpr std::uint32_t kOnFree = as::kDriveEnabled | kSwitchesFree;
-    master_.position = EncodeModulePosition(50.0, false);
+    toPac_.position = EncodeModulePosition(50.0, false);
     Run({
         {kOn, kOnFree, 0, 0, 0.0},
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},  // no reference point
-        {kOn | ac::kAbsolute, kOnFree | as::kCmdError, 43, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},  // no reference point
+        {kOn | ac::kMoveAbsolute, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
         // Refused again: the flag never falls; the number is the new job's (two traverse bits: 20).
-        {kOn | ac::kAbsolute | ac::kRelative | ac::kStart, kOnFree | as::kCmdError, 20, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kMoveRelative | ac::kStart, kOnFree | as::kCmdError, 20, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 20, 0, 0.0},
         // The same refusal once more: flag and number unchanged throughout (the FB's stale-error case).
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
         // A job taken over clears flag and number in the cycle that shows ACTIVE.
         {kOn | ac::kSetReferenced | ac::kStart, kOnActive, 0, 0, 50.0},
@@ -533,14 +533,14 @@ protected:
 
 TEST_F(AxisModuleGapRestart, CmdErrorShowsClearedForOneCycleBeforeTheRefusal) {
     constexpr std::uint32_t kOnFree = as::kDriveEnabled | kSwitchesFree;
-    master_.position = EncodeModulePosition(50.0, false);
+    toPac_.position = EncodeModulePosition(50.0, false);
     Run({
         {kOn, kOnFree, 0, 0, 0.0},
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree, 0, 0, 0.0},  // edge cycle: nothing shown yet
-        {kOn | ac::kAbsolute, kOnFree | as::kCmdError, 43, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree, 0, 0, 0.0},  // edge cycle: nothing shown yet
+        {kOn | ac::kMoveAbsolute, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree, 0, 0, 0.0},  // cleared for one cycle ...
-        {kOn | ac::kAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},  // ... and set again
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree, 0, 0, 0.0},  // cleared for one cycle ...
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnFree | as::kCmdError, 43, 0, 0.0},  // ... and set again
         {kOn, kOnFree | as::kCmdError, 43, 0, 0.0},
         {kOn | ac::kStart, kOnFree, 0, 0, 0.0},
         {kOn, kOnFree | as::kCmdError, 20, 0, 0.0},  // Start fell meanwhile: shown all the same
@@ -553,10 +553,10 @@ TEST_F(AxisModuleGapRestart, CmdErrorShowsClearedForOneCycleBeforeTheRefusal) {
 // ---- interrupts ---------------------------------------------------------------------------------------
 
 TEST_F(AxisModuleHandshake, RemovingTheTraverseBitInterrupts) {
-    // Absolute to 1000 started at 10 ms; at 310 ms (300 ms in: 250 units, 1000 units/s) the master takes
+    // Absolute to 1000 started at 10 ms; at 310 ms (300 ms in: 250 units, 1000 units/s) the PLC takes
     // bit 6 away: braking 100 ms / 50 units to 300, standing at 410 ms with HALT.
-    constexpr std::uint32_t kAbs = kOn | ac::kAbsolute;
-    master_.position = EncodeModulePosition(1000.0, false);
+    constexpr std::uint32_t kAbs = kOn | ac::kMoveAbsolute;
+    toPac_.position = EncodeModulePosition(1000.0, false);
     Step(kOn);
     Step(kAbs | ac::kStart);
     for (int i = 0; i < 28; ++i) Step(kAbs);
@@ -578,16 +578,16 @@ TEST_F(AxisModuleHandshake, RemovingTheTraverseBitInterrupts) {
 TEST_F(AxisModuleHandshake, AxisOnFallingMidMoveEndsTheJob) {
     // As above, but Axis ON falls at 310 ms: the axis brakes under control (still DRIVE ENABLED), then HALT
     // (enable mode HALT). The job is not continued when Axis ON returns (docs: "switch on traverse mode").
-    constexpr std::uint32_t kAbs = kOn | ac::kAbsolute;
-    master_.position = EncodeModulePosition(1000.0, false);
+    constexpr std::uint32_t kAbs = kOn | ac::kMoveAbsolute;
+    toPac_.position = EncodeModulePosition(1000.0, false);
     Step(kOn);
     Step(kAbs | ac::kStart);
     for (int i = 0; i < 29; ++i) Step(kAbs);
-    auto r = Step(ac::kAbsolute);  // 310 ms
+    auto r = Step(ac::kMoveAbsolute);  // 310 ms
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 250.0f);
-    for (int i = 0; i < 9; ++i) EXPECT_EQ(Step(ac::kAbsolute).status, kOnActive) << i;
-    r = Step(ac::kAbsolute);  // 410 ms
+    for (int i = 0; i < 9; ++i) EXPECT_EQ(Step(ac::kMoveAbsolute).status, kOnActive) << i;
+    r = Step(ac::kMoveAbsolute);  // 410 ms
     EXPECT_EQ(r.status, as::kHalt | as::kReferenced | kSwitchesFree);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 300.0f);
     r = Step(kAbs);
@@ -599,8 +599,8 @@ TEST_F(AxisModuleHandshake, AxisOnFallingMidMoveEndsTheJob) {
 
 TEST_F(AxisModuleHandshake, AxisErrorDuringAJobEndsIt) {
     // A blocked axis: following error 66 once the command is 1.0 ahead; the axis stops, the job ends.
-    constexpr std::uint32_t kAbs = kOn | ac::kAbsolute;
-    master_.position = EncodeModulePosition(1000.0, false);
+    constexpr std::uint32_t kAbs = kOn | ac::kMoveAbsolute;
+    toPac_.position = EncodeModulePosition(1000.0, false);
     Step(kOn);
     Step(kAbs | ac::kStart);
     for (int i = 0; i < 20; ++i) Step(kAbs);
@@ -654,7 +654,7 @@ TEST_F(AxisModuleHandshake, OutsideOnlineTheStatusIsReportedAndNothingActs) {
     axis_.RaiseAxisError(now_, 500);
     r = Step(ac::kResetAxisError);  // not acted upon either
     EXPECT_EQ(r.axisError, 500);
-    r = Step(ac::kRelative | ac::kStart, 10.0);  // Start: not taken over, CMD error 20
+    r = Step(ac::kMoveRelative | ac::kStart, 10.0);  // Start: not taken over, CMD error 20
     EXPECT_EQ(r.status, kOnReferenced | as::kFault | as::kAxisError | as::kCmdError);
     EXPECT_EQ(r.cmdError, 20);
     EXPECT_FALSE(axis_.JobActive());
@@ -664,7 +664,7 @@ TEST_F(AxisModuleHandshake, OnlineNotRunningControlsTheDriveButTakesNoJobs) {
     service_ = AxisModuleService::kControl;  // e.g. ONLINE stopped (35)
     EXPECT_EQ(Step(0).status, as::kHalt | as::kReferenced | kSwitchesFree);
     EXPECT_EQ(Step(kOn).status, kOnReferenced);
-    const auto r = Step(kOn | ac::kRelative | ac::kStart, 10.0);
+    const auto r = Step(kOn | ac::kMoveRelative | ac::kStart, 10.0);
     EXPECT_EQ(r.cmdError, 20);
     EXPECT_FALSE(axis_.JobActive());
     axis_.RaiseAxisError(now_, 500);
@@ -684,25 +684,25 @@ TEST_F(AxisModuleHandshake, LeavingOnlineSwitchesTheAxisOnAgain) {
 
 TEST_F(AxisModuleHandshake, G123StopsWhenTheInputLeavesTheCondition) {
     // Absolute to 1000 while input 1 = 1; at 310 ms the input drops: braking to 300 as with an interrupt.
-    constexpr std::uint32_t kJob = kOn | ac::kAbsolute | ac::kWhileInputOne;
+    constexpr std::uint32_t kJob = kOn | ac::kMoveAbsolute | ac::kWhileInput1;
     inputs_.Set(1, true);
-    master_.position = EncodeModulePosition(1000.0, false);
+    toPac_.position = EncodeModulePosition(1000.0, false);
     Step(kOn);
     EXPECT_EQ(Step(kJob | ac::kStart).status, kOnActive);
     for (int i = 0; i < 29; ++i) EXPECT_EQ(Step(kJob).status, kOnActive) << i;
     inputs_.Set(1, false);
     auto r = Step(kJob);  // 310 ms
-    EXPECT_EQ(r.status, kOnActive | as::kStoppedByG123);
+    EXPECT_EQ(r.status, kOnActive | as::kStoppedByCondition);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 250.0f);
     r = StepUntilClear(kJob, as::kActive);
-    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByG123);
+    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByCondition);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 300.0f);
     EXPECT_EQ(now_, 420ms);  // the cycle at 410 ms showed ACTIVE fallen
     // Bit 11 describes the last job with G123: a job without G123 leaves it ...
-    r = Step(kOn | ac::kRelative | ac::kStart, 10.0);
-    EXPECT_EQ(r.status, kOnActive | as::kStoppedByG123);
-    r = StepUntilClear(kOn | ac::kRelative, as::kActive);
-    EXPECT_EQ(r.status & as::kStoppedByG123, as::kStoppedByG123);
+    r = Step(kOn | ac::kMoveRelative | ac::kStart, 10.0);
+    EXPECT_EQ(r.status, kOnActive | as::kStoppedByCondition);
+    r = StepUntilClear(kOn | ac::kMoveRelative, as::kActive);
+    EXPECT_EQ(r.status & as::kStoppedByCondition, as::kStoppedByCondition);
     // ... the next G123 job clears it, and finishing normally does not set it.
     inputs_.Set(1, true);
     r = Step(kJob | ac::kStart, 320.0);
@@ -714,33 +714,33 @@ TEST_F(AxisModuleHandshake, G123StopsWhenTheInputLeavesTheCondition) {
 
 TEST_F(AxisModuleHandshake, G123NotStartedWhenTheConditionIsNotMet) {
     // While input 1 = 1, but it is 0: taken over (ACTIVE) and terminated in the same cycle without moving.
-    constexpr std::uint32_t kJob = kOn | ac::kRelative | ac::kWhileInputOne;
+    constexpr std::uint32_t kJob = kOn | ac::kMoveRelative | ac::kWhileInput1;
     Step(kOn);
     auto r = Step(kJob | ac::kStart, 100.0);
-    EXPECT_EQ(r.status, kOnActive | as::kHalt | as::kStoppedByG123);
+    EXPECT_EQ(r.status, kOnActive | as::kHalt | as::kStoppedByCondition);
     EXPECT_EQ(r.cmdError, 0);
     EXPECT_FALSE(module_.JobRunning());
     r = Step(kJob);
-    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByG123);
+    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByCondition);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 0.0f);
     EXPECT_FALSE(axis_.Moving());
 }
 
 TEST_F(AxisModuleHandshake, G123WhileInputZeroOnAnotherInput) {
-    constexpr std::uint32_t kJob = kOn | ac::kRelative | ac::kWhileInputZero;
+    constexpr std::uint32_t kJob = kOn | ac::kMoveRelative | ac::kWhileInput0;
     Step(kOn);
     module_.SetConditionInput(5);
     inputs_.Set(1, true);  // input 1 no longer matters
     Step(kJob | ac::kStart, 100.0);
     for (int i = 0; i < 5; ++i) EXPECT_EQ(Step(kJob).status, kOnActive);
     inputs_.Set(5, true);
-    EXPECT_EQ(Step(kJob).status, kOnActive | as::kStoppedByG123);  // 70 ms: braking from 18
+    EXPECT_EQ(Step(kJob).status, kOnActive | as::kStoppedByCondition);  // 70 ms: braking from 18
     const auto r = StepUntilClear(kJob, as::kActive);
-    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByG123);
+    EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kStoppedByCondition);
     EXPECT_LT(DecodeModulePosition(r.position, false), 100.0);
     // An input the controller does not have reads 0.
     module_.SetConditionInput(999);
-    EXPECT_EQ(Step(kJob | ac::kStart, 10.0).status & as::kStoppedByG123, 0u);
+    EXPECT_EQ(Step(kJob | ac::kStart, 10.0).status & as::kStoppedByCondition, 0u);
     EXPECT_THROW(module_.SetConditionInput(0), std::invalid_argument);
 }
 
@@ -764,7 +764,7 @@ TEST_F(AxisModuleHandshake, ConditionInputIsBackTo1WhenOnlineStarts) {
 TEST_F(AxisModuleUnreferenced, JogWithoutReferenceByTheMagnitudeOfPosition) {
     constexpr std::uint32_t kOnFree = as::kDriveEnabled | kSwitchesFree;
     Step(kOn);
-    EXPECT_EQ(Step(kOn | ac::kAbsolute | ac::kStart, 30.0).cmdError, axis_error::kNoReferencePoint);
+    EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart, 30.0).cmdError, axis_error::kNoReferencePoint);
     Step(kOn);
     auto r = Step(kOn | ac::kJogPositive | ac::kStart, -30.0);  // bit 10: +30, the sign is ignored
     EXPECT_EQ(r.status, kOnFree | as::kActive);
@@ -800,28 +800,28 @@ protected:
 
 TEST_F(AxisModuleRange, ToMaxAndMinTraverseRangeAndTheRangeCheck) {
     Step(kOn);
-    EXPECT_EQ(Step(kOn | ac::kToMaxRange | ac::kStart, -999.0).status, kOnActive);  // position field unused
-    auto r = StepUntilClear(kOn | ac::kToMaxRange, as::kActive);
+    EXPECT_EQ(Step(kOn | ac::kMoveToMax | ac::kStart, -999.0).status, kOnActive);  // position field unused
+    auto r = StepUntilClear(kOn | ac::kMoveToMax, as::kActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 100.0f);
-    Step(kOn | ac::kToMinRange | ac::kStart);
-    r = StepUntilClear(kOn | ac::kToMinRange, as::kActive);
+    Step(kOn | ac::kMoveToMin | ac::kStart);
+    r = StepUntilClear(kOn | ac::kMoveToMin, as::kActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), -40.0f);
     Step(kOn);
-    r = Step(kOn | ac::kAbsolute | ac::kStart, 101.0);
+    r = Step(kOn | ac::kMoveAbsolute | ac::kStart, 101.0);
     EXPECT_EQ(r.cmdError, axis_error::kPositionOutsideRange);
 }
 
 TEST_F(AxisModuleRange, G29ShiftsAndDeleteOffsetsRestores) {
     Step(kOn);
-    auto r = Step(kOn | ac::kShift | ac::kStart, 500.0);  // G29: 0 becomes 500, the range 460..600
+    auto r = Step(kOn | ac::kSetPosition | ac::kStart, 500.0);  // G29: 0 becomes 500, the range 460..600
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 500.0f);
     EXPECT_EQ(axis_.MaxRange(), 600.0);
     Step(kOn);
-    Step(kOn | ac::kAbsolute | ac::kStart, 590.0);
-    r = StepUntilClear(kOn | ac::kAbsolute, as::kActive);
+    Step(kOn | ac::kMoveAbsolute | ac::kStart, 590.0);
+    r = StepUntilClear(kOn | ac::kMoveAbsolute, as::kActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 590.0f);
-    r = Step(kOn | ac::kDeleteShift | ac::kStart);
+    r = Step(kOn | ac::kClearOffset | ac::kStart);
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 90.0f);
     EXPECT_EQ(axis_.MaxRange(), 100.0);
@@ -835,9 +835,9 @@ TEST_F(AxisModuleHandshake, LimitSwitchMonitoringOffIsTakenOverWithStart) {
         return c;
     }());
     Step(kOn);
-    Step(kOn | ac::kRelative | ac::kLimitSwitchMonitoringOff | ac::kStart, 300.0);
-    const auto r = StepUntilClear(kOn | ac::kRelative, as::kActive);  // bit 17 dropped: no effect any more
-    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kNegativeLimitSwitch);
+    Step(kOn | ac::kMoveRelative | ac::kDisableLimitSwitches | ac::kStart, 300.0);
+    const auto r = StepUntilClear(kOn | ac::kMoveRelative, as::kActive);  // bit 17 dropped: no effect any more
+    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kNegativeLimitNotActuated);
     EXPECT_EQ(r.axisError, 0);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 300.0f);
 }
@@ -845,10 +845,10 @@ TEST_F(AxisModuleHandshake, LimitSwitchMonitoringOffIsTakenOverWithStart) {
 TEST_F(AxisModuleHandshake, LimitSwitchBitsAreLowActive) {
     axis_.Place(now_, -60.0);  // beyond the negative switch at -50
     auto r = Step(kOn);
-    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kPositiveLimitSwitch);
+    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kPositiveLimitNotActuated);
     axis_.Place(now_, 10060.0);
     r = Step(kOn);
-    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kNegativeLimitSwitch);
+    EXPECT_EQ(r.status, as::kDriveEnabled | as::kReferenced | as::kNegativeLimitNotActuated);
 }
 
 TEST_F(AxisModuleIdle, DisplacedDuringOffBlocksMovesUntilReset) {
@@ -857,10 +857,10 @@ TEST_F(AxisModuleIdle, DisplacedDuringOffBlocksMovesUntilReset) {
     ASSERT_TRUE(axis_.Displace(now_, 5.0));
     auto r = Step(kOn);
     EXPECT_EQ(r.status, kOnReferenced | kDisplacedBits);
-    r = Step(kOn | ac::kRelative | ac::kStart, 10.0);
+    r = Step(kOn | ac::kMoveRelative | ac::kStart, 10.0);
     EXPECT_EQ(r.cmdError, axis_error::kAxisDisplacedTooMuch);
     Step(kOn);
-    r = Step(kOn | ac::kResetDisplaced | ac::kStart);  // bit 13: instant job
+    r = Step(kOn | ac::kClearDisplaced | ac::kStart);  // bit 13: instant job
     EXPECT_EQ(r.status, kOnActive);
     EXPECT_EQ(r.cmdError, 0);
     EXPECT_EQ(DecodeModulePosition(r.position, false), 5.0f);

@@ -21,7 +21,7 @@ constexpr std::uint16_t kStopLow = static_cast<std::uint16_t>(ctrl::kNoRequest &
 constexpr std::uint16_t kStartOnline = ctrl::kNoRequest | ctrl::kStartOnline;
 
 constexpr std::uint32_t kOn = ac::kAxisOn;
-constexpr std::uint32_t kSwitchesFree = as::kNegativeLimitSwitch | as::kPositiveLimitSwitch;
+constexpr std::uint32_t kSwitchesFree = as::kNegativeLimitNotActuated | as::kPositiveLimitNotActuated;
 constexpr std::uint32_t kOnReferenced = as::kDriveEnabled | as::kReferenced | kSwitchesFree;  // 0x701
 constexpr std::uint32_t kOnActive = kOnReferenced | as::kActive;                              // 0x781
 
@@ -40,7 +40,7 @@ protected:
     void SetUp() override {
         ASSERT_EQ(pac_.SystemParameters().Set(4, 1), ParameterTable::SetResult::kOk);  // external stop: input 1
         pac_.Io().inputs.Set(1, true);
-        for (AxisModuleCommand& m : axisMaster_) {
+        for (AxisModuleCommand& m : axisToPac_) {
             m.speedPerMille = 1000;
             m.accelerationPerMille = 1000;
         }
@@ -56,9 +56,9 @@ protected:
         ASSERT_EQ(pac_.OperatingStatus(), 31);
     }
 
-    void SetAxis(int axis, std::uint32_t control) { axisMaster_[static_cast<std::size_t>(axis - 1)].control = control; }
+    void SetAxis(int axis, std::uint32_t control) { axisToPac_[static_cast<std::size_t>(axis - 1)].control = control; }
     void SetPosition(int axis, double position, bool integer = false) {
-        axisMaster_[static_cast<std::size_t>(axis - 1)].position = EncodeModulePosition(position, integer);
+        axisToPac_[static_cast<std::size_t>(axis - 1)].position = EncodeModulePosition(position, integer);
     }
     // One cycle with axis `axis`'s control word set to `control`; the reply of that axis.
     AxisModuleReply Axis(int axis, std::uint32_t control) {
@@ -88,11 +88,11 @@ TEST_F(EightAxes, MoveAtOnceWithIndependentErrors) {
         SetPosition(k, 50.0 * k);
     }
     Online();  // 10, 20 ms
-    for (int k = 1; k <= 8; ++k) SetAxis(k, kOn | ac::kRelative | ac::kStart);
+    for (int k = 1; k <= 8; ++k) SetAxis(k, kOn | ac::kMoveRelative | ac::kStart);
     Idle();  // 30 ms: all taken over in the same cycle
     for (int k = 1; k <= 8; ++k) {
         EXPECT_EQ(AxisReply(k).status, kOnActive) << "axis " << k;
-        SetAxis(k, kOn | ac::kRelative);
+        SetAxis(k, kOn | ac::kMoveRelative);
     }
     for (int i = 0; i < 10; ++i) Idle();  // 40..130 ms
     pac_.Axes().SetBlocked(7, now_, true);
@@ -122,11 +122,11 @@ TEST_F(EightAxes, MoveAtOnceWithIndependentErrors) {
     // Reset axis 3 (bit 16): only axis 3 changes; then it moves away from its switch.
     const std::string axis7 = Hex(AxisModuleBytes(7));
     EXPECT_EQ(Axis(3, kOn | ac::kResetAxisError).status, as::kDriveEnabled | as::kHalt | as::kReferenced |
-                                                             as::kNegativeLimitSwitch);
+                                                             as::kNegativeLimitNotActuated);
     EXPECT_EQ(Hex(AxisModuleBytes(7)), axis7);
     SetPosition(3, -25.0);
-    EXPECT_EQ(Axis(3, kOn | ac::kRelative | ac::kStart).cmdError, 0);
-    while (AxisReply(3).status & as::kActive) Axis(3, kOn | ac::kRelative);
+    EXPECT_EQ(Axis(3, kOn | ac::kMoveRelative | ac::kStart).cmdError, 0);
+    while (AxisReply(3).status & as::kActive) Axis(3, kOn | ac::kMoveRelative);
     EXPECT_EQ(Position(3), 100.0);
 }
 
@@ -162,12 +162,12 @@ TEST(AxisModulesCmd, WithoutAxisModulesTheCmdMovesWork) {
     PaControlConfig config = QuickConfig();
     config.modes.requireExternalStop = false;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kStartOnline, 0, 0, true));
     pac.Cycle(0ms);
     pac.Cycle(10ms);
-    bus.MasterWrite(20ms, MasterImage(code::kStartAxisAbsolute, 1, FloatToBits(10.0F), false));
+    bus.WriteToPac(20ms, CommandImage(code::kStartAxisAbsolute, 1, FloatToBits(10.0F), false));
     pac.Cycle(20ms);
-    EXPECT_FALSE(ReplyFrame::Decode(bus.MasterRead(20ms).Cmd()).commandErrorFlag);
+    EXPECT_FALSE(ReplyFrame::Decode(bus.ReadFromPac(20ms).Cmd()).commandErrorFlag);
     EXPECT_TRUE(pac.Axes().Motion(1).Moving());
 }
 
@@ -252,9 +252,9 @@ TEST_F(AxisModules, RelativeTraversingInIntegerFormat_2_7_9_3) {
     SetPosition(1, 100.0, true);  // DINT 100000
     Online(true);                 // CTRL bit 15 taken over at the start of ONLINE
     EXPECT_TRUE(pac_.IntegerFormat());
-    Axis(1, kOn | ac::kRelative | ac::kStart);  // 30 ms
+    Axis(1, kOn | ac::kMoveRelative | ac::kStart);  // 30 ms
     EXPECT_EQ(Hex(AxisModuleBytes(1)), "00 00 07 81 00 00 00 00 00 00 00 00");
-    SetAxis(1, kOn | ac::kRelative);
+    SetAxis(1, kOn | ac::kMoveRelative);
     for (int ms = 10; ms <= 190; ms += 10) {
         Idle();
         const auto expected = EncodeModulePosition(Triangle100(ms / 1000.0), true);
@@ -271,8 +271,8 @@ TEST_F(AxisModules, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     SetAxis(1, kOn);
     SetPosition(1, 300.0);
     Online();
-    Axis(1, kOn | ac::kRelative | ac::kStart);  // 30 ms; the switch at 155 is reached at 235 ms
-    SetAxis(1, kOn | ac::kRelative);
+    Axis(1, kOn | ac::kMoveRelative | ac::kStart);  // 30 ms; the switch at 155 is reached at 235 ms
+    SetAxis(1, kOn | ac::kMoveRelative);
     while (now_ < 240ms) {
         Idle();
         EXPECT_EQ(AxisReply(1).status, kOnActive) << Ms();
@@ -282,7 +282,7 @@ TEST_F(AxisModules, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
     EXPECT_EQ(Hex(AxisModuleBytes(1)), "00 00 83 43 00 00 00 40 43 1B 00 00");  // FAULT, 64, at 155.0
     EXPECT_EQ(Axis(1, kOn).status & as::kAxisError, as::kAxisError);
     EXPECT_EQ(Axis(1, kOn | ac::kResetAxisError).axisError, 0);
-    EXPECT_EQ(Axis(1, kOn | ac::kRelative | ac::kStart).cmdError, axis_error::kLimitSwitchActuated);
+    EXPECT_EQ(Axis(1, kOn | ac::kMoveRelative | ac::kStart).cmdError, axis_error::kLimitSwitchActuated);
     EXPECT_EQ(Hex(AxisModuleBytes(1)), "00 00 43 03 00 40 00 00 43 1B 00 00");
 }
 
@@ -292,8 +292,8 @@ TEST_F(AxisModules, StopOnlineInterruptsTheJobWhichIsNotContinued) {
     SetAxis(1, kOn);
     SetPosition(1, 1000.0);
     Online();
-    Axis(1, kOn | ac::kAbsolute | ac::kStart);  // 30 ms
-    SetAxis(1, kOn | ac::kAbsolute);
+    Axis(1, kOn | ac::kMoveAbsolute | ac::kStart);  // 30 ms
+    SetAxis(1, kOn | ac::kMoveAbsolute);
     while (now_ < 330ms) Idle();
     // 330 ms, 300 ms into the move at 250.0: STOP (CTRL bit 1 low): 32 while the axis brakes 100 ms.
     Control(kStopLow);
@@ -309,14 +309,14 @@ TEST_F(AxisModules, StopOnlineInterruptsTheJobWhichIsNotContinued) {
     EXPECT_EQ(Position(1), 300.0);
     // No jobs while stopped: a Start edge gets CMD error 20.
     Axis(1, kOn);
-    EXPECT_EQ(Axis(1, kOn | ac::kAbsolute | ac::kStart).cmdError, AxisModule::kInadmissible);
+    EXPECT_EQ(Axis(1, kOn | ac::kMoveAbsolute | ac::kStart).cmdError, AxisModule::kInadmissible);
     // Resume (a start edge in 35): the interrupted job is not continued; a new Start is needed.
-    Axis(1, kOn | ac::kAbsolute);
+    Axis(1, kOn | ac::kMoveAbsolute);
     Control(kStartOnline);
     EXPECT_EQ(pac_.OperatingStatus(), 31);
     for (int i = 0; i < 5; ++i) Control(kIdle);
     EXPECT_EQ(Position(1), 300.0);
-    EXPECT_EQ(Axis(1, kOn | ac::kAbsolute | ac::kStart).status, kOnActive);
+    EXPECT_EQ(Axis(1, kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
     EXPECT_EQ(AxisReply(1).cmdError, 0);
 }
 
@@ -324,8 +324,8 @@ TEST_F(AxisModules, LeavingOnlineHaltsAtOnceAndJobsAreRefusedOutside) {
     SetAxis(1, kOn);
     SetPosition(1, 1000.0);
     Online();
-    Axis(1, kOn | ac::kAbsolute | ac::kStart);  // 30 ms
-    SetAxis(1, kOn | ac::kAbsolute);
+    Axis(1, kOn | ac::kMoveAbsolute | ac::kStart);  // 30 ms
+    SetAxis(1, kOn | ac::kMoveAbsolute);
     while (now_ < 230ms) Idle();
     // 230 ms (200 ms in, at 150.0): 0A81: halted at once, no ramp; home position; the job is over.
     EXPECT_EQ(SendFrame(code::kAbortOnline).operatingStatus, 1);
@@ -333,7 +333,7 @@ TEST_F(AxisModules, LeavingOnlineHaltsAtOnceAndJobsAreRefusedOutside) {
     EXPECT_EQ(AxisReply(1).status, kOnReferenced | as::kHalt);
     EXPECT_FALSE(pac_.Axes().Motion(1).Moving());
     Axis(1, kOn);
-    const AxisModuleReply r = Axis(1, kOn | ac::kAbsolute | ac::kStart);
+    const AxisModuleReply r = Axis(1, kOn | ac::kMoveAbsolute | ac::kStart);
     EXPECT_EQ(r.status, kOnReferenced | as::kHalt | as::kCmdError);
     EXPECT_EQ(r.cmdError, AxisModule::kInadmissible);
     EXPECT_FALSE(pac_.Axes().Motion(1).Moving());
@@ -343,18 +343,18 @@ TEST_F(AxisModules, EmergencyStopHaltsAtOnceAndTheModulesStillReport) {
     SetAxis(1, kOn);
     SetPosition(1, 1000.0);
     Online();
-    Axis(1, kOn | ac::kAbsolute | ac::kStart);  // 30 ms
-    SetAxis(1, kOn | ac::kAbsolute);
+    Axis(1, kOn | ac::kMoveAbsolute | ac::kStart);  // 30 ms
+    SetAxis(1, kOn | ac::kMoveAbsolute);
     while (now_ < 230ms) Idle();
     ExchangeImage(ProcessImage(bus_.Layout().Bytes()));  // 230 ms: all zero (4.2.5)
     EXPECT_TRUE(pac_.EmergencyStopActive());
     EXPECT_EQ(pac_.OperatingStatus(), 39);
-    // HALT at 150.0 (no ramp). The zero image is no control word, so ACTIVE waits for the master's Start 0.
+    // HALT at 150.0 (no ramp). The zero image is no control word, so ACTIVE waits for the PLC's Start 0.
     EXPECT_EQ(Hex(AxisModuleBytes(1)), "00 00 07 83 00 00 00 00 43 16 00 00");
-    // The master is back (Start 0): ACTIVE falls, Axis ON stays; no jobs in 39.
+    // The PLC is back (Start 0): ACTIVE falls, Axis ON stays; no jobs in 39.
     EXPECT_EQ(Axis(1, kOn).status, kOnReferenced | as::kHalt);
     EXPECT_FALSE(pac_.EmergencyStopActive());
-    EXPECT_EQ(Axis(1, kOn | ac::kAbsolute | ac::kStart).cmdError, AxisModule::kInadmissible);
+    EXPECT_EQ(Axis(1, kOn | ac::kMoveAbsolute | ac::kStart).cmdError, AxisModule::kInadmissible);
 }
 
 TEST_F(AxisModules, PowerCycleForgetsTheCmdError) {
@@ -384,7 +384,7 @@ TEST_F(TwoIdleAxes, AnAxisDisplacedDuringOffShowsInTheWholeGroup) {
     Idle();
     EXPECT_EQ(AxisReply(2).status, kOnReferenced | as::kDisplaced | as::kGroupDisplaced);
     EXPECT_EQ(AxisReply(1).status, kOnReferenced | as::kGroupDisplaced);
-    Axis(2, kOn | ac::kResetDisplaced | ac::kStart);
+    Axis(2, kOn | ac::kClearDisplaced | ac::kStart);
     EXPECT_EQ(AxisReply(2).status, kOnActive);
     EXPECT_EQ(AxisReply(1).status, kOnReferenced);
 }
@@ -395,15 +395,15 @@ TEST_F(AxisModules, G123OnTheInputSetForTheAxis) {
     Online();
     pac_.SetConditionInput(1, 5);
     pac_.Io().inputs.Set(5, true);
-    Axis(1, kOn | ac::kAbsolute | ac::kWhileInputOne | ac::kStart);  // 30 ms
-    SetAxis(1, kOn | ac::kAbsolute | ac::kWhileInputOne);
+    Axis(1, kOn | ac::kMoveAbsolute | ac::kWhileInput1 | ac::kStart);  // 30 ms
+    SetAxis(1, kOn | ac::kMoveAbsolute | ac::kWhileInput1);
     while (now_ < 230ms) Idle();
     pac_.Io().inputs.Set(5, false);
     Idle();  // 230 ms: at 150.0, braking from 1000 AE/s: 100 ms, 50 AE
-    EXPECT_EQ(AxisReply(1).status, kOnActive | as::kStoppedByG123);
+    EXPECT_EQ(AxisReply(1).status, kOnActive | as::kStoppedByCondition);
     while (AxisReply(1).status & as::kActive) Idle();
     EXPECT_EQ(Ms(), 340);  // ACTIVE fell in the cycle at 330 ms
-    EXPECT_EQ(AxisReply(1).status, kOnReferenced | as::kHalt | as::kStoppedByG123);
+    EXPECT_EQ(AxisReply(1).status, kOnReferenced | as::kHalt | as::kStoppedByCondition);
     EXPECT_EQ(Position(1), 200.0);
     EXPECT_THROW(pac_.SetConditionInput(2, 1), std::out_of_range);
 }

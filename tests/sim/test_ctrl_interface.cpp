@@ -110,7 +110,7 @@ TEST_F(CtrlInterfaceBooting, WhileBootingTheWholeReplyIsZeroAndTheBatteryStaysAc
     }
     EXPECT_EQ(Control(kIdle), 0x0001);  // 30 ms: booted, ready, battery not o.k.
     pac_.PowerCycle(now_);
-    EXPECT_EQ(ToHex(bus_.MasterRead(now_)), Zeros());
+    EXPECT_EQ(ToHex(bus_.ReadFromPac(now_)), Zeros());
     now_ += 30ms;
     EXPECT_EQ(Control(kIdle), 0x0001);
 }
@@ -120,13 +120,13 @@ TEST_F(CtrlInterfaceBooting, PowerCycleInTheMiddleOfAStartRequest) {
     EXPECT_EQ(Control(kIdle), kHomeWord);
     EXPECT_EQ(Control(kStartOnline), kHomeWord);  // 40 ms: ONLINE started (30), no mode bit yet
     EXPECT_EQ(Status(), 30);
-    pac_.PowerCycle(now_);  // 50 ms; the master keeps the start bit high
+    pac_.PowerCycle(now_);  // 50 ms; the PLC keeps the start bit high
     for (int i = 0; i < 3; ++i) {
         Idle();
         EXPECT_EQ(ReplyHex(), Zeros());
     }
     // 80 ms: booted. Before the first word after the boot the bits count as idle, so the start bit the
-    // master still holds is a rising edge: ONLINE starts again (docs/simulator.md).
+    // PLC still holds is a rising edge: ONLINE starts again (docs/sim_modes.md).
     EXPECT_EQ(Idle(), "00 00 00 00 00 1E 20 00");
     EXPECT_EQ(Status(), 30);
     EXPECT_EQ(Control(kStartOnline), kHomeWord | ctrl::kOnlineActive);
@@ -134,7 +134,7 @@ TEST_F(CtrlInterfaceBooting, PowerCycleInTheMiddleOfAStartRequest) {
 }
 
 TEST_F(CtrlInterfaceBooting, AStartBitInTheFirstWordAfterTheBootIsAnEdge) {
-    // The master's request is out before the controller has seen any control word of it.
+    // The PLC's request is out before the controller has seen any control word of it.
     ctrlWord_ = kStartOnline;
     for (int i = 0; i < 3; ++i) {  // 0, 10, 20 ms: booting
         Idle();
@@ -325,7 +325,7 @@ TEST_F(CtrlInterface, ErrorResetByClass) {
 }
 
 // The controller's real behaviour that FB_PAC_Ctrl must avoid: the low-active bits of a control word
-// left at 0 (while the master still talks on the CMD interface) stop and cancel.
+// left at 0 (while the PLC still talks on the CMD interface) stop and cancel.
 TEST_F(CtrlInterface, AnAllZeroControlWordCancels) {
     GoOnline();
     EXPECT_EQ(StatusWord(), kOnlineActiveWord);
@@ -348,7 +348,7 @@ TEST_F(CtrlInterface, AControlWordWithOnlyStopLowStops) {
     EXPECT_EQ(Control(Without(ctrl::kStop | ctrl::kErrorReset)), kOnlineStoppedWord);
 }
 
-TEST_F(CtrlInterface, AnAllZeroMasterImageIsAnEmergencyStopNotACancel) {
+TEST_F(CtrlInterface, AnAllZeroToPacImageIsAnEmergencyStopNotACancel) {
     Control(kStartOnline);
     EXPECT_EQ(Control(kIdle), kOnlineActiveWord);
     ExchangeImage(ProcessImage(16));
@@ -359,7 +359,7 @@ TEST_F(CtrlInterface, AnAllZeroMasterImageIsAnEmergencyStopNotACancel) {
     EXPECT_EQ(Control(kStartOnline), kOnlineActiveWord);  // resume
 }
 
-TEST_F(CtrlInterface, WordsOneToThreeFromTheMasterAreIgnored) {
+TEST_F(CtrlInterface, WordsOneToThreeToPacAreIgnored) {
     Control(kStartOnline);
     Control(kIdle);
     ProcessImage image(16);
@@ -391,7 +391,7 @@ TEST_F(CtrlInterface, IntegerFormatIsTakenOverOnEnteringOnlineOrAutomatic) {
     EXPECT_EQ(Send(code::kStartOnline), "00 00 00 00 00 1E 80 00");
     EXPECT_EQ(StatusWord(), kHomeWord | ctrl::kIntegerInForce);
     Send(code::kGetState);  // SEND back to 0, so the boot does not repeat the 0603
-    // After a power cycle: float again, though the master still asks for integers.
+    // After a power cycle: float again, though the PLC still asks for integers.
     pac_.PowerCycle(now_);
     EXPECT_EQ(Control(kIdle | kInteger), kHomeWord);
     EXPECT_FALSE(pac_.IntegerFormat());
@@ -402,13 +402,13 @@ TEST(CtrlIntegerFormat, WithoutACtrlModuleTheFormatIsFloat) {
     config.modes.requireExternalStop = false;
     Bus bus;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kStartOnline, 0, 0, true));
     pac.Cycle(0ms);
     pac.Cycle(10ms);
     EXPECT_EQ(pac.OperatingStatus(), 31);
     EXPECT_FALSE(pac.IntegerFormat());
     EXPECT_EQ(pac.CtrlStatusWord(), kOnlineActiveWord);
-    EXPECT_EQ(bus.MasterRead(10ms).Size(), 8U);
+    EXPECT_EQ(bus.ReadFromPac(10ms).Size(), 8U);
 }
 
 // Both interfaces on the one mode machine: start via CTRL, stop via 0600 and cancel via 0A81 while the

@@ -108,14 +108,14 @@ TEST_F(ElementCommands, CountsAreConfigurable) {
     config.counts.inputs = 20;
     Bus bus;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kGetIntReg, 101, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kGetIntReg, 101, 0, true));
     pac.Cycle(0ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 01 C0 26");
+    EXPECT_EQ(ToHex(bus.ReadFromPac(0ms)), "00 00 00 00 00 01 C0 26");
     // Input word 2 holds I17..I20 only; I20 is bit 3.
     pac.Io().inputs.Set(20, true);
-    bus.MasterWrite(10ms, MasterImage(code::kGetInputWord, 17, 0, false));
+    bus.WriteToPac(10ms, CommandImage(code::kGetInputWord, 17, 0, false));
     pac.Cycle(10ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(10ms)), "00 00 00 08 00 01 20 00");
+    EXPECT_EQ(ToHex(bus.ReadFromPac(10ms)), "00 00 00 08 00 01 20 00");
 }
 
 TEST_F(ElementCommands, ValidInEveryMode) {

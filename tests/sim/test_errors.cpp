@@ -90,11 +90,11 @@ TEST_F(CommandErrors, LogRecordsEveryCycle) {
     EXPECT_EQ(records[1].time, 10ms);
     EXPECT_TRUE(records[1].newCommand);
     EXPECT_FALSE(records[2].newCommand);
-    EXPECT_EQ(ToHex(records[1].master), "00 00 00 00 00 00 99 0B");
-    EXPECT_EQ(ToHex(records[1].reply), "00 00 00 01 00 01 A0 00");
+    EXPECT_EQ(ToHex(records[1].toPac), "00 00 00 00 00 00 99 0B");
+    EXPECT_EQ(ToHex(records[1].fromPac), "00 00 00 01 00 01 A0 00");
     EXPECT_EQ(pac_.Log().Format(),
-              "        0 ms  M 00 00 00 00 00 00 00 00  S 00 00 00 00 00 01 20 00\n"
-              "       10 ms  M 00 00 00 00 00 00 99 0B  S 00 00 00 01 00 01 A0 00  <- new command\n");
+              "        0 ms  to PAC 00 00 00 00 00 00 00 00  from PAC 00 00 00 00 00 01 20 00\n"
+              "       10 ms  to PAC 00 00 00 00 00 00 99 0B  from PAC 00 00 00 01 00 01 A0 00  <- new command\n");
 }
 
 }  // namespace

@@ -65,12 +65,12 @@ TEST(Image8, RealBitPatterns) {
     EXPECT_EQ(FloatToBits(111.111F), 0x42DE38D5U);
 }
 
-TEST(CmdFrame, MasterImageLayout) {
+TEST(CmdFrame, CommandImageLayout) {
     // 2.4.1: data dword at bytes 0..3, parameter word 2, SEND bit 15 and code in word 3.
-    EXPECT_EQ(ToHex(MasterImage(0x1900, 5, 0, false)), "00 00 00 00 00 05 19 00");
-    EXPECT_EQ(ToHex(MasterImage(0x1900, 5, 0, true)), "00 00 00 00 00 05 99 00");
-    EXPECT_EQ(ToHex(MasterImage(0x0906, 3, 333, true)), "00 00 01 4D 00 03 89 06");
-    const MasterFrame frame = MasterFrame::Decode(FromHex("44 20 00 00 01 02 8A 87"));
+    EXPECT_EQ(ToHex(CommandImage(0x1900, 5, 0, false)), "00 00 00 00 00 05 19 00");
+    EXPECT_EQ(ToHex(CommandImage(0x1900, 5, 0, true)), "00 00 00 00 00 05 99 00");
+    EXPECT_EQ(ToHex(CommandImage(0x0906, 3, 333, true)), "00 00 01 4D 00 03 89 06");
+    const CommandFrame frame = CommandFrame::Decode(FromHex("44 20 00 00 01 02 8A 87"));
     EXPECT_EQ(frame.data, 0x44200000U);
     EXPECT_EQ(frame.parameter, 0x0102);
     EXPECT_TRUE(frame.send);

@@ -20,8 +20,8 @@ protected:
 
 struct Row {
     const char* action;
-    const char* master;
-    const char* reply;
+    const char* toPac;
+    const char* fromPac;
 };
 
 TEST_F(InterbusExample, CorrectedTableByteForByte) {
@@ -44,7 +44,7 @@ TEST_F(InterbusExample, CorrectedTableByteForByte) {
         {"nothing new", "00 00 00 00 00 01 19 07", "44 20 00 00 00 01 20 00"},
     };
     for (const Row& row : rows) {
-        EXPECT_EQ(Exchange(FromHex(row.master)), row.reply) << row.action << "\n" << pac_.Log().Format();
+        EXPECT_EQ(Exchange(FromHex(row.toPac)), row.fromPac) << row.action << "\n" << pac_.Log().Format();
     }
     EXPECT_EQ(pac_.Io().intRegisters.GetInt(3), 333);
     EXPECT_EQ(pac_.Io().intRegisters.GetInt(2), 12345678);

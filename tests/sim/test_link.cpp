@@ -163,27 +163,27 @@ TEST(Link, TimeMustNotRunBackwards) {
 
 TEST(Bus, CarriesEachDirectionWithItsOwnLatency) {
     BusConfig config;
-    config.toSlave.latency = 3ms;
-    config.toMaster.latency = 1ms;
+    config.toPac.latency = 3ms;
+    config.fromPac.latency = 1ms;
     Bus bus(config);
-    bus.MasterWrite(0ms, kA);
-    bus.SlaveWrite(0ms, kB);
-    EXPECT_EQ(bus.MasterRead(1ms), kB);
-    EXPECT_EQ(bus.SlaveRead(2ms), kZero);
-    EXPECT_EQ(bus.SlaveRead(3ms), kA);
+    bus.WriteToPac(0ms, kA);
+    bus.WriteFromPac(0ms, kB);
+    EXPECT_EQ(bus.ReadFromPac(1ms), kB);
+    EXPECT_EQ(bus.ReadToPac(2ms), kZero);
+    EXPECT_EQ(bus.ReadToPac(3ms), kA);
 }
 
 TEST(Bus, DisconnectAndReconnectBothDirections) {
     Bus bus;
-    bus.MasterWrite(0ms, kA);
-    bus.SlaveWrite(0ms, kB);
+    bus.WriteToPac(0ms, kA);
+    bus.WriteFromPac(0ms, kB);
     bus.Disconnect(1ms);
-    EXPECT_EQ(bus.SlaveRead(1ms), kZero);
-    EXPECT_EQ(bus.MasterRead(1ms), kZero);
+    EXPECT_EQ(bus.ReadToPac(1ms), kZero);
+    EXPECT_EQ(bus.ReadFromPac(1ms), kZero);
     bus.Reconnect(2ms);
-    bus.MasterWrite(3ms, kA);
-    EXPECT_EQ(bus.SlaveRead(3ms), kA);
-    EXPECT_EQ(bus.MasterRead(3ms), kZero);
+    bus.WriteToPac(3ms, kA);
+    EXPECT_EQ(bus.ReadToPac(3ms), kA);
+    EXPECT_EQ(bus.ReadFromPac(3ms), kZero);
 }
 
 }  // namespace

@@ -27,11 +27,11 @@ TEST_F(ModeCommands, StartOnlineWithoutTheExternalStopCheck) {
     config.modes.requireExternalStop = false;
     Bus bus;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kStartOnline, 0, 0, true));
     pac.Cycle(0ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 1E 80 00");
+    EXPECT_EQ(ToHex(bus.ReadFromPac(0ms)), "00 00 00 00 00 1E 80 00");
     pac.Cycle(10ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(10ms)), "00 00 00 00 00 1F A0 00");
+    EXPECT_EQ(ToHex(bus.ReadFromPac(10ms)), "00 00 00 00 00 1F A0 00");
 }
 
 TEST_F(ModeCommands, StartAutoAndStopIt) {

@@ -157,7 +157,7 @@ TEST_F(ModeMachineTest, SystemErrorOfClass1NeedsAPowerCycle) {
     pac_.PowerCycle(now_);
     EXPECT_EQ(pac_.SystemError(), 0);
     send_ = false;
-    EXPECT_EQ(Exchange(MasterImage(code::kGetState, 0, 0, false)), "00 00 00 00 00 01 20 00");
+    EXPECT_EQ(Exchange(CommandImage(code::kGetState, 0, 0, false)), "00 00 00 00 00 01 20 00");
 }
 
 TEST_F(ModeMachineTest, ErrorsRaisedInHomePositionShow9UntilReset) {
@@ -234,12 +234,12 @@ TEST(ModeMachineScript, ZeroCycleStepsPassWithinTheCycle) {
     config.modes.automatic = AutomaticScript{0, 0, 0, 0};
     Bus bus;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kStartAuto, 0, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kStartAuto, 0, 0, true));
     pac.Cycle(0ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(0ms)), "00 00 00 00 00 0B A0 00");  // 10 not shown
-    bus.MasterWrite(10ms, MasterImage(code::kStop, 0, 0, false));
+    EXPECT_EQ(ToHex(bus.ReadFromPac(0ms)), "00 00 00 00 00 0B A0 00");  // 10 not shown
+    bus.WriteToPac(10ms, CommandImage(code::kStop, 0, 0, false));
     pac.Cycle(10ms);
-    EXPECT_EQ(ToHex(bus.MasterRead(10ms)), "00 00 00 00 00 0F 20 00");  // 12, 13 not shown
+    EXPECT_EQ(ToHex(bus.ReadFromPac(10ms)), "00 00 00 00 00 0F 20 00");  // 12, 13 not shown
 }
 
 TEST_F(ModeMachineTest, DroppingTheExternalStopInputStopsOnline) {
@@ -276,7 +276,7 @@ TEST(ModeMachineWithoutExternalStop, OnlineNeedsNoInput) {
     config.modes.requireExternalStop = false;
     Bus bus;
     PaControl pac(bus, config);
-    bus.MasterWrite(0ms, MasterImage(code::kStartOnline, 0, 0, true));
+    bus.WriteToPac(0ms, CommandImage(code::kStartOnline, 0, 0, true));
     for (int k = 0; k < 5; ++k) pac.Cycle(10ms * k);
     EXPECT_EQ(pac.OperatingStatus(), 31);
 }
@@ -284,7 +284,7 @@ TEST(ModeMachineWithoutExternalStop, OnlineNeedsNoInput) {
 TEST_F(ModeMachineTest, EmergencyStopThenResume) {
     Cmd(code::kStartAuto);
     EXPECT_EQ(Trace(1), "11/1");
-    // All-zero master image: 19 at once, no system error; a repeated start resumes.
+    // All-zero to-PAC image: 19 at once, no system error; a repeated start resumes.
     EXPECT_EQ(Exchange(Image8{}), "00 00 00 00 00 13 A0 00");
     EXPECT_EQ(Cmd(code::kStartAuto), "16/0");
     EXPECT_EQ(Trace(1), "11/1");
@@ -322,8 +322,8 @@ TEST_F(ModeMachineBooting, PowerCycleDuringAStartDropsIt) {
     Idle();
     StartOnline();                                   // 40 ms: 30, BF = 0, SEND 1
     pac_.PowerCycle(now_);                           // 50 ms
-    send_ = false;                                   // the master resynchronises
-    EXPECT_EQ(Exchange(MasterImage(code::kGetState, 0, 0, false)), "00 00 00 00 00 00 00 00");
+    send_ = false;                                   // the PLC resynchronises
+    EXPECT_EQ(Exchange(CommandImage(code::kGetState, 0, 0, false)), "00 00 00 00 00 00 00 00");
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");  // 80 ms: home position, nothing outstanding
@@ -353,7 +353,7 @@ TEST_F(ModeMachineBooting, PowerCycleDuringTheAutomaticStopProgram) {
     EXPECT_EQ(Cmd(code::kStop), "13/0");
     pac_.PowerCycle(now_);
     send_ = false;
-    Exchange(MasterImage(code::kGetState, 0, 0, false));
+    Exchange(CommandImage(code::kGetState, 0, 0, false));
     now_ += 30ms;
     EXPECT_EQ(Statuses(3), "1 1 1");
 }

@@ -1,5 +1,5 @@
 // Power-up and power cycle: status 0 and an all-zero reply until the boot ends, then home position
-// with RF = 0; what a master holding SEND = 1 causes; retention of registers and parameters.
+// with RF = 0; what a PLC holding SEND = 1 causes; retention of registers and parameters.
 #include <gtest/gtest.h>
 
 #include "sim_fixture.hpp"
@@ -14,8 +14,8 @@ protected:
 
 TEST_F(PowerCycle, AllZeroUntilBootedAndCommandsWaitForTheBoot) {
     pac_.Io().intRegisters.SetInt(1, 5);
-    // The master already toggles SEND at 0 ms: nothing happens while booting.
-    EXPECT_EQ(Exchange(MasterImage(code::kGetIntReg, 1, 0, true)), "00 00 00 00 00 00 00 00");  // 0 ms
+    // The PLC already toggles SEND at 0 ms: nothing happens while booting.
+    EXPECT_EQ(Exchange(CommandImage(code::kGetIntReg, 1, 0, true)), "00 00 00 00 00 00 00 00");  // 0 ms
     EXPECT_FALSE(pac_.Booted());
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");  // 10 ms
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");  // 20 ms
@@ -31,13 +31,13 @@ TEST_F(PowerCycle, ResyncAfterAPowerCycle) {
     pac_.Io().intRegisters.SetInt(1, 5);
     send_ = false;
     EXPECT_EQ(Send(code::kGetIntReg, 1), "00 00 00 05 00 01 A0 00");  // 30 ms: RF = 1
-    // Power off and on at 40 ms: the master sees zeros at once (RF back to 0, status 0).
+    // Power off and on at 40 ms: the PLC sees zeros at once (RF back to 0, status 0).
     pac_.PowerCycle(40ms);
-    EXPECT_EQ(ToHex(bus_.MasterRead(40ms)), "00 00 00 00 00 00 00 00");
+    EXPECT_EQ(ToHex(bus_.ReadFromPac(40ms)), "00 00 00 00 00 00 00 00");
     EXPECT_EQ(pac_.OperatingStatus(), 0);
-    // The master resynchronises while the status is 0: SEND := RF = 0 (what FB_PAC_Cmd does idle).
+    // The PLC resynchronises while the status is 0: SEND := RF = 0 (what FB_PAC_Cmd does idle).
     send_ = false;
-    EXPECT_EQ(Exchange(MasterImage(code::kGetIntReg, 1, 0, false)), "00 00 00 00 00 00 00 00");  // 40
+    EXPECT_EQ(Exchange(CommandImage(code::kGetIntReg, 1, 0, false)), "00 00 00 00 00 00 00 00");  // 40
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");  // 50
     EXPECT_EQ(Idle(), "00 00 00 00 00 00 00 00");  // 60
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");  // 70: booted, nothing outstanding
@@ -45,7 +45,7 @@ TEST_F(PowerCycle, ResyncAfterAPowerCycle) {
     EXPECT_EQ(Send(code::kGetIntReg, 1), "00 00 00 05 00 01 A0 00");
 }
 
-TEST_F(PowerCycle, AMasterHoldingSendRepeatsItsLastCommandAfterTheBoot) {
+TEST_F(PowerCycle, APlcHoldingSendRepeatsItsLastCommandAfterTheBoot) {
     now_ = 30ms;
     EXPECT_EQ(Send(code::kPutIntReg, 7, 1), "00 00 00 01 00 01 A0 00");  // N7 := 1, SEND 1
     pac_.Io().intRegisters.SetInt(7, 100);  // changed meanwhile
@@ -111,7 +111,7 @@ TEST_F(PowerCycle, PowerCycleDuringAMoveStopsTheAxisAndDropsTheCommand) {
     EXPECT_FALSE(pac_.Axes().Motion(1).Moving());
     EXPECT_DOUBLE_EQ(pac_.Axes().Motion(1).Position(), 1.125);
     for (int i = 0; i < 3; ++i) Idle();                                              // 70..90 ms
-    // 100 ms: booted in home position; the master's SEND (0) equals RF (0): nothing outstanding.
+    // 100 ms: booted in home position; the PLC's SEND (0) equals RF (0): nothing outstanding.
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");
 }
 

@@ -13,54 +13,11 @@
 #include <deque>
 #include <vector>
 
+#include "pac/axis_module_bits.hpp"
+
 namespace pac::test {
 
 using AxisImage = std::array<std::uint8_t, 12>;
-
-// Control word of the axis (2.7.1; bit 4 is G26, NOTES.md).
-namespace axis_ctrl {
-constexpr std::uint32_t kAxisOn = 1u << 0;
-constexpr std::uint32_t kDisableDrive = 1u << 1;
-constexpr std::uint32_t kStart = 1u << 2;
-constexpr std::uint32_t kHome = 1u << 3;
-constexpr std::uint32_t kSetReferenced = 1u << 4;
-constexpr std::uint32_t kSetPosition = 1u << 5;
-constexpr std::uint32_t kAbsolute = 1u << 6;
-constexpr std::uint32_t kRelative = 1u << 7;
-constexpr std::uint32_t kWhileInput1 = 1u << 8;
-constexpr std::uint32_t kWhileInput0 = 1u << 9;
-constexpr std::uint32_t kJogPositive = 1u << 10;
-constexpr std::uint32_t kJogNegative = 1u << 11;
-constexpr std::uint32_t kClearOffset = 1u << 12;
-constexpr std::uint32_t kClearDisplaced = 1u << 13;
-constexpr std::uint32_t kToMax = 1u << 14;
-constexpr std::uint32_t kToMin = 1u << 15;
-constexpr std::uint32_t kResetAxisError = 1u << 16;
-constexpr std::uint32_t kDisableLimitSwitches = 1u << 17;
-constexpr std::uint32_t kTraverseBits = kHome | kSetReferenced | kSetPosition | kAbsolute | kRelative |
-                                        kJogPositive | kJogNegative | kClearOffset | kClearDisplaced | kToMax |
-                                        kToMin;
-}  // namespace axis_ctrl
-
-// Status word of the axis (2.7.2).
-namespace axis_status {
-constexpr std::uint32_t kDriveEnabled = 1u << 0;
-constexpr std::uint32_t kHalt = 1u << 1;
-constexpr std::uint32_t kDriveDisabled = 1u << 2;
-constexpr std::uint32_t kSafe = 1u << 3;
-constexpr std::uint32_t kIdle = 1u << 4;
-constexpr std::uint32_t kDisabled = 1u << 5;
-constexpr std::uint32_t kFault = 1u << 6;
-constexpr std::uint32_t kActive = 1u << 7;
-constexpr std::uint32_t kReferenced = 1u << 8;
-constexpr std::uint32_t kNegativeLimitNotActuated = 1u << 9;
-constexpr std::uint32_t kPositiveLimitNotActuated = 1u << 10;
-constexpr std::uint32_t kStoppedByCondition = 1u << 11;
-constexpr std::uint32_t kDisplaced = 1u << 12;
-constexpr std::uint32_t kGroupDisplaced = 1u << 13;
-constexpr std::uint32_t kCmdError = 1u << 14;
-constexpr std::uint32_t kAxisError = 1u << 15;
-}  // namespace axis_status
 
 inline std::uint32_t ReadBe32(const AxisImage& image, int at) {
     return (std::uint32_t{image[at]} << 24) | (std::uint32_t{image[at + 1]} << 16) |
@@ -128,7 +85,7 @@ public:
 
     // One controller cycle on the control word image it receives; returns the module it sends.
     AxisImage Cycle(const AxisImage& fromMaster) {
-        using namespace axis_ctrl;
+        using namespace axis_control;
         const std::uint32_t control = ReadBe32(fromMaster, 0);
         axisOn_ = (control & kAxisOn) != 0;
         const bool start = (control & kStart) != 0;
@@ -204,7 +161,7 @@ public:
     void InterruptFromOutside() { interruptFromOutside_ = true; }
     // The G123 input of the running move changes: it brakes and reports "stopped by G123".
     void StopByCondition() {
-        if (moving_ && (job_.control & (axis_ctrl::kWhileInput0 | axis_ctrl::kWhileInput1)) != 0) {
+        if (moving_ && (job_.control & (axis_control::kWhileInput0 | axis_control::kWhileInput1)) != 0) {
             BeginBraking();
             conditionStopping_ = true;
         }
@@ -227,7 +184,7 @@ public:
 
 private:
     static int TraverseBitCount(std::uint32_t control) {
-        return static_cast<int>(std::bitset<32>(control & axis_ctrl::kTraverseBits).count());
+        return static_cast<int>(std::bitset<32>(control & axis_control::kTraverseBits).count());
     }
 
     std::uint32_t EncodePosition(float value) const {
@@ -261,11 +218,11 @@ private:
 
     // The Start edge of a job while no job is processed (2.7.3.2): take it over or refuse it.
     void Recognise(const AxisImage& image) {
-        using namespace axis_ctrl;
+        using namespace axis_control;
         ReceivedJob job{ReadBe32(image, 0), ReadBe16(image, 4), ReadBe16(image, 6), ReadBe32(image, 8)};
         jobs_.push_back(job);
         const std::uint32_t traverse = job.control & kTraverseBits;
-        const bool needsReference = (traverse & (kAbsolute | kRelative | kToMax | kToMin)) != 0;
+        const bool needsReference = (traverse & (kMoveAbsolute | kMoveRelative | kMoveToMax | kMoveToMin)) != 0;
         std::uint16_t refusal = 0;
         if (TraverseBitCount(job.control) != 1) {
             refusal = 20;  // no or several traverse bits
@@ -293,10 +250,10 @@ private:
         if ((job.control & (kWhileInput0 | kWhileInput1)) != 0) stoppedByCondition_ = false;
         switch (traverse) {
             case kHome: StartMove(0.0f); break;
-            case kAbsolute: StartMove(value); break;
-            case kRelative: StartMove(position_ + value); break;
-            case kToMax: StartMove(1000.0f); break;
-            case kToMin: StartMove(-1000.0f); break;
+            case kMoveAbsolute: StartMove(value); break;
+            case kMoveRelative: StartMove(position_ + value); break;
+            case kMoveToMax: StartMove(1000.0f); break;
+            case kMoveToMin: StartMove(-1000.0f); break;
             case kJogPositive: StartMove(position_ + std::fabs(value)); break;
             case kJogNegative: StartMove(position_ - std::fabs(value)); break;
             case kSetReferenced:
@@ -333,7 +290,7 @@ private:
             return;
         }
         position_ = target_;
-        if ((job_.control & axis_ctrl::kHome) != 0) referenced_ = true;
+        if ((job_.control & axis_control::kHome) != 0) referenced_ = true;
     }
 
     // The running job: interruption by a missing traverse bit, Axis ON 0 or from outside; ACTIVE falls
@@ -341,7 +298,7 @@ private:
     void Progress(std::uint32_t control, bool start) {
         if (!active_) return;
         if (moving_ && !braking_) {
-            const bool keep = (control & job_.control & axis_ctrl::kTraverseBits) != 0 && axisOn_;
+            const bool keep = (control & job_.control & axis_control::kTraverseBits) != 0 && axisOn_;
             if (!keep || interruptFromOutside_) BeginBraking();
         }
         interruptFromOutside_ = false;

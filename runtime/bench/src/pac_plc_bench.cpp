@@ -8,8 +8,8 @@ pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::Module
     pac::sim::BusConfig config;
     config.layout = layout;
     const auto latency = t.plcCycle * t.latencyCycles;
-    config.toSlave = {latency, t.jitter, t.seed};
-    config.toMaster = {latency, t.jitter, t.seed + 1};
+    config.toPac = {latency, t.jitter, t.seed};
+    config.fromPac = {latency, t.jitter, t.seed + 1};
     return config;
 }
 
@@ -31,7 +31,7 @@ PacPlcBench::PacPlcBench(PlcBenchTiming timing, pac::sim::PaControlConfig config
       toPac_(layout.Bytes()),
       fromPac_(layout.Bytes()) {
     runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
-    task_.AddProgram([this] { fromPac_ = bus_.MasterRead(clock_.Now()); });
+    task_.AddProgram([this] { fromPac_ = bus_.ReadFromPac(clock_.Now()); });
 }
 
 void PacPlcBench::CallRaw8(std::size_t offset,
@@ -46,7 +46,7 @@ void PacPlcBench::CallRaw8(std::size_t offset,
 }
 
 void PacPlcBench::Start() {
-    task_.AddProgram([this] { bus_.MasterWrite(clock_.Now(), toPac_); });
+    task_.AddProgram([this] { bus_.WriteToPac(clock_.Now(), toPac_); });
 }
 
 void PacPlcBench::Scan(int n) {
@@ -64,10 +64,10 @@ int PacPlcBench::ScanUntil(const std::function<bool()>& predicate, int maxScans)
 int PacPlcBench::ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
     const auto latency = timing_.plcCycle * timing_.latencyCycles;
     const auto arrival = edgeTime + latency;
-    auto slaveTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
-    while (slaveTime < arrival || slaveTime <= edgeTime) slaveTime += timing_.pacCycle;
+    auto pacTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
+    while (pacTime < arrival || pacTime <= edgeTime) pacTime += timing_.pacCycle;
     auto scanTime = edgeTime;
-    while (scanTime < slaveTime + latency) scanTime += timing_.plcCycle;
+    while (scanTime < pacTime + latency) scanTime += timing_.plcCycle;
     return static_cast<int>((scanTime - edgeTime) / timing_.plcCycle);
 }
 

@@ -1,4 +1,4 @@
-// One axis module in ONLINE mode (see axis_module.hpp and docs/simulator.md "Axis modules (2.7)").
+// One axis module in ONLINE mode (see axis_module.hpp and docs/sim_axis_modules.md).
 #include "pac/sim/axis_module.hpp"
 
 #include <cmath>
@@ -89,13 +89,13 @@ void AxisModule::SetConditionInput(int input) {
     conditionInput_ = input;
 }
 
-Image12 AxisModule::Cycle(const Image12& master, ServoAxis& axis, const AxisModuleContext& context) {
-    Serve(master, axis, context);
+Image12 AxisModule::Cycle(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context) {
+    Serve(toPac, axis, context);
     return Reply(axis, context);
 }
 
-void AxisModule::Serve(const Image12& master, ServoAxis& axis, const AxisModuleContext& context) {
-    const AxisModuleCommand command = AxisModuleCommand::Decode(master);
+void AxisModule::Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context) {
+    const AxisModuleCommand command = AxisModuleCommand::Decode(toPac);
     const std::uint32_t control = command.control;
     axis.Update(context.now);
     if (pendingCmdError_ != 0) {  // kOneCycleClear: the refusal of the last cycle's Start edge
@@ -179,33 +179,33 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     const std::uint32_t control = command.control;
     const std::uint32_t traverse = control & kTraverseBits;
     if (!SingleBit(traverse)) return kInadmissible;  // none, or several traverse bits (2.7.2 notes)
-    const bool whileOne = (control & kWhileInputOne) != 0;
-    const bool whileZero = (control & kWhileInputZero) != 0;
+    const bool whileOne = (control & kWhileInput1) != 0;
+    const bool whileZero = (control & kWhileInput0) != 0;
     const Condition condition =
         whileOne ? Condition::kWhileOne : (whileZero ? Condition::kWhileZero : Condition::kNone);
     if (whileOne && whileZero) return kInadmissible;
-    if (condition != Condition::kNone && traverse != kAbsolute && traverse != kRelative) return kInadmissible;
+    if (condition != Condition::kNone && traverse != kMoveAbsolute && traverse != kMoveRelative) return kInadmissible;
 
     const auto now = context.now;
     const double position = DecodeModulePosition(command.position, context.integerFormat);
     // Invalid per mille: dynamics the axis refuses with 41, in its own order of checks (after 46/55/56/42).
     const Dynamics dynamics = ScaledDynamics(axis.Config(), command.speedPerMille, command.accelerationPerMille)
                                   .value_or(Dynamics{0.0, 0.0, 0.0});
-    const JobOptions options{(control & kLimitSwitchMonitoringOff) == 0};  // bit 17, taken over with Start
+    const JobOptions options{(control & kDisableLimitSwitches) == 0};  // bit 17, taken over with Start
 
     std::uint16_t result = axis_error::kNone;
     switch (traverse) {
         case kHome: result = axis.Home(now); break;
         case kSetReferenced: result = axis.SetPositionReferenced(now, position); break;
-        case kShift: result = axis.ShiftPosition(now, position); break;
-        case kAbsolute: result = axis.MoveAbsolute(now, position, dynamics, options); break;
-        case kRelative: result = axis.MoveRelative(now, position, dynamics, options); break;
+        case kSetPosition: result = axis.ShiftPosition(now, position); break;
+        case kMoveAbsolute: result = axis.MoveAbsolute(now, position, dynamics, options); break;
+        case kMoveRelative: result = axis.MoveRelative(now, position, dynamics, options); break;
         case kJogPositive: result = axis.Jog(now, Direction::kPositive, std::fabs(position), dynamics, options); break;
         case kJogNegative: result = axis.Jog(now, Direction::kNegative, std::fabs(position), dynamics, options); break;
-        case kDeleteShift: result = axis.DeleteShift(now); break;
-        case kResetDisplaced: result = axis.ResetDisplaced(now); break;
-        case kToMaxRange: result = axis.MoveToMaxRange(now, dynamics, options); break;
-        default: result = axis.MoveToMinRange(now, dynamics, options); break;  // kToMinRange
+        case kClearOffset: result = axis.DeleteShift(now); break;
+        case kClearDisplaced: result = axis.ResetDisplaced(now); break;
+        case kMoveToMax: result = axis.MoveToMaxRange(now, dynamics, options); break;
+        default: result = axis.MoveToMinRange(now, dynamics, options); break;  // kMoveToMin
     }
     if (result != axis_error::kNone) return result;
 
@@ -244,9 +244,9 @@ Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& contex
     if (axis.Fault()) status |= kFault | kAxisError;
     if (active_) status |= kActive;
     if (axis.Referenced()) status |= kReferenced;
-    if (!axis.NegativeLimitSwitch()) status |= kNegativeLimitSwitch;
-    if (!axis.PositiveLimitSwitch()) status |= kPositiveLimitSwitch;
-    if (stoppedByG123_) status |= kStoppedByG123;
+    if (!axis.NegativeLimitSwitch()) status |= kNegativeLimitNotActuated;
+    if (!axis.PositiveLimitSwitch()) status |= kPositiveLimitNotActuated;
+    if (stoppedByG123_) status |= kStoppedByCondition;
     if (axis.DisplacedDuringOff()) status |= kDisplaced;
     if (axis.DisplacedDuringOff() || context.groupDisplaced) status |= kGroupDisplaced;
     if (cmdError_ != 0) status |= kCmdError;

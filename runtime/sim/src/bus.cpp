@@ -14,17 +14,17 @@ const ModuleLayout& Validated(const ModuleLayout& layout) {
 
 Bus::Bus(BusConfig config)
     : layout_(Validated(config.layout)),
-      toSlave_(config.toSlave, layout_.Bytes()),
-      toMaster_(config.toMaster, layout_.Bytes()) {}
+      toPac_(config.toPac, layout_.Bytes()),
+      fromPac_(config.fromPac, layout_.Bytes()) {}
 
 void Bus::Disconnect(std::chrono::nanoseconds now) {
-    toSlave_.SetFault(now, LinkFault::kDisconnected);
-    toMaster_.SetFault(now, LinkFault::kDisconnected);
+    toPac_.SetFault(now, LinkFault::kDisconnected);
+    fromPac_.SetFault(now, LinkFault::kDisconnected);
 }
 
 void Bus::Reconnect(std::chrono::nanoseconds now) {
-    toSlave_.SetFault(now, LinkFault::kNone);
-    toMaster_.SetFault(now, LinkFault::kNone);
+    toPac_.SetFault(now, LinkFault::kNone);
+    fromPac_.SetFault(now, LinkFault::kNone);
 }
 
 }  // namespace pac::sim

@@ -11,8 +11,8 @@ constexpr std::uint16_t kErrorNumberMask = 0x1FFF;
 constexpr std::uint16_t kCodeMask = 0x7FFF;
 }  // namespace
 
-MasterFrame MasterFrame::Decode(const Image8& image) {
-    MasterFrame frame;
+CommandFrame CommandFrame::Decode(const Image8& image) {
+    CommandFrame frame;
     frame.data = ReadDword(image, 0);
     frame.parameter = ReadWord(image, 2);
     const std::uint16_t word3 = ReadWord(image, 3);
@@ -21,7 +21,7 @@ MasterFrame MasterFrame::Decode(const Image8& image) {
     return frame;
 }
 
-Image8 MasterFrame::Encode() const {
+Image8 CommandFrame::Encode() const {
     Image8 image{};
     WriteDword(image, 0, data);
     WriteWord(image, 2, parameter);
@@ -53,7 +53,7 @@ Image8 ReplyFrame::Encode() const {
     return image;
 }
 
-bool operator==(const MasterFrame& a, const MasterFrame& b) {
+bool operator==(const CommandFrame& a, const CommandFrame& b) {
     return a.data == b.data && a.parameter == b.parameter && a.send == b.send && a.code == b.code;
 }
 
@@ -63,8 +63,8 @@ bool operator==(const ReplyFrame& a, const ReplyFrame& b) {
            a.endOfProcessing == b.endOfProcessing && a.errorNumber == b.errorNumber;
 }
 
-Image8 MasterImage(std::uint16_t code, std::uint16_t parameter, std::uint32_t data, bool send) {
-    MasterFrame frame;
+Image8 CommandImage(std::uint16_t code, std::uint16_t parameter, std::uint32_t data, bool send) {
+    CommandFrame frame;
     frame.code = code;
     frame.parameter = parameter;
     frame.data = data;

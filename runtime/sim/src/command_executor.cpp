@@ -1,5 +1,5 @@
 // The commands of manual chapter 5 on the simulated controller (see command_executor.hpp and
-// docs/simulator.md for what the simulator decides where the manual is silent).
+// docs/sim_cmd.md for what the simulator decides where the manual is silent).
 #include "pac/sim/command_executor.hpp"
 
 #include <cmath>
@@ -19,7 +19,7 @@ std::uint32_t Real(double value) { return FloatToBits(static_cast<float>(value))
 
 }  // namespace
 
-CommandResult CommandExecutor::Execute(const MasterFrame& c, std::chrono::nanoseconds now,
+CommandResult CommandExecutor::Execute(const CommandFrame& c, std::chrono::nanoseconds now,
                                        PendingCommand& pending) {
     const CommandInfo* info = FindCommand(c.code);
     if (info == nullptr) return Fail(error::kUnknownCommand);
@@ -89,7 +89,7 @@ CommandResult CommandExecutor::Poll(const PendingCommand& pending, std::chrono::
     return Ack(0);
 }
 
-CommandResult CommandExecutor::ModeCommand(const MasterFrame& c, std::chrono::nanoseconds now,
+CommandResult CommandExecutor::ModeCommand(const CommandFrame& c, std::chrono::nanoseconds now,
                                            PendingCommand& pending) {
     ModeRequestResult result = ModeRequestResult::kNotInThisStatus;
     switch (c.code) {
@@ -112,7 +112,7 @@ CommandResult CommandExecutor::ModeCommand(const MasterFrame& c, std::chrono::na
     return CommandResult{0, error::kNone, !modes_.Transitional()};
 }
 
-CommandResult CommandExecutor::SystemParameterCommand(const MasterFrame& c) {
+CommandResult CommandExecutor::SystemParameterCommand(const CommandFrame& c) {
     ParameterTable& table = state_.systemParameters;
     const std::uint16_t number = c.parameter;
     if (!table.Contains(number)) return Fail(error::kSystemParameterUnknown);
@@ -126,7 +126,7 @@ CommandResult CommandExecutor::SystemParameterCommand(const MasterFrame& c) {
     }
 }
 
-CommandResult CommandExecutor::AxisParameterCommand(const MasterFrame& c) {
+CommandResult CommandExecutor::AxisParameterCommand(const CommandFrame& c) {
     // 5.2.3: parameter high byte = axis, low byte = axis parameter number.
     const int axis = c.parameter >> 8;
     const std::uint16_t number = c.parameter & 0xFF;
@@ -144,7 +144,7 @@ CommandResult CommandExecutor::AxisParameterCommand(const MasterFrame& c) {
     }
 }
 
-CommandResult CommandExecutor::ElementCommand(const MasterFrame& c) {
+CommandResult CommandExecutor::ElementCommand(const CommandFrame& c) {
     Elements& e = state_.elements;
     const int n = c.parameter;
     const std::uint16_t value16 = LowWord(c.data);
@@ -196,7 +196,7 @@ CommandResult CommandExecutor::ElementCommand(const MasterFrame& c) {
     }
 }
 
-CommandResult CommandExecutor::StatusCommand(const MasterFrame& c) {
+CommandResult CommandExecutor::StatusCommand(const CommandFrame& c) {
     switch (c.code) {
         case code::kResetError:
             // 5.2.4.15: CPU errors (1..99) need a power cycle: "command not executable", and the
@@ -236,7 +236,7 @@ CommandResult CommandExecutor::StatusCommand(const MasterFrame& c) {
     }
 }
 
-CommandResult CommandExecutor::SystemElementCommand(const MasterFrame& c) {
+CommandResult CommandExecutor::SystemElementCommand(const CommandFrame& c) {
     // 6.2: a few system elements follow the controller's state; the rest are plain storage.
     const int n = c.parameter;
     const AxisGroup& axes = state_.axes;
@@ -264,7 +264,7 @@ CommandResult CommandExecutor::SystemElementCommand(const MasterFrame& c) {
     }
 }
 
-CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::nanoseconds now,
+CommandResult CommandExecutor::OnlineCommand(const CommandFrame& c, std::chrono::nanoseconds now,
                                              PendingCommand& pending) {
     switch (c.code) {
         case code::kPosAxisAbsolute: return StartMove(c, now, false, true, pending);
@@ -309,7 +309,7 @@ CommandResult CommandExecutor::OnlineCommand(const MasterFrame& c, std::chrono::
     }
 }
 
-CommandResult CommandExecutor::StartMove(const MasterFrame& c, std::chrono::nanoseconds now, bool relative,
+CommandResult CommandExecutor::StartMove(const CommandFrame& c, std::chrono::nanoseconds now, bool relative,
                                          bool waitForEnd, PendingCommand& pending) {
     // Axes move in ONLINE proper (31), not while stopping, stopped or with malfunction.
     if (state_.operatingStatus != status::kOnline) return Fail(error::kInadmissibleCommand);

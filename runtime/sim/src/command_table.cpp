@@ -1,4 +1,4 @@
-// Validity of each command per operating mode (see command_table.hpp and docs/simulator.md).
+// Validity of each command per operating mode (see command_table.hpp and docs/sim_cmd.md).
 #include "pac/sim/command_table.hpp"
 
 namespace pac::sim {

@@ -1,4 +1,4 @@
-// The CTRL module on the controller's side (see ctrl_interface.hpp and docs/simulator.md).
+// The CTRL module on the controller's side (see ctrl_interface.hpp and docs/sim_modes.md).
 #include "pac/sim/ctrl_interface.hpp"
 
 namespace pac::sim {
@@ -31,10 +31,10 @@ std::uint16_t ModeBits(std::uint8_t s) {
 
 }  // namespace ctrl
 
-void CtrlInterface::Apply(const Image8& masterModule, std::chrono::nanoseconds now) {
-    const std::uint16_t word = ReadWord(masterModule, 0);
+void CtrlInterface::Apply(const Image8& module, std::chrono::nanoseconds now) {
+    const std::uint16_t word = ReadWord(module, 0);
     // Before the first word after a boot the bits count as idle (starts 0, the low-active bits 1): a
-    // master whose very first image carries a request is served (docs/simulator.md).
+    // PLC whose very first image carries a request is served (docs/sim_modes.md).
     const std::uint16_t before = previous_.value_or(ctrl::kNoRequest);
     previous_ = word;
     auto rose = [&](std::uint16_t bit) { return (word & bit) != 0 && (before & bit) == 0; };

@@ -19,11 +19,11 @@ std::string ExchangeLog::Format(bool changesOnly) const {
     std::ostringstream out;
     const ExchangeRecord* previous = nullptr;
     for (const auto& r : records_) {
-        const bool same = previous != nullptr && previous->master == r.master && previous->reply == r.reply;
+        const bool same = previous != nullptr && previous->toPac == r.toPac && previous->fromPac == r.fromPac;
         previous = &r;
         if (changesOnly && same && !r.newCommand) continue;
-        out << std::setw(12) << FormatTime(r.time) << "  M " << ToHex(r.master) << "  S " << ToHex(r.reply)
-            << (r.newCommand ? "  <- new command" : "") << '\n';
+        out << std::setw(12) << FormatTime(r.time) << "  to PAC " << ToHex(r.toPac) << "  from PAC "
+            << ToHex(r.fromPac) << (r.newCommand ? "  <- new command" : "") << '\n';
     }
     return out.str();
 }

@@ -1,5 +1,4 @@
-// The operating-mode machine (see mode_machine.hpp and docs/simulator.md, "Operating modes and the
-// CTRL interface").
+// The operating-mode machine (see mode_machine.hpp and docs/sim_modes.md).
 #include "pac/sim/mode_machine.hpp"
 
 #include <stdexcept>
@@ -152,7 +151,7 @@ void ModeMachine::Step(std::chrono::nanoseconds now) {
     raised_.clear();
     if (held_) return;
     if (options_.requireExternalStop && OnlineRunning(Status()) && !ExternalStopPowered()) {
-        BeginStop(now);  // the external stop acts like a stop (decision, docs/simulator.md)
+        BeginStop(now);  // the external stop acts like a stop (decision, docs/sim_modes.md)
     }
     Advance();
 }

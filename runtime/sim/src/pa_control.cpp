@@ -1,4 +1,4 @@
-// The simulated PA-CONTROL's cycle (see pa_control.hpp and docs/simulator.md).
+// The simulated PA-CONTROL's cycle (see pa_control.hpp and docs/sim_controller.md).
 #include "pac/sim/pa_control.hpp"
 
 #include <stdexcept>
@@ -45,8 +45,8 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       ctrl_(modes_, state_),
       log_(config_.logCapacity),
       bootEnd_(config_.bootTime),
-      lastReply_(layout_.Bytes()),
-      lastMaster_(layout_.Bytes()) {
+      lastFromPac_(layout_.Bytes()),
+      lastToPac_(layout_.Bytes()) {
     state_.axisModules = CheckedAxisModules(layout_, config_);
     modules_.assign(static_cast<std::size_t>(state_.axisModules), AxisModule(config_.axisModule));
     for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
@@ -76,16 +76,16 @@ std::chrono::nanoseconds PaControl::CycleTime() const {
 
 void PaControl::Cycle(std::chrono::nanoseconds now) {
     CheckTime(now, "Cycle");
-    const ProcessImage master = bus_.SlaveRead(now);
-    lastMaster_ = master;
+    const ProcessImage toPac = bus_.ReadToPac(now);
+    lastToPac_ = toPac;
     ExchangeRecord record;
     record.time = now;
-    record.master = master;
+    record.toPac = toPac;
 
     if (!booted_) {
         if (now < bootEnd_) {
             WriteReply(now, ProcessImage(layout_.Bytes()));
-            record.reply = lastReply_;
+            record.fromPac = lastFromPac_;
             log_.Add(record);
             return;
         }
@@ -93,12 +93,12 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     }
 
     state_.axes.UpdateAll(now);
-    const bool allZero = master.AllZero();
+    const bool allZero = toPac.AllZero();
     if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
     modes_.Step(now);
     // An all-zero image is no control word (all requests low-active would cancel): it is the
     // emergency stop above, or no communication yet.
-    if (layout_.ctrl && !allZero) ctrl_.Apply(master.Module8(ModuleLayout::kCtrlOffset), now);
+    if (layout_.ctrl && !allZero) ctrl_.Apply(toPac.Module8(ModuleLayout::kCtrlOffset), now);
 
     if (pending_.Active()) {
         const CommandResult progress = executor_.Poll(pending_, now);
@@ -109,7 +109,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     if (!allZero) {
         communicationActive_ = true;
         emergencyStop_ = false;
-        const MasterFrame command = MasterFrame::Decode(master.Cmd());
+        const CommandFrame command = CommandFrame::Decode(toPac.Cmd());
         if (protocol_.IsNewCommand(command)) {
             record.newCommand = true;
             Execute(command, now);
@@ -117,11 +117,11 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         // Last, so that a mode change by CTRL or CMD in this cycle applies to the axis modules at once. Like
         // the CTRL module, they take no control word from an all-zero image (the emergency stop has halted
         // the axes); they report all the same.
-        ServeAxisModules(master, now);
+        ServeAxisModules(toPac, now);
     }
 
     WriteReply(now, ComposeReply(now));
-    record.reply = lastReply_;
+    record.fromPac = lastFromPac_;
     log_.Add(record);
 }
 
@@ -143,10 +143,10 @@ AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
     return context;
 }
 
-void PaControl::ServeAxisModules(const ProcessImage& master, std::chrono::nanoseconds now) {
+void PaControl::ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
     const AxisModuleContext context = ModuleContext(now);
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        Module(axis).Serve(master.Module12(layout_.AxisOffset(axis)), state_.axes.Motion(axis), context);
+        Module(axis).Serve(toPac.Module12(layout_.AxisOffset(axis)), state_.axes.Motion(axis), context);
     }
 }
 
@@ -173,7 +173,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     injectedError_.reset();
     communicationActive_ = false;
     emergencyStop_ = false;
-    WriteReply(now, ProcessImage(layout_.Bytes()));  // the slave drops off the bus at once
+    WriteReply(now, ProcessImage(layout_.Bytes()));  // the controller drops off the bus at once
 }
 
 void PaControl::InjectCommandError(std::uint16_t errorNumber) {
@@ -198,13 +198,13 @@ void PaControl::Boot() {
 }
 
 void PaControl::EmergencyStop(std::chrono::nanoseconds now) {
-    // 4.2.5: an all-zero master image after communication was active means EMERGENCY STOP.
+    // 4.2.5: an all-zero to-PAC image after communication was active means EMERGENCY STOP.
     emergencyStop_ = true;
     ++counters_.emergencyStops;
     modes_.EmergencyStop(now);
 }
 
-void PaControl::Execute(const MasterFrame& command, std::chrono::nanoseconds now) {
+void PaControl::Execute(const CommandFrame& command, std::chrono::nanoseconds now) {
     // A new command takes the CMD reply over; an earlier one still processing is no longer reported
     // (its axis carries on: 1910 / 190C show it).
     pending_ = PendingCommand{};
@@ -238,8 +238,8 @@ ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {
 }
 
 void PaControl::WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply) {
-    lastReply_ = reply;
-    bus_.SlaveWrite(now, reply);
+    lastFromPac_ = reply;
+    bus_.WriteFromPac(now, reply);
 }
 
 }  // namespace pac::sim

@@ -19,7 +19,7 @@
 #include "pac/sim/image8.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "pac/sim/process_image.hpp"
-#include "pac/sim/slave_runner.hpp"
+#include "pac/sim/pac_runner.hpp"
 #include "pac/sim_clock.hpp"
 
 namespace pac {
@@ -106,7 +106,7 @@ private:
     pac::PlcTask task_;
     pac::sim::Bus bus_;
     pac::sim::PaControl pac_;
-    pac::sim::SlaveRunner runner_;
+    pac::sim::PacRunner runner_;
     pac::sim::ProcessImage toPac_;
     pac::sim::ProcessImage fromPac_;
 };

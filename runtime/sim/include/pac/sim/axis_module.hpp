@@ -1,65 +1,21 @@
 // The controller's side of one 12-byte axis module in ONLINE mode (manual 2.7, /work/briefs/axis.md): each
-// controller cycle it reads the master's control word, per-mille dynamics and position, acts on one ServoAxis
-// (Axis ON, DISABLE DRIVE, the Start handshake, interrupts, G123, reset axis error) and composes the status
-// reply. It knows nothing of the bus or of the other axes; docs/simulator.md "Axis modules (2.7)" lists
+// controller cycle it reads the PLC's control word (pac/axis_module_bits.hpp), per-mille dynamics and position,
+// acts on one ServoAxis (Axis ON, DISABLE DRIVE, the Start handshake, interrupts, G123, reset axis error) and
+// composes the status reply. It knows nothing of the bus or of the other axes; docs/sim_axis_modules.md lists
 // every decision where the manual is silent.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 
+#include "pac/axis_module_bits.hpp"
 #include "pac/sim/elements.hpp"
 #include "pac/sim/process_image.hpp"
 #include "pac/sim/servo_axis.hpp"
 
 namespace pac::sim {
 
-// Control word, master -> PA-CONTROL, bytes 0..3 (2.7.1; bit 4 is G26, NOTES.md).
-namespace axis_control {
-constexpr std::uint32_t kAxisOn = 1U << 0;
-constexpr std::uint32_t kDisableDrive = 1U << 1;
-constexpr std::uint32_t kStart = 1U << 2;
-constexpr std::uint32_t kHome = 1U << 3;                  // G25
-constexpr std::uint32_t kSetReferenced = 1U << 4;         // G26
-constexpr std::uint32_t kShift = 1U << 5;                 // G29
-constexpr std::uint32_t kAbsolute = 1U << 6;
-constexpr std::uint32_t kRelative = 1U << 7;
-constexpr std::uint32_t kWhileInputOne = 1U << 8;         // G123 Ix..1
-constexpr std::uint32_t kWhileInputZero = 1U << 9;        // G123 Ix..0
-constexpr std::uint32_t kJogPositive = 1U << 10;
-constexpr std::uint32_t kJogNegative = 1U << 11;
-constexpr std::uint32_t kDeleteShift = 1U << 12;
-constexpr std::uint32_t kResetDisplaced = 1U << 13;
-constexpr std::uint32_t kToMaxRange = 1U << 14;
-constexpr std::uint32_t kToMinRange = 1U << 15;
-constexpr std::uint32_t kResetAxisError = 1U << 16;
-constexpr std::uint32_t kLimitSwitchMonitoringOff = 1U << 17;  // G142
-// Exactly one of these with a Start edge (2.7.2 notes).
-constexpr std::uint32_t kTraverseBits = kHome | kSetReferenced | kShift | kAbsolute | kRelative | kJogPositive |
-                                        kJogNegative | kDeleteShift | kResetDisplaced | kToMaxRange | kToMinRange;
-}  // namespace axis_control
-
-// Status word, PA-CONTROL -> master, bytes 0..3 (2.7.2). The limit switch bits are low-active.
-namespace axis_status {
-constexpr std::uint32_t kDriveEnabled = 1U << 0;
-constexpr std::uint32_t kHalt = 1U << 1;
-constexpr std::uint32_t kDriveDisabled = 1U << 2;
-constexpr std::uint32_t kSafe = 1U << 3;
-constexpr std::uint32_t kIdle = 1U << 4;
-constexpr std::uint32_t kDisabled = 1U << 5;
-constexpr std::uint32_t kFault = 1U << 6;
-constexpr std::uint32_t kActive = 1U << 7;
-constexpr std::uint32_t kReferenced = 1U << 8;
-constexpr std::uint32_t kNegativeLimitSwitch = 1U << 9;   // 0 = actuated
-constexpr std::uint32_t kPositiveLimitSwitch = 1U << 10;  // 0 = actuated
-constexpr std::uint32_t kStoppedByG123 = 1U << 11;
-constexpr std::uint32_t kDisplaced = 1U << 12;
-constexpr std::uint32_t kGroupDisplaced = 1U << 13;
-constexpr std::uint32_t kCmdError = 1U << 14;
-constexpr std::uint32_t kAxisError = 1U << 15;
-}  // namespace axis_status
-
-// The master's 12 bytes (2.7.1), big-endian. The position is the raw dword: IEEE REAL, or DINT x 1000.
+// The PLC's 12 bytes, to PAC (2.7.1), big-endian. The position is the raw dword: IEEE REAL, or DINT x 1000.
 struct AxisModuleCommand {
     std::uint32_t control = 0;
     std::uint16_t accelerationPerMille = 0;  // bytes 4..5
@@ -70,7 +26,7 @@ struct AxisModuleCommand {
     Image12 Encode() const;
 };
 
-// The PA-CONTROL's 12 bytes (2.7.2), big-endian.
+// The PA-CONTROL's 12 bytes, from PAC (2.7.2), big-endian.
 struct AxisModuleReply {
     std::uint32_t status = 0;
     std::uint16_t cmdError = 0;   // bytes 4..5
@@ -93,7 +49,7 @@ enum class AxisModuleService {
     kJobs,        // ONLINE proper (31): also jobs on a Start edge
 };
 
-// What one controller cycle gives the module besides the master's bytes.
+// What one controller cycle gives the module besides the PLC's bytes.
 struct AxisModuleContext {
     std::chrono::nanoseconds now{0};
     AxisModuleService service = AxisModuleService::kReportOnly;
@@ -103,7 +59,7 @@ struct AxisModuleContext {
 };
 
 // How a CMD error that is showing looks in the cycle of the next Start edge (2.7.4.14: "deleted during the
-// next Start command"). Both happen on real controllers as far as the master can tell, and FB_PAC_Axis must
+// next Start command"). Both happen on real controllers as far as the PLC can tell, and FB_PAC_Axis must
 // cope with both (/work/briefs/axis.md).
 enum class CmdErrorRestart {
     kSameCycle,      // cleared and, if the new job is refused, set again with its number in the same cycle
@@ -123,10 +79,10 @@ public:
 
     explicit AxisModule(AxisModuleConfig config = {});
 
-    // One controller cycle: act on `master` (Serve), then compose the reply (Reply).
-    Image12 Cycle(const Image12& master, ServoAxis& axis, const AxisModuleContext& context);
+    // One controller cycle: act on `toPac` (Serve), then compose the reply (Reply).
+    Image12 Cycle(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context);
     // The control word's effects at context.now. Brings the axis to context.now first.
-    void Serve(const Image12& master, ServoAxis& axis, const AxisModuleContext& context);
+    void Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context);
     // The 12 reply bytes for the axis as it stands (call after Serve in the same cycle).
     Image12 Reply(const ServoAxis& axis, const AxisModuleContext& context) const;
 

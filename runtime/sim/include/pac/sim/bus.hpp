@@ -1,5 +1,5 @@
-// The fieldbus between one master (the PLC) and one PA-CONTROL: two Links, master -> slave and
-// slave -> master, each with its own latency, jitter, seed and fault.
+// The fieldbus between the PLC and one PA-CONTROL: two Links, to PAC (PLC -> PA-CONTROL) and from PAC
+// (PA-CONTROL -> PLC), each with its own latency, jitter, seed and fault.
 #pragma once
 
 #include <chrono>
@@ -9,8 +9,8 @@
 namespace pac::sim {
 
 struct BusConfig {
-    LinkConfig toSlave{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 1};
-    LinkConfig toMaster{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 2};
+    LinkConfig toPac{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 1};
+    LinkConfig fromPac{std::chrono::nanoseconds(0), std::chrono::nanoseconds(0), 2};
     ModuleLayout layout{};  // the process image both directions carry: ModuleLayout::Bytes()
 };
 
@@ -19,18 +19,18 @@ public:
     explicit Bus(BusConfig config = {});  // an invalid layout: std::invalid_argument
     const ModuleLayout& Layout() const { return layout_; }
 
-    // The master's side: its output image goes to the slave, its input image is the slave's reply.
-    void MasterWrite(std::chrono::nanoseconds now, const ProcessImage& image) { toSlave_.Write(now, image); }
-    ProcessImage MasterRead(std::chrono::nanoseconds now) { return toMaster_.Read(now); }
+    // The PLC's side: its output image goes to the controller, its input image is the controller's reply.
+    void WriteToPac(std::chrono::nanoseconds now, const ProcessImage& image) { toPac_.Write(now, image); }
+    ProcessImage ReadFromPac(std::chrono::nanoseconds now) { return fromPac_.Read(now); }
 
-    // The slave's side.
-    void SlaveWrite(std::chrono::nanoseconds now, const ProcessImage& image) { toMaster_.Write(now, image); }
-    ProcessImage SlaveRead(std::chrono::nanoseconds now) { return toSlave_.Read(now); }
+    // The controller's side.
+    void WriteFromPac(std::chrono::nanoseconds now, const ProcessImage& image) { fromPac_.Write(now, image); }
+    ProcessImage ReadToPac(std::chrono::nanoseconds now) { return toPac_.Read(now); }
 
-    Link& ToSlave() { return toSlave_; }
-    Link& ToMaster() { return toMaster_; }
-    const Link& ToSlave() const { return toSlave_; }
-    const Link& ToMaster() const { return toMaster_; }
+    Link& ToPacLink() { return toPac_; }
+    Link& FromPacLink() { return fromPac_; }
+    const Link& ToPacLink() const { return toPac_; }
+    const Link& FromPacLink() const { return fromPac_; }
 
     // Both directions at once (a pulled cable): see Link for what each reader sees.
     void Disconnect(std::chrono::nanoseconds now);
@@ -38,8 +38,8 @@ public:
 
 private:
     ModuleLayout layout_;
-    Link toSlave_;
-    Link toMaster_;
+    Link toPac_;
+    Link fromPac_;
 };
 
 }  // namespace pac::sim

@@ -1,10 +1,10 @@
 // The meaning of the CMD module's bytes in each direction (manual 2.4.1, 2.4.2, 4.2.2), decoded from
 // and encoded into an Image8:
-//   master -> PA-CONTROL: dword 0 (bytes 0..3) command data, word 2 command parameter,
-//                         word 3 = SEND flag (bit 15) | command code (bits 14..0).
-//   PA-CONTROL -> master: dword 0 acknowledgement data, word 2 = FE (bit 15) | operating status
-//                         (bits 7..0, decimal codes: ONLINE = 31 = 16#1F), word 3 = RF (bit 15) |
-//                         KF (bit 14) | BF (bit 13) | command error number (bits 12..0).
+//   to PAC (CommandFrame): dword 0 (bytes 0..3) command data, word 2 command parameter,
+//                          word 3 = SEND flag (bit 15) | command code (bits 14..0).
+//   from PAC (ReplyFrame): dword 0 acknowledgement data, word 2 = FE (bit 15) | operating status
+//                          (bits 7..0, decimal codes: ONLINE = 31 = 16#1F), word 3 = RF (bit 15) |
+//                          KF (bit 14) | BF (bit 13) | command error number (bits 12..0).
 // 16-bit command data and acknowledgement data sit in bytes 2..3, the low word of the dword.
 #pragma once
 
@@ -14,13 +14,13 @@
 
 namespace pac::sim {
 
-struct MasterFrame {
+struct CommandFrame {
     std::uint32_t data = 0;
     std::uint16_t parameter = 0;
     bool send = false;
     std::uint16_t code = 0;  // 15 bits; bit 15 of an encoded code is dropped
 
-    static MasterFrame Decode(const Image8& image);
+    static CommandFrame Decode(const Image8& image);
     Image8 Encode() const;
 };
 
@@ -37,10 +37,10 @@ struct ReplyFrame {
     Image8 Encode() const;
 };
 
-bool operator==(const MasterFrame& a, const MasterFrame& b);
+bool operator==(const CommandFrame& a, const CommandFrame& b);
 bool operator==(const ReplyFrame& a, const ReplyFrame& b);
 
-// Builds a master image, as tests write them by hand: MasterImage(0x1906, 2, 0, true).
-Image8 MasterImage(std::uint16_t code, std::uint16_t parameter, std::uint32_t data, bool send);
+// Builds a to-PAC CMD image, as tests write them by hand: CommandImage(0x1906, 2, 0, true).
+Image8 CommandImage(std::uint16_t code, std::uint16_t parameter, std::uint32_t data, bool send);
 
 }  // namespace pac::sim

@@ -19,7 +19,7 @@ public:
     CmdProtocol() { Reset(); }
 
     void Reset();
-    bool IsNewCommand(const MasterFrame& master) const { return master.send != receiveFlag_; }
+    bool IsNewCommand(const CommandFrame& command) const { return command.send != receiveFlag_; }
     void Acknowledge(bool send, const CommandResult& result);  // RF := send, then the result
     void Update(const CommandResult& result);                  // progress of the processing command
     bool Processing() const { return !endOfProcessing_ && !commandError_; }

@@ -32,20 +32,20 @@ public:
     CommandExecutor(ControllerState& state, ModeMachine& modes) : state_(state), modes_(modes) {}
 
     // `pending` is set when the command ends later, and left alone otherwise.
-    CommandResult Execute(const MasterFrame& command, std::chrono::nanoseconds now, PendingCommand& pending);
+    CommandResult Execute(const CommandFrame& command, std::chrono::nanoseconds now, PendingCommand& pending);
 
     // The acknowledgement of a command that is still processing, at `now` (axes already updated).
     CommandResult Poll(const PendingCommand& pending, std::chrono::nanoseconds now);
 
 private:
-    CommandResult ModeCommand(const MasterFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
-    CommandResult SystemParameterCommand(const MasterFrame& c);
-    CommandResult AxisParameterCommand(const MasterFrame& c);
-    CommandResult ElementCommand(const MasterFrame& c);
-    CommandResult StatusCommand(const MasterFrame& c);
-    CommandResult SystemElementCommand(const MasterFrame& c);
-    CommandResult OnlineCommand(const MasterFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
-    CommandResult StartMove(const MasterFrame& c, std::chrono::nanoseconds now, bool relative, bool waitForEnd,
+    CommandResult ModeCommand(const CommandFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
+    CommandResult SystemParameterCommand(const CommandFrame& c);
+    CommandResult AxisParameterCommand(const CommandFrame& c);
+    CommandResult ElementCommand(const CommandFrame& c);
+    CommandResult StatusCommand(const CommandFrame& c);
+    CommandResult SystemElementCommand(const CommandFrame& c);
+    CommandResult OnlineCommand(const CommandFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
+    CommandResult StartMove(const CommandFrame& c, std::chrono::nanoseconds now, bool relative, bool waitForEnd,
                             PendingCommand& pending);
 
     ControllerState& state_;

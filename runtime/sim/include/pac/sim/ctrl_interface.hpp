@@ -1,11 +1,11 @@
-// The controller's side of the 8-byte CTRL module (manual 2.5): decodes the master's control word into
+// The controller's side of the 8-byte CTRL module (manual 2.5): decodes the PLC's control word into
 // requests to the ModeMachine and encodes the status word. Word 0 of each direction is the control /
 // status word (big-endian, bytes 0-1 of the module); from the controller, word 2 is the system error
-// number; every other word is 0 (words 1..3 from the master are ignored).
+// number; every other word is 0 (words 1..3 to PAC are ignored).
 // Control word: Stop (bit 1) and Cancel (bit 2) are low-active levels; the start bits (3, 4) act on
 // their rising edge while Stop and Cancel are inactive (1); Error reset (bit 0, low-active) acts on
 // its falling edge 1 -> 0. A request the controller cannot serve is ignored: the CTRL interface has no
-// error channel. The first control word after a boot only sets the reference for the edges.
+// error channel. Before the first control word after a boot the bits count as idle (docs/sim_modes.md).
 #pragma once
 
 #include <chrono>
@@ -18,16 +18,16 @@
 namespace pac::sim {
 
 namespace ctrl {
-// Control word, master -> PA-CONTROL (2.5.1).
+// Control word, to PAC (2.5.1).
 constexpr std::uint16_t kErrorReset = 1U << 0;  // low-active
 constexpr std::uint16_t kStop = 1U << 1;        // low-active
 constexpr std::uint16_t kCancel = 1U << 2;      // low-active
 constexpr std::uint16_t kStartAutomatic = 1U << 3;
 constexpr std::uint16_t kStartOnline = 1U << 4;
 constexpr std::uint16_t kIntegerFormat = 1U << 15;
-constexpr std::uint16_t kNoRequest = kErrorReset | kStop | kCancel;  // what a master holds outside a request
+constexpr std::uint16_t kNoRequest = kErrorReset | kStop | kCancel;  // what a PLC holds outside a request
 
-// Status word, PA-CONTROL -> master (2.5.2).
+// Status word, from PAC (2.5.2).
 constexpr std::uint16_t kReady = 1U << 0;
 constexpr std::uint16_t kBatteryOk = 1U << 1;
 constexpr std::uint16_t kSystemError = 1U << 2;
@@ -47,9 +47,9 @@ class CtrlInterface {
 public:
     CtrlInterface(ModeMachine& modes, const ControllerState& state) : modes_(modes), state_(state) {}
 
-    // One controller cycle with the master's CTRL module (not called for an all-zero master image,
+    // One controller cycle with the PLC's CTRL module (not called for an all-zero to-PAC image,
     // which is an emergency stop, not a control word).
-    void Apply(const Image8& masterModule, std::chrono::nanoseconds now);
+    void Apply(const Image8& module, std::chrono::nanoseconds now);
     // Power off: the next control word is a new reference for the edges.
     void Reset() { previous_.reset(); }
 

@@ -13,8 +13,8 @@ namespace pac::sim {
 
 struct ExchangeRecord {
     std::chrono::nanoseconds time{0};
-    ProcessImage master;  // the master image the cycle read from the bus
-    ProcessImage reply;   // the reply it wrote
+    ProcessImage toPac;    // the image the cycle read from the bus
+    ProcessImage fromPac;  // the reply it wrote
     bool newCommand = false;  // the cycle recognised a SEND flag change
 };
 
@@ -27,7 +27,8 @@ public:
     const std::deque<ExchangeRecord>& Records() const { return records_; }
     std::size_t Capacity() const { return capacity_; }
 
-    // One line per record: "   40 ms  M 00 00 00 00 00 05 99 00  S 00 00 00 01 00 01 A0 00  <- new".
+    // One line per record:
+    //   "   40 ms  to PAC 00 00 00 00 00 05 99 00  from PAC 00 00 00 01 00 01 A0 00  <- new command".
     // With changesOnly, a record is left out when both images equal the previous record's.
     std::string Format(bool changesOnly = true) const;
 

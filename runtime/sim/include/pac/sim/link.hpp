@@ -1,4 +1,4 @@
-// One direction of the fieldbus between the PLC (master) and the PA-CONTROL (slave): the writer's
+// One direction of the fieldbus between the PLC and the PA-CONTROL (to PAC or from PAC): the writer's
 // process image (all modules, one consistent block, manual 2.3.3) reaches the reader after a latency
 // plus a seeded jitter, in order, and the link can be faulted. Times are simulated (the caller's
 // clock); nothing here reads a real clock.

@@ -2,7 +2,7 @@
 // 5.2.6.1): home position, ONLINE and a scripted stand-in for the AUTOMATIC program, with the system
 // error classes. The CMD commands (CommandExecutor) and the CTRL interface (CtrlInterface) both ask it
 // for a mode change; it alone writes the operating status, the system error number and the integer
-// format in force. The transition table and every decision are in docs/simulator.md.
+// format in force. The transition table and every decision are in docs/sim_modes.md.
 #pragma once
 
 #include <chrono>

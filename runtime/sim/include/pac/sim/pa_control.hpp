@@ -1,11 +1,11 @@
 // The simulated PA-CONTROL behind its Profibus-DP modules (manual 2.3): the 8-byte CMD interface (2.4,
 // 4.2, chapter 5), and where the bus layout has them the CTRL interface (2.5) and the axis modules (2.7).
-// It runs in its own cycle: each Cycle(now) reads the master's process image from the bus, steps the
+// It runs in its own cycle: each Cycle(now) reads the PLC's process image from the bus, steps the
 // operating-mode machine, applies the CTRL control word, follows a command that is still processing,
 // recognises a SEND flag change against the last acknowledged SEND (RF), carries out the command, serves
-// the axis modules (AxisModule, one per axis) and writes its reply image. See docs/simulator.md for every
-// decision where the manual is silent (power-up, operating modes, emergency stop, SEND toggles while
-// processing, retention, axis modules).
+// the axis modules (AxisModule, one per axis) and writes its reply image. docs/sim_controller.md and the
+// pages it links list every decision where the manual is silent (power-up, operating modes, emergency
+// stop, SEND toggles while processing, retention, axis modules).
 #pragma once
 
 #include <chrono>
@@ -86,8 +86,8 @@ public:
     const ModeMachine& Modes() const { return modes_; }
     bool EmergencyStopActive() const { return emergencyStop_; }
     bool Processing() const { return booted_ && protocol_.Processing(); }
-    const ProcessImage& LastReply() const { return lastReply_; }
-    const ProcessImage& LastMasterImage() const { return lastMaster_; }
+    const ProcessImage& LastFromPacImage() const { return lastFromPac_; }
+    const ProcessImage& LastToPacImage() const { return lastToPac_; }
     const ModuleLayout& Layout() const { return layout_; }
 
     // ---- test hooks ----
@@ -132,9 +132,9 @@ private:
     void CheckTime(std::chrono::nanoseconds now, const char* what);
     void Boot();
     void EmergencyStop(std::chrono::nanoseconds now);
-    void Execute(const MasterFrame& command, std::chrono::nanoseconds now);
+    void Execute(const CommandFrame& command, std::chrono::nanoseconds now);
     void WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply);
-    void ServeAxisModules(const ProcessImage& master, std::chrono::nanoseconds now);
+    void ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
     AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
     ProcessImage ComposeReply(std::chrono::nanoseconds now) const;
 
@@ -154,11 +154,11 @@ private:
 
     bool booted_ = false;
     std::chrono::nanoseconds bootEnd_{0};
-    bool communicationActive_ = false;  // a non-zero master image was seen since power-on
+    bool communicationActive_ = false;  // a non-zero to-PAC image was seen since power-on
     bool emergencyStop_ = false;
     std::optional<std::chrono::nanoseconds> lastTime_;
-    ProcessImage lastReply_;
-    ProcessImage lastMaster_;
+    ProcessImage lastFromPac_;
+    ProcessImage lastToPac_;
 };
 
 }  // namespace pac::sim

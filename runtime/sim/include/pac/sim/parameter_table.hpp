@@ -25,7 +25,7 @@ ParameterSpec IntParameter(std::uint16_t number, std::int32_t min, std::int32_t 
                            std::string name);
 ParameterSpec RealParameter(std::uint16_t number, float min, float max, float defaultValue, std::string name);
 
-// The small default tables (docs/simulator.md lists them).
+// The small default tables (docs/sim_cmd.md lists them).
 std::vector<ParameterSpec> DefaultSystemParameters();
 std::vector<ParameterSpec> DefaultAxisParameters();
 

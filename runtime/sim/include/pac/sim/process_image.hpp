@@ -17,7 +17,7 @@ namespace pac::sim {
 using Image12 = std::array<std::uint8_t, 12>;
 
 // Which modules a PA-CONTROL's Profibus extension has. Axis modules are extensions 2..9, after the CTRL
-// module (extension 1), so they need it (docs/simulator.md).
+// module (extension 1), so they need it (docs/sim_bus.md).
 struct ModuleLayout {
     static constexpr int kMaxAxisModules = 8;
     static constexpr std::size_t kCmdOffset = 0;

@@ -6,7 +6,7 @@
 // AttachTo(task) registers CatchUp(task time) as a program of the task; register it FIRST, before
 // the PLC program: at equal timestamps the controller's cycle then runs before the PLC's scan, so
 // the scan at t reads the reply the controller wrote at t (with zero latency), and the controller
-// at t sees master images written up to the scan before.
+// at t sees to-PAC images written up to the scan before.
 #pragma once
 
 #include <chrono>
@@ -17,10 +17,10 @@
 
 namespace pac::sim {
 
-class SlaveRunner {
+class PacRunner {
 public:
     // phase >= 0 (std::invalid_argument otherwise): the time of the first cycle.
-    explicit SlaveRunner(PaControl& pac, std::chrono::nanoseconds phase = std::chrono::nanoseconds(0));
+    explicit PacRunner(PaControl& pac, std::chrono::nanoseconds phase = std::chrono::nanoseconds(0));
 
     void CatchUp(std::chrono::nanoseconds now);
     void AttachTo(pac::PlcTask& task);
