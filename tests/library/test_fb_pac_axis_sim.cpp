@@ -29,7 +29,8 @@
 #include "pac/sim/pa_control.hpp"
 #include "pac/st_program.hpp"
 #include "pac_plc_bench.hpp"
-#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
+#include "plcopen_watch.hpp"
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
@@ -223,10 +224,7 @@ public:
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
                   pac::sim::ParameterTable::SetResult::kOk);
         pac.Io().inputs.Set(kExternalStopInput, true);
-        for (int k = 0; k < options.axes; ++k) {
-            axes_.push_back(std::make_unique<AxisFb>(PAC_FB(FB_PAC_AXIS)));
-            axisRules_.emplace_back("FB_PAC_Axis " + std::to_string(k + 1));
-        }
+        for (int k = 0; k < options.axes; ++k) axes_.push_back(std::make_unique<AxisFb>(PAC_FB(FB_PAC_AXIS)));
         traces_.resize(static_cast<std::size_t>(options.axes));
         plc_.CallCtrl(ctrl_);
         for (int k = 1; k <= options.axes; ++k) {
@@ -235,6 +233,9 @@ public:
         }
         plc_.Start();
         plc_.Task().AddProgram([this] { Record(); });
+        rules_.AddRequest("FB_PAC_Ctrl", ctrl_);
+        for (int k = 1; k <= options.axes; ++k) rules_.AddJob("FB_PAC_Axis " + std::to_string(k), Fb(k));
+        rules_.Attach(plc_.Task());
     }
 
     // ONLINE through FB_PAC_Ctrl, with the integer format (2.5.3) taken over on the way; then long enough for
@@ -328,7 +329,6 @@ private:
     void Record() {
         view_.Follow(plc_.Controller().Log());
         const std::int64_t scan = plc_.Task().ScanCount();
-        ctrlRules_.Check(scan, ctrl_, pac::test::RequestBusyBoundOf(ctrl_, options_.timing.PlcCycle()));
         for (int k = 1; k <= options_.axes; ++k) {
             const std::uint32_t control = Control(k);
             const char* broken = pac::test::AxisControlWordViolation(control, ac::kTraverseBits, ac::kStart);
@@ -336,7 +336,6 @@ private:
                 ADD_FAILURE() << "axis " << k << ", scan " << scan << ": " << broken << " (control word 16#"
                               << std::hex << control << std::dec << ")";
             }
-            axisRules_[static_cast<std::size_t>(k - 1)].Check(scan, Fb(k));
             const AxisStep step{control, Fb(k)->STATUSWORD.value, pac::test::OutputsOf(Fb(k)).Letter()};
             traces_[static_cast<std::size_t>(k - 1)].Add(scan, step);
         }
@@ -348,8 +347,7 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<AxisFb>> axes_;  // never moved: the PLC's programs hold references
     std::vector<AxisTrace> traces_;
-    pac::test::PlcOpenChecker ctrlRules_{"FB_PAC_Ctrl"};
-    std::vector<pac::test::PlcOpenChecker> axisRules_;
+    pac::test::PlcOpenWatch rules_{options_.timing.PlcCycle()};
     int controlViolations_ = 0;
     ControllerView view_;
 };

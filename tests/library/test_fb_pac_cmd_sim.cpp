@@ -14,7 +14,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
 #include "pac_plc_bench.hpp"
-#include "plcopen_checker.hpp"
+#include "plcopen_watch.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
@@ -33,9 +33,8 @@ public:
         : plc_(pac::test::PlcBenchTimingOf(timing, bootTime)), window_(timing) {
         plc_.Call(cmd_);
         plc_.Start();
-        plc_.Task().AddProgram([this] {
-            rules_.Check(plc_.Task().ScanCount(), cmd_, pac::test::CommandBusyBoundOf(cmd_, plc_.Timing().plcCycle));
-        });
+        rules_.AddCommand("FB_PAC_Cmd", cmd_);
+        rules_.Attach(plc_.Task());
     }
 
     // Runs one command to its end: Execute edge, wait for Done or Error, Execute back to FALSE.
@@ -76,7 +75,7 @@ private:
     pac::test::PacPlcBench plc_;
     pac::test::ProtocolWindow window_;
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
-    pac::test::PlcOpenChecker rules_{"FB_PAC_Cmd"};
+    pac::test::PlcOpenWatch rules_{window_.Timing().PlcCycle()};
     nanoseconds edgeTime_{0};
     std::uint32_t ackData_ = 0;
 };
