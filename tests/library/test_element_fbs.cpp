@@ -13,17 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "bench_timing.hpp"
 #include "bus_timing.hpp"
+#include "command_plc.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
-#include "plcopen_watch.hpp"
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
-#include "scan_window.hpp"
 
 namespace {
 
@@ -31,7 +28,6 @@ using namespace std::chrono_literals;
 using pac::sim::MasterFrame;
 using pac::test::BusTiming;
 using pac::test::FinalOutcome;
-using pac::test::PacPlcBench;
 
 static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float>::is_iec559,
               "REAL must be an IEEE-754 single");
@@ -44,50 +40,35 @@ const BusTiming kTiming{1, 10, 1};
 using pac::test::BitsOf;
 using pac::test::FloatOf;
 
-// One element FB alone on the CMD interface of a simulated PA-CONTROL, under the PLCopen checker.
+// One element FB alone on the CMD interface of a simulated PA-CONTROL.
 template <class T>
 class Single {
 public:
-    explicit Single(pac::FbInstance<T> fb, const BusTiming& timing = kTiming)
-        : fb_(fb), bench_(pac::test::PlcBenchTimingOf(timing)), window_(timing), rules_(timing.PlcCycle()) {
-        bench_.Call(fb_);
-        bench_.Start();
-        rules_.AddCommand("the FB", fb_);
-        rules_.Attach(bench_.Task());
-        bench_.Scan(3);  // the controller has booted and answered
+    explicit Single(pac::FbInstance<T> fb, const BusTiming& timing = kTiming) : fb_(fb), plc_(timing) {
+        plc_.Add("the FB", fb_);
+        plc_.Start();
+        plc_.Scan(3);  // the controller has booted and answered
     }
 
     // One command: Execute edge, wait for Done or Error, Execute back to FALSE for one scan.
     FinalOutcome Run(int maxScans = 500) {
-        fb_->EXECUTE.value = TRUE;
-        bench_.Scan();
-        edgeTime_ = bench_.Now();
-        sent_ = MasterFrame::Decode(bench_.ToPac().Cmd());
-        const FinalOutcome out = pac::test::RunToFinal(fb_, bench_.Task().ScanCount(), [this] {
-            bench_.Scan();
-            return bench_.Task().ScanCount();
-        }, maxScans);
-        fb_->EXECUTE.value = FALSE;
-        bench_.Scan();
+        plc_.Begin(fb_);
+        sent_ = MasterFrame::Decode(plc_.Bench().ToPac().Cmd());
+        const FinalOutcome out = plc_.Wait(fb_, maxScans);
+        plc_.Release(fb_);
         return out;
     }
 
     pac::FbInstance<T>& Fb() { return fb_; }
-    PacPlcBench& Bench() { return bench_; }
-    pac::sim::PaControl& Pac() { return bench_.Controller(); }
+    pac::test::CommandPlc& Plc() { return plc_; }
+    pac::sim::PaControl& Pac() { return plc_.Controller(); }
     // The module as the FB wrote it in the Execute edge scan of the last Run().
     const MasterFrame& Sent() const { return sent_; }
-    // The scans the protocol needs for the command of the last Run().
-    pac::test::ScanWindow Window() const { return window_.Request(edgeTime_); }
-    const pac::test::ProtocolWindow& Protocol() const { return window_; }
 
 private:
-    pac::FbInstance<T> fb_;  // declared before the bench, which calls it
-    PacPlcBench bench_;
-    pac::test::ProtocolWindow window_;
-    pac::test::PlcOpenWatch rules_;
+    pac::FbInstance<T> fb_;  // declared before the PLC, which calls it
+    pac::test::CommandPlc plc_;
     MasterFrame sent_;
-    std::chrono::nanoseconds edgeTime_{0};
 };
 
 #define EXPECT_FRAME(single, expectedCode, expectedParam, expectedData)                   \
@@ -443,11 +424,11 @@ TEST(ElementFbs, LibraryErrorsPassThrough) {
     Single<FB_PAC_READINTREG> s(PAC_FB(FB_PAC_READINTREG));
     s.Fb()->NUMBER.value = 1;
     s.Fb()->TIMEOUT.value = TIME{0, 30'000'000};
-    s.Bench().Bus().ToMaster().SetFault(s.Bench().Now(), pac::sim::LinkFault::kFrozen);
+    s.Plc().Bench().Bus().ToMaster().SetFault(s.Plc().Now(), pac::sim::LinkFault::kFrozen);
     const FinalOutcome out = s.Run();
     ASSERT_TRUE(out.Error());
     EXPECT_EQ(out.ErrorId(), kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
-    EXPECT_EQ(out.Scans(), s.Protocol().TimeoutScans(30ms)) << "Timeout is the FB's own input, handed to FB_PAC_Cmd";
+    EXPECT_EQ(out.Scans(), s.Plc().Protocol().TimeoutScans(30ms)) << "Timeout is the FB's own input, handed to FB_PAC_Cmd";
 }
 
 // ---- PLCopen output rules, once, on FB_PAC_ReadIntReg ----
@@ -459,7 +440,7 @@ protected:
     void ScanAndCheck(int n = 1) {
         for (int i = 0; i < n; ++i) {
             const DINT before = fb()->VALUE.value;
-            s_.Bench().Scan();
+            s_.Plc().Scan();
             auto& f = s_.Fb().Data();
             EXPECT_EQ(f.DONE.value, f.CMD.DONE.value);
             EXPECT_EQ(f.BUSY.value, f.CMD.BUSY.value);
@@ -585,9 +566,9 @@ TEST(ElementFbs, SameScansAsFbPacCmd) {
             const FinalOutcome r = read.Run();
             const FinalOutcome w = write.Run();
             ASSERT_TRUE(c.Done() && r.Done() && w.Done());
-            EXPECT_TRUE(cmd.Window().Contains(c.Scans())) << c << ", the protocol allows " << cmd.Window();
-            EXPECT_TRUE(read.Window().Contains(r.Scans())) << r << ", the protocol allows " << read.Window();
-            EXPECT_TRUE(write.Window().Contains(w.Scans())) << w << ", the protocol allows " << write.Window();
+            EXPECT_TRUE(cmd.Plc().Window().Contains(c.Scans())) << c << ", the protocol allows " << cmd.Plc().Window();
+            EXPECT_TRUE(read.Plc().Window().Contains(r.Scans())) << r << ", the protocol allows " << read.Plc().Window();
+            EXPECT_TRUE(write.Plc().Window().Contains(w.Scans())) << w << ", the protocol allows " << write.Plc().Window();
             EXPECT_EQ(r.Scans(), c.Scans());
             EXPECT_EQ(w.Scans(), c.Scans());
             EXPECT_EQ(read.Fb()->VALUE.value, 42);
@@ -610,38 +591,24 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     auto readI = PAC_FB(FB_PAC_READINPUT);
     auto readState = PAC_FB(FB_PAC_READSTATE);
     auto cmd = PAC_FB(FB_PAC_CMD);
-    PacPlcBench bench(pac::test::PlcBenchTimingOf(kTiming));
+    pac::test::CommandPlc plc(kTiming);
     // Called in this order every scan: the writes come before the reads of the same elements.
-    bench.Call(writeN);
-    bench.Call(writeR);
-    bench.Call(writeO);
-    bench.Call(writeMW);
-    bench.Call(readN);
-    bench.Call(readN2);
-    bench.Call(readR);
-    bench.Call(readO);
-    bench.Call(readM);
-    bench.Call(readI);
-    bench.Call(readState);
-    bench.Call(cmd);
-    bench.Start();
-    pac::test::PlcOpenWatch rules(kTiming.PlcCycle());
-    rules.AddCommand("FB_PAC_WriteIntReg", writeN);
-    rules.AddCommand("FB_PAC_WriteRealReg", writeR);
-    rules.AddCommand("FB_PAC_WriteOutput", writeO);
-    rules.AddCommand("FB_PAC_WriteFlagWord", writeMW);
-    rules.AddCommand("FB_PAC_ReadIntReg N5", readN);
-    rules.AddCommand("FB_PAC_ReadIntReg N6", readN2);
-    rules.AddCommand("FB_PAC_ReadRealReg", readR);
-    rules.AddCommand("FB_PAC_ReadOutput", readO);
-    rules.AddCommand("FB_PAC_ReadFlag", readM);
-    rules.AddCommand("FB_PAC_ReadInput", readI);
-    rules.AddCommand("FB_PAC_ReadState", readState);
-    rules.AddCommand("FB_PAC_Cmd", cmd);
-    rules.Attach(bench.Task());
-    bench.Scan(3);
+    plc.Add("FB_PAC_WriteIntReg", writeN);
+    plc.Add("FB_PAC_WriteRealReg", writeR);
+    plc.Add("FB_PAC_WriteOutput", writeO);
+    plc.Add("FB_PAC_WriteFlagWord", writeMW);
+    plc.Add("FB_PAC_ReadIntReg N5", readN);
+    plc.Add("FB_PAC_ReadIntReg N6", readN2);
+    plc.Add("FB_PAC_ReadRealReg", readR);
+    plc.Add("FB_PAC_ReadOutput", readO);
+    plc.Add("FB_PAC_ReadFlag", readM);
+    plc.Add("FB_PAC_ReadInput", readI);
+    plc.Add("FB_PAC_ReadState", readState);
+    plc.Add("FB_PAC_Cmd", cmd);
+    plc.Start();
+    plc.Scan(3);
 
-    auto& io = bench.Controller().Io();
+    auto& io = plc.Controller().Io();
     io.inputs.Set(3, true);
     io.intRegisters.SetInt(6, 606);
     writeN->NUMBER.value = 5;
@@ -662,11 +629,11 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     cmd->PARAM.value = 8;
     cmd->DATA.value = 888;
 
-    const auto recognizedBefore = bench.Controller().Counters().recognized;
+    const auto recognizedBefore = plc.Controller().Counters().recognized;
     writeN->EXECUTE.value = writeR->EXECUTE.value = writeO->EXECUTE.value = writeMW->EXECUTE.value = TRUE;
     readN->EXECUTE.value = readN2->EXECUTE.value = readR->EXECUTE.value = readO->EXECUTE.value = TRUE;
     readM->EXECUTE.value = readI->EXECUTE.value = readState->EXECUTE.value = cmd->EXECUTE.value = TRUE;
-    bench.Scan();
+    plc.Scan();
     // Inputs latched at the edge: a change while the FB waits for the interface is not sent.
     EXPECT_TRUE(writeR->BUSY.value);
     writeR->VALUE.value = 99.0F;
@@ -682,12 +649,12 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
                readN->ERROR.value || readN2->ERROR.value || readR->ERROR.value || readO->ERROR.value ||
                readM->ERROR.value || readI->ERROR.value || readState->ERROR.value || cmd->ERROR.value;
     };
-    ASSERT_GT(bench.ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
+    ASSERT_GT(plc.Bench().ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
     ASSERT_FALSE(anyError());
     ASSERT_TRUE(allDone());
 
-    EXPECT_EQ(bench.Controller().Counters().recognized, recognizedBefore + 12) << "one command per FB, no more";
-    EXPECT_EQ(bench.Controller().Counters().failed, 0u);
+    EXPECT_EQ(plc.Controller().Counters().recognized, recognizedBefore + 12) << "one command per FB, no more";
+    EXPECT_EQ(plc.Controller().Counters().failed, 0u);
     EXPECT_EQ(io.intRegisters.GetInt(5), -123456);
     EXPECT_EQ(io.realRegisters.Get(6), BitsOf(2.5F));
     EXPECT_TRUE(io.outputs.Get(7));
@@ -703,7 +670,7 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
 
     // The controller saw them one after the other, in call order, each with the data of its edge.
     std::vector<MasterFrame> commands;
-    for (const auto& record : bench.Controller().Log().Records()) {
+    for (const auto& record : plc.Controller().Log().Records()) {
         if (record.newCommand) commands.push_back(MasterFrame::Decode(record.master.Cmd()));
     }
     const std::vector<std::uint16_t> expectedCodes = {0x0906, 0x0907, 0x0902, 0x0905, 0x1906, 0x1906,

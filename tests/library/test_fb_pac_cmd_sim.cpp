@@ -8,13 +8,11 @@
 #include <cstdint>
 #include <string>
 
-#include "bench_timing.hpp"
 #include "bus_timing.hpp"
+#include "command_plc.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
-#include "plcopen_watch.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
@@ -25,16 +23,12 @@ using std::chrono::nanoseconds;
 using pac::test::BusTiming;
 using pac::test::FinalOutcome;
 
-// A PLC with one FB_PAC_Cmd on the CMD interface of a simulated PA-CONTROL; every scan runs the
-// PLCopen checker on it.
+// A PLC with one FB_PAC_Cmd on the CMD interface of a simulated PA-CONTROL.
 class CmdBench {
 public:
-    explicit CmdBench(const BusTiming& timing, nanoseconds bootTime = 0ns)
-        : plc_(pac::test::PlcBenchTimingOf(timing, bootTime)), window_(timing) {
-        plc_.Call(cmd_);
+    explicit CmdBench(const BusTiming& timing, nanoseconds bootTime = 0ns) : plc_(timing, {}, bootTime) {
+        plc_.Add("FB_PAC_Cmd", cmd_);
         plc_.Start();
-        rules_.AddCommand("FB_PAC_Cmd", cmd_);
-        rules_.Attach(plc_.Task());
     }
 
     // Runs one command to its end: Execute edge, wait for Done or Error, Execute back to FALSE.
@@ -42,41 +36,28 @@ public:
         cmd_->CODE.value = code;
         cmd_->PARAM.value = param;
         cmd_->DATA.value = data;
-        cmd_->EXECUTE.value = TRUE;
-        plc_.Scan();
-        edgeTime_ = plc_.Now();
-        const FinalOutcome outcome = pac::test::RunToFinal(cmd_, plc_.Task().ScanCount(), [this] { return Step(); },
-                                                           maxScans);
+        plc_.Begin(cmd_);
+        const FinalOutcome outcome = plc_.Wait(cmd_, maxScans);
         ackData_ = cmd_->ACKDATA.value;
-        cmd_->EXECUTE.value = FALSE;
-        plc_.Scan();
+        plc_.Release(cmd_);
         return outcome;
     }
 
     // AckData in the scan that ended the last Run() (Execute falls in the scan after it).
     std::uint32_t AckData() const { return ackData_; }
-
     // The scans the protocol needs for the command of the last Run(): exact without jitter.
-    pac::test::ScanWindow Window() const { return window_.Request(edgeTime_); }
+    pac::test::ScanWindow Window() const { return plc_.Window(); }
 
     void Settle(int scans) { plc_.Scan(scans); }
 
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
-    pac::sim::Bus& Bus() { return plc_.Bus(); }
+    pac::sim::Bus& Bus() { return plc_.Bench().Bus(); }
     nanoseconds Now() const { return plc_.Now(); }
 
 private:
-    std::int64_t Step() {
-        plc_.Scan();
-        return plc_.Task().ScanCount();
-    }
-
-    pac::test::PacPlcBench plc_;
-    pac::test::ProtocolWindow window_;
-    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
-    pac::test::PlcOpenWatch rules_{window_.Timing().PlcCycle()};
-    nanoseconds edgeTime_{0};
+    pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);  // before the PLC, which calls it
+    pac::test::CommandPlc plc_;
     std::uint32_t ackData_ = 0;
 };
 

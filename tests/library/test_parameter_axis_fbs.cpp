@@ -13,14 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "bench_timing.hpp"
 #include "bus_timing.hpp"
+#include "command_plc.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
 #include "pac/st_program.hpp"
-#include "pac_plc_bench.hpp"
-#include "plcopen_watch.hpp"
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
@@ -43,82 +41,47 @@ std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
 class AxisBench {
 public:
     explicit AxisBench(const BusTiming& t, pac::sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
-        : timing_(t), plc_(pac::test::PlcBenchTimingOf(t, bootTime), config), rules_(t.PlcCycle()) {
-        plc_.Call(cmd);
-        plc_.Call(writeSys);
-        plc_.Call(readSys);
-        plc_.Call(writeAxis);
-        plc_.Call(readAxis);
-        plc_.Call(readPos);
-        plc_.Call(readStatus);
-        plc_.Call(readAll);
-        plc_.Call(moveAbs);
-        plc_.Call(moveRel);
-        plc_.Call(stop);
-        plc_.Call(setSpeed);
-        plc_.Call(setAccel);
+        : plc_(t, config, bootTime) {
+        plc_.Add("FB_PAC_Cmd", cmd);
+        plc_.Add("WriteSystemParameter", writeSys);
+        plc_.Add("ReadSystemParameter", readSys);
+        plc_.Add("WriteAxisParameter", writeAxis);
+        plc_.Add("ReadAxisParameter", readAxis);
+        plc_.Add("ReadAxisPosition", readPos);
+        plc_.Add("ReadAxisStatus", readStatus);
+        plc_.Add("ReadAllAxesStatus", readAll);
+        plc_.Add("MoveAxisAbsolute", moveAbs);
+        plc_.Add("MoveAxisRelative", moveRel);
+        plc_.Add("StopAxis", stop);
+        plc_.Add("SetAxisSpeed", setSpeed);
+        plc_.Add("SetAxisAcceleration", setAccel);
         plc_.Start();
-        rules_.AddCommand("FB_PAC_Cmd", cmd);
-        rules_.AddCommand("WriteSystemParameter", writeSys);
-        rules_.AddCommand("ReadSystemParameter", readSys);
-        rules_.AddCommand("WriteAxisParameter", writeAxis);
-        rules_.AddCommand("ReadAxisParameter", readAxis);
-        rules_.AddCommand("ReadAxisPosition", readPos);
-        rules_.AddCommand("ReadAxisStatus", readStatus);
-        rules_.AddCommand("ReadAllAxesStatus", readAll);
-        rules_.AddCommand("MoveAxisAbsolute", moveAbs);
-        rules_.AddCommand("MoveAxisRelative", moveRel);
-        rules_.AddCommand("StopAxis", stop);
-        rules_.AddCommand("SetAxisSpeed", setSpeed);
-        rules_.AddCommand("SetAxisAcceleration", setAccel);
-        rules_.Attach(plc_.Task());
-        for (int i = 0; i < 1000 && !plc_.Controller().Booted(); ++i) plc_.Scan();
+        for (int i = 0; i < 1000 && !Controller().Booted(); ++i) plc_.Scan();
         plc_.Scan(3 + 2 * t.latency);
     }
 
     // Execute edge, scans until Done, Error or CommandAborted, then Execute back to FALSE for one scan.
     template <class Fb>
     FinalOutcome Run(pac::FbInstance<Fb>& fb, int maxScans = 20000) {
-        const FinalOutcome outcome = StartAndWait(fb, maxScans);
-        Release(fb);
-        return outcome;
+        return plc_.Run(fb, maxScans);
     }
-
-    // Execute edge and the wait for a final output; Execute stays TRUE.
-    template <class Fb>
-    FinalOutcome StartAndWait(pac::FbInstance<Fb>& fb, int maxScans = 20000) {
-        Start(fb);
-        return Wait(fb, maxScans);
-    }
-
     // The scan that sees the Execute edge.
     template <class Fb>
     void Start(pac::FbInstance<Fb>& fb) {
-        fb->EXECUTE.value = TRUE;
-        plc_.Scan();
-        edgeTime_ = plc_.Now();
-        edgeScan_ = plc_.Task().ScanCount();
+        plc_.Begin(fb);
     }
-
     // Scans until `fb` shows its final output, counted from the last Start(); `eachScan` after each scan.
     template <class Fb>
     FinalOutcome Wait(pac::FbInstance<Fb>& fb, int maxScans = 20000, const std::function<void()>& eachScan = {}) {
-        return pac::test::RunToFinal(fb, edgeScan_, [&] {
-            plc_.Scan();
-            if (eachScan) eachScan();
-            return plc_.Task().ScanCount();
-        }, maxScans);
+        return plc_.Wait(fb, maxScans, eachScan);
     }
-
     template <class Fb>
     void Release(pac::FbInstance<Fb>& fb) {
-        fb->EXECUTE.value = FALSE;
-        plc_.Scan();
+        plc_.Release(fb);
     }
 
-    // The scans the protocol needs for a command sent in the last Start()'s edge scan: the FBs add no
-    // scan to FB_PAC_Cmd.
-    pac::test::ScanWindow Window() const { return pac::test::ProtocolWindow(timing_).Request(edgeTime_); }
+    // The scans the protocol needs for a command sent in the last Start()'s edge scan.
+    pac::test::ScanWindow Window() const { return plc_.Window(); }
 
     // ONLINE the way a PLC gets there (5.2.1.3): system parameter 4 names the external stop input,
     // that input has power, then 0603.
@@ -131,17 +94,17 @@ public:
         cmd->PARAM.value = 0;
         cmd->DATA.value = 0;
         if (!Run(cmd).Done()) return false;
-        Settle(2 * (timing_.latency + 1));
+        Settle(2 * (plc_.Timing().latency + 1));
         return Controller().OperatingStatus() == 31 && cmd->OPSTATUS.value == 31;
     }
 
     void Settle(int scans) { plc_.Scan(scans); }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
-    pac::sim::ServoAxis& Motion(int axis) { return plc_.Controller().Axes().Motion(axis); }
-    const pac::sim::Dynamics& SessionDynamics(int axis) { return plc_.Controller().Axes().SessionDynamics(axis); }
-    pac::sim::Image8 ToPac() const { return plc_.ToPac().Cmd(); }
+    pac::sim::ServoAxis& Motion(int axis) { return Controller().Axes().Motion(axis); }
+    const pac::sim::Dynamics& SessionDynamics(int axis) { return Controller().Axes().SessionDynamics(axis); }
+    pac::sim::Image8 ToPac() { return plc_.Bench().ToPac().Cmd(); }
     nanoseconds Now() const { return plc_.Now(); }
-    nanoseconds EdgeTime() const { return edgeTime_; }
+    nanoseconds EdgeTime() const { return plc_.EdgeTime(); }
 
     pac::FbInstance<FB_PAC_CMD> cmd = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_WRITESYSTEMPARAMETER> writeSys = PAC_FB(FB_PAC_WRITESYSTEMPARAMETER);
@@ -158,11 +121,7 @@ public:
     pac::FbInstance<FB_PAC_SETAXISACCELERATION> setAccel = PAC_FB(FB_PAC_SETAXISACCELERATION);
 
 private:
-    BusTiming timing_;
-    pac::test::PacPlcBench plc_;
-    pac::test::PlcOpenWatch rules_;
-    nanoseconds edgeTime_{0};
-    std::int64_t edgeScan_ = 0;
+    pac::test::CommandPlc plc_;
 };
 
 // The command in the master's CMD module: data, parameter, code without the SEND flag.
