@@ -13,11 +13,9 @@
 #include <cstdint>
 #include <functional>
 #include <iomanip>
-#include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "axis_control_rules.hpp"
@@ -273,7 +271,7 @@ public:
     std::uint32_t Control(int k) const {
         return pac::sim::ReadDword(plc_.ToPac().Module12(layout_.AxisOffset(k)), 0);
     }
-    bool Final(int k) { return Fb(k)->DONE.value || Fb(k)->ERROR.value || Fb(k)->COMMANDABORTED.value; }
+    bool Final(int k) { return pac::test::IsFinal(Fb(k)); }
 
     void Scan(int n = 1) { plc_.Scan(n); }
     int ScansFor(int ms) const { return options_.timing.ScansFor(milliseconds(ms)); }

@@ -32,8 +32,6 @@
 namespace {
 
 using namespace std::chrono_literals;
-using std::chrono::microseconds;
-using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 namespace sim = pac::sim;
 using pac::test::BusTiming;

@@ -26,7 +26,6 @@
 namespace {
 
 using namespace std::chrono_literals;
-using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 
 const pac::test::GvlConstants kGvl;

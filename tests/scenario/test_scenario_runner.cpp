@@ -54,22 +54,24 @@ std::chrono::nanoseconds TimeOfScan(const Scenario& s, std::int64_t scan) {
     return scan * std::chrono::milliseconds(s.timing.plcCycleMs);
 }
 
-// The scans from the edge scan of an axis job to the scan that shows ACTIVE fallen, for a move of
-// `seconds` on the axis: the Start travels to the PA-CONTROL (latency), waits for its next cycle (less
-// than one cycle), the axis moves, ACTIVE falls in the first cycle that finds it in position (less than
-// one cycle), the reply travels back (latency) and the next scan reads it (less than one PLC cycle).
-pac::test::ScanWindow MoveWindow(const pac::test::BusTiming& t, double seconds) {
-    const double plc = std::chrono::duration<double>(t.PlcCycle()).count();
-    const double fixed = seconds + 2 * std::chrono::duration<double>(t.Latency() + t.Jitter()).count();
-    const double waits = 2 * std::chrono::duration<double>(t.PacCycle()).count();
-    return {static_cast<int>(std::ceil(fixed / plc - 1e-9)), static_cast<int>(std::ceil((fixed + waits) / plc))};
+// The scans from the edge scan of an axis job to the scan that shows ACTIVE fallen, for a move that
+// takes `move` on the axis: the Start travels to the PA-CONTROL (latency), waits for its next cycle
+// (less than one cycle), the axis moves, ACTIVE falls in the first cycle that finds it in position
+// (less than one cycle), the reply travels back (latency) and the next scan reads it.
+pac::test::ScanWindow MoveWindow(const pac::test::BusTiming& t, std::chrono::nanoseconds move) {
+    const auto scans = [&t](std::chrono::nanoseconds d) {
+        return static_cast<int>((d + t.PlcCycle() - std::chrono::nanoseconds(1)) / t.PlcCycle());
+    };
+    const std::chrono::nanoseconds fixed = move + 2 * t.Latency();
+    return {scans(fixed), scans(fixed + 2 * (t.PacCycle() + t.Jitter()))};
 }
 
 // A point-to-point move of `distance` at `speed` with ramps of `acceleration` both ways (docs/sim_axis.md:
 // the trapezoid, or a triangle where the distance is too short for the speed).
-double MoveSeconds(double distance, double speed, double acceleration) {
-    if (distance * acceleration >= speed * speed) return distance / speed + speed / acceleration;
-    return 2 * std::sqrt(distance / acceleration);
+std::chrono::nanoseconds MoveTime(double distance, double speed, double acceleration) {
+    const double seconds = distance * acceleration >= speed * speed ? distance / speed + speed / acceleration
+                                                                    : 2 * std::sqrt(distance / acceleration);
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(seconds));
 }
 
 // The line the timeline prints for an axis outcome.
@@ -80,7 +82,6 @@ std::string AxisLine(const pac::scenario::AxisOutcome& o, const std::string& res
          << o.endScan - o.edgeScan << " scans after the step began";
     return line.str();
 }
-
 
 // Lines of the timeline that show a scan: they start with the time column.
 int ScanLines(const std::string& timeline) {
@@ -135,7 +136,7 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     ASSERT_EQ(run.report.steps[11].axes.size(), 2u);
     const auto& moved = run.report.steps[11].axes[0];
     const double distance = 50.0 - run.report.steps[10].axes[0].position;
-    const pac::test::ScanWindow move = MoveWindow(bus, MoveSeconds(distance, 500.0, 10000.0));
+    const pac::test::ScanWindow move = MoveWindow(bus, MoveTime(distance, 500.0, 10000.0));
     EXPECT_TRUE(move.Contains(moved.endScan - moved.edgeScan))
         << moved.endScan - moved.edgeScan << " scans, the move allows " << move;
     EXPECT_NE(out.find(AxisLine(moved, "Done") + "; position 50.000, referenced"), std::string::npos) << out;

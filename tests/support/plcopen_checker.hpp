@@ -96,20 +96,15 @@ public:
 private:
     // What the next scan must show: the final output held (held_), or gone (oneScan_).
     void Follow(const CommandInputs& in, const PlcOpenOutputs& out, bool rose) {
-        const bool newFinal = out.Final() && (!held_ || out != *held_ || rose);
-        if (newFinal) {
-            const bool superseded = out.aborted && rose && wasBusy_;
-            const bool releasedEarly = !in.Any();
-            held_.reset();
-            oneScan_ = superseded || releasedEarly;
-            if (!oneScan_) held_ = out;
-        } else if (!out.Final()) {
-            held_.reset();
-            oneScan_ = false;
-        } else {
-            oneScan_ = false;
+        const bool continued = held_ && out == *held_ && !rose;
+        const bool superseded = out.aborted && rose && wasBusy_;
+        held_.reset();
+        oneScan_ = false;
+        if (out.Final() && !continued && (superseded || !in.Any())) {
+            oneScan_ = true;
+        } else if (out.Final() && in.Any()) {
+            held_ = out;
         }
-        if (!in.Any()) held_.reset();
         wasBusy_ = out.busy;
         in_ = in;
     }
