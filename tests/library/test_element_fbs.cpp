@@ -2,29 +2,31 @@
 // against the simulated PA-CONTROL over the simulated bus: the frames they send (manual 5.2.4, with
 // the manual's own examples), that written values land in the controller and read values come from
 // it (REAL registers bit for bit), command errors as the PA-CONTROL's numbers, the PLCopen output
-// rules, the timing of FB_PAC_Cmd, and several FBs sharing one interface.
+// rules (the checker of plcopen_checker.hpp in every scan), the timing of FB_PAC_Cmd, and several FBs
+// sharing one interface.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "bus_timing.hpp"
+#include "command_plc.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
+#include "pac/sim/cmd_frame.hpp"
 #include "pac/st_program.hpp"
 #include "real_bits.hpp"
-#include "pac/sim/cmd_frame.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "run_to_final.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
 using pac::sim::CommandFrame;
-using pac::PacPlcBench;
-using pac::PlcBenchTiming;
+using pac::test::BusTiming;
+using pac::test::FinalOutcome;
 
 static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float>::is_iec559,
               "REAL must be an IEEE-754 single");
@@ -32,59 +34,39 @@ static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float
 const pac::test::GvlConstants kGvl;
 
 // 1 ms PLC cycle, 10 ms controller cycle, one PLC cycle of bus latency each way.
-const PlcBenchTiming kTiming{1ms, 10ms, 1};
+const BusTiming kTiming{1, 10, 1};
 
 using pac::test::BitsOf;
 using pac::test::FloatOf;
-
-struct Outcome {
-    bool done = false;
-    bool error = false;
-    std::uint32_t errorId = 0;
-    int scans = -1;  // from the Execute edge (scan 1) to the scan with Done or Error
-};
 
 // One element FB alone on the CMD interface of a simulated PA-CONTROL.
 template <class T>
 class Single {
 public:
-    explicit Single(pac::FbInstance<T> fb, PlcBenchTiming timing = kTiming) : fb_(fb), bench_(timing) {
-        bench_.Call(fb_);
-        bench_.Start();
-        bench_.Scan(3);  // the controller has booted and answered
+    explicit Single(pac::FbInstance<T> fb, const BusTiming& timing = kTiming) : fb_(fb), plc_(timing) {
+        plc_.Add("the FB", fb_);
+        plc_.Start();
+        plc_.Scan(3);  // the controller has booted and answered
     }
 
     // One command: Execute edge, wait for Done or Error, Execute back to FALSE for one scan.
-    Outcome Run(int maxScans = 500) {
-        fb_->EXECUTE.value = TRUE;
-        bench_.Scan();
-        sent_ = CommandFrame::Decode(bench_.ToPac().Cmd());
-        Outcome out;
-        if (Final()) {
-            out.scans = 1;
-        } else {
-            const int more = bench_.ScanUntil([this] { return Final(); }, maxScans);
-            out.scans = more < 0 ? -1 : more + 1;
-        }
-        out.done = fb_->DONE.value != 0;
-        out.error = fb_->ERROR.value != 0;
-        out.errorId = fb_->ERRORID.value;
-        fb_->EXECUTE.value = FALSE;
-        bench_.Scan();
+    FinalOutcome Run(int maxScans = 500) {
+        plc_.Begin(fb_);
+        sent_ = CommandFrame::Decode(plc_.Bench().ToPac().Cmd());
+        const FinalOutcome out = plc_.Wait(fb_, maxScans);
+        plc_.Release(fb_);
         return out;
     }
 
     pac::FbInstance<T>& Fb() { return fb_; }
-    PacPlcBench& Bench() { return bench_; }
-    pac::sim::PaControl& Pac() { return bench_.Controller(); }
+    pac::test::CommandPlc& Plc() { return plc_; }
+    pac::sim::PaControl& Pac() { return plc_.Controller(); }
     // The module as the FB wrote it in the Execute edge scan of the last Run().
     const CommandFrame& Sent() const { return sent_; }
 
 private:
-    bool Final() { return fb_->DONE.value || fb_->ERROR.value; }
-
-    pac::FbInstance<T> fb_;  // declared before the bench, which calls it
-    PacPlcBench bench_;
+    pac::FbInstance<T> fb_;  // declared before the PLC, which calls it
+    pac::test::CommandPlc plc_;
     CommandFrame sent_;
 };
 
@@ -101,12 +83,12 @@ TEST(ElementFbs, ReadInputManualExample) {
     Single<FB_PAC_READINPUT> s(PAC_FB(FB_PAC_READINPUT));
     s.Pac().Io().inputs.Set(13, true);
     s.Fb()->NUMBER.value = 13;
-    const Outcome out = s.Run();
-    ASSERT_TRUE(out.done);
+    const FinalOutcome out = s.Run();
+    ASSERT_TRUE(out.Done());
     EXPECT_FRAME(s, 0x1900, 0x000D, 0u);  // 5.2.4.1
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
     s.Pac().Io().inputs.Set(13, false);
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, FALSE);
 }
 
@@ -115,11 +97,11 @@ TEST(ElementFbs, ReadInputWordManualExample) {
     for (int n : {1, 2, 9, 11, 12, 16}) s.Pac().Io().inputs.Set(n, true);  // 5.2.4.2: 8D03
     s.Pac().Io().inputs.SetWord(17, 0x00FF);
     s.Fb()->NUMBER.value = 10;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1901, 0x000A, 0u);
     EXPECT_EQ(s.Fb()->VALUE.value, 0x8D03);
     s.Fb()->NUMBER.value = 32;  // the last input of word 2
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, 0x00FF);
 }
 
@@ -129,13 +111,13 @@ TEST(ElementFbs, WriteOutputLandsInTheController) {
     Single<FB_PAC_WRITEOUTPUT> s(PAC_FB(FB_PAC_WRITEOUTPUT));
     s.Fb()->NUMBER.value = 13;
     s.Fb()->VALUE.value = TRUE;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0902, 0x000D, 0x00000001u);  // 5.2.4.3: value 0 / 1 in bytes 2..3
     EXPECT_TRUE(s.Pac().Io().outputs.Get(13));
     EXPECT_FALSE(s.Pac().Io().outputs.Get(12));
     EXPECT_FALSE(s.Pac().Io().outputs.Get(14));
     s.Fb()->VALUE.value = FALSE;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Sent().data, 0u);
     EXPECT_FALSE(s.Pac().Io().outputs.Get(13));
 }
@@ -144,11 +126,11 @@ TEST(ElementFbs, ReadOutputManualExample) {
     Single<FB_PAC_READOUTPUT> s(PAC_FB(FB_PAC_READOUTPUT));
     s.Pac().Io().outputs.Set(243, true);
     s.Fb()->NUMBER.value = 243;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1902, 0x00F3, 0u);  // 5.2.4.4
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
     s.Fb()->NUMBER.value = 244;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, FALSE);
 }
 
@@ -157,7 +139,7 @@ TEST(ElementFbs, WriteOutputWordManualExample) {
     s.Pac().Io().outputs.Set(16, true);  // word 1: untouched
     s.Fb()->NUMBER.value = 25;
     s.Fb()->VALUE.value = 0x3E11;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0903, 0x0019, 0x00003E11u);  // 5.2.4.5
     const auto& outputs = s.Pac().Io().outputs;
     for (int n = 17; n <= 32; ++n) {
@@ -167,7 +149,7 @@ TEST(ElementFbs, WriteOutputWordManualExample) {
     EXPECT_TRUE(outputs.Get(16));
     EXPECT_FALSE(outputs.Get(33));
     s.Fb()->VALUE.value = 0xFFFF;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Sent().data, 0x0000FFFFu) << "16-bit data in bytes 2..3, the high word 0";
     EXPECT_EQ(outputs.Word(17), 0xFFFF);
 }
@@ -176,7 +158,7 @@ TEST(ElementFbs, ReadOutputWordManualExample) {
     Single<FB_PAC_READOUTPUTWORD> s(PAC_FB(FB_PAC_READOUTPUTWORD));
     s.Pac().Io().outputs.SetWord(33, 0x5555);
     s.Fb()->NUMBER.value = 33;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1903, 0x0021, 0u);  // 5.2.4.6
     EXPECT_EQ(s.Fb()->VALUE.value, 0x5555);
 }
@@ -187,11 +169,11 @@ TEST(ElementFbs, WriteFlagLandsInTheController) {
     Single<FB_PAC_WRITEFLAG> s(PAC_FB(FB_PAC_WRITEFLAG));
     s.Fb()->NUMBER.value = 11;
     s.Fb()->VALUE.value = TRUE;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0904, 0x000B, 0x00000001u);  // 5.2.4.7
     EXPECT_TRUE(s.Pac().Io().flags.Get(11));
     s.Fb()->VALUE.value = FALSE;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FALSE(s.Pac().Io().flags.Get(11));
 }
 
@@ -199,11 +181,11 @@ TEST(ElementFbs, ReadFlagManualExample) {
     Single<FB_PAC_READFLAG> s(PAC_FB(FB_PAC_READFLAG));
     s.Pac().Io().flags.Set(243, true);
     s.Fb()->NUMBER.value = 243;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1904, 0x00F3, 0u);  // 5.2.4.8
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
     s.Pac().Io().flags.Set(243, false);
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, FALSE);
 }
 
@@ -211,7 +193,7 @@ TEST(ElementFbs, WriteFlagWordManualExample) {
     Single<FB_PAC_WRITEFLAGWORD> s(PAC_FB(FB_PAC_WRITEFLAGWORD));
     s.Fb()->NUMBER.value = 17;
     s.Fb()->VALUE.value = 0x45F2;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0905, 0x0011, 0x000045F2u);  // 5.2.4.9
     const auto& flags = s.Pac().Io().flags;
     for (int n = 17; n <= 32; ++n) {
@@ -224,7 +206,7 @@ TEST(ElementFbs, ReadFlagWordManualExample) {
     Single<FB_PAC_READFLAGWORD> s(PAC_FB(FB_PAC_READFLAGWORD));
     for (int n : {33, 34, 35, 36, 41, 42, 43, 44}) s.Pac().Io().flags.Set(n, true);  // 5.2.4.10: 0F0F
     s.Fb()->NUMBER.value = 33;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1905, 0x0021, 0u);
     EXPECT_EQ(s.Fb()->VALUE.value, 0x0F0F);
 }
@@ -235,17 +217,17 @@ TEST(ElementFbs, WriteIntRegLandsInTheController) {
     Single<FB_PAC_WRITEINTREG> s(PAC_FB(FB_PAC_WRITEINTREG));
     s.Fb()->NUMBER.value = 97;
     s.Fb()->VALUE.value = 12589;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0906, 0x0061, 0x0000312Du);  // 5.2.4.11
     EXPECT_EQ(s.Pac().Io().intRegisters.GetInt(97), 12589);
     for (std::int32_t v : {-1, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max(), 0}) {
         s.Fb()->VALUE.value = v;
-        ASSERT_TRUE(s.Run().done) << v;
+        ASSERT_TRUE(s.Run().Done()) << v;
         EXPECT_EQ(s.Pac().Io().intRegisters.GetInt(97), v);
     }
     s.Fb()->NUMBER.value = 1024;
     s.Fb()->VALUE.value = -5;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Sent().data, 0xFFFFFFFBu) << "two's complement";
     EXPECT_EQ(s.Pac().Io().intRegisters.GetInt(1024), -5);
 }
@@ -254,12 +236,12 @@ TEST(ElementFbs, ReadIntRegManualExample) {
     Single<FB_PAC_READINTREG> s(PAC_FB(FB_PAC_READINTREG));
     s.Pac().Io().intRegisters.SetInt(129, 88224);
     s.Fb()->NUMBER.value = 129;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1906, 0x0081, 0u);  // 5.2.4.12
     EXPECT_EQ(s.Fb()->VALUE.value, 88224);
     for (std::int32_t v : {-1, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()}) {
         s.Pac().Io().intRegisters.SetInt(129, v);
-        ASSERT_TRUE(s.Run().done) << v;
+        ASSERT_TRUE(s.Run().Done()) << v;
         EXPECT_EQ(s.Fb()->VALUE.value, v);
     }
 }
@@ -279,11 +261,11 @@ TEST(ElementFbs, WriteRealRegIsBitExact) {
     Single<FB_PAC_WRITEREALREG> s(PAC_FB(FB_PAC_WRITEREALREG));
     s.Fb()->NUMBER.value = 27;
     s.Fb()->VALUE.value = 10.0F;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0907, 0x001B, 0x41200000u);  // 5.2.4.13
     for (float v : RealSamples()) {
         s.Fb()->VALUE.value = v;
-        ASSERT_TRUE(s.Run().done) << v;
+        ASSERT_TRUE(s.Run().Done()) << v;
         EXPECT_EQ(s.Sent().data, BitsOf(v)) << v;
         EXPECT_EQ(s.Pac().Io().realRegisters.Get(27), BitsOf(v)) << v;
     }
@@ -293,13 +275,13 @@ TEST(ElementFbs, ReadRealRegIsBitExact) {
     Single<FB_PAC_READREALREG> s(PAC_FB(FB_PAC_READREALREG));
     s.Pac().Io().realRegisters.Set(37, 0x42DE38D5u);  // 5.2.4.14: 111.111
     s.Fb()->NUMBER.value = 37;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1907, 0x0025, 0u);
     EXPECT_EQ(BitsOf(s.Fb()->VALUE.value), 0x42DE38D5u);
     EXPECT_FLOAT_EQ(s.Fb()->VALUE.value, 111.111F);
     for (float v : RealSamples()) {
         s.Pac().Io().realRegisters.SetReal(37, v);
-        ASSERT_TRUE(s.Run().done) << v;
+        ASSERT_TRUE(s.Run().Done()) << v;
         EXPECT_EQ(BitsOf(s.Fb()->VALUE.value), BitsOf(v)) << v;
     }
 }
@@ -309,7 +291,7 @@ TEST(ElementFbs, ReadRealRegIsBitExact) {
 TEST(ElementFbs, ResetErrorResetsAResettableError) {
     Single<FB_PAC_RESETERROR> s(PAC_FB(FB_PAC_RESETERROR));
     s.Pac().SetSystemError(150);  // class 2: system error hardware
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x0909, 0x0000, 0u);  // 5.2.4.15
     EXPECT_EQ(s.Pac().SystemError(), 0);
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 0);
@@ -318,13 +300,13 @@ TEST(ElementFbs, ResetErrorResetsAResettableError) {
 TEST(ElementFbs, ResetErrorReportsTheErrorThatStays) {
     Single<FB_PAC_RESETERROR> s(PAC_FB(FB_PAC_RESETERROR));
     s.Pac().SetSystemError(5);  // class 1: CPU error, power cycle only
-    const Outcome out = s.Run();
-    ASSERT_TRUE(out.error);
-    EXPECT_EQ(out.errorId, kGvl["PAC_ERR_NOT_EXECUTABLE"]);
+    const FinalOutcome out = s.Run();
+    ASSERT_TRUE(out.Error());
+    EXPECT_EQ(out.ErrorId(), kGvl["PAC_ERR_NOT_EXECUTABLE"]);
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 5) << "5.2.4.15: the error number again in the acknowledgement data";
     EXPECT_EQ(s.Pac().SystemError(), 5);
     s.Pac().SetSystemError(200);
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 0) << "cleared by the next final result";
 }
 
@@ -332,9 +314,9 @@ TEST(ElementFbs, ResetErrorOutsideHomePositionIsInadmissible) {
     Single<FB_PAC_RESETERROR> s(PAC_FB(FB_PAC_RESETERROR));
     s.Pac().SetSystemError(150);
     s.Pac().SetOperatingStatus(static_cast<std::uint8_t>(kGvl["PAC_STATUS_ONLINE"]));
-    const Outcome out = s.Run();
-    ASSERT_TRUE(out.error);
-    EXPECT_EQ(out.errorId, kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
+    const FinalOutcome out = s.Run();
+    ASSERT_TRUE(out.Error());
+    EXPECT_EQ(out.ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 0);
     EXPECT_EQ(s.Pac().SystemError(), 150);
 }
@@ -342,22 +324,22 @@ TEST(ElementFbs, ResetErrorOutsideHomePositionIsInadmissible) {
 TEST(ElementFbs, ReadErrorManualExample) {
     Single<FB_PAC_READERROR> s(PAC_FB(FB_PAC_READERROR));
     s.Pac().SetSystemError(529);  // 5.2.4.16: 0211
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1909, 0x0000, 0u);
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 529);
     s.Pac().SetSystemError(0);
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->ERRORNUMBER.value, 0);
 }
 
 TEST(ElementFbs, ReadStateGivesTheDecimalStatusCode) {
     Single<FB_PAC_READSTATE> s(PAC_FB(FB_PAC_READSTATE));
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x190B, 0x0000, 0u);  // 5.2.4.17
     EXPECT_EQ(s.Fb()->OPSTATUS.value, kGvl["PAC_STATUS_HOME_POSITION"]);
     for (const char* name : {"PAC_STATUS_ONLINE", "PAC_STATUS_AUTO_STARTED", "PAC_STATUS_ONLINE_STOPPED_MALFUNCTION"}) {
         s.Pac().SetOperatingStatus(static_cast<std::uint8_t>(kGvl[name]));
-        ASSERT_TRUE(s.Run().done) << name;
+        ASSERT_TRUE(s.Run().Done()) << name;
         EXPECT_EQ(s.Fb()->OPSTATUS.value, kGvl[name]) << name;
     }
 }
@@ -368,14 +350,14 @@ TEST(ElementFbs, ReadSystemFlag) {
     Single<FB_PAC_READSYSTEMFLAG> s(PAC_FB(FB_PAC_READSYSTEMFLAG));
     s.Pac().Io().systemFlags.Set(200, true);
     s.Fb()->NUMBER.value = 200;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1934, 200, 0u);  // 5.2.4.29, code per NOTES.md
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
     s.Fb()->NUMBER.value = 201;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, FALSE);
     s.Fb()->NUMBER.value = 51;  // SM51: axis 1 referenced (referenced at power on)
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
 }
 
@@ -383,12 +365,12 @@ TEST(ElementFbs, ReadSystemIntReg) {
     Single<FB_PAC_READSYSTEMINTREG> s(PAC_FB(FB_PAC_READSYSTEMINTREG));
     s.Pac().Io().systemIntRegisters.SetInt(20, -7);
     s.Fb()->NUMBER.value = 20;
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_FRAME(s, 0x1935, 20, 0u);  // 5.2.4.30, code per NOTES.md
     EXPECT_EQ(s.Fb()->VALUE.value, -7);
     s.Pac().SetSystemError(529);
     s.Fb()->NUMBER.value = 10;  // SN10: the system error number
-    ASSERT_TRUE(s.Run().done);
+    ASSERT_TRUE(s.Run().Done());
     EXPECT_EQ(s.Fb()->VALUE.value, 529);
 }
 
@@ -397,7 +379,7 @@ TEST(ElementFbs, ReadSystemRealRegIsBitExact) {
     s.Fb()->NUMBER.value = 5;
     for (float v : RealSamples()) {
         s.Pac().Io().systemRealRegisters.SetReal(5, v);
-        ASSERT_TRUE(s.Run().done) << v;
+        ASSERT_TRUE(s.Run().Done()) << v;
         EXPECT_FRAME(s, 0x1937, 5, 0u);  // 5.2.4.31, code per NOTES.md
         EXPECT_EQ(BitsOf(s.Fb()->VALUE.value), BitsOf(v)) << v;
     }
@@ -410,10 +392,10 @@ void ExpectNumberRefused(pac::FbInstance<T> fb, std::uint16_t number, const std:
     SCOPED_TRACE(errorName + ", number " + std::to_string(number));
     Single<T> s(fb);
     s.Fb()->NUMBER.value = number;
-    const Outcome out = s.Run();
-    EXPECT_TRUE(out.error);
-    EXPECT_FALSE(out.done);
-    EXPECT_EQ(out.errorId, kGvl[errorName]);
+    const FinalOutcome out = s.Run();
+    EXPECT_TRUE(out.Error());
+    EXPECT_FALSE(out.Done());
+    EXPECT_EQ(out.ErrorId(), kGvl[errorName]);
     EXPECT_EQ(s.Pac().Counters().failed, 1u);
 }
 
@@ -441,29 +423,28 @@ TEST(ElementFbs, LibraryErrorsPassThrough) {
     Single<FB_PAC_READINTREG> s(PAC_FB(FB_PAC_READINTREG));
     s.Fb()->NUMBER.value = 1;
     s.Fb()->TIMEOUT.value = TIME{0, 30'000'000};
-    s.Bench().Bus().FromPacLink().SetFault(s.Bench().Now(), pac::sim::LinkFault::kFrozen);
-    const Outcome out = s.Run();
-    ASSERT_TRUE(out.error);
-    EXPECT_EQ(out.errorId, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
-    EXPECT_EQ(out.scans, 31) << "Timeout is the FB's own input, handed to FB_PAC_Cmd";
+    s.Plc().Bench().Bus().FromPacLink().SetFault(s.Plc().Now(), pac::sim::LinkFault::kFrozen);
+    const FinalOutcome out = s.Run();
+    ASSERT_TRUE(out.Error());
+    EXPECT_EQ(out.ErrorId(), kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    EXPECT_EQ(out.Scans(), s.Plc().Protocol().TimeoutScans(30ms)) << "Timeout is the FB's own input, handed to FB_PAC_Cmd";
 }
 
 // ---- PLCopen output rules, once, on FB_PAC_ReadIntReg ----
 
 class ReadIntRegRules : public ::testing::Test {
 protected:
-    // Each scan: the outputs are FB_PAC_Cmd's, Busy / Done / Error are mutually exclusive, and Value
-    // changes only in a scan that shows Done.
+    // Each scan: the outputs are FB_PAC_Cmd's and Value changes only in a scan that shows Done (the
+    // PLCopen rules: Single's checker).
     void ScanAndCheck(int n = 1) {
         for (int i = 0; i < n; ++i) {
             const DINT before = fb()->VALUE.value;
-            s_.Bench().Scan();
+            s_.Plc().Scan();
             auto& f = s_.Fb().Data();
             EXPECT_EQ(f.DONE.value, f.CMD.DONE.value);
             EXPECT_EQ(f.BUSY.value, f.CMD.BUSY.value);
             EXPECT_EQ(f.ERROR.value, f.CMD.ERROR.value);
             EXPECT_EQ(f.ERRORID.value, f.CMD.ERRORID.value);
-            EXPECT_LE(f.DONE.value + f.BUSY.value + f.ERROR.value, 1) << "mutually exclusive";
             if (!f.DONE.value) {
                 EXPECT_EQ(f.VALUE.value, before) << "Value changes only with Done";
             }
@@ -530,7 +511,7 @@ TEST_F(ReadIntRegRules, ExecuteFallingWhileBusyShowsDoneForOneScan) {
 TEST_F(ReadIntRegRules, ErrorHoldsWhileExecuteAndKeepsValue) {
     N().SetInt(4, 3);
     fb()->NUMBER.value = 4;
-    ASSERT_TRUE(s_.Run().done);
+    ASSERT_TRUE(s_.Run().Done());
     ASSERT_EQ(fb()->VALUE.value, 3);
     fb()->NUMBER.value = 1025;
     fb()->EXECUTE.value = TRUE;
@@ -566,10 +547,9 @@ TEST_F(ReadIntRegRules, EdgeWhileBusyIsIgnored) {
 // ---- Timing: FB_PAC_Cmd's, plus nothing ----
 
 TEST(ElementFbs, SameScansAsFbPacCmd) {
-    const PlcBenchTiming timings[] = {{1ms, 10ms, 1}, {1ms, 1ms, 0}, {2ms, 3ms, 2}, {5ms, 7ms, 1}, {10ms, 1ms, 3}};
-    for (const auto& t : timings) {
-        SCOPED_TRACE("plc " + std::to_string(t.plcCycle.count()) + " ns, pac " + std::to_string(t.pacCycle.count()) +
-                     " ns, latency " + std::to_string(t.latencyCycles));
+    const BusTiming timings[] = {{1, 10, 1}, {1, 1, 0}, {2, 3, 2}, {5, 7, 1}, {10, 1, 3}};
+    for (const BusTiming& t : timings) {
+        SCOPED_TRACE(pac::test::Describe(t));
         Single<FB_PAC_CMD> cmd(PAC_FB(FB_PAC_CMD), t);
         cmd.Pac().Io().intRegisters.SetInt(3, 42);
         cmd.Fb()->CODE.value = 0x1906;
@@ -581,12 +561,15 @@ TEST(ElementFbs, SameScansAsFbPacCmd) {
         write.Fb()->NUMBER.value = 3;
         write.Fb()->VALUE.value = 2.5F;
         for (int i = 0; i < 3; ++i) {
-            const Outcome c = cmd.Run();
-            const Outcome r = read.Run();
-            const Outcome w = write.Run();
-            ASSERT_TRUE(c.done && r.done && w.done);
-            EXPECT_EQ(r.scans, c.scans);
-            EXPECT_EQ(w.scans, c.scans);
+            const FinalOutcome c = cmd.Run();
+            const FinalOutcome r = read.Run();
+            const FinalOutcome w = write.Run();
+            ASSERT_TRUE(c.Done() && r.Done() && w.Done());
+            EXPECT_TRUE(cmd.Plc().Window().Contains(c.Scans())) << c << ", the protocol allows " << cmd.Plc().Window();
+            EXPECT_TRUE(read.Plc().Window().Contains(r.Scans())) << r << ", the protocol allows " << read.Plc().Window();
+            EXPECT_TRUE(write.Plc().Window().Contains(w.Scans())) << w << ", the protocol allows " << write.Plc().Window();
+            EXPECT_EQ(r.Scans(), c.Scans());
+            EXPECT_EQ(w.Scans(), c.Scans());
             EXPECT_EQ(read.Fb()->VALUE.value, 42);
         }
     }
@@ -607,24 +590,24 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     auto readI = PAC_FB(FB_PAC_READINPUT);
     auto readState = PAC_FB(FB_PAC_READSTATE);
     auto cmd = PAC_FB(FB_PAC_CMD);
-    PacPlcBench bench(kTiming);
+    pac::test::CommandPlc plc(kTiming);
     // Called in this order every scan: the writes come before the reads of the same elements.
-    bench.Call(writeN);
-    bench.Call(writeR);
-    bench.Call(writeO);
-    bench.Call(writeMW);
-    bench.Call(readN);
-    bench.Call(readN2);
-    bench.Call(readR);
-    bench.Call(readO);
-    bench.Call(readM);
-    bench.Call(readI);
-    bench.Call(readState);
-    bench.Call(cmd);
-    bench.Start();
-    bench.Scan(3);
+    plc.Add("FB_PAC_WriteIntReg", writeN);
+    plc.Add("FB_PAC_WriteRealReg", writeR);
+    plc.Add("FB_PAC_WriteOutput", writeO);
+    plc.Add("FB_PAC_WriteFlagWord", writeMW);
+    plc.Add("FB_PAC_ReadIntReg N5", readN);
+    plc.Add("FB_PAC_ReadIntReg N6", readN2);
+    plc.Add("FB_PAC_ReadRealReg", readR);
+    plc.Add("FB_PAC_ReadOutput", readO);
+    plc.Add("FB_PAC_ReadFlag", readM);
+    plc.Add("FB_PAC_ReadInput", readI);
+    plc.Add("FB_PAC_ReadState", readState);
+    plc.Add("FB_PAC_Cmd", cmd);
+    plc.Start();
+    plc.Scan(3);
 
-    auto& io = bench.Controller().Io();
+    auto& io = plc.Controller().Io();
     io.inputs.Set(3, true);
     io.intRegisters.SetInt(6, 606);
     writeN->NUMBER.value = 5;
@@ -645,11 +628,11 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
     cmd->PARAM.value = 8;
     cmd->DATA.value = 888;
 
-    const auto recognizedBefore = bench.Controller().Counters().recognized;
+    const auto recognizedBefore = plc.Controller().Counters().recognized;
     writeN->EXECUTE.value = writeR->EXECUTE.value = writeO->EXECUTE.value = writeMW->EXECUTE.value = TRUE;
     readN->EXECUTE.value = readN2->EXECUTE.value = readR->EXECUTE.value = readO->EXECUTE.value = TRUE;
     readM->EXECUTE.value = readI->EXECUTE.value = readState->EXECUTE.value = cmd->EXECUTE.value = TRUE;
-    bench.Scan();
+    plc.Scan();
     // Inputs latched at the edge: a change while the FB waits for the interface is not sent.
     EXPECT_TRUE(writeR->BUSY.value);
     writeR->VALUE.value = 99.0F;
@@ -665,12 +648,12 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
                readN->ERROR.value || readN2->ERROR.value || readR->ERROR.value || readO->ERROR.value ||
                readM->ERROR.value || readI->ERROR.value || readState->ERROR.value || cmd->ERROR.value;
     };
-    ASSERT_GT(bench.ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
+    ASSERT_GT(plc.Bench().ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
     ASSERT_FALSE(anyError());
     ASSERT_TRUE(allDone());
 
-    EXPECT_EQ(bench.Controller().Counters().recognized, recognizedBefore + 12) << "one command per FB, no more";
-    EXPECT_EQ(bench.Controller().Counters().failed, 0u);
+    EXPECT_EQ(plc.Controller().Counters().recognized, recognizedBefore + 12) << "one command per FB, no more";
+    EXPECT_EQ(plc.Controller().Counters().failed, 0u);
     EXPECT_EQ(io.intRegisters.GetInt(5), -123456);
     EXPECT_EQ(io.realRegisters.Get(6), BitsOf(2.5F));
     EXPECT_TRUE(io.outputs.Get(7));
@@ -686,7 +669,7 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
 
     // The controller saw them one after the other, in call order, each with the data of its edge.
     std::vector<CommandFrame> commands;
-    for (const auto& record : bench.Controller().Log().Records()) {
+    for (const auto& record : plc.Controller().Log().Records()) {
         if (record.newCommand) commands.push_back(CommandFrame::Decode(record.toPac.Cmd()));
     }
     const std::vector<std::uint16_t> expectedCodes = {0x0906, 0x0907, 0x0902, 0x0905, 0x1906, 0x1906,

@@ -1,5 +1,6 @@
 // FB_PAC_Cmd against hand-written PA-CONTROL replies, scan by scan: the handshake rules of manual
-// 2.4.2 and the PLCopen output rules, each at the exact scan it must happen in.
+// 2.4.2 and the PLCopen output rules, each at the exact scan it must happen in; every scan of every
+// test also runs the PLCopen checker (plcopen_checker.hpp).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -9,8 +10,14 @@
 #include "pac/fb_instance.hpp"
 #include "pac/scan_test.hpp"
 #include "pac/st_program.hpp"
+#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
 
 namespace {
+
+using pac::test::CommandBusyBoundOf;
+using pac::test::OutputsOf;
+using pac::test::PlcOpenChecker;
 
 using Image = std::array<std::uint8_t, 8>;
 
@@ -45,7 +52,7 @@ protected:
             }
             cmd_();
             for (int i = 0; i < 8; ++i) toPac_[i] = cmd_->TOPAC.value.table[i];
-            CheckExclusiveOutputs();
+            checker_.Check(task_.ScanCount(), cmd_, CommandBusyBoundOf(cmd_, kDefaultCycleTime));
         });
     }
 
@@ -57,16 +64,12 @@ protected:
     }
 
     bool SendFlag() const { return (toPac_[6] & 0x80) != 0; }
-    bool Done() const { return cmd_->DONE.value != 0; }
-    bool Busy() const { return cmd_->BUSY.value != 0; }
-    bool Error() const { return cmd_->ERROR.value != 0; }
-
-    void CheckExclusiveOutputs() {
-        int finals = Done() + Busy() + Error();
-        EXPECT_LE(finals, 1) << "Busy, Done and Error at once in scan " << task_.ScanCount();
-    }
+    bool Done() const { return OutputsOf(cmd_).done; }
+    bool Busy() const { return OutputsOf(cmd_).busy; }
+    bool Error() const { return OutputsOf(cmd_).error; }
 
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
+    PlcOpenChecker checker_{"FB_PAC_Cmd"};
     Image fromPac_{};
     Image toPac_{};
 };
@@ -301,6 +304,8 @@ protected:
         task_.AddProgram([this] {
             Call(first_);
             Call(second_);
+            firstRules_.Check(task_.ScanCount(), first_, CommandBusyBoundOf(first_, kDefaultCycleTime));
+            secondRules_.Check(task_.ScanCount(), second_, CommandBusyBoundOf(second_, kDefaultCycleTime));
         });
     }
 
@@ -315,6 +320,8 @@ protected:
 
     pac::FbInstance<FB_PAC_CMD> first_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CMD> second_ = PAC_FB(FB_PAC_CMD);
+    PlcOpenChecker firstRules_{"first FB_PAC_Cmd"};
+    PlcOpenChecker secondRules_{"second FB_PAC_Cmd"};
     Image fromPac_ = Reply(false, false, true);
     Image toPac_{};
 };

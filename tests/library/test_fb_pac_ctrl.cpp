@@ -1,21 +1,26 @@
 // FB_PAC_Ctrl scan by scan: against hand-written CTRL status images (manual 2.5.2) for the exact scan of
 // every bit and output, and against a small fake controller that answers the control word per the
-// project's CTRL decisions, for whole mode sequences. Every scan checks the control word rules: never all
-// zero, the low-active bits at 1 and the start bits at 0 outside a request, one request bit at a time.
+// project's CTRL decisions, for whole mode sequences. Every scan checks the control word rules (never all
+// zero, the low-active bits at 1 and the start bits at 0 outside a request, one request bit at a time)
+// and runs the PLCopen checker (plcopen_checker.hpp).
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdint>
 #include <deque>
-#include <optional>
 #include <string>
 
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/scan_test.hpp"
 #include "pac/st_program.hpp"
+#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
+#include "run_to_final.hpp"
 
 namespace {
+
+using pac::test::OutputsOf;
 
 using Image = std::array<std::uint8_t, 8>;
 
@@ -201,7 +206,7 @@ protected:
             }
             ctrl_();
             for (int i = 0; i < 8; ++i) toPac_[i] = ctrl_->TOPAC.value.table[i];
-            CheckOutputRules();
+            rules_.Check(task_.ScanCount(), ctrl_, pac::test::RequestBusyBoundOf(ctrl_, kDefaultCycleTime));
             CheckControlWord();
         });
     }
@@ -217,16 +222,10 @@ protected:
     }
 
     std::uint8_t Control() const { return toPac_[1]; }
-    bool Done() const { return ctrl_->DONE.value != 0; }
-    bool Busy() const { return ctrl_->BUSY.value != 0; }
-    bool Error() const { return ctrl_->ERROR.value != 0; }
-    std::uint32_t ErrorId() const { return ctrl_->ERRORID.value; }
-
-    void CheckOutputRules() {
-        const std::string where = " in scan " + std::to_string(task_.ScanCount());
-        EXPECT_LE(Done() + Busy() + Error(), 1) << "Busy, Done and Error at once" << where;
-        EXPECT_EQ(Error(), ErrorId() != 0) << "ErrorID " << ErrorId() << " with Error " << Error() << where;
-    }
+    bool Done() const { return OutputsOf(ctrl_).done; }
+    bool Busy() const { return OutputsOf(ctrl_).busy; }
+    bool Error() const { return OutputsOf(ctrl_).error; }
+    std::uint32_t ErrorId() const { return OutputsOf(ctrl_).errorId; }
 
     // Manual 2.5.1 and the CTRL decisions: only bit 15 and bits 0..4 are ever set; outside a request the
     // low-active bits are 1 and the start bits 0; during one, exactly one bit differs from that.
@@ -245,6 +244,7 @@ protected:
     }
 
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    pac::test::PlcOpenChecker rules_{"FB_PAC_Ctrl"};
     Image fromPac_{};
     Image toPac_{};
 };
@@ -472,6 +472,7 @@ TEST_P(FbPacCtrlState, EachRequestIsDecidedInTheEdgeScan) {
     for (const auto& r : requests) {
         SCOPED_TRACE(Name(r.request));
         ctrl_ = PAC_FB(FB_PAC_CTRL);
+        rules_.Restart();
         toPac_ = Image{};
         fromPac_ = StatusImage(row.word, row.errorNumber);
         Cycle(1);
@@ -532,6 +533,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST_F(FbPacCtrl, ExecuteWithoutARequestIsNoCommandEvenWithoutALink) {
     for (std::uint16_t word : {kBooted, std::uint16_t{0}}) {
         ctrl_ = PAC_FB(FB_PAC_CTRL);
+        rules_.Restart();
         fromPac_ = StatusImage(word);
         Execute(kNone);
         Cycle(1);
@@ -786,17 +788,18 @@ protected:
         });
     }
 
-    // Runs one request to its end; returns the scans from the edge to Done (1 = in the edge scan).
-    std::optional<int> Run(E_PAC_CTRLREQUEST request) {
+    // Runs one request from its edge to its final output, then releases Execute.
+    pac::test::FinalOutcome Run(E_PAC_CTRLREQUEST request) {
         Release();
         Cycle(1);
         Execute(request);
-        const std::int64_t edge = task_.ScanCount() + 1;
-        const bool ended = RunUntil([this] { return Done() || Error(); }, 100, "end of request");
-        EXPECT_TRUE(ended) << Name(request);
-        EXPECT_TRUE(Done()) << Name(request) << " ended with ErrorID " << ErrorId();
-        if (!Done()) return std::nullopt;
-        return static_cast<int>(task_.ScanCount() - edge + 1);
+        Cycle(1);
+        const pac::test::FinalOutcome o = pac::test::RunToFinal(ctrl_, task_.ScanCount(), [this] {
+            task_.Scan();
+            return task_.ScanCount();
+        }, 100);
+        EXPECT_TRUE(o.Done()) << Name(request) << ": " << o;
+        return o;
     }
 
     FakeController controller_;
@@ -807,6 +810,7 @@ TEST_P(FbPacCtrlLoop, MerelyCallingTheFbNeverStopsOrCancels) {
         controller_ = FakeController(GetParam(), status);
         fromPac_ = controller_.Reply();
         ctrl_ = PAC_FB(FB_PAC_CTRL);  // a fresh instance: the first scan after a PLC restart
+        rules_.Restart();
         toPac_ = Image{};
         Cycle(200);
         EXPECT_EQ(controller_.OpStatus(), status);
@@ -816,9 +820,11 @@ TEST_P(FbPacCtrlLoop, MerelyCallingTheFbNeverStopsOrCancels) {
 TEST_P(FbPacCtrlLoop, SwitchToOnlineWithIntegerMode) {
     const int delay = GetParam();
     ctrl_->INTEGERMODE.value = TRUE;
-    const auto scans = Run(kReqStartOnline);
-    ASSERT_TRUE(scans);
-    EXPECT_EQ(*scans, 3 + delay) << "edge, 30, then 31 seen one scan later";
+    const pac::test::FinalOutcome o = Run(kReqStartOnline);
+    ASSERT_TRUE(o.Done());
+    // The fake acts on the bit in its cycle after scan edge + delay (30), passes 30 in its next cycle
+    // (31), and the scan after that reads 31.
+    EXPECT_EQ(o.Scans(), 2 + delay) << o;
     EXPECT_EQ(controller_.OpStatus(), 31);
     EXPECT_TRUE(controller_.IntegerFormat());
     EXPECT_TRUE(ctrl_->INTEGERMODEACTIVE.value);
@@ -827,28 +833,28 @@ TEST_P(FbPacCtrlLoop, SwitchToOnlineWithIntegerMode) {
 
 TEST_P(FbPacCtrlLoop, OnlineAndAutomaticCycles) {
     controller_.SetStandstillCycles(5);
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     EXPECT_EQ(controller_.OpStatus(), 31);
-    ASSERT_TRUE(Run(kReqStop));
+    ASSERT_TRUE(Run(kReqStop).Done());
     EXPECT_EQ(controller_.OpStatus(), 35);
-    ASSERT_TRUE(Run(kReqStartOnline));  // resume: a new rising edge of the start bit
+    ASSERT_TRUE(Run(kReqStartOnline).Done());  // resume: a new rising edge of the start bit
     EXPECT_EQ(controller_.OpStatus(), 31);
-    ASSERT_TRUE(Run(kReqCancel));
+    ASSERT_TRUE(Run(kReqCancel).Done());
     EXPECT_EQ(controller_.OpStatus(), 1);
-    ASSERT_TRUE(Run(kReqStartAutomatic));
+    ASSERT_TRUE(Run(kReqStartAutomatic).Done());
     EXPECT_EQ(controller_.OpStatus(), 11);
-    ASSERT_TRUE(Run(kReqStop));
+    ASSERT_TRUE(Run(kReqStop).Done());
     EXPECT_EQ(controller_.OpStatus(), 15);
-    ASSERT_TRUE(Run(kReqStartAutomatic));  // resume through 16
+    ASSERT_TRUE(Run(kReqStartAutomatic).Done());  // resume through 16
     EXPECT_TRUE(controller_.OpStatus() == 16 || controller_.OpStatus() == 11) << controller_.OpStatus();
-    ASSERT_TRUE(Run(kReqCancel));
+    ASSERT_TRUE(Run(kReqCancel).Done());
     EXPECT_EQ(controller_.OpStatus(), 1);
     Cycle(50);
     EXPECT_EQ(controller_.OpStatus(), 1) << "nothing more happens after the last request";
 }
 
 TEST_P(FbPacCtrlLoop, MalfunctionInOnlineThenCancelAndResetError) {
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     controller_.RaiseSystemError(230);  // class 2: stays after returning home
     Cycle(3);
     EXPECT_EQ(controller_.OpStatus(), 39);
@@ -859,18 +865,18 @@ TEST_P(FbPacCtrlLoop, MalfunctionInOnlineThenCancelAndResetError) {
     Execute(kReqStartOnline);
     Cycle(1);
     EXPECT_EQ(ErrorId(), kErrNotAllowed) << "no resume with a system error pending";
-    ASSERT_TRUE(Run(kReqCancel));
+    ASSERT_TRUE(Run(kReqCancel).Done());
     EXPECT_EQ(controller_.OpStatus(), 9);
-    ASSERT_TRUE(Run(kReqResetError));
+    ASSERT_TRUE(Run(kReqResetError).Done());
     EXPECT_EQ(controller_.OpStatus(), 1);
     EXPECT_EQ(controller_.ErrorNumber(), 0);
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     EXPECT_EQ(controller_.OpStatus(), 31);
 }
 
 TEST_P(FbPacCtrlLoop, SystemErrorWhileStoppingIsTheRequestsError) {
     controller_.SetStandstillCycles(20);
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     Release();
     Cycle(1);
     Execute(kReqStop);
@@ -883,15 +889,15 @@ TEST_P(FbPacCtrlLoop, SystemErrorWhileStoppingIsTheRequestsError) {
 }
 
 TEST_P(FbPacCtrlLoop, IntegerFormatIsTakenOverOnlyWhenEnteringOnline) {
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     EXPECT_FALSE(ctrl_->INTEGERMODEACTIVE.value);
-    ASSERT_TRUE(Run(kReqStop));
+    ASSERT_TRUE(Run(kReqStop).Done());
     ctrl_->INTEGERMODE.value = TRUE;  // too late for this ONLINE session
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     EXPECT_FALSE(ctrl_->INTEGERMODEACTIVE.value) << "resuming from 35 does not pass 30";
-    ASSERT_TRUE(Run(kReqCancel));
+    ASSERT_TRUE(Run(kReqCancel).Done());
     EXPECT_FALSE(ctrl_->INTEGERMODEACTIVE.value) << "unchanged on returning home";
-    ASSERT_TRUE(Run(kReqStartOnline));
+    ASSERT_TRUE(Run(kReqStartOnline).Done());
     EXPECT_TRUE(ctrl_->INTEGERMODEACTIVE.value);
 }
 

@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
+#include "../support/scan_window.hpp"
 #include "gvl_names.hpp"
 #include "scenario_loader.hpp"
 #include "scenario_runner.hpp"
@@ -41,6 +45,43 @@ Scenario FromFile(const std::string& name) {
     return ScenarioLoader(Names()).FromFile(std::string(PAC_SCENARIO_DIR) + "/" + name);
 }
 
+pac::test::BusTiming BusOf(const Scenario& s) {
+    return {s.timing.plcCycleMs, s.timing.pacCycleMs, s.timing.latencyCycles, 1000 * s.timing.jitterMs, s.timing.seed};
+}
+
+// The scan with number n runs at n PLC cycles: the task advances the clock, then scans.
+std::chrono::nanoseconds TimeOfScan(const Scenario& s, std::int64_t scan) {
+    return scan * std::chrono::milliseconds(s.timing.plcCycleMs);
+}
+
+// The scans from the edge scan of an axis job to the scan that shows ACTIVE fallen, for a move that
+// takes `move` on the axis: the Start travels to the PA-CONTROL (latency), waits for its next cycle
+// (less than one cycle), the axis moves, ACTIVE falls in the first cycle that finds it in position
+// (less than one cycle), the reply travels back (latency) and the next scan reads it.
+pac::test::ScanWindow MoveWindow(const pac::test::BusTiming& t, std::chrono::nanoseconds move) {
+    const auto scans = [&t](std::chrono::nanoseconds d) {
+        return static_cast<int>((d + t.PlcCycle() - std::chrono::nanoseconds(1)) / t.PlcCycle());
+    };
+    const std::chrono::nanoseconds fixed = move + 2 * t.Latency();
+    return {scans(fixed), scans(fixed + 2 * (t.PacCycle() + t.Jitter()))};
+}
+
+// A point-to-point move of `distance` at `speed` with ramps of `acceleration` both ways (docs/sim_axis.md:
+// the trapezoid, or a triangle where the distance is too short for the speed).
+std::chrono::nanoseconds MoveTime(double distance, double speed, double acceleration) {
+    const double seconds = distance * acceleration >= speed * speed ? distance / speed + speed / acceleration
+                                                                    : 2 * std::sqrt(distance / acceleration);
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(seconds));
+}
+
+// The line the timeline prints for an axis outcome.
+std::string AxisLine(const pac::scenario::AxisOutcome& o, const std::string& result) {
+    std::ostringstream line;
+    line << "=> axis " << o.axis << ": " << result << " in scan " << o.endScan << " ("
+         << std::chrono::duration_cast<std::chrono::milliseconds>(o.endTime).count() << " ms), "
+         << o.endScan - o.edgeScan << " scans after the step began";
+    return line.str();
+}
 
 // Lines of the timeline that show a scan: they start with the time column.
 int ScanLines(const std::string& timeline) {
@@ -80,17 +121,32 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     // CMD error 43 (status bit 14); the reference run then ends Done although bit 14 was still set.
     EXPECT_NE(out.find("|    1 | 16#00000045 1000 1000     10.000 |"), std::string::npos) << out;
     EXPECT_NE(out.find("| 16#00004601     43     0      0.000 |"), std::string::npos) << out;
-    EXPECT_NE(out.find("=> axis 1: Error in scan 76 (152 ms), 3 scans after the step began; ErrorID 43 PAC_ERR_NO_REFERENCE"),
-              std::string::npos)
-        << out;
-    EXPECT_NE(out.find("=> axis 1: Done in scan 296 (592 ms), 78 scans after the step began; position 50.000, referenced"),
-              std::string::npos)
-        << out;
+    // The refused move (step 10): CMD error 43 answers the Start edge in the PA-CONTROL's take-over cycle.
+    const pac::test::BusTiming bus = BusOf(run.scenario);
+    const pac::test::ProtocolWindow protocol(bus);
+    ASSERT_EQ(run.report.steps[9].axes.size(), 1u);
+    const auto& refused = run.report.steps[9].axes[0];
+    const pac::test::ScanWindow answer = protocol.Request(TimeOfScan(run.scenario, refused.edgeScan));
+    EXPECT_TRUE(answer.Contains(refused.endScan - refused.edgeScan))
+        << refused.endScan - refused.edgeScan << " scans, the protocol allows " << answer;
+    EXPECT_NE(out.find(AxisLine(refused, "Error") + "; ErrorID 43 PAC_ERR_NO_REFERENCE"), std::string::npos) << out;
+    // Axis 1 to 50.0 at 500 per mille of the traverse speed (axis parameter 1: 1000 AE/s) with the full
+    // acceleration (axis parameter 6: 10000 AE/s^2), from where the reference run left it (step 11).
+    ASSERT_EQ(run.report.steps[10].axes.size(), 2u);
+    ASSERT_EQ(run.report.steps[11].axes.size(), 2u);
+    const auto& moved = run.report.steps[11].axes[0];
+    const double distance = 50.0 - run.report.steps[10].axes[0].position;
+    const pac::test::ScanWindow move = MoveWindow(bus, MoveTime(distance, 500.0, 10000.0));
+    EXPECT_TRUE(move.Contains(moved.endScan - moved.edgeScan))
+        << moved.endScan - moved.edgeScan << " scans, the move allows " << move;
+    EXPECT_NE(out.find(AxisLine(moved, "Done") + "; position 50.000, referenced"), std::string::npos) << out;
     for (const auto& step : run.report.steps) {
         if (!step.outcome) continue;
         EXPECT_TRUE(step.outcome->finished);
-        // 2 ms PLC, 5 ms PA-CONTROL, one PLC cycle latency each way: 3 scans from edge to result.
-        EXPECT_EQ(step.outcome->endScan - step.outcome->edgeScan, 3) << "step " << step.index + 1;
+        const pac::test::ScanWindow w = protocol.Request(step.outcome->edgeTime);
+        EXPECT_TRUE(w.Contains(step.outcome->endScan - step.outcome->edgeScan))
+            << "step " << step.index + 1 << ": " << step.outcome->endScan - step.outcome->edgeScan
+            << " scans, the protocol allows " << w;
     }
 }
 
@@ -181,8 +237,16 @@ TEST(ScenarioRunner, WaitsScanWholePlcCyclesAndPrintOnlyChanges) {
     EXPECT_NE(out.find("wait 401 ms (101 scans)"), std::string::npos) << out;
     // The first scan (booting: zeros) and the scan that sees the boot's reply; nothing changes after.
     EXPECT_EQ(ScanLines(out), 2) << out;
-    EXPECT_NE(out.find("      12      3 | 00 00 00 00 00 00 19 0B | 00 00 00 00 00 01 20 00 |"), std::string::npos)
-        << out;
+    // The boot ends at 10 ms; the PA-CONTROL's first cycle from then (10 ms cycles, the default) writes
+    // its reply, which the first scan from then on reads (4 ms cycles, no latency): scan 3 at 12 ms.
+    const Scenario& s = run.scenario;
+    const int firstReply = (s.timing.bootMs + s.timing.pacCycleMs - 1) / s.timing.pacCycleMs * s.timing.pacCycleMs +
+                           s.timing.latencyCycles * s.timing.plcCycleMs;
+    const int scan = (firstReply + s.timing.plcCycleMs - 1) / s.timing.plcCycleMs;
+    std::ostringstream line;
+    line << std::setw(8) << scan * s.timing.plcCycleMs << std::setw(7) << scan
+         << " | 00 00 00 00 00 00 19 0B | 00 00 00 00 00 01 20 00 |";
+    EXPECT_NE(out.find(line.str()), std::string::npos) << line.str() << "\n" << out;
 }
 
 TEST(ScenarioRunner, LinkFaultsActOnTheirDirection) {
@@ -236,8 +300,9 @@ TEST(ScenarioRunner, ACtrlRequestTheControllerIgnoresEndsInTheFbsTimeout) {
     EXPECT_TRUE(run.report.Passed()) << out;
     ASSERT_TRUE(run.report.steps[0].request.has_value());
     const auto& timeout = *run.report.steps[0].request;
-    // Timeout 100 ms at 2 ms per scan: the TON's Q shows in the 50th scan after the edge's.
-    EXPECT_EQ(timeout.endScan - timeout.edgeScan, 50) << out;
+    // Timeout 100 ms: the TON's Q shows in the first scan at least 100 ms after the edge's.
+    const int timeoutScans = pac::test::ProtocolWindow(BusOf(run.scenario)).TimeoutScans(std::chrono::milliseconds(100));
+    EXPECT_EQ(timeout.endScan - timeout.edgeScan, timeoutScans) << out;
     EXPECT_EQ(run.report.steps[1].request->endScan, run.report.steps[1].request->edgeScan) << "refused in the edge scan";
     EXPECT_NE(out.find("ErrorID 16#8009 PAC_LIB_ERR_REQUEST_TIMEOUT"), std::string::npos) << out;
 }

@@ -1,0 +1,92 @@
+// A PLC whose command FBs (FB_PAC_Cmd and the FBs built on it) share the CMD interface of a simulated
+// PA-CONTROL on one bus timing: the PacPlcBench, the PLCopen checker on every FB after every scan, and
+// one command from its Execute edge to its final output, with the scan window the protocol allows for
+// it. Add the FBs in the order the PLC program calls them, then Start().
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "bench_timing.hpp"
+#include "bus_timing.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/pac_plc_bench.hpp"
+#include "plcopen_watch.hpp"
+#include "run_to_final.hpp"
+#include "scan_window.hpp"
+
+namespace pac::test {
+
+class CommandPlc {
+public:
+    explicit CommandPlc(const BusTiming& timing, pac::sim::PaControlConfig config = {},
+                        std::chrono::nanoseconds bootTime = std::chrono::nanoseconds(0))
+        : timing_(timing), bench_(PlcBenchTimingOf(timing, bootTime), config), window_(timing), rules_(timing.PlcCycle()) {}
+
+    template <class Fb>
+    void Add(std::string name, pac::FbInstance<Fb>& fb) {
+        bench_.Call(fb);
+        rules_.AddCommand(std::move(name), fb);
+    }
+    void Start() {
+        bench_.Start();
+        rules_.Attach(bench_.Task());
+    }
+
+    // The scan that sees the Execute edge.
+    template <class Fb>
+    void Begin(pac::FbInstance<Fb>& fb) {
+        fb->EXECUTE.value = TRUE;
+        Scan();
+        edgeTime_ = bench_.Now();
+        edgeScan_ = bench_.Task().ScanCount();
+    }
+    // Scans until `fb` shows its final output, counted from the last Begin(); `eachScan` after each scan.
+    template <class Fb>
+    FinalOutcome Wait(pac::FbInstance<Fb>& fb, int maxScans = 20000, const std::function<void()>& eachScan = {}) {
+        return RunToFinal(fb, edgeScan_, [&] {
+            Scan();
+            if (eachScan) eachScan();
+            return bench_.Task().ScanCount();
+        }, maxScans);
+    }
+    // Execute falls for one scan.
+    template <class Fb>
+    void Release(pac::FbInstance<Fb>& fb) {
+        fb->EXECUTE.value = FALSE;
+        Scan();
+    }
+    // A whole command as a PLC program runs it: edge, wait, release.
+    template <class Fb>
+    FinalOutcome Run(pac::FbInstance<Fb>& fb, int maxScans = 20000) {
+        Begin(fb);
+        const FinalOutcome outcome = Wait(fb, maxScans);
+        Release(fb);
+        return outcome;
+    }
+
+    // The scans the protocol needs for a command sent in the last Begin()'s edge scan: the FBs add no
+    // scan of their own (docs/fb/FB_PAC_Cmd.md, "Timing").
+    ScanWindow Window() const { return window_.Request(edgeTime_); }
+    const ProtocolWindow& Protocol() const { return window_; }
+
+    void Scan(int n = 1) { bench_.Scan(n); }
+    const BusTiming& Timing() const { return timing_; }
+    PacPlcBench& Bench() { return bench_; }
+    pac::sim::PaControl& Controller() { return bench_.Controller(); }
+    std::chrono::nanoseconds Now() const { return bench_.Now(); }
+    std::chrono::nanoseconds EdgeTime() const { return edgeTime_; }
+
+private:
+    BusTiming timing_;
+    PacPlcBench bench_;
+    ProtocolWindow window_;
+    PlcOpenWatch rules_;
+    std::chrono::nanoseconds edgeTime_{0};
+    std::int64_t edgeScan_ = 0;
+};
+
+}  // namespace pac::test
