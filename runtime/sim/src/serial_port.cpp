@@ -33,6 +33,7 @@ void SerialPort::Reset() {
     pending_ = PendingCommand{};
     ack_ = Ack{};
     heldReply_ = false;
+    endUnreported_ = false;
 }
 
 void SerialPort::Discard(std::chrono::nanoseconds now) {
@@ -140,7 +141,8 @@ void SerialPort::OnFrame(const rs232::Rs232Event& frame, std::chrono::nanosecond
 void SerialPort::OnPoll(std::chrono::nanoseconds now, CommandHost& host) {
     ++counters_.polls;
     if (heldReply_) return;  // the held reply answers it
-    if (pending_.Active() || config_.answerPollWhenIdle) Send(ack_, now, host);
+    // A command whose end the master has not been told yet is answered in any case (3.3.1: poll until BE = 1).
+    if (pending_.Active() || endUnreported_ || config_.answerPollWhenIdle) Send(ack_, now, host);
 }
 
 void SerialPort::OnError(std::uint16_t error, bool clearsCommand, std::chrono::nanoseconds now, CommandHost& host) {
@@ -169,6 +171,7 @@ std::string SerialPort::AckText(const Ack& ack, const CommandHost& host) const {
 
 void SerialPort::Send(const Ack& ack, std::chrono::nanoseconds now, const CommandHost& host) {
     if (!config_.answers) return;
+    endUnreported_ = !ack.end && ack.quit == 0;
     const std::string text = AckText(ack, host);
     replies_.push_back(text);
     ++counters_.replies;

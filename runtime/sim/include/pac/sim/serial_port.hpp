@@ -39,7 +39,7 @@ struct SerialPortConfig {
     bool answerBadCheck = true;         // 16 "sum of digits error"; false: no answer
     bool answerSequenceErrors = true;   // 17 / 18 "wrong sequence"; false: no answer
     bool requireSoh = true;             // false: STX alone begins a frame
-    bool answerPollWhenIdle = true;     // EOT with no command processing: the last reply again; false: none
+    bool answerPollWhenIdle = true;     // EOT after the master has seen BE = 1: the last reply again; false: none
     bool holdModeReplies = true;        // 0600 / 0602 / 0603: answer once the status has settled (3.4.3)
     bool refuseTypeMismatch = false;    // TYP_PAR_2 that does not suit the command: 41; false: converted
     int realDecimals = 4;               // Q_PAR of a REAL (3.4.2: 640.0000)
@@ -99,6 +99,7 @@ private:
     PendingCommand pending_;
     Ack ack_;               // the last reply, or the processing command's acknowledgement
     bool heldReply_ = false;
+    bool endUnreported_ = false;  // the last reply said BE = 0
     SerialCounters counters_;
     std::vector<std::string> replies_;
 };
