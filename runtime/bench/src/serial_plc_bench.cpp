@@ -1,6 +1,8 @@
 // A PLC and a simulated PA-CONTROL on an RS232 line (see serial_plc_bench.hpp).
 #include "pac/serial_plc_bench.hpp"
 
+#include <utility>
+
 namespace pac {
 
 namespace {

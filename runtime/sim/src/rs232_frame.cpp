@@ -1,7 +1,6 @@
 // RS232 frames, numbers and the controller's receiver (see rs232_frame.hpp and docs/sim_serial.md).
 #include "pac/sim/rs232_frame.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
