@@ -256,10 +256,15 @@ TEST_P(CmdRecovery, MoveAfterEndTimeoutHoldsTheInterfaceUntilItsEnd) {
     plc.Set(1, kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);
     plc.Fb(1)->EXECUTE.value = TRUE;
+    const auto& motion = plc.Controller().Axes().Motion(1);
+    bool readSeen = false;
     bool readWhileMoving = false;
     for (int scan = 0; scan < 100000 && !Final(plc.Fb(1)); ++scan) {
         plc.Scan();
-        if (plc.Seen(kGetIntReg, 5) > 0 && plc.Controller().Processing()) readWhileMoving = true;
+        if (!readSeen && plc.Seen(kGetIntReg, 5) > 0) {
+            readSeen = true;
+            readWhileMoving = motion.JobActive();
+        }
     }
     EXPECT_FALSE(readWhileMoving) << "the read went out while the move was processing";
     EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;

@@ -67,13 +67,16 @@ public:
         return Controller().OperatingStatus() == 31;
     }
 
-    // The commands the controller recognised, oldest first (from its exchange log).
-    std::vector<pac::sim::CommandFrame> CommandsSeen() {
-        std::vector<pac::sim::CommandFrame> seen;
-        for (const auto& record : Controller().Log().Records()) {
-            if (record.newCommand) seen.push_back(pac::sim::CommandFrame::Decode(record.toPac.Cmd()));
+    // The commands the controller recognised, oldest first (from its exchange log, read on from where the
+    // last call stopped).
+    const std::vector<pac::sim::CommandFrame>& CommandsSeen() {
+        const auto& records = Controller().Log().Records();
+        for (; logRead_ < records.size(); ++logRead_) {
+            if (records[logRead_].newCommand) {
+                seen_.push_back(pac::sim::CommandFrame::Decode(records[logRead_].toPac.Cmd()));
+            }
         }
-        return seen;
+        return seen_;
     }
     // How often the controller recognised `code` with `param`.
     int Seen(std::uint16_t code, std::uint16_t param) {
@@ -93,12 +96,14 @@ public:
 private:
     static pac::sim::PaControlConfig ConfigOf(const SharingCase& c) {
         pac::sim::PaControlConfig config = c.Config();
-        config.logCapacity = 1000000;  // the whole test: CommandsSeen() counts every command
+        config.logCapacity = 10000000;  // the whole test, never dropped: CommandsSeen() reads every command
         return config;
     }
 
     std::vector<pac::FbInstance<FB_PAC_CMD>> fbs_;  // before plc_, whose programs call them
     CommandPlc plc_;
+    std::vector<pac::sim::CommandFrame> seen_;
+    std::size_t logRead_ = 0;
 };
 
 }  // namespace pac::test
