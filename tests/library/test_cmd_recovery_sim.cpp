@@ -158,7 +158,7 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
     SharedCmdPlc plc(GetParam(), fbs, kBoot);
     plc.Boot();
     for (int i = 0; i < fbs; ++i) {
-        plc.Set(i, kGetIntReg, 60000);  // no such register: command error 38
+        plc.Set(i, kGetIntReg, static_cast<std::uint16_t>(60000 + i));  // no such register: command error 38
         plc.Fb(i)->EXECUTE.value = TRUE;
     }
     for (int scan = 0; scan < 100000; ++scan) {

@@ -196,8 +196,9 @@ TEST_P(CmdSharing, FreshFbLeavesTheCommandInFlightAlone) {
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Scan(1);
     const pac::sim::Image8 move = plc.Module();
-    plc.Scan(10);
-    ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move is processing";
+    ASSERT_GT(plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->ACKNOWLEDGED.value != 0; }, 10000), 0);
+    plc.Scan(3);
+    ASSERT_TRUE(plc.Fb(0)->BUSY.value) << "the move is processing";
     plc.Fb(1) = PAC_FB(FB_PAC_CMD);  // re-initialised, idle
     plc.Fb(2) = PAC_FB(FB_PAC_CMD);  // re-initialised, and its first call has an Execute edge
     plc.Set(2, kGetIntReg, 5);

@@ -42,6 +42,11 @@ bool CmdProtocol::Recognise(const CommandFrame& command) {
     return isNew;
 }
 
+void CmdProtocol::SeeAllZeroImage() {
+    lastSend_ = false;
+    sendSeenSincePowerOn_ = true;
+}
+
 void CmdProtocol::Acknowledge(bool send, const CommandResult& result) {
     receiveFlag_ = send;
     answered_ = true;

@@ -120,6 +120,8 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         // the CTRL module, they take no control word from an all-zero image (the emergency stop has halted
         // the axes); they report all the same.
         ServeAxisModules(toPac, now);
+    } else {
+        protocol_.SeeAllZeroImage();
     }
     // COM1 needs no fieldbus: an RS232-only controller sees an all-zero image all the time.
     serial_.Cycle(now, serialHost_);

@@ -46,6 +46,9 @@ public:
     // Whether `command`, the CMD module of a non-zero image read in a booted cycle, is a new command; it
     // also becomes the image the next one is compared with.
     bool Recognise(const CommandFrame& command);
+    // An all-zero image read in a booted cycle: never a command (no communication, or EMERGENCY STOP), but
+    // a SEND flag of 0 the next image is compared with.
+    void SeeAllZeroImage();
     void Acknowledge(bool send, const CommandResult& result);  // RF := send, then the result
     void Update(const CommandResult& result);                  // progress of the processing command
     void AcknowledgeCommandErrorWithoutNumber(bool send);      // RF := send, KF = 1, error number 0
