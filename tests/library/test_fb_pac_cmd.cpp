@@ -247,10 +247,14 @@ TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
     fromPac_ = Reply(false, false, false, 0, 0);  // restarting: status 0, RECEIVE back to 0
     Cycle(1);
     EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked: SEND = RECEIVE, harmless 190B";
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
     fromPac_ = Reply(false, false, true);  // booted
     Request(0x1906, 2, 0);
     Cycle(1);
-    EXPECT_TRUE(SendFlag()) << "the next command is one clean toggle";
+    EXPECT_FALSE(SendFlag()) << "a reply within a round trip (1 scan here) of the resync is not trusted";
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_TRUE(SendFlag()) << "then the next command is one clean toggle";
 }
 
 // A command still processing (RECEIVE = SEND, END OF PROCESSING 0, a code that acknowledges before its
