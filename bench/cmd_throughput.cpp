@@ -1,7 +1,7 @@
 // Benchmark (not a test): commands per second through the shared CMD interface with 1..8 command FBs,
-// against the protocol's bound (cmd_throughput.hpp). With two FBs or more the next command goes out in the
-// scan that sees the previous one's acknowledgement, so the ratio is 100 %; a single FB pays its release
-// and edge scans.
+// against the protocol's bound (cmd_throughput.hpp). A single FB pays its release and edge scans; with
+// more, the FB whose turn it is sends in the scan of the previous command's end if the PLC calls it after
+// the FB that ended, a scan later otherwise (once per round of the call order).
 #include <cstdio>
 
 #include "cmd_throughput.hpp"
