@@ -14,6 +14,8 @@
 
 #include "bus_timing.hpp"
 #include "controller_readings.hpp"
+#include "gvl_constants.hpp"
+#include "pac/sim/command_table.hpp"
 #include "pac/iec_time.hpp"
 #include "real_bits.hpp"
 #include "shared_cmd_plc.hpp"
@@ -25,16 +27,14 @@ using std::chrono::nanoseconds;
 using pac::test::FinalOutcome;
 using pac::test::SharedCmdPlc;
 using pac::test::SharingCase;
+namespace code = pac::sim::code;
 
-constexpr std::uint16_t kGetStat = 0x190B;
-constexpr std::uint16_t kPutIntReg = 0x0906;
-constexpr std::uint16_t kGetIntReg = 0x1906;
-constexpr std::uint16_t kMoveAbsolute = 0x0A87;
-constexpr std::uint32_t kLibAckTimeout = 0x8001;
-constexpr std::uint32_t kLibEndTimeout = 0x8002;
-constexpr std::uint32_t kLibNotReady = 0x8003;
-constexpr std::uint32_t kLibConnectionLost = 0x8004;
-constexpr std::uint32_t kLibInterfaceBusy = 0x8006;
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kLibAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
+const std::uint32_t kLibEndTimeout = kGvl["PAC_LIB_ERR_END_TIMEOUT"];
+const std::uint32_t kLibNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kLibConnectionLost = kGvl["PAC_LIB_ERR_CONNECTION_LOST"];
+const std::uint32_t kLibInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
 
 // Longer than the bus round trip plus a scan on every timing: a restart the PLC can see (status 0) before
 // the controller reads commands again (docs/fb/FB_PAC_Cmd.md, "Restarts").
@@ -48,7 +48,7 @@ bool Final(pac::FbInstance<FB_PAC_CMD>& fb) { return fb->DONE.value || fb->ERROR
 void ExpectNoCommandTwice(SharedCmdPlc& plc) {
     std::set<std::tuple<std::uint16_t, std::uint16_t, std::uint32_t>> seen;
     for (const auto& c : plc.CommandsSeen()) {
-        if (c.code == kGetStat) continue;
+        if (c.code == code::kGetState) continue;
         EXPECT_TRUE(seen.insert({c.code, c.parameter, c.data}).second)
             << "command " << std::hex << c.code << " param " << std::dec << c.parameter << " data " << c.data
             << " executed twice";
@@ -58,7 +58,7 @@ void ExpectNoCommandTwice(SharedCmdPlc& plc) {
 // The module is parked (190B, no data) in step with the controller's RECEIVE flag.
 void ExpectParkedInStep(SharedCmdPlc& plc) {
     const auto module = pac::sim::CommandFrame::Decode(plc.Module());
-    EXPECT_EQ(module.code, kGetStat);
+    EXPECT_EQ(module.code, code::kGetState);
     EXPECT_EQ(module.data, 0u);
     const auto reply = pac::sim::ReplyFrame::Decode(plc.Controller().LastFromPacImage().Cmd());
     EXPECT_EQ(module.send, reply.receiveFlag) << "SEND = RECEIVE";
@@ -99,7 +99,7 @@ private:
     void Next(int i) {
         const auto k = static_cast<std::size_t>(i);
         ++sequence_[k];
-        plc_.Set(i, kPutIntReg, static_cast<std::uint16_t>(20 + i), static_cast<std::uint32_t>(i) * 100000u + sequence_[k]);
+        plc_.Set(i, code::kPutIntReg, static_cast<std::uint16_t>(20 + i), static_cast<std::uint32_t>(i) * 100000u + sequence_[k]);
         plc_.Fb(i)->EXECUTE.value = TRUE;
     }
 
@@ -158,7 +158,7 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
     SharedCmdPlc plc(GetParam(), fbs, kBoot);
     plc.Boot();
     for (int i = 0; i < fbs; ++i) {
-        plc.Set(i, kGetIntReg, static_cast<std::uint16_t>(60000 + i));  // no such register: command error 38
+        plc.Set(i, code::kGetIntReg, static_cast<std::uint16_t>(60000 + i));  // no such register: command error 38
         plc.Fb(i)->EXECUTE.value = TRUE;
     }
     for (int scan = 0; scan < 100000; ++scan) {
@@ -168,7 +168,7 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
         plc.Scan();
     }
     // An odd number of commands so far: SEND = 1, which a controller restarting with RECEIVE 0 disagrees with.
-    plc.Set(0, kGetIntReg, 1);
+    plc.Set(0, code::kGetIntReg, 1);
     plc.Fb(0)->EXECUTE.value = FALSE;
     plc.Scan();
     plc.Fb(0)->EXECUTE.value = TRUE;
@@ -184,13 +184,13 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
     plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
     plc.Scan(10 + 4 * plc.Timing().latency + plc.Timing().jitterUs / 500 / plc.Timing().plcMs);
     for (std::size_t k = before; k < plc.CommandsSeen().size(); ++k) {
-        EXPECT_EQ(plc.CommandsSeen()[k].code, kGetStat) << "only the parked module's read while nobody sent";
+        EXPECT_EQ(plc.CommandsSeen()[k].code, code::kGetState) << "only the parked module's read while nobody sent";
     }
     ExpectParkedInStep(plc);
 
     for (int i = 0; i < fbs; ++i) {
         plc.Fb(i)->EXECUTE.value = FALSE;
-        plc.Set(i, kPutIntReg, static_cast<std::uint16_t>(30 + i), 77u + static_cast<std::uint32_t>(i));
+        plc.Set(i, code::kPutIntReg, static_cast<std::uint16_t>(30 + i), 77u + static_cast<std::uint32_t>(i));
     }
     plc.Scan();
     for (int i = 0; i < fbs; ++i) plc.Fb(i)->EXECUTE.value = TRUE;
@@ -203,7 +203,7 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
     for (int i = 0; i < fbs; ++i) {
         EXPECT_TRUE(plc.Fb(i)->DONE.value) << "FB " << i << ": ErrorID " << std::hex << plc.Fb(i)->ERRORID.value;
         EXPECT_EQ(plc.Controller().Io().intRegisters.GetInt(30 + i), 77 + i);
-        EXPECT_EQ(plc.Seen(kPutIntReg, static_cast<std::uint16_t>(30 + i)), 1) << "FB " << i;
+        EXPECT_EQ(plc.Seen(code::kPutIntReg, static_cast<std::uint16_t>(30 + i)), 1) << "FB " << i;
     }
     ExpectNoCommandTwice(plc);
 }
@@ -214,7 +214,7 @@ TEST_P(CmdRecovery, FirstCommandAfterPowerUpGoesAtOnce) {
     SharedCmdPlc plc(GetParam(), 1, kBoot);
     plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
     plc.Controller().Io().intRegisters.SetInt(2, 22);
-    plc.Set(0, kGetIntReg, 2);
+    plc.Set(0, code::kGetIntReg, 2);
     const FinalOutcome read = plc.Run(0);
     ASSERT_TRUE(read.Done()) << read;
     EXPECT_EQ(plc.Fb(0)->ACKDATA.value, 22u);
@@ -228,14 +228,14 @@ TEST_P(CmdRecovery, AfterARestartTheEndedMoveHoldsNothing) {
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     for (float target : {100.0F, 200.0F}) {  // an even number of commands since: SEND = 0 as RECEIVE starts
-        plc.Set(0, kMoveAbsolute, 1, Bits(target));
+        plc.Set(0, code::kPosAxisAbsolute, 1, Bits(target));
         ASSERT_TRUE(plc.Run(0).Done());
     }
     plc.Controller().PowerCycle(plc.Now());
     plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value == 0; }, 100000);
     plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
     plc.Controller().Io().intRegisters.SetInt(2, 23);
-    plc.Set(0, kGetIntReg, 2);
+    plc.Set(0, code::kGetIntReg, 2);
     const FinalOutcome read = plc.Run(0);
     ASSERT_TRUE(read.Done()) << read;
     EXPECT_EQ(plc.Fb(0)->ACKDATA.value, 23u);
@@ -247,13 +247,13 @@ TEST_P(CmdRecovery, MoveAfterEndTimeoutHoldsTheInterfaceUntilItsEnd) {
     SharedCmdPlc plc(GetParam(), 2);
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
-    plc.Set(0, kMoveAbsolute, 1, Bits(600.0F));
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(600.0F));
     plc.Fb(0)->ENDTIMEOUT.value = pac::ToIecTime(100ms);
     const FinalOutcome move = plc.Run(0);
     ASSERT_EQ(move.ErrorId(), kLibEndTimeout) << move;
     ASSERT_TRUE(plc.Controller().Axes().Motion(1).Moving());
     plc.Controller().Io().intRegisters.SetInt(5, 5);
-    plc.Set(1, kGetIntReg, 5);
+    plc.Set(1, code::kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);
     plc.Fb(1)->EXECUTE.value = TRUE;
     const auto& motion = plc.Controller().Axes().Motion(1);
@@ -261,7 +261,7 @@ TEST_P(CmdRecovery, MoveAfterEndTimeoutHoldsTheInterfaceUntilItsEnd) {
     bool readWhileMoving = false;
     for (int scan = 0; scan < 100000 && !Final(plc.Fb(1)); ++scan) {
         plc.Scan();
-        if (!readSeen && plc.Seen(kGetIntReg, 5) > 0) {
+        if (!readSeen && plc.Seen(code::kGetIntReg, 5) > 0) {
             readSeen = true;
             readWhileMoving = motion.JobActive();
         }
@@ -283,8 +283,8 @@ QueuedRead ReadBehindAMove(const SharingCase& c, nanoseconds timeout) {
     plc.Boot();
     QueuedRead result;
     if (!plc.GoOnline()) return result;
-    plc.Set(0, kMoveAbsolute, 1, Bits(300.0F));
-    plc.Set(1, kGetIntReg, 5);
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(300.0F));
+    plc.Set(1, code::kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(timeout);
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Plc().Begin(plc.Fb(1));
@@ -320,8 +320,8 @@ TEST_P(CmdRecovery, ErrorIdsSayWhetherTheCommandWasSent) {
     SharedCmdPlc plc(GetParam(), 2);
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
-    plc.Set(0, kMoveAbsolute, 1, Bits(300.0F));
-    plc.Set(1, kGetIntReg, 5);
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(300.0F));
+    plc.Set(1, code::kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(20ms);
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Fb(1)->EXECUTE.value = TRUE;
@@ -329,22 +329,22 @@ TEST_P(CmdRecovery, ErrorIdsSayWhetherTheCommandWasSent) {
     EXPECT_EQ(plc.Fb(1)->ERRORID.value, kLibInterfaceBusy);
     for (int scan = 0; scan < 100000 && !Final(plc.Fb(0)); ++scan) plc.Scan();
     plc.Scan(5);
-    EXPECT_EQ(plc.Seen(kGetIntReg, 5), 0) << "16#8006: never sent";
+    EXPECT_EQ(plc.Seen(code::kGetIntReg, 5), 0) << "16#8006: never sent";
 
     plc.Fb(1)->EXECUTE.value = FALSE;
     plc.Scan();
     plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
-    plc.Set(1, kPutIntReg, 6, 66);
+    plc.Set(1, code::kPutIntReg, 6, 66);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(100ms);
     const FinalOutcome unknown = plc.Run(1);
     EXPECT_EQ(unknown.ErrorId(), kLibAckTimeout) << unknown;
-    EXPECT_EQ(plc.Seen(kPutIntReg, 6), 1) << "16#8001: sent, and here executed";
+    EXPECT_EQ(plc.Seen(code::kPutIntReg, 6), 1) << "16#8001: sent, and here executed";
     plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
-    plc.Set(1, kGetIntReg, 6);
+    plc.Set(1, code::kGetIntReg, 6);
     const FinalOutcome read = plc.Run(1);
     EXPECT_TRUE(read.Done()) << read;
     EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 66u);
-    EXPECT_EQ(plc.Seen(kPutIntReg, 6), 1) << "never repeated";
+    EXPECT_EQ(plc.Seen(code::kPutIntReg, 6), 1) << "never repeated";
 }
 
 // Defect 6: T#0S is the default on FB_PAC_Cmd.Timeout: a read behind a move of some 0.4 s is Done (T#1S),

@@ -13,6 +13,8 @@
 
 #include "bus_timing.hpp"
 #include "controller_readings.hpp"
+#include "gvl_constants.hpp"
+#include "pac/sim/command_table.hpp"
 #include "pac/iec_time.hpp"
 #include "real_bits.hpp"
 #include "shared_cmd_plc.hpp"
@@ -23,13 +25,11 @@ using namespace std::chrono_literals;
 using pac::test::FinalOutcome;
 using pac::test::SharedCmdPlc;
 using pac::test::SharingCase;
+namespace code = pac::sim::code;
 
-constexpr std::uint16_t kPutIntReg = 0x0906;
-constexpr std::uint16_t kGetIntReg = 0x1906;
-constexpr std::uint16_t kMoveAbsolute = 0x0A87;
-constexpr std::uint16_t kStopAxis = 0x0A93;
-constexpr std::uint32_t kLibNoErrorNumber = 0x800F;
-constexpr std::uint32_t kLibSuperseded = 0x8007;
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kLibNoErrorNumber = kGvl["PAC_LIB_ERR_NO_ERROR_NUMBER"];
+const std::uint32_t kLibSuperseded = kGvl["PAC_LIB_ERR_SUPERSEDED"];
 
 std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
 
@@ -60,17 +60,17 @@ TEST_P(CmdSharing, MoveOwnsTheInterfaceUntilItsEndOfProcessing) {
     plc.Controller().Io().intRegisters.SetInt(5, 4711);
     const int sentBefore = static_cast<int>(plc.CommandsSeen().size());
 
-    plc.Set(0, kMoveAbsolute, 1, Bits(1000.0F));
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(1000.0F));
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Scan(20);
     ASSERT_TRUE(plc.Fb(0)->BUSY.value) << "the move runs for about a second";
-    plc.Set(1, kGetIntReg, 5);
+    plc.Set(1, code::kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);  // longer than the move
     plc.Fb(1)->EXECUTE.value = TRUE;
     bool moveDoneWhenReadSeen = false;
     bool readSeen = false;
     ASSERT_TRUE(ScanUntilFinal(plc, {0, 1}, 100000, [&] {
-        if (!readSeen && plc.Seen(kGetIntReg, 5) > 0) {
+        if (!readSeen && plc.Seen(code::kGetIntReg, 5) > 0) {
             readSeen = true;
             moveDoneWhenReadSeen = plc.Fb(0)->DONE.value != 0;
         }
@@ -83,8 +83,8 @@ TEST_P(CmdSharing, MoveOwnsTheInterfaceUntilItsEndOfProcessing) {
     EXPECT_TRUE(moveDoneWhenReadSeen) << "the read reached the controller while the move was processing";
     const auto seen = plc.CommandsSeen();
     ASSERT_EQ(seen.size(), static_cast<std::size_t>(sentBefore) + 2) << "the move and the read, nothing else";
-    EXPECT_EQ(seen[seen.size() - 2].code, kMoveAbsolute);
-    EXPECT_EQ(seen.back().code, kGetIntReg);
+    EXPECT_EQ(seen[seen.size() - 2].code, code::kPosAxisAbsolute);
+    EXPECT_EQ(seen.back().code, code::kGetIntReg);
 }
 
 // Defect 1, the stops: 0A93 of the moving axis overtakes the queue and the move; a read queued before it
@@ -96,29 +96,29 @@ TEST_P(CmdSharing, OnlyAStopOfTheMovingAxisOvertakesTheMove) {
     plc.Controller().Io().intRegisters.SetInt(5, 55);
     const auto& motion = plc.Controller().Axes().Motion(1);
 
-    plc.Set(0, kMoveAbsolute, 1, Bits(1000.0F));
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(1000.0F));
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Scan(20);
-    plc.Set(1, kGetIntReg, 5);
+    plc.Set(1, code::kGetIntReg, 5);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);
     plc.Fb(1)->EXECUTE.value = TRUE;
-    plc.Set(2, kStopAxis, 2);  // axis 2 stands: its stop must not overtake the move of axis 1
+    plc.Set(2, code::kStopAxis, 2);  // axis 2 stands: its stop must not overtake the move of axis 1
     plc.Fb(2)->TIMEOUT.value = pac::ToIecTime(5s);
     plc.Fb(2)->EXECUTE.value = TRUE;
     plc.Scan(5);
-    plc.Set(3, kStopAxis, 1);
+    plc.Set(3, code::kStopAxis, 1);
     plc.Fb(3)->EXECUTE.value = TRUE;
     bool movingWhenStopSeen = false;
     bool stopSeen = false;
     bool otherStopBeforeStopEnded = false;
     bool readBeforeStopEnded = false;
     ASSERT_TRUE(ScanUntilFinal(plc, {0, 1, 2, 3}, 100000, [&] {
-        if (!stopSeen && plc.Seen(kStopAxis, 1) > 0) {
+        if (!stopSeen && plc.Seen(code::kStopAxis, 1) > 0) {
             stopSeen = true;
             movingWhenStopSeen = motion.Moving();
         }
-        if (plc.Seen(kStopAxis, 2) > 0 && !plc.Fb(3)->DONE.value) otherStopBeforeStopEnded = true;
-        if (plc.Seen(kGetIntReg, 5) > 0 && !plc.Fb(3)->DONE.value) readBeforeStopEnded = true;
+        if (plc.Seen(code::kStopAxis, 2) > 0 && !plc.Fb(3)->DONE.value) otherStopBeforeStopEnded = true;
+        if (plc.Seen(code::kGetIntReg, 5) > 0 && !plc.Fb(3)->DONE.value) readBeforeStopEnded = true;
     }));
     EXPECT_TRUE(movingWhenStopSeen) << "the stop reached the controller while the axis moved";
     EXPECT_EQ(plc.Fb(0)->ERRORID.value, kLibSuperseded) << "the move was stopped: 16#8007, CommandAborted";
@@ -129,8 +129,8 @@ TEST_P(CmdSharing, OnlyAStopOfTheMovingAxisOvertakesTheMove) {
     EXPECT_FALSE(readBeforeStopEnded) << "the read went out while the stop was processing";
     EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << plc.Fb(1)->ERRORID.value;
     EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 55u);
-    EXPECT_EQ(plc.Seen(kStopAxis, 1), 1);
-    EXPECT_EQ(plc.Seen(kGetIntReg, 5), 1);
+    EXPECT_EQ(plc.Seen(code::kStopAxis, 1), 1);
+    EXPECT_EQ(plc.Seen(code::kGetIntReg, 5), 1);
 }
 
 // Defect 2: FBs that re-trigger as fast as a PLC program can (Execute falls for one scan after each final
@@ -152,7 +152,7 @@ TEST_P(CmdSharing, ReTriggeringFbsAreServedInTheOrderOfTheirEdges) {
                 if (released[static_cast<std::size_t>(i)]) {
                     released[static_cast<std::size_t>(i)] = false;
                     if (count < static_cast<std::uint32_t>(rounds)) {
-                        plc.Set(i, kPutIntReg, static_cast<std::uint16_t>(100 + i), count + 1);
+                        plc.Set(i, code::kPutIntReg, static_cast<std::uint16_t>(100 + i), count + 1);
                         fb->EXECUTE.value = TRUE;
                     }
                 } else if (Final(fb)) {
@@ -164,7 +164,7 @@ TEST_P(CmdSharing, ReTriggeringFbsAreServedInTheOrderOfTheirEdges) {
             }
         };
         for (int i = 0; i < fbs; ++i) {
-            plc.Set(i, kPutIntReg, static_cast<std::uint16_t>(100 + i), 1);
+            plc.Set(i, code::kPutIntReg, static_cast<std::uint16_t>(100 + i), 1);
             plc.Fb(i)->EXECUTE.value = TRUE;
         }
         for (int scan = 0; scan < 100000; ++scan) {
@@ -192,7 +192,7 @@ TEST_P(CmdSharing, FreshFbLeavesTheCommandInFlightAlone) {
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     plc.Controller().Io().intRegisters.SetInt(5, 9);
-    plc.Set(0, kMoveAbsolute, 1, Bits(800.0F));
+    plc.Set(0, code::kPosAxisAbsolute, 1, Bits(800.0F));
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Scan(1);
     const pac::sim::Image8 move = plc.Module();
@@ -201,7 +201,7 @@ TEST_P(CmdSharing, FreshFbLeavesTheCommandInFlightAlone) {
     ASSERT_TRUE(plc.Fb(0)->BUSY.value) << "the move is processing";
     plc.Fb(1) = PAC_FB(FB_PAC_CMD);  // re-initialised, idle
     plc.Fb(2) = PAC_FB(FB_PAC_CMD);  // re-initialised, and its first call has an Execute edge
-    plc.Set(2, kGetIntReg, 5);
+    plc.Set(2, code::kGetIntReg, 5);
     plc.Fb(2)->TIMEOUT.value = pac::ToIecTime(5s);
     plc.Fb(2)->EXECUTE.value = TRUE;
     int scans = 0;
@@ -215,7 +215,7 @@ TEST_P(CmdSharing, FreshFbLeavesTheCommandInFlightAlone) {
     ASSERT_TRUE(ScanUntilFinal(plc, {2}, 100000));
     EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << plc.Fb(2)->ERRORID.value;
     EXPECT_EQ(plc.Fb(2)->ACKDATA.value, 9u);
-    EXPECT_EQ(plc.Seen(kMoveAbsolute, 1), 1);
+    EXPECT_EQ(plc.Seen(code::kPosAxisAbsolute, 1), 1);
 }
 
 // Defect 5: COMMAND ERROR with error number 0 is an Error with ErrorID 16#800F, never ErrorID 0; the
@@ -224,7 +224,7 @@ TEST_P(CmdSharing, CommandErrorWithoutNumberIsLibraryError800F) {
     SharedCmdPlc plc(GetParam(), 1);
     plc.Boot();
     plc.Controller().InjectCommandError(0);
-    plc.Set(0, kGetIntReg, 1);
+    plc.Set(0, code::kGetIntReg, 1);
     const FinalOutcome refused = plc.Run(0);
     ASSERT_TRUE(refused.Error()) << refused;
     EXPECT_EQ(refused.ErrorId(), kLibNoErrorNumber);

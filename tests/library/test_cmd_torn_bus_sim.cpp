@@ -11,6 +11,8 @@
 
 #include "bus_timing.hpp"
 #include "controller_readings.hpp"
+#include "gvl_constants.hpp"
+#include "pac/sim/command_table.hpp"
 #include "shared_cmd_plc.hpp"
 
 namespace {
@@ -18,9 +20,8 @@ namespace {
 using pac::test::BusTiming;
 using pac::test::SharedCmdPlc;
 using pac::test::SharingCase;
+namespace code = pac::sim::code;
 
-constexpr std::uint16_t kGetStat = 0x190B;
-constexpr std::uint16_t kPutIntReg = 0x0906;
 constexpr int kTearPercent = 50;
 
 using Frame = std::tuple<std::uint16_t, std::uint16_t, std::uint32_t>;
@@ -47,8 +48,8 @@ TornRun WriteThroughATornBus(const SharingCase& c, bool twoStep, int commands) {
         const auto n = static_cast<std::uint32_t>(run.commandsSent);
         const auto param = static_cast<std::uint16_t>(0x0101 * (n % 3 + 1));  // N257, N514, N771: both bytes differ
         const std::uint32_t data = 0x11111111u * (n % 15 + 1);
-        plc.Set(i, kPutIntReg, param, data);
-        sent.insert({kPutIntReg, param, data});
+        plc.Set(i, code::kPutIntReg, param, data);
+        sent.insert({code::kPutIntReg, param, data});
         plc.Fb(i)->EXECUTE.value = TRUE;
     };
     for (int i = 0; i < fbs; ++i) next(i);
@@ -69,7 +70,7 @@ TornRun WriteThroughATornBus(const SharingCase& c, bool twoStep, int commands) {
         if (!busy && run.commandsSent >= commands) break;
     }
     for (const auto& command : plc.CommandsSeen()) {
-        if (command.code == kGetStat && command.parameter == 0 && command.data == 0) continue;
+        if (command.code == code::kGetState && command.parameter == 0 && command.data == 0) continue;
         if (sent.count({command.code, command.parameter, command.data}) == 0) ++run.tornCommands;
     }
     run.tornReads = plc.Plc().Bench().Bus().ToPacLink().TornReads();
