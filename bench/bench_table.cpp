@@ -1,0 +1,305 @@
+// Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
+// `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
+// hand-written C CMD handshake, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
+// to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind.
+#include <sys/utsname.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "callgrind_count.hpp"
+#include "latency.hpp"
+#include "plant.hpp"
+#include "workloads.hpp"
+
+namespace {
+
+using namespace pac::bench;
+using std::chrono::milliseconds;
+
+constexpr double kHandWrittenGoal = 1.5;        // FB_PAC_Cmd <= 1.5 x the hand-written C
+constexpr double kThroughputGoal = 1000000.0;   // scans per CPU second, one plant
+constexpr double kRealTimeGoal = 100.0;         // 32 plants at 1 ms
+constexpr int kCostScans = 2000;
+
+double CpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+std::string SelfPath() {
+    char path[4096];
+    const ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
+    if (n <= 0) throw std::runtime_error("cannot find this program's path");
+    return std::string(path, static_cast<std::size_t>(n));
+}
+
+std::string CpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    }
+    return "unknown CPU";
+}
+
+std::string LoadAverage() {
+    double load[3] = {0, 0, 0};
+    if (getloadavg(load, 3) != 3) return "unknown";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f %.2f %.2f", load[0], load[1], load[2]);
+    return text;
+}
+
+std::string Number(double value, int decimals = 0) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    // thousands separators for the integer part
+    std::string s = text;
+    std::size_t end = s.find('.');
+    if (end == std::string::npos) end = s.size();
+    for (std::ptrdiff_t i = static_cast<std::ptrdiff_t>(end) - 3; i > (s[0] == '-' ? 1 : 0); i -= 3) {
+        s.insert(static_cast<std::size_t>(i), ",");
+    }
+    return s;
+}
+
+std::string Met(bool met) { return met ? "met" : "**not met**"; }
+
+void PrintMachine() {
+    utsname u{};
+    uname(&u);
+    std::printf("Machine: %s, %u cores, %s %s; load average at the start %s; compiler %s, %s build.\n\n",
+                CpuModel().c_str(), std::thread::hardware_concurrency(), u.sysname, u.release, LoadAverage().c_str(),
+                __VERSION__, PAC_BENCH_BUILD_TYPE);
+}
+
+// ---- scan cost ------------------------------------------------------------------------------------------
+
+struct CostPair {
+    std::optional<CallgrindCount> idle;
+    std::optional<CallgrindCount> job;
+};
+
+CostPair Cost(const std::string& self, const std::string& prefix, const char* function) {
+    return {CountInstructions(self, prefix + "-idle", {function}, kCostScans),
+            CountInstructions(self, prefix + "-job", {function}, kCostScans)};
+}
+
+std::string Cell(const std::optional<CallgrindCount>& c) { return c ? Number(c->instructionsPerScan) : "failed"; }
+
+int PrintScanCost(const std::string& self) {
+    std::printf("### Scan cost\n\nInstructions per scan in the FB's body (callgrind, its callees included), "
+                "mean over %d scans: idle (no job) and during jobs (one after the other, Execute low for one "
+                "scan between them).\n\n", kCostScans);
+    if (!ValgrindAvailable()) {
+        std::printf("valgrind not found: no scan cost (apt-get install valgrind).\n\n");
+        return 0;
+    }
+    const CostPair cmd = Cost(self, "cmd", measured::kCmd);
+    const CostPair hand = Cost(self, "c", measured::kHandWritten);
+    const CostPair ctrl = Cost(self, "ctrl", measured::kCtrl);
+    const CostPair axis = Cost(self, "axis", measured::kAxis);
+    std::printf("| function block | idle | during a job | the job | jobs done | / hand-written C (job) | goal |\n"
+                "|---|---:|---:|---|---:|---:|---|\n");
+    int failures = 0;
+    std::string ratio = "-";
+    std::string goal = "-";
+    if (cmd.job && hand.job) {
+        const double r = cmd.job->instructionsPerScan / hand.job->instructionsPerScan;
+        ratio = Number(r, 2) + "x";
+        goal = "<= " + Number(kHandWrittenGoal, 1) + "x: " + Met(r <= kHandWrittenGoal);
+        if (cmd.job->jobs != hand.job->jobs) {
+            std::printf("The hand-written handshake finished %ld jobs, FB_PAC_Cmd %ld: they differ.\n\n",
+                        hand.job->jobs, cmd.job->jobs);
+            failures++;
+        }
+    }
+    const auto jobs = [](const std::optional<CallgrindCount>& c) { return c ? std::to_string(c->jobs) : "-"; };
+    std::printf("| FB_PAC_Cmd | %s | %s | write / read N1 | %s | %s | %s |\n", Cell(cmd.idle).c_str(),
+                Cell(cmd.job).c_str(), jobs(cmd.job).c_str(), ratio.c_str(), goal.c_str());
+    std::printf("| CMD handshake by hand in C (bench/cmd_handshake.c) | %s | %s | write / read N1 | %s | 1.00x | - |\n",
+                Cell(hand.idle).c_str(), Cell(hand.job).c_str(), jobs(hand.job).c_str());
+    std::printf("| FB_PAC_Ctrl | %s | %s | STOP / START ONLINE | %s | - | - |\n", Cell(ctrl.idle).c_str(),
+                Cell(ctrl.job).c_str(), jobs(ctrl.job).c_str());
+    std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | - | - |\n",
+                Cell(axis.idle).c_str(), Cell(axis.job).c_str(), jobs(axis.job).c_str());
+    std::printf("| AUTOMATIC module FB | - | - | does not exist yet | - | - | - |\n\n");
+    return failures;
+}
+
+// ---- throughput and scale -------------------------------------------------------------------------------
+
+// Scans of all `plants` together per CPU second, best of three runs of `scans` scans.
+double ScansPerCpuSecond(std::vector<std::unique_ptr<Plant>>& plants, int scans) {
+    double best = 0;
+    for (int run = 0; run < 3; ++run) {
+        const double start = CpuSeconds();
+        for (int i = 0; i < scans; ++i) {
+            for (auto& plant : plants) plant->Scan();
+        }
+        const double rate = scans / (CpuSeconds() - start);
+        best = rate > best ? rate : best;
+    }
+    return best;
+}
+
+// `count` plants brought to ONLINE scan for scan, as in one runtime, and every axis under way.
+std::vector<std::unique_ptr<Plant>> Plants(int count, milliseconds pacCycle) {
+    std::vector<std::unique_ptr<Plant>> plants;
+    PlantOptions options;
+    options.pacCycle = pacCycle;
+    for (int i = 0; i < count; ++i) plants.push_back(std::make_unique<Plant>(options));
+    for (int scan = 0; scan < 1000; ++scan) {
+        bool all = true;
+        for (auto& plant : plants) {
+            plant->Scan();
+            all = all && plant->Online();
+        }
+        if (all) break;
+    }
+    for (auto& plant : plants) {
+        if (!plant->Online()) throw std::runtime_error("a plant did not reach ONLINE");
+    }
+    for (int scan = 0; scan < 200; ++scan) {
+        for (auto& plant : plants) plant->Scan();
+    }
+    return plants;
+}
+
+void PrintThroughput(const std::string& self) {
+    std::printf("### Simulation throughput\n\nOne PA-CONTROL with CMD, CTRL and 8 axis modules; FB_PAC_Cmd "
+                "writes and reads a register without pause, every axis moves back and forth (bench/plant.hpp); "
+                "PLC cycle 1 ms. Instructions per scan from callgrind (deterministic), scans per CPU second "
+                "measured (best of 3).\n\n");
+    std::printf("| PA-CONTROL cycle | instructions per scan | of which FBs | of which simulator | "
+                "scans per CPU second | goal >= %s |\n|---|---:|---:|---:|---:|---|\n", Number(kThroughputGoal).c_str());
+    const bool valgrind = ValgrindAvailable();
+    for (int pacMs : {10, 1}) {
+        const std::string workload = "plant-pac" + std::to_string(pacMs);
+        std::string all = "-", fbs = "-", sim = "-";
+        if (valgrind) {
+            const auto total = CountInstructions(self, workload, {measured::kScan}, kCostScans);
+            const auto fb = CountInstructions(self, workload, {measured::kCmd, measured::kCtrl, measured::kAxis},
+                                              kCostScans);
+            const auto simulator = CountInstructions(
+                self, workload, {measured::kSimulator, "pac::sim::Bus::ReadFromPac*", "pac::sim::Bus::WriteToPac*"},
+                kCostScans);
+            all = Cell(total);
+            if (total && fb) fbs = Cell(fb) + " (" + Number(100 * fb->instructionsPerScan / total->instructionsPerScan) + " %)";
+            if (total && simulator) {
+                sim = Cell(simulator) + " (" +
+                      Number(100 * simulator->instructionsPerScan / total->instructionsPerScan) + " %)";
+            }
+        }
+        auto plants = Plants(1, milliseconds(pacMs));
+        const double rate = ScansPerCpuSecond(plants, 20000);
+        std::printf("| %d ms | %s | %s | %s | %s | %s |\n", pacMs, all.c_str(), fbs.c_str(), sim.c_str(),
+                    Number(rate).c_str(), Met(rate >= kThroughputGoal).c_str());
+    }
+    std::printf("\n");
+}
+
+void PrintScale() {
+    std::printf("### Scale\n\nPA-CONTROLs as above (CMD, CTRL, 8 axes moving, controller cycle 10 ms) in one "
+                "process on one core, scanned one after the other in each 1 ms PLC cycle. Multiple of real "
+                "time: simulated seconds per CPU second.\n\n");
+    std::printf("| PA-CONTROLs | PLC cycles per CPU second | multiple of real time | CPU per controller and "
+                "scan | vs. 1 controller | goal >= %sx at 32 |\n|---:|---:|---:|---:|---:|---|\n",
+                Number(kRealTimeGoal).c_str());
+    double single = 0;
+    for (int count : {1, 2, 4, 8, 16, 32}) {
+        auto plants = Plants(count, milliseconds(10));
+        const double cycles = ScansPerCpuSecond(plants, 64000 / count);
+        const double perController = 1e6 / (cycles * count);  // microseconds
+        if (count == 1) single = perController;
+        const double realTime = cycles / 1000.0;
+        std::printf("| %d | %s | %sx | %s us | %sx | %s |\n", count, Number(cycles).c_str(), Number(realTime, 1).c_str(),
+                    Number(perController, 2).c_str(), Number(perController / single, 2).c_str(),
+                    count == 32 ? Met(realTime >= kRealTimeGoal).c_str() : "");
+    }
+    std::printf("\n");
+}
+
+// ---- latency --------------------------------------------------------------------------------------------
+
+template <class Measure>
+LatencyRow OverTimings(int latency, const Measure& measure) {
+    LatencyRow all;
+    for (int plcMs : {1, 2, 5, 10}) {
+        for (int pacMs : {1, 3, 10}) {
+            pac::PlcBenchTiming timing;
+            timing.plcCycle = milliseconds(plcMs);
+            timing.pacCycle = milliseconds(pacMs);
+            timing.latencyCycles = latency;
+            all.Merge(measure(timing));
+        }
+    }
+    return all;
+}
+
+void PrintLatencyRow(const std::string& what, int latency, const LatencyRow& row) {
+    std::printf("| %s | %d | %d | %d..%d | %d..%d | %d |\n", what.c_str(), latency, row.commands, row.scansMin,
+                row.scansMax, row.minimumMin, row.minimumMax, row.aboveMinimum);
+}
+
+int PrintLatency() {
+    std::printf("### Latency\n\nScans from the Execute edge to Done against the protocol minimum (the image "
+                "reaches the controller after the bus latency, its next cycle answers, the answer travels back, "
+                "the next scan reads it), on every PLC cycle (1, 2, 5, 10 ms) x controller cycle (1, 3, 10 ms) "
+                "for each bus latency. Shared interface: FB_PAC_WriteIntReg and FB_PAC_ReadIntReg in turn on "
+                "the one CMD interface, all started in the same scan; Done of the last one against the protocol "
+                "minima of the commands one after the other.\n\n");
+    std::printf("| FBs | bus latency [PLC cycles] | jobs | scans | protocol minimum | later than the minimum |\n"
+                "|---|---:|---:|---:|---:|---:|\n");
+    int late = 0;
+    for (int latency = 0; latency <= 3; ++latency) {
+        const LatencyRow row = OverTimings(latency, [](const pac::PlcBenchTiming& t) { return MeasureCmd(t, 200); });
+        late += row.aboveMinimum;
+        PrintLatencyRow("FB_PAC_Cmd", latency, row);
+    }
+    for (int fbs : {2, 4, 8}) {
+        for (int latency : {0, 2}) {
+            const LatencyRow row =
+                OverTimings(latency, [fbs](const pac::PlcBenchTiming& t) { return MeasureShared(t, fbs, 20); });
+            late += row.aboveMinimum;
+            PrintLatencyRow(std::to_string(fbs) + " element FBs, shared", latency, row);
+        }
+    }
+    std::printf("\n");
+    return late;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        if (argc == 5 && std::string(argv[1]) == "--workload" && std::string(argv[3]) == "--scans") {
+            const WorkloadResult r = RunWorkload(argv[2], std::atoi(argv[4]));
+            std::printf("scans %d jobs %ld\n", r.scans, r.jobs);
+            return 0;
+        }
+        const std::string self = SelfPath();
+        PrintMachine();
+        int failures = PrintScanCost(self);
+        PrintThroughput(self);
+        PrintScale();
+        failures += PrintLatency();
+        std::printf("Load average at the end: %s\n", LoadAverage().c_str());
+        return failures == 0 ? 0 : 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_table: %s\n", e.what());
+        return 2;
+    }
+}

@@ -1,0 +1,158 @@
+#include "workloads.hpp"
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#endif
+#endif
+#ifndef CALLGRIND_ZERO_STATS
+#define CALLGRIND_ZERO_STATS
+#define CALLGRIND_DUMP_STATS
+#endif
+
+#include "cmd_handshake.h"
+#include "pac/pac_plc_bench.hpp"
+#include "plant.hpp"
+
+namespace pac::bench {
+
+namespace {
+
+using std::chrono::milliseconds;
+
+// The measured part of every workload: `scans` scans of `scan`, alone in the dump; `jobsDone` counts the
+// jobs that ended with Done so far.
+WorkloadResult Measure(const std::function<void()>& scan, int scans, const std::function<long()>& jobsDone) {
+    const long before = jobsDone();
+    CALLGRIND_ZERO_STATS;
+    for (int i = 0; i < scans; ++i) scan();
+    CALLGRIND_DUMP_STATS;
+    return {scans, jobsDone() - before};
+}
+
+// The PLC program of a command job: Execute until a final output, then one scan low, then the next.
+struct CommandInputs {
+    bool execute = false;
+    std::uint16_t code = 0;
+    std::uint16_t param = 0;
+    std::uint32_t data = 0;
+    long started = 0;
+    long done = 0;
+};
+
+void CycleCommand(CommandInputs& in, bool done, bool error) {
+    if (in.execute && (done || error)) {
+        in.execute = false;
+        in.done += done ? 1 : 0;
+    } else if (!in.execute) {
+        in.execute = true;
+        in.code = (in.started++ % 2 == 0) ? 0x0906 : 0x1906;  // write, then read back, N register 1
+        in.param = 1;
+        in.data = static_cast<std::uint32_t>(in.started);
+    }
+}
+
+WorkloadResult CmdWorkload(bool job, int scans) {
+    pac::PacPlcBench plc;
+    auto cmd = PAC_FB(FB_PAC_CMD);
+    CommandInputs in;
+    plc.Call(cmd, [&] {
+        if (job) CycleCommand(in, cmd->DONE.value, cmd->ERROR.value);
+        cmd->EXECUTE.value = in.execute;
+        cmd->CODE.value = in.code;
+        cmd->PARAM.value = in.param;
+        cmd->DATA.value = in.data;
+    });
+    plc.Start();
+    plc.Scan(20);
+    return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
+}
+
+WorkloadResult HandWrittenWorkload(bool job, int scans) {
+    pac::PacPlcBench plc;
+    CmdHandshake hs;
+    CmdHandshakeInit(&hs);
+    CommandInputs in;
+    plc.CallRaw8(pac::sim::ModuleLayout::kCmdOffset, [&](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
+        if (job) CycleCommand(in, hs.done != 0, hs.error != 0);
+        hs.execute = in.execute;
+        hs.code = in.code;
+        hs.param = in.param;
+        hs.data = in.data;
+        CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), plc.Now().count());
+    });
+    plc.Start();
+    plc.Scan(20);
+    return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
+}
+
+WorkloadResult CtrlWorkload(bool job, int scans) {
+    PlantOptions options;
+    options.axes = 0;
+    options.commands = false;
+    Plant plant(options);
+    plant.GoOnline();
+    auto& ctrl = plant.Ctrl();
+    bool online = true;
+    long done = 0;
+    return Measure([&] {
+        if (job) {
+            // STOP ONLINE and START ONLINE in turn, each held until its final output, then one scan low.
+            if (ctrl->EXECUTE.value && (ctrl->DONE.value || ctrl->ERROR.value)) {
+                done += ctrl->DONE.value ? 1 : 0;
+                ctrl->EXECUTE.value = FALSE;
+                online = !online;
+            } else if (!ctrl->EXECUTE.value) {
+                ctrl->REQUEST.value = online ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+                ctrl->EXECUTE.value = TRUE;
+            }
+        }
+        plant.Scan();
+    }, scans, [&] { return done; });
+}
+
+WorkloadResult AxisWorkload(bool job, int scans) {
+    PlantOptions options;
+    options.axes = 1;
+    options.commands = false;
+    options.moves = job;
+    Plant plant(options);
+    plant.GoOnline();
+    return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone(); });
+}
+
+WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
+    PlantOptions options;
+    options.pacCycle = pacCycle;
+    Plant plant(options);
+    plant.GoOnline();
+    plant.Scan(200);  // every axis under way
+    return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone() + plant.CommandsDone(); });
+}
+
+}  // namespace
+
+WorkloadResult RunWorkload(const std::string& name, int scans) {
+    static const std::map<std::string, std::function<WorkloadResult(int)>> workloads = {
+        {"cmd-idle", [](int n) { return CmdWorkload(false, n); }},
+        {"cmd-job", [](int n) { return CmdWorkload(true, n); }},
+        {"c-idle", [](int n) { return HandWrittenWorkload(false, n); }},
+        {"c-job", [](int n) { return HandWrittenWorkload(true, n); }},
+        {"ctrl-idle", [](int n) { return CtrlWorkload(false, n); }},
+        {"ctrl-job", [](int n) { return CtrlWorkload(true, n); }},
+        {"axis-idle", [](int n) { return AxisWorkload(false, n); }},
+        {"axis-job", [](int n) { return AxisWorkload(true, n); }},
+        {"plant-pac1", [](int n) { return PlantWorkload(milliseconds(1), n); }},
+        {"plant-pac10", [](int n) { return PlantWorkload(milliseconds(10), n); }},
+    };
+    auto it = workloads.find(name);
+    if (it == workloads.end()) throw std::invalid_argument("no workload '" + name + "'");
+    return it->second(scans);
+}
+
+}  // namespace pac::bench
