@@ -31,6 +31,7 @@ constexpr double kHandWrittenGoal = 1.5;        // FB_PAC_Cmd <= 1.5 x the hand-
 constexpr double kThroughputGoal = 1000000.0;   // scans per CPU second, one plant
 constexpr double kRealTimeGoal = 100.0;         // 32 plants at 1 ms
 constexpr int kCostScans = 2000;
+constexpr int kPlantScansPerRun = 200000;  // a few tenths of a CPU second per timed run
 
 double CpuSeconds() {
     timespec t{};
@@ -204,7 +205,7 @@ void PrintThroughput(const std::string& self) {
             }
         }
         auto plants = Plants(1, milliseconds(pacMs));
-        const double rate = ScansPerCpuSecond(plants, 20000);
+        const double rate = ScansPerCpuSecond(plants, kPlantScansPerRun);
         std::printf("| %d ms | %s | %s | %s | %s | %s |\n", pacMs, all.c_str(), fbs.c_str(), sim.c_str(),
                     Number(rate).c_str(), Met(rate >= kThroughputGoal).c_str());
     }
@@ -221,7 +222,7 @@ void PrintScale() {
     double single = 0;
     for (int count : {1, 2, 4, 8, 16, 32}) {
         auto plants = Plants(count, milliseconds(10));
-        const double cycles = ScansPerCpuSecond(plants, 64000 / count);
+        const double cycles = ScansPerCpuSecond(plants, kPlantScansPerRun / count);
         const double perController = 1e6 / (cycles * count);  // microseconds
         if (count == 1) single = perController;
         const double realTime = cycles / 1000.0;
