@@ -85,13 +85,12 @@ int ChainedMinimum(const pac::PacPlcBench& plc, std::chrono::nanoseconds edge, i
     return total;
 }
 
-}  // namespace
-
-LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds) {
-    pac::PacPlcBench plc(timing);
+// `fbs` element FBs on `plc`'s CMD interface, FB_PAC_WriteIntReg and FB_PAC_ReadIntReg in turn, each read
+// after the write of its register.
+std::vector<std::unique_ptr<SharedFb>> SharedFbs(pac::PacPlcBench& plc, int fbs) {
     std::vector<std::unique_ptr<SharedFb>> shared;
     for (int i = 0; i < fbs; ++i) {
-        const UINT number = static_cast<UINT>(1 + i / 2);  // each read follows the write of its register
+        const UINT number = static_cast<UINT>(1 + i / 2);
         if (i % 2 == 0) {
             auto fb = std::make_unique<SharedFbOf<FB_PAC_WRITEINTREG>>(PAC_FB(FB_PAC_WRITEINTREG), number);
             plc.Call(fb->Instance());
@@ -102,6 +101,14 @@ LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds)
             shared.push_back(std::move(fb));
         }
     }
+    return shared;
+}
+
+}  // namespace
+
+LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds) {
+    pac::PacPlcBench plc(timing);
+    const auto shared = SharedFbs(plc, fbs);
     plc.Start();
     plc.Scan(3);
     const auto allFinal = [&] {
@@ -119,6 +126,41 @@ LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds)
         plc.Scan(1 + r % 3);
     }
     return row;
+}
+
+SharedRate MeasureSharedRate(const pac::PlcBenchTiming& timing, int fbs, int scans) {
+    pac::PacPlcBench plc(timing);
+    const auto shared = SharedFbs(plc, fbs);
+    std::vector<long> done(shared.size(), 0);
+    std::vector<bool> execute(shared.size(), false);
+    SharedRate rate;
+    // The application program, after the FBs in each scan (their inputs of the next scan): a new Execute edge
+    // as soon as the last job was final.
+    plc.Task().AddProgram([&] {
+        for (std::size_t i = 0; i < shared.size(); ++i) {
+            if (execute[i] && shared[i]->Final()) {
+                done[i] += shared[i]->Done() ? 1 : 0;
+                rate.errors += shared[i]->Done() ? 0 : 1;
+                execute[i] = false;
+            } else if (!execute[i]) {
+                execute[i] = true;
+            }
+            shared[i]->SetExecute(execute[i]);
+        }
+    });
+    plc.Start();
+    plc.Scan(3);
+    const auto start = plc.Now();
+    std::fill(done.begin(), done.end(), 0);
+    rate.errors = 0;
+    plc.Scan(scans);
+    const double seconds = std::chrono::duration<double>(plc.Now() - start).count();
+    long all = 0;
+    for (long d : done) all += d;
+    rate.commandsPerSecond = static_cast<double>(all) / seconds;
+    rate.fewestPerFb = *std::min_element(done.begin(), done.end());
+    rate.mostPerFb = *std::max_element(done.begin(), done.end());
+    return rate;
 }
 
 }  // namespace pac::bench

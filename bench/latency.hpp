@@ -29,4 +29,15 @@ LatencyRow MeasureCmd(const pac::PlcBenchTiming& timing, int commands);
 // minima of the commands one after the other (each goes out in the scan that shows the one before it done).
 LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds);
 
+// Commands per simulated second through one CMD interface shared by `fbs` element FBs (FB_PAC_WriteIntReg
+// and FB_PAC_ReadIntReg in turn), each sending its next command as soon as its last one is final (Execute
+// low for one scan between), over `scans` scans.
+struct SharedRate {
+    double commandsPerSecond = 0;  // all FBs together, Done only
+    long fewestPerFb = 0;          // Done of the FB served least and most: the queue's fairness
+    long mostPerFb = 0;
+    long errors = 0;
+};
+SharedRate MeasureSharedRate(const pac::PlcBenchTiming& timing, int fbs, int scans);
+
 }  // namespace pac::bench

@@ -135,7 +135,69 @@ WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
     return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone() + plant.CommandsDone(); });
 }
 
+// The jobs of the side-by-side check: write and read back N register 1, and a code with the SEND flag set,
+// which both refuse without sending.
+void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
+    if (in.execute && (done || error)) {
+        in.execute = false;
+    } else if (!in.execute) {
+        static const std::uint16_t kCodes[] = {0x0906, 0x1906, 0x8906};
+        in.execute = true;
+        in.code = kCodes[in.started++ % 3];
+        in.param = 1;
+        in.data = static_cast<std::uint32_t>(in.started * 7);
+    }
+}
+
 }  // namespace
+
+std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans) {
+    pac::PacPlcBench library(timing);
+    auto cmd = PAC_FB(FB_PAC_CMD);
+    CommandInputs libraryIn;
+    library.Call(cmd, [&] {
+        CycleCheckedCommand(libraryIn, cmd->DONE.value, cmd->ERROR.value);
+        cmd->EXECUTE.value = libraryIn.execute;
+        cmd->CODE.value = libraryIn.code;
+        cmd->PARAM.value = libraryIn.param;
+        cmd->DATA.value = libraryIn.data;
+    });
+    library.Start();
+    pac::PacPlcBench hand(timing);
+    CmdHandshake hs;
+    CmdHandshakeInit(&hs);
+    CommandInputs handIn;
+    hand.CallRaw8(pac::sim::ModuleLayout::kCmdOffset, [&](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
+        CycleCheckedCommand(handIn, hs.done != 0, hs.error != 0);
+        hs.execute = handIn.execute;
+        hs.code = handIn.code;
+        hs.param = handIn.param;
+        hs.data = handIn.data;
+        CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), hand.Now().count());
+    });
+    hand.Start();
+    for (int scan = 1; scan <= scans; ++scan) {
+        library.Scan();
+        hand.Scan();
+        const auto& channel = library.Channel();
+        const bool same = library.ToPac().Cmd() == hand.ToPac().Cmd() && (cmd->DONE.value != 0) == (hs.done != 0) &&
+                          (cmd->BUSY.value != 0) == (hs.busy != 0) && (cmd->ERROR.value != 0) == (hs.error != 0) &&
+                          cmd->ERRORID.value == hs.errorId && static_cast<int>(cmd->ERRORSOURCE.value) == hs.errorSource &&
+                          cmd->ACKDATA.value == hs.ackData && (cmd->ACKNOWLEDGED.value != 0) == (hs.acknowledged != 0) &&
+                          channel.HISTORYCOUNT == hs.historyCount;
+        if (!same) return "scan " + std::to_string(scan) + ": the module or an output differs";
+        if (hs.historyCount > 0) {
+            const auto& a = channel.HISTORY.table[(channel.HISTORYNEXT + 15) % 16];
+            const auto& b = hs.history[(hs.historyNext + 15) % 16];
+            if (a.CODE != b.code || a.PARAM != b.param || a.DATA != b.data || a.ACKDATA != b.ackData ||
+                a.ERRORID != b.errorId || a.SCANSTOACK != b.scansToAck || a.SCANSTOEND != b.scansToEnd) {
+                return "scan " + std::to_string(scan) + ": the handshake history differs";
+            }
+        }
+    }
+    if (libraryIn.started < 3) return "fewer than three jobs in " + std::to_string(scans) + " scans";
+    return "";
+}
 
 WorkloadResult RunWorkload(const std::string& name, int scans) {
     static const std::map<std::string, std::function<WorkloadResult(int)>> workloads = {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "pac/pac_plc_bench.hpp"
+
 namespace pac::bench {
 
 struct Workload {
@@ -16,11 +18,14 @@ struct Workload {
 // The functions a workload's rows are measured on.
 namespace measured {
 inline const char* const kCmd = "FB_PAC_CMD_body__";
+inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";
 inline const char* const kAxis = "FB_PAC_AXIS_body__";
 inline const char* const kScan = "pac::PlcTask::Scan()";
-inline const char* const kSimulator = "pac::sim::PacRunner::CatchUp*";
+inline const char* const kSimulator = "pac::sim::PaControl::Cycle*";
+inline const char* const kBusRead = "pac::sim::Bus::ReadFromPac*";
+inline const char* const kBusWrite = "pac::sim::Bus::WriteToPac*";
 }  // namespace measured
 
 struct WorkloadResult {
@@ -31,5 +36,10 @@ struct WorkloadResult {
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
 // "axis-job", "plant-pac1", "plant-pac10") with `scans` measured scans. std::invalid_argument for another name.
 WorkloadResult RunWorkload(const std::string& name, int scans);
+
+// FB_PAC_CmdInterface with FB_PAC_Cmd and the hand-written C handshake side by side on two benches of the
+// same timing, the same jobs (writes, reads and a refused code) for `scans` scans: the first scan where
+// the CMD module or an output differs, described; empty if they agree on every scan.
+std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans);
 
 }  // namespace pac::bench
