@@ -57,17 +57,38 @@ void CycleCommand(CommandInputs& in, bool done, bool error) {
     }
 }
 
-WorkloadResult CmdWorkload(bool job, int scans) {
-    pac::PacPlcBench plc;
-    auto cmd = PAC_FB(FB_PAC_CMD);
-    CommandInputs in;
-    plc.Call(cmd, [&] {
-        if (job) CycleCommand(in, cmd->DONE.value, cmd->ERROR.value);
+// The PLC program that sets a command's inputs before each call; null: no jobs.
+using JobProgram = void (*)(CommandInputs& in, bool done, bool error);
+
+// FB_PAC_Cmd on `plc`'s CMD interface (with the FB_PAC_CmdInterface the bench registers before it).
+void CallLibrary(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, CommandInputs& in, JobProgram program) {
+    plc.Call(cmd, [&cmd, &in, program] {
+        if (program) program(in, cmd->DONE.value, cmd->ERROR.value);
         cmd->EXECUTE.value = in.execute;
         cmd->CODE.value = in.code;
         cmd->PARAM.value = in.param;
         cmd->DATA.value = in.data;
     });
+}
+
+// The hand-written C handshake on `plc`'s CMD module.
+void CallHandWritten(pac::PacPlcBench& plc, CmdHandshake& hs, CommandInputs& in, JobProgram program) {
+    plc.CallRaw8(pac::sim::ModuleLayout::kCmdOffset,
+                 [&plc, &hs, &in, program](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
+                     if (program) program(in, hs.done != 0, hs.error != 0);
+                     hs.execute = in.execute;
+                     hs.code = in.code;
+                     hs.param = in.param;
+                     hs.data = in.data;
+                     CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), plc.Now().count());
+                 });
+}
+
+WorkloadResult CmdWorkload(bool job, int scans) {
+    pac::PacPlcBench plc;
+    auto cmd = PAC_FB(FB_PAC_CMD);
+    CommandInputs in;
+    CallLibrary(plc, cmd, in, job ? CycleCommand : nullptr);
     plc.Start();
     plc.Scan(20);
     return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
@@ -78,14 +99,7 @@ WorkloadResult HandWrittenWorkload(bool job, int scans) {
     CmdHandshake hs;
     CmdHandshakeInit(&hs);
     CommandInputs in;
-    plc.CallRaw8(pac::sim::ModuleLayout::kCmdOffset, [&](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
-        if (job) CycleCommand(in, hs.done != 0, hs.error != 0);
-        hs.execute = in.execute;
-        hs.code = in.code;
-        hs.param = in.param;
-        hs.data = in.data;
-        CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), plc.Now().count());
-    });
+    CallHandWritten(plc, hs, in, job ? CycleCommand : nullptr);
     plc.Start();
     plc.Scan(20);
     return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
@@ -155,26 +169,13 @@ std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans)
     pac::PacPlcBench library(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
     CommandInputs libraryIn;
-    library.Call(cmd, [&] {
-        CycleCheckedCommand(libraryIn, cmd->DONE.value, cmd->ERROR.value);
-        cmd->EXECUTE.value = libraryIn.execute;
-        cmd->CODE.value = libraryIn.code;
-        cmd->PARAM.value = libraryIn.param;
-        cmd->DATA.value = libraryIn.data;
-    });
+    CallLibrary(library, cmd, libraryIn, CycleCheckedCommand);
     library.Start();
     pac::PacPlcBench hand(timing);
     CmdHandshake hs;
     CmdHandshakeInit(&hs);
     CommandInputs handIn;
-    hand.CallRaw8(pac::sim::ModuleLayout::kCmdOffset, [&](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
-        CycleCheckedCommand(handIn, hs.done != 0, hs.error != 0);
-        hs.execute = handIn.execute;
-        hs.code = handIn.code;
-        hs.param = handIn.param;
-        hs.data = handIn.data;
-        CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), hand.Now().count());
-    });
+    CallHandWritten(hand, hs, handIn, CycleCheckedCommand);
     hand.Start();
     for (int scan = 1; scan <= scans; ++scan) {
         library.Scan();
