@@ -10,11 +10,14 @@
 # List SOURCES in declaration order: a type before its users, a POU before its callers.
 
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
-set(PACST_VENV "${CMAKE_BINARY_DIR}/venv" CACHE INTERNAL "")
+# One venv for every build tree (default, debug, ...), like the parse cache below: the packages are the
+# same pinned versions, and installing them again per preset cost most of a configure.
+get_filename_component(PAC_SHARED_BUILD_DIR "${CMAKE_CURRENT_LIST_DIR}/../build" ABSOLUTE)
+set(PACST_VENV "${PAC_SHARED_BUILD_DIR}/venv" CACHE INTERNAL "")
 set(PACST_PYTHON "${PACST_VENV}/bin/python" CACHE INTERNAL "")
 # Parses are keyed by file content and blark's version, so every build tree (default, debug...) can
 # share one cache and parse each version of a file once.
-set(PACST_CACHE_DIR "${CMAKE_CURRENT_LIST_DIR}/../build/pacst-cache" CACHE PATH "pacst's parse cache")
+set(PACST_CACHE_DIR "${PAC_SHARED_BUILD_DIR}/pacst-cache" CACHE PATH "pacst's parse cache")
 
 include("${CMAKE_CURRENT_LIST_DIR}/PacPythonVenv.cmake")
 # pacst is needed with either compiler: with MATIEC it writes the declarations C++ code includes.
