@@ -153,11 +153,23 @@ SharedRate MeasureSharedRate(const pac::PlcBenchTiming& timing, int fbs, int sca
     const auto start = plc.Now();
     std::fill(done.begin(), done.end(), 0);
     rate.errors = 0;
-    plc.Scan(scans);
+    // The protocol's bound for the same commands: each SEND toggle (parking keeps the flag) acknowledged
+    // after the fewest scans the bus and the controller's cycle allow from the scan it was sent in.
+    std::chrono::nanoseconds minimum{0};
+    bool sendFlag = (plc.ToPac()[6] & 0x80) != 0;
+    for (int i = 0; i < scans; ++i) {
+        plc.Scan();
+        const bool flag = (plc.ToPac()[6] & 0x80) != 0;
+        if (flag == sendFlag) continue;
+        sendFlag = flag;
+        minimum += timing.plcCycle * plc.ProtocolMinimumScans(plc.Now());
+    }
     const double seconds = std::chrono::duration<double>(plc.Now() - start).count();
     long all = 0;
     for (long d : done) all += d;
     rate.commandsPerSecond = static_cast<double>(all) / seconds;
+    const double bound = std::chrono::duration<double>(minimum).count();
+    rate.protocolPerSecond = bound > 0.0 ? static_cast<double>(all + rate.errors) / bound : 0.0;
     rate.fewestPerFb = *std::min_element(done.begin(), done.end());
     rate.mostPerFb = *std::max_element(done.begin(), done.end());
     return rate;

@@ -31,9 +31,10 @@ LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds)
 
 // Commands per simulated second through one CMD interface shared by `fbs` element FBs (FB_PAC_WriteIntReg
 // and FB_PAC_ReadIntReg in turn), each sending its next command as soon as its last one is final (Execute
-// low for one scan between), over `scans` scans.
+// low for one scan between), over `scans` scans, next to the protocol's bound for the same commands.
 struct SharedRate {
     double commandsPerSecond = 0;  // all FBs together, Done only
+    double protocolPerSecond = 0;  // the same commands back to back, each at the protocol minimum
     long fewestPerFb = 0;          // Done of the FB served least and most: the queue's fairness
     long mostPerFb = 0;
     long errors = 0;
