@@ -19,6 +19,9 @@ std::string SignalInfo::Name() const {
 std::size_t Trace::AddSignal(SignalInfo info) {
     if (!times_.empty()) throw std::invalid_argument("Trace: signal " + info.path + " added after the first sample");
     if (info.path.empty() || info.Name().empty()) throw std::invalid_argument("Trace: a signal needs a name");
+    if (info.path.find_first_of(" \t\n") != std::string::npos) {
+        throw std::invalid_argument("Trace: \"" + info.path + "\" has a blank, which VCD cannot name");
+    }
     if (info.kind == SignalKind::kReal) info.width = 64;
     if (info.width < 1 || info.width > 64) throw std::invalid_argument("Trace: " + info.path + " is not 1..64 bits wide");
     for (const auto& signal : signals_) {

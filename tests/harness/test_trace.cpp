@@ -58,6 +58,7 @@ TEST(Trace, RefusesWhatItCouldNotRecordFaithfully) {
     pac::Trace trace;
     EXPECT_THROW(trace.AddSignal({"", pac::SignalKind::kBits, 1}), std::invalid_argument);
     EXPECT_THROW(trace.AddSignal({"scope.", pac::SignalKind::kBits, 1}), std::invalid_argument);
+    EXPECT_THROW(trace.AddSignal({"FB one.Busy", pac::SignalKind::kBits, 1}), std::invalid_argument);
     EXPECT_THROW(trace.AddSignal({"wide", pac::SignalKind::kBits, 65}), std::invalid_argument);
     EXPECT_THROW(trace.AddSignal({"none", pac::SignalKind::kBits, 0}), std::invalid_argument);
     trace.AddSignal({"a", pac::SignalKind::kBits, 1});

@@ -30,7 +30,7 @@ inline std::filesystem::path TraceDumpDir() {
 inline std::filesystem::path DumpVcd(const Trace& trace, const std::string& part = "") {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = test == nullptr ? "trace" : std::string(test->test_suite_name()) + "." + test->name();
-    if (!part.empty()) name += "." + part;
+    if (!part.empty() && name.find(part) == std::string::npos) name += "." + part;  // a parameter's name may hold it
     for (char& c : name) {
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
     }
