@@ -116,6 +116,8 @@ function(pac_st_library target)
     add_executable(${target}_layout_probe "${decl}/layout_probe.c")
     add_dependencies(${target}_layout_probe ${target}_declare)
     target_include_directories(${target}_layout_probe PRIVATE "${decl}")
+    # It asks of every integer type whether -1 is below 0, which for the unsigned ones is the point.
+    target_compile_options(${target}_layout_probe PRIVATE -Wno-type-limits)
     add_custom_command(
       OUTPUT "${mat}/layout_expected.h"
       COMMAND ${target}_layout_probe "${mat}/layout_expected.h"

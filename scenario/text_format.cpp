@@ -68,7 +68,7 @@ std::string ErrorIdText(std::uint16_t errorId) {
 
 std::string ErrorText(std::uint16_t errorId) {
     BOOL eno = 0;
-    const STRING text = F_PAC_ERRORTEXT(1, &eno, static_cast<WORD>(errorId));
+    const STRING text = F_PAC_ERRORTEXT(1, &eno, static_cast<WORD>(errorId), E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE);
     return std::string(reinterpret_cast<const char*>(text.body), text.len);
 }
 

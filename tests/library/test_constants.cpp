@@ -13,9 +13,9 @@
 
 namespace {
 
-std::string ErrorText(std::uint32_t number) {
+std::string ErrorText(std::uint32_t number, E_PAC_ERRORSOURCE source = E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE) {
     BOOL eno = 0;
-    STRING s = F_PAC_ERRORTEXT(1, &eno, static_cast<WORD>(number));
+    STRING s = F_PAC_ERRORTEXT(1, &eno, static_cast<WORD>(number), source);
     return std::string(reinterpret_cast<const char*>(s.body), s.len);
 }
 
@@ -126,6 +126,38 @@ TEST(GvlPac, LibraryCodesLieAboveEveryPacNumber) {
             EXPECT_LE(value, 0x1FFFu) << name;
         }
     }
+}
+
+// A system error number (FB_PAC_Ctrl's ErrorID with ErrorSource SYSTEM) is no command error of 6.5: its
+// text names the class of 5.2.4.15 (1..99 CPU, 100..499 hardware, 500..999 ONLINE/AUTOMATIC) or the two
+// numbers the manual names (E525 in 2.7.2, E560 in 5.2.6.21), never the 6.5 text of the same number.
+TEST(ErrorText, SystemErrorNumbersGetTheirClassNotTheCommandErrorText) {
+    constexpr auto kSystem = E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM;
+    EXPECT_EQ(ErrorText(43), "no reference point");  // command error 43 (6.5)
+    EXPECT_NE(ErrorText(43, kSystem), ErrorText(43));
+    EXPECT_NE(ErrorText(43, kSystem).find("class 1 (CPU)"), std::string::npos);
+    EXPECT_NE(ErrorText(99, kSystem).find("class 1"), std::string::npos);
+    EXPECT_NE(ErrorText(100, kSystem).find("class 2 (hardware)"), std::string::npos);
+    EXPECT_NE(ErrorText(499, kSystem).find("class 2"), std::string::npos);
+    EXPECT_NE(ErrorText(500, kSystem).find("class 3"), std::string::npos);
+    EXPECT_NE(ErrorText(999, kSystem).find("class 3"), std::string::npos);
+    EXPECT_EQ(ErrorText(525, kSystem), "system error E525: no reference point");
+    EXPECT_NE(ErrorText(560, kSystem).find("E560"), std::string::npos);
+    EXPECT_EQ(ErrorText(1000, kSystem), "unknown error number");
+    EXPECT_EQ(ErrorText(0, kSystem), "no error");
+    // Library codes keep their texts whatever the source says.
+    EXPECT_EQ(ErrorText(Gvl()["PAC_LIB_ERR_ACK_TIMEOUT"], kSystem), ErrorText(Gvl()["PAC_LIB_ERR_ACK_TIMEOUT"]));
+    for (std::uint32_t n : {1u, 150u, 525u, 999u}) EXPECT_LE(ErrorText(n, kSystem).size(), 80u) << n;
+}
+
+TEST(ErrorSource, NoneWithoutErrorLibraryFrom16x8000OtherwiseWhatTheFbReports) {
+    BOOL eno = 0;
+    constexpr auto kCommand = E_PAC_ERRORSOURCE__PAC_ERRSRC_COMMAND;
+    constexpr auto kSystem = E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM;
+    EXPECT_EQ(F_PAC_ERRORSOURCE(1, &eno, 0, 0, kSystem), E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE);
+    EXPECT_EQ(F_PAC_ERRORSOURCE(1, &eno, 1, 0x8001, kSystem), E_PAC_ERRORSOURCE__PAC_ERRSRC_LIBRARY);
+    EXPECT_EQ(F_PAC_ERRORSOURCE(1, &eno, 1, 0x7FFF, kSystem), kSystem);
+    EXPECT_EQ(F_PAC_ERRORSOURCE(1, &eno, 1, 43, kCommand), kCommand);
 }
 
 }  // namespace

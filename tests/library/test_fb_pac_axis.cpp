@@ -654,6 +654,7 @@ TEST_F(FbPacAxis, AxisErrorDuringAMoveAndItsReset) {
     EXPECT_EQ(task_.ScanCount(), raised + 1 + inLatency_ + 1) << "the first scan that can show the axis error";
     EXPECT_TRUE(Error());
     EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(fb_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_LIBRARY) << "the axis error number has a pin of its own";
     EXPECT_EQ(fb_->AXISERRORNUMBER.value, kLimitSwitch);
     EXPECT_TRUE(fb_->AXISERROR.value);
     EXPECT_TRUE(fb_->FAULT.value);

@@ -111,6 +111,7 @@ TEST_F(FbPacCmd, CommandErrorPassesThePacErrorNumberUnchanged) {
     Cycle(1);
     EXPECT_TRUE(Error());
     EXPECT_EQ(cmd_->ERRORID.value, 43);
+    EXPECT_EQ(cmd_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_COMMAND);
     EXPECT_TRUE(cmd_->ACKNOWLEDGED.value);
 }
 

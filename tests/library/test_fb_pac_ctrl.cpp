@@ -554,6 +554,7 @@ TEST_F(FbPacCtrl, SystemErrorDuringStartOnlineIsTheErrorWithTheNumberUnchanged) 
     Cycle(1);
     EXPECT_TRUE(Error());
     EXPECT_EQ(ErrorId(), 612u);
+    EXPECT_EQ(ctrl_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM) << "612 is E612, not 6.5's 612";
     EXPECT_EQ(Control(), kIdle) << "the start bit falls with the error";
 }
 
@@ -564,6 +565,10 @@ TEST_F(FbPacCtrl, SystemErrorBitWithoutANumberIsNotAllowed) {
     Cycle(1);
     EXPECT_TRUE(Error());
     EXPECT_EQ(ErrorId(), kErrNotAllowed);
+    EXPECT_EQ(ctrl_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_LIBRARY);
+    Release();
+    Cycle(1);
+    EXPECT_EQ(ctrl_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE) << "clears with Error";
 }
 
 TEST_F(FbPacCtrl, SystemErrorDuringStopInAutomaticIsTheError) {

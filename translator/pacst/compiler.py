@@ -320,6 +320,11 @@ class Compiler:
             if is_constant:
                 constant_block = block
             self._var_block(pou, block)
+            if kind == "function" and pou.ret.is_struct and \
+                    self._SECTIONS.get(_cls(block)) in ("output", "inout"):
+                raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
+                                      "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
+                                      "return the struct alone or use a FUNCTION_BLOCK")
         if kind == "fb":
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
