@@ -260,6 +260,65 @@ TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
     EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
 }
 
+// Waiting for the interface (another command pending) is waiting for the controller too: status 0 there is a
+// restart or a lost link as well, and ends the wait at once instead of after Timeout.
+TEST_F(FbPacCmd, ControllerRestartWhileWaitingForTheInterfaceIsAnError) {
+    fromPac_ = Reply(true, false, false);  // SEND 0 in the module, RECEIVE 1: another command is pending
+    Request(0x1906, 1, 0);
+    Cycle(2);
+    ASSERT_TRUE(Busy());
+    fromPac_ = Reply(false, false, false, 0, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
+    EXPECT_FALSE(SendFlag()) << "nothing was sent";
+}
+
+// The parked module follows RECEIVE whichever value the controller last showed: here a reply with status 0
+// that still carries RECEIVE 1 (the link, not the controller, is gone).
+TEST_F(FbPacCmd, ParkedModuleTakesASetReceiveFlagToo) {
+    Cycle(1);
+    ASSERT_FALSE(SendFlag());
+    fromPac_ = Reply(true, false, false, 0, 0);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "SEND := RECEIVE = 1, harmless 190B";
+    fromPac_ = Reply(true, false, true);
+    Request(0x1906, 2, 0);
+    Cycle(1);
+    EXPECT_FALSE(SendFlag()) << "the next command is one clean toggle, from 1 to 0";
+}
+
+// A long command refused after its acknowledgement (the move cannot be carried out): KF with the number.
+TEST_F(FbPacCmd, CommandErrorAfterTheAcknowledgementOfALongCommand) {
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(1);
+    ASSERT_TRUE(Busy());
+    ASSERT_TRUE(cmd_->ACKNOWLEDGED.value);
+    fromPac_ = Reply(true, true, false, 64, 31, 0x40400000);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, 64);
+    EXPECT_EQ(cmd_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_COMMAND);
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x40400000u) << "where the move stopped";
+}
+
+// EndTimeout T#0S: a long command waits for END OF PROCESSING without limit (FB_PAC_Cmd.md).
+TEST_F(FbPacCmd, EndTimeoutZeroWaitsWithoutLimit) {
+    cmd_->ENDTIMEOUT.value = TIME{0, 0};
+    cmd_->TIMEOUT.value = TIME{0, 5'000'000};
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(200);
+    EXPECT_TRUE(Busy()) << "200 scans after the acknowledgement, 40 times the Timeout";
+    EXPECT_FALSE(Error());
+    fromPac_ = Reply(true, false, true, 0, 31, 0x41200000);
+    Cycle(1);
+    EXPECT_TRUE(Done());
+}
+
 TEST_F(FbPacCmd, ControllerNotReadyRefusesTheCommandAndSendsNothing) {
     fromPac_ = Reply(false, false, false, 0, 0);
     Cycle(1);
