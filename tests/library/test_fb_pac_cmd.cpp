@@ -45,13 +45,15 @@ class FbPacCmd : public pac::ScanTest {
 protected:
     FbPacCmd() {
         fromPac_ = Reply(false, false, true);
+        // A PLC program: the module into the channel, FB_PAC_CmdInterface, the command FB, the module out.
         task_.AddProgram([this] {
-            for (int i = 0; i < 8; ++i) {
-                cmd_->FROMPAC.value.table[i] = fromPac_[i];
-                cmd_->TOPAC.value.table[i] = toPac_[i];
-            }
+            ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
+            for (int i = 0; i < 8; ++i) channel.FROMPAC.table[i] = fromPac_[i];
+            interface_();
+            cmd_->CHANNEL.value = channel;
             cmd_();
-            for (int i = 0; i < 8; ++i) toPac_[i] = cmd_->TOPAC.value.table[i];
+            channel = cmd_->CHANNEL.value;
+            for (int i = 0; i < 8; ++i) toPac_[i] = channel.TOPAC.table[i];
             checker_.Check(task_.ScanCount(), cmd_, CommandBusyBoundOf(cmd_, kDefaultCycleTime));
         });
     }
@@ -68,6 +70,7 @@ protected:
     bool Busy() const { return OutputsOf(cmd_).busy; }
     bool Error() const { return OutputsOf(cmd_).error; }
 
+    pac::FbInstance<FB_PAC_CMDINTERFACE> interface_ = PAC_FB(FB_PAC_CMDINTERFACE);
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     PlcOpenChecker checker_{"FB_PAC_Cmd"};
     Image fromPac_{};
@@ -194,22 +197,26 @@ TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
     EXPECT_EQ(toPac_[5], 1);
 }
 
-TEST_F(FbPacCmd, AfterPlcRestartWaitsUntilTheControllerHasAcknowledgedTheModule) {
+// A restarted PLC's module shows SEND = 0 while the controller last acknowledged SEND = 1. No FB owns a
+// command, so FB_PAC_CmdInterface brings the module back in step without a command: first the harmless
+// 190B with the SEND flag it has, then SEND := RECEIVE over it. Nothing but that read can execute, and
+// the queued command then goes with exactly one toggle.
+TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
     fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
-    Cycle(1);                             // ... and the restarted PLC's module shows SEND = 0
-    EXPECT_FALSE(SendFlag()) << "idle, the FB starts nothing";
     Request(0x1906, 1, 0);
-    Cycle(2);
-    EXPECT_TRUE(Busy());
-    EXPECT_FALSE(SendFlag()) << "no toggle while RECEIVE and SEND disagree";
-    EXPECT_EQ(toPac_[7], 0x0B) << "the module still carries the harmless 190B";
-    fromPac_ = Reply(false, false, true);  // the controller took the module over
     Cycle(1);
-    EXPECT_TRUE(SendFlag()) << "exactly one toggle, in the first scan that shows them equal";
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06}));
-    fromPac_ = Reply(true, false, true, 0, 1, 5);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked first, the SEND flag unchanged";
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "then SEND follows RECEIVE: still only 190B";
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "one toggle: the queued command";
+    fromPac_ = Reply(false, false, true, 0, 1, 5);
     Cycle(1);
     EXPECT_TRUE(Done());
+    EXPECT_EQ(cmd_->ACKDATA.value, 5u);
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
 }
 
 TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
@@ -230,16 +237,37 @@ TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
     EXPECT_TRUE(SendFlag()) << "the next command is one clean toggle";
 }
 
-TEST_F(FbPacCmd, InterfaceThatNeverFreesIsAnErrorAfterTimeout) {
+// A command still processing (RECEIVE = SEND, END OF PROCESSING 0, a code that acknowledges before its
+// end) holds the interface: a new command waits its Timeout and ends 16#8006, never sent.
+TEST_F(FbPacCmd, InterfaceThatNeverFreesIsAnErrorAfterTimeoutNeverSent) {
     cmd_->TIMEOUT.value = TIME{0, 5'000'000};
-    fromPac_ = Reply(true, false, false);  // SEND 0 in the module, RECEIVE 1: another command is pending
-    Request(0x1906, 1, 0);
-    Cycle(5);
-    EXPECT_TRUE(Busy());
+    Request(0x0A87, 1, 0x41200000);
     Cycle(1);
-    EXPECT_TRUE(Error());
-    EXPECT_EQ(cmd_->ERRORID.value, kErrInterfaceBusy);
-    EXPECT_FALSE(SendFlag());
+    fromPac_ = Reply(true, false, false, 0, 31);  // the move is acknowledged and runs
+    Cycle(1);
+    ASSERT_TRUE(Busy());
+    ASSERT_TRUE(cmd_->ACKNOWLEDGED.value);
+    // The program's next command on the same interface, while the move runs.
+    pac::FbInstance<FB_PAC_CMD> read = PAC_FB(FB_PAC_CMD);
+    read->TIMEOUT.value = TIME{0, 5'000'000};
+    read->CODE.value = 0x1906;
+    read->PARAM.value = 2;
+    read->EXECUTE.value = TRUE;
+    ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
+    int scans = 0;
+    while (!read->ERROR.value && !read->DONE.value && scans < 20) {
+        ++scans;
+        Cycle(1);
+        read->CHANNEL.value = channel;
+        read();
+        channel = read->CHANNEL.value;
+        for (int i = 0; i < 8; ++i) toPac_[i] = channel.TOPAC.table[i];
+        EXPECT_EQ(toPac_[7], 0x87) << "scan " << scans << ": the move's module stays, nothing else is sent";
+    }
+    EXPECT_TRUE(read->ERROR.value);
+    EXPECT_EQ(read->ERRORID.value, kErrInterfaceBusy);
+    EXPECT_EQ(scans, 6) << "Timeout 5 ms at 1 ms scans, counted from the edge";
+    EXPECT_TRUE(Busy()) << "the move goes on";
 }
 
 TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
@@ -260,18 +288,19 @@ TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
     EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
 }
 
-// Waiting for the interface (another command pending) is waiting for the controller too: status 0 there is a
-// restart or a lost link as well, and ends the wait at once instead of after Timeout.
+// Waiting for the interface is waiting for the controller too: status 0 there (a restart, a lost link) ends the
+// wait at once instead of after Timeout, as "not ready": the command never went out.
 TEST_F(FbPacCmd, ControllerRestartWhileWaitingForTheInterfaceIsAnError) {
-    fromPac_ = Reply(true, false, false);  // SEND 0 in the module, RECEIVE 1: another command is pending
+    fromPac_ = Reply(true, false, false);  // RECEIVE 1, the module's SEND 0: not free until it is in step again
     Request(0x1906, 1, 0);
     Cycle(2);
     ASSERT_TRUE(Busy());
+    ASSERT_FALSE(cmd_->ACKNOWLEDGED.value);
     fromPac_ = Reply(false, false, false, 0, 0);
     Cycle(1);
     EXPECT_TRUE(Error());
-    EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
-    EXPECT_FALSE(SendFlag()) << "nothing was sent";
+    EXPECT_EQ(cmd_->ERRORID.value, kErrNotReady);
+    EXPECT_EQ((toPac_[6] & 0x7F) << 8 | toPac_[7], 0x190B) << "nothing was sent: the module stays parked";
 }
 
 // The parked module follows RECEIVE whichever value the controller last showed: here a reply with status 0
@@ -304,19 +333,22 @@ TEST_F(FbPacCmd, CommandErrorAfterTheAcknowledgementOfALongCommand) {
     EXPECT_EQ(cmd_->ACKDATA.value, 0x40400000u) << "where the move stopped";
 }
 
-// EndTimeout T#0S: a long command waits for END OF PROCESSING without limit (FB_PAC_Cmd.md).
-TEST_F(FbPacCmd, EndTimeoutZeroWaitsWithoutLimit) {
+// EndTimeout T#0S means the pin's default, 60 s (docs/fb/FB_PAC_Cmd.md): neither no wait nor an unbounded one.
+TEST_F(FbPacCmd, EndTimeoutZeroMeansTheDefaultOfSixtySeconds) {
+    const std::uint32_t kErrEndTimeout = kGvl["PAC_LIB_ERR_END_TIMEOUT"];
     cmd_->ENDTIMEOUT.value = TIME{0, 0};
     cmd_->TIMEOUT.value = TIME{0, 5'000'000};
     Request(0x0A87, 1, 0x41200000);
     Cycle(1);
     fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
-    Cycle(200);
-    EXPECT_TRUE(Busy()) << "200 scans after the acknowledgement, 40 times the Timeout";
-    EXPECT_FALSE(Error());
-    fromPac_ = Reply(true, false, true, 0, 31, 0x41200000);
     Cycle(1);
-    EXPECT_TRUE(Done());
+    ASSERT_TRUE(cmd_->ACKNOWLEDGED.value);
+    Cycle(59'990);  // 1 ms scans: just under 60 s after the acknowledgement
+    EXPECT_TRUE(Busy()) << "still waiting for END OF PROCESSING";
+    EXPECT_FALSE(Error());
+    Cycle(20);
+    EXPECT_TRUE(Error()) << "60 s after the acknowledgement";
+    EXPECT_EQ(cmd_->ERRORID.value, kErrEndTimeout);
 }
 
 TEST_F(FbPacCmd, ControllerNotReadyRefusesTheCommandAndSendsNothing) {
@@ -362,22 +394,24 @@ class TwoFbPacCmd : public pac::ScanTest {
 protected:
     TwoFbPacCmd() {
         task_.AddProgram([this] {
+            ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
+            for (int i = 0; i < 8; ++i) channel.FROMPAC.table[i] = fromPac_[i];
+            interface_();
             Call(first_);
             Call(second_);
+            for (int i = 0; i < 8; ++i) toPac_[i] = channel.TOPAC.table[i];
             firstRules_.Check(task_.ScanCount(), first_, CommandBusyBoundOf(first_, kDefaultCycleTime));
             secondRules_.Check(task_.ScanCount(), second_, CommandBusyBoundOf(second_, kDefaultCycleTime));
         });
     }
 
     void Call(pac::FbInstance<FB_PAC_CMD>& fb) {
-        for (int i = 0; i < 8; ++i) {
-            fb->FROMPAC.value.table[i] = fromPac_[i];
-            fb->TOPAC.value.table[i] = toPac_[i];
-        }
+        fb->CHANNEL.value = interface_->CHANNEL.value;
         fb();
-        for (int i = 0; i < 8; ++i) toPac_[i] = fb->TOPAC.value.table[i];
+        interface_->CHANNEL.value = fb->CHANNEL.value;
     }
 
+    pac::FbInstance<FB_PAC_CMDINTERFACE> interface_ = PAC_FB(FB_PAC_CMDINTERFACE);
     pac::FbInstance<FB_PAC_CMD> first_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CMD> second_ = PAC_FB(FB_PAC_CMD);
     PlcOpenChecker firstRules_{"first FB_PAC_Cmd"};

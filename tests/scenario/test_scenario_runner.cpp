@@ -103,8 +103,10 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     EXPECT_EQ(run.report.Requests(), 2u);
     EXPECT_EQ(run.report.AxisJobs(), 5u);
     EXPECT_NE(out.find("Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met"), std::string::npos) << out;
-    // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4).
-    EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
+    // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4);
+    // the module is parked (190B, the SEND flag kept) in the scan that sees the reply.
+    EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 00 00 00 00 00 00 99 0B | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
     // R1 = 640.0 is 44 20 00 00 (NOTES.md), printed as a REAL because the step expects one.
     EXPECT_NE(out.find("| 44 20 00 00 00 01 A0 00 |"), std::string::npos) << out;
     EXPECT_NE(out.find("AckData 640.0 (16#44200000): as expected"), std::string::npos) << out;
@@ -275,7 +277,9 @@ TEST(ScenarioRunner, WaitsScanWholePlcCyclesAndPrintOnlyChanges) {
 
 TEST(ScenarioRunner, LinkFaultsActOnTheirDirection) {
     // ToPac zeroed: the PA-CONTROL sees an all-zero module (EMERGENCY STOP) and no command; the FB
-    // times out. Thawed, the module of the timed-out command arrives and is carried out late.
+    // times out (16#8001: sent, outcome unknown). FB_PAC_CmdInterface then parks the module and brings
+    // SEND back to RECEIVE, so when the link thaws the timed-out command is withdrawn, not carried out
+    // late: N5 stays 0.
     const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0}, "steps": [
         {"wait_ms": 20},
         {"fault": "zero_link", "link": "to_pac"},
@@ -283,7 +287,7 @@ TEST(ScenarioRunner, LinkFaultsActOnTheirDirection) {
          "expect": {"error": true, "error_id": "PAC_LIB_ERR_ACK_TIMEOUT"}},
         {"fault": "thaw_link", "link": "to_pac"},
         {"wait_ms": 30},
-        {"command": "PAC_CMD_GET_INT_REG", "param": 5, "expect": {"done": true, "ack_data": 55}}]})"));
+        {"command": "PAC_CMD_GET_INT_REG", "param": 5, "expect": {"done": true, "ack_data": 0}}]})"));
     EXPECT_TRUE(run.report.Passed()) << run.timeline.str();
 }
 

@@ -88,6 +88,15 @@ public:
     const BusTiming& Timing() const { return timing_; }
     PacPlcBench& Bench() { return bench_; }
     pac::sim::PaControl& Controller() { return bench_.Controller(); }
+    // The CMD module of the newest command the controller recognised (its exchange log): what was sent,
+    // after the library has parked the module again.
+    pac::sim::Image8 LastCommandSeen() {
+        const auto& records = bench_.Controller().Log().Records();
+        for (auto it = records.rbegin(); it != records.rend(); ++it) {
+            if (it->newCommand) return it->toPac.Cmd();
+        }
+        return {};
+    }
     std::chrono::nanoseconds Now() const { return bench_.Now(); }
     std::chrono::nanoseconds EdgeTime() const { return edgeTime_; }
 

@@ -34,6 +34,28 @@ PacPlcBench::PacPlcBench(PlcBenchTiming timing, pac::sim::PaControlConfig config
     task_.AddProgram([this] { fromPac_ = bus_.ReadFromPac(clock_.Now()); });
 }
 
+pac::FbInstance<FB_PAC_CMDINTERFACE>& PacPlcBench::CmdInterface() {
+    if (!cmdInterface_) cmdInterface_ = std::make_unique<pac::FbInstance<FB_PAC_CMDINTERFACE>>(PAC_FB(FB_PAC_CMDINTERFACE));
+    return *cmdInterface_;
+}
+
+void PacPlcBench::RegisterCmdInterface() {
+    if (cmdInterfaceRegistered_) return;
+    RequireModule(pac::sim::ModuleLayout::kCmdOffset, 8);
+    cmdInterfaceRegistered_ = true;
+    task_.AddProgram([this] {
+        ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
+        for (std::size_t i = 0; i < 8; ++i) channel.FROMPAC.table[i] = fromPac_[pac::sim::ModuleLayout::kCmdOffset + i];
+        if (cmdInterfaceCalled_) CmdInterface()();
+        CopyChannelToModule();
+    });
+}
+
+void PacPlcBench::CopyChannelToModule() {
+    const ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
+    for (std::size_t i = 0; i < 8; ++i) toPac_[pac::sim::ModuleLayout::kCmdOffset + i] = channel.TOPAC.table[i];
+}
+
 void PacPlcBench::CallRaw8(std::size_t offset,
                            std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
     if (!program) throw std::invalid_argument("PacPlcBench::CallRaw8: empty program");

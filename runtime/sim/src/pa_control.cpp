@@ -84,6 +84,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
 
     if (!booted_) {
         if (now < bootEnd_) {
+            serial_.Discard(now);
             WriteReply(now, ProcessImage(layout_.Bytes()));
             record.fromPac = lastFromPac_;
             log_.Add(record);
@@ -119,6 +120,8 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         // the axes); they report all the same.
         ServeAxisModules(toPac, now);
     }
+    // COM1 needs no fieldbus: an RS232-only controller sees an all-zero image all the time.
+    serial_.Cycle(now, serialHost_);
 
     WriteReply(now, ComposeReply(now));
     record.fromPac = lastFromPac_;
@@ -170,6 +173,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
 
     protocol_.Reset();
     pending_ = PendingCommand{};
+    serial_.Reset();
     injectedError_.reset();
     communicationActive_ = false;
     emergencyStop_ = false;
@@ -208,6 +212,10 @@ void PaControl::Execute(const CommandFrame& command, std::chrono::nanoseconds no
     // A new command takes the CMD reply over; an earlier one still processing is no longer reported
     // (its axis carries on: 1910 / 190C show it).
     pending_ = PendingCommand{};
+    protocol_.Acknowledge(command.send, RunCommand(command, now, pending_));
+}
+
+CommandResult PaControl::RunCommand(const CommandFrame& command, std::chrono::nanoseconds now, PendingCommand& pending) {
     ++counters_.recognized;
     ++counters_.byCode[command.code];
     CommandResult result;
@@ -215,15 +223,20 @@ void PaControl::Execute(const CommandFrame& command, std::chrono::nanoseconds no
         result = CommandResult{0, *injectedError_, true};
         injectedError_.reset();
     } else {
-        result = executor_.Execute(command, now, pending_);
+        result = executor_.Execute(command, now, pending);
     }
     if (result.error == 0) {
         ++counters_.executed;
     } else {
         ++counters_.failed;
-        pending_ = PendingCommand{};
+        pending = PendingCommand{};
     }
-    protocol_.Acknowledge(command.send, result);
+    return result;
+}
+
+void PaControl::AttachSerial(SerialLine& line, SerialPortConfig config) {
+    serial_ = SerialPort(config);
+    serial_.Connect(line);
 }
 
 ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {

@@ -1,17 +1,22 @@
 // A PLC wired to a simulated PA-CONTROL: simulated clock, PLC task, bus and controller running at its
 // own cycle. Tests, benchmarks and the scenario program add their function blocks with Call(fb) (CMD
 // module), CallCtrl(fb) (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's
-// images in and out around the FB's body exactly as a PLC's I/O image would, so any number of command
-// FBs can share the one CMD interface; CallRaw8 adds a hand-written master program on an 8-byte
-// module. The bus carries the modules of `layout` (default: the CMD module alone).
+// images in and out around the FB's body exactly as a PLC's I/O image would. Command FBs share the CMD
+// interface through one ST_PAC_CmdChannel: before the first of them the bench calls an
+// FB_PAC_CmdInterface on it in every scan, as a PLC program must. CallRaw8 adds a hand-written master
+// program on an 8-byte module. The bus carries the modules of `layout` (default: the CMD module alone).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
+
+#include "POUS.h"
 
 #include "pac/fb_instance.hpp"
 #include "pac/plc_task.hpp"
@@ -39,11 +44,20 @@ public:
                          pac::sim::ModuleLayout layout = {});
 
     // Registers `fb` as a program on the CMD interface: inputs set by the caller before a scan are
-    // that scan's inputs. Call in the order the FBs should run; then call Start().
+    // that scan's inputs. Call in the order the FBs should run; then call Start(). A command FB (one with
+    // a Channel) runs on the bench's channel, after its FB_PAC_CmdInterface; an FB with ToPac/FromPac
+    // (a hand-written master) on the module itself.
     template <class Fb>
     void Call(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
-        CallOnModule<8>(fb, pac::sim::ModuleLayout::kCmdOffset, std::move(before));
+        CallOnCmd(fb, std::move(before), 0);
     }
+
+    // The FB_PAC_CmdInterface the command FBs' channel runs on (registered with the first of them).
+    pac::FbInstance<FB_PAC_CMDINTERFACE>& CmdInterface();
+    // The channel as the last program of the scan left it.
+    const ST_PAC_CMDCHANNEL& Channel() { return CmdInterface()->CHANNEL.value; }
+    // Whether the bench calls FB_PAC_CmdInterface in a scan (a test of what happens without it).
+    void SetCmdInterfaceCalled(bool called) { cmdInterfaceCalled_ = called; }
     // The CTRL module (the layout must have it).
     template <class Fb>
     void CallCtrl(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
@@ -85,6 +99,26 @@ public:
     const pac::sim::ModuleLayout& Layout() const { return bus_.Layout(); }
 
 private:
+    // A command FB: the channel in, the body, the channel out; the module follows the channel.
+    template <class Fb>
+    auto CallOnCmd(pac::FbInstance<Fb>& fb, std::function<void()> before, int) -> decltype(fb->CHANNEL, void()) {
+        RegisterCmdInterface();
+        task_.AddProgram([this, &fb, before] {
+            if (before) before();
+            ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
+            fb->CHANNEL.value = channel;
+            fb();
+            channel = fb->CHANNEL.value;
+            CopyChannelToModule();
+        });
+    }
+    template <class Fb>
+    void CallOnCmd(pac::FbInstance<Fb>& fb, std::function<void()> before, long) {
+        CallOnModule<8>(fb, pac::sim::ModuleLayout::kCmdOffset, std::move(before));
+    }
+    void RegisterCmdInterface();
+    void CopyChannelToModule();
+
     template <std::size_t N, class Fb>
     void CallOnModule(pac::FbInstance<Fb>& fb, std::size_t offset, std::function<void()> before) {
         RequireModule(offset, N);
@@ -110,6 +144,9 @@ private:
     pac::sim::PacRunner runner_;
     pac::sim::ProcessImage toPac_;
     pac::sim::ProcessImage fromPac_;
+    std::unique_ptr<pac::FbInstance<FB_PAC_CMDINTERFACE>> cmdInterface_;
+    bool cmdInterfaceRegistered_ = false;
+    bool cmdInterfaceCalled_ = true;
 };
 
 }  // namespace pac

@@ -26,6 +26,8 @@
 #include "pac/sim/image8.hpp"
 #include "pac/sim/mode_machine.hpp"
 #include "pac/sim/process_image.hpp"
+#include "pac/sim/serial_line.hpp"
+#include "pac/sim/serial_port.hpp"
 
 namespace pac::sim {
 
@@ -70,6 +72,8 @@ public:
     // Powered on at time 0: the boot ends at config.bootTime. Bad times: std::invalid_argument.
     // The modules served are the bus's layout (Bus::Layout()).
     explicit PaControl(Bus& bus, PaControlConfig config = {});
+    PaControl(const PaControl&) = delete;  // its serial port's host refers to it
+    PaControl& operator=(const PaControl&) = delete;
 
     // One controller cycle at `now` (non-decreasing, std::invalid_argument otherwise).
     void Cycle(std::chrono::nanoseconds now);
@@ -113,6 +117,12 @@ public:
     // The axis module of axis `axis` (1..Layout().axisModules; std::out_of_range otherwise).
     AxisModule& Module(int axis);
     const AxisModule& Module(int axis) const;
+    // COM1 as an online command port (chapter 3, docs/sim_serial.md) on `line`, whose to-PAC wire it reads and
+    // whose from-PAC wire it answers on; commands go to the same processor as those of the CMD interface.
+    // The line must outlive the controller. Attaching again replaces the port.
+    void AttachSerial(SerialLine& line, SerialPortConfig config = {});
+    const SerialPort& Serial() const { return serial_; }
+
     // G123 (2.7.3.10): the input the axis module of `axis` watches from now on; back to 1 when ONLINE starts.
     void SetConditionInput(int axis, int input) { Module(axis).SetConditionInput(input); }
 
@@ -129,6 +139,26 @@ public:
     const PaControlConfig& Config() const { return config_; }
 
 private:
+    // The serial port's way to the command processor.
+    class SerialHost final : public CommandHost {
+    public:
+        explicit SerialHost(PaControl& pac) : pac_(pac) {}
+        CommandResult RunCommand(const CommandFrame& command, std::chrono::nanoseconds now,
+                                 PendingCommand& pending) override {
+            return pac_.RunCommand(command, now, pending);
+        }
+        CommandResult Progress(const PendingCommand& pending, std::chrono::nanoseconds now) override {
+            return pac_.executor_.Poll(pending, now);
+        }
+        std::uint8_t Status() const override { return pac_.state_.operatingStatus; }
+        std::uint16_t SystemError() const override { return pac_.state_.systemError; }
+
+    private:
+        PaControl& pac_;
+    };
+
+    // Carries a command out for either interface: counters, the injected error, the executor.
+    CommandResult RunCommand(const CommandFrame& command, std::chrono::nanoseconds now, PendingCommand& pending);
     void CheckTime(std::chrono::nanoseconds now, const char* what);
     void Boot();
     void EmergencyStop(std::chrono::nanoseconds now);
@@ -151,6 +181,8 @@ private:
     CommandCounters counters_;
     std::optional<std::uint16_t> injectedError_;
     std::vector<AxisModule> modules_;  // module k serves axis k
+    SerialPort serial_;
+    SerialHost serialHost_{*this};
 
     bool booted_ = false;
     std::chrono::nanoseconds bootEnd_{0};

@@ -1,0 +1,378 @@
+// FB_PAC_Rs232Cmd against hand-written bytes, scan by scan: the command frames of manual 3.4 byte for byte
+// (with the errata of NOTES.md and docs/open_points.md), the manual's acknowledgements read back, the CHECKs
+// it takes, a reply split over many scans, noise before STX, cut-off and damaged replies, the rules for
+// sending again or polling, and the PLCopen rules on every scan.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/scan_test.hpp"
+#include "pac/serial_plc_bench.hpp"
+#include "pac/st_program.hpp"
+#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
+#include "real_bits.hpp"
+
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+using pac::test::PlcOpenChecker;
+
+const pac::test::GvlConstants kGvl;
+
+Bytes Hex(const std::string& text) {
+    Bytes bytes;
+    std::istringstream in(text);
+    std::string token;
+    while (in >> token) bytes.push_back(static_cast<std::uint8_t>(std::stoul(token, nullptr, 16)));
+    return bytes;
+}
+
+std::string HexOf(const Bytes& bytes) {
+    std::string out;
+    char buffer[4];
+    for (std::uint8_t b : bytes) {
+        std::snprintf(buffer, sizeof buffer, "%02X", b);
+        if (!out.empty()) out += ' ';
+        out += buffer;
+    }
+    return out;
+}
+
+// SOH STX text ETX check EOT with the XOR of the text and ETX.
+Bytes Frame(const std::string& text, int check = -1) {
+    unsigned sum = 3;
+    for (char c : text) sum ^= static_cast<unsigned char>(c);
+    Bytes bytes{1, 2};
+    bytes.insert(bytes.end(), text.begin(), text.end());
+    bytes.push_back(3);
+    for (char c : std::to_string(check < 0 ? static_cast<int>(sum) : check)) bytes.push_back(static_cast<std::uint8_t>(c));
+    bytes.push_back(4);
+    return bytes;
+}
+
+// One FB_PAC_Rs232Cmd whose receive buffer the test fills and whose transmit buffer it reads, scan by scan,
+// with the PLCopen checker after every scan.
+class Rs232Cmd : public pac::ScanTest {
+protected:
+    Rs232Cmd() : checker_("FB_PAC_Rs232Cmd") {
+        task_.AddProgram([this] {
+            while (!incoming_.empty() && perScan_-- != 0) {
+                pac::com_ring::Put(fb_->RXBUFFER.value, incoming_.front());
+                incoming_.pop_front();
+            }
+            perScan_ = bytesPerScan_;
+            fb_();
+            for (std::uint8_t b : pac::com_ring::TakeAll(fb_->TXBUFFER.value)) sent_.push_back(b);
+            checker_.Check(task_.ScanCount(), fb_);
+        });
+    }
+    ~Rs232Cmd() override { EXPECT_EQ(checker_.Violations(), 0); }
+
+    void Start(std::uint16_t code, std::uint16_t param, std::uint32_t data = 0) {
+        fb_->CODE.value = code;
+        fb_->PARAM.value = param;
+        fb_->DATA.value = data;
+        fb_->EXECUTE.value = TRUE;
+        Cycle(1);
+    }
+    // The bytes sent since the last call.
+    Bytes Sent() {
+        Bytes out;
+        out.swap(sent_);
+        return out;
+    }
+    void Reply(const Bytes& bytes) { incoming_.insert(incoming_.end(), bytes.begin(), bytes.end()); }
+    bool Final() const { return pac::test::IsFinal(fb_); }
+    void SetBytesPerScan(int n) { bytesPerScan_ = perScan_ = n; }
+
+    pac::FbInstance<FB_PAC_RS232CMD> fb_ = PAC_FB(FB_PAC_RS232CMD);
+    PlcOpenChecker checker_;
+    std::deque<std::uint8_t> incoming_;
+    Bytes sent_;
+    int bytesPerScan_ = -1;  // -1: all at once
+    int perScan_ = -1;
+};
+
+// ---- the frames of 3.4 ----
+
+TEST_F(Rs232Cmd, ManualFramesWhoseCheckIsTheXorOfTheText) {
+    fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT;
+    Start(0x1900, 5);  // 3.4.2, input 5, as printed
+    EXPECT_EQ(HexOf(Sent()), "01 02 31 39 30 30 3B 35 3B 30 3B 30 03 36 04");
+    Reply(Frame("0;1;1;0;0;1"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    fb_->EXECUTE.value = FALSE;
+    Cycle(1);
+    Start(0x0906, 3, 333);  // 3.4.2, N3 := 333, as printed
+    EXPECT_EQ(HexOf(Sent()), "01 02 30 39 30 36 3B 33 3B 30 3B 33 33 33 03 34 04");
+}
+
+TEST_F(Rs232Cmd, ManualFramesWithTheErrataApplied) {
+    struct Case {
+        std::uint16_t code, param;
+        std::uint32_t data;
+        const char* text;  // the frame's text, corrected
+    };
+    const Case cases[] = {
+        {0x0906, 5, 12345, "0906;5;0;12345"},                              // 3.4.1 (its CHECK 7 follows no rule)
+        {0x1906, 2, 0, "1906;2;0;0"},                                      // printed 1960
+        {0x1907, 1, 0, "1907;1;1;0"},                                      // printed 1971;3;0
+        {0x0603, 0, 0, "0603;0;0;0"},                                      // printed 0A03
+        {0x0A87, 2, pac::test::BitsOf(5552.0F), "0A87;2;1;5552.0"},      // as printed but for the CHECK
+    };
+    for (const Case& c : cases) {
+        Start(c.code, c.param, c.data);
+        EXPECT_EQ(HexOf(Sent()), HexOf(Frame(c.text))) << c.text << ": the XOR with ETX by default";
+        fb_->EXECUTE.value = FALSE;
+        Reply(Frame("0;1;1;0;0;0"));
+        Cycle(3);
+    }
+}
+
+TEST_F(Rs232Cmd, NumbersInTheirAsciiForm) {
+    struct Case {
+        std::uint16_t code, param;
+        std::uint32_t data;
+        const char* text;
+    };
+    const Case cases[] = {
+        {0x0906, 65535, 0x80000000u, "0906;65535;0;-2147483648"},
+        {0x0907, 1, pac::test::BitsOf(-0.5F), "0907;1;1;-0.5"},
+        {0x0907, 1, pac::test::BitsOf(12.345F), "0907;1;1;12.345"},
+        {0x0907, 1, pac::test::BitsOf(0.0001F), "0907;1;1;0.0001"},
+        {0x0907, 1, pac::test::BitsOf(640.0F), "0907;1;1;640.0"},
+        {0x0800, 0x0106, pac::test::BitsOf(10000.0F), "0800;262;1;10000.0"},
+        {0x0903, 2, 0xFFFF, "0903;2;0;65535"},
+        {0x190C, 1, 0, "190C;1;1;0"},
+    };
+    for (const Case& c : cases) {
+        Start(c.code, c.param, c.data);
+        EXPECT_EQ(HexOf(Sent()), HexOf(Frame(c.text))) << c.text;
+        fb_->EXECUTE.value = FALSE;
+        Reply(Frame("0;1;1;0;0;0"));
+        Cycle(3);
+    }
+}
+
+TEST_F(Rs232Cmd, DataWithoutAnAsciiFormIsRefusedUnsent) {
+    for (std::uint32_t bits : {0x7FC00000u, 0x7F800000u, pac::test::BitsOf(1.0E9F)}) {
+        Start(0x0907, 1, bits);
+        EXPECT_TRUE(fb_->ERROR.value);
+        EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_SERIAL_DATA"]);
+        EXPECT_TRUE(Sent().empty());
+        fb_->EXECUTE.value = FALSE;
+        Cycle(1);
+    }
+    Start(0x8906, 1, 0);
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_INVALID_CODE"]);
+}
+
+// ---- the acknowledgements of 3.4, as printed ----
+
+TEST_F(Rs232Cmd, ReadsTheManualsAcknowledgements) {
+    struct Case {
+        const char* bytes;
+        std::uint32_t data;
+        bool real;
+        std::uint8_t status;
+    };
+    const Case cases[] = {
+        {"01 02 30 3B 31 3B 31 3B 30 3B 30 3B 31 32 33 34 35 03 35 37 04", 12345, false, 1},
+        {"01 02 30 3B 31 3B 31 3B 30 3B 30 3B 32 32 32 03 35 38 04", 222, false, 1},
+        {"01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04", 0x44200000, true, 1},
+        // 0603: its CHECK 8 is the XOR without ETX; taken too.
+        {"01 02 30 3B 31 3B 33 31 3B 30 3B 30 3B 30 03 38 04", 0, false, 31},
+        {"01 02 30 3B 31 3B 33 31 3B 30 3B 31 3B 35 35 35 32 2E 30 30 30 03 33 35 04", 0x45AD8000, true, 31},
+    };
+    for (const Case& c : cases) {
+        Start(0x1906, 1);
+        Sent();
+        Reply(Hex(c.bytes));
+        Cycle(1);
+        EXPECT_TRUE(fb_->DONE.value) << c.bytes;
+        EXPECT_EQ(fb_->ACKDATA.value, c.data) << c.bytes;
+        EXPECT_EQ(fb_->ACKISREAL.value != 0, c.real) << c.bytes;
+        EXPECT_EQ(fb_->OPSTATUS.value, c.status) << c.bytes;
+        fb_->EXECUTE.value = FALSE;
+        Cycle(1);
+    }
+}
+
+TEST_F(Rs232Cmd, FollowsALongCommandWithEotPollsUntilBe1) {  // 3.4.3
+    fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
+    Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
+    Sent();
+    Reply(Hex("01 02 30 3B 30 3B 33 31 3B 30 3B 31 3B 31 32 35 35 2E 30 30 30 03 33 38 04"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->BUSY.value && fb_->ACKNOWLEDGED.value);
+    EXPECT_EQ(fb_->ACKDATA.value, pac::test::BitsOf(1255.0F));
+    Cycle(4);
+    EXPECT_TRUE(Sent().empty()) << "no poll before PollInterval";
+    Cycle(1);
+    EXPECT_EQ(HexOf(Sent()), "04");
+    Reply(Hex("01 02 30 3B 30 3B 33 31 3B 30 3B 31 3B 31 35 31 36 2E 39 35 30 03 34 32 04"));
+    Cycle(1);
+    EXPECT_EQ(fb_->ACKDATA.value, pac::test::BitsOf(1516.95F));
+    Cycle(5);
+    EXPECT_EQ(HexOf(Sent()), "04");
+    Reply(Hex("01 02 30 3B 31 3B 33 31 3B 30 3B 31 3B 35 35 35 32 2E 30 30 30 03 33 35 04"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->ACKDATA.value, pac::test::BitsOf(5552.0F));
+}
+
+TEST_F(Rs232Cmd, AReplySplitOverManyScansAfterNoise) {
+    SetBytesPerScan(1);
+    Start(0x1906, 2);
+    Sent();
+    Reply(Hex("7F 20 33 03 04"));  // noise, including control symbols, before the frame
+    Reply(Frame("0;1;1;0;0;222"));
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 50, "final output"));
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->ACKDATA.value, 222u);
+    EXPECT_EQ(fb_->REPEATS.value, 0);
+}
+
+TEST_F(Rs232Cmd, ACommandErrorEndsWithItsNumber) {
+    Start(0x1906, 2000);
+    Sent();
+    Reply(Frame("38;0;1;0;0;0"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, 38u);
+    EXPECT_TRUE(fb_->ACKNOWLEDGED.value);
+}
+
+TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheNextRuleInAuto) {
+    Start(0x0906, 5, 12345);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 3)));
+    Reply(Frame("16;0;1;0;0;0"));
+    Cycle(1);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 0))) << "XOR of the text (0) in the scan after";
+    Reply(Frame("16;0;1;0;0;0"));
+    Cycle(1);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 0))) << "then \"0\"";
+    Reply(Frame("0;1;1;0;0;12345"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->REPEATS.value, 2);
+    fb_->EXECUTE.value = FALSE;
+    Cycle(1);
+    Start(0x1906, 5);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", 0))) << "the rule that worked is kept";
+}
+
+TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
+    fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+    fb_->RETRIES.value = 2;
+    Start(0x1906, 5);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0"))) << attempt;
+        Reply(Frame("16;0;1;0;0;0"));
+        Cycle(1);
+    }
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, 16u);
+    EXPECT_EQ(fb_->REPEATS.value, 2);
+}
+
+// A damaged reply: a read is sent again, a command that must not run twice is asked for its
+// acknowledgement with EOT; either only once the line has been quiet for QuietTime.
+TEST_F(Rs232Cmd, ADamagedReplyToAReadSendsItAgainOnceTheLineIsQuiet) {
+    Start(0x1906, 2);
+    Sent();
+    Bytes damaged = Frame("0;1;1;0;0;222");
+    damaged[13] = '3';  // the CHECK no longer fits
+    Reply(damaged);
+    Cycle(1);
+    EXPECT_TRUE(fb_->BUSY.value);
+    ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 100, "the frame again"));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2;0;0")));
+    EXPECT_GE(task_.ScanCount(), 2 + 50) << "QuietTime T#50MS after the last byte";
+    Reply(Frame("0;1;1;0;0;222"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->REPEATS.value, 1);
+}
+
+TEST_F(Rs232Cmd, AFrameCutOffByTheNextIsDroppedForIt) {
+    Start(0x0A89, 1, pac::test::BitsOf(10.0F));
+    Sent();
+    Bytes cut = Frame("0;0;31;0;1;0.000");
+    cut.resize(8);
+    Reply(cut);
+    Reply(Frame("0;0;31;0;1;2.500"));  // a new STX cuts it off; the whole frame after it is the reply
+    Cycle(1);
+    EXPECT_TRUE(fb_->ACKNOWLEDGED.value) << "the first whole frame counts";
+    EXPECT_EQ(fb_->ACKDATA.value, pac::test::BitsOf(2.5F));
+    EXPECT_EQ(fb_->REPEATS.value, 0);
+}
+
+TEST_F(Rs232Cmd, ALostReplyToARelativeMoveIsAskedForWithEot) {
+    Start(0x0A89, 1, pac::test::BitsOf(10.0F));
+    Sent();
+    Reply(Hex("01 02 30 3B 30 3B"));  // then nothing
+    ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 2000, "a request again"));
+    EXPECT_EQ(HexOf(Sent()), "04") << "an EOT poll, not the move again";
+    Reply(Frame("0;1;31;0;1;10.000"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+}
+
+TEST_F(Rs232Cmd, ASilentControllerEndsInTimeoutAfterTheRetries) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
+    fb_->RETRIES.value = 2;
+    Start(0x1906, 2);
+    int frames = 0;
+    ASSERT_TRUE(RunUntil([&] {
+        for (std::uint8_t b : Sent()) frames += b == 0x01 ? 1 : 0;
+        return Final();
+    }, 2000, "final output"));
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    EXPECT_EQ(frames, 3) << "the frame and two retries";
+    // Each attempt waits Timeout for its reply and sends the next one in the scan after; the silent line
+    // has been quiet for QuietTime long before.
+    EXPECT_EQ(task_.ScanCount(), 3 * (100 + 1));
+}
+
+TEST_F(Rs232Cmd, NoiseThatNeverStopsEndsTheCommand) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
+    Start(0x1906, 2);
+    Sent();
+    SetBytesPerScan(1);
+    Reply(Bytes(2000, 0x55));
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 1000, "final output"));
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_SERIAL_REPLY"]);
+}
+
+TEST_F(Rs232Cmd, AFullTransmitBufferEndsInItsError) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    fb_->TXBUFFER.value.BLOCKED = TRUE;  // a driver that never lets go of the buffer
+    Start(0x1906, 2);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 100, "final output"));
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_SERIAL_BUFFER"]);
+}
+
+TEST_F(Rs232Cmd, StaleBytesNeverPassForTheReply) {
+    Reply(Frame("0;1;1;0;0;999"));  // a reply nobody waits for
+    Cycle(2);
+    Start(0x1906, 2);
+    Cycle(5);
+    EXPECT_TRUE(fb_->BUSY.value);
+    Reply(Frame("0;1;1;0;0;222"));
+    Cycle(1);
+    EXPECT_EQ(fb_->ACKDATA.value, 222u);
+}
+
+}  // namespace

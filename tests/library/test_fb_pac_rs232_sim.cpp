@@ -1,0 +1,324 @@
+// FB_PAC_Rs232Cmd against the simulated PA-CONTROL's RS232 port, scan by scan, through a PLC serial driver
+// that moves the bytes between the FB's ring buffers and the line: baud rates of 1200 to 38400 with PLC
+// cycles of 1 to 10 ms, the exact scan of Done from the line's timing, long commands with EOT polls, every
+// reading of chapter 3 the simulator can be set to, and a faulty line (dropped, corrupted, delayed bytes,
+// noise) recovered. The PLCopen checker runs on every scan.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/serial_plc_bench.hpp"
+#include "pac/sim/rs232_frame.hpp"
+#include "pac/st_program.hpp"
+#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
+#include "real_bits.hpp"
+#include "run_to_final.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using std::chrono::nanoseconds;
+using pac::test::BitsOf;
+using pac::test::FinalOutcome;
+
+const pac::test::GvlConstants kGvl;
+
+struct SerialTiming {
+    int baud = 9600;
+    int plcMs = 1;
+    int pacMs = 10;
+};
+
+std::ostream& operator<<(std::ostream& out, const SerialTiming& t) {
+    return out << t.baud << " baud, PLC " << t.plcMs << " ms, PA-CONTROL " << t.pacMs << " ms";
+}
+
+pac::sim::PaControlConfig OnlineReady() {
+    pac::sim::PaControlConfig config;
+    config.modes.requireExternalStop = false;
+    return config;
+}
+
+// One FB_PAC_Rs232Cmd on the serial line of a simulated PA-CONTROL.
+class SerialCmdPlc {
+public:
+    explicit SerialCmdPlc(const SerialTiming& t, pac::sim::SerialPortConfig port = {},
+                          pac::sim::PaControlConfig config = OnlineReady())
+        : bench_(Timing(t), config, port), checker_("FB_PAC_Rs232Cmd") {
+        bench_.Call(cmd_);
+        bench_.Task().AddProgram([this] { checker_.Check(bench_.Task().ScanCount(), cmd_, BusyBound()); });
+    }
+    ~SerialCmdPlc() { EXPECT_EQ(checker_.Violations(), 0); }
+
+    FinalOutcome Run(std::uint16_t code, std::uint16_t param, std::uint32_t data = 0, int maxScans = 60000) {
+        cmd_->CODE.value = code;
+        cmd_->PARAM.value = param;
+        cmd_->DATA.value = data;
+        cmd_->EXECUTE.value = TRUE;
+        bench_.Scan();
+        edgeTime_ = bench_.Now();
+        const FinalOutcome outcome = pac::test::RunToFinal(cmd_, bench_.Task().ScanCount(), [&] {
+            bench_.Scan();
+            return bench_.Task().ScanCount();
+        }, maxScans);
+        ackData_ = cmd_->ACKDATA.value;
+        repeats_ = cmd_->REPEATS.value;
+        cmd_->EXECUTE.value = FALSE;
+        bench_.Scan();
+        return outcome;
+    }
+
+    // The scans from the edge to the reply on a clean line: the request of `requestBytes` goes out at the
+    // end of the edge scan, the controller's first cycle after its last byte answers with `replyBytes`,
+    // and the first scan after the reply's last byte reads it.
+    int ReplyScans(int requestBytes, int replyBytes) const {
+        const nanoseconds character = bench_.Timing().format.CharacterTime();
+        const nanoseconds pacCycle = bench_.Timing().pacCycle;
+        const nanoseconds requestEnd = edgeTime_ + requestBytes * character;
+        nanoseconds cycle = ((requestEnd + pacCycle - 1ns) / pacCycle) * pacCycle;
+        const nanoseconds replyEnd = cycle + replyBytes * character;
+        const nanoseconds plc = bench_.Timing().plcCycle;
+        return static_cast<int>((replyEnd - edgeTime_ + plc - 1ns) / plc);
+    }
+
+    std::optional<int> BusyBound() const {
+        // Every request: its Timeout, a scan, at most a QuietTime and Timeout of waiting for quiet and room;
+        // Retries + 1 requests before the acknowledgement, then EndTimeout.
+        const nanoseconds plc = bench_.Timing().plcCycle;
+        auto scans = [&](nanoseconds t) { return static_cast<int>((t + plc - 1ns) / plc); };
+        const int request = 3 * scans(pac::FromIecTime(cmd_->TIMEOUT.value)) + 3;
+        return (cmd_->RETRIES.value + 1) * request + scans(pac::FromIecTime(cmd_->ENDTIMEOUT.value)) + 2;
+    }
+
+    pac::FbInstance<FB_PAC_RS232CMD>& Cmd() { return cmd_; }
+    pac::SerialPlcBench& Bench() { return bench_; }
+    pac::sim::PaControl& Pac() { return bench_.Controller(); }
+    std::uint32_t AckData() const { return ackData_; }
+    int Repeats() const { return repeats_; }
+
+private:
+    static pac::SerialBenchTiming Timing(const SerialTiming& t) {
+        pac::SerialBenchTiming timing;
+        timing.plcCycle = std::chrono::milliseconds(t.plcMs);
+        timing.pacCycle = std::chrono::milliseconds(t.pacMs);
+        timing.format.baud = t.baud;
+        return timing;
+    }
+
+    pac::FbInstance<FB_PAC_RS232CMD> cmd_ = PAC_FB(FB_PAC_RS232CMD);
+    pac::SerialPlcBench bench_;
+    pac::test::PlcOpenChecker checker_;
+    nanoseconds edgeTime_{0};
+    std::uint32_t ackData_ = 0;
+    int repeats_ = 0;
+};
+
+int FrameBytes(const std::string& text) {
+    return static_cast<int>(pac::sim::rs232::Frame(text, pac::sim::rs232::CheckRule::kXorWithEtx).size());
+}
+
+class Rs232Timing : public ::testing::TestWithParam<SerialTiming> {};
+
+TEST_P(Rs232Timing, WriteAndReadRegistersAtTheLinesPace) {
+    SerialCmdPlc plc(GetParam());
+    const FinalOutcome write = plc.Run(0x0906, 3, static_cast<std::uint32_t>(-333));
+    ASSERT_TRUE(write.Done()) << write;
+    EXPECT_EQ(write.Scans(), plc.ReplyScans(FrameBytes("0906;3;0;-333"), FrameBytes("0;1;1;0;0;-333")));
+    EXPECT_EQ(plc.Pac().Io().intRegisters.GetInt(3), -333);
+
+    const FinalOutcome read = plc.Run(0x1906, 3);
+    ASSERT_TRUE(read.Done()) << read;
+    EXPECT_EQ(read.Scans(), plc.ReplyScans(FrameBytes("1906;3;0;0"), FrameBytes("0;1;1;0;0;-333")));
+    EXPECT_EQ(plc.AckData(), static_cast<std::uint32_t>(-333));
+
+    ASSERT_TRUE(plc.Run(0x0907, 1, BitsOf(640.5F)).Done());
+    const FinalOutcome real = plc.Run(0x1907, 1);
+    ASSERT_TRUE(real.Done()) << real;
+    EXPECT_EQ(plc.AckData(), BitsOf(640.5F));
+    EXPECT_TRUE(plc.Cmd()->ACKISREAL.value);
+    EXPECT_EQ(plc.Pac().Serial().Counters().commands, 4u) << "each command exactly once";
+    EXPECT_EQ(plc.Repeats(), 0);
+}
+
+TEST_P(Rs232Timing, StartOnlineAndMoveWithPolls) {
+    SerialCmdPlc plc(GetParam());
+    ASSERT_TRUE(plc.Run(0x0603, 0).Done());
+    EXPECT_EQ(plc.Cmd()->OPSTATUS.value, 31);
+    const FinalOutcome move = plc.Run(0x0A87, 1, BitsOf(100.0F));
+    ASSERT_TRUE(move.Done()) << move;
+    EXPECT_EQ(plc.AckData(), BitsOf(100.0F));
+    EXPECT_EQ(plc.Pac().Axes().Motion(1).Position(), 100.0);
+    EXPECT_GE(plc.Pac().Serial().Counters().polls, 1u);
+    // 100 AE take 200 ms (docs/sim_axis.md): Done no earlier.
+    EXPECT_GE(move.Scans() * GetParam().plcMs, 200);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lines, Rs232Timing,
+                         ::testing::Values(SerialTiming{1200, 1, 10}, SerialTiming{1200, 10, 10},
+                                           SerialTiming{9600, 1, 10}, SerialTiming{9600, 2, 3},
+                                           SerialTiming{9600, 5, 10}, SerialTiming{19200, 1, 1},
+                                           SerialTiming{19200, 10, 7}, SerialTiming{38400, 2, 10}),
+                         [](const ::testing::TestParamInfo<SerialTiming>& info) {
+                             return std::to_string(info.param.baud) + "baud_plc" + std::to_string(info.param.plcMs) +
+                                    "ms_pac" + std::to_string(info.param.pacMs) + "ms";
+                         });
+
+// ---- the readings of chapter 3 (docs/open_points.md) ----
+
+TEST(Rs232Readings, EveryCheckRuleTheControllerMayVerify) {
+    struct Case {
+        pac::sim::CheckVerification verify;
+        bool acceptZero;
+        bool answerBadCheck;
+        int repeats;  // of the first command, in AUTO
+    };
+    const Case cases[] = {
+        {pac::sim::CheckVerification::kXorWithEtx, true, true, 0},
+        {pac::sim::CheckVerification::kXorText, false, true, 1},
+        {pac::sim::CheckVerification::kXorText, false, false, 1},
+        {pac::sim::CheckVerification::kNone, true, true, 0},
+    };
+    for (const Case& c : cases) {
+        pac::sim::SerialPortConfig port;
+        port.verify = c.verify;
+        port.acceptZeroCheck = c.acceptZero;
+        port.answerBadCheck = c.answerBadCheck;
+        SerialCmdPlc plc({}, port);
+        ASSERT_TRUE(plc.Run(0x0906, 1, 11).Done()) << static_cast<int>(c.verify);
+        EXPECT_EQ(plc.Repeats(), c.repeats) << static_cast<int>(c.verify);
+        ASSERT_TRUE(plc.Run(0x0906, 2, 22).Done());
+        EXPECT_EQ(plc.Repeats(), 0) << "the rule that worked is kept";
+        EXPECT_EQ(plc.Pac().Io().intRegisters.GetInt(2), 22);
+    }
+}
+
+TEST(Rs232Readings, EveryCheckRuleOfTheReplies) {
+    for (auto rule : {pac::sim::rs232::CheckRule::kXorWithEtx, pac::sim::rs232::CheckRule::kXorText,
+                      pac::sim::rs232::CheckRule::kZero}) {
+        pac::sim::SerialPortConfig port;
+        port.replyCheck = rule;
+        SerialCmdPlc plc({}, port);
+        ASSERT_TRUE(plc.Run(0x190B, 0).Done());
+        EXPECT_EQ(plc.AckData(), 1u);
+    }
+}
+
+TEST(Rs232Readings, ModeRepliesAtOnceOrHeldAndPollsWhenIdleOrNot) {
+    for (bool hold : {true, false}) {
+        for (bool idlePolls : {true, false}) {
+            pac::sim::SerialPortConfig port;
+            port.holdModeReplies = hold;
+            port.answerPollWhenIdle = idlePolls;
+            port.requireSoh = !hold;
+            port.refuseTypeMismatch = idlePolls;
+            SerialCmdPlc plc({}, port);
+            ASSERT_TRUE(plc.Run(0x0603, 0).Done()) << hold << idlePolls;
+            EXPECT_EQ(plc.Cmd()->OPSTATUS.value, 31);
+            ASSERT_TRUE(plc.Run(0x0A8D, 1, BitsOf(500.0F)).Done());
+            const FinalOutcome move = plc.Run(0x0A89, 1, BitsOf(20.0F));
+            ASSERT_TRUE(move.Done()) << hold << idlePolls << ": " << move;
+            EXPECT_EQ(plc.Pac().Axes().Motion(1).Position(), 20.0);
+        }
+    }
+}
+
+TEST(Rs232Readings, ASilentControllerEndsInTimeout) {
+    pac::sim::SerialPortConfig port;
+    port.answers = false;
+    SerialCmdPlc plc({}, port);
+    plc.Cmd()->TIMEOUT.value = pac::ToIecTime(200ms);
+    const FinalOutcome outcome = plc.Run(0x1906, 1);
+    EXPECT_TRUE(outcome.Error());
+    EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    EXPECT_EQ(plc.Pac().Serial().Counters().frames, 4u) << "the frame and Retries = 3 more";
+}
+
+// ---- a faulty line ----
+
+class Rs232Faults : public ::testing::Test {
+protected:
+    Rs232Faults() : plc_(SerialTiming{9600, 1, 10}) { plc_.Pac().Io().intRegisters.SetInt(4, 4444); }
+    // A PLC that has talked to the controller before: the CHECK rule is confirmed (AUTO).
+    void SetUp() override { ExpectRead(0); }
+    pac::sim::SerialWire& ToPac() { return plc_.Bench().Line().toPac; }
+    pac::sim::SerialWire& FromPac() { return plc_.Bench().Line().fromPac; }
+    void ExpectRead(int repeats) {
+        const FinalOutcome read = plc_.Run(0x1906, 4);
+        ASSERT_TRUE(read.Done()) << read;
+        EXPECT_EQ(plc_.AckData(), 4444u);
+        EXPECT_EQ(plc_.Repeats(), repeats);
+    }
+    SerialCmdPlc plc_;
+};
+
+TEST_F(Rs232Faults, ADroppedByteOfTheRequest) {
+    ToPac().DropByte(ToPac().BytesSent() + 5);  // the frame never completes: no answer, Timeout, again
+    ExpectRead(1);
+}
+
+TEST_F(Rs232Faults, ADroppedEotOfTheRequest) {
+    ToPac().DropByte(ToPac().BytesSent() + FrameBytes("1906;4;0;0") - 1);
+    ExpectRead(1);
+}
+
+TEST_F(Rs232Faults, ACorruptedByteOfTheRequestIsRefusedWith16) {
+    ToPac().CorruptByte(ToPac().BytesSent() + 4, 0x01);
+    ExpectRead(1);
+    EXPECT_EQ(plc_.Pac().Serial().Counters().checkErrors, 1u);
+}
+
+TEST_F(Rs232Faults, ADroppedOrCorruptedByteOfTheReply) {
+    FromPac().DropByte(FromPac().BytesSent() + 3);
+    ExpectRead(1);
+    FromPac().CorruptByte(FromPac().BytesSent() + 6, 0x02);
+    ExpectRead(1);
+    FromPac().DropByte(FromPac().BytesSent());  // SOH: STX alone still begins the frame
+    ExpectRead(0);
+}
+
+TEST_F(Rs232Faults, ADelayedReplyLongerThanTimeout) {
+    plc_.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+    FromPac().DelayByte(FromPac().BytesSent() + 10, 120ms);  // a gap in the middle of the reply
+    ExpectRead(1);
+    EXPECT_EQ(plc_.Pac().Io().intRegisters.GetInt(4), 4444);
+}
+
+TEST_F(Rs232Faults, NoiseBeforeTheReply) {
+    plc_.Bench().Task().AddProgram([this] {
+        if (plc_.Bench().Task().ScanCount() == 3) FromPac().Noise(plc_.Bench().Now(), {0x7F, 0x03, 0x30, 0x04, 0x55});
+    });
+    ExpectRead(0);
+}
+
+TEST_F(Rs232Faults, ARelativeMoveWhoseReplyIsLostRunsOnce) {
+    ASSERT_TRUE(plc_.Run(0x0603, 0).Done());
+    FromPac().DropByte(FromPac().BytesSent() + 4);
+    const FinalOutcome move = plc_.Run(0x0A89, 1, BitsOf(30.0F));
+    ASSERT_TRUE(move.Done()) << move;
+    EXPECT_EQ(plc_.Pac().Axes().Motion(1).Position(), 30.0) << "polled, not sent twice";
+    EXPECT_EQ(plc_.Pac().Counters().Count(0x0A89), 1u);
+}
+
+TEST_F(Rs232Faults, RandomDropsAndCorruptionsOnBothWires) {
+    ToPac().SetRandomFaults(0.002, 0.002);
+    FromPac().SetRandomFaults(0.002, 0.002);
+    for (int n = 1; n <= 40; ++n) {
+        const FinalOutcome write = plc_.Run(0x0906, static_cast<std::uint16_t>(n), static_cast<std::uint32_t>(n * 7));
+        ASSERT_TRUE(write.Done()) << n << ": " << write;
+        const FinalOutcome read = plc_.Run(0x1906, static_cast<std::uint16_t>(n));
+        ASSERT_TRUE(read.Done()) << n << ": " << read;
+        EXPECT_EQ(plc_.AckData(), static_cast<std::uint32_t>(n * 7)) << n;
+    }
+    EXPECT_GT(ToPac().BytesDropped() + ToPac().BytesCorrupted() + FromPac().BytesDropped() +
+                  FromPac().BytesCorrupted(), 0u) << "the line did misbehave";
+}
+
+}  // namespace
