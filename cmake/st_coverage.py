@@ -144,8 +144,8 @@ def report(files, out):
     total_executed = sum(r["lines_executed"] for r in rows)
     total_branches = sum(r["branches"] for r in rows)
     total_taken = sum(r["branches_taken"] for r in rows)
-    print(f"{'total':<36} {total_executed:>5}/{total_lines:<4}{percent(total_executed, total_lines):5.1f}% "
-          f"{total_taken:>5}/{total_branches:<4}{percent(total_taken, total_branches):5.1f}%")
+    print(f"{'total':<36} {total_executed:>5}/{total_lines:<5}{percent(total_executed, total_lines):5.1f}% "
+          f"{total_taken:>5}/{total_branches:<5}{percent(total_taken, total_branches):5.1f}%")
     summary = {"lines": total_lines, "lines_executed": total_executed, "branches": total_branches,
                "branches_taken": total_taken, "pous": rows}
     with open(os.path.join(out, "summary.json"), "w", encoding="utf-8") as f:
