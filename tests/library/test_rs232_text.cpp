@@ -75,6 +75,39 @@ TEST(Rs232Number, ValuesAreTheNearestDoubles) {
     EXPECT_EQ(ValueOf("123456789012345"), 123456789012345.0) << "15 significant digits";
 }
 
+// A reply's text (3.3): Q_PAR error number; BE; status; system error; data type; data. Whatever does not
+// have that form is refused as a whole, so a damaged reply can never pass for an acknowledgement.
+bool Parse(const std::string& s, T_PAC_RS232REPLY& reply) {
+    T_PAC_RS232TEXT text = TextOf(s);
+    reply = T_PAC_RS232REPLY{};
+    return F_PAC_RS232PARSEREPLY(1, nullptr, static_cast<INT>(s.size()), &text, &reply);
+}
+
+TEST(Rs232Reply, TheSixFieldsOfAnAcknowledgement) {
+    T_PAC_RS232REPLY reply{};
+    ASSERT_TRUE(Parse("0;1;31;0;1;1255.500", reply));
+    EXPECT_EQ(reply.QUIT, 0);
+    EXPECT_TRUE(reply.ENDOFPROCESSING);
+    EXPECT_EQ(reply.STATUS, 31);
+    EXPECT_TRUE(reply.ISREAL);
+    EXPECT_EQ(reply.DATA, 0x449CF000u) << "1255.5 as IEEE single";
+    ASSERT_TRUE(Parse("38;0;1;7;0;-2147483648", reply));
+    EXPECT_EQ(reply.QUIT, 38);
+    EXPECT_FALSE(reply.ENDOFPROCESSING);
+    EXPECT_EQ(reply.PACERRORNUMBER, 7);
+    EXPECT_EQ(reply.DATA, 0x80000000u);
+}
+
+TEST(Rs232Reply, AnyFieldOutOfItsFormRefusesTheWholeReply) {
+    T_PAC_RS232REPLY reply{};
+    for (const char* s : {"", "0;1;1;0;0", "0;1;1;0;0;5;", "0;1;1;0;0;5;6", "-1;1;1;0;0;5", "0;2;1;0;0;5",
+                          "0;1;-1;0;0;5", "0;1;1;-3;0;5", "0;1;1;0;2;5", "0;1;1;0;0;1.5", "0;1;1;0;0;2147483648",
+                          "0;1;1;0;1;1E39", "0;1;1;0;1;-1E39", "0.5;1;1;0;0;5", "0;x;1;0;0;5", "0;;1;0;0;5"}) {
+        EXPECT_FALSE(Parse(s, reply)) << s;
+    }
+    EXPECT_FALSE(Parse(std::string(65, '1'), reply)) << "longer than a frame's text";
+}
+
 TEST(Rs232Real, OnePointAtMostFourDecimalsTrailingZerosDroppedButOne) {
     EXPECT_EQ(Real(5552.0F), "5552.0");
     EXPECT_EQ(Real(12.345F), "12.345");
