@@ -1144,15 +1144,23 @@ TEST_F(FbPacAxis, ConditionBitsGoWithAbsoluteAndRelativeMovesOnly) {
     }
 }
 
-TEST_F(FbPacAxis, MoveEndedByItsConditionIsDone) {
-    FakeAxisConfig config;
-    config.moveCycles = 30;
-    Configure(config);
-    Settle();
-    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
-    fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
-    Execute(true);
-    Cycle(6);
+// An absolute move with G123's condition "while input 1", six scans under way.
+class FbPacAxisConditionMove : public FbPacAxis {
+protected:
+    void StartMoveWhileInput1() {
+        FakeAxisConfig config;
+        config.moveCycles = 30;
+        Configure(config);
+        Settle();
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
+        fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
+        Execute(true);
+        Cycle(6);
+    }
+};
+
+TEST_F(FbPacAxisConditionMove, MoveEndedByItsConditionIsDone) {
+    StartMoveWhileInput1();
     axis_->StopByCondition();
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
     EXPECT_TRUE(Done());
@@ -1161,15 +1169,8 @@ TEST_F(FbPacAxis, MoveEndedByItsConditionIsDone) {
 }
 
 // A G123 move that HALT ends without its condition (STOP ONLINE...) was interrupted: not Done.
-TEST_F(FbPacAxis, ConditionMoveInterruptedFromOutsideIsCommandAborted) {
-    FakeAxisConfig config;
-    config.moveCycles = 30;
-    Configure(config);
-    Settle();
-    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
-    fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
-    Execute(true);
-    Cycle(6);
+TEST_F(FbPacAxisConditionMove, ConditionMoveInterruptedFromOutsideIsCommandAborted) {
+    StartMoveWhileInput1();
     axis_->InterruptFromOutside();
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
     EXPECT_TRUE(Aborted());
