@@ -62,7 +62,7 @@ def _build(args):
         for err in e.errors:
             print(err, file=sys.stderr)
         return 1
-    outputs = Emitter(comp, program).outputs(args.files)
+    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(args.files)
     outputs.update(_tables(constants))
     written = write_outputs(args.out, outputs)
     if args.stamp:
@@ -129,6 +129,8 @@ def main(argv=None):
     build.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
     build.add_argument("--stamp", help="file written after a successful build, removed after a refusal")
+    build.add_argument("--line-directives", action="store_true",
+                       help="precede each statement's C with #line naming its ST line (coverage, debuggers)")
     build.add_argument("-v", "--verbose", action="store_true")
     build.add_argument("files", nargs="+")
     build.set_defaults(run=_build)

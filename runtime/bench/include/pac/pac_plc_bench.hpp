@@ -97,6 +97,7 @@ public:
     const pac::sim::ProcessImage& ToPac() const { return toPac_; }
     const pac::sim::ProcessImage& FromPac() const { return fromPac_; }
     const PlcBenchTiming& Timing() const { return timing_; }
+    const pac::sim::ModuleLayout& Layout() const { return bus_.Layout(); }
 
 private:
     // A command FB: the channel in, the body, the channel out; the module follows the channel.
