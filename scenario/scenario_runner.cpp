@@ -59,9 +59,13 @@ public:
         plc_.Call(cmd_);
         if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
         for (std::size_t k = 0; k < axes_.size(); ++k) {
-            // As a PLC program wires them: each axis takes the format in force from FB_PAC_Ctrl.
-            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1,
-                          [this, k] { axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+            // As a PLC program wires them: each axis takes the format in force and the mode change from
+            // FB_PAC_Ctrl, the operating status from FB_PAC_Cmd.
+            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1, [this, k] {
+                axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                axes_[k]->MODECHANGE.value = ctrl_->MODECHANGE.value;
+                axes_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
+            });
         }
         plc_.Start();
         SetUp(scenario.controller);
