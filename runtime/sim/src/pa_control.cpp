@@ -42,7 +42,7 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
              config_.axisMachine),
       modes_(state_, config_.modes),
       executor_(state_, modes_),
-      ctrl_(modes_, state_),
+      ctrl_(modes_, state_, config_.ctrlInterface),
       log_(config_.logCapacity),
       automaticModule_(config_.automaticModule),
       bootEnd_(config_.bootTime),

@@ -59,6 +59,7 @@ struct PaControlConfig {
     RetentionRule retention{};
     bool referencedAtPowerOn = true;
     ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
+    CtrlInterfaceConfig ctrlInterface{};  // how a stopped mode shows in the CTRL status word
     std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
 };
 
