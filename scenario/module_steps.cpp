@@ -32,6 +32,41 @@ double RealValue(const Json& value, const std::string& path) {
     return number;
 }
 
+// The non-empty array `step.key` of a step on the modules, each element read by `read`, no module (`numberKey`,
+// taken by `numberOf`) twice; `what` words the refusals.
+struct ModuleListWords {
+    const char* stepKind;  // "an axes step"
+    const char* needs;     // "axis modules"
+    const char* items;     // "axis jobs"
+    const char* item;      // "axis"
+    const char* twice;     // said after "appears twice in this step"
+};
+
+template <class Item, class Read, class NumberOf>
+std::vector<Item> ReadModuleList(const json::Object& step, const char* key, const char* numberKey, int modules,
+                                 const ModuleListWords& what, Read read, NumberOf numberOf) {
+    const Json& list = step.Get(key);
+    const std::string path = step.PathOf(key);
+    if (modules == 0) {
+        json::Refuse(path, std::string(what.stepKind) + " needs " + what.needs +
+                               ": set \"modules\": {\"ctrl\": true, \"axes\": 1..8}");
+    }
+    if (!list.is_array()) json::RefuseType(path, std::string("an array of ") + what.items, list);
+    if (list.empty()) json::Refuse(path, std::string("out of range: ") + what.stepKind + " needs at least one " + what.item);
+    std::vector<Item> items;
+    std::set<int> seen;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string itemPath = json::Element(path, i);
+        items.push_back(read(list[i], itemPath));
+        const int number = numberOf(items.back());
+        if (!seen.insert(number).second) {
+            json::Refuse(json::Child(itemPath, numberKey),
+                         std::string(what.item) + " " + std::to_string(number) + " appears twice in this step" + what.twice);
+        }
+    }
+    return items;
+}
+
 }  // namespace
 
 CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
@@ -56,23 +91,12 @@ CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
 }
 
 AxesStep ModuleStepReader::ReadAxes(const json::Object& step) const {
-    const Json& list = step.Get("axes");
-    const std::string path = step.PathOf("axes");
-    if (modules_.axes == 0) {
-        json::Refuse(path, "an axes step needs axis modules: set \"modules\": {\"ctrl\": true, \"axes\": 1..8}");
-    }
-    if (!list.is_array()) json::RefuseType(path, "an array of axis jobs", list);
-    if (list.empty()) json::Refuse(path, "out of range: an axes step needs at least one axis");
     AxesStep axes;
-    std::set<int> seen;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const std::string jobPath = json::Element(path, i);
-        axes.jobs.push_back(ReadJob(list[i], jobPath));
-        if (!seen.insert(axes.jobs.back().axis).second) {
-            json::Refuse(json::Child(jobPath, "axis"), "axis " + std::to_string(axes.jobs.back().axis) +
-                                                           " appears twice in this step (one FB_PAC_Axis per axis)");
-        }
-    }
+    axes.jobs = ReadModuleList<AxisJob>(
+        step, "axes", "axis", modules_.axes,
+        {"an axes step", "axis modules", "axis jobs", "axis", " (one FB_PAC_Axis per axis)"},
+        [this](const Json& value, const std::string& path) { return ReadJob(value, path); },
+        [](const AxisJob& job) { return job.axis; });
     return axes;
 }
 
@@ -107,23 +131,11 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
 }
 
 AutomaticStep ModuleStepReader::ReadAutomatic(const json::Object& step) const {
-    const Json& list = step.Get("automatic");
-    const std::string path = step.PathOf("automatic");
-    if (modules_.axes == 0) {
-        json::Refuse(path, "an automatic step needs modules: set \"modules\": {\"ctrl\": true, \"axes\": 1..8}");
-    }
-    if (!list.is_array()) json::RefuseType(path, "an array of module values", list);
-    if (list.empty()) json::Refuse(path, "out of range: an automatic step needs at least one module");
     AutomaticStep automatic;
-    std::set<int> seen;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const std::string modulePath = json::Element(path, i);
-        automatic.modules.push_back(ReadAutomaticValues(list[i], modulePath));
-        if (!seen.insert(automatic.modules.back().module).second) {
-            json::Refuse(json::Child(modulePath, "module"), "module " + std::to_string(automatic.modules.back().module) +
-                                                                " appears twice in this step");
-        }
-    }
+    automatic.modules = ReadModuleList<AutomaticValues>(
+        step, "automatic", "module", modules_.axes, {"an automatic step", "modules", "module values", "module", ""},
+        [this](const Json& value, const std::string& path) { return ReadAutomaticValues(value, path); },
+        [](const AutomaticValues& values) { return values.module; });
     automatic.maxMs = json::Duration(step, "max_ms", automatic.maxMs);
     return automatic;
 }
