@@ -12,11 +12,11 @@ namespace {
 class CommandErrors : public PacBench {};
 
 TEST_F(CommandErrors, UnknownCodesGiveError19) {
-    // 16#0A84 is in the manual but not simulated; 16#7FFF and 16#0000 are no commands at all.
-    EXPECT_EQ(Send(0x0A84, 1), "00 00 00 00 00 01 C0 13");
+    // 16#0A99 and 16#1912 lie between commands of chapter 5; 16#7FFF and 16#0000 are no commands at all.
+    EXPECT_EQ(Send(0x0A99, 1), "00 00 00 00 00 01 C0 13");
     EXPECT_EQ(Send(0x7FFF), "00 00 00 00 00 01 40 13");
     EXPECT_EQ(Send(0x0000, 1), "00 00 00 00 00 01 C0 13");
-    EXPECT_EQ(Send(0x190E, 1), "00 00 00 00 00 01 40 13");
+    EXPECT_EQ(Send(0x1912, 1), "00 00 00 00 00 01 40 13");
     EXPECT_EQ(pac_.Counters().failed, 4U);
     EXPECT_EQ(pac_.Counters().executed, 0U);
 }

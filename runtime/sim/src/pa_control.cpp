@@ -39,7 +39,7 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       layout_(bus.Layout()),
       config_(CheckedConfig(config)),
       state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters,
-             config_.axisMachine),
+             config_.axisMachine, config_.online),
       modes_(state_, config_.modes),
       executor_(state_, modes_),
       ctrl_(modes_, state_, config_.ctrlInterface),
@@ -96,6 +96,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     }
 
     state_.axes.UpdateAll(now);
+    state_.online.Supervise(now, state_.axes, state_.elements, state_.CurrentMode() == Mode::kOnline);
     const bool allZero = toPac.AllZero();
     if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
     modes_.Step(now);
@@ -187,6 +188,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     bootEnd_ = now + config_.bootTime;
 
     state_.axes.Restart(now, config_.referencedAtPowerOn);
+    state_.online.Reset();
     for (AxisModule& module : modules_) module.Reset();
     automaticReplies_.assign(modules_.size(), Image12{});
     Elements& e = state_.elements;

@@ -60,6 +60,7 @@ struct PaControlConfig {
     bool referencedAtPowerOn = true;
     ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
     CtrlInterfaceConfig ctrlInterface{};  // how a stopped mode shows in the CTRL status word
+    OnlineCommandOptions online{};  // keep-alive, EP-only commands, readings of 5.2.6.23 (online_axes.hpp)
     std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
 };
 
@@ -141,6 +142,7 @@ public:
     ParameterTable& SystemParameters() { return state_.systemParameters; }
     AxisGroup& Axes() { return state_.axes; }
     const AxisGroup& Axes() const { return state_.axes; }
+    const OnlineAxes& Online() const { return state_.online; }  // measuring mode, monitoring, conditions
     ControllerState& State() { return state_; }
 
     const CommandCounters& Counters() const { return counters_; }
