@@ -156,10 +156,10 @@ TEST(PlcOpenChecker, ReportsBusyBeyondTheBound) {
 }
 
 TEST(PlcOpenChecker, BusyBoundsFollowTheFbsTimeouts) {
-    EXPECT_EQ(pac::test::CommandBusyBound(1s, 60s, 1ms), 61000);
-    EXPECT_EQ(pac::test::CommandBusyBound(1s, 0s, 1ms), std::nullopt) << "EndTimeout T#0S: no limit";
+    EXPECT_EQ(pac::test::CommandBusyBound(1s, 60s, 1ms), 1000 + 1 + 1000 + 60000) << "wait, SEND flag, ack, end";
+    EXPECT_EQ(pac::test::CommandBusyBound(0s, 0s, 1ms), 1000 + 1 + 1000 + 60000) << "T#0S: the defaults";
     EXPECT_EQ(pac::test::RequestBusyBound(95ms, 2ms), 48);
-    EXPECT_EQ(pac::test::RequestBusyBound(0s, 2ms), std::nullopt);
+    EXPECT_EQ(pac::test::RequestBusyBound(0s, 2ms), 5000) << "T#0S: T#10S";
 }
 
 // ---- typed pins and RunToFinal ---------------------------------------------------------------------

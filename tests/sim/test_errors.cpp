@@ -64,7 +64,9 @@ TEST_F(CommandErrors, InjectedErrorAnswersTheNextCommandOnly) {
     EXPECT_EQ(pac_.Io().intRegisters.GetInt(1), 9);
     pac_.InjectCommandError(0x1FFF);
     EXPECT_EQ(Send(code::kGetState), "00 00 00 00 00 01 DF FF");
-    EXPECT_THROW(pac_.InjectCommandError(0), std::invalid_argument);
+    pac_.InjectCommandError(0);
+    EXPECT_EQ(Send(code::kGetState), "00 00 00 00 00 01 40 00") << "KF = 1 without a number";
+    EXPECT_EQ(pac_.Counters().failed, 3u);
     EXPECT_THROW(pac_.InjectCommandError(0x2000), std::invalid_argument);
 }
 
