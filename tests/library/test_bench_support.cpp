@@ -125,6 +125,26 @@ TEST(PlcOpenChecker, ASupersededJobShowsCommandAbortedForTheEdgeScanOnly) {
               0);
 }
 
+TEST(PlcOpenChecker, TheInputThatStartedTheJobGovernsItsFinalOutput) {
+    const CommandInputs executeAndJog{true, true, false};
+    const CommandInputs jogOnly{false, true, false};
+    const CommandInputs bothJogs{false, true, true};
+    // Execute and a jog rose together: Execute's job; its Error clears with Execute although the jog stays.
+    EXPECT_EQ(Violations({{executeAndJog, Error(0x800E)}, {jogOnly, Idle()}}), 0);
+    EXPECT_NONFATAL_FAILURE(Violations({{executeAndJog, Error(0x800E)}, {jogOnly, Error(0x800E)}}),
+                            "did not clear");
+    // A jog edge beside a held output: either input may own it, so it may hold on the jog alone...
+    EXPECT_EQ(Violations({{Execute(true), Error(0x800B)}, {executeAndJog, Error(0x800B)}, {jogOnly, Error(0x800B)}}), 0);
+    // ...but it must clear once neither is TRUE.
+    EXPECT_NONFATAL_FAILURE(
+        Violations({{Execute(true), Error(0x800B)}, {bothJogs, Error(0x800B)}, {Execute(false), Error(0x800B)}}),
+        "did not clear");
+    // A superseded job's CommandAborted, then the new job's own, held while Execute stays TRUE.
+    EXPECT_EQ(Violations({{jogOnly, Busy()}, {executeAndJog, Aborted()}, {executeAndJog, Aborted()},
+                          {executeAndJog, Aborted()}}),
+              0);
+}
+
 TEST(PlcOpenChecker, ReportsOutputsAtOnce) {
     EXPECT_NONFATAL_FAILURE(Violations({{Execute(true), {true, true, false, false, 0}}}), "at once");
 }
@@ -156,8 +176,10 @@ TEST(PlcOpenChecker, ReportsBusyBeyondTheBound) {
 }
 
 TEST(PlcOpenChecker, BusyBoundsFollowTheFbsTimeouts) {
-    EXPECT_EQ(pac::test::CommandBusyBound(1s, 60s, 1ms), 61000);
-    EXPECT_EQ(pac::test::CommandBusyBound(1s, 0s, 1ms), std::nullopt) << "EndTimeout T#0S: no limit";
+    // The wait for the interface, one two-step scan, the acknowledgement, the end of processing.
+    EXPECT_EQ(pac::test::CommandBusyBound(1s, 60s, 1ms), 1000 + 1 + 1000 + 60000);
+    EXPECT_EQ(pac::test::CommandBusyBound(0s, 0s, 1ms), 1000 + 1 + 1000 + 60000) << "T#0S: the pins' defaults";
+    EXPECT_EQ(pac::test::CommandBusyBound(5ms, 3ms, 2ms), 3 + 1 + 3 + 2);
     EXPECT_EQ(pac::test::RequestBusyBound(95ms, 2ms), 48);
     EXPECT_EQ(pac::test::RequestBusyBound(0s, 2ms), std::nullopt);
 }

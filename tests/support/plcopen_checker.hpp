@@ -4,18 +4,23 @@
 //   - ErrorID <> 0 exactly when Error;
 //   - a final output (Done, Error, CommandAborted) holds, with its ErrorID, while the command input
 //     that started the job stays TRUE, and clears in the scan that sees it FALSE; if that input was
-//     already FALSE when the job ended, the output shows for exactly one scan;
+//     already FALSE when the job ended, the output shows for exactly one scan (Execute starts the job
+//     when it rises together with a jog input; where a jog input rose and the output stayed the same,
+//     either input may be the job's: the output may hold while one of them stays TRUE);
 //   - Busy never lasts longer than the FB's own bound (its Timeout / EndTimeout), where it has one.
 // A job superseded by a new one (FB_PAC_Axis: a new Execute edge or a jog ends the running job with
-// CommandAborted in the edge scan) shows its CommandAborted in that scan only; the new job owns the
-// outputs from then on. A scan in which a command input rises may begin a new job, so the previous
+// CommandAborted in the edge scan) shows its CommandAborted in that scan; the new job owns the outputs
+// from the next scan on (which may show its own CommandAborted, e.g. an Execute edge as Enable falls). A scan in which a command input rises may begin a new job, so the previous
 // final output need not hold into it.
-// Reports the first violations of each FB with the scan; a test fails if any scan broke a rule.
+// Reports the first violations of each FB with the scan: by default as a GoogleTest failure, or to a
+// reporter of the caller's (the fuzz targets and the soak program run outside GoogleTest).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -24,16 +29,19 @@
 
 namespace pac::test {
 
-// The longest FB_PAC_Cmd (and every FB built on it) stays Busy: Timeout for the acknowledgement (the
-// wait for a free interface included), then EndTimeout for END OF PROCESSING; each timer runs out in
-// the first scan at least its time after it started. EndTimeout T#0S waits without limit.
+// The longest FB_PAC_Cmd (and every FB built on it) stays Busy: Timeout waiting for a free interface,
+// one scan more with the two-step write, Timeout again for the acknowledgement (a timer of its own from
+// the toggle), then EndTimeout for END OF PROCESSING; each timer runs out in the first scan at least its
+// time after it started. T#0S on either pin means its default (T#1S, T#60S): no wait is unbounded.
 inline std::optional<int> CommandBusyBound(std::chrono::nanoseconds timeout, std::chrono::nanoseconds endTimeout,
                                            std::chrono::nanoseconds plcCycle) {
-    if (endTimeout <= std::chrono::nanoseconds(0)) return std::nullopt;
+    using std::chrono::seconds;
+    if (timeout <= std::chrono::nanoseconds(0)) timeout = seconds(1);
+    if (endTimeout <= std::chrono::nanoseconds(0)) endTimeout = seconds(60);
     auto scans = [&](std::chrono::nanoseconds t) {
         return static_cast<int>((t + plcCycle - std::chrono::nanoseconds(1)) / plcCycle);
     };
-    return scans(timeout) + scans(endTimeout);
+    return 2 * scans(timeout) + 1 + scans(endTimeout);
 }
 
 // FB_PAC_Ctrl: Timeout from the edge scan; T#0S waits without limit.
@@ -52,23 +60,35 @@ std::optional<int> RequestBusyBoundOf(const Fb& fb, std::chrono::nanoseconds plc
     return RequestBusyBound(TimeoutOf(fb), plcCycle);
 }
 
+// Receives one violation, described with the FB, the scan, the rule and the outputs.
+using ViolationReporter = std::function<void(const std::string&)>;
+
+inline void ReportAsTestFailure(const std::string& violation) { ADD_FAILURE() << violation; }
+
 class PlcOpenChecker {
 public:
-    explicit PlcOpenChecker(std::string name) : name_(std::move(name)) {}
+    explicit PlcOpenChecker(std::string name, ViolationReporter report = ReportAsTestFailure)
+        : name_(std::move(name)), report_(std::move(report)) {}
 
     // After each scan: the command inputs as that scan saw them, the outputs it left, and the FB's
     // longest Busy in scans as its pins stand (nullopt: no bound).
     void Check(std::int64_t scan, const CommandInputs& in, const PlcOpenOutputs& out,
                std::optional<int> busyBound = std::nullopt) {
-        const bool rose = in.RoseSince(in_);
+        const unsigned rising = in.RoseMaskSince(in_);
+        const bool rose = rising != 0;
+        if (rose) NewJob(rising, out);
         Expect(out.Shown() <= 1, scan, "Busy, Done, Error and CommandAborted at once", out);
         Expect(out.error == (out.errorId != 0), scan, "ErrorID <> 0 not exactly with Error", out);
         if (held_ && !rose) {
-            if (in.Any()) {
+            const unsigned holding = in.Mask() & starters_;
+            if (holding == starters_) {
                 Expect(out == *held_, scan, "the final output did not hold while the command input stayed TRUE", out);
-            } else {
+            } else if (holding == 0) {
                 Expect(!out.Final() && out.errorId == 0, scan,
                        "the final output did not clear in the scan that saw the command input FALSE", out);
+            } else {
+                Expect(out == *held_ || (!out.Final() && out.errorId == 0), scan,
+                       "the final output neither held nor cleared", out);
             }
         }
         if (oneScan_ && !rose) Expect(!out.Final(), scan, "the final output showed for more than one scan", out);
@@ -85,6 +105,7 @@ public:
     // A fresh FB instance (a PLC restart with a new program): nothing carries over from the old one.
     void Restart() {
         in_ = {};
+        starters_ = CommandInputs::kExecute;
         held_.reset();
         oneScan_ = false;
         wasBusy_ = false;
@@ -94,15 +115,32 @@ public:
     int Violations() const { return violations_; }
 
 private:
+    // The inputs that may have started the job in a scan where `rising` rose. An Execute edge always
+    // begins a new job (it ends a jog). A jog edge that leaves the final output unchanged may have begun
+    // nothing (both jog inputs TRUE, a job running) or a new job that ended alike: either input governs.
+    void NewJob(unsigned rising, const PlcOpenOutputs& out) {
+        if ((rising & CommandInputs::kExecute) != 0) {
+            starters_ = CommandInputs::kExecute;
+        } else if (held_ && out == *held_) {
+            starters_ |= rising;
+        } else {
+            starters_ = rising;
+        }
+    }
+
     // What the next scan must show: the final output held (held_), or gone (oneScan_).
     void Follow(const CommandInputs& in, const PlcOpenOutputs& out, bool rose) {
         const bool continued = held_ && out == *held_ && !rose;
         const bool superseded = out.aborted && rose && wasBusy_;
+        if (continued) starters_ &= in.Mask();  // held: the job's input is one of those still TRUE
+        const bool starterHeld = (in.Mask() & starters_) != 0;
         held_.reset();
         oneScan_ = false;
-        if (out.Final() && !continued && (superseded || !in.Any())) {
+        if (superseded) {
+            // The next scan is the new job's: it may show that job's own final output already.
+        } else if (out.Final() && !continued && !starterHeld) {
             oneScan_ = true;
-        } else if (out.Final() && in.Any()) {
+        } else if (out.Final() && starterHeld) {
             held_ = out;
         }
         wasBusy_ = out.busy;
@@ -111,13 +149,18 @@ private:
 
     void Expect(bool ok, std::int64_t scan, const char* rule, const PlcOpenOutputs& out) {
         if (ok) return;
-        if (++violations_ <= kReported) ADD_FAILURE() << name_ << ", scan " << scan << ": " << rule << " (" << out << ")";
+        if (++violations_ > kReported) return;
+        std::ostringstream text;
+        text << name_ << ", scan " << scan << ": " << rule << " (" << out << ")";
+        report_(text.str());
     }
 
     static constexpr int kReported = 5;
 
     std::string name_;
+    ViolationReporter report_;
     CommandInputs in_;
+    unsigned starters_ = CommandInputs::kExecute;  // the inputs that may have started the current job
     std::optional<PlcOpenOutputs> held_;
     bool oneScan_ = false;
     bool wasBusy_ = false;
