@@ -139,6 +139,9 @@ TEST(PlcOpenChecker, TheInputThatStartedTheJobGovernsItsFinalOutput) {
     EXPECT_NONFATAL_FAILURE(
         Violations({{Execute(true), Error(0x800B)}, {bothJogs, Error(0x800B)}, {Execute(false), Error(0x800B)}}),
         "did not clear");
+    // A jog edge while the other jog still stops is ignored: that jog's Done shows for one scan.
+    const CommandInputs jogNegative{false, false, true};
+    EXPECT_EQ(Violations({{jogNegative, Busy()}, {jogOnly, Busy()}, {jogOnly, Done()}, {jogOnly, Idle()}}), 0);
     // A superseded job's CommandAborted, then the new job's own, held while Execute stays TRUE.
     EXPECT_EQ(Violations({{jogOnly, Busy()}, {executeAndJog, Aborted()}, {executeAndJog, Aborted()},
                           {executeAndJog, Aborted()}}),

@@ -67,6 +67,8 @@ private:
     template <class Predicate>
     bool ScanUntil(Predicate done, std::int64_t deadline);
     void ScanOnce();
+    // The state a failed recovery stopped in, for its message.
+    std::string Describe();
     void ScanFor(std::chrono::nanoseconds t);
     bool Chance(std::uint64_t oneIn) { return rng_.UniformUpTo(oneIn - 1) == 0; }
     std::int64_t Draw(std::int64_t low, std::int64_t high);

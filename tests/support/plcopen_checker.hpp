@@ -116,12 +116,13 @@ public:
 
 private:
     // The inputs that may have started the job in a scan where `rising` rose. An Execute edge always
-    // begins a new job (it ends a jog). A jog edge that leaves the final output unchanged may have begun
-    // nothing (both jog inputs TRUE, a job running) or a new job that ended alike: either input governs.
+    // begins a new job (it ends a jog). A jog edge while a job runs is ignored, and one that leaves the
+    // final output unchanged may have begun nothing (both jog inputs TRUE) or a new job that ended alike:
+    // either input may govern the job's final output.
     void NewJob(unsigned rising, const PlcOpenOutputs& out) {
         if ((rising & CommandInputs::kExecute) != 0) {
             starters_ = CommandInputs::kExecute;
-        } else if (held_ && out == *held_) {
+        } else if (wasBusy_ || (held_ && out == *held_)) {
             starters_ |= rising;
         } else {
             starters_ = rising;
