@@ -48,6 +48,11 @@ PlcBenchTiming SoakTiming(std::uint64_t seed) {
     timing.latencyCycles = static_cast<int>(rng.UniformUpTo(2));
     timing.jitter = microseconds(rng.UniformUpTo(1) * rng.UniformUpTo(static_cast<std::uint64_t>(timing.plcCycle / microseconds(1))));
     timing.seed = seed;
+    // The simulated controller's own boot time: longer than any round trip here. A controller that booted
+    // faster than the bus carries the PLC's next image would find the command it executed just before the
+    // power cycle still on the bus, SEND unequal to its fresh RECEIVE 0, and execute it again: the
+    // handshake of manual 2.4 cannot tell (docs/testing.md).
+    timing.bootTime = pac::sim::PaControlConfig{}.bootTime;
     return timing;
 }
 
@@ -290,6 +295,9 @@ bool SoakRun::RunAxisJob(E_PAC_AXISCOMMAND command, float position, std::int64_t
     ++counts_.axisJobs;
     const bool ended = ScanUntil([&] { return !plc_.AxisJob().open; }, deadline);
     const bool done = ended && axis->DONE.value != 0;
+    std::ostringstream outcome;
+    outcome << pac::test::OutputsOf(axis) << (ended ? "" : ", not ended");
+    lastAxisOutcome_ = outcome.str();
     axis->EXECUTE.value = FALSE;
     ScanOnce();
     return done;
@@ -342,9 +350,9 @@ bool SoakRun::Recover(const std::string& when) {
         if (axis->DISPLACEDWHILEOFF.value != 0) RunAxisJob(kClearDisplaced, 0.0f, deadline);
         // A reference run that was aborted leaves the axis unreferenced: moves wait for a new one (43).
         if (axis->REFERENCED.value == 0) RunAxisJob(E_PAC_AXISCOMMAND__PAC_AX_HOME, 0.0f, deadline);
-        moved = RunAxisJob(kMoveRelative, axis->ACTUALPOSITION.value > 500.0f ? -1.0f : 1.0f, deadline);
+        moved = RunAxisJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 500.0f, deadline);
     }
-    if (!moved) return fail("no axis move Done through FB_PAC_Axis");
+    if (!moved) return fail("no axis move Done through FB_PAC_Axis, the last one: " + lastAxisOutcome_);
     return true;
 }
 

@@ -92,6 +92,7 @@ private:
     int axisHold_ = 0;
     int jogScans_ = 0;
     int abortScans_ = 0;
+    std::string lastAxisOutcome_;  // the outputs that ended the last axis job of a recovery
 };
 
 }  // namespace pac::soak
