@@ -198,25 +198,27 @@ TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
 }
 
 // A restarted PLC's module shows SEND = 0 while the controller last acknowledged SEND = 1. No FB owns a
-// command, so FB_PAC_CmdInterface brings the module back in step without a command: first the harmless
-// 190B with the SEND flag it has, then SEND := RECEIVE over it. Nothing but that read can execute, and
-// the queued command then goes with exactly one toggle.
-TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
+// command, so FB_PAC_CmdInterface parks the module: the harmless 190B with the SEND flag it has. A live
+// controller takes that as a new command, a read without effect, and its RECEIVE comes to SEND; the queued
+// command then goes with exactly one toggle. SEND does not chase RECEIVE while the controller is live: over
+// a bus with latency both ends would follow each other for ever (the soak found it).
+TEST_F(FbPacCmd, AfterPlcRestartTheParkedModuleBringsTheControllerInStep) {
     fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
     Request(0x1906, 1, 0);
     Cycle(1);
     EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked first, the SEND flag unchanged";
     EXPECT_TRUE(Busy());
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "then SEND follows RECEIVE: still only 190B";
-    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "SEND stays while the controller is live";
+    EXPECT_EQ(interface_->RESYNCS.value, 0u);
+    fromPac_ = Reply(false, false, true);  // the controller executed the parked read
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "one toggle: the queued command";
-    fromPac_ = Reply(false, false, true, 0, 1, 5);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "one toggle: the queued command";
+    fromPac_ = Reply(true, false, true, 0, 1, 5);
     Cycle(1);
     EXPECT_TRUE(Done());
     EXPECT_EQ(cmd_->ACKDATA.value, 5u);
-    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+    EXPECT_EQ(interface_->RESYNCS.value, 0u);
 }
 
 TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {

@@ -1,7 +1,5 @@
 #include "soak_run.hpp"
 
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include "pac/iec_time.hpp"
@@ -68,10 +66,6 @@ std::int64_t SoakRun::Draw(std::int64_t low, std::int64_t high) {
 
 void SoakRun::ScanOnce() {
     plc_.Scan();
-    if (std::getenv("SOAK_DEBUG") && plc_.ScanCount() >= std::atoll(std::getenv("SOAK_DEBUG")) && plc_.ScanCount() < std::atoll(std::getenv("SOAK_DEBUG")) + 400) {
-      const auto& ch = plc_.Bench().Channel(); auto& a = plc_.Cmd(0); auto& o = plc_.Cmd(1);
-      std::fprintf(stderr, "S %lld t %lld | inflight %d id %u serving %u next %u to %02X%02X d %02X%02X from %02X%02X st %d | A ex %d %c st %d d %u | B ex %d %c st %d d %u\n", (long long)plc_.ScanCount(), (long long)(plc_.Now().count()/1000),
-        ch.INFLIGHT, ch.INFLIGHTID, ch.SERVING, ch.NEXTTICKET, ch.TOPAC.table[6], ch.TOPAC.table[7], ch.TOPAC.table[2], ch.TOPAC.table[3], ch.FROMPAC.table[6],ch.FROMPAC.table[7], ch.FROMPAC.table[5], a->EXECUTE.value, pac::test::OutputsOf(a).Letter(), (int)a->STATE.value, a->DATA.value, o->EXECUTE.value, pac::test::OutputsOf(o).Letter(), (int)o->STATE.value, o->DATA.value); }
     counts_.scans = plc_.ScanCount();
 }
 
@@ -264,9 +258,6 @@ bool SoakRun::RunCommand(int fb, std::int64_t deadline) {
     StartCommand(fb);
     const bool ended = ScanUntil([&] { return !plc_.CmdJob(fb).open; }, deadline);
     const bool done = ended && cmd->DONE.value != 0;
-    if (!done) { const auto& ch = plc_.Bench().Channel(); auto& o = plc_.Cmd(1);
-      std::fprintf(stderr, "DEBUG cmd ended %d err %d id %X scan %lld | inflight %d id %u serving %u next %u replyfree %d to6 %02X from6 %02X from5 %d | other exec %d busy %d done %d err %d | job1 open %d\n", ended, cmd->ERROR.value, cmd->ERRORID.value, (long long)plc_.ScanCount(),
-        ch.INFLIGHT, ch.INFLIGHTID, ch.SERVING, ch.NEXTTICKET, ch.REPLYFREE, ch.TOPAC.table[6], ch.FROMPAC.table[6], ch.FROMPAC.table[5], o->EXECUTE.value, o->BUSY.value, o->DONE.value, o->ERROR.value, plc_.CmdJob(1).open); }
     cmd->EXECUTE.value = FALSE;
     ScanOnce();
     return done;
