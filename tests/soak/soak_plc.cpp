@@ -67,7 +67,7 @@ void SoakPlc::StartAxisJob(E_PAC_AXISCOMMAND command, float position, std::int64
     axis_->COMMAND.value = command;
     axis_->POSITION.value = position;
     axis_->EXECUTE.value = TRUE;
-    axisJob_ = OpenJob{true, ScanCount() + 1, limitScans, 0};
+    axisJob_ = OpenJob{true, ScanCount() + 1, limitScans, 0, axis_->BUSY.value != 0};
 }
 
 void SoakPlc::CheckAfterScan() {
@@ -90,7 +90,8 @@ template <class Fb>
 bool SoakPlc::Follow(OpenJob& job, const pac::FbInstance<Fb>& fb, const char* name) {
     const std::int64_t scan = ScanCount();
     if (!job.open || scan < job.edgeScan) return false;
-    if (pac::test::IsFinal(fb)) {
+    const auto out = pac::test::OutputsOf(fb);
+    if (out.Final() && !(job.supersedes && scan == job.edgeScan && out.aborted)) {
         job.open = false;
         return true;
     }

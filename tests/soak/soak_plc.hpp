@@ -26,6 +26,8 @@ struct OpenJob {
     std::int64_t edgeScan = 0;
     std::int64_t limit = 0;
     std::uint32_t number = 0;  // the command's number (FB_PAC_Cmd jobs)
+    // The FB was Busy when the edge came: a CommandAborted in the edge scan ends the job it supersedes.
+    bool supersedes = false;
 };
 
 class SoakPlc {

@@ -279,7 +279,8 @@ bool SoakRun::RunRequest(E_PAC_CTRLREQUEST request, std::int64_t deadline) {
 
 bool SoakRun::RunAxisJob(E_PAC_AXISCOMMAND command, float position, std::int64_t deadline) {
     auto& axis = plc_.Axis();
-    if (!ScanUntil([&] { return !plc_.AxisJob().open; }, deadline)) return false;
+    // A jog that was let go still stops: Busy without a job of the soak's.
+    if (!ScanUntil([&] { return !plc_.AxisJob().open && axis->BUSY.value == 0; }, deadline)) return false;
     axis->EXECUTE.value = FALSE;
     ScanOnce();
     plc_.StartAxisJob(command, position, plc_.ScansFor(std::chrono::seconds(20)));
