@@ -84,17 +84,35 @@ private:
         for (std::size_t i = 0; i < 8; ++i) module_[i] = channel.TOPAC.table[i];
 
         const std::int64_t scan = plc_.Task().ScanCount();
+        if (trace_) Trace(callB);
         checkA_.Check(scan, a_, pac::test::CommandBusyBoundOf(a_, plc_.Cycle()));
         if (callB) checkB_.Check(scan, b_, pac::test::CommandBusyBoundOf(b_, plc_.Cycle()));
         CountNewCommands();
     }
 
-    // bit 0: Execute; bit 1: new Code, Param, Data and times from the input.
+    void Trace(bool callB) {
+        auto show = [](pac::FbInstance<FB_PAC_CMD>& fb) {
+            std::fprintf(stderr, " | Ex %d %c id %X st %d T %lld/%lld ms", fb->EXECUTE.value,
+                         pac::test::OutputsOf(fb).Letter(), fb->ERRORID.value, static_cast<int>(fb->STATE.value),
+                         static_cast<long long>(pac::FromIecTime(fb->TIMEOUT.value).count() / 1000000),
+                         static_cast<long long>(pac::FromIecTime(fb->ENDTIMEOUT.value).count() / 1000000));
+        };
+        std::fprintf(stderr, "scan %lld (cycle %lld ms): to %02X%02X from %02X%02X st %d", static_cast<long long>(plc_.Task().ScanCount()),
+                     static_cast<long long>(plc_.Cycle().count() / 1000000), module_[6], module_[7], replies_.Bytes()[6],
+                     replies_.Bytes()[7], replies_.Bytes()[5]);
+        show(a_);
+        if (callB) show(b_);
+        std::fprintf(stderr, "\n");
+    }
+
+    // bit 0: Execute; bit 1: new Code, Param, Data and times from the input, with an Execute edge to an idle FB: the
+    // Busy bound is the job's Timeout and EndTimeout, so a program does not change them while it runs.
     void Drive(pac::FbInstance<FB_PAC_CMD>& fb, unsigned bits) {
         const bool execute = (bits & 1U) != 0;
-        if (execute && fb->EXECUTE.value == 0) ++edges_;
+        const bool edge = execute && fb->EXECUTE.value == 0;
+        if (edge) ++edges_;
         fb->EXECUTE.value = execute ? TRUE : FALSE;
-        if ((bits & 2U) != 0) {
+        if (edge && fb->BUSY.value == 0 && (bits & 2U) != 0) {
             fb->CODE.value = in_.Word();
             fb->PARAM.value = in_.Word();
             fb->DATA.value = in_.Dword();
@@ -132,6 +150,7 @@ private:
     std::array<std::uint8_t, 8> module_{};
     pac::test::PlcOpenChecker checkA_;
     pac::test::PlcOpenChecker checkB_;
+    bool trace_ = pac::fuzz::TraceWanted();
     int edges_ = 0;
     int sent_ = 0;
     bool lastSend_ = false;

@@ -64,8 +64,10 @@ public:
 private:
     void Scan() {
         const std::uint8_t inputs = in_.Byte();
+        // New request data with an Execute edge only: the Busy bound is the job's own Timeout.
+        const bool edge = (inputs & 1U) != 0 && ctrl_->EXECUTE.value == 0;
         ctrl_->EXECUTE.value = (inputs & 1U) != 0 ? TRUE : FALSE;
-        if ((inputs & 2U) != 0) {
+        if (edge && ctrl_->BUSY.value == 0 && (inputs & 2U) != 0) {
             ctrl_->REQUEST.value = static_cast<E_PAC_CTRLREQUEST>(in_.Below(8));
             ctrl_->INTEGERMODE.value = in_.Bit() ? TRUE : FALSE;
             ctrl_->TIMEOUT.value = pac::fuzz::ShortTime(in_);

@@ -109,6 +109,7 @@ public:
         held_.reset();
         oneScan_ = false;
         wasBusy_ = false;
+        afterSupersede_ = false;
         busyScans_ = 0;
     }
 
@@ -116,13 +117,13 @@ public:
 
 private:
     // The inputs that may have started the job in a scan where `rising` rose. An Execute edge always
-    // begins a new job (it ends a jog). A jog edge while a job runs is ignored, and one that leaves the
+    // begins a new job (it ends a jog). A jog edge while a job runs or stops is ignored, and one that leaves the
     // final output unchanged may have begun nothing (both jog inputs TRUE) or a new job that ended alike:
     // either input may govern the job's final output.
     void NewJob(unsigned rising, const PlcOpenOutputs& out) {
         if ((rising & CommandInputs::kExecute) != 0) {
             starters_ = CommandInputs::kExecute;
-        } else if (wasBusy_ || (held_ && out == *held_)) {
+        } else if (wasBusy_ || afterSupersede_ || (held_ && out == *held_)) {
             starters_ |= rising;
         } else {
             starters_ = rising;
@@ -137,6 +138,7 @@ private:
         const bool starterHeld = (in.Mask() & starters_) != 0;
         held_.reset();
         oneScan_ = false;
+        afterSupersede_ = superseded;
         if (superseded) {
             // The next scan is the new job's: it may show that job's own final output already.
         } else if (out.Final() && !continued && !starterHeld) {
@@ -165,6 +167,7 @@ private:
     std::optional<PlcOpenOutputs> held_;
     bool oneScan_ = false;
     bool wasBusy_ = false;
+    bool afterSupersede_ = false;  // the last scan ended a job for a new one
     int busyScans_ = 0;
     int violations_ = 0;
 };

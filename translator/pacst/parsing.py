@@ -33,9 +33,18 @@ def _expected_keywords(exc):
     return f": expected {' or '.join(words)}" if 0 < len(words) <= 3 else ""
 
 
+def _end_of(text):
+    """Line and column just past the last character: where an unexpected end of file is."""
+    lines = text.split("\n")
+    return len(lines), len(lines[-1]) + 1
+
+
 def _syntax_error(exc, file, text=""):
     line = getattr(exc, "line", None) or 1
     col = getattr(exc, "column", None) or 1
+    if line < 1 or col < 1:
+        # lark reports -1:-1 where the input ended before the rule did (found by the damaged-input tests).
+        line, col = _end_of(text)
     token = getattr(exc, "token", None)
     if token is not None and getattr(token, "type", "") == "$END":
         return StError(file, line, col, "syntax error: unexpected end of file")
@@ -74,7 +83,11 @@ def parse_file(path, cache_dir=None):
                 return SourceFile(path, text, pickle.load(f))
         except Exception:  # a corrupt cache entry is re-parsed, never trusted
             pass
-    result = parse_source_code(text, fn=path)
+    try:
+        result = parse_source_code(text, fn=path)
+    except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
+        line, col = _end_of(text)
+        raise StError(path, line, col, f"syntax error: {exc}") from None
     if result.exception is not None:
         raise _syntax_error(result.exception, path, text)
     tree = result.transform()
