@@ -279,8 +279,12 @@ bool SoakRun::RunRequest(E_PAC_CTRLREQUEST request, std::int64_t deadline) {
 
 bool SoakRun::RunAxisJob(E_PAC_AXISCOMMAND command, float position, std::int64_t deadline) {
     auto& axis = plc_.Axis();
-    // A jog that was let go still stops: Busy without a job of the soak's.
-    if (!ScanUntil([&] { return !plc_.AxisJob().open && axis->BUSY.value == 0; }, deadline)) return false;
+    // A jog that was let go still stops (Busy without a job of the soak's), and an aborted reference run may
+    // go on (ACTIVE): the FB waits Timeout for a free axis, a program waits for it before the next job.
+    if (!ScanUntil([&] { return !plc_.AxisJob().open && axis->BUSY.value == 0 && axis->ACTIVE.value == 0; },
+                   deadline)) {
+        return false;
+    }
     axis->EXECUTE.value = FALSE;
     ScanOnce();
     plc_.StartAxisJob(command, position, plc_.ScansFor(std::chrono::seconds(20)));
@@ -318,14 +322,17 @@ bool SoakRun::Recover(const std::string& when) {
 
     if (!ScanUntil([&] { return ctrl->READY.value != 0; }, deadline)) return fail("the PA-CONTROL never showed Ready");
     ScanFor(milliseconds(20));  // the first control word after a boot is only the reference for the CTRL edges
-    for (int attempt = 0; attempt < 3 && ctrl->ONLINEACTIVE.value == 0; ++attempt) {
-        if (ctrl->ONLINESTOPPED.value != 0 || ctrl->AUTOMATICACTIVE.value != 0 || ctrl->AUTOMATICSTOPPED.value != 0) {
+    // ONLINE runs and no system error: ONLINE's bit also shows while a malfunction is braking (status 37).
+    auto online = [&] { return ctrl->ONLINEACTIVE.value != 0 && ctrl->SYSTEMERROR.value == 0; };
+    for (int attempt = 0; attempt < 3 && !online(); ++attempt) {
+        if (ctrl->ONLINESTOPPED.value != 0 || ctrl->AUTOMATICACTIVE.value != 0 || ctrl->AUTOMATICSTOPPED.value != 0 ||
+            ctrl->SYSTEMERROR.value != 0) {
             RunRequest(kCancel, deadline);
         }
         if (ctrl->SYSTEMERROR.value != 0) RunRequest(kResetError, deadline);
         RunRequest(kStartOnline, deadline);
     }
-    if (ctrl->ONLINEACTIVE.value == 0) return fail("FB_PAC_Ctrl could not bring ONLINE back");
+    if (!online()) return fail("FB_PAC_Ctrl could not bring ONLINE back");
 
     bool commandDone = false;
     for (int attempt = 0; attempt < 3 && !commandDone; ++attempt) commandDone = RunCommand(0, deadline);
