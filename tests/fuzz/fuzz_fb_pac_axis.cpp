@@ -78,7 +78,7 @@ public:
     }
 
     void Run() {
-        plc_.Run(in_, [this] { plc_.Task().Scan(); }, [this] { return axis_->BUSY.value != 0; });
+        plc_.Run(in_, [this] { return axis_->BUSY.value != 0; });
     }
 
 private:
@@ -141,8 +141,5 @@ private:
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    FuzzBytes in(data, size);
-    AxisFuzzRun run(in);
-    run.Run();
-    return 0;
+    return pac::fuzz::RunOneInput<AxisFuzzRun>(data, size);
 }

@@ -64,8 +64,7 @@ public:
     }
 
     void Run() {
-        plc_.Run(in_, [this] { plc_.Task().Scan(); },
-                 [this] { return a_->BUSY.value != 0 || b_->BUSY.value != 0; });
+        plc_.Run(in_, [this] { return a_->BUSY.value != 0 || b_->BUSY.value != 0; });
     }
 
 private:
@@ -159,8 +158,5 @@ private:
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    FuzzBytes in(data, size);
-    CmdFuzzRun run(in);
-    run.Run();
-    return 0;
+    return pac::fuzz::RunOneInput<CmdFuzzRun>(data, size);
 }

@@ -58,7 +58,7 @@ public:
     }
 
     void Run() {
-        plc_.Run(in_, [this] { plc_.Task().Scan(); }, [this] { return ctrl_->BUSY.value != 0; });
+        plc_.Run(in_, [this] { return ctrl_->BUSY.value != 0; });
     }
 
 private:
@@ -99,8 +99,5 @@ private:
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    FuzzBytes in(data, size);
-    CtrlFuzzRun run(in);
-    run.Run();
-    return 0;
+    return pac::fuzz::RunOneInput<CtrlFuzzRun>(data, size);
 }

@@ -53,18 +53,27 @@ public:
     pac::PlcTask& Task() { return task_; }
     std::chrono::nanoseconds Cycle() const { return task_.CycleTime(); }
 
-    // `scan` reads one scan's decisions from the input and runs the scan, first for the input, then
-    // while `busy` holds, at most kSettleTime.
-    template <class ScanFn, class BusyFn>
-    void Run(FuzzBytes& in, ScanFn&& scan, BusyFn&& busy) {
-        for (int i = 0; i < kMaxInputScans && !in.Exhausted(); ++i) scan();
+    // Scans the task (whose program reads each scan's decisions from the input) for the input, then while
+    // `busy` holds, at most kSettleTime.
+    template <class BusyFn>
+    void Run(FuzzBytes& in, BusyFn&& busy) {
+        for (int i = 0; i < kMaxInputScans && !in.Exhausted(); ++i) task_.Scan();
         const auto settleScans = kSettleTime / task_.CycleTime() + 1;
-        for (std::int64_t i = 0; i < settleScans && busy(); ++i) scan();
+        for (std::int64_t i = 0; i < settleScans && busy(); ++i) task_.Scan();
     }
 
 private:
     pac::SimClock clock_;
     pac::PlcTask task_;
 };
+
+// A target's LLVMFuzzerTestOneInput: one FuzzRun, constructed on the input, run once.
+template <class FuzzRun>
+int RunOneInput(const std::uint8_t* data, std::size_t size) {
+    FuzzBytes in(data, size);
+    FuzzRun run(in);
+    run.Run();
+    return 0;
+}
 
 }  // namespace pac::fuzz
