@@ -98,6 +98,24 @@ public:
 
     std::chrono::nanoseconds Now() const { return plc_.Now(); }
 
+    // The CMD interface's history ring (FB_PAC_Cmd), oldest first; how many handshakes it has seen.
+    std::vector<HandshakeRecord> History(std::uint32_t& handshakes) {
+        const ST_PAC_CMDCHANNEL& channel = plc_.Channel();
+        handshakes = static_cast<std::uint32_t>(channel.HISTORYCOUNT);
+        constexpr std::uint32_t kRing = 16;
+        const std::uint32_t kept = handshakes < kRing ? handshakes : kRing;
+        std::vector<HandshakeRecord> history;
+        for (std::uint32_t i = 0; i < kept; ++i) {
+            const auto slot = (static_cast<std::uint32_t>(channel.HISTORYNEXT) + kRing - kept + i) % kRing;
+            const ST_PAC_HANDSHAKE& h = channel.HISTORY.table[slot];
+            history.push_back({static_cast<std::uint16_t>(h.CODE), static_cast<std::uint16_t>(h.PARAM),
+                               static_cast<std::uint32_t>(h.DATA), static_cast<std::uint32_t>(h.ACKDATA),
+                               static_cast<std::uint16_t>(h.ERRORID), static_cast<std::int32_t>(h.SCANSTOACK),
+                               static_cast<std::int32_t>(h.SCANSTOEND)});
+        }
+        return history;
+    }
+
 private:
     void SetUp(const ControllerSetup& setup) {
         auto& pac = plc_.Controller();
@@ -350,6 +368,7 @@ RunReport ScenarioRunner::Run(RunObserver& observer) const {
         report.steps.push_back(session.Run(i, scenario_.steps[i]));
         observer.OnStepEnd(report.steps.back());
     }
+    report.history = session.History(report.handshakes);
     observer.OnEnd(report);
     return report;
 }

@@ -102,8 +102,21 @@ struct StepReport {
     bool Passed() const { return failures.empty(); }
 };
 
+// One handshake of the CMD interface's history (ST_PAC_Handshake, docs/fb/FB_PAC_Cmd.md).
+struct HandshakeRecord {
+    std::uint16_t code = 0;
+    std::uint16_t param = 0;
+    std::uint32_t data = 0;
+    std::uint32_t ackData = 0;
+    std::uint16_t errorId = 0;  // 0 after Done
+    std::int32_t scansToAck = -1;  // from the Execute edge; -1: never acknowledged
+    std::int32_t scansToEnd = 0;   // from the Execute edge to the final output
+};
+
 struct RunReport {
     std::vector<StepReport> steps;
+    std::vector<HandshakeRecord> history;  // the channel's last 16 handshakes at the end, oldest first
+    std::uint32_t handshakes = 0;          // handshakes recorded in the whole run
 
     std::size_t Commands() const;   // command steps run
     std::size_t Requests() const;   // ctrl steps run

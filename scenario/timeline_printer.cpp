@@ -379,7 +379,24 @@ void TimelinePrinter::PrintAxisOutcome(const AxisJob& job, const AxisOutcome& ou
     out_ << position << (outcome.referenced ? ", referenced" : ", not referenced") << "\n";
 }
 
+// The CMD interface's last handshakes, as a PLC programmer reads Channel.History online.
+void TimelinePrinter::PrintHistory(const RunReport& report) {
+    if (report.history.empty()) return;
+    out_ << "\nCMD handshake history (Channel.History): the last " << report.history.size() << " of "
+         << report.handshakes << ", oldest first; scans from the Execute edge\n";
+    out_ << "  Code      Param  Data         ErrorID  AckData      to ack  to end  command\n";
+    for (const HandshakeRecord& h : report.history) {
+        char line[256];
+        std::snprintf(line, sizeof line, "  %s %6u  %s %7s  %s %6s %7d  %s\n", Hex4(h.code).c_str(),
+                      static_cast<unsigned>(h.param), Hex8(h.data).c_str(), ErrorIdText(h.errorId).c_str(),
+                      Hex8(h.ackData).c_str(), h.scansToAck < 0 ? "-" : std::to_string(h.scansToAck).c_str(),
+                      static_cast<int>(h.scansToEnd), names_.CommandName(h.code).c_str());
+        out_ << line;
+    }
+}
+
 void TimelinePrinter::OnEnd(const RunReport& report) {
+    PrintHistory(report);
     const auto failed = report.FailedSteps();
     out_ << "\nResult: " << Plural(static_cast<long long>(report.steps.size()), "step", "steps") << ", "
          << Plural(static_cast<long long>(report.Commands()), "command", "commands");

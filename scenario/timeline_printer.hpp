@@ -42,6 +42,7 @@ private:
     void PrintOutcome(const CommandOutcome& outcome, bool showAckData, bool ackAsReal);
     void PrintAxisOutcome(const AxisJob& job, const AxisOutcome& outcome);
     void PrintVerdict(bool expectedNothing, const StepReport& report);
+    void PrintHistory(const RunReport& report);  // the CMD interface's handshake history
 
     std::ostream& out_;
     const GvlNames& names_;

@@ -198,27 +198,41 @@ TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
 }
 
 // A restarted PLC's module shows SEND = 0 while the controller last acknowledged SEND = 1. No FB owns a
-// command, so FB_PAC_CmdInterface parks the module: the harmless 190B with the SEND flag it has. A live
-// controller takes that as a new command, a read without effect, and its RECEIVE comes to SEND; the queued
-// command then goes with exactly one toggle. SEND does not chase RECEIVE while the controller is live: over
-// a bus with latency both ends would follow each other for ever (the soak found it).
-TEST_F(FbPacCmd, AfterPlcRestartTheParkedModuleBringsTheControllerInStep) {
+// command, so FB_PAC_CmdInterface brings the module back in step without a command: the harmless 190B with
+// SEND := RECEIVE, in one write on a bus with module consistency. Nothing but that read can execute, and
+// the queued command then goes with exactly one toggle.
+TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
     fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
     Request(0x1906, 1, 0);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked first, the SEND flag unchanged";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "parked, SEND follows RECEIVE: only 190B";
     EXPECT_TRUE(Busy());
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "SEND stays while the controller is live";
-    EXPECT_EQ(interface_->RESYNCS.value, 0u);
-    fromPac_ = Reply(false, false, true);  // the controller executed the parked read
-    Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "one toggle: the queued command";
-    fromPac_ = Reply(true, false, true, 0, 1, 5);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "one toggle: the queued command";
+    fromPac_ = Reply(false, false, true, 0, 1, 5);
     Cycle(1);
     EXPECT_TRUE(Done());
     EXPECT_EQ(cmd_->ACKDATA.value, 5u);
-    EXPECT_EQ(interface_->RESYNCS.value, 0u);
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+}
+
+// Without module consistency (TwoStepWrite) the SEND flag never changes in the write that changes the data:
+// first the parked module with the SEND flag it has, then SEND := RECEIVE, then the command's data, then its
+// toggle.
+TEST_F(FbPacCmd, WithTwoStepWriteTheResyncWaitsAScanForTheParkedData) {
+    interface_->TWOSTEPWRITE.value = TRUE;
+    fromPac_ = Reply(true, false, true);
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked first, the SEND flag unchanged";
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "then SEND follows RECEIVE over it";
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "the command's data, the SEND flag unchanged";
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "then its toggle";
 }
 
 TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
@@ -233,10 +247,14 @@ TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
     fromPac_ = Reply(false, false, false, 0, 0);  // restarting: status 0, RECEIVE back to 0
     Cycle(1);
     EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked: SEND = RECEIVE, harmless 190B";
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
     fromPac_ = Reply(false, false, true);  // booted
     Request(0x1906, 2, 0);
     Cycle(1);
-    EXPECT_TRUE(SendFlag()) << "the next command is one clean toggle";
+    EXPECT_FALSE(SendFlag()) << "a reply within a round trip (1 scan here) of the resync is not trusted";
+    EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_TRUE(SendFlag()) << "then the next command is one clean toggle";
 }
 
 // A command still processing (RECEIVE = SEND, END OF PROCESSING 0, a code that acknowledges before its

@@ -9,6 +9,8 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "../support/scan_window.hpp"
 #include "gvl_names.hpp"
@@ -150,6 +152,38 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
             << "step " << step.index + 1 << ": " << step.outcome->endScan - step.outcome->edgeScan
             << " scans, the protocol allows " << w;
     }
+}
+
+// The CMD interface's handshake history (docs/fb/FB_PAC_Cmd.md) is in the report and printed at the end:
+// one entry per command sent, in order, with what the FB saw of it.
+TEST(ScenarioRunner, TheHandshakeHistoryShowsEveryCommandSent) {
+    const ScenarioRun run(FromFile("demo.json"));
+    std::vector<std::size_t> commands;
+    for (const auto& step : run.report.steps) {
+        if (step.outcome) commands.push_back(step.index);
+    }
+    ASSERT_EQ(run.report.handshakes, commands.size()) << "every command of the demo is sent";
+    ASSERT_EQ(run.report.history.size(), commands.size());
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        SCOPED_TRACE("step " + std::to_string(commands[i] + 1));
+        const auto& sent = std::get<pac::scenario::CommandStep>(run.scenario.steps[commands[i]].action);
+        const auto& outcome = *run.report.steps[commands[i]].outcome;
+        const auto& h = run.report.history[i];
+        EXPECT_EQ(h.code, sent.code);
+        EXPECT_EQ(h.param, sent.param);
+        EXPECT_EQ(h.data, sent.data.bits);
+        EXPECT_EQ(h.errorId, outcome.errorId);
+        EXPECT_EQ(h.ackData, outcome.ackData);
+        EXPECT_EQ(h.scansToEnd, outcome.endScan - outcome.edgeScan);
+        EXPECT_GE(h.scansToAck, 1);
+        EXPECT_LE(h.scansToAck, h.scansToEnd);
+    }
+    const std::string& out = run.timeline.str();
+    const std::string heading = "CMD handshake history (Channel.History): the last " + std::to_string(commands.size()) +
+                                " of " + std::to_string(commands.size());
+    EXPECT_NE(out.find(heading), std::string::npos) << out;
+    EXPECT_LT(out.find(heading), out.find("Result: ")) << "before the result line";
+    EXPECT_NE(out.find("  16#0906      3  16#0000014D       0  16#0000014D"), std::string::npos) << out;
 }
 
 TEST(ScenarioRunner, LinkFaultExampleMeetsEveryExpectation) {

@@ -29,25 +29,29 @@
 
 namespace pac::test {
 
-// The longest FB_PAC_Cmd (and every FB built on it) stays Busy: Timeout waiting for a free interface,
-// one scan more with the two-step write, Timeout again for the acknowledgement (a timer of its own from
-// the toggle), then EndTimeout for END OF PROCESSING; each timer runs out in the first scan at least its
-// time after it started. T#0S on either pin means its default (T#1S, T#60S): no wait is unbounded.
+// A TIME pin's limit in force: T#0S (or less) is the pin's default on every pin of the library.
+inline std::chrono::nanoseconds TimeInForce(std::chrono::nanoseconds pin, std::chrono::nanoseconds pinDefault) {
+    return pin <= std::chrono::nanoseconds(0) ? pinDefault : pin;
+}
+
+// Whole PLC cycles a TON of `t` needs to run out.
+inline int ScansOf(std::chrono::nanoseconds t, std::chrono::nanoseconds plcCycle) {
+    return static_cast<int>((t + plcCycle - std::chrono::nanoseconds(1)) / plcCycle);
+}
+
+// The longest FB_PAC_Cmd (and every FB built on it) stays Busy: Timeout for the wait for the interface,
+// one scan for the SEND flag of a two-step write, Timeout again for the acknowledgement, then EndTimeout
+// for END OF PROCESSING; each timer runs out in the first scan at least its time after it started.
 inline std::optional<int> CommandBusyBound(std::chrono::nanoseconds timeout, std::chrono::nanoseconds endTimeout,
                                            std::chrono::nanoseconds plcCycle) {
     using std::chrono::seconds;
-    if (timeout <= std::chrono::nanoseconds(0)) timeout = seconds(1);
-    if (endTimeout <= std::chrono::nanoseconds(0)) endTimeout = seconds(60);
-    auto scans = [&](std::chrono::nanoseconds t) {
-        return static_cast<int>((t + plcCycle - std::chrono::nanoseconds(1)) / plcCycle);
-    };
-    return 2 * scans(timeout) + 1 + scans(endTimeout);
+    const int ack = ScansOf(TimeInForce(timeout, seconds(1)), plcCycle);
+    return ack + 1 + ack + ScansOf(TimeInForce(endTimeout, seconds(60)), plcCycle);
 }
 
-// FB_PAC_Ctrl: Timeout from the edge scan; T#0S waits without limit.
+// FB_PAC_Ctrl: Timeout from the edge scan (T#0S: T#10S).
 inline std::optional<int> RequestBusyBound(std::chrono::nanoseconds timeout, std::chrono::nanoseconds plcCycle) {
-    if (timeout <= std::chrono::nanoseconds(0)) return std::nullopt;
-    return static_cast<int>((timeout + plcCycle - std::chrono::nanoseconds(1)) / plcCycle);
+    return ScansOf(TimeInForce(timeout, std::chrono::seconds(10)), plcCycle);
 }
 
 template <class Fb>

@@ -5,19 +5,15 @@
 #include <cmath>
 
 #include "pac/sim/command_table.hpp"
+#include "command_replies.hpp"
 
 namespace pac::sim {
 
-namespace {
-
-CommandResult Ack(std::uint32_t data) { return CommandResult{data, error::kNone, true}; }
-CommandResult Fail(std::uint16_t number, std::uint32_t data = 0) { return CommandResult{data, number, true}; }
-
-std::uint16_t LowWord(std::uint32_t data) { return static_cast<std::uint16_t>(data & 0xFFFF); }
-std::uint32_t Bit(bool value) { return value ? 1U : 0U; }
-std::uint32_t Real(double value) { return FloatToBits(static_cast<float>(value)); }
-
-}  // namespace
+using reply::Ack;
+using reply::Bit;
+using reply::Fail;
+using reply::LowWord;
+using reply::Real;
 
 CommandResult CommandExecutor::Execute(const CommandFrame& c, std::chrono::nanoseconds now,
                                        PendingCommand& pending) {
@@ -51,19 +47,39 @@ CommandResult CommandExecutor::Execute(const CommandFrame& c, std::chrono::nanos
         case code::kGetStatusAllAxis:
         case code::kGetTraverseAreaMin:
         case code::kGetTraverseAreaMax:
+        case code::kGetExtendedStatusAxis:
             return StatusCommand(c);
+        case code::kGetRotationControlPos:
+        case code::kGetMaxTowfault:
+        case code::kGetAxisFollowingError:
+        case code::kGetTemperature:
+            return EpCommand(c);
         case code::kGetSystemFlag:
         case code::kGetSystemNReg:
         case code::kGetSystemRReg:
             return SystemElementCommand(c);
         case code::kPutNoReference:
+        case code::kPutStartReference:
+        case code::kPutPositionNull:
+        case code::kPutSetPosition:
         case code::kPosAxisAbsolute:
         case code::kPosAxisRelative:
         case code::kSetSpeedAxis:
         case code::kSetAccelerationAxis:
+        case code::kStartManualAbsolute:
+        case code::kStartManualRelative:
+        case code::kControlMoveAxis:
         case code::kStopAxis:
         case code::kStartAxisAbsolute:
         case code::kStartAxisRelative:
+        case code::kPutReferenceOnPosition:
+        case code::kOnAxis:
+        case code::kOffAxis:
+        case code::kStopAxisMultiCmd:
+        case code::kSetMeasuringMode:
+        case code::kResetMeasuringMode:
+        case code::kPutLimitSwitchMonitoring:
+        case code::kPutConditionMoveAxis:
             // 2.7 note: with axis modules configured, the axes move only through them.
             if (state_.axisModules > 0) return Fail(error::kInadmissibleCommand);
             return OnlineCommand(c, now, pending);
@@ -224,7 +240,15 @@ CommandResult CommandExecutor::StatusCommand(const CommandFrame& c) {
     switch (c.code) {
         case code::kGetActualPos: return Ack(Real(motion.Position()));
         case code::kGetActualSpeed: return Ack(Real(motion.ActualSpeed()));
-        case code::kGetStatusAxis: return Ack(static_cast<std::uint32_t>(motion.Status()));
+        case code::kGetStatusAxis: return Ack(AxisStatusValue(axis));
+        case code::kGetExtendedStatusAxis: {
+            // 5.2.4.28, byte 0 (bits 31..24) first: power pack ready, positive and negative limit switch
+            // not actuated (1 each), the axis status of 1910 (example 0100 0104: ready, positive switch
+            // actuated, negative not, malfunction).
+            const bool ready = IsPowered(motion.Drive()) && !motion.Fault();
+            return Ack(Bit(ready) << 24 | Bit(!motion.PositiveLimitSwitch()) << 16 |
+                       Bit(!motion.NegativeLimitSwitch()) << 8 | AxisStatusValue(axis));
+        }
         case code::kGetTraverseAreaMin:
         case code::kGetTraverseAreaMax: {
             const auto number = c.code == code::kGetTraverseAreaMin ? axisparam::kMinTraverseArea
@@ -234,6 +258,31 @@ CommandResult CommandExecutor::StatusCommand(const CommandFrame& c) {
         }
         default: return Fail(error::kUnknownCommand);
     }
+}
+
+CommandResult CommandExecutor::EpCommand(const CommandFrame& c) {
+    const OnlineCommandOptions& options = state_.online.Options();
+    if (!options.epCommands) return Fail(error::kUnknownCommand);
+    const int axis = c.parameter;
+    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
+    const ServoAxis& motion = state_.axes.Motion(axis);
+    double value = 0.0;
+    switch (c.code) {
+        // 5.2.4.20: a 32-bit real; the simulated encoder follows the axis exactly.
+        case code::kGetRotationControlPos: return Ack(Real(motion.Position()));
+        case code::kGetMaxTowfault: value = state_.online.MaxFollowingError(axis); break;
+        case code::kGetAxisFollowingError: value = motion.FollowingError(); break;
+        default: value = options.temperature; break;
+    }
+    // 5.2.4.26 / 5.2.4.27: "0000 - FFFF" in the header, IEEE REAL bytes in the examples (a setting).
+    if (options.epValuesAsReal) return Ack(Real(value));
+    return Ack(static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(value))));
+}
+
+std::uint32_t CommandExecutor::AxisStatusValue(int axis) const {
+    // 5.2.4.22: 8 for an axis in measuring mode (it stands: moves are refused), else the axis's own status.
+    if (state_.online.MeasuringMode(axis)) return 8;
+    return static_cast<std::uint32_t>(state_.axes.Motion(axis).Status());
 }
 
 CommandResult CommandExecutor::SystemElementCommand(const CommandFrame& c) {
@@ -262,73 +311,6 @@ CommandResult CommandExecutor::SystemElementCommand(const CommandFrame& c) {
             if (n >= 71 && n <= 86 && axes.Contains(n - 70)) return Ack(Real(axes.Motion(n - 70).Target()));
             return Ack(e.systemRealRegisters.Get(n));
     }
-}
-
-CommandResult CommandExecutor::OnlineCommand(const CommandFrame& c, std::chrono::nanoseconds now,
-                                             PendingCommand& pending) {
-    switch (c.code) {
-        case code::kPosAxisAbsolute: return StartMove(c, now, false, true, pending);
-        case code::kPosAxisRelative: return StartMove(c, now, true, true, pending);
-        case code::kStartAxisAbsolute: return StartMove(c, now, false, false, pending);
-        case code::kStartAxisRelative: return StartMove(c, now, true, false, pending);
-        default: break;
-    }
-    const int axis = c.parameter;
-    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
-    ServoAxis& motion = state_.axes.Motion(axis);
-    switch (c.code) {
-        case code::kPutNoReference:
-            motion.SetReferenced(true);
-            return Ack(0);
-        case code::kSetSpeedAxis:
-        case code::kSetAccelerationAxis: {
-            // 5.2.6.8 / 5.2.6.9: only within the limits of the traverse speed / acceleration parameter.
-            const bool isSpeed = c.code == code::kSetSpeedAxis;
-            const std::uint16_t parameter = isSpeed ? axisparam::kTraverseSpeed : axisparam::kAcceleration;
-            const float value = BitsToFloat(c.data);
-            const ParameterTable& parameters = state_.axes.Parameters(axis);
-            if (!(value > 0.0F) || !std::isfinite(value) ||
-                (parameters.Contains(parameter) && !parameters.WithinLimits(parameter, c.data))) {
-                return Fail(error::kValueOutsideRange);
-            }
-            if (isSpeed) {
-                state_.axes.SetSessionSpeed(axis, value);
-            } else {
-                state_.axes.SetSessionAcceleration(axis, value);  // one parameter for both ramps
-            }
-            return Ack(c.data);
-        }
-        case code::kStopAxis: {
-            // 5.2.6.13: acknowledged with end of processing only when the axis stands still.
-            motion.Interrupt(now);
-            if (motion.Moving()) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
-            return CommandResult{Real(motion.Position()), error::kNone, !motion.Moving()};
-        }
-        default:
-            return Fail(error::kUnknownCommand);
-    }
-}
-
-CommandResult CommandExecutor::StartMove(const CommandFrame& c, std::chrono::nanoseconds now, bool relative,
-                                         bool waitForEnd, PendingCommand& pending) {
-    // Axes move in ONLINE proper (31), not while stopping, stopped or with malfunction.
-    if (state_.operatingStatus != status::kOnline) return Fail(error::kInadmissibleCommand);
-    const int axis = c.parameter;
-    if (!state_.AxisAddressable(axis)) return Fail(error::kAxisNumberUnknown);
-    const float value = BitsToFloat(c.data);
-    if (!std::isfinite(value)) return Fail(error::kValueOutsideRange);
-    ServoAxis& motion = state_.axes.Motion(axis);
-    const double start = motion.Position();
-    // The axis checks the rest (46 axis error, 55 not switched on, 56 displaced, 42 still moves, 43 no
-    // reference, 65 outside the traverse range, 64 into an actuated limit switch) with the session dynamics.
-    const Dynamics& dynamics = state_.axes.SessionDynamics(axis);
-    const std::uint16_t refusal = relative ? motion.MoveRelative(now, value, dynamics)
-                                           : motion.MoveAbsolute(now, value, dynamics);
-    if (refusal != 0) return Fail(refusal);
-    // 5.2.6.6: the acknowledgement data is the start position; 0A94/0A95 end processing at once.
-    const bool finished = !waitForEnd || (!motion.JobActive() && !motion.Moving());
-    if (!finished) pending = PendingCommand{PendingCommand::Kind::kAxisMotion, axis};
-    return CommandResult{Real(start), error::kNone, finished};
 }
 
 }  // namespace pac::sim

@@ -15,6 +15,13 @@ void CheckDelay(std::chrono::nanoseconds value, const char* what) {
     }
 }
 
+void CheckTearPercent(int percent) {
+    if (percent < 0 || percent > 100) throw std::invalid_argument("Link: tear percent outside 0..100");
+}
+
+// Its own stream: a torn link draws the same jitter as an intact one.
+constexpr std::uint64_t kTearSeedSalt = 0x7EA5'0F1A'2B3C'4D5EULL;
+
 }  // namespace
 
 const char* ToString(LinkFault fault) {
@@ -28,9 +35,16 @@ const char* ToString(LinkFault fault) {
 }
 
 Link::Link(LinkConfig config, std::size_t imageBytes)
-    : config_(config), rng_(config.seed), imageBytes_(imageBytes), delivered_(imageBytes), frozen_(imageBytes) {
+    : config_(config),
+      rng_(config.seed),
+      tearRng_(config.seed ^ kTearSeedSalt),
+      imageBytes_(imageBytes),
+      delivered_(imageBytes),
+      beforeDelivered_(imageBytes),
+      frozen_(imageBytes) {
     CheckDelay(config_.latency, "latency");
     CheckDelay(config_.jitter, "jitter");
+    CheckTearPercent(config_.tearPercent);
     if (imageBytes == 0) throw std::invalid_argument("Link: image size 0");
 }
 
@@ -59,7 +73,7 @@ ProcessImage Link::Read(std::chrono::nanoseconds now) {
     CheckReaderTime(now, "Read");
     Deliver(now);
     switch (fault_) {
-        case LinkFault::kNone: return delivered_;
+        case LinkFault::kNone: return ReadDelivered();
         case LinkFault::kFrozen: return frozen_;
         case LinkFault::kAllZero:
         case LinkFault::kDisconnected: return ProcessImage(imageBytes_);
@@ -91,11 +105,31 @@ void Link::SetJitter(std::chrono::nanoseconds jitter) {
     config_.jitter = jitter;
 }
 
+void Link::SetTearPercent(int percent) {
+    CheckTearPercent(percent);
+    config_.tearPercent = percent;
+}
+
 void Link::Deliver(std::chrono::nanoseconds now) {
     while (!inFlight_.empty() && inFlight_.front().arrival <= now) {
+        beforeDelivered_ = delivered_;
         delivered_ = inFlight_.front().image;
+        unread_ = true;
         inFlight_.pop_front();
     }
+}
+
+ProcessImage Link::ReadDelivered() {
+    const bool fresh = unread_;
+    unread_ = false;
+    if (!fresh || config_.tearPercent == 0 || delivered_ == beforeDelivered_) return delivered_;
+    if (tearRng_.UniformUpTo(99) >= static_cast<std::uint64_t>(config_.tearPercent)) return delivered_;
+    ProcessImage torn = delivered_;
+    for (std::size_t i = 0; i < imageBytes_; ++i) {
+        if ((tearRng_.Next() & 1U) != 0) torn[i] = beforeDelivered_[i];
+    }
+    if (torn != delivered_) ++tornReads_;
+    return torn;
 }
 
 void Link::CheckReaderTime(std::chrono::nanoseconds now, const char* what) {

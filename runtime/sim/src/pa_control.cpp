@@ -39,10 +39,11 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       layout_(bus.Layout()),
       config_(CheckedConfig(config)),
       state_(config_.counts, config_.systemParameters, config_.axisCapacity, config_.axisParameters,
-             config_.axisMachine),
+             config_.axisMachine, config_.online),
       modes_(state_, config_.modes),
       executor_(state_, modes_),
       ctrl_(modes_, state_),
+      protocol_(config_.cmd),
       log_(config_.logCapacity),
       bootEnd_(config_.bootTime),
       lastFromPac_(layout_.Bytes()),
@@ -94,6 +95,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     }
 
     state_.axes.UpdateAll(now);
+    state_.online.Supervise(now, state_.axes, state_.elements, state_.CurrentMode() == Mode::kOnline);
     const bool allZero = toPac.AllZero();
     if (allZero && communicationActive_ && !emergencyStop_) EmergencyStop(now);
     modes_.Step(now);
@@ -111,7 +113,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         communicationActive_ = true;
         emergencyStop_ = false;
         const CommandFrame command = CommandFrame::Decode(toPac.Cmd());
-        if (protocol_.IsNewCommand(command)) {
+        if (protocol_.Recognise(command)) {
             record.newCommand = true;
             Execute(command, now);
         }
@@ -119,6 +121,8 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         // the CTRL module, they take no control word from an all-zero image (the emergency stop has halted
         // the axes); they report all the same.
         ServeAxisModules(toPac, now);
+    } else {
+        protocol_.SeeAllZeroImage();
     }
     // COM1 needs no fieldbus: an RS232-only controller sees an all-zero image all the time.
     serial_.Cycle(now, serialHost_);
@@ -159,6 +163,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     bootEnd_ = now + config_.bootTime;
 
     state_.axes.Restart(now, config_.referencedAtPowerOn);
+    state_.online.Reset();
     for (AxisModule& module : modules_) module.Reset();
     Elements& e = state_.elements;
     if (!config_.retention.intRegisters) e.intRegisters.Clear();
@@ -171,7 +176,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     modes_.PowerOff();
     ctrl_.Reset();
 
-    protocol_.Reset();
+    protocol_.PowerOn();
     pending_ = PendingCommand{};
     serial_.Reset();
     injectedError_.reset();
@@ -181,8 +186,8 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
 }
 
 void PaControl::InjectCommandError(std::uint16_t errorNumber) {
-    if (errorNumber == 0 || errorNumber > 0x1FFF) {
-        throw std::invalid_argument("PaControl::InjectCommandError: error number must be 1..8191");
+    if (errorNumber > 0x1FFF) {
+        throw std::invalid_argument("PaControl::InjectCommandError: error number must be 0..8191");
     }
     injectedError_ = errorNumber;
 }
@@ -198,7 +203,7 @@ void PaControl::CheckTime(std::chrono::nanoseconds now, const char* what) {
 void PaControl::Boot() {
     booted_ = true;
     modes_.Boot();
-    protocol_.Reset();
+    protocol_.PowerOn();
 }
 
 void PaControl::EmergencyStop(std::chrono::nanoseconds now) {
@@ -212,20 +217,28 @@ void PaControl::Execute(const CommandFrame& command, std::chrono::nanoseconds no
     // A new command takes the CMD reply over; an earlier one still processing is no longer reported
     // (its axis carries on: 1910 / 190C show it).
     pending_ = PendingCommand{};
-    protocol_.Acknowledge(command.send, RunCommand(command, now, pending_));
+    const bool errorWithoutNumber = injectedError_ == std::uint16_t{0};
+    const CommandResult result = RunCommand(command, now, pending_);
+    if (errorWithoutNumber) {
+        protocol_.AcknowledgeCommandErrorWithoutNumber(command.send);
+    } else {
+        protocol_.Acknowledge(command.send, result);
+    }
 }
 
 CommandResult PaControl::RunCommand(const CommandFrame& command, std::chrono::nanoseconds now, PendingCommand& pending) {
     ++counters_.recognized;
     ++counters_.byCode[command.code];
     CommandResult result;
+    bool refused = true;
     if (injectedError_) {
         result = CommandResult{0, *injectedError_, true};
         injectedError_.reset();
     } else {
         result = executor_.Execute(command, now, pending);
+        refused = result.error != 0;
     }
-    if (result.error == 0) {
+    if (!refused) {
         ++counters_.executed;
     } else {
         ++counters_.failed;

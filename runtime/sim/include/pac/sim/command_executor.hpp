@@ -1,6 +1,6 @@
 // Carries out one CMD command on the controller state (manual 5.2) and says what to acknowledge:
 // acknowledgement data, command error number, and whether processing has ended. Commands that end
-// later (axis moves, axis stop, and the mode commands 0600 / 0602 / 0603 while the status is
+// later (axis moves, reference run 0A84, axis stop, and the mode commands 0600 / 0602 / 0603 while the status is
 // transitional) leave a PendingCommand that Poll() follows cycle by cycle. Mode changes are the
 // ModeMachine's; the SEND/RECEIVE handshake is CmdProtocol's.
 #pragma once
@@ -44,9 +44,16 @@ private:
     CommandResult ElementCommand(const CommandFrame& c);
     CommandResult StatusCommand(const CommandFrame& c);
     CommandResult SystemElementCommand(const CommandFrame& c);
+    CommandResult EpCommand(const CommandFrame& c);  // 190E, 190F, 1915, 1920: PA-CONTROL EP only
+    std::uint32_t AxisStatusValue(int axis) const;   // 1910
+    // command_executor_online.cpp: the ONLINE axis commands of 5.2.6.
     CommandResult OnlineCommand(const CommandFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
     CommandResult StartMove(const CommandFrame& c, std::chrono::nanoseconds now, bool relative, bool waitForEnd,
                             PendingCommand& pending);
+    CommandResult ReferenceCommand(const CommandFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
+    CommandResult StopCommand(const CommandFrame& c, std::chrono::nanoseconds now, PendingCommand& pending);
+    CommandResult AxisSettingCommand(const CommandFrame& c, std::chrono::nanoseconds now);
+    CommandResult ConditionCommand(const CommandFrame& c);
 
     ControllerState& state_;
     ModeMachine& modes_;

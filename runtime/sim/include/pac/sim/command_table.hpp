@@ -41,23 +41,42 @@ constexpr std::uint16_t kGetError = 0x1909;
 constexpr std::uint16_t kGetState = 0x190B;
 constexpr std::uint16_t kGetActualPos = 0x190C;
 constexpr std::uint16_t kGetActualSpeed = 0x190D;
+constexpr std::uint16_t kGetRotationControlPos = 0x190E;  // the overview repeats "190D" (NOTES.md)
+constexpr std::uint16_t kGetMaxTowfault = 0x190F;         // overview only: 5.2.4.21 is missing
 constexpr std::uint16_t kGetStatusAxis = 0x1910;
 constexpr std::uint16_t kGetStatusAllAxis = 0x1911;
 constexpr std::uint16_t kGetTraverseAreaMin = 0x1913;
 constexpr std::uint16_t kGetTraverseAreaMax = 0x1914;
+constexpr std::uint16_t kGetAxisFollowingError = 0x1915;
+constexpr std::uint16_t kGetTemperature = 0x1920;
+constexpr std::uint16_t kGetExtendedStatusAxis = 0x1921;
 constexpr std::uint16_t kGetSystemFlag = 0x1934;  // the overview's "934"
 constexpr std::uint16_t kGetSystemNReg = 0x1935;  // the overview's "935"
 constexpr std::uint16_t kGetSystemRReg = 0x1937;  // the overview's "0937"
 constexpr std::uint16_t kAbortAuto = 0x0A41;
 constexpr std::uint16_t kAbortOnline = 0x0A81;
 constexpr std::uint16_t kPutNoReference = 0x0A83;
+constexpr std::uint16_t kPutStartReference = 0x0A84;
+constexpr std::uint16_t kPutPositionNull = 0x0A85;
+constexpr std::uint16_t kPutSetPosition = 0x0A86;
 constexpr std::uint16_t kPosAxisAbsolute = 0x0A87;
 constexpr std::uint16_t kPosAxisRelative = 0x0A89;
 constexpr std::uint16_t kSetSpeedAxis = 0x0A8D;
 constexpr std::uint16_t kSetAccelerationAxis = 0x0A8E;
+constexpr std::uint16_t kStartManualAbsolute = 0x0A90;
+constexpr std::uint16_t kStartManualRelative = 0x0A91;
+constexpr std::uint16_t kControlMoveAxis = 0x0A92;
 constexpr std::uint16_t kStopAxis = 0x0A93;
 constexpr std::uint16_t kStartAxisAbsolute = 0x0A94;
 constexpr std::uint16_t kStartAxisRelative = 0x0A95;
+constexpr std::uint16_t kPutReferenceOnPosition = 0x0A96;
+constexpr std::uint16_t kOnAxis = 0x0A97;
+constexpr std::uint16_t kOffAxis = 0x0A98;
+constexpr std::uint16_t kStopAxisMultiCmd = 0x0A9A;
+constexpr std::uint16_t kSetMeasuringMode = 0x0AA0;
+constexpr std::uint16_t kResetMeasuringMode = 0x0AA1;
+constexpr std::uint16_t kPutLimitSwitchMonitoring = 0x0AA2;
+constexpr std::uint16_t kPutConditionMoveAxis = 0x0AA3;
 }  // namespace code
 
 namespace error {
@@ -77,7 +96,9 @@ constexpr std::uint16_t kValueOutsideRange = 41;        // 16#29
 constexpr std::uint16_t kAxisStillMoves = 42;           // 16#2A
 constexpr std::uint16_t kNoReferencePoint = 43;         // 16#2B
 constexpr std::uint16_t kExternalStopNotDefined = 44;   // 16#2C
+constexpr std::uint16_t kAxisNotReady = 46;             // 16#2E (the manual prints a second 16#2D)
 constexpr std::uint16_t kPositionOutsideRange = 65;     // 16#41
+constexpr std::uint16_t kMeasuringModeNotAdmissible = 108;  // 16#6C: only with 0AA0 / 0AA1
 }  // namespace error
 
 struct CommandInfo {

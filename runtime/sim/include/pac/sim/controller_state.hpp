@@ -1,5 +1,6 @@
 // Everything the simulated PA-CONTROL knows, apart from the CMD handshake: operating status, system
-// error number, format in force, battery, elements, system parameters and axes. PaControl owns one;
+// error number, format in force, battery, elements, system parameters, axes and what the ONLINE commands
+// keep per axis. PaControl owns one;
 // CommandExecutor works on it; ModeMachine alone changes the status, error number and format.
 #pragma once
 
@@ -9,6 +10,7 @@
 
 #include "pac/sim/axis_group.hpp"
 #include "pac/sim/elements.hpp"
+#include "pac/sim/online_axes.hpp"
 #include "pac/sim/operating_status.hpp"
 #include "pac/sim/parameter_table.hpp"
 
@@ -16,10 +18,12 @@ namespace pac::sim {
 
 struct ControllerState {
     ControllerState(const ElementCounts& counts, const std::vector<ParameterSpec>& systemSpecs, int axisCapacity,
-                    const std::vector<ParameterSpec>& axisSpecs, const ServoAxisConfig& axisMachine = {})
+                    const std::vector<ParameterSpec>& axisSpecs, const ServoAxisConfig& axisMachine = {},
+                    const OnlineCommandOptions& onlineOptions = {})
         : elements(counts),
           systemParameters(ParameterType::kInt32, systemSpecs),
-          axes(axisCapacity, axisSpecs, axisMachine) {}
+          axes(axisCapacity, axisSpecs, axisMachine),
+          online(axisCapacity, onlineOptions) {}
 
     // Addressable axes: system parameter 2 ("Number of axes"), within 0..axes.Capacity().
     int NumberOfAxes() const {
@@ -37,6 +41,7 @@ struct ControllerState {
     Elements elements;
     ParameterTable systemParameters;
     AxisGroup axes;
+    OnlineAxes online;  // what the ONLINE commands keep per axis beside its motion
 };
 
 }  // namespace pac::sim

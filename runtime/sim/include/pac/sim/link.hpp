@@ -15,6 +15,11 @@
 //   kDisconnected the reader sees zero bytes; images in flight are lost, writes are dropped, and
 //                 after reconnection (SetFault(now, kNone)) the reader keeps seeing zeros until the
 //                 first image written after the reconnection arrives.
+//
+// Tearing (LinkConfig::tearPercent, for buses without module consistency such as Interbus-S, 4.2.4):
+//   a Read that finds a newly arrived image catches it, with that chance in percent, in the middle of
+//   its update: each byte is the newest image's or the one that arrived just before it, drawn from the
+//   seed (a generator of its own, so the jitter draws stay the same). The next read sees it whole.
 // Writes must come in non-decreasing time, and so must reads and SetFault calls (a fault acts at the
 // reader's side); std::invalid_argument otherwise.
 #pragma once
@@ -37,6 +42,7 @@ struct LinkConfig {
     std::chrono::nanoseconds latency{0};
     std::chrono::nanoseconds jitter{0};  // extra delay, uniform in [0, jitter]
     std::uint64_t seed = 1;
+    int tearPercent = 0;  // 0..100: chance that the first read of a new image sees it torn
 };
 
 class Link {
@@ -55,11 +61,13 @@ public:
     // Take effect for later writes; order is still preserved.
     void SetLatency(std::chrono::nanoseconds latency);
     void SetJitter(std::chrono::nanoseconds jitter);
+    void SetTearPercent(int percent);  // outside 0..100: std::invalid_argument
     const LinkConfig& Config() const { return config_; }
 
     // Arrival time of the newest image written so far (for tests of the ordering rule).
     std::chrono::nanoseconds LastArrival() const { return lastArrival_; }
     std::uint64_t WritesDropped() const { return writesDropped_; }
+    std::uint64_t TornReads() const { return tornReads_; }  // reads that returned a torn image
 
 private:
     struct InFlight {
@@ -68,19 +76,24 @@ private:
     };
 
     void Deliver(std::chrono::nanoseconds now);  // moves arrived images to delivered_
+    ProcessImage ReadDelivered();                 // delivered_, or torn on its first read
     void CheckReaderTime(std::chrono::nanoseconds now, const char* what);
 
     LinkConfig config_;
     SplitMix64 rng_;
+    SplitMix64 tearRng_;
     std::deque<InFlight> inFlight_;
     std::size_t imageBytes_;
     ProcessImage delivered_;
+    ProcessImage beforeDelivered_;  // the image that arrived just before delivered_
+    bool unread_ = false;           // delivered_ arrived after the last read
     ProcessImage frozen_;
     LinkFault fault_ = LinkFault::kNone;
     std::chrono::nanoseconds lastArrival_{std::chrono::nanoseconds::min()};
     std::chrono::nanoseconds lastWrite_{std::chrono::nanoseconds::min()};
     std::chrono::nanoseconds lastRead_{std::chrono::nanoseconds::min()};
     std::uint64_t writesDropped_ = 0;
+    std::uint64_t tornReads_ = 0;
 };
 
 }  // namespace pac::sim

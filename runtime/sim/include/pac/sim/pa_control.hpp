@@ -54,6 +54,8 @@ struct PaControlConfig {
     RetentionRule retention{};
     bool referencedAtPowerOn = true;
     ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
+    OnlineCommandOptions online{};  // keep-alive, EP-only commands, readings of 5.2.6.23 (online_axes.hpp)
+    CmdProtocolConfig cmd{};  // the manual's open points of the CMD handshake (docs/sim_cmd.md)
     std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
 };
 
@@ -111,7 +113,8 @@ public:
     // 2.5.2 status word bit 1 (true at construction; survives power cycles).
     void SetBatteryOk(bool ok) { state_.batteryOk = ok; }
     // The next recognised command is not carried out but answered with KF = 1 and this number
-    // (1..16#1FFF, std::invalid_argument otherwise). One shot; a power cycle drops it.
+    // (0..16#1FFF, std::invalid_argument otherwise; 0: KF = 1 without a number, which the manual does not
+    // rule out). One shot; a power cycle drops it.
     void InjectCommandError(std::uint16_t errorNumber);
 
     // The axis module of axis `axis` (1..Layout().axisModules; std::out_of_range otherwise).
@@ -131,6 +134,7 @@ public:
     ParameterTable& SystemParameters() { return state_.systemParameters; }
     AxisGroup& Axes() { return state_.axes; }
     const AxisGroup& Axes() const { return state_.axes; }
+    const OnlineAxes& Online() const { return state_.online; }  // measuring mode, monitoring, conditions
     ControllerState& State() { return state_; }
 
     const CommandCounters& Counters() const { return counters_; }

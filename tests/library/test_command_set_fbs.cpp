@@ -1,0 +1,540 @@
+// The FBs for the rest of chapter 5 (docs/commands.md) and the moves that keep the CMD interface free
+// (docs/fb/axis_following.md), against the simulated PA-CONTROL over the simulated bus on the timings of
+// the parameter and axis FBs: PLC cycle 1 and 5 ms, controller cycle 3 and 10 ms, latency 0 and 2 PLC
+// cycles each way. Every FB sits on the one CMD interface, as in a PLC program; the PLCopen outputs of the
+// Execute-driven FBs are checked in every scan (plcopen_checker.hpp).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+
+#include "bus_timing.hpp"
+#include "command_plc.hpp"
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/st_program.hpp"
+#include "real_bits.hpp"
+#include "run_to_final.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using std::chrono::nanoseconds;
+
+const pac::test::GvlConstants kGvl;
+
+using pac::test::BusTiming;
+using pac::test::FinalOutcome;
+
+std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
+
+class CommandSetBench {
+public:
+    explicit CommandSetBench(const BusTiming& t, pac::sim::PaControlConfig config = {}) : plc_(t, config) {
+        plc_.Add("WriteSystemParameter", writeSys);
+        plc_.Add("ModeCommand", mode);
+        plc_.Add("MoveAxisAbsolute", moveAbs);
+        plc_.Add("MoveAxisRelative", moveRel);
+        plc_.Add("StopAxis", stop);
+        plc_.Add("ReadIntReg", readN);
+        plc_.Add("ReadAxisStatus", readStatus);
+        plc_.Add("SetAxisReference", reference);
+        plc_.Add("SwitchAxis", switchAxis);
+        plc_.Add("SetMeasuringMode", measuring);
+        plc_.Add("SetLimitSwitchMonitoring", monitoring);
+        plc_.Add("SetMoveCondition", condition);
+        plc_.Add("ReadAxisValue", readValue);
+        plc_.Add("ReadExtendedAxisStatus", readExtended);
+        plc_.Bench().Call(jog);  // level-driven: no Execute for the PLCopen checker
+        plc_.Start();
+        for (int i = 0; i < 1000 && !Controller().Booted(); ++i) plc_.Scan();
+        plc_.Scan(3 + 2 * t.latency);
+    }
+
+    template <class Fb>
+    FinalOutcome Run(pac::FbInstance<Fb>& fb, int maxScans = 20000) { return plc_.Run(fb, maxScans); }
+    template <class Fb>
+    void Start(pac::FbInstance<Fb>& fb) { plc_.Begin(fb); }
+    template <class Fb>
+    FinalOutcome Wait(pac::FbInstance<Fb>& fb, int maxScans = 20000, const std::function<void()>& eachScan = {}) {
+        return plc_.Wait(fb, maxScans, eachScan);
+    }
+    template <class Fb>
+    void Release(pac::FbInstance<Fb>& fb) { plc_.Release(fb); }
+
+    // ONLINE as 5.2.1.3 asks: system parameter 4 names the external stop input, it has power, then 0603.
+    bool GoOnline() {
+        writeSys->PARAMETERNUMBER.value = 4;
+        writeSys->VALUE.value = 7;
+        if (!Run(writeSys).Done()) return false;
+        Controller().Io().inputs.Set(7, true);
+        mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_START_ONLINE;
+        if (!Run(mode).Done()) return false;
+        return Controller().OperatingStatus() == 31;
+    }
+    // Scans while `more` holds, at most `limit`.
+    void ScanWhile(const std::function<bool()>& more, int limit = 20000) {
+        for (int i = 0; i < limit && more(); ++i) plc_.Scan();
+    }
+    void Settle(int scans) { plc_.Scan(scans); }
+    void SettleFor(nanoseconds t) { plc_.Scan(plc_.Timing().ScansFor(t)); }
+    pac::sim::PaControl& Controller() { return plc_.Controller(); }
+    pac::sim::ServoAxis& Motion(int axis) { return Controller().Axes().Motion(axis); }
+    std::uint64_t Count(std::uint16_t code) { return Controller().Counters().Count(code); }
+    // The code of the newest command the controller recognised.
+    std::uint16_t LastCode() { return pac::sim::ReadWord(plc_.LastCommandSeen(), 3) & 0x7FFF; }
+    std::uint32_t LastData() { return pac::sim::ReadDword(plc_.LastCommandSeen(), 0); }
+    nanoseconds Now() const { return plc_.Now(); }
+
+    pac::FbInstance<FB_PAC_WRITESYSTEMPARAMETER> writeSys = PAC_FB(FB_PAC_WRITESYSTEMPARAMETER);
+    pac::FbInstance<FB_PAC_MODECOMMAND> mode = PAC_FB(FB_PAC_MODECOMMAND);
+    pac::FbInstance<FB_PAC_MOVEAXISABSOLUTE> moveAbs = PAC_FB(FB_PAC_MOVEAXISABSOLUTE);
+    pac::FbInstance<FB_PAC_MOVEAXISRELATIVE> moveRel = PAC_FB(FB_PAC_MOVEAXISRELATIVE);
+    pac::FbInstance<FB_PAC_STOPAXIS> stop = PAC_FB(FB_PAC_STOPAXIS);
+    pac::FbInstance<FB_PAC_READINTREG> readN = PAC_FB(FB_PAC_READINTREG);
+    pac::FbInstance<FB_PAC_READAXISSTATUS> readStatus = PAC_FB(FB_PAC_READAXISSTATUS);
+    pac::FbInstance<FB_PAC_SETAXISREFERENCE> reference = PAC_FB(FB_PAC_SETAXISREFERENCE);
+    pac::FbInstance<FB_PAC_SWITCHAXIS> switchAxis = PAC_FB(FB_PAC_SWITCHAXIS);
+    pac::FbInstance<FB_PAC_SETMEASURINGMODE> measuring = PAC_FB(FB_PAC_SETMEASURINGMODE);
+    pac::FbInstance<FB_PAC_SETLIMITSWITCHMONITORING> monitoring = PAC_FB(FB_PAC_SETLIMITSWITCHMONITORING);
+    pac::FbInstance<FB_PAC_SETMOVECONDITION> condition = PAC_FB(FB_PAC_SETMOVECONDITION);
+    pac::FbInstance<FB_PAC_READAXISVALUE> readValue = PAC_FB(FB_PAC_READAXISVALUE);
+    pac::FbInstance<FB_PAC_READEXTENDEDAXISSTATUS> readExtended = PAC_FB(FB_PAC_READEXTENDEDAXISSTATUS);
+    pac::FbInstance<FB_PAC_JOGAXIS> jog = PAC_FB(FB_PAC_JOGAXIS);
+
+private:
+    pac::test::CommandPlc plc_;
+};
+
+class CommandSetFbs : public ::testing::TestWithParam<BusTiming> {};
+
+// ---- 0A94 / 0A95 / 0A9A followed by 1910 (5.2.6.14, 5.2.6.15, 5.2.6.19; issue 10 defect 1) ----
+
+// 5.2.6.14: 0A94 ends its processing at once, so a read may follow during the move; the FB reports Done only
+// when 1910 says "in position" (5.2.4.22: 0), with the end position.
+TEST_P(CommandSetFbs, FreeInterfaceMoveLetsAReadThroughAndIsDoneOnlyInPosition) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.Controller().Io().intRegisters.SetInt(5, -4711);
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 600.0F;  // about 0.7 s at 1000 AE/s
+    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.moveAbs);
+    bench.ScanWhile([&] { return !bench.moveAbs->ACTIVE.value && bench.moveAbs->BUSY.value; });
+    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
+    EXPECT_EQ(bench.Count(0x0A94), 1u);
+    EXPECT_EQ(bench.Count(0x0A87), 0u);
+
+    bench.readN->NUMBER.value = 5;
+    bench.Start(bench.readN);
+    bool doneWhileMoving = true;
+    FinalOutcome read = bench.Wait(bench.readN, 5000);
+    doneWhileMoving = bench.Motion(1).Moving();
+    bench.Release(bench.readN);
+    ASSERT_TRUE(read.Done()) << read;
+    EXPECT_EQ(bench.readN->VALUE.value, -4711);
+    EXPECT_TRUE(doneWhileMoving) << "the read went through during the move";
+    EXPECT_TRUE(bench.moveAbs->BUSY.value) << "the move is still followed";
+
+    bool doneBeforeArrival = false;
+    FinalOutcome move = bench.Wait(bench.moveAbs, 20000, [&] {
+        if (bench.moveAbs->DONE.value && bench.Motion(1).Status() != pac::sim::AxisStatus::kInPosition) {
+            doneBeforeArrival = true;
+        }
+    });
+    ASSERT_TRUE(move.Done()) << move;
+    EXPECT_FALSE(doneBeforeArrival);
+    EXPECT_EQ(bench.Motion(1).Position(), 600.0);
+    EXPECT_EQ(Bits(bench.moveAbs->ACTUALPOSITION.value), Bits(600.0F)) << "the end position, read by 190C";
+    EXPECT_GE(bench.Count(0x1910), 2u);
+    EXPECT_EQ(bench.LastCode(), 0x190C);
+    bench.Release(bench.moveAbs);
+    EXPECT_FALSE(bench.moveAbs->DONE.value);
+}
+
+TEST_P(CommandSetFbs, FreeInterfaceRelativeMoveSendsTheManualsCode) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.Motion(2).Place(bench.Now(), 100.0);
+    bench.moveRel->AXIS.value = 2;
+    bench.moveRel->DISTANCE.value = 10.0F;  // 5.2.6.15 example: by 10.0
+    bench.moveRel->FREEINTERFACE.value = TRUE;
+    FinalOutcome move = bench.Run(bench.moveRel);
+    ASSERT_TRUE(move.Done()) << move;
+    EXPECT_EQ(bench.Count(0x0A95), 1u);
+    EXPECT_EQ(bench.Motion(2).Position(), 110.0);
+    EXPECT_EQ(bench.moveRel->ACTUALPOSITION.value, 110.0F);
+}
+
+// A stop ends the job: CommandAborted, as for 0A87, because the controller no longer runs it. 0A9A with
+// FreeInterface is Done when the axis stands.
+TEST_P(CommandSetFbs, StopDuringAFollowedMoveAbortsItAndTheFreeStopIsDoneAtStandstill) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 2000.0F;
+    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.moveAbs);
+    bench.ScanWhile([&] { return bench.Motion(1).Position() < 100.0; });
+    bench.stop->AXIS.value = 1;
+    bench.stop->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.stop);
+    bool stopDoneWhileMoving = false;
+    FinalOutcome stopped = bench.Wait(bench.stop, 20000, [&] {
+        if (bench.stop->DONE.value && bench.Motion(1).Moving()) stopDoneWhileMoving = true;
+    });
+    ASSERT_TRUE(stopped.Done()) << stopped;
+    EXPECT_FALSE(stopDoneWhileMoving);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u);
+    EXPECT_EQ(bench.Count(0x0A93), 0u);
+    EXPECT_EQ(Bits(bench.stop->ACTUALPOSITION.value), Bits(static_cast<float>(bench.Motion(1).Position())));
+    FinalOutcome move = bench.Wait(bench.moveAbs, 20000);
+    EXPECT_TRUE(move.Aborted()) << move;
+    EXPECT_FALSE(move.Error());
+    EXPECT_LT(bench.Motion(1).Position(), 2000.0);
+}
+
+TEST_P(CommandSetFbs, FollowedMoveNotInPositionWithinEndTimeoutIsTheLibrarysError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 3000.0F;
+    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(300ms);
+    FinalOutcome move = bench.Run(bench.moveAbs);
+    EXPECT_TRUE(move.Error()) << move;
+    EXPECT_EQ(move.ErrorId(), kGvl["PAC_LIB_ERR_NOT_IN_POSITION"]);
+    EXPECT_EQ(kGvl["PAC_LIB_ERR_NOT_IN_POSITION"], 0x8014u);
+    EXPECT_TRUE(bench.Motion(1).Moving()) << "the library stops following, not the axis";
+    // A refused start is the controller's number (43 without reference).
+    bench.Motion(2).SetReferenced(false);
+    bench.moveAbs->AXIS.value = 2;
+    bench.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_NO_REFERENCE"]);
+}
+
+// ---- mode commands (5.2.1, 5.2.5.1, 5.2.6.1) ----
+
+TEST_P(CommandSetFbs, ModeCommandsReachTheManualsStatuses) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 31) << "5.2.1.3: 001F";
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    ASSERT_TRUE(bench.Run(bench.mode).Done());
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 35) << "5.2.1.1: online mode stopped";
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_ONLINE;
+    ASSERT_TRUE(bench.Run(bench.mode).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A81);
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 1);
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_START_AUTO;
+    ASSERT_TRUE(bench.Run(bench.mode).Done());
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 11) << "5.2.1.2: 000B";
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    ASSERT_TRUE(bench.Run(bench.mode).Done());
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 15) << "5.2.1.1 example: 000F";
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_AUTO;
+    ASSERT_TRUE(bench.Run(bench.mode).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A41);
+    EXPECT_EQ(bench.mode->OPSTATUS.value, 1);
+    // 0600 in home position: 5.1.1 marks it for AUTOMATIC (and ONLINE) only.
+    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    EXPECT_EQ(bench.Run(bench.mode).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
+}
+
+// ---- reference and scale (5.2.6.2..5.2.6.5, 5.2.6.16) ----
+
+TEST_P(CommandSetFbs, ReferenceCommandsSetTheFlagAndThePosition) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.reference->AXIS.value = 2;
+    // 5.2.6.5 example: axis 2 to 200.00, data 4348 0000, acknowledged with the same value.
+    bench.Motion(2).Place(bench.Now(), 50.0);
+    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_SET_POSITION;
+    bench.reference->POSITION.value = 200.0F;
+    ASSERT_TRUE(bench.Run(bench.reference).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A86);
+    EXPECT_EQ(bench.LastData(), 0x43480000u);
+    EXPECT_EQ(bench.reference->ACTUALPOSITION.value, 200.0F);
+    EXPECT_EQ(bench.Motion(2).Position(), 200.0);
+    EXPECT_EQ(bench.Motion(2).MaxRange(), 10150.0) << "G29 moves the software limits with the scale";
+    // 5.2.6.4: to zero (G26), software limits unchanged.
+    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_POSITION_ZERO;
+    ASSERT_TRUE(bench.Run(bench.reference).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A85);
+    EXPECT_EQ(bench.Motion(2).Position(), 0.0);
+    EXPECT_EQ(bench.Motion(2).MaxRange(), 10150.0);
+    // 0A83 releases an unreferenced axis without moving it; 0A96 references it where it stands (example: 0.0).
+    bench.Motion(2).SetReferenced(false);
+    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RELEASE;
+    ASSERT_TRUE(bench.Run(bench.reference).Done());
+    EXPECT_TRUE(bench.Motion(2).Referenced());
+    bench.Motion(2).SetReferenced(false);
+    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_AT_POSITION;
+    bench.reference->POSITION.value = 12.5F;
+    ASSERT_TRUE(bench.Run(bench.reference).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A96);
+    EXPECT_TRUE(bench.Motion(2).Referenced());
+    EXPECT_EQ(bench.reference->ACTUALPOSITION.value, 12.5F) << "acknowledged with the current position";
+    // Axis 3 is not configured: 32.
+    bench.reference->AXIS.value = 3;
+    EXPECT_EQ(bench.Run(bench.reference).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+}
+
+// 5.2.6.3: the reference run sets the flag at its end; the FB is Busy until then.
+TEST_P(CommandSetFbs, ReferenceRunIsBusyUntilTheFlagIsSet) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.Controller().Axes().SetReferenceSwitch(1, -20.0);
+    bench.Motion(1).Place(bench.Now(), 0.0);
+    bench.reference->AXIS.value = 1;
+    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RUN;
+    bench.Start(bench.reference);
+    bool busyWhileHoming = false;
+    FinalOutcome run = bench.Wait(bench.reference, 50000, [&] {
+        if (bench.Motion(1).HomingActive() && bench.reference->BUSY.value) busyWhileHoming = true;
+    });
+    ASSERT_TRUE(run.Done()) << run;
+    EXPECT_TRUE(busyWhileHoming);
+    EXPECT_TRUE(bench.Motion(1).Referenced());
+    EXPECT_FALSE(bench.Motion(1).HomingActive());
+    EXPECT_EQ(bench.Count(0x0A84), 1u);
+}
+
+// ---- manual traverse (5.2.6.10..5.2.6.12) ----
+
+// The axis keeps moving beyond one second only because 0A92 follows; Traverse falling stops it with 0A9A.
+TEST_P(CommandSetFbs, ManualTraverseKeepsMovingWhileTraverseStaysTrue) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.jog->AXIS.value = 1;
+    bench.jog->TARGET.value = 5000.0F;
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.SettleFor(1500ms);
+    EXPECT_TRUE(bench.jog->ACTIVE.value);
+    EXPECT_TRUE(bench.Motion(1).Moving()) << "kept alive beyond the one second of 5.2.6.10";
+    EXPECT_EQ(bench.Count(0x0A90), 1u);
+    EXPECT_GE(bench.Count(0x0A92), 4u) << "every 250 ms";
+    EXPECT_GT(bench.jog->ACTUALPOSITION.value, 500.0F) << "0A92 acknowledges the position";
+    bench.jog->TRAVERSE.value = FALSE;
+    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
+    EXPECT_TRUE(bench.jog->DONE.value);
+    EXPECT_FALSE(bench.jog->ERROR.value);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u);
+    bench.SettleFor(300ms);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_LT(bench.Motion(1).Position(), 5000.0);
+    EXPECT_TRUE(bench.jog->DONE.value) << "held until the next rising edge";
+}
+
+TEST_P(CommandSetFbs, ManualTraverseEndsAtMaxTimeWithTheLibrarysError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.jog->AXIS.value = 2;
+    bench.jog->TARGET.value = 100.0F;
+    bench.jog->RELATIVE.value = TRUE;  // 0A91: by 100
+    bench.jog->MAXTIME.value = pac::ToIecTime(60ms);
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
+    EXPECT_TRUE(bench.jog->ERROR.value);
+    EXPECT_EQ(bench.jog->ERRORID.value, kGvl["PAC_LIB_ERR_JOG_TIME_LIMIT"]);
+    EXPECT_EQ(bench.Count(0x0A91), 1u);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u);
+    bench.SettleFor(300ms);
+    EXPECT_FALSE(bench.Motion(2).Moving());
+}
+
+// ---- axis on/off, measuring mode, limit switch monitoring, move condition (5.2.6.17..5.2.6.23) ----
+
+TEST_P(CommandSetFbs, SwitchedOffAxisRefusesMovesUntilSwitchedOn) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.switchAxis->AXIS.value = 1;
+    bench.switchAxis->SWITCHON.value = FALSE;
+    ASSERT_TRUE(bench.Run(bench.switchAxis).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A98);
+    EXPECT_FALSE(bench.Motion(1).AxisOn());
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_OFF"]);
+    bench.switchAxis->SWITCHON.value = TRUE;
+    ASSERT_TRUE(bench.Run(bench.switchAxis).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0A97);
+    EXPECT_TRUE(bench.Motion(1).AxisOn());
+    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+}
+
+TEST_P(CommandSetFbs, MeasuringModeBlocksPositioningAndShowsInTheStatus) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.measuring->AXIS.value = 1;
+    bench.measuring->ACTIVATE.value = TRUE;
+    ASSERT_TRUE(bench.Run(bench.measuring).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0AA0);
+    bench.readStatus->AXIS.value = 1;
+    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
+    EXPECT_EQ(bench.readStatus->STATUS.value, 8) << "5.2.4.22: 8, axis in measuring mode";
+    EXPECT_TRUE(bench.readStatus->MEASURINGMODE.value);
+    bench.readExtended->AXIS.value = 1;
+    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
+    EXPECT_TRUE(bench.readExtended->MEASURINGMODE.value);
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_NOT_READY"]);
+    bench.measuring->ACTIVATE.value = FALSE;
+    ASSERT_TRUE(bench.Run(bench.measuring).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0AA1);
+    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+    // 5.2.6.21: on an axis not in measuring mode, 0AA1 is only acknowledged.
+    EXPECT_TRUE(bench.Run(bench.measuring).Done());
+}
+
+TEST_P(CommandSetFbs, LimitSwitchMonitoringForOneAxisOrAll) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.monitoring->AXIS.value = 0;
+    bench.monitoring->MONITOR.value = FALSE;
+    ASSERT_TRUE(bench.Run(bench.monitoring).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0AA2);
+    EXPECT_EQ(bench.LastData(), 0u);
+    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(1));
+    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(2));
+    bench.monitoring->AXIS.value = 2;
+    bench.monitoring->MONITOR.value = TRUE;
+    ASSERT_TRUE(bench.Run(bench.monitoring).Done());
+    EXPECT_EQ(bench.LastData(), 1u);
+    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(1));
+    EXPECT_TRUE(bench.Controller().Online().LimitSwitchMonitoring(2));
+    // Into an actuated switch: refused (64) while monitored, allowed without monitoring.
+    bench.Controller().Axes().SetLimitSwitches(1, -100.0, 0.0);
+    bench.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
+    bench.moveAbs->POSITION.value = 20.0F;
+    bench.moveAbs->AXIS.value = 2;
+    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_LIMIT_SWITCH"]);
+    bench.moveAbs->AXIS.value = 1;
+    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+}
+
+// 5.2.6.23: the axis moves as long as the element keeps its value; switching over ends the movement, and
+// the followed move reports CommandAborted (status 2: stopped), not Done.
+void ConditionEndsTheMove(const BusTiming& timing, pac::sim::ConditionLayout layout) {
+    pac::sim::PaControlConfig config;
+    config.online.conditionLayout = layout;
+    CommandSetBench bench(timing, config);
+    ASSERT_TRUE(bench.GoOnline());
+    bench.Controller().Io().inputs.Set(9, true);
+    bench.condition->AXIS.value = 1;
+    bench.condition->ELEMENT.value = E_PAC_ELEMENTTYPE__PAC_ELEMENT_INPUT;
+    bench.condition->NUMBER.value = 9;
+    bench.condition->LEVEL.value = TRUE;
+    bench.condition->PROFIBUSBYTEORDER.value = layout == pac::sim::ConditionLayout::kByProfibusByte;
+    ASSERT_TRUE(bench.Run(bench.condition).Done());
+    EXPECT_EQ(bench.LastCode(), 0x0AA3);
+    EXPECT_EQ(bench.LastData(), layout == pac::sim::ConditionLayout::kBySignificance ? 0x01010009u : 0x00090101u);
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 2000.0F;
+    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.moveAbs);
+    bench.ScanWhile([&] { return bench.Motion(1).Position() < 200.0; });
+    bench.Controller().Io().inputs.Set(9, false);
+    FinalOutcome move = bench.Wait(bench.moveAbs);
+    EXPECT_TRUE(move.Aborted()) << move;
+    EXPECT_LT(bench.Motion(1).Position(), 500.0);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+}
+
+TEST_P(CommandSetFbs, MoveConditionEndsTheMoveBySignificanceLayout) {
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kBySignificance);
+}
+
+TEST_P(CommandSetFbs, MoveConditionEndsTheMoveByProfibusByteLayout) {
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kByProfibusByte);
+}
+
+// ---- axis values and the extended status (5.2.4.19..5.2.4.28) ----
+
+TEST_P(CommandSetFbs, AxisValuesAreDecoded) {
+    CommandSetBench bench(GetParam());
+    bench.readValue->AXIS.value = 1;
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x1914);
+    EXPECT_EQ(bench.readValue->VALUE.value, 10000.0F) << "axis parameter 9";
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x1913);
+    EXPECT_EQ(bench.readValue->VALUE.value, 0.0F);
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x1920);
+    EXPECT_EQ(bench.readValue->VALUE.value, 40.0F);
+    EXPECT_EQ(bench.readValue->RAWVALUE.value, 0x42200000u) << "5.2.4.27 example bytes (NOTES.md: 40.0)";
+    bench.Motion(1).Place(bench.Now(), 321.5);
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_ENCODER_POSITION;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x190E);
+    EXPECT_EQ(bench.readValue->VALUE.value, 321.5F);
+    ASSERT_TRUE(bench.GoOnline());
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 2000.0F;
+    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.moveAbs);
+    bench.SettleFor(400ms);
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_SPEED;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x190D);
+    EXPECT_EQ(bench.readValue->VALUE.value, 1000.0F) << "the traverse speed of axis parameter 1";
+}
+
+// 1915 / 1920 on the other reading of the header ("0000 - FFFF"): the FB takes a value with an upper word
+// of 0 as a 16-bit integer. Without the EP commands the controller answers 19.
+TEST_P(CommandSetFbs, EpValuesAsIntegersAndControllersWithoutThem) {
+    pac::sim::PaControlConfig config;
+    config.online.epValuesAsReal = false;
+    config.online.temperature = 37.0F;
+    CommandSetBench bench(GetParam(), config);
+    bench.readValue->AXIS.value = 2;
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.readValue->RAWVALUE.value, 37u);
+    EXPECT_EQ(bench.readValue->VALUE.value, 37.0F);
+    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_FOLLOWING_ERROR;
+    ASSERT_TRUE(bench.Run(bench.readValue).Done());
+    EXPECT_EQ(bench.LastCode(), 0x1915);
+    EXPECT_EQ(bench.readValue->VALUE.value, 0.0F);
+
+    pac::sim::PaControlConfig plain;
+    plain.online.epCommands = false;
+    CommandSetBench other(GetParam(), plain);
+    other.readValue->AXIS.value = 1;
+    other.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_MAX_FOLLOWING_ERROR;
+    EXPECT_EQ(other.Run(other.readValue).ErrorId(), kGvl["PAC_ERR_UNKNOWN_COMMAND"]);
+    EXPECT_EQ(other.LastCode(), 0x190F);
+}
+
+TEST_P(CommandSetFbs, ExtendedStatusDecodesReadinessSwitchesAndStatus) {
+    CommandSetBench bench(GetParam());
+    bench.readExtended->AXIS.value = 2;
+    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
+    EXPECT_EQ(bench.LastCode(), 0x1921);
+    EXPECT_EQ(bench.readExtended->RAWSTATUS.value, 0x01010100u) << "ready, no switch actuated, in position";
+    EXPECT_TRUE(bench.readExtended->POWERREADY.value);
+    EXPECT_FALSE(bench.readExtended->POSITIVELIMITSWITCH.value);
+    EXPECT_FALSE(bench.readExtended->NEGATIVELIMITSWITCH.value);
+    EXPECT_TRUE(bench.readExtended->INPOSITION.value);
+    // 5.2.4.28 example 0100 0104: ready, positive switch actuated, negative not, malfunction.
+    bench.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
+    bench.Controller().Axes().RaiseAxisError(2, bench.Now(), 46);
+    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
+    EXPECT_TRUE(bench.readExtended->POSITIVELIMITSWITCH.value);
+    EXPECT_FALSE(bench.readExtended->NEGATIVELIMITSWITCH.value);
+    EXPECT_TRUE(bench.readExtended->MALFUNCTION.value);
+    EXPECT_EQ(bench.readExtended->STATUS.value, 4);
+    EXPECT_EQ(bench.readExtended->RAWSTATUS.value & 0x00FFFFFFu, 0x00000104u);
+}
+
+INSTANTIATE_TEST_SUITE_P(BusTimings, CommandSetFbs, ::testing::ValuesIn(pac::test::BusTimingGrid({1, 5}, {3, 10}, {0, 2})),
+                         pac::test::BusTimingName);
+
+}  // namespace
