@@ -10,11 +10,16 @@
 # List SOURCES in declaration order: a type before its users, a POU before its callers.
 
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
-set(PACST_VENV "${CMAKE_BINARY_DIR}/venv" CACHE INTERNAL "")
+# One venv for every build tree (default, debug, ...), like the parse cache below: the packages are the
+# same pinned versions, and installing them again per preset cost most of a configure.
+get_filename_component(PAC_SHARED_BUILD_DIR "${CMAKE_CURRENT_LIST_DIR}/../build" ABSOLUTE)
+set(PACST_VENV "${PAC_SHARED_BUILD_DIR}/venv" CACHE INTERNAL "")
 set(PACST_PYTHON "${PACST_VENV}/bin/python" CACHE INTERNAL "")
 # Parses are keyed by file content and blark's version, so every build tree (default, debug...) can
 # share one cache and parse each version of a file once.
-set(PACST_CACHE_DIR "${CMAKE_CURRENT_LIST_DIR}/../build/pacst-cache" CACHE PATH "pacst's parse cache")
+set(PACST_CACHE_DIR "${PAC_SHARED_BUILD_DIR}/pacst-cache" CACHE PATH "pacst's parse cache")
+# #line directives: compiler messages, debuggers, sanitizers and gcov name the .st line of a statement.
+option(PAC_ST_LINE_DIRECTIVES "pacst precedes each statement's C with #line naming its ST line" ON)
 
 include("${CMAKE_CURRENT_LIST_DIR}/PacPythonVenv.cmake")
 # pacst is needed with either compiler: with MATIEC it writes the declarations C++ code includes.
@@ -70,11 +75,15 @@ function(pac_st_library target)
     endforeach()
     # The stamp is the one real output; the C files are byproducts that keep their time stamp when
     # their text did not change, so Ninja and Make recompile only what really changed.
+    set(line_args "")
+    if(PAC_ST_LINE_DIRECTIVES)
+      set(line_args --line-directives)
+    endif()
     add_custom_command(
       OUTPUT "${out}/pacst.stamp"
       BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" "${out}/pacst_enum_names.h" ${c_files} ${out_gvl_headers}
       COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${PACST_CACHE_DIR}"
-              --stamp "${out}/pacst.stamp" ${gvl_args} ${abs_sources}
+              --stamp "${out}/pacst.stamp" ${line_args} ${gvl_args} ${abs_sources}
       DEPENDS ${abs_sources} ${gvl_sources} ${PACST_TOOL_FILES}
       COMMENT "pacst: translating ${target} (${CMAKE_CURRENT_SOURCE_DIR})"
       VERBATIM)

@@ -1,11 +1,15 @@
 #include "cli.hpp"
 
 #include <exception>
+#include <fstream>
 
 #include "gvl_names.hpp"
+#include "pac/vcd_writer.hpp"
 #include "scenario_loader.hpp"
 #include "scenario_runner.hpp"
 #include "timeline_printer.hpp"
+#include "scenario_diagram.hpp"
+#include "trace_observer.hpp"
 
 namespace pac::scenario {
 
@@ -14,42 +18,78 @@ namespace {
 constexpr const char* kProgram = "pac_scenario";
 
 void Usage(std::ostream& out) {
-    out << "usage: " << kProgram << " [--check] SCENARIO.json\n"
+    out << "usage: " << kProgram << " [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json\n"
         << "  Runs the scenario's commands, mode requests and axis jobs through FB_PAC_Cmd, FB_PAC_Ctrl and\n"
         << "  FB_PAC_Axis against the simulated PA-CONTROL and prints a scan-by-scan timeline of the\n"
         << "  modules' images and the FBs' pins (format: docs/scenario.md).\n"
-        << "  --check  only check the scenario, do not run it\n"
+        << "  --check          only check the scenario, do not run it\n"
+        << "  --vcd FILE       also write every signal of the run, scan by scan, as VCD (GTKWave)\n"
+        << "  --wavedrom FILE  also write the scenario's \"diagram\" (steps, signals) as WaveJSON (WaveDrom)\n"
         << "exit codes: 0 all expectations met, 1 an expectation failed, 2 invalid scenario or usage,\n"
         << "            3 internal error\n";
+}
+
+struct Options {
+    bool checkOnly = false;
+    std::string scenarioFile;
+    std::string vcdFile;
+    std::string waveFile;
+};
+
+// Writes the trace files the options ask for; false (with the reason on `err`) if one cannot be written.
+bool WriteTraces(const Options& options, const Scenario& scenario, const TraceObserver& trace, std::ostream& err) {
+    auto open = [&err](const std::string& name, std::ofstream& file) {
+        file.open(name);
+        if (!file) err << kProgram << ": cannot write " << name << "\n";
+        return static_cast<bool>(file);
+    };
+    if (!options.vcdFile.empty()) {
+        std::ofstream file;
+        if (!open(options.vcdFile, file)) return false;
+        pac::WriteVcd(trace.Recording(), file, {"pac", "pac_scenario " + scenario.name});
+    }
+    if (!options.waveFile.empty()) {
+        std::ofstream file;
+        if (!open(options.waveFile, file)) return false;
+        WriteScenarioDiagram(scenario, trace, file);
+    }
+    return true;
 }
 
 }  // namespace
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    bool checkOnly = false;
-    std::string scenarioFile;
-    for (const std::string& arg : args) {
+    Options options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
         if (arg == "-h" || arg == "--help") {
             Usage(out);
             return kExitOk;
         }
         if (arg == "--check") {
-            checkOnly = true;
+            options.checkOnly = true;
+        } else if (arg == "--vcd" || arg == "--wavedrom") {
+            if (i + 1 >= args.size()) {
+                err << kProgram << ": " << arg << " needs a file name\n";
+                return kExitRefused;
+            }
+            (arg == "--vcd" ? options.vcdFile : options.waveFile) = args[++i];
         } else if (arg.size() > 1 && arg[0] == '-') {
             err << kProgram << ": unknown option " << arg << "\n";
             Usage(err);
             return kExitRefused;
-        } else if (scenarioFile.empty()) {
-            scenarioFile = arg;
+        } else if (options.scenarioFile.empty()) {
+            options.scenarioFile = arg;
         } else {
-            err << kProgram << ": one scenario file at a time (got " << scenarioFile << " and " << arg << ")\n";
+            err << kProgram << ": one scenario file at a time (got " << options.scenarioFile << " and " << arg << ")\n";
             return kExitRefused;
         }
     }
-    if (scenarioFile.empty()) {
+    if (options.scenarioFile.empty()) {
         Usage(err);
         return kExitRefused;
     }
+    const std::string& scenarioFile = options.scenarioFile;
 
     const GvlNames names;
     Scenario scenario;
@@ -62,14 +102,17 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         err << kProgram << ": internal error while reading " << scenarioFile << ": " << e.what() << "\n";
         return kExitInternalError;
     }
-    if (checkOnly) {
+    if (options.checkOnly) {
         const auto steps = scenario.steps.size();
         out << scenarioFile << ": valid scenario, " << steps << (steps == 1 ? " step\n" : " steps\n");
         return kExitOk;
     }
     try {
         TimelinePrinter printer(out, names);
-        const RunReport report = ScenarioRunner(scenario).Run(printer);
+        TraceObserver trace(scenario.modules);
+        RunObservers observers({&printer, &trace});
+        const RunReport report = ScenarioRunner(scenario).Run(observers);
+        if (!WriteTraces(options, scenario, trace, err)) return kExitRefused;
         return report.Passed() ? kExitOk : kExitExpectationFailed;
     } catch (const ScenarioError& e) {
         err << kProgram << ": invalid scenario " << scenarioFile << ": " << e.what() << "\n";

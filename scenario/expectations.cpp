@@ -40,9 +40,10 @@ std::vector<std::string> CheckAxisExpectation(const AxisJob& job, const AxisOutc
     std::vector<std::string> failures;
     const AxisExpectation& expect = job.expect;
     if (!outcome.finished) {
-        failures.push_back(job.HasJob() ? "neither Done, Error nor CommandAborted within " + std::to_string(job.maxMs) + " ms"
-                                        : std::string("Enabled did not follow Enable within ") + std::to_string(job.maxMs) +
-                                              " ms");
+        const std::string what = job.HasJob()      ? "neither Done, Error nor CommandAborted"
+                                 : job.resetError ? "AxisError still set"
+                                                  : "Enabled did not follow Enable";
+        failures.push_back(what + " within " + std::to_string(job.maxMs) + " ms");
         return failures;
     }
     auto flag = [&failures](const char* name, const std::optional<bool>& expected, bool actual) {

@@ -68,8 +68,8 @@ AxesStep ModuleStepReader::ReadAxes(const json::Object& step) const {
 
 AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) const {
     const json::Object object(value, path,
-                              {"axis", "enable", "command", "position", "velocity", "acceleration", "condition",
-                               "timeout_ms", "max_ms", "expect"},
+                              {"axis", "enable", "command", "reset_error", "position", "velocity", "acceleration",
+                               "condition", "timeout_ms", "max_ms", "expect"},
                               "an axis job");
     AxisJob job;
     job.axis = static_cast<int>(json::Integer(object.Get("axis"), object.PathOf("axis"), 1, modules_.axes));
@@ -77,8 +77,14 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     if (const Json* command = object.Find("command")) {
         job.command = Name(*command, object.PathOf("command"), pac::EnumNames(E_PAC_AXISCOMMAND__NAMES), "axis command");
     }
-    if (!job.enable && !job.HasJob()) {
-        json::Refuse(path, "missing key: an axis job needs \"enable\", \"command\" or both");
+    if (const Json* reset = object.Find("reset_error")) {
+        job.resetError = json::Bool(*reset, object.PathOf("reset_error"));
+        if (job.resetError && job.HasJob()) {
+            json::Refuse(object.PathOf("reset_error"), "contradiction: an axis has a command or resets its error, not both in one step");
+        }
+    }
+    if (!job.enable && !job.HasJob() && !job.resetError) {
+        json::Refuse(path, "missing key: an axis job needs \"enable\", \"command\" or \"reset_error\"");
     }
     // The FB's own input checks (Velocity 1..1000, Acceleration not 0, a finite Position) are the
     // FB's to show: a scenario may send what the FB must refuse, within the pins' types.

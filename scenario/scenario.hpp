@@ -5,6 +5,7 @@
 // (docs/scenario.md).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -30,6 +31,12 @@ struct Modules {
     int axes = 0;
 };
 
+// Hardware limit switches of one axis, at machine positions (none fitted where empty).
+struct LimitSwitches {
+    std::optional<double> negative;
+    std::optional<double> positive;
+};
+
 // The controller before the first scan. Registers and inputs not named keep the simulator's
 // power-on values (0).
 struct ControllerSetup {
@@ -39,6 +46,7 @@ struct ControllerSetup {
     std::map<int, bool> inputs;
     std::map<int, std::int32_t> systemParameters;  // 0700 values, e.g. 4: the external stop input
     bool axesReferenced = true;  // at power-on (an absolute measuring system); false: G25 first
+    std::map<int, LimitSwitches> limitSwitches;  // per axis 1..8
 };
 
 // A DWORD as the scenario wrote it: an integer, or a REAL carried as its IEEE-754 bits.
@@ -92,11 +100,13 @@ struct AxisExpectation {
 };
 
 // One axis of an axes step: Enable (a level that stays for later steps) and optionally a job through
-// FB_PAC_Axis. `command` and `condition` are the E_PAC_AxisCommand / E_PAC_MoveCondition names.
+// FB_PAC_Axis, or a reset of its axis error (ResetError until AxisError is seen FALSE). `command` and
+// `condition` are the E_PAC_AxisCommand / E_PAC_MoveCondition names.
 struct AxisJob {
     int axis = 1;  // the axis module, 1..Modules::axes
     std::optional<bool> enable;
-    std::string command;  // empty: no job, only Enable
+    std::string command;  // empty: no job, only Enable (or the reset)
+    bool resetError = false;
     double position = 0.0;
     int velocity = 1000;      // per mille
     int acceleration = 1000;  // per mille
@@ -135,6 +145,19 @@ struct Step {
     std::string note;  // printed with the step
 };
 
+// What `pac_scenario --wavedrom` draws: a window of steps, the signals as lanes in this order, and how
+// much of a stretch without change it keeps (docs/scenario.md#traces-and-diagrams).
+struct Diagram {
+    std::string title;
+    std::size_t firstStep = 1;  // 1-based, as the timeline numbers steps
+    std::size_t lastStep = 0;   // 0: the last step of the scenario
+    int contextScans = 1;       // scans before the first step's first scan
+    int maxIdleScans = 3;       // longer runs of scans in which only sampled lanes change become one gap
+    int hscale = 3;             // WaveDrom's horizontal scale: room for the data lanes' text
+    std::vector<std::string> signals;  // trace paths; empty: every signal
+    std::vector<std::string> sampled;  // signals whose changes alone keep no scan (REALs never do)
+};
+
 struct Scenario {
     std::string name;
     std::string description;
@@ -142,6 +165,7 @@ struct Scenario {
     Modules modules;
     ControllerSetup controller;
     std::vector<Step> steps;
+    Diagram diagram;
 };
 
 const char* ToString(FaultKind kind);  // "power_cycle", "freeze_link", ...

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "diagram_reader.hpp"
 #include "json_fields.hpp"
 #include "module_steps.hpp"
 #include "pac/sim/elements.hpp"
@@ -40,7 +41,8 @@ public:
     explicit Reader(const GvlNames& names) : names_(names) {}
 
     Scenario ReadScenario(const Json& document) const {
-        const json::Object top(document, "$", {"name", "description", "timing", "modules", "controller", "steps"},
+        const json::Object top(document, "$",
+                               {"name", "description", "timing", "modules", "controller", "steps", "diagram"},
                                "a scenario");
         Scenario scenario;
         if (const Json* name = top.Find("name")) scenario.name = json::String(*name, top.PathOf("name"));
@@ -61,6 +63,10 @@ public:
         });
         for (std::size_t i = 0; i < steps.size(); ++i) {
             scenario.steps.push_back(ReadStep(steps[i], json::Element(stepsPath, i), moduleSteps));
+        }
+        scenario.diagram.lastStep = scenario.steps.size();
+        if (const Json* diagram = top.Find("diagram")) {
+            scenario.diagram = ReadDiagram(*diagram, top.PathOf("diagram"), scenario.steps.size(), scenario.modules);
         }
         return scenario;
     }
@@ -125,7 +131,9 @@ private:
 
     ControllerSetup ReadController(const Json& value, const std::string& path) const {
         const json::Object controller(
-            value, path, {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced"},
+            value, path,
+            {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced",
+             "limit_switches"},
             "controller");
         const pac::sim::ElementCounts counts;
         ControllerSetup setup;
@@ -150,6 +158,10 @@ private:
         if (const Json* referenced = controller.Find("axes_referenced")) {
             setup.axesReferenced = json::Bool(*referenced, controller.PathOf("axes_referenced"));
         }
+        if (const Json* switches = controller.Find("limit_switches")) {
+            setup.limitSwitches = ReadNumbered<LimitSwitches>(*switches, controller.PathOf("limit_switches"), 8, "axis",
+                                                              ReadLimitSwitches);
+        }
         if (const Json* parameters = controller.Find("system_parameters")) {
             // The simulator's table knows which numbers exist and their limits; the runner reports a refusal.
             setup.systemParameters = ReadNumbered<std::int32_t>(
@@ -159,6 +171,19 @@ private:
                 });
         }
         return setup;
+    }
+
+    // {"negative": -50.0, "positive": 60.0}: machine positions of the switches, at least one of them.
+    static LimitSwitches ReadLimitSwitches(const Json& value, const std::string& path) {
+        const json::Object object(value, path, {"negative", "positive"}, "the limit switches of an axis");
+        LimitSwitches switches;
+        if (const Json* v = object.Find("negative")) switches.negative = json::Number(*v, object.PathOf("negative"));
+        if (const Json* v = object.Find("positive")) switches.positive = json::Number(*v, object.PathOf("positive"));
+        if (!switches.negative && !switches.positive) json::Refuse(path, "missing key: \"negative\", \"positive\" or both");
+        if (switches.negative && switches.positive && !(*switches.negative < *switches.positive)) {
+            json::Refuse(path, "contradiction: the negative switch must lie below the positive one");
+        }
+        return switches;
     }
 
     std::uint8_t ReadStatus(const Json& value, const std::string& path) const {

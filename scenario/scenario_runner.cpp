@@ -123,6 +123,9 @@ private:
         for (const auto& [number, value] : setup.intRegisters) pac.Io().intRegisters.SetInt(number, value);
         for (const auto& [number, value] : setup.realRegisters) pac.Io().realRegisters.SetReal(number, value);
         for (const auto& [number, value] : setup.inputs) pac.Io().inputs.Set(number, value);
+        for (const auto& [axis, switches] : setup.limitSwitches) {
+            pac.Axes().SetLimitSwitches(axis, switches.negative, switches.positive);
+        }
         for (const auto& [number, value] : setup.systemParameters) {
             if (pac.SystemParameters().Set(number, value) != pac::sim::ParameterTable::SetResult::kOk) {
                 throw ScenarioError("$.controller.system_parameters[\"" + std::to_string(number) + "\"]",
@@ -170,8 +173,11 @@ private:
             axis.error = fb->ERROR.value != 0;
             axis.aborted = fb->COMMANDABORTED.value != 0;
             axis.errorId = static_cast<std::uint16_t>(fb->ERRORID.value);
+            axis.enabled = fb->ENABLED.value != 0;
+            axis.resetError = fb->RESETERROR.value != 0;
             axis.actualPosition = fb->ACTUALPOSITION.value;
             axis.integerMode = fb->INTEGERMODE.value != 0;
+            axis.simPosition = plc_.Controller().Axes().Motion(axis.axis).Position();
             sample.axes.push_back(axis);
         }
         observer_.OnScan(sample);
@@ -227,10 +233,12 @@ private:
         return outcome;
     }
 
-    // An axis has ended its part of the step: its job's final output, or Enabled following Enable.
+    // An axis has ended its part of the step: its job's final output, its axis error reset, or Enabled
+    // following Enable.
     bool AxisFinished(const AxisJob& job) {
         auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
         if (job.HasJob()) return fb->DONE.value || fb->ERROR.value || fb->COMMANDABORTED.value;
+        if (job.resetError) return !fb->AXISERROR.value;
         return (fb->ENABLED.value != 0) == job.enable.value_or(false);
     }
 
@@ -238,6 +246,7 @@ private:
         for (const auto& job : step.jobs) {
             auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
             if (job.enable) fb->ENABLE.value = *job.enable ? TRUE : FALSE;
+            if (job.resetError) fb->RESETERROR.value = TRUE;
             if (!job.HasJob()) continue;
             fb->COMMAND.value = Enumerator<E_PAC_AXISCOMMAND>(E_PAC_AXISCOMMAND__NAMES, job.command);
             fb->POSITION.value = static_cast<float>(job.position);
@@ -273,7 +282,11 @@ private:
             if (!open) break;
             Scan();
         }
-        for (const auto& job : step.jobs) axes_[static_cast<std::size_t>(job.axis - 1)]->EXECUTE.value = FALSE;
+        for (const auto& job : step.jobs) {
+            auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
+            fb->EXECUTE.value = FALSE;
+            fb->RESETERROR.value = FALSE;
+        }
         Scan();
         return outcomes;
     }

@@ -42,8 +42,11 @@ struct AxisSample {
     bool error = false;
     bool aborted = false;
     std::uint16_t errorId = 0;
+    bool enabled = false;
+    bool resetError = false;
     float actualPosition = 0.0F;
     bool integerMode = false;  // how the module's positions are coded
+    double simPosition = 0.0;  // where the simulated axis really is (axis coordinates)
 };
 
 // The modules and their FBs after one scan.

@@ -72,4 +72,9 @@ std::string ErrorText(std::uint16_t errorId) {
     return std::string(reinterpret_cast<const char*>(text.body), text.len);
 }
 
+double PositionValue(std::uint32_t bits, bool integerMode) {
+    if (integerMode) return static_cast<double>(static_cast<std::int32_t>(bits)) / 1000.0;
+    return static_cast<double>(pac::sim::BitsToFloat(bits));
+}
+
 }  // namespace pac::scenario

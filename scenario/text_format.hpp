@@ -20,5 +20,7 @@ inline std::string DwordText(const DwordValue& value) { return DwordText(value.b
 std::string ErrorIdText(std::uint16_t errorId);
 // F_PAC_ErrorText of the library: "inadmissible N register".
 std::string ErrorText(std::uint16_t errorId);
+// A position field of an axis module (2.7.7, 2.7.8): IEEE REAL, or DINT x 1000 in integer format (2.5.3).
+double PositionValue(std::uint32_t bits, bool integerMode);
 
 }  // namespace pac::scenario

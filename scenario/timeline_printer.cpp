@@ -35,14 +35,9 @@ bool SameAxis(const AxisSample& a, const AxisSample& b) {
 
 std::uint16_t Word(std::uint8_t high, std::uint8_t low) { return static_cast<std::uint16_t>(high << 8 | low); }
 
-// A position field of an axis module (2.7.7, 2.7.8): IEEE REAL, or DINT x 1000 in integer format (2.5.3).
 std::string PositionText(std::uint32_t bits, bool integerMode) {
     char text[32];
-    if (integerMode) {
-        std::snprintf(text, sizeof text, "%.3f", static_cast<double>(static_cast<std::int32_t>(bits)) / 1000.0);
-    } else {
-        std::snprintf(text, sizeof text, "%.3f", static_cast<double>(pac::sim::BitsToFloat(bits)));
-    }
+    std::snprintf(text, sizeof text, "%.3f", PositionValue(bits, integerMode));
     return text;
 }
 
@@ -95,6 +90,16 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
         add("system parameter " + std::to_string(n) + " = " + std::to_string(value));
     }
     if (scenario.modules.axes > 0 && !setup.axesReferenced) add("axes not referenced at power-on");
+    for (const auto& [axis, switches] : setup.limitSwitches) {
+        std::string where;
+        char text[64];
+        for (const auto& [side, position] : {std::pair{"negative", switches.negative}, std::pair{"positive", switches.positive}}) {
+            if (!position) continue;
+            std::snprintf(text, sizeof text, "%s%s at %.3f", where.empty() ? "" : ", ", side, *position);
+            where += text;
+        }
+        add("axis " + std::to_string(axis) + " limit switches: " + where);
+    }
     out_ << "  controller: " << (items.empty() ? "power-on state" : items) << "\n";
     const Modules& m = scenario.modules;
     out_ << "  modules: CMD";
@@ -193,6 +198,7 @@ void TimelinePrinter::PrintAxes(const AxesStep& step) {
         const AxisJob& job = step.jobs[i];
         out_ << (i == 0 ? "" : "; ") << "axis " << job.axis << ":";
         if (job.enable) out_ << " Enable " << (*job.enable ? "TRUE" : "FALSE");
+        if (job.resetError) out_ << (job.enable ? "," : "") << " ResetError";
         if (!job.HasJob()) continue;
         char position[32];
         std::snprintf(position, sizeof position, "%g", job.position);
@@ -359,12 +365,16 @@ void TimelinePrinter::PrintAxisOutcome(const AxisJob& job, const AxisOutcome& ou
     out_ << "  => axis " << outcome.axis << ": ";
     const auto scans = outcome.endScan - outcome.edgeScan;
     if (!outcome.finished) {
-        out_ << (job.HasJob() ? "the job did not end" : "Enabled did not follow Enable") << " within "
-             << Plural(scans, "scan", "scans") << "\n";
+        out_ << (job.HasJob()      ? "the job did not end"
+                 : job.resetError ? "AxisError still set"
+                                  : "Enabled did not follow Enable")
+             << " within " << Plural(scans, "scan", "scans") << "\n";
         return;
     }
     if (job.HasJob()) {
         out_ << (outcome.done ? "Done" : outcome.error ? "Error" : "CommandAborted");
+    } else if (job.resetError) {
+        out_ << "axis error reset";
     } else {
         out_ << (outcome.enabled ? "Enabled" : "not Enabled");
     }

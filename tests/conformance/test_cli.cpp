@@ -120,6 +120,82 @@ TEST_F(TranslatorCli, DeclarationAfterUseIsRefused) {
         << result.output;
 }
 
+// Reads a generated C file the way the compiler does: each line with the file and line it is attributed to
+// (#line directives followed), and the text with the directives left out.
+struct LocatedC {
+    std::vector<std::pair<std::string, int>> where;  // per line of `code`
+    std::vector<std::string> code;
+};
+
+LocatedC ReadLocated(const fs::path& path) {
+    LocatedC result;
+    std::ifstream in(path);
+    std::string file = path.string();
+    int next = 1;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("#line ", 0) == 0) {
+            const auto quote = line.find('"');
+            next = std::stoi(line.substr(6, quote - 6));
+            file = line.substr(quote + 1, line.size() - quote - 2);
+            continue;
+        }
+        result.where.emplace_back(file, next++);
+        result.code.push_back(line);
+    }
+    return result;
+}
+
+TEST_F(TranslatorCli, LineDirectivesPutEachStatementOnItsStLineAndChangeNothingElse) {
+    auto source = Write("FB_Lines.st",
+                        "FUNCTION_BLOCK FB_Lines\n"                       // 1
+                        "VAR_INPUT Go : BOOL; END_VAR\n"                  // 2
+                        "VAR_OUTPUT Count : INT; END_VAR\n"               // 3
+                        "IF Go THEN\n"                                    // 4
+                        "  Count := Count + 1;\n"                         // 5
+                        "  (* not a statement *)\n"                       // 6
+                        "ELSIF Count > 10 THEN\n"                         // 7
+                        "  Count := 0;\n"                                 // 8
+                        "END_IF;\n"                                       // 9
+                        "CASE Count OF\n"                                 // 10
+                        "  3:\n"                                          // 11
+                        "    Count := 4;\n"                               // 12
+                        "END_CASE;\n"                                     // 13
+                        "END_FUNCTION_BLOCK\n");
+    const std::string plain = (dir_ / "plain").string();
+    ASSERT_EQ(RunTranslator({"build", "--out", plain, source}).exitCode, 0);
+    auto result = RunTranslator({"build", "--line-directives", "--out", Out(), source});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+
+    const LocatedC with = ReadLocated(dir_ / "out" / "FB_Lines.c");
+    EXPECT_EQ(with.code, ReadLocated(fs::path(plain) / "FB_Lines.c").code) << "only #line lines may be added";
+    auto stLineOf = [&](const std::string& code) {
+        for (std::size_t i = 0; i < with.code.size(); ++i) {
+            if (with.code[i].find(code) != std::string::npos) {
+                EXPECT_EQ(with.where[i].first, fs::absolute(source).string()) << code;
+                return with.where[i].second;
+            }
+        }
+        ADD_FAILURE() << "no line with " << code;
+        return 0;
+    };
+    EXPECT_EQ(stLineOf("if (data__->GO.value)"), 4);
+    EXPECT_EQ(stLineOf("data__->COUNT.value + ((INT)1LL)"), 5);
+    EXPECT_EQ(stLineOf("} else if ("), 7);
+    EXPECT_EQ(stLineOf("COUNT, , ((INT)0LL)"), 8);
+    EXPECT_EQ(stLineOf("__case1 == 3"), 11);
+    EXPECT_EQ(stLineOf("COUNT, , ((INT)4LL)"), 12);
+    // After the body the generated file has its own lines again: the exit is not an ST line.
+    for (std::size_t i = 0; i < with.code.size(); ++i) {
+        if (with.code[i] == "__end:") {
+            EXPECT_EQ(with.where[i].first, fs::absolute(dir_ / "out" / "FB_Lines.c").string());
+            std::ifstream in(dir_ / "out" / "FB_Lines.c");
+            int number = 0;
+            for (std::string line; std::getline(in, line) && line != "__end:";) ++number;
+            EXPECT_EQ(with.where[i].second, number + 1);
+        }
+    }
+}
+
 // --gvl: the global constant list is checked, POU constants named like its constants must repeat them
 // unchanged, and a build writes the list as a name/type/value table.
 const char* kList =

@@ -45,6 +45,7 @@ const std::uint32_t kErrAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
 const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
 const std::uint32_t kErrInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
 const std::uint32_t kErrAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
+const std::uint32_t kErrNotAllowed = kGvl["PAC_LIB_ERR_NOT_ALLOWED"];
 const std::uint32_t kErrInvalidVelocity = kGvl["PAC_LIB_ERR_INVALID_VELOCITY"];
 const std::uint32_t kErrInvalidAcceleration = kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"];
 const std::uint32_t kErrInvalidPosition = kGvl["PAC_LIB_ERR_INVALID_POSITION"];
@@ -720,6 +721,78 @@ TEST_F(FbPacAxis, ResetWithoutAnAxisErrorIsOneScan) {
     EXPECT_EQ(axis_->ResetCycles(), 1);
 }
 
+// An axis error ends a job in whatever wait it is (docs/fb/FB_PAC_Axis.md, "Axis error"): while it waits for
+// the axis to be free, before the take-over, and while it stops after Abort; Abort in those waits ends it with
+// CommandAborted. A CMD error with number 0 is reported as 16#8008, so that Error never comes with ErrorID 0.
+
+TEST_F(FbPacAxis, AxisErrorBeforeTheTakeOverIsAnError) {
+    Settle();
+    axis_->Mute(true);  // the Start edge gets no answer
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(3);
+    ASSERT_TRUE(Busy());
+    ASSERT_TRUE(StartBit());
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and the traverse bit off";
+}
+
+TEST_F(FbPacAxis, AbortBeforeTheTakeOverIsCommandAbortedWhenStartHasBeenLowLongEnough) {
+    Settle();
+    axis_->Mute(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(3);
+    ASSERT_TRUE(StartBit());
+    fb_->ABORT.value = TRUE;
+    Cycle(1);
+    const std::int64_t a = task_.ScanCount();
+    EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and the traverse bit off in the Abort scan";
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
+    EXPECT_TRUE(Aborted());
+    // Nothing was taken over, so nothing was measured: Start must have been 0 on the wire for the update
+    // time before the axis counts as free (read back from the scan after the Abort scan).
+    EXPECT_EQ(task_.ScanCount(), a + 1 + kPacUpdateScans);
+}
+
+TEST_F(FbPacAxis, CmdErrorWithNumberZeroIsReportedAsNotAllowed) {
+    Settle();
+    axis_->Mute(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(2);
+    AxisImage reply = visible_;
+    pac::test::WriteBe32(reply, 0, ReadBe32(reply, 0) | status::kCmdError);
+    pac::test::WriteBe16(reply, 4, 0);
+    forcedReply_ = reply;
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrNotAllowed);
+}
+
+TEST_F(FbPacAxis, AnyByteOfTheModuleMakesItAReply) {
+    // A live axis shows a drive state in bits 0..5; a module that is all zero is no reply (link lost), but
+    // one with any field set comes from the PA-CONTROL, odd as it is.
+    Settle();
+    for (int field : {4, 6, 8}) {
+        AxisImage reply{};
+        if (field == 8) {
+            pac::test::WriteBe32(reply, 8, BitsOf(1.5f));
+        } else {
+            pac::test::WriteBe16(reply, field, 7);
+        }
+        forcedReply_ = reply;
+        Cycle(1);
+        EXPECT_TRUE(fb_->STATUSVALID.value) << "byte " << field;
+        forcedReply_ = AxisImage{};
+        Cycle(1);
+        EXPECT_FALSE(fb_->STATUSVALID.value);
+    }
+}
+
 // ---------------------------------------------------------------------------------------------------
 // Abort, Enable, link loss, a new job during a job.
 
@@ -843,6 +916,56 @@ TEST_F(FbPacAxisLongMove, NewExecuteAbortsTheJobAndStartsTheNewOneWhenTheAxisIsF
     ASSERT_EQ(axis_->Jobs().size(), 2u);
     EXPECT_EQ(axis_->Jobs()[1].control, ctrl::kAxisOn | ctrl::kStart | ctrl::kMoveRelative);
     EXPECT_EQ(axis_->Position(), stoppedAt - 5.0f);
+}
+
+// A new job waits while ACTIVE of the one it superseded stays up.
+TEST_F(FbPacAxisLongMove, AxisErrorWhileTheNextJobWaitsForTheAxisIsAnError) {
+    axis_->HoldActive(true);
+    Execute(false);
+    Cycle(1);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(1);
+    ASSERT_TRUE(Aborted()) << "the move, in the edge scan";
+    Cycle(3);
+    ASSERT_TRUE(Busy());
+    ASSERT_FALSE(StartBit()) << "waiting for ACTIVE to fall";
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
+    const std::int64_t raised = task_.ScanCount();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_EQ(task_.ScanCount(), raised + 1 + inLatency_ + 1) << "the first scan that can show the axis error";
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(axis_->Jobs().size(), 1u) << "the new job never went out";
+}
+
+TEST_F(FbPacAxisLongMove, AbortWhileTheNextJobWaitsIsCommandAbortedOnceTheAxisIsFree) {
+    axis_->HoldActive(true);
+    Execute(false);
+    Cycle(1);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
+    Execute(true);
+    Cycle(3);
+    ASSERT_TRUE(Busy());
+    fb_->ABORT.value = TRUE;
+    Cycle(3);
+    EXPECT_TRUE(Busy()) << "it ends when the axis is free, or after Timeout";
+    axis_->HoldActive(false);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_FALSE(StartBit());
+    EXPECT_EQ(axis_->Jobs().size(), 1u) << "the new job never went out";
+}
+
+TEST_F(FbPacAxisLongMove, AxisErrorWhileStoppingIsAnError) {
+    axis_->HoldActive(true);  // the stop takes as long as the test needs
+    fb_->ABORT.value = TRUE;
+    Cycle(2);
+    ASSERT_TRUE(Busy());
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Error()) << "not CommandAborted: the axis reports an error";
+    EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
 }
 
 TEST_F(FbPacAxisLongMove, InterruptionFromOutsideIsCommandAborted) {
@@ -1021,19 +1144,37 @@ TEST_F(FbPacAxis, ConditionBitsGoWithAbsoluteAndRelativeMovesOnly) {
     }
 }
 
-TEST_F(FbPacAxis, MoveEndedByItsConditionIsDone) {
-    FakeAxisConfig config;
-    config.moveCycles = 30;
-    Configure(config);
-    Settle();
-    SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
-    fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
-    Execute(true);
-    Cycle(6);
+// An absolute move with G123's condition "while input 1", six scans under way.
+class FbPacAxisConditionMove : public FbPacAxis {
+protected:
+    void StartMoveWhileInput1() {
+        FakeAxisConfig config;
+        config.moveCycles = 30;
+        Configure(config);
+        Settle();
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 300.0f);
+        fb_->CONDITION.value = E_PAC_MOVECONDITION__PAC_COND_WHILE_INPUT_1;
+        Execute(true);
+        Cycle(6);
+    }
+};
+
+TEST_F(FbPacAxisConditionMove, MoveEndedByItsConditionIsDone) {
+    StartMoveWhileInput1();
     axis_->StopByCondition();
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
     EXPECT_TRUE(Done());
     EXPECT_TRUE(fb_->STOPPEDBYCONDITION.value);
+    EXPECT_TRUE(fb_->HALTED.value);
+}
+
+// A G123 move that HALT ends without its condition (STOP ONLINE...) was interrupted: not Done.
+TEST_F(FbPacAxisConditionMove, ConditionMoveInterruptedFromOutsideIsCommandAborted) {
+    StartMoveWhileInput1();
+    axis_->InterruptFromOutside();
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 20, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_FALSE(fb_->STOPPEDBYCONDITION.value);
     EXPECT_TRUE(fb_->HALTED.value);
 }
 

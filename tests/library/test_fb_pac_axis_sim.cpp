@@ -22,12 +22,15 @@
 #include "bench_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
+#include "pac/bench_trace.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/sim/axis_module.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "pac/st_program.hpp"
 #include "pac/pac_plc_bench.hpp"
+#include "pac/trace_dump.hpp"
 #include "plcopen_pins.hpp"
+#include "plcopen_trace.hpp"
 #include "plcopen_watch.hpp"
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
@@ -234,6 +237,13 @@ public:
         rules_.AddRequest("FB_PAC_Ctrl", ctrl_);
         for (int k = 1; k <= options.axes; ++k) rules_.AddJob("FB_PAC_Axis " + std::to_string(k), Fb(k));
         rules_.Attach(plc_.Task());
+        // A failing test leaves the bus modules and the FBs' pins as a VCD file (pac/trace_dump.hpp).
+        pac::TraceBusModules(recording_, plc_);
+        pac::test::TracePlcOpenPins(recording_, "ctrl.FB_PAC_Ctrl", ctrl_);
+        for (int k = 1; k <= options.axes; ++k) {
+            pac::test::TracePlcOpenPins(recording_, "axis" + std::to_string(k) + ".FB_PAC_Axis", Fb(k));
+        }
+        recording_.AttachTo(plc_.Task());
     }
 
     // ONLINE through FB_PAC_Ctrl, with the integer format (2.5.3) taken over on the way; then long enough for
@@ -348,6 +358,8 @@ private:
     pac::test::PlcOpenWatch rules_{options_.timing.PlcCycle()};
     int controlViolations_ = 0;
     ControllerView view_;
+    pac::TraceRecorder recording_;
+    pac::ScopedVcdDump dump_{recording_.Recording(), pac::test::BusTimingName({options_.timing, 0})};
 };
 
 // Axis parameters 8 / 9 (traverse range) and the limit switches (machine positions) of axis k.

@@ -308,6 +308,133 @@ TEST_F(FbPacCmd, ControllerRestartDuringCommandIsAnErrorNotAnAcknowledgement) {
     EXPECT_EQ(cmd_->ERRORID.value, kErrConnectionLost);
 }
 
+// Waiting for the interface is waiting for the controller too: status 0 there (a restart, a lost link) ends the
+// wait at once instead of after Timeout, as "not ready": the command never went out.
+TEST_F(FbPacCmd, ControllerRestartWhileWaitingForTheInterfaceIsAnError) {
+    fromPac_ = Reply(true, false, false);  // RECEIVE 1, the module's SEND 0: not free until it is in step again
+    Request(0x1906, 1, 0);
+    Cycle(2);
+    ASSERT_TRUE(Busy());
+    ASSERT_FALSE(cmd_->ACKNOWLEDGED.value);
+    fromPac_ = Reply(false, false, false, 0, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrNotReady);
+    EXPECT_EQ((toPac_[6] & 0x7F) << 8 | toPac_[7], 0x190B) << "nothing was sent: the module stays parked";
+}
+
+// The parked module follows RECEIVE whichever value the controller last showed: here a reply with status 0
+// that still carries RECEIVE 1 (the link, not the controller, is gone).
+TEST_F(FbPacCmd, ParkedModuleTakesASetReceiveFlagToo) {
+    Cycle(1);
+    ASSERT_FALSE(SendFlag());
+    fromPac_ = Reply(true, false, false, 0, 0);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "SEND := RECEIVE = 1, harmless 190B";
+    fromPac_ = Reply(true, false, true);
+    Request(0x1906, 2, 0);
+    Cycle(1);
+    EXPECT_FALSE(SendFlag()) << "the next command is one clean toggle, from 1 to 0";
+}
+
+// A long command refused after its acknowledgement (the move cannot be carried out): KF with the number.
+TEST_F(FbPacCmd, CommandErrorAfterTheAcknowledgementOfALongCommand) {
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(1);
+    ASSERT_TRUE(Busy());
+    ASSERT_TRUE(cmd_->ACKNOWLEDGED.value);
+    fromPac_ = Reply(true, true, false, 64, 31, 0x40400000);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, 64);
+    EXPECT_EQ(cmd_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_COMMAND);
+    EXPECT_EQ(cmd_->ACKDATA.value, 0x40400000u) << "where the move stopped";
+}
+
+// EndTimeout T#0S means the pin's default, 60 s (docs/fb/FB_PAC_Cmd.md): neither no wait nor an unbounded one.
+TEST_F(FbPacCmd, EndTimeoutZeroMeansTheDefaultOfSixtySeconds) {
+    const std::uint32_t kErrEndTimeout = kGvl["PAC_LIB_ERR_END_TIMEOUT"];
+    cmd_->ENDTIMEOUT.value = TIME{0, 0};
+    cmd_->TIMEOUT.value = TIME{0, 5'000'000};
+    Request(0x0A87, 1, 0x41200000);
+    Cycle(1);
+    fromPac_ = Reply(true, false, false, 0, 31, 0x40000000);
+    Cycle(1);
+    ASSERT_TRUE(cmd_->ACKNOWLEDGED.value);
+    Cycle(59'990);  // 1 ms scans: just under 60 s after the acknowledgement
+    EXPECT_TRUE(Busy()) << "still waiting for END OF PROCESSING";
+    EXPECT_FALSE(Error());
+    Cycle(20);
+    EXPECT_TRUE(Error()) << "60 s after the acknowledgement";
+    EXPECT_EQ(cmd_->ERRORID.value, kErrEndTimeout);
+}
+
+// Timeout T#0S means the pin's default, 1 s, like EndTimeout: a command never waits without limit.
+TEST_F(FbPacCmd, TimeoutZeroMeansTheDefaultOfOneSecond) {
+    cmd_->TIMEOUT.value = TIME{0, 0};
+    Request(0x1906, 1, 0);
+    Cycle(1);  // edge and toggle at t = 1 ms; the controller never answers
+    Cycle(999);
+    EXPECT_TRUE(Busy()) << "t = 1000 ms: 999 ms elapsed";
+    Cycle(1);
+    EXPECT_TRUE(Error()) << "t = 1001 ms: 1 s elapsed";
+    EXPECT_EQ(cmd_->ERRORID.value, kErrAckTimeout);
+}
+
+// COMMAND ERROR with error number 0 (a controller that sets KF without a number): Error never comes with
+// ErrorID 0, so the library's 16#800F stands in (docs/fb/FB_PAC_Cmd.md).
+TEST_F(FbPacCmd, CommandErrorWithoutANumberIsTheLibrarysCode) {
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    fromPac_ = Reply(true, true, false, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kGvl["PAC_LIB_ERR_NO_ERROR_NUMBER"]);
+}
+
+// The two-step write of Interbus-S (4.2.4): data in one scan, the SEND toggle in the next. A controller that
+// restarts between the two scans gets no toggle: the command never went out, so it is "not ready".
+TEST_F(FbPacCmd, TwoStepWriteSendsNoToggleToAControllerThatRestartedInBetween) {
+    interface_->TWOSTEPWRITE.value = TRUE;
+    Cycle(1);
+    Request(0x0906, 3, 333);
+    Cycle(1);
+    ASSERT_EQ(toPac_, (Image{0x00, 0x00, 0x01, 0x4D, 0x00, 0x03, 0x09, 0x06})) << "the data, SEND unchanged";
+    fromPac_ = Reply(false, false, false, 0, 0);
+    Cycle(1);
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(cmd_->ERRORID.value, kErrNotReady);
+    EXPECT_FALSE(SendFlag()) << "no toggle";
+}
+
+// FB ids on the channel skip 0 when they wrap (0 is "no FB": an idle channel's InFlightId).
+TEST_F(FbPacCmd, FbIdsSkipZeroWhenTheyWrap) {
+    interface_->CHANNEL.value.NEXTID = 0xFFFF;
+    Request(0x1906, 1, 0);
+    Cycle(1);
+    ASSERT_TRUE(Busy());
+    EXPECT_EQ(interface_->CHANNEL.value.INFLIGHTID, 1);
+    EXPECT_EQ(interface_->CHANNEL.value.NEXTID, 1);
+}
+
+// The history index is kept in 0..15 even when a program wrote something else into the channel: the
+// handshake goes to entry 0 instead of outside the array.
+TEST_F(FbPacCmd, HistoryIndexOutOfRangeStartsOverAtTheFirstEntry) {
+    interface_->CHANNEL.value.HISTORYNEXT = 16;
+    Request(0x0906, 3, 333);
+    Cycle(1);
+    fromPac_ = Reply(true, false, true, 0, 1, 333);
+    Cycle(1);
+    ASSERT_TRUE(Done());
+    const ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
+    EXPECT_EQ(channel.HISTORY.table[0].CODE, 0x0906);
+    EXPECT_EQ(channel.HISTORY.table[0].ACKDATA, 333u);
+    EXPECT_EQ(channel.HISTORYNEXT, 1);
+    EXPECT_EQ(channel.HISTORYCOUNT, 1u);
+}
+
 TEST_F(FbPacCmd, ControllerNotReadyRefusesTheCommandAndSendsNothing) {
     fromPac_ = Reply(false, false, false, 0, 0);
     Cycle(1);

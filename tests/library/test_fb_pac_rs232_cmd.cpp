@@ -375,4 +375,75 @@ TEST_F(Rs232Cmd, StaleBytesNeverPassForTheReply) {
     EXPECT_EQ(fb_->ACKDATA.value, 222u);
 }
 
+// A long command whose end never comes: EndTimeout counts from the first acknowledgement through the polls.
+TEST_F(Rs232Cmd, ALongCommandThatNeverEndsEndsInEndTimeout) {
+    fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
+    fb_->ENDTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(40));
+    Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
+    Sent();
+    Reply(Frame("0;0;31;0;1;1255.000"));
+    Cycle(1);
+    ASSERT_TRUE(fb_->BUSY.value && fb_->ACKNOWLEDGED.value);
+    const auto acknowledged = task_.ScanCount();
+    int polls = 0;
+    ASSERT_TRUE(RunUntil([&] {
+        if (!Sent().empty()) {
+            ++polls;
+            Reply(Frame("0;0;31;0;1;1300.000"));  // still moving
+        }
+        return Final();
+    }, 200, "final output"));
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_END_TIMEOUT"]);
+    EXPECT_EQ(task_.ScanCount() - acknowledged, 40) << "EndTimeout after the acknowledgement, at 1 ms scans";
+    EXPECT_GE(polls, 5) << "polled every PollInterval meanwhile";
+}
+
+// After a command that failed on a silent line, bytes still arrive (its late, spoilt reply). The next command
+// waits until the line has been quiet for QuietTime, so none of them can pass for its reply.
+TEST_F(Rs232Cmd, AfterAFailedCommandTheNextWaitsForAQuietLine) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    fb_->RETRIES.value = 0;
+    Start(0x1906, 2);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 100, "final output"));
+    ASSERT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    fb_->EXECUTE.value = FALSE;
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::seconds(1));  // longer than the noise lasts
+    Cycle(1);
+    Sent();
+    SetBytesPerScan(1);
+    Reply(Bytes(30, 0x55));
+    Start(0x1906, 3);
+    EXPECT_TRUE(Sent().empty()) << "not into a busy line";
+    std::int64_t lastByte = task_.ScanCount();
+    int scans = 0;
+    while (sent_.empty() && scans++ < 300) {
+        const bool arriving = !incoming_.empty();
+        Cycle(1);
+        if (arriving) lastByte = task_.ScanCount();
+    }
+    ASSERT_FALSE(sent_.empty());
+    const Bytes frame = Sent();
+    ASSERT_GE(frame.size(), 12u);
+    EXPECT_EQ(std::string(frame.begin() + 2, frame.begin() + 12), "1906;3;0;0") << "the new command (its CHECK rule: AUTO's)";
+    EXPECT_EQ(task_.ScanCount() - lastByte, 50) << "QuietTime T#50MS after the last byte, at 1 ms scans";
+}
+
+// A noise burst that looks like the start of a frame spoils the first reply; the controller's reply after it
+// is still taken while the FB waits for the line to fall quiet, and a relative move is not asked for again.
+TEST_F(Rs232Cmd, AReplyAfterANoiseBurstIsTakenWhileTheLineFallsQuiet) {
+    Start(0x0A89, 1, pac::test::BitsOf(10.0F));
+    Sent();
+    Reply(Hex("02 41 02 42 03 33 41"));  // STX, text, STX again, text, ETX, then a letter among the CHECK digits
+    Cycle(1);
+    ASSERT_TRUE(fb_->BUSY.value);
+    ASSERT_FALSE(fb_->ACKNOWLEDGED.value);
+    Cycle(3);
+    Reply(Frame("0;1;31;0;1;10.000"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->ACKDATA.value, pac::test::BitsOf(10.0F));
+    EXPECT_TRUE(Sent().empty()) << "neither the move again nor a poll";
+}
+
 }  // namespace

@@ -752,6 +752,68 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, ParameterAxisFbs,
                          ::testing::ValuesIn(pac::test::BusTimingGrid({1, 5}, {3, 10}, {0, 2})),
                          pac::test::BusTimingName);
 
+// PLCopen's CommandAborted for the long commands other than the absolute move (which the timing grid above
+// covers). A command owns the CMD interface until its end of processing; only a stop of what it runs may
+// overtake it (F_PAC_IsStopOver), and the PA-CONTROL then reports the stop alone: the move FB is aborted.
+TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAborted) {
+    AxisBench bench({1, 3, 1});
+    ASSERT_TRUE(bench.GoOnline());
+    bench.moveRel->AXIS.value = 2;
+    bench.moveRel->DISTANCE.value = 300.0F;
+    bench.Start(bench.moveRel);
+    int guard = 0;
+    while (!bench.moveRel->ACTIVE.value && guard++ < 1000) bench.Settle(1);
+    ASSERT_TRUE(bench.moveRel->ACTIVE.value);
+    ASSERT_TRUE(bench.Motion(2).Moving());
+    bench.stop->AXIS.value = 2;
+    ASSERT_TRUE(bench.Run(bench.stop).Done());
+    EXPECT_TRUE(bench.moveRel->COMMANDABORTED.value);
+    EXPECT_FALSE(bench.moveRel->ERROR.value);
+    EXPECT_EQ(bench.moveRel->ERRORID.value, 0) << "CommandAborted carries no ErrorID";
+    EXPECT_FALSE(bench.Motion(2).Moving()) << "the stop ended the move";
+    EXPECT_LT(bench.Motion(2).Position(), 300.0);
+    bench.Release(bench.moveRel);
+    EXPECT_FALSE(bench.moveRel->COMMANDABORTED.value);
+}
+
+// The axis stop is itself overtaken by cmd_stop (0600, which may overtake anything): CommandAborted.
+TEST(ParameterAxisFbsOverSim, StopOvertakenByCmdStopWhileTheAxisBrakesIsCommandAborted) {
+    AxisBench bench({1, 3, 1});
+    ASSERT_TRUE(bench.GoOnline());
+    bench.setAccel->AXIS.value = 1;
+    bench.setAccel->ACCELERATION.value = 50.0F;  // AE/s^2 both ways: braking takes a while
+    ASSERT_TRUE(bench.Run(bench.setAccel).Done());
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 1000.0F;
+    bench.Start(bench.moveAbs);
+    bench.Settle(400);
+    bench.stop->AXIS.value = 1;
+    bench.Start(bench.stop);
+    int guard = 0;
+    while (!(bench.stop->BUSY.value && bench.stop->ACTUALPOSITION.value > 0.0F) && guard++ < 1000) bench.Settle(1);
+    ASSERT_TRUE(bench.stop->BUSY.value) << "acknowledged, braking";
+    ASSERT_TRUE(bench.Motion(1).Moving());
+    bench.cmd->CODE.value = 0x0600;
+    bench.cmd->PARAM.value = 0;
+    bench.cmd->DATA.value = 0;
+    ASSERT_TRUE(bench.Run(bench.cmd).Done());
+    EXPECT_TRUE(bench.stop->COMMANDABORTED.value);
+    EXPECT_FALSE(bench.stop->ERROR.value);
+    EXPECT_EQ(bench.stop->ERRORID.value, 0);
+}
+
+// A stop the PA-CONTROL refuses is its error, with its number; the position output keeps its value.
+TEST(ParameterAxisFbsOverSim, StopOfAnAxisTheControllerDoesNotHaveIsItsError) {
+    AxisBench bench({1, 3, 1});
+    ASSERT_TRUE(bench.GoOnline());
+    bench.stop->AXIS.value = 3;  // the simulated controller has fewer axes
+    const FinalOutcome outcome = bench.Run(bench.stop);
+    ASSERT_TRUE(outcome.Error());
+    EXPECT_FALSE(outcome.Aborted());
+    EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    EXPECT_EQ(bench.stop->ACTUALPOSITION.value, 0.0F);
+}
+
 // A lost link during a move is an Error, not CommandAborted: the reply shows status 0.
 TEST(ParameterAxisFbsOverSim, PowerCycleDuringAMoveIsAnErrorNotCommandAborted) {
     AxisBench bench({1, 3, 1}, {}, 30ms);

@@ -168,7 +168,7 @@ TEST(ScenarioCli, UsageErrorsExitTwo) {
     EXPECT_EQ(RunBinary("").exitCode, 2);
     const Cli none({});
     EXPECT_EQ(none.exitCode, pac::scenario::kExitRefused);
-    EXPECT_NE(none.err.str().find("usage: pac_scenario [--check] SCENARIO.json"), std::string::npos);
+    EXPECT_NE(none.err.str().find("usage: pac_scenario [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json"), std::string::npos);
     const Cli unknown({"--fast", kDemo});
     EXPECT_EQ(unknown.exitCode, pac::scenario::kExitRefused);
     EXPECT_NE(unknown.err.str().find("pac_scenario: unknown option --fast"), std::string::npos);
@@ -189,6 +189,45 @@ TEST(ScenarioCli, AMissingScenarioFileExitsTwo) {
     EXPECT_EQ(scenario.exitCode, pac::scenario::kExitRefused);
     EXPECT_EQ(scenario.err.str(),
               "pac_scenario: invalid scenario " + testing::TempDir() + "/missing.json: cannot read the file\n");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ScenarioCli, WritesTheTraceAndTheDiagramBesideTheTimeline) {
+    const std::string vcd = TempFile("run.vcd", "");
+    const std::string wave = TempFile("run.json", "");
+    const std::string example = std::string(PAC_SCENARIO_DIR) + "/examples/cmd_ack.json";
+    const Process run = RunBinary("--vcd " + Quoted(vcd) + " --wavedrom " + Quoted(wave) + " " + Quoted(example));
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("Result: 2 steps, 1 command: all expectations met"), std::string::npos) << run.out;
+    const std::string trace = ReadFile(vcd);
+    EXPECT_EQ(trace.rfind("$comment pac_scenario cmd_ack $end\n", 0), 0u) << trace.substr(0, 200);
+    EXPECT_NE(trace.find("$var wire 1 ( Execute $end"), std::string::npos);
+    const std::string diagram = ReadFile(wave);
+    EXPECT_EQ(diagram.rfind("{\"signal\": [\n  {\"name\":\"t [ms]\"", 0), 0u) << diagram.substr(0, 200);
+    EXPECT_NE(diagram.find("\"head\": {\"text\":\"FB_PAC_Cmd: a command and its acknowledgement"), std::string::npos);
+}
+
+TEST(ScenarioCli, TraceOptionsWithoutAFileOrWithAFileItCannotWriteExitTwo) {
+    const Cli missing({kDemo, "--vcd"});
+    EXPECT_EQ(missing.exitCode, pac::scenario::kExitRefused);
+    EXPECT_EQ(missing.err.str(), "pac_scenario: --vcd needs a file name\n");
+    const Cli folder({"--wavedrom", testing::TempDir() + "/no-such-folder/x.json", kDemo});
+    EXPECT_EQ(folder.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(folder.err.str().find("pac_scenario: cannot write " + testing::TempDir() + "/no-such-folder/x.json"),
+              std::string::npos)
+        << folder.err.str();
+}
+
+TEST(ScenarioCli, ADiagramOfStepsWithoutScansIsRefused) {
+    const std::string file = TempFile("faults.json", R"({"steps": [{"wait_ms": 4}, {"fault": "power_cycle"}],
+        "diagram": {"steps": [2, 2]}})");
+    const Cli run({"--wavedrom", TempFile("out.json", ""), file});
+    EXPECT_EQ(run.exitCode, pac::scenario::kExitRefused);
+    EXPECT_NE(run.err.str().find("$.diagram.steps: steps 2..2 take no scan: nothing to draw"), std::string::npos)
+        << run.err.str();
 }
 
 }  // namespace

@@ -163,14 +163,14 @@ TEST(ScenarioLoader, RefusesADuplicateKey) {
 
 TEST(ScenarioLoader, RefusesUnknownKeys) {
     EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}], "step": 1})"),
-              R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "modules", "controller" or )"
-              R"("steps"))");
+              R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "modules", "controller", )"
+              R"("steps" or "diagram"))");
     EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle": 2}, "steps": [{"wait_ms": 1}]})"),
               R"($.timing.plc_cycle: unknown key "plc_cycle" (timing has "plc_cycle_ms", "pac_cycle_ms", )"
               R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"n_register": {}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.n_register: unknown key "n_register" (controller has "operating_status", )"
-              R"("n_registers", "r_registers", "inputs", "system_parameters" or "axes_referenced"))");
+              R"("n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced" or "limit_switches"))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "parm": 3})")),
               R"($.steps[0].parm: unknown key "parm" (a command step has "command", "param", "data", "timeout_ms", )"
               R"("end_timeout_ms", "expect" or "note"))");
@@ -378,6 +378,53 @@ TEST(ScenarioLoader, ReadsModulesCtrlAndAxesSteps) {
     EXPECT_EQ(move.expect.referenced, true);
 }
 
+TEST(ScenarioLoader, ReadsLimitSwitchesAndAxisErrorResets) {
+    const Scenario s = Load(R"({"modules": {"ctrl": true, "axes": 2},
+        "controller": {"limit_switches": {"2": {"positive": 30.0}, "1": {"negative": -5, "positive": 5}}},
+        "steps": [{"axes": [{"axis": 2, "reset_error": true, "enable": true}]}]})");
+    ASSERT_EQ(s.controller.limitSwitches.size(), 2u);
+    EXPECT_FALSE(s.controller.limitSwitches.at(2).negative);
+    EXPECT_EQ(s.controller.limitSwitches.at(2).positive, 30.0);
+    EXPECT_EQ(s.controller.limitSwitches.at(1).negative, -5.0);
+    const auto& job = std::get<pac::scenario::AxesStep>(s.steps[0].action).jobs[0];
+    EXPECT_TRUE(job.resetError);
+    EXPECT_FALSE(job.HasJob());
+    const std::string axes = R"({"modules": {"ctrl": true, "axes": 1}, )";
+    EXPECT_EQ(Refusal(axes + R"("controller": {"limit_switches": {"9": {"positive": 1}}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.limit_switches["9"]: out of range: axis 9 is not in 1..8)");
+    EXPECT_EQ(Refusal(axes + R"("controller": {"limit_switches": {"1": {}}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.limit_switches["1"]: missing key: "negative", "positive" or both)");
+    EXPECT_EQ(Refusal(axes + R"("controller": {"limit_switches": {"1": {"negative": 5, "positive": 5}}}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.limit_switches["1"]: contradiction: the negative switch must lie below the positive one)");
+    EXPECT_EQ(Refusal(axes + R"("steps": [{"axes": [{"axis": 1, "command": "PAC_AX_HOME", "reset_error": true}]}]})"),
+              "$.steps[0].axes[0].reset_error: contradiction: an axis has a command or resets its error, not both in one step");
+}
+
+TEST(ScenarioLoader, ReadsADiagramAndRefusesOneItCannotDraw) {
+    const Scenario s = Load(R"({"steps": [{"wait_ms": 2}, {"command": "0906"}, {"wait_ms": 2}],
+        "diagram": {"title": "t", "steps": [2, 3], "signals": ["cmd.SEND", "cmd.FromPac"], "sampled": ["cmd.FromPac"],
+                    "context_scans": 0, "max_idle_scans": 5, "hscale": 2}})");
+    EXPECT_EQ(s.diagram.title, "t");
+    EXPECT_EQ(s.diagram.firstStep, 2u);
+    EXPECT_EQ(s.diagram.lastStep, 3u);
+    EXPECT_EQ(s.diagram.signals, (std::vector<std::string>{"cmd.SEND", "cmd.FromPac"}));
+    EXPECT_EQ(s.diagram.sampled, (std::vector<std::string>{"cmd.FromPac"}));
+    EXPECT_EQ(s.diagram.contextScans, 0);
+    EXPECT_EQ(s.diagram.maxIdleScans, 5);
+    EXPECT_EQ(s.diagram.hscale, 2);
+    EXPECT_EQ(Load(R"({"steps": [{"wait_ms": 2}, {"wait_ms": 2}]})").diagram.lastStep, 2u) << "every step by default";
+    const std::string steps = R"({"steps": [{"wait_ms": 2}, {"wait_ms": 2}], "diagram": )";
+    EXPECT_EQ(Refusal(steps + R"({"steps": [2, 3]}})"), "$.diagram.steps[1]: out of range: 3 is not in 2..2");
+    EXPECT_EQ(Refusal(steps + R"({"steps": [2, 1]}})"), "$.diagram.steps[1]: out of range: 1 is not in 2..2");
+    EXPECT_EQ(Refusal(steps + R"({"steps": 2}})"), "$.diagram.steps: wrong type: expected [first step, last step], got the number 2");
+    EXPECT_EQ(Refusal(steps + R"({"signals": ["ctrl.Status"]}})").rfind(R"($.diagram.signals[0]: unknown signal "ctrl.Status" ()", 0), 0u)
+        << "the scenario has no CTRL interface";
+    EXPECT_EQ(Refusal(steps + R"({"signals": ["cmd.SEND"], "sampled": ["cmd.RF"]}})").rfind(R"($.diagram.sampled[0]: unknown signal "cmd.RF" ()", 0), 0u)
+        << "a sampled lane must be one of the diagram's";
+    EXPECT_EQ(Refusal(steps + R"({"hscale": 0}})"), "$.diagram.hscale: out of range: 0 is not in 1..10");
+    EXPECT_EQ(Refusal(steps + R"({"colour": 1}})").rfind(R"($.diagram.colour: unknown key "colour" ()", 0), 0u);
+}
+
 TEST(ScenarioLoader, RefusesModuleStepsItCannotRun) {
     EXPECT_EQ(Refusal(R"({"modules": {"axes": 1}, "steps": [{"wait_ms": 1}]})"),
               R"($.modules.axes: axis modules need the CTRL interface (extensions 2..9 come after it): set "ctrl": true)");
@@ -396,7 +443,7 @@ TEST(ScenarioLoader, RefusesModuleStepsItCannotRun) {
     EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 3, "enable": true}]}]})"),
               "$.steps[0].axes[0].axis: out of range: 3 is not in 1..2");
     EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1}]}]})"),
-              R"($.steps[0].axes[0]: missing key: an axis job needs "enable", "command" or both)");
+              R"($.steps[0].axes[0]: missing key: an axis job needs "enable", "command" or "reset_error")");
     EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1, "enable": true}, {"axis": 1, "enable": false}]}]})"),
               "$.steps[0].axes[1].axis: axis 1 appears twice in this step (one FB_PAC_Axis per axis)");
     EXPECT_EQ(Refusal(modules + R"({"axes": []}]})"), "$.steps[0].axes: out of range: an axes step needs at least one axis");

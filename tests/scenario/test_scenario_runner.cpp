@@ -207,6 +207,30 @@ TEST(ScenarioRunner, ModesExampleMeetsEveryExpectation) {
         << out;
 }
 
+// A limit switch of the controller setup stops the move on it with axis error 64; a reset_error job holds
+// ResetError until the axis error bit is seen 0 (bit 16 in the control word meanwhile), and the axis can
+// move away from the switch.
+TEST(ScenarioRunner, LimitSwitchExampleStopsOnTheSwitchAndResetsTheAxisError) {
+    const ScenarioRun run(FromFile("examples/axis_limit_switch.json"));
+    const std::string& out = run.timeline.str();
+    ASSERT_TRUE(run.report.Passed()) << out;
+    const auto& stopped = run.report.steps[3].axes.at(0);
+    EXPECT_TRUE(stopped.error);
+    EXPECT_EQ(stopped.position, 30.0);
+    const auto& reset = run.report.steps[4].axes.at(0);
+    EXPECT_TRUE(reset.finished);
+    EXPECT_FALSE(reset.hasJob) << "a reset is not an axis job";
+    EXPECT_NE(out.find("controller: input 1 = 1, system parameter 4 = 1, axis 1 limit switches: negative at -50.000, positive at 30.000"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("axis 1: ResetError"), std::string::npos) << out;
+    EXPECT_NE(out.find(AxisLine(reset, "axis error reset")), std::string::npos) << out;
+    // While the reset runs: control word Axis ON + bit 16 (and the last job's target), status with FAULT and the
+    // axis error bit, number 64.
+    EXPECT_NE(out.find("16#00010001 1000 1000    100.000 | 16#00008343      0    64     30.000"), std::string::npos) << out;
+    EXPECT_EQ(run.report.AxisJobs(), 2u);
+}
+
 TEST(ScenarioRunner, RunsAreDeterministic) {
     const Scenario demo = FromFile("demo.json");
     const ScenarioRun first(demo);

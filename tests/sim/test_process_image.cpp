@@ -48,6 +48,15 @@ TEST(ProcessImage, ModulesSitAtTheirOffsets) {
     EXPECT_THROW(ReadDword(axis, 9), std::out_of_range);
 }
 
+TEST(ProcessImage, HoldsAtMostTheLargestLayout) {
+    // 2.3.3: the largest image is 112 bytes (CMD, CTRL and 8 axis modules).
+    EXPECT_NO_THROW(ProcessImage(ModuleLayout{true, 8}.Bytes()));
+    EXPECT_THROW(ProcessImage(ModuleLayout{true, 8}.Bytes() + 1), std::invalid_argument);
+    ProcessImage image(ModuleLayout{true, 0}.Bytes());
+    EXPECT_THROW(image[16], std::out_of_range);
+    EXPECT_THROW(image.Module8(12), std::out_of_range);
+}
+
 TEST(Link, CarriesTheWholeImageAsOneBlock) {
     Link link(LinkConfig{1ms, 0ns, 1}, 28);
     ProcessImage image(28);

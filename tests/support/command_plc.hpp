@@ -1,7 +1,9 @@
 // A PLC whose command FBs (FB_PAC_Cmd and the FBs built on it) share the CMD interface of a simulated
 // PA-CONTROL on one bus timing: the PacPlcBench, the PLCopen checker on every FB after every scan, and
 // one command from its Execute edge to its final output, with the scan window the protocol allows for
-// it. Add the FBs in the order the PLC program calls them, then Start().
+// it. Add the FBs in the order the PLC program calls them, then Start(). The CMD module and each FB's
+// PLCopen pins are traced scan by scan; a test that fails leaves the trace as a VCD file
+// (pac/trace_dump.hpp: traces/<Suite>.<Test>.<bus timing>.vcd).
 #pragma once
 
 #include <chrono>
@@ -12,8 +14,12 @@
 
 #include "bench_timing.hpp"
 #include "bus_timing.hpp"
+#include "pac/bench_trace.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/pac_plc_bench.hpp"
+#include "pac/trace_dump.hpp"
+#include "pac/trace_recorder.hpp"
+#include "plcopen_trace.hpp"
 #include "plcopen_watch.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
@@ -24,16 +30,20 @@ class CommandPlc {
 public:
     explicit CommandPlc(const BusTiming& timing, pac::sim::PaControlConfig config = {},
                         std::chrono::nanoseconds bootTime = std::chrono::nanoseconds(0))
-        : timing_(timing), bench_(PlcBenchTimingOf(timing, bootTime), config), window_(timing), rules_(timing.PlcCycle()) {}
+        : timing_(timing), bench_(PlcBenchTimingOf(timing, bootTime), config), window_(timing), rules_(timing.PlcCycle()) {
+        pac::TraceBusModules(trace_, bench_);
+    }
 
     template <class Fb>
     void Add(std::string name, pac::FbInstance<Fb>& fb) {
         bench_.Call(fb);
+        TracePlcOpenPins(trace_, TraceScope(name), fb);
         rules_.AddCommand(std::move(name), fb);
     }
     void Start() {
         bench_.Start();
         rules_.Attach(bench_.Task());
+        trace_.AttachTo(bench_.Task());
     }
 
     // The scan that sees the Execute edge.
@@ -72,6 +82,7 @@ public:
     // scan of their own (docs/fb/FB_PAC_Cmd.md, "Timing").
     ScanWindow Window() const { return window_.Request(edgeTime_); }
     const ProtocolWindow& Protocol() const { return window_; }
+    const pac::Trace& Trace() const { return trace_.Recording(); }
 
     void Scan(int n = 1) { bench_.Scan(n); }
     const BusTiming& Timing() const { return timing_; }
@@ -94,6 +105,9 @@ private:
     PacPlcBench bench_;
     ProtocolWindow window_;
     PlcOpenWatch rules_;
+    pac::TraceRecorder trace_;
+    // After trace_ (written before it goes); one file per bus timing, as a test may try several.
+    pac::ScopedVcdDump dump_{trace_.Recording(), BusTimingName(::testing::TestParamInfo<BusTiming>(timing_, 0))};
     std::chrono::nanoseconds edgeTime_{0};
     std::int64_t edgeScan_ = 0;
 };

@@ -3,7 +3,7 @@ import re
 
 from . import literals
 from . import types as T
-from .common import _BIT_LITERALS, Ref, _cls, _name, pos
+from .common import _BIT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
 from .expressions import ExprCompiler
 
 
@@ -142,7 +142,8 @@ class BodyCompiler:
         method = getattr(self, "_s_" + cls, None)
         if method is None:
             raise self.err(node, f"{cls} is outside the portable subset")
-        return method(node, "  " * d, d)
+        # Lines a nested statement or an ELSIF / CASE branch already located keep their own ST line.
+        return located(method(node, "  " * d, d), pos(node)[0])
 
     # ------------------------------------------------------------------ statements
     def _s_AssignmentStatement(self, node, ind, d):
@@ -163,7 +164,7 @@ class BodyCompiler:
         out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
         out += self.block(self._stmts(node.statements), d + 1, node)
         for eif in node.else_ifs:
-            out.append(f"{ind}}} else if ({self.cond(eif.if_expression)}) {{")
+            out.append(SourceLine(f"{ind}}} else if ({self.cond(eif.if_expression)}) {{", pos(eif)[0]))
             out += self.block(self._stmts(eif.statements), d + 1, eif)
         if node.else_clause is not None:
             out.append(f"{ind}}} else {{")
@@ -178,7 +179,7 @@ class BodyCompiler:
 
     def _s_RepeatStatement(self, node, ind, d):
         out = [f"{ind}do {{"] + self._loop_body(node, "repeat", d)
-        return out + [f"{ind}}} while (!{self.cond(node.expression)});"]
+        return out + [SourceLine(f"{ind}}} while (!{self.cond(node.expression)});", pos(node.expression)[0])]
 
     def _loop_body(self, node, kind, d):
         """The loop's statements, inside which EXIT and CONTINUE are allowed."""
@@ -286,7 +287,7 @@ class BodyCompiler:
                     if lo <= shi and slo <= hi:
                         raise self.err(m, "CASE label used twice")
                 seen.append((lo, hi))
-            out.append(f"{ind}  {keyword} ({' || '.join(conds)}) {{")
+            out.append(SourceLine(f"{ind}  {keyword} ({' || '.join(conds)}) {{", pos(el)[0]))
             out += self.block(self._stmts(el.statements), d + 2, el)
             out.append(f"{ind}  }}")
             keyword = "else if"

@@ -10,26 +10,28 @@ from .compiler import Compiler
 from . import gvl, layout
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
-from .parsing import parse_file
+from .parsing import parse_files
 
 
-def _parse_all(files, cache_dir):
-    sources, errors = [], []
-    for path in files:
-        try:
-            sources.append(parse_file(path, cache_dir))
-        except StError as e:
-            errors.append(e)
+def _parsed(results):
+    """The SourceFiles of parse_files' `results`, or StErrors with every file's fault."""
+    errors = [r for r in results if isinstance(r, StError)]
     if errors:
         raise StErrors(errors)
-    return sources
+    return results
 
 
-def translate(files, cache_dir=None, gvl_files=()):
+def translate(files, cache_dir=None, gvl_files=(), jobs=None):
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
     against them; returns (compiler, program, {gvl file: constants}) or raises StErrors."""
-    sources = _parse_all(files, cache_dir)
-    lists = _parse_all(gvl_files, cache_dir)
+    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs)
+    return _translate_parsed(results[:len(files)], results[len(files):])
+
+
+def _translate_parsed(file_results, list_results):
+    # A fault in a POU file is reported before any in a global list.
+    sources = _parsed(file_results)
+    lists = _parsed(list_results)
     comp = Compiler()
     program = comp.compile(sources)
     constants = {}
@@ -52,7 +54,7 @@ def _tables(constants):
 def _build(args):
     names = ["POUS.h", "pacst_iec.h", ENUM_NAMES] + [_stem(f) + ".c" for f in args.files] + [_stem(f) + ".h" for f in args.gvl]
     try:
-        comp, program, constants = translate(args.files, args.cache, args.gvl)
+        comp, program, constants = translate(args.files, args.cache, args.gvl, args.jobs)
     except StErrors as e:
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
@@ -60,7 +62,7 @@ def _build(args):
         for err in e.errors:
             print(err, file=sys.stderr)
         return 1
-    outputs = Emitter(comp, program).outputs(args.files)
+    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(args.files)
     outputs.update(_tables(constants))
     written = write_outputs(args.out, outputs)
     if args.stamp:
@@ -75,7 +77,7 @@ def _declare(args):
     names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, "layout_probe.c"] + [_stem(f) + ".h" for f in args.gvl]
     check_name = os.path.join(args.check_out, "layout_check.c")
     try:
-        comp, program, constants = translate(args.files, args.cache, args.gvl)
+        comp, program, constants = translate(args.files, args.cache, args.gvl, args.jobs)
     except StErrors as e:
         remove_outputs(args.out, names)
         if os.path.exists(check_name):
@@ -96,12 +98,15 @@ def _declare(args):
 
 
 def _check(args):
-    # --separately: every file is a program of its own (the refusal snippets of the test suite).
-    groups = [[f] for f in args.files] if args.separately else [args.files]
+    # --separately: every file is a program of its own (the refusal snippets of the test suite). All
+    # files are parsed first, in parallel; then each group is compiled on its own.
+    results = parse_files(args.files + args.gvl, args.cache, args.jobs)
+    file_results, list_results = results[:len(args.files)], results[len(args.files):]
+    groups = [[r] for r in file_results] if args.separately else [file_results]
     failed = False
-    for files in groups:
+    for group in groups:
         try:
-            translate(files, args.cache, args.gvl)
+            _translate_parsed(group, list_results)
         except StErrors as e:
             failed = True
             for err in e.errors:
@@ -109,29 +114,37 @@ def _check(args):
     return 1 if failed else 0
 
 
+def _parse_options(parser):
+    parser.add_argument("--cache", help="folder for the per-file parse cache")
+    parser.add_argument("-j", "--jobs", type=int,
+                        help="processes that parse the files the cache lacks (default: one per core)")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="pacst", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     build = sub.add_parser("build", help="translate ST files (in declaration order) to C")
     build.add_argument("--out", required=True, help="folder for POUS.h, pacst_iec.h and one .c per ST file")
-    build.add_argument("--cache", help="folder for the per-file parse cache")
+    _parse_options(build)
     build.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
     build.add_argument("--stamp", help="file written after a successful build, removed after a refusal")
+    build.add_argument("--line-directives", action="store_true",
+                       help="precede each statement's C with #line naming its ST line (coverage, debuggers)")
     build.add_argument("-v", "--verbose", action="store_true")
     build.add_argument("files", nargs="+")
     build.set_defaults(run=_build)
     declare = sub.add_parser("declare", help="write POUS.h and the layout check for C++ code of a MATIEC build")
     declare.add_argument("--out", required=True, help="folder for POUS.h, pacst_iec.h and layout_probe.c")
     declare.add_argument("--check-out", required=True, help="folder of MATIEC's POUS.h, for layout_check.c")
-    declare.add_argument("--cache", help="folder for the per-file parse cache")
+    _parse_options(declare)
     declare.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
     declare.add_argument("--stamp", help="file written after success")
     declare.add_argument("files", nargs="+")
     declare.set_defaults(run=_declare)
     check = sub.add_parser("check", help="check ST files against the portable subset, generate nothing")
-    check.add_argument("--cache", help="folder for the per-file parse cache")
+    _parse_options(check)
     check.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, and checked against the POUs' constants")
     check.add_argument("--separately", action="store_true", help="check each file as a program of its own")

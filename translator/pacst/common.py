@@ -25,6 +25,21 @@ def pos(node):
     return 1, 1
 
 
+class SourceLine(str):
+    """A line of generated C and the ST line it comes from, for the #line directives of a coverage or
+    debug build (emit.py); everywhere else it is the plain string."""
+
+    def __new__(cls, text, st_line):
+        self = super().__new__(cls, text)
+        self.st_line = st_line
+        return self
+
+
+def located(lines, st_line):
+    """`lines` with every line not yet located attributed to `st_line`."""
+    return [line if isinstance(line, SourceLine) else SourceLine(line, st_line) for line in lines]
+
+
 def _cls(node):
     return type(node).__name__
 

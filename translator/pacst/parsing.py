@@ -2,21 +2,26 @@
 
 blark needs several milliseconds per source line, so a rebuild after touching one file re-parses
 only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
-of its text and the versions of blark and of this cache format.
+of its text and the versions of blark and of this cache format. The files the cache does not hold
+are parsed in parallel, one process per core (docs/benchmarks.md has the timings).
 """
+import concurrent.futures
 import hashlib
+import multiprocessing
 import os
 import pickle
 import re
 import tempfile
 
 import blark
-from blark.parse import parse_source_code
+from blark.parse import get_parser, parse_source_code
 
 from . import lexcheck
 from .errors import StError
 
 _CACHE_FORMAT = 1
+# Below about a second of parsing, starting worker processes costs more than it saves.
+_PARALLEL_MIN_CHARS = 4000
 
 
 def _cache_key(text):
@@ -67,34 +72,101 @@ class SourceFile:
         self.tree = tree
 
 
-def parse_file(path, cache_dir=None):
-    """Read, check lexically and parse `path`; raises StError with the position of the first fault."""
+def _read(path):
     try:
         with open(path, encoding="utf-8") as f:
-            text = f.read()
+            return f.read()
     except (OSError, UnicodeDecodeError) as exc:
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
-    lexcheck.check(text, path)
-    key = _cache_key(text)
-    cached = os.path.join(cache_dir, key + ".pickle") if cache_dir else None
-    if cached and os.path.exists(cached):
-        try:
-            with open(cached, "rb") as f:
-                return SourceFile(path, text, pickle.load(f))
-        except Exception:  # a corrupt cache entry is re-parsed, never trusted
-            pass
+
+
+def _cached_tree(cache_dir, key):
+    """The cached tree for `key`, or None. A corrupt cache entry is re-parsed, never trusted."""
+    if not cache_dir:
+        return None
+    cached = os.path.join(cache_dir, key + ".pickle")
+    if not os.path.exists(cached):
+        return None
+    try:
+        with open(cached, "rb") as f:
+            return pickle.load(f)
+    except Exception:
+        return None
+
+
+def _store(cache_dir, key, pickled):
+    os.makedirs(cache_dir, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=cache_dir, suffix=".tmp")
+    with os.fdopen(fd, "wb") as f:
+        f.write(pickled)
+    os.replace(tmp, os.path.join(cache_dir, key + ".pickle"))
+
+
+def _parse_pickled(path, text):
+    """(blark's transformed tree of `text` pickled, None), or (None, the file, line, column and message of
+    its first syntax error): plain data, so that it crosses from a worker process as it is cached."""
     try:
         result = parse_source_code(text, fn=path)
     except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
         line, col = _end_of(text)
-        raise StError(path, line, col, f"syntax error: {exc}") from None
+        return None, (path, line, col, f"syntax error: {exc}")
     if result.exception is not None:
-        raise _syntax_error(result.exception, path, text)
-    tree = result.transform()
-    if cached:
-        os.makedirs(cache_dir, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=cache_dir, suffix=".tmp")
-        with os.fdopen(fd, "wb") as f:
-            pickle.dump(tree, f, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, cached)
-    return SourceFile(path, text, tree)
+        e = _syntax_error(result.exception, path, text)
+        return None, (e.file, e.line, e.col, e.message)
+    return pickle.dumps(result.transform(), protocol=pickle.HIGHEST_PROTOCOL), None
+
+
+def default_jobs():
+    """The cores this process may run on."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+
+def _parse_misses(misses, jobs):
+    """{index: _parse_pickled's answer} for the (index, path, text) the cache did not hold. Several, and
+    enough text, go to `jobs` forked workers, the longest text first so that no worker is left with a
+    long file at the end; blark's grammar is built once, before the fork."""
+    if (jobs <= 1 or len(misses) <= 1 or sum(len(m[2]) for m in misses) < _PARALLEL_MIN_CHARS
+            or "fork" not in multiprocessing.get_all_start_methods()):
+        return {i: _parse_pickled(path, text) for i, path, text in misses}
+    get_parser()
+    ordered = sorted(misses, key=lambda m: len(m[2]), reverse=True)
+    context = multiprocessing.get_context("fork")
+    with concurrent.futures.ProcessPoolExecutor(max_workers=min(jobs, len(misses)), mp_context=context) as pool:
+        futures = {i: pool.submit(_parse_pickled, path, text) for i, path, text in ordered}
+        return {i: future.result() for i, future in futures.items()}
+
+
+def parse_files(paths, cache_dir=None, jobs=None):
+    """Read, check lexically and parse every file of `paths`: for each, in order, its SourceFile or the
+    StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core)."""
+    results, misses = [], []
+    for i, path in enumerate(paths):
+        try:
+            text = _read(path)
+            lexcheck.check(text, path)
+        except StError as e:
+            results.append(e)
+            continue
+        key = _cache_key(text)
+        tree = _cached_tree(cache_dir, key)
+        results.append(SourceFile(path, text, tree) if tree is not None else None)
+        if tree is None:
+            misses.append((i, path, text))
+    parsed = _parse_misses(misses, default_jobs() if jobs is None else jobs)
+    for i, path, text in misses:
+        pickled, error = parsed[i]
+        if error is not None:
+            results[i] = StError(*error)
+            continue
+        if cache_dir:
+            _store(cache_dir, _cache_key(text), pickled)
+        results[i] = SourceFile(path, text, pickle.loads(pickled))
+    return results
+
+
+def parse_file(path, cache_dir=None):
+    """Read, check lexically and parse `path`; raises StError with the position of the first fault."""
+    result = parse_files([path], cache_dir, jobs=1)[0]
+    if isinstance(result, StError):
+        raise result
+    return result

@@ -32,11 +32,6 @@ AxisGroup::AxisGroup(int capacity, const std::vector<ParameterSpec>& axisParamet
     }
 }
 
-ServoAxis& AxisGroup::Motion(int axis) { return At(axis).motion; }
-const ServoAxis& AxisGroup::Motion(int axis) const { return At(axis).motion; }
-ParameterTable& AxisGroup::Parameters(int axis) { return At(axis).parameters; }
-const ParameterTable& AxisGroup::Parameters(int axis) const { return At(axis).parameters; }
-
 ServoAxisConfig AxisGroup::ConfigFrom(const ServoAxisConfig& machine, const ParameterTable& parameters) {
     ServoAxisConfig c = machine;
     c.traverseSpeed = Real(parameters, axisparam::kTraverseSpeed).value_or(c.traverseSpeed);
@@ -157,20 +152,8 @@ bool AxisGroup::AnyMoving() const {
     return false;
 }
 
-AxisGroup::Axis& AxisGroup::At(int axis) {
-    if (!Contains(axis)) {
-        throw std::out_of_range("AxisGroup: axis " + std::to_string(axis) + " outside 1.." +
-                                std::to_string(Capacity()));
-    }
-    return axes_[static_cast<std::size_t>(axis - 1)];
-}
-
-const AxisGroup::Axis& AxisGroup::At(int axis) const {
-    if (!Contains(axis)) {
-        throw std::out_of_range("AxisGroup: axis " + std::to_string(axis) + " outside 1.." +
-                                std::to_string(Capacity()));
-    }
-    return axes_[static_cast<std::size_t>(axis - 1)];
+void AxisGroup::ThrowOutside(int axis) const {
+    throw std::out_of_range("AxisGroup: axis " + std::to_string(axis) + " outside 1.." + std::to_string(Capacity()));
 }
 
 }  // namespace pac::sim

@@ -7,24 +7,6 @@
 
 namespace pac::sim {
 
-namespace {
-
-void CheckFits(std::size_t offset, std::size_t length, std::size_t size, const char* what) {
-    if (offset > size || length > size - offset) {
-        throw std::out_of_range(std::string("ProcessImage::") + what + ": " + std::to_string(length) +
-                                " bytes at offset " + std::to_string(offset) + " do not fit " +
-                                std::to_string(size));
-    }
-}
-
-void CheckModuleOffset(int byteOffset, int length) {
-    if (byteOffset < 0 || byteOffset + length > 12) {
-        throw std::out_of_range("Image12: offset " + std::to_string(byteOffset) + " out of range");
-    }
-}
-
-}  // namespace
-
 void ModuleLayout::Validate() const {
     if (axisModules < 0 || axisModules > kMaxAxisModules) {
         throw std::invalid_argument("ModuleLayout: " + std::to_string(axisModules) +
@@ -40,45 +22,35 @@ std::size_t ModuleLayout::Bytes() const {
     return 8 + (ctrl ? 8 : 0) + 12 * static_cast<std::size_t>(std::max(axisModules, 0));
 }
 
-std::size_t ModuleLayout::AxisOffset(int module) const {
-    if (module < 1 || module > axisModules) {
-        throw std::out_of_range("ModuleLayout: axis module " + std::to_string(module) + " not configured");
+void ModuleLayout::ThrowNoAxisModule(int module) {
+    throw std::out_of_range("ModuleLayout: axis module " + std::to_string(module) + " not configured");
+}
+
+std::size_t ProcessImage::CheckedSize(std::size_t bytes) {
+    if (bytes > kMaxBytes) {
+        throw std::invalid_argument("ProcessImage: " + std::to_string(bytes) + " bytes; a PA-CONTROL's image has " +
+                                    "at most " + std::to_string(kMaxBytes));
     }
-    return 16 + 12 * static_cast<std::size_t>(module - 1);
+    return bytes;
 }
 
-Image8 ProcessImage::Module8(std::size_t offset) const {
-    CheckFits(offset, 8, bytes_.size(), "Module8");
-    Image8 m{};
-    std::copy_n(bytes_.begin() + static_cast<std::ptrdiff_t>(offset), 8, m.begin());
-    return m;
+void ProcessImage::ThrowIndex(std::size_t i, std::size_t size) {
+    throw std::out_of_range("ProcessImage: byte " + std::to_string(i) + " of " + std::to_string(size));
 }
 
-void ProcessImage::SetModule8(std::size_t offset, const Image8& module) {
-    CheckFits(offset, 8, bytes_.size(), "SetModule8");
-    std::copy(module.begin(), module.end(), bytes_.begin() + static_cast<std::ptrdiff_t>(offset));
-}
-
-Image12 ProcessImage::Module12(std::size_t offset) const {
-    CheckFits(offset, 12, bytes_.size(), "Module12");
-    Image12 m{};
-    std::copy_n(bytes_.begin() + static_cast<std::ptrdiff_t>(offset), 12, m.begin());
-    return m;
-}
-
-void ProcessImage::SetModule12(std::size_t offset, const Image12& module) {
-    CheckFits(offset, 12, bytes_.size(), "SetModule12");
-    std::copy(module.begin(), module.end(), bytes_.begin() + static_cast<std::ptrdiff_t>(offset));
+void ProcessImage::ThrowFit(std::size_t offset, std::size_t length, std::size_t size, const char* what) {
+    throw std::out_of_range(std::string("ProcessImage::") + what + ": " + std::to_string(length) +
+                            " bytes at offset " + std::to_string(offset) + " do not fit " + std::to_string(size));
 }
 
 bool ProcessImage::AllZero() const {
-    return std::all_of(bytes_.begin(), bytes_.end(), [](std::uint8_t b) { return b == 0; });
+    return std::all_of(bytes_.begin(), bytes_.begin() + Offset(size_), [](std::uint8_t b) { return b == 0; });
 }
 
-std::string ToHex(const ProcessImage& image) { return HexBytes(image.Bytes().data(), image.Size()); }
+std::string ToHex(const ProcessImage& image) { return HexBytes(image.Data(), image.Size()); }
 
 std::string ToHex(const ProcessImage& image, const ModuleLayout& layout) {
-    const std::uint8_t* bytes = image.Bytes().data();
+    const std::uint8_t* bytes = image.Data();
     std::string out = HexBytes(bytes, std::min<std::size_t>(8, image.Size()));
     std::size_t offset = 8;
     auto append = [&](std::size_t length) {
@@ -93,33 +65,12 @@ std::string ToHex(const ProcessImage& image, const ModuleLayout& layout) {
 
 std::ostream& operator<<(std::ostream& out, const ProcessImage& image) { return out << ToHex(image); }
 
-std::uint32_t ReadDword(const Image12& m, int byteOffset) {
-    CheckModuleOffset(byteOffset, 4);
-    const auto k = static_cast<std::size_t>(byteOffset);
-    return static_cast<std::uint32_t>(m[k]) << 24 | static_cast<std::uint32_t>(m[k + 1]) << 16 |
-           static_cast<std::uint32_t>(m[k + 2]) << 8 | m[k + 3];
+namespace detail {
+
+void ThrowModuleOffset(int byteOffset) {
+    throw std::out_of_range("Image12: offset " + std::to_string(byteOffset) + " out of range");
 }
 
-void WriteDword(Image12& m, int byteOffset, std::uint32_t value) {
-    CheckModuleOffset(byteOffset, 4);
-    const auto k = static_cast<std::size_t>(byteOffset);
-    m[k] = static_cast<std::uint8_t>(value >> 24);
-    m[k + 1] = static_cast<std::uint8_t>(value >> 16);
-    m[k + 2] = static_cast<std::uint8_t>(value >> 8);
-    m[k + 3] = static_cast<std::uint8_t>(value);
-}
-
-std::uint16_t ReadWordAt(const Image12& m, int byteOffset) {
-    CheckModuleOffset(byteOffset, 2);
-    const auto k = static_cast<std::size_t>(byteOffset);
-    return static_cast<std::uint16_t>(m[k] << 8 | m[k + 1]);
-}
-
-void WriteWordAt(Image12& m, int byteOffset, std::uint16_t value) {
-    CheckModuleOffset(byteOffset, 2);
-    const auto k = static_cast<std::size_t>(byteOffset);
-    m[k] = static_cast<std::uint8_t>(value >> 8);
-    m[k + 1] = static_cast<std::uint8_t>(value);
-}
+}  // namespace detail
 
 }  // namespace pac::sim

@@ -106,9 +106,14 @@ static inline void __pacst_fault(const char *where, const char *what, long value
 }
 
 /* Writes `val` to the part `path` (empty, .MEMBER or .table[i]) of a wrapped variable unless the
- * variable is forced. */
+ * variable is forced. A coverage build of code that no test forces defines PACST_NO_FORCING: the test of
+ * the flag would be a branch of every ST assignment (cmake/PacCoverage.cmake). */
+#ifdef PACST_NO_FORCING
+#define __PACST_SETP(var, path, val) do { (var).value path = (val); } while (0)
+#else
 #define __PACST_SETP(var, path, val) \
     do { if (!((var).flags & __IEC_FORCE_FLAG)) (var).value path = (val); } while (0)
+#endif
 #define __PACST_SET(var, val) __PACST_SETP(var, , val)
 
 /* Offset of an array element; an index outside the declared bounds stops the run with its position. */

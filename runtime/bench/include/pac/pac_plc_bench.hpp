@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstddef>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -96,6 +97,7 @@ public:
     const pac::sim::ProcessImage& ToPac() const { return toPac_; }
     const pac::sim::ProcessImage& FromPac() const { return fromPac_; }
     const PlcBenchTiming& Timing() const { return timing_; }
+    const pac::sim::ModuleLayout& Layout() const { return bus_.Layout(); }
 
 private:
     // A command FB: the channel in, the body, the channel out; the module follows the channel.
@@ -121,14 +123,16 @@ private:
     template <std::size_t N, class Fb>
     void CallOnModule(pac::FbInstance<Fb>& fb, std::size_t offset, std::function<void()> before) {
         RequireModule(offset, N);
+        static_assert(sizeof fb->TOPAC.value.table == N && sizeof fb->FROMPAC.value.table == N,
+                      "the FB's images are the module's bytes");
+        // RequireModule checked the bounds once: the copies are plain byte blocks (they cost more than a
+        // small FB's body when done byte by byte with a bounds check each).
         task_.AddProgram([this, &fb, offset, before] {
             if (before) before();
-            for (std::size_t i = 0; i < N; ++i) {
-                fb->FROMPAC.value.table[i] = fromPac_[offset + i];
-                fb->TOPAC.value.table[i] = toPac_[offset + i];
-            }
+            std::memcpy(fb->FROMPAC.value.table, fromPac_.Data() + offset, N);
+            std::memcpy(fb->TOPAC.value.table, toPac_.Data() + offset, N);
             fb();
-            for (std::size_t i = 0; i < N; ++i) toPac_[offset + i] = fb->TOPAC.value.table[i];
+            std::memcpy(&toPac_[offset], fb->TOPAC.value.table, N);
         });
     }
 

@@ -24,10 +24,10 @@ public:
     bool Contains(int axis) const { return axis >= 1 && axis <= Capacity(); }
 
     // std::out_of_range outside 1..Capacity().
-    ServoAxis& Motion(int axis);
-    const ServoAxis& Motion(int axis) const;
-    ParameterTable& Parameters(int axis);
-    const ParameterTable& Parameters(int axis) const;
+    ServoAxis& Motion(int axis) { return At(axis).motion; }
+    const ServoAxis& Motion(int axis) const { return At(axis).motion; }
+    ParameterTable& Parameters(int axis) { return At(axis).parameters; }
+    const ParameterTable& Parameters(int axis) const { return At(axis).parameters; }
 
     // The axis parameters on top of `machine`: 1 traverse speed, 2 reference speed, 4 creep speed, 6
     // acceleration (and deceleration), 8 / 9 traverse range, 30 ramp type (>= 0.5: S). A parameter the table
@@ -75,8 +75,16 @@ private:
         ServoAxisConfig machine;
         Dynamics session;
     };
-    Axis& At(int axis);
-    const Axis& At(int axis) const;
+    // Inline: the controller looks axes up many times per cycle.
+    Axis& At(int axis) {
+        if (!Contains(axis)) ThrowOutside(axis);
+        return axes_[static_cast<std::size_t>(axis - 1)];
+    }
+    const Axis& At(int axis) const {
+        if (!Contains(axis)) ThrowOutside(axis);
+        return axes_[static_cast<std::size_t>(axis - 1)];
+    }
+    [[noreturn]] void ThrowOutside(int axis) const;
 
     std::vector<Axis> axes_;
 };

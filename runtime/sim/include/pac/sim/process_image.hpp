@@ -3,12 +3,12 @@
 // The bus carries it as one consistent block (2.3.3); PAC byte 0 of the CMD module is byte 0.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <ostream>
 #include <string>
-#include <vector>
 
 #include "pac/sim/image8.hpp"
 
@@ -30,36 +30,78 @@ struct ModuleLayout {
     void Validate() const;
     std::size_t Bytes() const;
     // Byte offset of axis module `module` (1..axisModules); std::out_of_range otherwise.
-    std::size_t AxisOffset(int module) const;
+    std::size_t AxisOffset(int module) const {
+        if (module < 1 || module > axisModules) ThrowNoAxisModule(module);
+        return 16 + 12 * static_cast<std::size_t>(module - 1);
+    }
+
+private:
+    [[noreturn]] static void ThrowNoAxisModule(int module);
 };
 
+// Inline storage of the largest image (2.3.3: 8, 16, ..., 112 bytes): the simulator copies images several
+// times per cycle, and a copy without the heap costs a fraction of one with it.
 class ProcessImage {
 public:
-    explicit ProcessImage(std::size_t bytes = 8) : bytes_(bytes, 0) {}
+    static constexpr std::size_t kMaxBytes = 8 + 8 + 12 * ModuleLayout::kMaxAxisModules;
+
+    // More than kMaxBytes: std::invalid_argument.
+    explicit ProcessImage(std::size_t bytes = 8) : size_(CheckedSize(bytes)) {}
     // An image of the CMD module alone (implicit: where only the CMD interface is configured, the
     // 8-byte module is the whole image).
-    ProcessImage(const Image8& cmd) : bytes_(cmd.begin(), cmd.end()) {}  // NOLINT(google-explicit-constructor)
+    ProcessImage(const Image8& cmd) : size_(cmd.size()) {  // NOLINT(google-explicit-constructor)
+        std::copy(cmd.begin(), cmd.end(), bytes_.begin());
+    }
 
-    std::size_t Size() const { return bytes_.size(); }
-    const std::vector<std::uint8_t>& Bytes() const { return bytes_; }
-    std::uint8_t& operator[](std::size_t i) { return bytes_.at(i); }
-    std::uint8_t operator[](std::size_t i) const { return bytes_.at(i); }
+    std::size_t Size() const { return size_; }
+    const std::uint8_t* Data() const { return bytes_.data(); }
+    // Bytes at 0..Size()-1; another index: std::out_of_range.
+    std::uint8_t& operator[](std::size_t i) { return bytes_[CheckedIndex(i)]; }
+    std::uint8_t operator[](std::size_t i) const { return bytes_[CheckedIndex(i)]; }
 
     // The 8-byte module at `offset` (CMD at 0, CTRL at 8) and the 12-byte module at `offset`;
     // std::out_of_range when it does not fit.
-    Image8 Module8(std::size_t offset) const;
-    void SetModule8(std::size_t offset, const Image8& module);
-    Image12 Module12(std::size_t offset) const;
-    void SetModule12(std::size_t offset, const Image12& module);
+    Image8 Module8(std::size_t offset) const { return Module<8>(offset, "Module8"); }
+    void SetModule8(std::size_t offset, const Image8& module) { SetModule(offset, module, "SetModule8"); }
+    Image12 Module12(std::size_t offset) const { return Module<12>(offset, "Module12"); }
+    void SetModule12(std::size_t offset, const Image12& module) { SetModule(offset, module, "SetModule12"); }
     Image8 Cmd() const { return Module8(ModuleLayout::kCmdOffset); }
 
     bool AllZero() const;
 
-    friend bool operator==(const ProcessImage& a, const ProcessImage& b) { return a.bytes_ == b.bytes_; }
+    friend bool operator==(const ProcessImage& a, const ProcessImage& b) {
+        return a.size_ == b.size_ && std::equal(a.bytes_.begin(), a.bytes_.begin() + Offset(a.size_), b.bytes_.begin());
+    }
     friend bool operator!=(const ProcessImage& a, const ProcessImage& b) { return !(a == b); }
 
 private:
-    std::vector<std::uint8_t> bytes_;
+    static std::size_t CheckedSize(std::size_t bytes);
+    [[noreturn]] static void ThrowIndex(std::size_t i, std::size_t size);
+    [[noreturn]] static void ThrowFit(std::size_t offset, std::size_t length, std::size_t size, const char* what);
+    static std::ptrdiff_t Offset(std::size_t i) { return static_cast<std::ptrdiff_t>(i); }
+
+    std::size_t CheckedIndex(std::size_t i) const {
+        if (i >= size_) ThrowIndex(i, size_);
+        return i;
+    }
+    void CheckFits(std::size_t offset, std::size_t length, const char* what) const {
+        if (offset > size_ || length > size_ - offset) ThrowFit(offset, length, size_, what);
+    }
+    template <std::size_t N>
+    std::array<std::uint8_t, N> Module(std::size_t offset, const char* what) const {
+        CheckFits(offset, N, what);
+        std::array<std::uint8_t, N> m{};
+        std::copy_n(bytes_.begin() + Offset(offset), N, m.begin());
+        return m;
+    }
+    template <std::size_t N>
+    void SetModule(std::size_t offset, const std::array<std::uint8_t, N>& module, const char* what) {
+        CheckFits(offset, N, what);
+        std::copy(module.begin(), module.end(), bytes_.begin() + Offset(offset));
+    }
+
+    std::array<std::uint8_t, kMaxBytes> bytes_{};
+    std::size_t size_;
 };
 
 // Upper-case hex, one space between bytes, modules separated by " | " when `layout` is given.
@@ -67,10 +109,40 @@ std::string ToHex(const ProcessImage& image);
 std::string ToHex(const ProcessImage& image, const ModuleLayout& layout);
 std::ostream& operator<<(std::ostream& out, const ProcessImage& image);
 
-// Big-endian fields of a 12-byte module (2.7.1/2.7.2): dword at byte 0 or 8, word at byte 4 or 6.
-std::uint32_t ReadDword(const Image12& module, int byteOffset);
-void WriteDword(Image12& module, int byteOffset, std::uint32_t value);
-std::uint16_t ReadWordAt(const Image12& module, int byteOffset);
-void WriteWordAt(Image12& module, int byteOffset, std::uint16_t value);
+// Big-endian fields of a 12-byte module (2.7.1/2.7.2): dword at byte 0 or 8, word at byte 4 or 6; a field
+// outside the module: std::out_of_range. Inline: the simulator reads and writes them for every axis in every
+// cycle.
+namespace detail {
+[[noreturn]] void ThrowModuleOffset(int byteOffset);
+inline std::size_t ModuleField(int byteOffset, int length) {
+    if (byteOffset < 0 || byteOffset + length > 12) ThrowModuleOffset(byteOffset);
+    return static_cast<std::size_t>(byteOffset);
+}
+}  // namespace detail
+
+inline std::uint32_t ReadDword(const Image12& m, int byteOffset) {
+    const std::size_t k = detail::ModuleField(byteOffset, 4);
+    return static_cast<std::uint32_t>(m[k]) << 24 | static_cast<std::uint32_t>(m[k + 1]) << 16 |
+           static_cast<std::uint32_t>(m[k + 2]) << 8 | m[k + 3];
+}
+
+inline void WriteDword(Image12& m, int byteOffset, std::uint32_t value) {
+    const std::size_t k = detail::ModuleField(byteOffset, 4);
+    m[k] = static_cast<std::uint8_t>(value >> 24);
+    m[k + 1] = static_cast<std::uint8_t>(value >> 16);
+    m[k + 2] = static_cast<std::uint8_t>(value >> 8);
+    m[k + 3] = static_cast<std::uint8_t>(value);
+}
+
+inline std::uint16_t ReadWordAt(const Image12& m, int byteOffset) {
+    const std::size_t k = detail::ModuleField(byteOffset, 2);
+    return static_cast<std::uint16_t>(m[k] << 8 | m[k + 1]);
+}
+
+inline void WriteWordAt(Image12& m, int byteOffset, std::uint16_t value) {
+    const std::size_t k = detail::ModuleField(byteOffset, 2);
+    m[k] = static_cast<std::uint8_t>(value >> 8);
+    m[k + 1] = static_cast<std::uint8_t>(value);
+}
 
 }  // namespace pac::sim

@@ -1,0 +1,221 @@
+#include "workloads.hpp"
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#endif
+#endif
+#ifndef CALLGRIND_ZERO_STATS
+#define CALLGRIND_ZERO_STATS
+#define CALLGRIND_DUMP_STATS
+#endif
+
+#include "cmd_handshake.h"
+#include "pac/pac_plc_bench.hpp"
+#include "plant.hpp"
+
+namespace pac::bench {
+
+namespace {
+
+using std::chrono::milliseconds;
+
+// The measured part of every workload: `scans` scans of `scan`, alone in the dump; `jobsDone` counts the
+// jobs that ended with Done so far.
+WorkloadResult Measure(const std::function<void()>& scan, int scans, const std::function<long()>& jobsDone) {
+    const long before = jobsDone();
+    CALLGRIND_ZERO_STATS;
+    for (int i = 0; i < scans; ++i) scan();
+    CALLGRIND_DUMP_STATS;
+    return {scans, jobsDone() - before};
+}
+
+// The PLC program of a command job: Execute until a final output, then one scan low, then the next.
+struct CommandInputs {
+    bool execute = false;
+    std::uint16_t code = 0;
+    std::uint16_t param = 0;
+    std::uint32_t data = 0;
+    long started = 0;
+    long done = 0;
+};
+
+void CycleCommand(CommandInputs& in, bool done, bool error) {
+    if (in.execute && (done || error)) {
+        in.execute = false;
+        in.done += done ? 1 : 0;
+    } else if (!in.execute) {
+        in.execute = true;
+        in.code = (in.started++ % 2 == 0) ? 0x0906 : 0x1906;  // write, then read back, N register 1
+        in.param = 1;
+        in.data = static_cast<std::uint32_t>(in.started);
+    }
+}
+
+// The PLC program that sets a command's inputs before each call; null: no jobs.
+using JobProgram = void (*)(CommandInputs& in, bool done, bool error);
+
+// FB_PAC_Cmd on `plc`'s CMD interface (with the FB_PAC_CmdInterface the bench registers before it).
+void CallLibrary(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, CommandInputs& in, JobProgram program) {
+    plc.Call(cmd, [&cmd, &in, program] {
+        if (program) program(in, cmd->DONE.value, cmd->ERROR.value);
+        cmd->EXECUTE.value = in.execute;
+        cmd->CODE.value = in.code;
+        cmd->PARAM.value = in.param;
+        cmd->DATA.value = in.data;
+    });
+}
+
+// The hand-written C handshake on `plc`'s CMD module.
+void CallHandWritten(pac::PacPlcBench& plc, CmdHandshake& hs, CommandInputs& in, JobProgram program) {
+    plc.CallRaw8(pac::sim::ModuleLayout::kCmdOffset,
+                 [&plc, &hs, &in, program](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
+                     if (program) program(in, hs.done != 0, hs.error != 0);
+                     hs.execute = in.execute;
+                     hs.code = in.code;
+                     hs.param = in.param;
+                     hs.data = in.data;
+                     CmdHandshakeScan(&hs, toPac.data(), fromPac.data(), plc.Now().count());
+                 });
+}
+
+WorkloadResult CmdWorkload(bool job, int scans) {
+    pac::PacPlcBench plc;
+    auto cmd = PAC_FB(FB_PAC_CMD);
+    CommandInputs in;
+    CallLibrary(plc, cmd, in, job ? CycleCommand : nullptr);
+    plc.Start();
+    plc.Scan(20);
+    return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
+}
+
+WorkloadResult HandWrittenWorkload(bool job, int scans) {
+    pac::PacPlcBench plc;
+    CmdHandshake hs;
+    CmdHandshakeInit(&hs);
+    CommandInputs in;
+    CallHandWritten(plc, hs, in, job ? CycleCommand : nullptr);
+    plc.Start();
+    plc.Scan(20);
+    return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
+}
+
+WorkloadResult CtrlWorkload(bool job, int scans) {
+    PlantOptions options;
+    options.axes = 0;
+    options.commands = false;
+    Plant plant(options);
+    plant.GoOnline();
+    auto& ctrl = plant.Ctrl();
+    bool online = true;
+    long done = 0;
+    return Measure([&] {
+        if (job) {
+            // STOP ONLINE and START ONLINE in turn, each held until its final output, then one scan low.
+            if (ctrl->EXECUTE.value && (ctrl->DONE.value || ctrl->ERROR.value)) {
+                done += ctrl->DONE.value ? 1 : 0;
+                ctrl->EXECUTE.value = FALSE;
+                online = !online;
+            } else if (!ctrl->EXECUTE.value) {
+                ctrl->REQUEST.value = online ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+                ctrl->EXECUTE.value = TRUE;
+            }
+        }
+        plant.Scan();
+    }, scans, [&] { return done; });
+}
+
+WorkloadResult AxisWorkload(bool job, int scans) {
+    PlantOptions options;
+    options.axes = 1;
+    options.commands = false;
+    options.moves = job;
+    Plant plant(options);
+    plant.GoOnline();
+    return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone(); });
+}
+
+WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
+    PlantOptions options;
+    options.pacCycle = pacCycle;
+    Plant plant(options);
+    plant.GoOnline();
+    plant.Scan(200);  // every axis under way
+    return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone() + plant.CommandsDone(); });
+}
+
+// The jobs of the side-by-side check: write and read back N register 1, and a code with the SEND flag set,
+// which both refuse without sending.
+void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
+    if (in.execute && (done || error)) {
+        in.execute = false;
+    } else if (!in.execute) {
+        static const std::uint16_t kCodes[] = {0x0906, 0x1906, 0x8906};
+        in.execute = true;
+        in.code = kCodes[in.started++ % 3];
+        in.param = 1;
+        in.data = static_cast<std::uint32_t>(in.started * 7);
+    }
+}
+
+}  // namespace
+
+std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans) {
+    pac::PacPlcBench library(timing);
+    auto cmd = PAC_FB(FB_PAC_CMD);
+    CommandInputs libraryIn;
+    CallLibrary(library, cmd, libraryIn, CycleCheckedCommand);
+    library.Start();
+    pac::PacPlcBench hand(timing);
+    CmdHandshake hs;
+    CmdHandshakeInit(&hs);
+    CommandInputs handIn;
+    CallHandWritten(hand, hs, handIn, CycleCheckedCommand);
+    hand.Start();
+    for (int scan = 1; scan <= scans; ++scan) {
+        library.Scan();
+        hand.Scan();
+        const auto& channel = library.Channel();
+        const bool same = library.ToPac().Cmd() == hand.ToPac().Cmd() && (cmd->DONE.value != 0) == (hs.done != 0) &&
+                          (cmd->BUSY.value != 0) == (hs.busy != 0) && (cmd->ERROR.value != 0) == (hs.error != 0) &&
+                          cmd->ERRORID.value == hs.errorId && static_cast<int>(cmd->ERRORSOURCE.value) == hs.errorSource &&
+                          cmd->ACKDATA.value == hs.ackData && (cmd->ACKNOWLEDGED.value != 0) == (hs.acknowledged != 0) &&
+                          channel.HISTORYCOUNT == hs.historyCount;
+        if (!same) return "scan " + std::to_string(scan) + ": the module or an output differs";
+        if (hs.historyCount > 0) {
+            const auto& a = channel.HISTORY.table[(channel.HISTORYNEXT + 15) % 16];
+            const auto& b = hs.history[(hs.historyNext + 15) % 16];
+            if (a.CODE != b.code || a.PARAM != b.param || a.DATA != b.data || a.ACKDATA != b.ackData ||
+                a.ERRORID != b.errorId || a.SCANSTOACK != b.scansToAck || a.SCANSTOEND != b.scansToEnd) {
+                return "scan " + std::to_string(scan) + ": the handshake history differs";
+            }
+        }
+    }
+    if (libraryIn.started < 3) return "fewer than three jobs in " + std::to_string(scans) + " scans";
+    return "";
+}
+
+WorkloadResult RunWorkload(const std::string& name, int scans) {
+    static const std::map<std::string, std::function<WorkloadResult(int)>> workloads = {
+        {"cmd-idle", [](int n) { return CmdWorkload(false, n); }},
+        {"cmd-job", [](int n) { return CmdWorkload(true, n); }},
+        {"c-idle", [](int n) { return HandWrittenWorkload(false, n); }},
+        {"c-job", [](int n) { return HandWrittenWorkload(true, n); }},
+        {"ctrl-idle", [](int n) { return CtrlWorkload(false, n); }},
+        {"ctrl-job", [](int n) { return CtrlWorkload(true, n); }},
+        {"axis-idle", [](int n) { return AxisWorkload(false, n); }},
+        {"axis-job", [](int n) { return AxisWorkload(true, n); }},
+        {"plant-pac1", [](int n) { return PlantWorkload(milliseconds(1), n); }},
+        {"plant-pac10", [](int n) { return PlantWorkload(milliseconds(10), n); }},
+    };
+    auto it = workloads.find(name);
+    if (it == workloads.end()) throw std::invalid_argument("no workload '" + name + "'");
+    return it->second(scans);
+}
+
+}  // namespace pac::bench

@@ -1,0 +1,45 @@
+// Benchmark (not a test): the workloads whose instructions callgrind counts. Each sets its PLC up, then
+// runs `scans` measured scans between CALLGRIND_ZERO_STATS and CALLGRIND_DUMP_STATS, so that the dump holds
+// the measured scans only; under callgrind's --toggle-collect=<function> it holds that function's cost.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pac/pac_plc_bench.hpp"
+
+namespace pac::bench {
+
+struct Workload {
+    std::string name;
+    std::vector<std::string> functions;  // what --toggle-collect counts (callgrind's demangled names)
+};
+
+// The functions a workload's rows are measured on.
+namespace measured {
+inline const char* const kCmd = "FB_PAC_CMD_body__";
+inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
+inline const char* const kHandWritten = "CmdHandshakeScan";
+inline const char* const kCtrl = "FB_PAC_CTRL_body__";
+inline const char* const kAxis = "FB_PAC_AXIS_body__";
+inline const char* const kScan = "pac::PlcTask::Scan()";
+inline const char* const kSimulator = "pac::sim::PaControl::Cycle*";
+inline const char* const kBusRead = "pac::sim::Bus::ReadFromPac*";
+inline const char* const kBusWrite = "pac::sim::Bus::WriteToPac*";
+}  // namespace measured
+
+struct WorkloadResult {
+    int scans = 0;  // measured
+    long jobs = 0;  // jobs that ended with Done in the measured scans
+};
+
+// Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
+// "axis-job", "plant-pac1", "plant-pac10") with `scans` measured scans. std::invalid_argument for another name.
+WorkloadResult RunWorkload(const std::string& name, int scans);
+
+// FB_PAC_CmdInterface with FB_PAC_Cmd and the hand-written C handshake side by side on two benches of the
+// same timing, the same jobs (writes, reads and a refused code) for `scans` scans: the first scan where
+// the CMD module or an output differs, described; empty if they agree on every scan.
+std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans);
+
+}  // namespace pac::bench

@@ -1,0 +1,160 @@
+// FB_PAC_CmdInterface keeps the queue of a shared CMD interface moving past command FBs that gave up or that
+// the program no longer calls, and frees the interface of a command whose FB is gone; FB_PAC_Cmd refuses to
+// run without it. Hand-written replies, scan by scan, three FBs on one channel called in a fixed order.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/scan_test.hpp"
+#include "pac/st_program.hpp"
+#include "plcopen_checker.hpp"
+#include "plcopen_pins.hpp"
+
+namespace {
+
+using pac::test::CommandBusyBoundOf;
+using pac::test::OutputsOf;
+using pac::test::PlcOpenChecker;
+
+const pac::test::GvlConstants kGvl;
+
+constexpr std::uint16_t kGetStat = 0x190B;  // what a parked module carries
+
+class CmdChannelQueue : public pac::ScanTest {
+protected:
+    static constexpr int kFbs = 3;
+
+    CmdChannelQueue() {
+        task_.AddProgram([this] {
+            ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
+            channel.FROMPAC.table[0] = channel.FROMPAC.table[1] = channel.FROMPAC.table[2] = 0;
+            channel.FROMPAC.table[3] = channel.FROMPAC.table[4] = 0;
+            channel.FROMPAC.table[5] = 1;  // operating status: ready
+            channel.FROMPAC.table[6] = static_cast<std::uint8_t>((rf_ ? 0x80 : 0) | (bf_ ? 0x20 : 0));
+            channel.FROMPAC.table[7] = 0;
+            if (callInterface_) interface_();
+            for (int i = 0; i < kFbs; ++i) {
+                if (!called_[i]) continue;
+                fbs_[i]->CHANNEL.value = channel;
+                fbs_[i]();
+                channel = fbs_[i]->CHANNEL.value;
+                checkers_[i].Check(task_.ScanCount(), fbs_[i], CommandBusyBoundOf(fbs_[i], kDefaultCycleTime));
+            }
+        });
+    }
+
+    void Request(int fb, std::uint16_t code, std::uint16_t param = 0) {
+        fbs_[fb]->CODE.value = code;
+        fbs_[fb]->PARAM.value = param;
+        fbs_[fb]->EXECUTE.value = TRUE;
+    }
+
+    // The PA-CONTROL of the next scan's reply: RECEIVE := SEND of the module (the command is taken over),
+    // END OF PROCESSING as `ended` says.
+    void Acknowledge(bool ended) {
+        rf_ = SendFlag();
+        bf_ = ended;
+    }
+
+    const ST_PAC_CMDCHANNEL& Channel() { return interface_->CHANNEL.value; }
+    bool SendFlag() { return (Channel().TOPAC.table[6] & 0x80) != 0; }
+    std::uint16_t ModuleCode() { return static_cast<std::uint16_t>((Channel().TOPAC.table[6] & 0x7F) << 8 | Channel().TOPAC.table[7]); }
+    std::uint16_t ModuleParam() { return static_cast<std::uint16_t>(Channel().TOPAC.table[4] << 8 | Channel().TOPAC.table[5]); }
+    bool Busy(int fb) { return OutputsOf(fbs_[fb]).busy; }
+    bool Done(int fb) { return OutputsOf(fbs_[fb]).done; }
+
+    pac::FbInstance<FB_PAC_CMDINTERFACE> interface_ = PAC_FB(FB_PAC_CMDINTERFACE);
+    std::array<pac::FbInstance<FB_PAC_CMD>, kFbs> fbs_{PAC_FB(FB_PAC_CMD), PAC_FB(FB_PAC_CMD), PAC_FB(FB_PAC_CMD)};
+    std::array<PlcOpenChecker, kFbs> checkers_{PlcOpenChecker("A"), PlcOpenChecker("B"), PlcOpenChecker("C")};
+    std::array<bool, kFbs> called_{true, true, true};
+    bool callInterface_ = true;
+    bool rf_ = false;
+    bool bf_ = true;
+};
+
+// Without FB_PAC_CmdInterface nobody keeps the module in step or the queue moving: a command FB whose channel
+// shows no new scan stops at once with 16#8010 instead of waiting its Timeout for nothing.
+TEST_F(CmdChannelQueue, ACommandWithoutTheInterfaceCalledIsAnError) {
+    rf_ = true;  // the module (SEND 0) is out of step: the command must wait
+    Request(0, 0x1906, 1);
+    Cycle(1);
+    ASSERT_TRUE(Busy(0));
+    callInterface_ = false;
+    Cycle(1);
+    EXPECT_TRUE(OutputsOf(fbs_[0]).error);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_NO_INTERFACE"]);
+}
+
+// A and B queue in the same scan while the module is still out of step. A gives up (its Timeout of 1 ms)
+// before its turn: the interface passes over its ticket, and B goes in the first scan the interface is free.
+TEST_F(CmdChannelQueue, ATicketThatGaveUpBeforeItsTurnIsPassedOver) {
+    rf_ = true;
+    fbs_[0]->TIMEOUT.value = TIME{0, 1'000'000};
+    Request(0, 0x1906, 1);
+    Request(1, 0x1906, 2);
+    Cycle(1);
+    ASSERT_TRUE(Busy(0) && Busy(1));
+    EXPECT_EQ(interface_->WAITING.value, 0) << "counted by the interface at the start of the next scan";
+    Cycle(1);  // the interface brings SEND to RECEIVE: free from the next scan on
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "A: never sent";
+    EXPECT_EQ(ModuleCode(), kGetStat);
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906);
+    EXPECT_EQ(ModuleParam(), 2) << "B's command, in the first free scan";
+}
+
+// A and B queue; then the program stops calling A. Its ticket stays unclaimed for one whole free scan and is
+// then passed over: B goes one scan later than it would behind a command that was sent.
+TEST_F(CmdChannelQueue, ATicketWhoseFbIsNoLongerCalledIsPassedOverAfterAScan) {
+    rf_ = true;
+    Request(0, 0x1906, 1);
+    Request(1, 0x1906, 2);
+    Cycle(1);
+    called_[0] = false;
+    Cycle(1);  // SEND := RECEIVE over the parked module
+    EXPECT_EQ(ModuleCode(), kGetStat);
+    Cycle(1);  // free, A's turn, A not called
+    EXPECT_EQ(ModuleCode(), kGetStat) << "nothing sent while A's ticket is unclaimed for a scan";
+    EXPECT_EQ(interface_->WAITING.value, 2);
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906);
+    EXPECT_EQ(ModuleParam(), 2) << "B's command";
+    EXPECT_EQ(interface_->WAITING.value, 1) << "the interface counts before B takes its turn";
+    Cycle(1);
+    EXPECT_EQ(interface_->WAITING.value, 0);
+}
+
+// A's move is acknowledged and runs; then the program stops calling A. After a whole scan without it the
+// interface frees the command and parks the module, but B still waits: the reply shows the move processing
+// (END OF PROCESSING 0), and only its end makes the interface free.
+TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledFreesTheInterfaceAtTheEndOfProcessing) {
+    Request(0, 0x0A87, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A87);
+    Acknowledge(false);
+    Cycle(1);
+    ASSERT_TRUE(fbs_[0]->ACKNOWLEDGED.value);
+    Request(1, 0x1906, 2);
+    called_[0] = false;
+    Cycle(1);
+    EXPECT_TRUE(interface_->INFLIGHT.value) << "one scan without A: still A's";
+    Cycle(1);
+    EXPECT_FALSE(interface_->INFLIGHT.value) << "two: freed";
+    EXPECT_EQ(ModuleCode(), kGetStat) << "and parked, the SEND flag unchanged";
+    EXPECT_EQ(SendFlag(), rf_);
+    Cycle(5);
+    EXPECT_EQ(ModuleCode(), kGetStat) << "B waits while the move runs";
+    EXPECT_TRUE(Busy(1));
+    bf_ = true;  // the move ends
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906);
+    EXPECT_EQ(ModuleParam(), 2);
+    Acknowledge(true);
+    Cycle(1);
+    EXPECT_TRUE(Done(1));
+}
+
+}  // namespace
