@@ -1,6 +1,7 @@
 #include "module_steps.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <set>
 
 #include "pac/enum_names.hpp"
@@ -20,6 +21,50 @@ std::string Name(const Json& value, const std::string& path, const pac::EnumName
         json::Refuse(path, "unknown " + std::string(what) + " " + Quoted(text) + " (one of " + json::ListKeys(names.All()) + ")");
     }
     return text;
+}
+
+// A REAL: any finite number a REAL holds.
+double RealValue(const Json& value, const std::string& path) {
+    const double number = json::Number(value, path);
+    if (!(std::fabs(number) <= 3.4028234663852886e38)) {
+        json::Refuse(path, "out of range: " + value.dump() + " does not fit a REAL");
+    }
+    return number;
+}
+
+// The non-empty array `step.key` of a step on the modules, each element read by `read`, no module (`numberKey`,
+// taken by `numberOf`) twice; `what` words the refusals.
+struct ModuleListWords {
+    const char* stepKind;  // "an axes step"
+    const char* needs;     // "axis modules"
+    const char* items;     // "axis jobs"
+    const char* item;      // "axis"
+    const char* twice;     // said after "appears twice in this step"
+};
+
+template <class Item, class Read, class NumberOf>
+std::vector<Item> ReadModuleList(const json::Object& step, const char* key, const char* numberKey, int modules,
+                                 const ModuleListWords& what, Read read, NumberOf numberOf) {
+    const Json& list = step.Get(key);
+    const std::string path = step.PathOf(key);
+    if (modules == 0) {
+        json::Refuse(path, std::string(what.stepKind) + " needs " + what.needs +
+                               ": set \"modules\": {\"ctrl\": true, \"axes\": 1..8}");
+    }
+    if (!list.is_array()) json::RefuseType(path, std::string("an array of ") + what.items, list);
+    if (list.empty()) json::Refuse(path, std::string("out of range: ") + what.stepKind + " needs at least one " + what.item);
+    std::vector<Item> items;
+    std::set<int> seen;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string itemPath = json::Element(path, i);
+        items.push_back(read(list[i], itemPath));
+        const int number = numberOf(items.back());
+        if (!seen.insert(number).second) {
+            json::Refuse(json::Child(itemPath, numberKey),
+                         std::string(what.item) + " " + std::to_string(number) + " appears twice in this step" + what.twice);
+        }
+    }
+    return items;
 }
 
 }  // namespace
@@ -46,23 +91,12 @@ CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
 }
 
 AxesStep ModuleStepReader::ReadAxes(const json::Object& step) const {
-    const Json& list = step.Get("axes");
-    const std::string path = step.PathOf("axes");
-    if (modules_.axes == 0) {
-        json::Refuse(path, "an axes step needs axis modules: set \"modules\": {\"ctrl\": true, \"axes\": 1..8}");
-    }
-    if (!list.is_array()) json::RefuseType(path, "an array of axis jobs", list);
-    if (list.empty()) json::Refuse(path, "out of range: an axes step needs at least one axis");
     AxesStep axes;
-    std::set<int> seen;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const std::string jobPath = json::Element(path, i);
-        axes.jobs.push_back(ReadJob(list[i], jobPath));
-        if (!seen.insert(axes.jobs.back().axis).second) {
-            json::Refuse(json::Child(jobPath, "axis"), "axis " + std::to_string(axes.jobs.back().axis) +
-                                                           " appears twice in this step (one FB_PAC_Axis per axis)");
-        }
-    }
+    axes.jobs = ReadModuleList<AxisJob>(
+        step, "axes", "axis", modules_.axes,
+        {"an axes step", "axis modules", "axis jobs", "axis", " (one FB_PAC_Axis per axis)"},
+        [this](const Json& value, const std::string& path) { return ReadJob(value, path); },
+        [](const AxisJob& job) { return job.axis; });
     return axes;
 }
 
@@ -88,12 +122,7 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     }
     // The FB's own input checks (Velocity 1..1000, Acceleration not 0, a finite Position) are the
     // FB's to show: a scenario may send what the FB must refuse, within the pins' types.
-    if (const Json* position = object.Find("position")) {
-        job.position = json::Number(*position, object.PathOf("position"));
-        if (!(std::fabs(job.position) <= 3.4028234663852886e38)) {
-            json::Refuse(object.PathOf("position"), "out of range: " + position->dump() + " does not fit a REAL");
-        }
-    }
+    if (const Json* position = object.Find("position")) job.position = RealValue(*position, object.PathOf("position"));
     if (const Json* v = object.Find("velocity")) job.velocity = static_cast<int>(json::Integer(*v, object.PathOf("velocity"), 0, 65535));
     if (const Json* a = object.Find("acceleration")) {
         job.acceleration = static_cast<int>(json::Integer(*a, object.PathOf("acceleration"), 0, 65535));
@@ -105,6 +134,49 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     job.maxMs = json::Duration(object, "max_ms", job.maxMs);
     if (const Json* expect = object.Find("expect")) job.expect = ReadAxisExpectation(*expect, object.PathOf("expect"));
     return job;
+}
+
+AutomaticStep ModuleStepReader::ReadAutomatic(const json::Object& step) const {
+    AutomaticStep automatic;
+    automatic.modules = ReadModuleList<AutomaticValues>(
+        step, "automatic", "module", modules_.axes, {"an automatic step", "modules", "module values", "module", ""},
+        [this](const Json& value, const std::string& path) { return ReadAutomaticValues(value, path); },
+        [](const AutomaticValues& values) { return values.module; });
+    automatic.maxMs = json::Duration(step, "max_ms", automatic.maxMs);
+    return automatic;
+}
+
+AutomaticValues ModuleStepReader::ReadAutomaticValues(const Json& value, const std::string& path) const {
+    const json::Object object(value, path, {"module", "flag_word", "n", "r", "expect"}, "the values of a module");
+    AutomaticValues values;
+    values.module = static_cast<int>(json::Integer(object.Get("module"), object.PathOf("module"), 1, modules_.axes));
+    auto read = [](const json::Object& from, AutomaticExpectation& target) {
+        if (const Json* v = from.Find("flag_word")) {
+            target.flagWord = static_cast<std::uint16_t>(json::Integer(*v, from.PathOf("flag_word"), 0, 65535));
+        }
+        if (const Json* v = from.Find("n")) {
+            target.n = static_cast<std::int32_t>(json::Integer(*v, from.PathOf("n"), INT32_MIN, INT32_MAX));
+        }
+        if (const Json* v = from.Find("r")) target.r = RealValue(*v, from.PathOf("r"));
+    };
+    AutomaticExpectation sent;
+    read(object, sent);
+    values.flagWord = sent.flagWord;
+    values.n = sent.n;
+    values.r = sent.r;
+    if (const Json* expect = object.Find("expect")) {
+        const std::string expectPath = object.PathOf("expect");
+        const json::Object e(*expect, expectPath, {"flag_word", "n", "r", "r_tolerance"}, "an automatic expectation");
+        read(e, values.expect);
+        if (const Json* v = e.Find("r_tolerance")) {
+            values.expect.rTolerance = json::Number(*v, e.PathOf("r_tolerance"));
+            if (!(values.expect.rTolerance >= 0.0)) json::Refuse(e.PathOf("r_tolerance"), "out of range: must be >= 0");
+        }
+    }
+    if (!values.flagWord && !values.n && !values.r && values.expect.Empty()) {
+        json::Refuse(path, "missing key: a module needs \"flag_word\", \"n\", \"r\" or \"expect\"");
+    }
+    return values;
 }
 
 AxisExpectation ModuleStepReader::ReadAxisExpectation(const Json& value, const std::string& path) const {

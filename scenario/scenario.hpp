@@ -47,6 +47,7 @@ struct ControllerSetup {
     std::map<int, std::int32_t> systemParameters;  // 0700 values, e.g. 4: the external stop input
     bool axesReferenced = true;  // at power-on (an absolute measuring system); false: G25 first
     std::map<int, LimitSwitches> limitSwitches;  // per axis 1..8
+    std::vector<std::string> automaticProgram;  // the stand-in AUTOMATIC program's lines ("R17 := R1 * 2")
 };
 
 // A DWORD as the scenario wrote it: an integer, or a REAL carried as its IEEE-754 bits.
@@ -124,6 +125,32 @@ struct AxesStep {
     std::vector<AxisJob> jobs;
 };
 
+// What FB_PAC_AutomaticModule of one module must have received (an empty optional is not checked).
+struct AutomaticExpectation {
+    std::optional<std::uint16_t> flagWord;  // FW 16+k
+    std::optional<std::int32_t> n;          // N 16+k
+    std::optional<double> r;                // R 16+k, within rTolerance
+    double rTolerance = 0.001;
+
+    bool Empty() const { return !flagWord && !n && !r; }
+};
+
+// The values FB_PAC_AutomaticModule of module k sends (FW k, N k, R k: levels that stay for later steps).
+struct AutomaticValues {
+    int module = 1;  // 1..Modules::axes
+    std::optional<std::uint16_t> flagWord;
+    std::optional<std::int32_t> n;
+    std::optional<double> r;
+    AutomaticExpectation expect;
+};
+
+// The modules in AUTOMATIC mode (manual 2.6): the values go out from the step's first scan; the step ends in
+// the first scan in which every module has received what it expects, or after maxMs.
+struct AutomaticStep {
+    std::vector<AutomaticValues> modules;
+    int maxMs = 1000;
+};
+
 enum class FaultKind { kPowerCycle, kFreezeLink, kThawLink, kZeroLink, kSystemError, kSetInput };
 enum class LinkSide { kToPac, kFromPac, kBoth };
 
@@ -141,7 +168,7 @@ struct WaitStep {
 };
 
 struct Step {
-    std::variant<CommandStep, CtrlStep, AxesStep, FaultStep, WaitStep> action;
+    std::variant<CommandStep, CtrlStep, AxesStep, AutomaticStep, FaultStep, WaitStep> action;
     std::string note;  // printed with the step
 };
 

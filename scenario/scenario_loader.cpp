@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "diagram_reader.hpp"
 #include "json_fields.hpp"
 #include "module_steps.hpp"
+#include "pac/sim/automatic_program.hpp"
 #include "pac/sim/elements.hpp"
 #include "pac/sim/image8.hpp"
 
@@ -133,7 +135,7 @@ private:
         const json::Object controller(
             value, path,
             {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced",
-             "limit_switches"},
+             "limit_switches", "automatic_program"},
             "controller");
         const pac::sim::ElementCounts counts;
         ControllerSetup setup;
@@ -162,6 +164,9 @@ private:
             setup.limitSwitches = ReadNumbered<LimitSwitches>(*switches, controller.PathOf("limit_switches"), 8, "axis",
                                                               ReadLimitSwitches);
         }
+        if (const Json* program = controller.Find("automatic_program")) {
+            setup.automaticProgram = ReadProgram(*program, controller.PathOf("automatic_program"));
+        }
         if (const Json* parameters = controller.Find("system_parameters")) {
             // The simulator's table knows which numbers exist and their limits; the runner reports a refusal.
             setup.systemParameters = ReadNumbered<std::int32_t>(
@@ -184,6 +189,22 @@ private:
             json::Refuse(path, "contradiction: the negative switch must lie below the positive one");
         }
         return switches;
+    }
+
+    // The stand-in AUTOMATIC program: an array of lines the simulator reads (pac/sim/automatic_program.hpp).
+    static std::vector<std::string> ReadProgram(const Json& value, const std::string& path) {
+        if (!value.is_array()) json::RefuseType(path, "an array of program lines", value);
+        std::vector<std::string> lines;
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            const std::string linePath = json::Element(path, i);
+            lines.push_back(json::String(value[i], linePath));
+            try {
+                pac::sim::AutomaticProgram({lines.back()});
+            } catch (const std::invalid_argument& e) {
+                json::Refuse(linePath, e.what());
+            }
+        }
+        return lines;
     }
 
     std::uint8_t ReadStatus(const Json& value, const std::string& path) const {
@@ -270,9 +291,10 @@ private:
     }
 
     Step ReadStep(const Json& value, const std::string& path, const ModuleStepReader& moduleSteps) const {
-        static const std::vector<std::string> kinds = {"command", "ctrl", "axes", "fault", "wait_ms"};
+        static const std::vector<std::string> kinds = {"command", "ctrl", "axes", "automatic", "fault", "wait_ms"};
         static const std::vector<std::string> ctrlKeys = {"ctrl", "integer_mode", "timeout_ms", "expect", "note"};
         static const std::vector<std::string> axesKeys = {"axes", "note"};
+        static const std::vector<std::string> automaticKeys = {"automatic", "max_ms", "note"};
         static const std::vector<std::string> commandKeys = {"command", "param", "data", "timeout_ms",
                                                              "end_timeout_ms", "expect", "note"};
         static const std::vector<std::string> waitKeys = {"wait_ms", "note"};
@@ -287,7 +309,7 @@ private:
         }
         if (present.empty()) {
             std::vector<std::string> all = commandKeys;
-            all.insert(all.end(), {"ctrl", "integer_mode", "axes", "fault", "link", "wait_ms"});
+            all.insert(all.end(), {"ctrl", "integer_mode", "axes", "automatic", "max_ms", "fault", "link", "wait_ms"});
             json::Object(value, path, all, "a step");  // an unknown key is the likelier mistake: report it
             json::Refuse(path, "missing key: a step needs one of " + json::ListKeys(kinds));
         }
@@ -303,6 +325,10 @@ private:
         } else if (present[0] == "axes") {
             const json::Object object(value, path, axesKeys, "an axes step");
             step.action = moduleSteps.ReadAxes(object);
+            step.note = ReadNote(object);
+        } else if (present[0] == "automatic") {
+            const json::Object object(value, path, automaticKeys, "an automatic step");
+            step.action = moduleSteps.ReadAutomatic(object);
             step.note = ReadNote(object);
         } else if (present[0] == "fault") {
             step.action = ReadFault(value, path, step.note);

@@ -55,13 +55,23 @@ public:
         : scenario_(scenario),
           observer_(observer),
           axes_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AXIS)),
+          automatic_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AUTOMATICMODULE)),
           plc_(BenchTiming(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
         plc_.Call(cmd_);
         if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
         for (std::size_t k = 0; k < axes_.size(); ++k) {
-            // As a PLC program wires them: each axis takes the format in force from FB_PAC_Ctrl.
-            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1,
-                          [this, k] { axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+            // As a PLC program wires them: each axis takes the format in force and the mode change from
+            // FB_PAC_Ctrl, the operating status from FB_PAC_Cmd.
+            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1, [this, k] {
+                axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                axes_[k]->MODECHANGE.value = ctrl_->MODECHANGE.value;
+                axes_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
+            });
+            // The same module in AUTOMATIC (2.6): each FB writes it only in its own modes.
+            plc_.CallAxis(automatic_[k], static_cast<int>(k) + 1, [this, k] {
+                automatic_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                automatic_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
+            });
         }
         plc_.Start();
         SetUp(scenario.controller);
@@ -86,6 +96,8 @@ public:
                             report.failures.push_back("axis " + std::to_string(action.jobs[i].axis) + ": " + failure);
                         }
                     }
+                } else if constexpr (std::is_same_v<Action, AutomaticStep>) {
+                    report.failures = RunAutomatic(action);
                 } else if constexpr (std::is_same_v<Action, FaultStep>) {
                     Inject(action);
                 } else {
@@ -120,6 +132,7 @@ private:
     void SetUp(const ControllerSetup& setup) {
         auto& pac = plc_.Controller();
         if (setup.operatingStatus) pac.SetOperatingStatus(*setup.operatingStatus);
+        pac.SetAutomaticProgram(pac::sim::AutomaticProgram(setup.automaticProgram));
         for (const auto& [number, value] : setup.intRegisters) pac.Io().intRegisters.SetInt(number, value);
         for (const auto& [number, value] : setup.realRegisters) pac.Io().realRegisters.SetReal(number, value);
         for (const auto& [number, value] : setup.inputs) pac.Io().inputs.Set(number, value);
@@ -305,6 +318,47 @@ private:
         outcome.endTime = plc_.Now();
     }
 
+    // What module k's FB_PAC_AutomaticModule has received, against what it should have.
+    std::vector<std::string> AutomaticMismatches(const AutomaticValues& values) {
+        const auto& fb = automatic_[static_cast<std::size_t>(values.module - 1)];
+        const AutomaticExpectation& e = values.expect;
+        std::vector<std::string> failures;
+        const std::string module = "module " + std::to_string(values.module) + ": ";
+        if (e.flagWord && fb->RECEIVEDFLAGWORD.value != *e.flagWord) {
+            failures.push_back(module + "flag word " + std::to_string(fb->RECEIVEDFLAGWORD.value) + ", expected " +
+                               std::to_string(*e.flagWord));
+        }
+        if (e.n && fb->RECEIVEDINTREGISTER.value != *e.n) {
+            failures.push_back(module + "N " + std::to_string(fb->RECEIVEDINTREGISTER.value) + ", expected " +
+                               std::to_string(*e.n));
+        }
+        if (e.r && !(std::fabs(fb->RECEIVEDREALREGISTER.value - *e.r) <= e.rTolerance)) {
+            failures.push_back(module + "R " + std::to_string(fb->RECEIVEDREALREGISTER.value) + ", expected " +
+                               std::to_string(*e.r));
+        }
+        return failures;
+    }
+
+    std::vector<std::string> RunAutomatic(const AutomaticStep& step) {
+        for (const auto& values : step.modules) {
+            auto& fb = automatic_[static_cast<std::size_t>(values.module - 1)];
+            if (values.flagWord) fb->FLAGWORD.value = *values.flagWord;
+            if (values.n) fb->INTREGISTER.value = *values.n;
+            if (values.r) fb->REALREGISTER.value = static_cast<float>(*values.r);
+        }
+        auto mismatches = [this, &step] {
+            std::vector<std::string> all;
+            for (const auto& values : step.modules) {
+                for (auto& failure : AutomaticMismatches(values)) all.push_back(std::move(failure));
+            }
+            return all;
+        };
+        Scan();
+        const std::int64_t limit = plc_.Task().ScanCount() + step.maxMs / scenario_.timing.plcCycleMs + 1;
+        while (!mismatches().empty() && plc_.Task().ScanCount() < limit) Scan();
+        return mismatches();
+    }
+
     void Inject(const FaultStep& fault) {
         const auto now = plc_.Now();
         switch (fault.kind) {
@@ -338,6 +392,7 @@ private:
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
+    std::vector<pac::FbInstance<FB_PAC_AUTOMATICMODULE>> automatic_;  // on the same modules; never resized
     pac::PacPlcBench plc_;
 };
 

@@ -16,6 +16,7 @@ namespace {
 using pac::FormatMs;
 using pac::FormatMsNumber;
 
+constexpr std::size_t kStatusByte = 5;  // the operating status in the CMD reply (2.4.2)
 
 bool SameCmd(const ScanSample& a, const ScanSample& b) {
     return a.toPac == b.toPac && a.fromPac == b.fromPac && a.execute == b.execute && a.busy == b.busy &&
@@ -136,6 +137,10 @@ void TimelinePrinter::PrintColumns() {
             out_ << "  t [ms]   scan | axis | control     acc  vel   position | status      CmdErr AxErr   position |"
                     " Enable Execute Busy Done Error Aborted ErrorID\n";
             break;
+        case View::kAutomatic:
+            out_ << "  t [ms]   scan | module | Status | FW k        N k        R k | FW 16+k   N 16+k     R 16+k"
+                    "  (2.6, docs/open_points.md)\n";
+            break;
     }
 }
 
@@ -151,6 +156,10 @@ void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chro
                 std::vector<int> axes;
                 for (const auto& job : action.jobs) axes.push_back(job.axis);
                 return SetView(View::kAxes, axes);
+            } else if constexpr (std::is_same_v<Action, AutomaticStep>) {
+                std::vector<int> modules;
+                for (const auto& values : action.modules) modules.push_back(values.module);
+                return SetView(View::kAutomatic, modules);
             } else {
                 return false;
             }
@@ -166,6 +175,8 @@ void TimelinePrinter::OnStepStart(std::size_t index, const Step& step, std::chro
                 PrintCtrl(action);
             } else if constexpr (std::is_same_v<Action, AxesStep>) {
                 PrintAxes(action);
+            } else if constexpr (std::is_same_v<Action, AutomaticStep>) {
+                PrintAutomatic(action);
             } else if constexpr (std::is_same_v<Action, FaultStep>) {
                 PrintFault(action);
             } else {
@@ -208,6 +219,21 @@ void TimelinePrinter::PrintAxes(const AxesStep& step) {
     }
 }
 
+void TimelinePrinter::PrintAutomatic(const AutomaticStep& step) {
+    for (std::size_t i = 0; i < step.modules.size(); ++i) {
+        const AutomaticValues& values = step.modules[i];
+        out_ << (i == 0 ? "" : "; ") << "FB_PAC_AutomaticModule " << values.module << ":";
+        if (!values.flagWord && !values.n && !values.r) out_ << " inputs unchanged";
+        if (values.flagWord) out_ << " FlagWord " << Hex4(*values.flagWord);
+        if (values.n) out_ << " IntRegister " << *values.n;
+        if (values.r) {
+            char r[32];
+            std::snprintf(r, sizeof r, "%g", *values.r);
+            out_ << " RealRegister " << r;
+        }
+    }
+}
+
 void TimelinePrinter::PrintFault(const FaultStep& fault) {
     switch (fault.kind) {
         case FaultKind::kPowerCycle:
@@ -238,6 +264,8 @@ bool TimelinePrinter::Changed(const ScanSample& s) const {
         case View::kCmd: return !SameCmd(*last_, s);
         case View::kCtrl: return !(last_->ctrl && s.ctrl && SameCtrl(*last_->ctrl, *s.ctrl));
         case View::kAxes:
+        case View::kAutomatic:
+            if (view_ == View::kAutomatic && last_->fromPac[kStatusByte] != s.fromPac[kStatusByte]) return true;
             for (int axis : viewAxes_) {
                 const auto k = static_cast<std::size_t>(axis - 1);
                 if (k >= s.axes.size() || k >= last_->axes.size() || !SameAxis(last_->axes[k], s.axes[k])) return true;
@@ -257,6 +285,12 @@ void TimelinePrinter::OnScan(const ScanSample& s) {
             for (int axis : viewAxes_) {
                 const auto k = static_cast<std::size_t>(axis - 1);
                 if (k < s.axes.size()) PrintAxisLine(s, s.axes[k]);
+            }
+            break;
+        case View::kAutomatic:
+            for (int module : viewAxes_) {
+                const auto k = static_cast<std::size_t>(module - 1);
+                if (k < s.axes.size()) PrintAutomaticLine(s, s.axes[k]);
             }
             break;
     }
@@ -293,6 +327,21 @@ void TimelinePrinter::PrintCtrlLine(const ScanSample& s) {
 
 // Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
 // error number, target / current position.
+// The module as the flag/register interface of AUTOMATIC mode, in the library's layout (FW 2 bytes, 2 not used,
+// N 4, R 4: docs/open_points.md); outside AUTOMATIC the same bytes are the axis interface.
+void TimelinePrinter::PrintAutomaticLine(const ScanSample& s, const AxisSample& m) {
+    char line[320];
+    std::snprintf(line, sizeof line, "%8s %6lld | %6d | %6u | %s %10d %10s | %s %10d %10s\n",
+                  FormatMsNumber(s.time).c_str(), static_cast<long long>(s.scan), m.axis,
+                  static_cast<unsigned>(s.fromPac[kStatusByte]), Hex4(pac::sim::ReadWordAt(m.toPac, 0)).c_str(),
+                  static_cast<int>(static_cast<std::int32_t>(pac::sim::ReadDword(m.toPac, 4))),
+                  PositionText(pac::sim::ReadDword(m.toPac, 8), m.integerMode).c_str(),
+                  Hex4(pac::sim::ReadWordAt(m.fromPac, 0)).c_str(),
+                  static_cast<int>(static_cast<std::int32_t>(pac::sim::ReadDword(m.fromPac, 4))),
+                  PositionText(pac::sim::ReadDword(m.fromPac, 8), m.integerMode).c_str());
+    out_ << line;
+}
+
 void TimelinePrinter::PrintAxisLine(const ScanSample& s, const AxisSample& a) {
     char line[320];
     std::snprintf(line, sizeof line,

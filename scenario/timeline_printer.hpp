@@ -27,7 +27,7 @@ public:
     void OnEnd(const RunReport& report) override;
 
 private:
-    enum class View { kCmd, kCtrl, kAxes };
+    enum class View { kCmd, kCtrl, kAxes, kAutomatic };
 
     bool SetView(View view, std::vector<int> axes);  // true if the view changed
     void PrintColumns();
@@ -35,6 +35,8 @@ private:
     void PrintCmdLine(const ScanSample& s);
     void PrintCtrlLine(const ScanSample& s);
     void PrintAxisLine(const ScanSample& s, const AxisSample& axis);
+    void PrintAutomaticLine(const ScanSample& s, const AxisSample& module);
+    void PrintAutomatic(const AutomaticStep& step);
     void PrintCtrl(const CtrlStep& step);
     void PrintAxes(const AxesStep& step);
     void PrintCommand(const CommandStep& command);
@@ -49,7 +51,7 @@ private:
     const Scenario* scenario_ = nullptr;
     std::optional<ScanSample> last_;  // the last scan printed
     View view_ = View::kCmd;
-    std::vector<int> viewAxes_;  // the axes shown in View::kAxes
+    std::vector<int> viewAxes_;  // the axes (modules) shown in View::kAxes and View::kAutomatic
 };
 
 }  // namespace pac::scenario

@@ -88,41 +88,56 @@ TEST_F(CmdChannelQueue, ACommandWithoutTheInterfaceCalledIsAnError) {
     EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_NO_INTERFACE"]);
 }
 
-// A and B queue in the same scan while the module is still out of step. A gives up (its Timeout of 1 ms)
-// before its turn: the interface passes over its ticket, and B goes in the first scan the interface is free.
+// C's long command holds the interface (acknowledged, END OF PROCESSING 0) while A and B queue behind it. A
+// gives up (its Timeout of 1 ms) before its turn: it ends with "never sent", the interface passes over its
+// ticket, and B's command is the next on the module once C has ended.
 TEST_F(CmdChannelQueue, ATicketThatGaveUpBeforeItsTurnIsPassedOver) {
-    rf_ = true;
+    Request(2, 0x0A87, 3);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A87);
+    Acknowledge(false);
     fbs_[0]->TIMEOUT.value = TIME{0, 1'000'000};
     Request(0, 0x1906, 1);
     Request(1, 0x1906, 2);
-    Cycle(1);
-    ASSERT_TRUE(Busy(0) && Busy(1));
-    EXPECT_EQ(interface_->WAITING.value, 0) << "counted by the interface at the start of the next scan";
-    Cycle(1);  // the interface brings SEND to RECEIVE: free from the next scan on
+    Cycle(3);  // A's wait runs out while C processes
+    ASSERT_TRUE(OutputsOf(fbs_[0]).error);
     EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "A: never sent";
-    EXPECT_EQ(ModuleCode(), kGetStat);
-    Cycle(1);
-    EXPECT_EQ(ModuleCode(), 0x1906);
-    EXPECT_EQ(ModuleParam(), 2) << "B's command, in the first free scan";
+    EXPECT_TRUE(Busy(1) && Busy(2));
+    EXPECT_EQ(ModuleCode(), 0x0A87) << "nothing overtakes C's move";
+    Acknowledge(true);  // C ends
+    bool sentB = false;
+    for (int scan = 0; scan < 4 && !sentB; ++scan) {
+        Cycle(1);
+        EXPECT_FALSE(ModuleCode() == 0x1906 && ModuleParam() == 1) << "A's command never goes out";
+        sentB = ModuleCode() == 0x1906 && ModuleParam() == 2;
+    }
+    EXPECT_TRUE(sentB) << "B's command follows C's end within two scans of the parked module";
+    EXPECT_TRUE(Done(2));
 }
 
-// A and B queue; then the program stops calling A. Its ticket stays unclaimed for one whole free scan and is
-// then passed over: B goes one scan later than it would behind a command that was sent.
+// A and B queue behind C's long command; then the program stops calling A. Once C has ended, A's ticket stays
+// unclaimed for one whole free scan and is passed over: B goes, and A's command never does.
 TEST_F(CmdChannelQueue, ATicketWhoseFbIsNoLongerCalledIsPassedOverAfterAScan) {
-    rf_ = true;
+    Request(2, 0x0A87, 3);
+    Cycle(1);
+    Acknowledge(false);
     Request(0, 0x1906, 1);
     Request(1, 0x1906, 2);
-    Cycle(1);
+    Cycle(2);
+    EXPECT_EQ(interface_->WAITING.value, 2) << "A and B queue behind the move";
     called_[0] = false;
-    Cycle(1);  // SEND := RECEIVE over the parked module
-    EXPECT_EQ(ModuleCode(), kGetStat);
-    Cycle(1);  // free, A's turn, A not called
-    EXPECT_EQ(ModuleCode(), kGetStat) << "nothing sent while A's ticket is unclaimed for a scan";
-    EXPECT_EQ(interface_->WAITING.value, 2);
-    Cycle(1);
-    EXPECT_EQ(ModuleCode(), 0x1906);
-    EXPECT_EQ(ModuleParam(), 2) << "B's command";
-    EXPECT_EQ(interface_->WAITING.value, 1) << "the interface counts before B takes its turn";
+    Acknowledge(true);  // C ends
+    int freeScansWithNothingSent = 0;
+    bool sentB = false;
+    for (int scan = 0; scan < 6 && !sentB; ++scan) {
+        Cycle(1);
+        EXPECT_FALSE(ModuleCode() == 0x1906 && ModuleParam() == 1) << "A's command never goes out";
+        sentB = ModuleCode() == 0x1906 && ModuleParam() == 2;
+        if (!sentB && ModuleCode() == kGetStat) ++freeScansWithNothingSent;
+    }
+    ASSERT_TRUE(sentB) << "B's command goes once A's ticket is passed over";
+    EXPECT_GE(freeScansWithNothingSent, 1) << "A's turn is held for a whole free scan before it is passed over";
+    EXPECT_EQ(interface_->WAITING.value, 1) << "B, counted by the interface before it took its turn";
     Cycle(1);
     EXPECT_EQ(interface_->WAITING.value, 0);
 }

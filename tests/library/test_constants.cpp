@@ -35,10 +35,12 @@ std::vector<std::uint32_t> ManualErrorNumbers() {
     return numbers;
 }
 
-// The library's own codes, one per line of the FBs' error tables (docs/fb/*.md): 16#8001..16#8015.
+// The library's own codes, one per line of the FBs' error tables (docs/fb/*.md): 16#8001..16#8015, and from
+// 16#8020 those of the modules and operating modes.
 std::vector<std::uint32_t> LibraryErrorCodes() {
     std::vector<std::uint32_t> codes;
     for (std::uint32_t code = 0x8001; code <= 0x8015; ++code) codes.push_back(code);
+    for (std::uint32_t code = 0x8020; code <= 0x8021; ++code) codes.push_back(code);
     return codes;
 }
 
@@ -103,7 +105,7 @@ TEST(GvlPac, EveryLibraryErrorCodeHasOneConstant) {
         ASSERT_NE(it, byValue.end()) << "no PAC_LIB_ERR_ constant for 16#" << std::hex << code;
         EXPECT_EQ(it->second.size(), 1u) << "16#" << std::hex << code << " has several constants";
     }
-    EXPECT_EQ(byValue.size(), LibraryErrorCodes().size()) << "a library code outside 16#8001..16#8015";
+    EXPECT_EQ(byValue.size(), LibraryErrorCodes().size()) << "a library code outside the table";
 }
 
 TEST(GvlPac, EveryErrorNumberHasItsOwnText) {
@@ -118,7 +120,8 @@ TEST(GvlPac, EveryErrorNumberHasItsOwnText) {
 }
 
 TEST(GvlPac, NumbersOutsideTheTableAreUnknown) {
-    for (std::uint32_t n : {1u, 15u, 22u, 25u, 60u, 63u, 66u, 84u, 110u, 249u, 263u, 0x1FFFu, 0x8000u, 0x8016u}) {
+    for (std::uint32_t n : {1u, 15u, 22u, 25u, 60u, 63u, 66u, 84u, 110u, 249u, 263u, 0x1FFFu, 0x8000u, 0x8016u,
+                            0x801Fu, 0x8022u}) {
         EXPECT_EQ(ErrorText(n), "unknown error number") << n;
     }
 }

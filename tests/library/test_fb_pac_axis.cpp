@@ -60,6 +60,7 @@ constexpr int kTimeoutScans = 20;  // Timeout in the tests, at 1 ms per scan
 // has been read by at least one controller cycle, so Start and the reset bit must have been 0 that long
 // before the FB can be sure the PA-CONTROL has seen them 0 (and sees the next rise as an edge).
 constexpr int kPacUpdateScans = 10;
+constexpr BYTE kOnline = 31;  // operating status (2.4.2)
 
 std::uint32_t TraverseBits(std::uint32_t control) { return control & ctrl::kTraverseBits; }
 
@@ -74,6 +75,7 @@ class FbPacAxis : public pac::ScanTest {
 protected:
     FbPacAxis() {
         Configure({});
+        fb_->OPSTATUS.value = kOnline;  // the fake axis module is always in ONLINE
         fb_->ENABLE.value = TRUE;
         fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(kTimeoutScans));
         task_.AddProgram([this] { OneScan(); });

@@ -76,6 +76,7 @@ constexpr std::uint32_t kOnReferenced = as::kDriveEnabled | as::kReferenced | kF
 constexpr std::uint32_t kOnActive = kOnReferenced | as::kActive;                                 // 0x781
 constexpr std::uint32_t kOn = ac::kAxisOn;
 
+constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
 constexpr int kExternalStopInput = 1;  // system parameter 4 (5.2.1.3)
 constexpr int kConditionInput = 5;     // G123 (input 1 is the external stop here)
 
@@ -229,7 +230,13 @@ public:
         traces_.resize(static_cast<std::size_t>(options.axes));
         plc_.CallCtrl(ctrl_);
         for (int k = 1; k <= options.axes; ++k) {
-            plc_.CallAxis(Fb(k), k, [this, k] { Fb(k)->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+            plc_.CallAxis(Fb(k), k, [this, k] {
+                // As a PLC program wires them: the format in force and the mode change from FB_PAC_Ctrl, the
+                // operating status from byte 5 of the CMD reply.
+                Fb(k)->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                Fb(k)->MODECHANGE.value = ctrl_->MODECHANGE.value;
+                Fb(k)->OPSTATUS.value = plc_.FromPac()[kOpStatusByte];
+            });
             Fb(k)->ENABLE.value = TRUE;
         }
         plc_.Start();

@@ -151,8 +151,21 @@ private:
 // PA-CONTROL, the external stop input wired and powered. After each of its FBs a hand-written "naive
 // master" may zero the module (off unless a test turns it on). Scan() runs the PLCopen checker on both
 // FBs after every scan, and ControlWordRules until a naive master has written.
+// A bus timing and a reading of the CTRL status word the manual leaves open (docs/open_points.md): does a
+// stopped mode keep its "active" bit? Every CtrlSim test runs on both.
+struct CtrlSimCase : BusTiming {
+    sim::StoppedModeBits stoppedModeBits = sim::StoppedModeBits::kStoppedAlone;
+};
+
+sim::PaControlConfig WithReading(sim::PaControlConfig config, sim::StoppedModeBits bits) {
+    config.ctrlInterface.stoppedModeBits = bits;
+    return config;
+}
+
 class CtrlSimPlc {
 public:
+    explicit CtrlSimPlc(const CtrlSimCase& c, sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
+        : CtrlSimPlc(static_cast<const BusTiming&>(c), WithReading(config, c.stoppedModeBits), bootTime) {}
     explicit CtrlSimPlc(const BusTiming& timing, sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
         : timing_(timing),
           bench_(pac::test::PlcBenchTimingOf(timing, bootTime), config, sim::ModuleLayout{true, 0}),
@@ -383,7 +396,7 @@ void MoveAxis1(CtrlSimPlc& plc) {
     ASSERT_EQ(axis.MoveAbsolute(plc.Now(), axis.MaxRange(), dynamics), 0u);
 }
 
-class CtrlSim : public ::testing::TestWithParam<BusTiming> {
+class CtrlSim : public ::testing::TestWithParam<CtrlSimCase> {
 protected:
     void SetUp() override { RecordProperty("bus", pac::test::Describe(GetParam())); }
 };
@@ -1113,7 +1126,20 @@ TEST_P(CtrlSim, IntegerModeIsTakenOverOnlyWhenEnteringFromHome) {
     EXPECT_TRUE(plc.Ctrl()->INTEGERMODEACTIVE.value);
 }
 
-INSTANTIATE_TEST_SUITE_P(BusTimings, CtrlSim, ::testing::ValuesIn(pac::test::StandardAndJitteredBusTimings()),
-                         pac::test::BusTimingName);
+std::vector<CtrlSimCase> CtrlSimCases(sim::StoppedModeBits bits) {
+    std::vector<CtrlSimCase> cases;
+    for (const BusTiming& t : pac::test::StandardAndJitteredBusTimings()) cases.push_back(CtrlSimCase{t, bits});
+    return cases;
+}
+
+std::string CtrlSimCaseName(const ::testing::TestParamInfo<CtrlSimCase>& info) {
+    return pac::test::BusTimingName(::testing::TestParamInfo<BusTiming>(info.param, info.index));
+}
+
+INSTANTIATE_TEST_SUITE_P(BusTimings, CtrlSim, ::testing::ValuesIn(CtrlSimCases(sim::StoppedModeBits::kStoppedAlone)),
+                         CtrlSimCaseName);
+INSTANTIATE_TEST_SUITE_P(StoppedShowsActive, CtrlSim,
+                         ::testing::ValuesIn(CtrlSimCases(sim::StoppedModeBits::kStoppedAndActive)),
+                         CtrlSimCaseName);
 
 }  // namespace

@@ -170,7 +170,8 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
               R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"n_register": {}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.n_register: unknown key "n_register" (controller has "operating_status", )"
-              R"("n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced" or "limit_switches"))");
+              R"("n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced", "limit_switches" or )"
+              R"("automatic_program"))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "parm": 3})")),
               R"($.steps[0].parm: unknown key "parm" (a command step has "command", "param", "data", "timeout_ms", )"
               R"("end_timeout_ms", "expect" or "note"))");
@@ -186,7 +187,7 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
     // Without any step kind, a misspelt key is the likelier mistake.
     EXPECT_EQ(Refusal(WithStep(R"({"comand": "0906"})")),
               R"($.steps[0].comand: unknown key "comand" (a step has "command", "param", "data", "timeout_ms", )"
-              R"("end_timeout_ms", "expect", "note", "ctrl", "integer_mode", "axes", "fault", "link" or "wait_ms"))");
+              R"("end_timeout_ms", "expect", "note", "ctrl", "integer_mode", "axes", "automatic", "max_ms", "fault", "link" or "wait_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"inputs": {"I5": true}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.inputs.I5: unknown key "I5" (the keys are input numbers 1..1024))");
 }
@@ -194,11 +195,11 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
 TEST(ScenarioLoader, RefusesMissingKeys) {
     EXPECT_EQ(Refusal(R"({"name": "x"})"), R"($: missing key "steps" (a scenario needs it))");
     EXPECT_EQ(Refusal(WithStep(R"({"note": "what?"})")),
-              R"($.steps[0]: missing key: a step needs one of "command", "ctrl", "axes", "fault" or "wait_ms")");
+              R"($.steps[0]: missing key: a step needs one of "command", "ctrl", "axes", "automatic", "fault" or "wait_ms")");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0907", "data": {}})")),
               R"($.steps[0].data: missing key "real" (a REAL value needs it))");
     EXPECT_EQ(Refusal(WithStep(R"({"command": "0906", "wait_ms": 5})")),
-              R"($.steps[0]: a step has exactly one of "command", "ctrl", "axes", "fault" or "wait_ms", this one has "command" and )"
+              R"($.steps[0]: a step has exactly one of "command", "ctrl", "axes", "automatic", "fault" or "wait_ms", this one has "command" and )"
               R"("wait_ms")");
 }
 
@@ -452,4 +453,47 @@ TEST(ScenarioLoader, RefusesModuleStepsItCannotRun) {
     EXPECT_EQ(Refusal(modules + R"({"axes": [{"axis": 1, "command": "PAC_AX_HOME", "expect": {"done": true, "aborted": true}}]}]})"),
               "$.steps[0].axes[0].expect: contradiction: at most one of done, error and aborted can be true "
               "(FB_PAC_Axis's outputs are exclusive)");
+}
+
+TEST(ScenarioLoader, ReadsAutomaticStepsAndTheAutomaticProgram) {
+    const Scenario s = Load(R"({
+      "modules": {"ctrl": true, "axes": 2},
+      "controller": {"automatic_program": ["R17 := R1 * 2", "M257 := M1"]},
+      "steps": [
+        {"automatic": [{"module": 2, "flag_word": 65535, "n": -7, "r": 1.5},
+                       {"module": 1, "expect": {"flag_word": 1, "n": 42, "r": 2.5, "r_tolerance": 0.1}}],
+         "max_ms": 300}
+      ]})");
+    EXPECT_EQ(s.controller.automaticProgram, (std::vector<std::string>{"R17 := R1 * 2", "M257 := M1"}));
+    const auto& automatic = std::get<pac::scenario::AutomaticStep>(s.steps[0].action);
+    EXPECT_EQ(automatic.maxMs, 300);
+    ASSERT_EQ(automatic.modules.size(), 2u);
+    const auto& sent = automatic.modules[0];
+    EXPECT_EQ(sent.module, 2);
+    EXPECT_EQ(sent.flagWord, 0xFFFF);
+    EXPECT_EQ(sent.n, -7);
+    EXPECT_EQ(sent.r, 1.5);
+    EXPECT_TRUE(sent.expect.Empty());
+    const auto& expected = automatic.modules[1];
+    EXPECT_FALSE(expected.flagWord || expected.n || expected.r);
+    EXPECT_EQ(expected.expect.flagWord, 1);
+    EXPECT_EQ(expected.expect.n, 42);
+    EXPECT_EQ(expected.expect.r, 2.5);
+    EXPECT_DOUBLE_EQ(expected.expect.rTolerance, 0.1);
+}
+
+TEST(ScenarioLoader, RefusesAutomaticStepsItCannotRun) {
+    EXPECT_EQ(Refusal(WithStep(R"({"automatic": [{"module": 1, "n": 1}]})")),
+              R"($.steps[0].automatic: an automatic step needs modules: set "modules": {"ctrl": true, "axes": 1..8})");
+    const std::string modules = R"({"modules": {"ctrl": true, "axes": 1}, "steps": [)";
+    EXPECT_EQ(Refusal(modules + R"({"automatic": [{"module": 2, "n": 1}]}]})"),
+              "$.steps[0].automatic[0].module: out of range: 2 is not in 1..1");
+    EXPECT_EQ(Refusal(modules + R"({"automatic": [{"module": 1}]}]})"),
+              R"($.steps[0].automatic[0]: missing key: a module needs "flag_word", "n", "r" or "expect")");
+    EXPECT_EQ(Refusal(modules + R"({"automatic": [{"module": 1, "flag_word": 65536}]}]})"),
+              "$.steps[0].automatic[0].flag_word: out of range: 65536 is not in 0..65535");
+    EXPECT_EQ(Refusal(modules + R"({"automatic": [{"module": 1, "n": 1}, {"module": 1, "r": 1}]}]})"),
+              "$.steps[0].automatic[1].module: module 1 appears twice in this step");
+    EXPECT_EQ(Refusal(R"({"controller": {"automatic_program": ["R17 = R1"]}, "steps": [{"wait_ms": 1}]})"),
+              R"($.controller.automatic_program[0]: AutomaticProgram: "R17 = R1": expected := at column 5)");
 }

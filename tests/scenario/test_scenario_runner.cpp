@@ -231,6 +231,22 @@ TEST(ScenarioRunner, LimitSwitchExampleStopsOnTheSwitchAndResetsTheAxisError) {
     EXPECT_EQ(run.report.AxisJobs(), 2u);
 }
 
+TEST(ScenarioRunner, AutomaticExampleMeetsEveryExpectation) {
+    const ScenarioRun run(FromFile("examples/automatic.json"));
+    const std::string& out = run.timeline.str();
+    EXPECT_TRUE(run.report.Passed()) << out;
+    EXPECT_EQ(run.report.Requests(), 5u);
+    // R1 = 12.345 goes out as 12345 in the integer format; the program's R17 := R1 * 2 comes back as 24690.
+    EXPECT_NE(out.find("| 16#0000         -5     12.345 | 16#0000         -4     24.690\n"), std::string::npos) << out;
+}
+
+TEST(ScenarioRunner, AnAutomaticExpectationNotMetSaysWhatWasReceived) {
+    const ScenarioRun run(FromText(R"({"timing": {"boot_ms": 0}, "modules": {"ctrl": true, "axes": 1},
+        "steps": [{"automatic": [{"module": 1, "n": 5, "expect": {"n": 6}}], "max_ms": 50}]})"));
+    EXPECT_FALSE(run.report.Passed()) << "home position: nothing is exchanged";
+    EXPECT_EQ(run.report.steps[0].failures, (std::vector<std::string>{"module 1: N 0, expected 6"}));
+}
+
 TEST(ScenarioRunner, RunsAreDeterministic) {
     const Scenario demo = FromFile("demo.json");
     const ScenarioRun first(demo);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "sim_fixture.hpp"
 
 namespace pac::sim::testing {
@@ -63,6 +65,26 @@ TEST_F(CtrlInterface, StatusWordOfEveryStatus) {
         pac_.SetOperatingStatus(c.status);
         EXPECT_EQ(Control(kIdle), c.word) << "status " << int(c.status);
         EXPECT_EQ(Status(), c.status);
+    }
+}
+
+class CtrlInterfaceStoppedAndActive : public CtrlInterface {
+protected:
+    static PaControlConfig Config() {
+        PaControlConfig config = QuickConfig();
+        config.ctrlInterface.stoppedModeBits = StoppedModeBits::kStoppedAndActive;
+        return config;
+    }
+    CtrlInterfaceStoppedAndActive() : CtrlInterface(Config()) {}
+};
+
+// The other reading of 2.5.2 (docs/open_points.md): a stopped mode keeps its "active" bit.
+TEST_F(CtrlInterfaceStoppedAndActive, StoppedModesAlsoShowActive) {
+    const std::pair<std::uint8_t, std::uint16_t> cases[] = {{11, 0x0103}, {15, 0x0303}, {19, 0x0303},
+                                                           {31, 0x0403}, {35, 0x0C03}, {39, 0x0C03}, {1, 0x0003}};
+    for (const auto& [status, word] : cases) {
+        pac_.SetOperatingStatus(status);
+        EXPECT_EQ(Control(kIdle), word) << "status " << int(status);
     }
 }
 

@@ -56,6 +56,10 @@ void CtrlInterface::Apply(const Image8& module, std::chrono::nanoseconds now) {
 
 std::uint16_t CtrlInterface::StatusWord() const {
     std::uint16_t word = ctrl::ModeBits(modes_.Status());
+    if (config_.stoppedModeBits == StoppedModeBits::kStoppedAndActive) {
+        if ((word & ctrl::kOnlineStopped) != 0) word |= ctrl::kOnlineActive;
+        if ((word & ctrl::kAutomaticStopped) != 0) word |= ctrl::kAutomaticActive;
+    }
     if (modes_.Ready()) word |= ctrl::kReady;
     if (state_.batteryOk && modes_.Status() != status::kNotInitialized) word |= ctrl::kBatteryOk;
     if (modes_.SystemError() != 0) word |= ctrl::kSystemError;

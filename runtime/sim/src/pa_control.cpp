@@ -42,14 +42,16 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
              config_.axisMachine, config_.online),
       modes_(state_, config_.modes),
       executor_(state_, modes_),
-      ctrl_(modes_, state_),
+      ctrl_(modes_, state_, config_.ctrlInterface),
       protocol_(config_.cmd),
       log_(config_.logCapacity),
+      automaticModule_(config_.automaticModule),
       bootEnd_(config_.bootTime),
       lastFromPac_(layout_.Bytes()),
       lastToPac_(layout_.Bytes()) {
     state_.axisModules = CheckedAxisModules(layout_, config_);
     modules_.assign(static_cast<std::size_t>(state_.axisModules), AxisModule(config_.axisModule));
+    automaticReplies_.assign(modules_.size(), Image12{});
     for (int axis = 1; axis <= state_.axes.Capacity(); ++axis) {
         state_.axes.Motion(axis).SetReferenced(config_.referencedAtPowerOn);
     }
@@ -120,7 +122,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         // Last, so that a mode change by CTRL or CMD in this cycle applies to the axis modules at once. Like
         // the CTRL module, they take no control word from an all-zero image (the emergency stop has halted
         // the axes); they report all the same.
-        ServeAxisModules(toPac, now);
+        ServeModules(toPac, now);
     } else {
         protocol_.SeeAllZeroImage();
     }
@@ -150,6 +152,32 @@ AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
     return context;
 }
 
+bool PaControl::AutomaticExchangeNow() const {
+    if (state_.CurrentMode() != Mode::kAutomatic) return false;
+    return config_.automaticModule.exchange == AutomaticExchange::kWholeMode ||
+           state_.operatingStatus == status::kAuto;
+}
+
+void PaControl::ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
+    if (state_.CurrentMode() != Mode::kAutomatic) {
+        ServeAxisModules(toPac, now);
+        return;
+    }
+    // 2.6: the same bytes are flags and registers now. The axis modules only follow the control word, so that
+    // flag data are no Start edge when HOME POSITION returns (docs/sim_axis_modules.md).
+    for (int k = 1; k <= state_.axisModules; ++k) {
+        const Image12 module = toPac.Module12(layout_.AxisOffset(k));
+        Module(k).Follow(module);
+        if (AutomaticExchangeNow()) automaticModule_.CopyIn(k, module, state_.elements, state_.integerFormat);
+    }
+    if (state_.operatingStatus == status::kAuto) automaticProgram_.Run(state_.elements);
+    if (!AutomaticExchangeNow()) return;
+    for (int k = 1; k <= state_.axisModules; ++k) {
+        automaticReplies_[static_cast<std::size_t>(k - 1)] =
+            automaticModule_.CopyOut(k, state_.elements, state_.integerFormat);
+    }
+}
+
 void PaControl::ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
     const AxisModuleContext context = ModuleContext(now);
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
@@ -165,6 +193,7 @@ void PaControl::PowerCycle(std::chrono::nanoseconds now) {
     state_.axes.Restart(now, config_.referencedAtPowerOn);
     state_.online.Reset();
     for (AxisModule& module : modules_) module.Reset();
+    automaticReplies_.assign(modules_.size(), Image12{});
     Elements& e = state_.elements;
     if (!config_.retention.intRegisters) e.intRegisters.Clear();
     if (!config_.retention.realRegisters) e.realRegisters.Clear();
@@ -256,9 +285,12 @@ ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {
     ProcessImage reply(layout_.Bytes());
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
+    const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
     const AxisModuleContext context = ModuleContext(now);
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        reply.SetModule12(layout_.AxisOffset(axis), Module(axis).Reply(state_.axes.Motion(axis), context));
+        reply.SetModule12(layout_.AxisOffset(axis),
+                          automatic ? automaticReplies_[static_cast<std::size_t>(axis - 1)]
+                                    : Module(axis).Reply(state_.axes.Motion(axis), context));
     }
     return reply;
 }

@@ -83,6 +83,9 @@ public:
     Image12 Cycle(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context);
     // The control word's effects at context.now. Brings the axis to context.now first.
     void Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleContext& context);
+    // Outside the axis interface (AUTOMATIC, 2.6): the control word is taken as the reference for the next
+    // edges only, so that flag data are no Start or reset edge once the module is an axis module again.
+    void Follow(const Image12& toPac) { lastControl_ = AxisModuleCommand::Decode(toPac).control; }
     // The 12 reply bytes for the axis as it stands (call after Serve in the same cycle).
     Image12 Reply(const ServoAxis& axis, const AxisModuleContext& context) const;
 

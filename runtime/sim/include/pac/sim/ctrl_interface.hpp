@@ -43,9 +43,21 @@ constexpr std::uint16_t kIntegerInForce = 1U << 15;
 std::uint16_t ModeBits(std::uint8_t operatingStatus);
 }  // namespace ctrl
 
+// How a stopped mode shows in the status word (2.5.2 lists "ONLINE stopped" and "ONLINE active" as two bits
+// without saying whether a stopped ONLINE is still "active"; docs/open_points.md). Likewise AUTOMATIC.
+enum class StoppedModeBits {
+    kStoppedAlone,      // 35, 39: "ONLINE stopped" only; 15, 19: "AUTOMATIC stopped" only (default)
+    kStoppedAndActive,  // the mode's "active" bit stays set while it is stopped
+};
+
+struct CtrlInterfaceConfig {
+    StoppedModeBits stoppedModeBits = StoppedModeBits::kStoppedAlone;
+};
+
 class CtrlInterface {
 public:
-    CtrlInterface(ModeMachine& modes, const ControllerState& state) : modes_(modes), state_(state) {}
+    CtrlInterface(ModeMachine& modes, const ControllerState& state, CtrlInterfaceConfig config = {})
+        : modes_(modes), state_(state), config_(config) {}
 
     // One controller cycle with the PLC's CTRL module (not called for an all-zero to-PAC image,
     // which is an emergency stop, not a control word).
@@ -59,6 +71,7 @@ public:
 private:
     ModeMachine& modes_;
     const ControllerState& state_;  // battery
+    CtrlInterfaceConfig config_;
     std::optional<std::uint16_t> previous_;
 };
 

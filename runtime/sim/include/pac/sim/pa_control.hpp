@@ -3,7 +3,8 @@
 // It runs in its own cycle: each Cycle(now) reads the PLC's process image from the bus, steps the
 // operating-mode machine, applies the CTRL control word, follows a command that is still processing,
 // recognises a SEND flag change against the last acknowledged SEND (RF), carries out the command, serves
-// the axis modules (AxisModule, one per axis) and writes its reply image. docs/sim_controller.md and the
+// the axis modules (AxisModule, one per axis) or in AUTOMATIC the flag/register modules (AutomaticModule)
+// with the stand-in AUTOMATIC program (AutomaticProgram), and writes its reply image. docs/sim_controller.md and the
 // pages it links list every decision where the manual is silent (power-up, operating modes, emergency
 // stop, SEND toggles while processing, retention, axis modules).
 #pragma once
@@ -13,8 +14,11 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
+#include "pac/sim/automatic_module.hpp"
+#include "pac/sim/automatic_program.hpp"
 #include "pac/sim/axis_module.hpp"
 #include "pac/sim/bus.hpp"
 #include "pac/sim/cmd_frame.hpp"
@@ -51,9 +55,11 @@ struct PaControlConfig {
     int axisCapacity = 16;  // axes held (>= the layout's axis modules); system parameter 2: addressable by CMD
     ServoAxisConfig axisMachine{};  // the machine around every axis (switches, homing, enable mode, ...)
     AxisModuleConfig axisModule{};  // how the axis modules show a CMD error at the next Start edge
+    AutomaticModuleConfig automaticModule{};  // the byte layout of the modules in AUTOMATIC (2.6), when they copy
     RetentionRule retention{};
     bool referencedAtPowerOn = true;
     ModeMachineOptions modes{};  // external stop check, the AUTOMATIC stand-in's cycle counts
+    CtrlInterfaceConfig ctrlInterface{};  // how a stopped mode shows in the CTRL status word
     OnlineCommandOptions online{};  // keep-alive, EP-only commands, readings of 5.2.6.23 (online_axes.hpp)
     CmdProtocolConfig cmd{};  // the manual's open points of the CMD handshake (docs/sim_cmd.md)
     std::size_t logCapacity = 10000;  // newest cycles kept in Log(); 0: no log
@@ -126,6 +132,10 @@ public:
     void AttachSerial(SerialLine& line, SerialPortConfig config = {});
     const SerialPort& Serial() const { return serial_; }
 
+    // The stand-in AUTOMATIC program (automatic_program.hpp): run once per cycle in status 11, after the
+    // modules were copied into FW k / N k / R k and before FW 16+k / N 16+k / R 16+k are copied back.
+    void SetAutomaticProgram(AutomaticProgram program) { automaticProgram_ = std::move(program); }
+
     // G123 (2.7.3.10): the input the axis module of `axis` watches from now on; back to 1 when ONLINE starts.
     void SetConditionInput(int axis, int input) { Module(axis).SetConditionInput(input); }
 
@@ -168,7 +178,9 @@ private:
     void EmergencyStop(std::chrono::nanoseconds now);
     void Execute(const CommandFrame& command, std::chrono::nanoseconds now);
     void WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply);
+    void ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
     void ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
+    bool AutomaticExchangeNow() const;
     AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
     ProcessImage ComposeReply(std::chrono::nanoseconds now) const;
 
@@ -185,6 +197,9 @@ private:
     CommandCounters counters_;
     std::optional<std::uint16_t> injectedError_;
     std::vector<AxisModule> modules_;  // module k serves axis k
+    AutomaticModule automaticModule_;
+    AutomaticProgram automaticProgram_;
+    std::vector<Image12> automaticReplies_;  // the last copy of FW / N / R 16+k per module
     SerialPort serial_;
     SerialHost serialHost_{*this};
 
