@@ -33,7 +33,11 @@ SoakPlc::SoakPlc(const PlcBenchTiming& timing, SoakReport& report)
 
     bench_.CallCtrl(ctrl_);
     for (auto& cmd : cmd_) bench_.Call(cmd);
-    bench_.CallAxis(axis_, 1, [this] { axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value; });
+    bench_.CallAxis(axis_, 1, [this] {
+        axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+        axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
+        axis_->OPSTATUS.value = bench_.CmdInterface()->OPSTATUS.value;  // byte 5 of the CMD reply
+    });
     bench_.Start();
     watch_.AddRequest("FB_PAC_Ctrl", ctrl_);
     watch_.AddCommand("FB_PAC_Cmd 1", cmd_[0]);
