@@ -3,7 +3,8 @@
 // any status bits, error numbers and position flipped in, raw bytes, an all-zero module (link lost), or nothing
 // new. The input also drives every input of the FB: Enable, Execute, Command (out-of-range values included),
 // Position (any REAL, NaN and infinities included), Velocity, Acceleration, the jog inputs, Abort,
-// ResetError, DisableDrive, DisableLimitSwitches, Condition, IntegerMode, Timeout, and the PLC cycle.
+// ResetError, DisableDrive, DisableLimitSwitches, Condition, IntegerMode, Timeout, OpStatus, ModeChange, and
+// the PLC cycle.
 // Checked after every scan: the PLCopen rules (plcopen_checker.hpp; a move has no Busy bound of its own) and
 // the control word rule: never two traverse bits, Start only with exactly one (axis_control_rules.hpp).
 #include <array>
@@ -113,6 +114,10 @@ private:
         axis_->INTEGERMODE.value = (flags & 1U) != 0 ? TRUE : FALSE;
         axis_->DISABLELIMITSWITCHES.value = (flags & 2U) != 0 ? TRUE : FALSE;
         axis_->TIMEOUT.value = pac::fuzz::ShortTime(in_);
+        // The operating status the program passes on (FB_PAC_CmdInterface.OpStatus): 1 home, 31 ONLINE, or any.
+        const std::uint8_t status = in_.Byte();
+        axis_->OPSTATUS.value = (status & 0x80U) != 0 ? status : (status & 1U) != 0 ? 31 : 1;
+        axis_->MODECHANGE.value = (flags & 4U) != 0 ? TRUE : FALSE;
     }
 
     void Trace() {
