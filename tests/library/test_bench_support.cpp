@@ -125,6 +125,29 @@ TEST(PlcOpenChecker, ASupersededJobShowsCommandAbortedForTheEdgeScanOnly) {
               0);
 }
 
+TEST(PlcOpenChecker, TheInputThatStartedTheJobGovernsItsFinalOutput) {
+    const CommandInputs executeAndJog{true, true, false};
+    const CommandInputs jogOnly{false, true, false};
+    const CommandInputs bothJogs{false, true, true};
+    // Execute and a jog rose together: Execute's job; its Error clears with Execute although the jog stays.
+    EXPECT_EQ(Violations({{executeAndJog, Error(0x800E)}, {jogOnly, Idle()}}), 0);
+    EXPECT_NONFATAL_FAILURE(Violations({{executeAndJog, Error(0x800E)}, {jogOnly, Error(0x800E)}}),
+                            "did not clear");
+    // A jog edge beside a held output: either input may own it, so it may hold on the jog alone...
+    EXPECT_EQ(Violations({{Execute(true), Error(0x800B)}, {executeAndJog, Error(0x800B)}, {jogOnly, Error(0x800B)}}), 0);
+    // ...but it must clear once neither is TRUE.
+    EXPECT_NONFATAL_FAILURE(
+        Violations({{Execute(true), Error(0x800B)}, {bothJogs, Error(0x800B)}, {Execute(false), Error(0x800B)}}),
+        "did not clear");
+    // A jog edge while the other jog still stops is ignored: that jog's Done shows for one scan.
+    const CommandInputs jogNegative{false, false, true};
+    EXPECT_EQ(Violations({{jogNegative, Busy()}, {jogOnly, Busy()}, {jogOnly, Done()}, {jogOnly, Idle()}}), 0);
+    // A superseded job's CommandAborted, then the new job's own, held while Execute stays TRUE.
+    EXPECT_EQ(Violations({{jogOnly, Busy()}, {executeAndJog, Aborted()}, {executeAndJog, Aborted()},
+                          {executeAndJog, Aborted()}}),
+              0);
+}
+
 TEST(PlcOpenChecker, ReportsOutputsAtOnce) {
     EXPECT_NONFATAL_FAILURE(Violations({{Execute(true), {true, true, false, false, 0}}}), "at once");
 }

@@ -162,6 +162,32 @@ TEST(CmdOverSim, PowerCycleDuringCommandThenOneCleanCommand) {
     EXPECT_EQ(bench.Controller().Counters().recognized, before + 1) << "the restart replayed nothing";
 }
 
+// Execute released while the command runs: Done shows for one scan. A program that raises Execute again in
+// the very next scan asks for a new command and must get it, not the old Done (the soak's ledger found the
+// edge swallowed: Done for a command never sent).
+TEST(CmdOverSim, AnEdgeRightAfterAOneScanDoneSendsTheNextCommand) {
+    CmdBench bench({1, 3, 1});
+    bench.Settle(5);
+    auto& cmd = bench.Cmd();
+    cmd->CODE.value = 0x0906;
+    cmd->PARAM.value = 1;
+    cmd->DATA.value = 7;
+    cmd->EXECUTE.value = TRUE;
+    bench.Settle(1);
+    cmd->EXECUTE.value = FALSE;
+    for (int i = 0; i < 200 && !cmd->DONE.value; ++i) bench.Settle(1);
+    ASSERT_TRUE(cmd->DONE.value) << "the first command's one-scan Done";
+    cmd->DATA.value = 8;
+    cmd->EXECUTE.value = TRUE;
+    bench.Settle(1);
+    EXPECT_FALSE(cmd->DONE.value) << "the first command's Done answered the new edge";
+    EXPECT_TRUE(cmd->BUSY.value);
+    for (int i = 0; i < 200 && !pac::test::IsFinal(cmd); ++i) bench.Settle(1);
+    EXPECT_TRUE(cmd->DONE.value);
+    EXPECT_EQ(bench.Controller().Counters().Count(0x0906), 2u);
+    EXPECT_EQ(bench.Controller().Io().intRegisters.GetInt(1), 8);
+}
+
 TEST(CmdOverSim, LinkLossAndReconnectionRepeatNoCommand) {
     CmdBench bench({1, 3, 1});
     bench.Settle(5);

@@ -4,18 +4,23 @@
 //   - ErrorID <> 0 exactly when Error;
 //   - a final output (Done, Error, CommandAborted) holds, with its ErrorID, while the command input
 //     that started the job stays TRUE, and clears in the scan that sees it FALSE; if that input was
-//     already FALSE when the job ended, the output shows for exactly one scan;
+//     already FALSE when the job ended, the output shows for exactly one scan (Execute starts the job
+//     when it rises together with a jog input; where a jog input rose and the output stayed the same,
+//     either input may be the job's: the output may hold while one of them stays TRUE);
 //   - Busy never lasts longer than the FB's own bound (its Timeout / EndTimeout), where it has one.
 // A job superseded by a new one (FB_PAC_Axis: a new Execute edge or a jog ends the running job with
-// CommandAborted in the edge scan) shows its CommandAborted in that scan only; the new job owns the
-// outputs from then on. A scan in which a command input rises may begin a new job, so the previous
+// CommandAborted in the edge scan) shows its CommandAborted in that scan; the new job owns the outputs
+// from the next scan on (which may show its own CommandAborted, e.g. an Execute edge as Enable falls). A scan in which a command input rises may begin a new job, so the previous
 // final output need not hold into it.
-// Reports the first violations of each FB with the scan; a test fails if any scan broke a rule.
+// Reports the first violations of each FB with the scan: by default as a GoogleTest failure, or to a
+// reporter of the caller's (the fuzz targets and the soak program run outside GoogleTest).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -59,23 +64,35 @@ std::optional<int> RequestBusyBoundOf(const Fb& fb, std::chrono::nanoseconds plc
     return RequestBusyBound(TimeoutOf(fb), plcCycle);
 }
 
+// Receives one violation, described with the FB, the scan, the rule and the outputs.
+using ViolationReporter = std::function<void(const std::string&)>;
+
+inline void ReportAsTestFailure(const std::string& violation) { ADD_FAILURE() << violation; }
+
 class PlcOpenChecker {
 public:
-    explicit PlcOpenChecker(std::string name) : name_(std::move(name)) {}
+    explicit PlcOpenChecker(std::string name, ViolationReporter report = ReportAsTestFailure)
+        : name_(std::move(name)), report_(std::move(report)) {}
 
     // After each scan: the command inputs as that scan saw them, the outputs it left, and the FB's
     // longest Busy in scans as its pins stand (nullopt: no bound).
     void Check(std::int64_t scan, const CommandInputs& in, const PlcOpenOutputs& out,
                std::optional<int> busyBound = std::nullopt) {
-        const bool rose = in.RoseSince(in_);
+        const unsigned rising = in.RoseMaskSince(in_);
+        const bool rose = rising != 0;
+        if (rose) NewJob(rising, out);
         Expect(out.Shown() <= 1, scan, "Busy, Done, Error and CommandAborted at once", out);
         Expect(out.error == (out.errorId != 0), scan, "ErrorID <> 0 not exactly with Error", out);
         if (held_ && !rose) {
-            if (in.Any()) {
+            const unsigned holding = in.Mask() & starters_;
+            if (holding == starters_) {
                 Expect(out == *held_, scan, "the final output did not hold while the command input stayed TRUE", out);
-            } else {
+            } else if (holding == 0) {
                 Expect(!out.Final() && out.errorId == 0, scan,
                        "the final output did not clear in the scan that saw the command input FALSE", out);
+            } else {
+                Expect(out == *held_ || (!out.Final() && out.errorId == 0), scan,
+                       "the final output neither held nor cleared", out);
             }
         }
         if (oneScan_ && !rose) Expect(!out.Final(), scan, "the final output showed for more than one scan", out);
@@ -92,24 +109,45 @@ public:
     // A fresh FB instance (a PLC restart with a new program): nothing carries over from the old one.
     void Restart() {
         in_ = {};
+        starters_ = CommandInputs::kExecute;
         held_.reset();
         oneScan_ = false;
         wasBusy_ = false;
+        afterSupersede_ = false;
         busyScans_ = 0;
     }
 
     int Violations() const { return violations_; }
 
 private:
+    // The inputs that may have started the job in a scan where `rising` rose. An Execute edge always
+    // begins a new job (it ends a jog). A jog edge while a job runs or stops is ignored, and one that leaves the
+    // final output unchanged may have begun nothing (both jog inputs TRUE) or a new job that ended alike:
+    // either input may govern the job's final output.
+    void NewJob(unsigned rising, const PlcOpenOutputs& out) {
+        if ((rising & CommandInputs::kExecute) != 0) {
+            starters_ = CommandInputs::kExecute;
+        } else if (wasBusy_ || afterSupersede_ || (held_ && out == *held_)) {
+            starters_ |= rising;
+        } else {
+            starters_ = rising;
+        }
+    }
+
     // What the next scan must show: the final output held (held_), or gone (oneScan_).
     void Follow(const CommandInputs& in, const PlcOpenOutputs& out, bool rose) {
         const bool continued = held_ && out == *held_ && !rose;
         const bool superseded = out.aborted && rose && wasBusy_;
+        if (continued) starters_ &= in.Mask();  // held: the job's input is one of those still TRUE
+        const bool starterHeld = (in.Mask() & starters_) != 0;
         held_.reset();
         oneScan_ = false;
-        if (out.Final() && !continued && (superseded || !in.Any())) {
+        afterSupersede_ = superseded;
+        if (superseded) {
+            // The next scan is the new job's: it may show that job's own final output already.
+        } else if (out.Final() && !continued && !starterHeld) {
             oneScan_ = true;
-        } else if (out.Final() && in.Any()) {
+        } else if (out.Final() && starterHeld) {
             held_ = out;
         }
         wasBusy_ = out.busy;
@@ -118,16 +156,22 @@ private:
 
     void Expect(bool ok, std::int64_t scan, const char* rule, const PlcOpenOutputs& out) {
         if (ok) return;
-        if (++violations_ <= kReported) ADD_FAILURE() << name_ << ", scan " << scan << ": " << rule << " (" << out << ")";
+        if (++violations_ > kReported) return;
+        std::ostringstream text;
+        text << name_ << ", scan " << scan << ": " << rule << " (" << out << ")";
+        report_(text.str());
     }
 
     static constexpr int kReported = 5;
 
     std::string name_;
+    ViolationReporter report_;
     CommandInputs in_;
+    unsigned starters_ = CommandInputs::kExecute;  // the inputs that may have started the current job
     std::optional<PlcOpenOutputs> held_;
     bool oneScan_ = false;
     bool wasBusy_ = false;
+    bool afterSupersede_ = false;  // the last scan ended a job for a new one
     int busyScans_ = 0;
     int violations_ = 0;
 };

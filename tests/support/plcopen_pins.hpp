@@ -106,7 +106,14 @@ struct CommandInputs {
     bool jogPositive = false;
     bool jogNegative = false;
 
+    static constexpr unsigned kExecute = 1, kJogPositive = 2, kJogNegative = 4;
+
     bool Any() const { return execute || jogPositive || jogNegative; }
+    // The inputs TRUE, as kExecute | kJogPositive | kJogNegative bits.
+    unsigned Mask() const {
+        return (execute ? kExecute : 0U) | (jogPositive ? kJogPositive : 0U) | (jogNegative ? kJogNegative : 0U);
+    }
+    unsigned RoseMaskSince(const CommandInputs& before) const { return Mask() & ~before.Mask(); }
     // One of them rose since `before`: a new job may begin in this scan.
     bool RoseSince(const CommandInputs& before) const {
         return (execute && !before.execute) || (jogPositive && !before.jogPositive) ||

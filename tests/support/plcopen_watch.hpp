@@ -20,7 +20,8 @@ namespace pac::test {
 
 class PlcOpenWatch {
 public:
-    explicit PlcOpenWatch(std::chrono::nanoseconds plcCycle) : plcCycle_(plcCycle) {}
+    explicit PlcOpenWatch(std::chrono::nanoseconds plcCycle, ViolationReporter report = ReportAsTestFailure)
+        : plcCycle_(plcCycle), report_(std::move(report)) {}
     PlcOpenWatch(const PlcOpenWatch&) = delete;
     PlcOpenWatch& operator=(const PlcOpenWatch&) = delete;
 
@@ -50,11 +51,12 @@ public:
 private:
     template <class Fb, class Bound>
     void Add(std::string name, const pac::FbInstance<Fb>& fb, Bound bound) {
-        auto checker = std::make_shared<PlcOpenChecker>(std::move(name));
+        auto checker = std::make_shared<PlcOpenChecker>(std::move(name), report_);
         checks_.push_back([checker, &fb, bound](std::int64_t scan) { checker->Check(scan, fb, bound()); });
     }
 
     std::chrono::nanoseconds plcCycle_;
+    ViolationReporter report_;
     std::vector<std::function<void(std::int64_t)>> checks_;
 };
 

@@ -38,9 +38,18 @@ def _expected_keywords(exc):
     return f": expected {' or '.join(words)}" if 0 < len(words) <= 3 else ""
 
 
+def _end_of(text):
+    """Line and column just past the last character: where an unexpected end of file is."""
+    lines = text.split("\n")
+    return len(lines), len(lines[-1]) + 1
+
+
 def _syntax_error(exc, file, text=""):
     line = getattr(exc, "line", None) or 1
     col = getattr(exc, "column", None) or 1
+    if line < 1 or col < 1:
+        # lark reports -1:-1 where the input ended before the rule did (found by the damaged-input tests).
+        line, col = _end_of(text)
     token = getattr(exc, "token", None)
     if token is not None and getattr(token, "type", "") == "$END":
         return StError(file, line, col, "syntax error: unexpected end of file")
@@ -96,7 +105,11 @@ def _store(cache_dir, key, pickled):
 def _parse_pickled(path, text):
     """(blark's transformed tree of `text` pickled, None), or (None, the file, line, column and message of
     its first syntax error): plain data, so that it crosses from a worker process as it is cached."""
-    result = parse_source_code(text, fn=path)
+    try:
+        result = parse_source_code(text, fn=path)
+    except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
+        line, col = _end_of(text)
+        return None, (path, line, col, f"syntax error: {exc}")
     if result.exception is not None:
         e = _syntax_error(result.exception, path, text)
         return None, (e.file, e.line, e.col, e.message)
