@@ -79,6 +79,17 @@ public:
         if (!Run(mode).Done()) return false;
         return Controller().OperatingStatus() == 31;
     }
+    // Axis 1 to `position` by 0A94, followed by 1910 (FreeInterface).
+    void AimFollowedMove(float position) {
+        moveAbs->AXIS.value = 1;
+        moveAbs->POSITION.value = position;
+        moveAbs->FREEINTERFACE.value = TRUE;
+    }
+    // Axis 1 toward `target` by 0A90, once Traverse rises.
+    void AimJog(float target) {
+        jog->AXIS.value = 1;
+        jog->TARGET.value = target;
+    }
     // Scans while `more` holds, at most `limit`.
     void ScanWhile(const std::function<bool()>& more, int limit = 20000) {
         for (int i = 0; i < limit && more(); ++i) plc_.Scan();
@@ -225,9 +236,7 @@ TEST_P(CommandSetFbs, FollowedMoveNotInPositionWithinEndTimeoutIsTheLibrarysErro
 TEST_P(CommandSetFbs, FollowedMoveWithZeroTimesUsesTheDefaults) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 300.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.AimFollowedMove(300.0F);
     bench.moveAbs->POLLINTERVAL.value = pac::ToIecTime(0ms);
     bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(0ms);
     const nanoseconds start = bench.Now();
@@ -242,9 +251,7 @@ TEST_P(CommandSetFbs, FollowedMoveWithZeroTimesUsesTheDefaults) {
 TEST_P(CommandSetFbs, FollowedMoveStatusReadRefusedIsThatError) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 600.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.AimFollowedMove(600.0F);
     bench.Start(bench.moveAbs);
     bench.ScanWhile([&] { return !bench.moveAbs->ACTIVE.value && bench.moveAbs->BUSY.value; });
     ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
@@ -263,9 +270,7 @@ TEST_P(CommandSetFbs, FollowedMoveStatusReadRefusedIsThatError) {
 TEST_P(CommandSetFbs, FollowedMoveEndsInTheLibrarysErrorOnAnAxisError) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 2000.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
+    bench.AimFollowedMove(2000.0F);
     bench.Start(bench.moveAbs);
     bench.ScanWhile([&] { return bench.Motion(1).Position() < 100.0; });
     bench.Controller().Axes().RaiseAxisError(1, bench.Now(), kFollowingErrorNumber);
@@ -434,8 +439,7 @@ TEST_P(CommandSetFbs, ManualTraverseEndsAtMaxTimeWithTheLibrarysError) {
 TEST_P(CommandSetFbs, ManualTraverseWithZeroTimesUsesTheDefaults) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.jog->AXIS.value = 1;
-    bench.jog->TARGET.value = 5000.0F;
+    bench.AimJog(5000.0F);
     bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(0ms);
     bench.jog->MAXTIME.value = pac::ToIecTime(0ms);
     bench.jog->TRAVERSE.value = TRUE;
@@ -456,8 +460,7 @@ TEST_P(CommandSetFbs, ManualTraverseStartRefusedIsThatError) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
     bench.Controller().InjectCommandError(kInjectedErrorNumber);
-    bench.jog->AXIS.value = 1;
-    bench.jog->TARGET.value = 5000.0F;
+    bench.AimJog(5000.0F);
     bench.jog->TRAVERSE.value = TRUE;
     bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
     EXPECT_TRUE(bench.jog->ERROR.value);
@@ -476,8 +479,7 @@ TEST_P(CommandSetFbs, ManualTraverseStartRefusedIsThatError) {
 TEST_P(CommandSetFbs, ManualTraverseKeepAliveRefusedStopsTheAxisWithThatError) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.jog->AXIS.value = 1;
-    bench.jog->TARGET.value = 5000.0F;
+    bench.AimJog(5000.0F);
     bench.jog->TRAVERSE.value = TRUE;
     bench.ScanWhile([&] { return bench.Count(0x0A92) == 0; });
     bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the next 0A92
@@ -498,8 +500,7 @@ TEST_P(CommandSetFbs, ManualTraverseKeepAliveRefusedStopsTheAxisWithThatError) {
 TEST_P(CommandSetFbs, ManualTraverseStopRefusedIsThatError) {
     CommandSetBench bench(GetParam());
     ASSERT_TRUE(bench.GoOnline());
-    bench.jog->AXIS.value = 1;
-    bench.jog->TARGET.value = 5000.0F;
+    bench.AimJog(5000.0F);
     bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(800ms);
     bench.jog->TRAVERSE.value = TRUE;
     bench.ScanWhile([&] { return !bench.jog->ACTIVE.value; });
