@@ -30,6 +30,11 @@ using pac::test::FinalOutcome;
 
 std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
 
+// A command error number (manual 6.5) the simulator answers a command with, to see it passed through unchanged.
+constexpr std::uint16_t kInjectedErrorNumber = 21;
+// The simulator's axis error for a servo that cannot follow.
+constexpr std::uint16_t kFollowingErrorNumber = 66;
+
 class CommandSetBench {
 public:
     explicit CommandSetBench(const BusTiming& t, pac::sim::PaControlConfig config = {}) : plc_(t, config) {
@@ -73,6 +78,17 @@ public:
         mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_START_ONLINE;
         if (!Run(mode).Done()) return false;
         return Controller().OperatingStatus() == 31;
+    }
+    // Axis 1 to `position` by 0A94, followed by 1910 (FreeInterface).
+    void AimFollowedMove(float position) {
+        moveAbs->AXIS.value = 1;
+        moveAbs->POSITION.value = position;
+        moveAbs->FREEINTERFACE.value = TRUE;
+    }
+    // Axis 1 toward `target` by 0A90, once Traverse rises.
+    void AimJog(float target) {
+        jog->AXIS.value = 1;
+        jog->TARGET.value = target;
     }
     // Scans while `more` holds, at most `limit`.
     void ScanWhile(const std::function<bool()>& more, int limit = 20000) {
@@ -215,6 +231,79 @@ TEST_P(CommandSetFbs, FollowedMoveNotInPositionWithinEndTimeoutIsTheLibrarysErro
     EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_NO_REFERENCE"]);
 }
 
+// T#0S on PollInterval and EndTimeout means their defaults (20 ms, 60 s): the move is followed to its end, not
+// cut off at once by an end time of zero, and the status is read every 20 ms, not in every scan.
+TEST_P(CommandSetFbs, FollowedMoveWithZeroTimesUsesTheDefaults) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimFollowedMove(300.0F);
+    bench.moveAbs->POLLINTERVAL.value = pac::ToIecTime(0ms);
+    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(0ms);
+    const nanoseconds start = bench.Now();
+    FinalOutcome move = bench.Run(bench.moveAbs);
+    ASSERT_TRUE(move.Done()) << move;
+    EXPECT_EQ(bench.Motion(1).Position(), 300.0);
+    const auto pauses = (bench.Now() - start) / 20ms;
+    EXPECT_LE(bench.Count(0x1910), static_cast<std::uint64_t>(pauses) + 1u) << "at most one read per 20 ms pause";
+}
+
+// 5.2.4.22 read refused: the controller's number is the FB's ErrorID, and following stops there (no 190C).
+TEST_P(CommandSetFbs, FollowedMoveStatusReadRefusedIsThatError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimFollowedMove(600.0F);
+    bench.Start(bench.moveAbs);
+    bench.ScanWhile([&] { return !bench.moveAbs->ACTIVE.value && bench.moveAbs->BUSY.value; });
+    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
+    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the next command: the first 1910
+    FinalOutcome move = bench.Wait(bench.moveAbs);
+    EXPECT_TRUE(move.Error()) << move;
+    EXPECT_EQ(move.ErrorId(), kInjectedErrorNumber);
+    EXPECT_EQ(bench.LastCode(), 0x1910);
+    const std::uint64_t reads = bench.Count(0x1910);
+    bench.SettleFor(200ms);
+    EXPECT_EQ(bench.Count(0x1910), reads) << "no read after the error";
+    EXPECT_EQ(bench.Count(0x190C), 0u);
+}
+
+// 5.2.4.22 status 4 (standing with malfunction): the axis will not arrive; 16#800A, no position read.
+TEST_P(CommandSetFbs, FollowedMoveEndsInTheLibrarysErrorOnAnAxisError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimFollowedMove(2000.0F);
+    bench.Start(bench.moveAbs);
+    bench.ScanWhile([&] { return bench.Motion(1).Position() < 100.0; });
+    bench.Controller().Axes().RaiseAxisError(1, bench.Now(), kFollowingErrorNumber);
+    FinalOutcome move = bench.Wait(bench.moveAbs);
+    EXPECT_TRUE(move.Error()) << move;
+    EXPECT_EQ(move.ErrorId(), kGvl["PAC_LIB_ERR_AXIS_ERROR"]);
+    EXPECT_EQ(kGvl["PAC_LIB_ERR_AXIS_ERROR"], 0x800Au);
+    EXPECT_NE(bench.Motion(1).AxisError(), 0) << "the axis error that ended it";
+    EXPECT_EQ(bench.Count(0x190C), 0u);
+    EXPECT_LT(bench.Motion(1).Position(), 2000.0);
+}
+
+// The final 190C refused: the controller's number, not Done; the move is over, so nothing more is sent.
+TEST_P(CommandSetFbs, FollowedMoveFinalPositionReadRefusedIsThatError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.moveRel->AXIS.value = 1;
+    bench.moveRel->DISTANCE.value = 0.0F;  // in position at once: the first 1910 says 0, the next command is 190C
+    bench.moveRel->FREEINTERFACE.value = TRUE;
+    bench.Start(bench.moveRel);
+    bench.ScanWhile([&] { return bench.Count(0x1910) == 0 && bench.moveRel->BUSY.value; });
+    ASSERT_EQ(bench.Count(0x1910), 1u);
+    bench.Controller().InjectCommandError(kInjectedErrorNumber);
+    FinalOutcome move = bench.Wait(bench.moveRel);
+    EXPECT_TRUE(move.Error()) << move;
+    EXPECT_EQ(move.ErrorId(), kInjectedErrorNumber);
+    EXPECT_EQ(bench.LastCode(), 0x190C);
+    EXPECT_EQ(bench.Count(0x1910), 1u);
+    const std::uint64_t reads = bench.Count(0x190C);
+    bench.SettleFor(200ms);
+    EXPECT_EQ(bench.Count(0x190C), reads) << "no read after the error";
+}
+
 // ---- mode commands (5.2.1, 5.2.5.1, 5.2.6.1) ----
 
 TEST_P(CommandSetFbs, ModeCommandsReachTheManualsStatuses) {
@@ -345,6 +434,91 @@ TEST_P(CommandSetFbs, ManualTraverseEndsAtMaxTimeWithTheLibrarysError) {
     EXPECT_FALSE(bench.Motion(2).Moving());
 }
 
+// T#0S on KeepAliveInterval and MaxTime means their defaults (250 ms, 60 s): the traverse is kept alive at the
+// default pace, not in every scan, and not ended at once.
+TEST_P(CommandSetFbs, ManualTraverseWithZeroTimesUsesTheDefaults) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimJog(5000.0F);
+    bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(0ms);
+    bench.jog->MAXTIME.value = pac::ToIecTime(0ms);
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.SettleFor(1500ms);
+    EXPECT_TRUE(bench.jog->ACTIVE.value);
+    EXPECT_FALSE(bench.jog->ERROR.value);
+    EXPECT_TRUE(bench.Motion(1).Moving());
+    EXPECT_GE(bench.Count(0x0A92), 4u) << "kept alive";
+    EXPECT_LE(bench.Count(0x0A92), 6u) << "every 250 ms, not faster";
+    EXPECT_EQ(bench.Count(0x0A9A), 0u);
+    bench.jog->TRAVERSE.value = FALSE;
+    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
+    EXPECT_TRUE(bench.jog->DONE.value);
+}
+
+// 0A90 refused: the controller's number, and nothing follows it (no keep-alive, no stop).
+TEST_P(CommandSetFbs, ManualTraverseStartRefusedIsThatError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.Controller().InjectCommandError(kInjectedErrorNumber);
+    bench.AimJog(5000.0F);
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
+    EXPECT_TRUE(bench.jog->ERROR.value);
+    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(bench.jog->ACTIVE.value);
+    EXPECT_FALSE(bench.jog->BUSY.value);
+    bench.SettleFor(500ms);
+    EXPECT_EQ(bench.Count(0x0A90), 1u);
+    EXPECT_EQ(bench.Count(0x0A92), 0u);
+    EXPECT_EQ(bench.Count(0x0A9A), 0u);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+}
+
+// 0A92 refused: the FB stops the axis with 0A9A at once rather than let it run out its second, and reports the
+// keep-alive's number.
+TEST_P(CommandSetFbs, ManualTraverseKeepAliveRefusedStopsTheAxisWithThatError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimJog(5000.0F);
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.ScanWhile([&] { return bench.Count(0x0A92) == 0; });
+    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the next 0A92
+    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
+    EXPECT_TRUE(bench.jog->ERROR.value);
+    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(bench.jog->ACTIVE.value);
+    EXPECT_EQ(bench.Count(0x0A92), 2u);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u);
+    EXPECT_TRUE(bench.jog->TRAVERSE.value) << "stopped by the FB, not by the program";
+    bench.SettleFor(300ms);
+    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_EQ(bench.Count(0x0A92), 2u) << "no keep-alive after the stop";
+}
+
+// 0A9A refused: the controller's number, not Done; no keep-alive follows, so the PA-CONTROL stops the axis
+// within its second (5.2.6.10).
+TEST_P(CommandSetFbs, ManualTraverseStopRefusedIsThatError) {
+    CommandSetBench bench(GetParam());
+    ASSERT_TRUE(bench.GoOnline());
+    bench.AimJog(5000.0F);
+    bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(800ms);
+    bench.jog->TRAVERSE.value = TRUE;
+    bench.ScanWhile([&] { return !bench.jog->ACTIVE.value; });
+    bench.SettleFor(100ms);
+    ASSERT_EQ(bench.Count(0x0A92), 0u) << "in the pause: no command on its way";
+    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the 0A9A
+    bench.jog->TRAVERSE.value = FALSE;
+    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
+    EXPECT_TRUE(bench.jog->ERROR.value);
+    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(bench.jog->DONE.value);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u);
+    bench.SettleFor(1500ms);
+    EXPECT_EQ(bench.Count(0x0A92), 0u);
+    EXPECT_EQ(bench.Count(0x0A9A), 1u) << "no retry";
+    EXPECT_FALSE(bench.Motion(1).Moving());
+}
+
 // ---- axis on/off, measuring mode, limit switch monitoring, move condition (5.2.6.17..5.2.6.23) ----
 
 TEST_P(CommandSetFbs, SwitchedOffAxisRefusesMovesUntilSwitchedOn) {
@@ -417,27 +591,45 @@ TEST_P(CommandSetFbs, LimitSwitchMonitoringForOneAxisOrAll) {
 }
 
 // 5.2.6.23: the axis moves as long as the element keeps its value; switching over ends the movement, and
-// the followed move reports CommandAborted (status 2: stopped), not Done.
-void ConditionEndsTheMove(const BusTiming& timing, pac::sim::ConditionLayout layout) {
+// the followed move reports CommandAborted (status 2: stopped), not Done. The element type is 1 input, 2 output,
+// 3 flag, in byte "4" of the data: bits 23..16 by significance, 15..8 by Profibus byte.
+struct ConditionElement {
+    E_PAC_ELEMENTTYPE type;
+    std::uint32_t typeBits;
+    pac::sim::BitBank& (*bank)(pac::sim::Elements&);
+};
+
+const ConditionElement kConditionInput{E_PAC_ELEMENTTYPE__PAC_ELEMENT_INPUT, 1u,
+                                       [](pac::sim::Elements& io) -> pac::sim::BitBank& { return io.inputs; }};
+const ConditionElement kConditionOutput{E_PAC_ELEMENTTYPE__PAC_ELEMENT_OUTPUT, 2u,
+                                        [](pac::sim::Elements& io) -> pac::sim::BitBank& { return io.outputs; }};
+const ConditionElement kConditionFlag{E_PAC_ELEMENTTYPE__PAC_ELEMENT_FLAG, 3u,
+                                      [](pac::sim::Elements& io) -> pac::sim::BitBank& { return io.flags; }};
+
+void ConditionEndsTheMove(const BusTiming& timing, pac::sim::ConditionLayout layout, const ConditionElement& element) {
     pac::sim::PaControlConfig config;
     config.online.conditionLayout = layout;
     CommandSetBench bench(timing, config);
     ASSERT_TRUE(bench.GoOnline());
-    bench.Controller().Io().inputs.Set(9, true);
+    pac::sim::BitBank& bank = element.bank(bench.Controller().Io());
+    bank.Set(9, true);
     bench.condition->AXIS.value = 1;
-    bench.condition->ELEMENT.value = E_PAC_ELEMENTTYPE__PAC_ELEMENT_INPUT;
+    bench.condition->ELEMENT.value = element.type;
     bench.condition->NUMBER.value = 9;
     bench.condition->LEVEL.value = TRUE;
     bench.condition->PROFIBUSBYTEORDER.value = layout == pac::sim::ConditionLayout::kByProfibusByte;
     ASSERT_TRUE(bench.Run(bench.condition).Done());
     EXPECT_EQ(bench.LastCode(), 0x0AA3);
-    EXPECT_EQ(bench.LastData(), layout == pac::sim::ConditionLayout::kBySignificance ? 0x01010009u : 0x00090101u);
+    const std::uint32_t expected = layout == pac::sim::ConditionLayout::kBySignificance
+                                       ? 0x01000009u | element.typeBits << 16
+                                       : 0x00090001u | element.typeBits << 8;
+    EXPECT_EQ(bench.LastData(), expected);
     bench.moveAbs->AXIS.value = 1;
     bench.moveAbs->POSITION.value = 2000.0F;
     bench.moveAbs->FREEINTERFACE.value = TRUE;
     bench.Start(bench.moveAbs);
     bench.ScanWhile([&] { return bench.Motion(1).Position() < 200.0; });
-    bench.Controller().Io().inputs.Set(9, false);
+    bank.Set(9, false);
     FinalOutcome move = bench.Wait(bench.moveAbs);
     EXPECT_TRUE(move.Aborted()) << move;
     EXPECT_LT(bench.Motion(1).Position(), 500.0);
@@ -445,11 +637,19 @@ void ConditionEndsTheMove(const BusTiming& timing, pac::sim::ConditionLayout lay
 }
 
 TEST_P(CommandSetFbs, MoveConditionEndsTheMoveBySignificanceLayout) {
-    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kBySignificance);
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kBySignificance, kConditionInput);
 }
 
 TEST_P(CommandSetFbs, MoveConditionEndsTheMoveByProfibusByteLayout) {
-    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kByProfibusByte);
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kByProfibusByte, kConditionInput);
+}
+
+TEST_P(CommandSetFbs, MoveConditionOnAnOutputEndsTheMove) {
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kBySignificance, kConditionOutput);
+}
+
+TEST_P(CommandSetFbs, MoveConditionOnAFlagEndsTheMove) {
+    ConditionEndsTheMove(GetParam(), pac::sim::ConditionLayout::kByProfibusByte, kConditionFlag);
 }
 
 // ---- axis values and the extended status (5.2.4.19..5.2.4.28) ----
