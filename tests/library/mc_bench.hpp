@@ -72,7 +72,7 @@ public:
             CallBlock(b.moveA, k, axis + "MC_MoveAbsolute A");
             CallBlock(b.moveB, k, axis + "MC_MoveAbsolute B");
             CallBlock(b.relative, k, axis + "MC_MoveRelative");
-            CallBlock(b.velocity, k);
+            CallBlock(b.velocity, k);  // checked below
             CallBlock(b.halt, k, axis + "MC_Halt");
             CallBlock(b.stop, k, axis + "MC_Stop");
             CallBlock(b.stop2, k, axis + "MC_Stop 2");
@@ -138,15 +138,20 @@ private:
     static constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
     static constexpr int kExternalStopInput = 1;     // system parameter 4 (5.2.1.3)
 
-    // The block on the axis reference of axis k; with a name, under the PLCopen checker.
+    // The block on the axis reference of axis k.
     template <class Fb>
-    void CallBlock(FbInstance<Fb>& fb, int k, const std::string& checked = "") {
+    void CallBlock(FbInstance<Fb>& fb, int k) {
         plc_.Task().AddProgram([this, &fb, k] {
             fb->AXIS.value = Ref(k);
             fb();
             Ref(k) = fb->AXIS.value;
         });
-        if (checked.empty()) return;
+    }
+
+    // An Execute block, under the PLCopen checker.
+    template <class Fb>
+    void CallBlock(FbInstance<Fb>& fb, int k, const std::string& checked) {
+        CallBlock(fb, k);
         auto checker = std::make_shared<PlcOpenChecker>(checked);
         checks_.push_back([checker, &fb](std::int64_t scan) { checker->Check(scan, fb); });
     }

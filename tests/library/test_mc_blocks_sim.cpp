@@ -59,6 +59,9 @@ bool Final(const pac::FbInstance<Fb>& fb) {
     return pac::test::IsFinal(fb);
 }
 
+// MC_MoveVelocity never ends with Done.
+bool Final(const pac::FbInstance<MC_MOVEVELOCITY>& fb) { return fb->ERROR.value || fb->COMMANDABORTED.value; }
+
 // Execute rises; the next scan sees it.
 template <class Fb>
 void Execute(McBench& bench, pac::FbInstance<Fb>& fb) {
