@@ -1,5 +1,6 @@
 #include "module_steps.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -19,6 +20,16 @@ std::string Name(const Json& value, const std::string& path, const pac::EnumName
     const std::string text = json::String(value, path);
     if (!names.Contains(text)) {
         json::Refuse(path, "unknown " + std::string(what) + " " + Quoted(text) + " (one of " + json::ListKeys(names.All()) + ")");
+    }
+    return text;
+}
+
+// An MC_ block an axes step can run with "mc_blocks" (McCommandNames), refused with the list otherwise.
+std::string McName(const Json& value, const std::string& path) {
+    const std::string text = json::String(value, path);
+    const auto& names = McCommandNames();
+    if (std::find(names.begin(), names.end(), text) == names.end()) {
+        json::Refuse(path, "unknown MC_ block " + Quoted(text) + " (one of " + json::ListKeys(names) + ")");
     }
     return text;
 }
@@ -109,7 +120,9 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
     job.axis = static_cast<int>(json::Integer(object.Get("axis"), object.PathOf("axis"), 1, modules_.axes));
     if (const Json* enable = object.Find("enable")) job.enable = json::Bool(*enable, object.PathOf("enable"));
     if (const Json* command = object.Find("command")) {
-        job.command = Name(*command, object.PathOf("command"), pac::EnumNames(E_PAC_AXISCOMMAND__NAMES), "axis command");
+        job.command = modules_.mcBlocks ? McName(*command, object.PathOf("command"))
+                                        : Name(*command, object.PathOf("command"),
+                                               pac::EnumNames(E_PAC_AXISCOMMAND__NAMES), "axis command");
     }
     if (const Json* reset = object.Find("reset_error")) {
         job.resetError = json::Bool(*reset, object.PathOf("reset_error"));
@@ -128,6 +141,7 @@ AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) co
         job.acceleration = static_cast<int>(json::Integer(*a, object.PathOf("acceleration"), 0, 65535));
     }
     if (const Json* c = object.Find("condition")) {
+        if (modules_.mcBlocks) json::Refuse(object.PathOf("condition"), "the MC_ blocks have no G123 condition");
         job.condition = Name(*c, object.PathOf("condition"), pac::EnumNames(E_PAC_MOVECONDITION__NAMES), "condition");
     }
     job.timeoutMs = json::Duration(object, "timeout_ms", job.timeoutMs);

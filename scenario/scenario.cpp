@@ -2,6 +2,12 @@
 
 namespace pac::scenario {
 
+const std::vector<std::string>& McCommandNames() {
+    static const std::vector<std::string> names = {"MC_Home", "MC_MoveAbsolute", "MC_MoveRelative", "MC_Halt",
+                                                   "MC_Stop"};
+    return names;
+}
+
 const char* ToString(FaultKind kind) {
     switch (kind) {
         case FaultKind::kPowerCycle:

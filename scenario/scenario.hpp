@@ -29,6 +29,7 @@ struct Timing {
 struct Modules {
     bool ctrl = false;
     int axes = 0;
+    bool mcBlocks = false;  // the axis modules run FB_PAC_McAxis and the PLCopen MC_ blocks, not FB_PAC_Axis
 };
 
 // Hardware limit switches of one axis, at machine positions (none fitted where empty).
@@ -102,7 +103,8 @@ struct AxisExpectation {
 
 // One axis of an axes step: Enable (a level that stays for later steps) and optionally a job through
 // FB_PAC_Axis, or a reset of its axis error (ResetError until AxisError is seen FALSE). `command` and
-// `condition` are the E_PAC_AxisCommand / E_PAC_MoveCondition names.
+// `condition` are the E_PAC_AxisCommand / E_PAC_MoveCondition names. With Modules::mcBlocks: MC_Power's
+// Enable, the MC_ block named by `command`, MC_Reset (until it ends); no condition.
 struct AxisJob {
     int axis = 1;  // the axis module, 1..Modules::axes
     std::optional<bool> enable;
@@ -118,6 +120,9 @@ struct AxisJob {
 
     bool HasJob() const { return !command.empty(); }
 };
+
+// The MC_ blocks an axes step may name as its "command" with Modules::mcBlocks.
+const std::vector<std::string>& McCommandNames();
 
 // Axis jobs that run at the same time: every Execute rises in the same scan and stays TRUE until
 // every job has ended (Done, Error or CommandAborted); then all fall for one scan.

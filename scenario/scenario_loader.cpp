@@ -94,7 +94,7 @@ private:
     }
 
     static Modules ReadModules(const Json& value, const std::string& path) {
-        const json::Object object(value, path, {"ctrl", "axes"}, "modules");
+        const json::Object object(value, path, {"ctrl", "axes", "mc_blocks"}, "modules");
         Modules modules;
         if (const Json* ctrl = object.Find("ctrl")) modules.ctrl = json::Bool(*ctrl, object.PathOf("ctrl"));
         if (const Json* axes = object.Find("axes")) {
@@ -102,6 +102,12 @@ private:
             if (modules.axes > 0 && !modules.ctrl) {
                 json::Refuse(object.PathOf("axes"),
                              "axis modules need the CTRL interface (extensions 2..9 come after it): set \"ctrl\": true");
+            }
+        }
+        if (const Json* mc = object.Find("mc_blocks")) {
+            modules.mcBlocks = json::Bool(*mc, object.PathOf("mc_blocks"));
+            if (modules.mcBlocks && modules.axes == 0) {
+                json::Refuse(object.PathOf("mc_blocks"), "the MC_ blocks run on axis modules: set \"axes\" to 1..8");
             }
         }
         return modules;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "expectations.hpp"
+#include "mc_axes.hpp"
 #include "scenario_error.hpp"
 #include "pac/enum_names.hpp"
 #include "pac/fb_instance.hpp"
@@ -59,14 +60,23 @@ public:
           plc_(BenchTiming(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
         plc_.Call(cmd_);
         if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
+        if (scenario.modules.mcBlocks) {
+            mc_ = std::make_unique<McAxes>(plc_, scenario.modules.axes, [this](FB_PAC_MCAXIS& fb) {
+                fb.INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                fb.MODECHANGE.value = ctrl_->MODECHANGE.value;
+                fb.OPSTATUS.value = cmd_->OPSTATUS.value;
+            });
+        }
         for (std::size_t k = 0; k < axes_.size(); ++k) {
             // As a PLC program wires them: each axis takes the format in force and the mode change from
             // FB_PAC_Ctrl, the operating status from FB_PAC_Cmd.
-            plc_.CallAxis(axes_[k], static_cast<int>(k) + 1, [this, k] {
-                axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
-                axes_[k]->MODECHANGE.value = ctrl_->MODECHANGE.value;
-                axes_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
-            });
+            if (!mc_) {
+                plc_.CallAxis(axes_[k], static_cast<int>(k) + 1, [this, k] {
+                    axes_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+                    axes_[k]->MODECHANGE.value = ctrl_->MODECHANGE.value;
+                    axes_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
+                });
+            }
             // The same module in AUTOMATIC (2.6): each FB writes it only in its own modes.
             plc_.CallAxis(automatic_[k], static_cast<int>(k) + 1, [this, k] {
                 automatic_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
@@ -190,6 +200,7 @@ private:
             axis.resetError = fb->RESETERROR.value != 0;
             axis.actualPosition = fb->ACTUALPOSITION.value;
             axis.integerMode = fb->INTEGERMODE.value != 0;
+            if (mc_) mc_->Fill(axis);
             axis.simPosition = plc_.Controller().Axes().Motion(axis.axis).Position();
             sample.axes.push_back(axis);
         }
@@ -249,6 +260,7 @@ private:
     // An axis has ended its part of the step: its job's final output, its axis error reset, or Enabled
     // following Enable.
     bool AxisFinished(const AxisJob& job) {
+        if (mc_) return mc_->Finished(job);
         auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
         if (job.HasJob()) return fb->DONE.value || fb->ERROR.value || fb->COMMANDABORTED.value;
         if (job.resetError) return !fb->AXISERROR.value;
@@ -257,6 +269,10 @@ private:
 
     std::vector<AxisOutcome> RunAxes(const AxesStep& step) {
         for (const auto& job : step.jobs) {
+            if (mc_) {
+                mc_->Begin(job);
+                continue;
+            }
             auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
             if (job.enable) fb->ENABLE.value = *job.enable ? TRUE : FALSE;
             if (job.resetError) fb->RESETERROR.value = TRUE;
@@ -296,6 +312,7 @@ private:
             Scan();
         }
         for (const auto& job : step.jobs) {
+            if (mc_) mc_->End(job);
             auto& fb = axes_[static_cast<std::size_t>(job.axis - 1)];
             fb->EXECUTE.value = FALSE;
             fb->RESETERROR.value = FALSE;
@@ -314,6 +331,7 @@ private:
         outcome.enabled = fb->ENABLED.value != 0;
         outcome.referenced = fb->REFERENCED.value != 0;
         outcome.position = fb->ACTUALPOSITION.value;
+        if (mc_) mc_->Take(axis, outcome);
         outcome.endScan = plc_.Task().ScanCount();
         outcome.endTime = plc_.Now();
     }
@@ -393,6 +411,7 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
     std::vector<pac::FbInstance<FB_PAC_AUTOMATICMODULE>> automatic_;  // on the same modules; never resized
+    std::unique_ptr<McAxes> mc_;  // with Modules::mcBlocks, in place of axes_ (made once plc_ is)
     pac::PacPlcBench plc_;
 };
 

@@ -108,7 +108,8 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
     if (m.axes > 0) out_ << ", " << Plural(m.axes, "axis module", "axis modules");
     out_ << "; one FB_PAC_Cmd on the CMD interface";
     if (m.ctrl) out_ << ", FB_PAC_Ctrl on the CTRL interface";
-    if (m.axes > 0) out_ << ", an FB_PAC_Axis on each axis module";
+    if (m.axes > 0 && m.mcBlocks) out_ << ", FB_PAC_McAxis and the MC_ blocks on each axis module";
+    if (m.axes > 0 && !m.mcBlocks) out_ << ", an FB_PAC_Axis on each axis module";
     out_ << "\n  a line for each scan in which the step's module or its FB's outputs changed\n\n";
     view_ = View::kCmd;
     viewAxes_.clear();

@@ -455,6 +455,24 @@ TEST(ScenarioLoader, RefusesModuleStepsItCannotRun) {
               "(FB_PAC_Axis's outputs are exclusive)");
 }
 
+// "mc_blocks": the axes steps name MC_ blocks, and only those the runner drives; no G123 condition.
+TEST(ScenarioLoader, ReadsAndRefusesStepsOfTheMcBlocks) {
+    const std::string mc = R"({"modules": {"ctrl": true, "axes": 2, "mc_blocks": true}, "steps": [)";
+    const Scenario scenario = Load(mc + R"({"axes": [{"axis": 2, "command": "MC_MoveRelative", "position": 5.0}]}]})");
+    EXPECT_TRUE(scenario.modules.mcBlocks);
+    EXPECT_EQ(std::get<pac::scenario::AxesStep>(scenario.steps.at(0).action).jobs.at(0).command, "MC_MoveRelative");
+    EXPECT_EQ(Refusal(R"({"modules": {"ctrl": true, "mc_blocks": true}, "steps": [{"wait_ms": 1}]})"),
+              R"($.modules.mc_blocks: the MC_ blocks run on axis modules: set "axes" to 1..8)");
+    EXPECT_EQ(Refusal(mc + R"({"axes": [{"axis": 1, "command": "PAC_AX_HOME"}]}]})"),
+              R"($.steps[0].axes[0].command: unknown MC_ block "PAC_AX_HOME" (one of "MC_Home", "MC_MoveAbsolute", )"
+              R"("MC_MoveRelative", "MC_Halt" or "MC_Stop"))");
+    EXPECT_EQ(Refusal(mc + R"({"axes": [{"axis": 1, "command": "MC_MoveAbsolute", "condition": "PAC_COND_NONE"}]}]})"),
+              "$.steps[0].axes[0].condition: the MC_ blocks have no G123 condition");
+    const std::string plain = R"({"modules": {"ctrl": true, "axes": 1}, "steps": [)";
+    EXPECT_EQ(Refusal(plain + R"({"axes": [{"axis": 1, "command": "MC_Home"}]}]})").substr(0, 65),
+              R"($.steps[0].axes[0].command: unknown axis command "MC_Home" (one o)");
+}
+
 TEST(ScenarioLoader, ReadsAutomaticStepsAndTheAutomaticProgram) {
     const Scenario s = Load(R"({
       "modules": {"ctrl": true, "axes": 2},

@@ -231,6 +231,26 @@ TEST(ScenarioRunner, LimitSwitchExampleStopsOnTheSwitchAndResetsTheAxisError) {
     EXPECT_EQ(run.report.AxisJobs(), 2u);
 }
 
+// Two axes under the MC_ blocks: both moves end at their targets with the user-unit velocities as per mille on the
+// wire (Start with the absolute / relative bit), MC_Home references axis 1, and a velocity the module cannot carry
+// is refused in the scan its Execute rose.
+TEST(ScenarioRunner, McBlocksExampleMovesTwoAxes) {
+    const ScenarioRun run(FromFile("examples/mc_two_axes.json"));
+    const std::string& out = run.timeline.str();
+    ASSERT_TRUE(run.report.Passed()) << out;
+    EXPECT_NE(out.find("FB_PAC_McAxis and the MC_ blocks on each axis module"), std::string::npos) << out;
+    EXPECT_NE(out.find("|    1 | 16#00000045 1000  500    100.000 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("|    2 | 16#00000085 1000  250     30.000 |"), std::string::npos) << out;
+    const auto& moves = run.report.steps[3].axes;
+    EXPECT_EQ(moves.at(0).position, 100.0);
+    EXPECT_EQ(moves.at(1).position, 30.0);
+    EXPECT_TRUE(run.report.steps[4].axes.at(0).referenced);
+    const auto& refused = run.report.steps[5].axes.at(0);
+    EXPECT_EQ(refused.errorId, 0x800Bu);
+    EXPECT_EQ(refused.endScan, refused.edgeScan) << "refused in the edge scan";
+    EXPECT_EQ(run.report.AxisJobs(), 6u);
+}
+
 TEST(ScenarioRunner, AutomaticExampleMeetsEveryExpectation) {
     const ScenarioRun run(FromFile("examples/automatic.json"));
     const std::string& out = run.timeline.str();
