@@ -32,8 +32,8 @@ _PARALLEL_MIN_CHARS = 4000
 
 
 def _lexcheck_version():
-    """The lexical checks' own source: a cached parse stands for a text that passed these checks, so that
-    a cache hit skips them (a quarter of a run that parses nothing); other checks invalidate it."""
+    """The lexical checks' own source: a cached parse stands for a text that passed these checks, so a
+    cache hit skips them; changed checks invalidate the cache."""
     with open(lexcheck.__file__, "rb") as f:
         return hashlib.sha256(f.read()).hexdigest()
 
