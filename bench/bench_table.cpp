@@ -180,7 +180,7 @@ int PrintScanCost(const std::string& self) {
                 Cell(ctrl.job).c_str(), Jobs(ctrl.job).c_str());
     std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | - | - |\n",
                 Cell(axis.idle).c_str(), Cell(axis.job).c_str(), Jobs(axis.job).c_str());
-    std::printf("| AUTOMATIC module FB | - | - | not in the library yet (issue 11) | - | - | - |\n\n");
+    std::printf("| AUTOMATIC module FB | - | - | FB_PAC_AutomaticModule: no workload yet (needs the simulator in AUTOMATIC) | - | - | - |\n\n");
     return failures;
 }
 
