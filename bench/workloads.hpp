@@ -22,6 +22,7 @@ inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";
 inline const char* const kAxis = "FB_PAC_AXIS_body__";
+inline const char* const kAutomatic = "FB_PAC_AUTOMATICMODULE_body__";
 inline const char* const kScan = "pac::PlcTask::Scan()";
 inline const char* const kSimulator = "pac::sim::PaControl::Cycle*";
 inline const char* const kBusRead = "pac::sim::Bus::ReadFromPac*";
