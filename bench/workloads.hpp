@@ -35,7 +35,8 @@ struct WorkloadResult {
 };
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
-// "axis-job", "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans. std::invalid_argument for another name.
+// "axis-job", "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans.
+// std::invalid_argument for another name.
 WorkloadResult RunWorkload(const std::string& name, int scans);
 
 // FB_PAC_CmdInterface with FB_PAC_Cmd and the hand-written C handshake side by side on two benches of the
