@@ -147,7 +147,8 @@ WorkloadResult AxisWorkload(bool job, int scans) {
 WorkloadResult AutomaticWorkload(bool exchange, int scans) {
     constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
     pac::PacPlcBench plc({}, {}, pac::sim::ModuleLayout{true, 1});
-    plc.Controller().SetAutomaticProgram(pac::sim::AutomaticProgram({"N17 := N1 + 1", "R17 := R1 * 2", "FW18 := FW2"}));
+    plc.Controller().SetAutomaticProgram(
+        pac::sim::AutomaticProgram({"N17 := N1 + 1", "R17 := R1 * 2", "FW18 := FW2"}));
     auto ctrl = PAC_FB(FB_PAC_CTRL);
     auto module = PAC_FB(FB_PAC_AUTOMATICMODULE);
     std::int32_t sent = 0;
