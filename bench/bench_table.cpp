@@ -152,6 +152,7 @@ int PrintScanCost(const std::string& self) {
     const CostPair hand = Cost(self, "c", {measured::kHandWritten});
     const CostPair ctrl = Cost(self, "ctrl", {measured::kCtrl});
     const CostPair axis = Cost(self, "axis", {measured::kAxis});
+    const CostPair automatic = Cost(self, "automatic", {measured::kAutomatic});
     std::printf("| function block | idle | during a job | the job | jobs done | / hand-written C (job) | goal |\n"
                 "|---|---:|---:|---|---:|---:|---|\n");
     const auto ratio = [&hand](const std::optional<CallgrindCount>& c) {
@@ -180,7 +181,9 @@ int PrintScanCost(const std::string& self) {
                 Cell(ctrl.job).c_str(), Jobs(ctrl.job).c_str());
     std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | - | - |\n",
                 Cell(axis.idle).c_str(), Cell(axis.job).c_str(), Jobs(axis.job).c_str());
-    std::printf("| AUTOMATIC module FB | - | - | not in the library yet (issue 11) | - | - | - |\n\n");
+    std::printf("| FB_PAC_AutomaticModule (one module) | %s | %s | HOME POSITION / AUTOMATIC, new N1 each scan, "
+                "N17 back | %s | - | - |\n\n", Cell(automatic.idle).c_str(), Cell(automatic.job).c_str(),
+                Jobs(automatic.job).c_str());
     return failures;
 }
 

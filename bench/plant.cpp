@@ -109,6 +109,10 @@ void Plant::NextCommand() {
 
 void Plant::NextMove(int k) {
     auto& axis = Axis(k);
+    // As a PLC program wires FB_PAC_Axis: the operating status from the CMD reply (without it the FB
+    // leaves the module alone and no axis moves) and FB_PAC_Ctrl's ModeChange.
+    axis->OPSTATUS.value = plc_.CmdInterface()->OPSTATUS.value;
+    axis->MODECHANGE.value = ctrl_->MODECHANGE.value;
     if (axis->EXECUTE.value) {
         if (!Final(axis) && !axis->COMMANDABORTED.value) return;
         movesDone_ += axis->DONE.value ? 1 : 0;

@@ -17,6 +17,7 @@
 
 #include "cmd_handshake.h"
 #include "pac/pac_plc_bench.hpp"
+#include "pac/sim/automatic_program.hpp"
 #include "plant.hpp"
 
 namespace pac::bench {
@@ -140,6 +141,50 @@ WorkloadResult AxisWorkload(bool job, int scans) {
     return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone(); });
 }
 
+// FB_PAC_AutomaticModule on module 1 after power-on: "idle" in HOME POSITION, where it leaves the module
+// alone; "job" in AUTOMATIC, where it sends a new N1 in every scan and the controller's stand-in program
+// answers N17 := N1 + 1 (and R17, FW18 from R1, FW2). A job is an answer that came back.
+WorkloadResult AutomaticWorkload(bool exchange, int scans) {
+    constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
+    pac::PacPlcBench plc({}, {}, pac::sim::ModuleLayout{true, 1});
+    plc.Controller().SetAutomaticProgram(
+        pac::sim::AutomaticProgram({"N17 := N1 + 1", "R17 := R1 * 2", "FW18 := FW2"}));
+    auto ctrl = PAC_FB(FB_PAC_CTRL);
+    auto module = PAC_FB(FB_PAC_AUTOMATICMODULE);
+    std::int32_t sent = 0;
+    long answers = 0;
+    plc.CallCtrl(ctrl);
+    plc.CallAxis(module, 1, [&] {
+        module->OPSTATUS.value = plc.FromPac()[kOpStatusByte];
+        module->INTEGERMODE.value = ctrl->INTEGERMODEACTIVE.value;
+        module->INTREGISTER.value = ++sent % 30000;
+        module->REALREGISTER.value = static_cast<float>(sent % 1000) * 0.5f;
+        module->FLAGWORD.value = static_cast<std::uint16_t>(sent);
+    });
+    plc.Start();
+    if (plc.ScanUntil([&] { return ctrl->READY.value != 0; }, 2000) < 0) {
+        throw std::runtime_error("AutomaticWorkload: the controller is not Ready");
+    }
+    plc.Scan(20);
+    if (exchange) {
+        ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC;
+        ctrl->EXECUTE.value = TRUE;
+        if (plc.ScanUntil([&] { return ctrl->DONE.value || ctrl->ERROR.value; }, 2000) < 0 || !ctrl->DONE.value ||
+            plc.ScanUntil([&] { return module->INEXCHANGE.value != 0; }, 200) < 0) {
+            throw std::runtime_error("AutomaticWorkload: AUTOMATIC not reached");
+        }
+        ctrl->EXECUTE.value = FALSE;
+    }
+    std::int32_t last = module->RECEIVEDINTREGISTER.value;
+    return Measure([&] {
+        plc.Scan();
+        if (module->RECEIVEDINTREGISTER.value != last) {
+            last = module->RECEIVEDINTREGISTER.value;
+            ++answers;
+        }
+    }, scans, [&] { return answers; });
+}
+
 WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
     PlantOptions options;
     options.pacCycle = pacCycle;
@@ -210,6 +255,8 @@ WorkloadResult RunWorkload(const std::string& name, int scans) {
         {"ctrl-job", [](int n) { return CtrlWorkload(true, n); }},
         {"axis-idle", [](int n) { return AxisWorkload(false, n); }},
         {"axis-job", [](int n) { return AxisWorkload(true, n); }},
+        {"automatic-idle", [](int n) { return AutomaticWorkload(false, n); }},
+        {"automatic-job", [](int n) { return AutomaticWorkload(true, n); }},
         {"plant-pac1", [](int n) { return PlantWorkload(milliseconds(1), n); }},
         {"plant-pac10", [](int n) { return PlantWorkload(milliseconds(10), n); }},
     };

@@ -22,6 +22,7 @@ inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";
 inline const char* const kAxis = "FB_PAC_AXIS_body__";
+inline const char* const kAutomatic = "FB_PAC_AUTOMATICMODULE_body__";
 inline const char* const kScan = "pac::PlcTask::Scan()";
 inline const char* const kSimulator = "pac::sim::PaControl::Cycle*";
 inline const char* const kBusRead = "pac::sim::Bus::ReadFromPac*";
@@ -34,7 +35,8 @@ struct WorkloadResult {
 };
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
-// "axis-job", "plant-pac1", "plant-pac10") with `scans` measured scans. std::invalid_argument for another name.
+// "axis-job", "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans.
+// std::invalid_argument for another name.
 WorkloadResult RunWorkload(const std::string& name, int scans);
 
 // FB_PAC_CmdInterface with FB_PAC_Cmd and the hand-written C handshake side by side on two benches of the

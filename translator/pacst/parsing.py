@@ -2,33 +2,88 @@
 
 blark needs several milliseconds per source line, so a rebuild after touching one file re-parses
 only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
-of its text and the versions of blark and of this cache format. The files the cache does not hold
-are parsed in parallel, one process per core (docs/benchmarks.md has the timings).
+of its text and the versions of blark, of the lexical checks and of this cache format. The files
+the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
+timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
+cached too, pickled beside the parses: loading it takes a twentieth of that.
 """
 import concurrent.futures
 import hashlib
+import importlib
+import io
 import multiprocessing
 import os
 import pickle
 import re
+import sys
 import tempfile
+import types
 
 import blark
-from blark.parse import get_parser, parse_source_code
+import lark
+from blark.parse import new_parser, parse_source_code
 
 from . import lexcheck
 from .errors import StError
 
-_CACHE_FORMAT = 1
+_CACHE_FORMAT = 2
 # Below about a second of parsing, starting worker processes costs more than it saves.
 _PARALLEL_MIN_CHARS = 4000
 
 
+def _lexcheck_version():
+    """The lexical checks' own source: a cached parse stands for a text that passed these checks, so a
+    cache hit skips them; changed checks invalidate the cache."""
+    with open(lexcheck.__file__, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+_LEXCHECK_VERSION = _lexcheck_version()
+
+
 def _cache_key(text):
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|".encode())
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_LEXCHECK_VERSION}|".encode())
     h.update(text.encode("utf-8"))
     return h.hexdigest()
+
+
+def _parser_key():
+    """What a built parser depends on: the grammar's text and the versions of blark, lark and Python."""
+    h = hashlib.sha256()
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{lark.__version__}|{sys.version}|".encode())
+    with open(blark.GRAMMAR_FILENAME, "rb") as f:
+        h.update(f.read())
+    return "parser-" + h.hexdigest()
+
+
+class _ParserPickler(pickle.Pickler):
+    """Pickles lark's parser, which holds a module (its regular-expression module) by reference."""
+
+    def reducer_override(self, obj):
+        if isinstance(obj, types.ModuleType):
+            return importlib.import_module, (obj.__name__,)
+        return NotImplemented
+
+
+# The one parser of this process (and of the workers it forks), from _parser().
+_PARSER = None
+
+
+def _parser(cache_dir):
+    """blark's parser: from the cache when it holds one for this grammar and these versions, else built
+    (and then stored there)."""
+    global _PARSER
+    if _PARSER is None:
+        key = _parser_key() if cache_dir else None
+        _PARSER = _cached_tree(cache_dir, key) if key else None
+        if _PARSER is None:
+            _PARSER = new_parser()
+            if key:
+                buf = io.BytesIO()
+                _ParserPickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(_PARSER)
+                _store(cache_dir, key, buf.getvalue())
+    return _PARSER
 
 
 def _expected_keywords(exc):
@@ -81,7 +136,8 @@ def _read(path):
 
 
 def _cached_tree(cache_dir, key):
-    """The cached tree for `key`, or None. A corrupt cache entry is re-parsed, never trusted."""
+    """The cached object (a tree or the parser) for `key`, or None. A corrupt cache entry is built again,
+    never trusted."""
     if not cache_dir:
         return None
     cached = os.path.join(cache_dir, key + ".pickle")
@@ -106,7 +162,7 @@ def _parse_pickled(path, text):
     """(blark's transformed tree of `text` pickled, None), or (None, the file, line, column and message of
     its first syntax error): plain data, so that it crosses from a worker process as it is cached."""
     try:
-        result = parse_source_code(text, fn=path)
+        result = parse_source_code(text, fn=path, parser=_PARSER)
     except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
         line, col = _end_of(text)
         return None, (path, line, col, f"syntax error: {exc}")
@@ -121,14 +177,15 @@ def default_jobs():
     return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
 
 
-def _parse_misses(misses, jobs):
+def _parse_misses(misses, jobs, cache_dir):
     """{index: _parse_pickled's answer} for the (index, path, text) the cache did not hold. Several, and
     enough text, go to `jobs` forked workers, the longest text first so that no worker is left with a
-    long file at the end; blark's grammar is built once, before the fork."""
+    long file at the end; blark's parser is made once, before the fork."""
+    if misses:
+        _parser(cache_dir)
     if (jobs <= 1 or len(misses) <= 1 or sum(len(m[2]) for m in misses) < _PARALLEL_MIN_CHARS
             or "fork" not in multiprocessing.get_all_start_methods()):
         return {i: _parse_pickled(path, text) for i, path, text in misses}
-    get_parser()
     ordered = sorted(misses, key=lambda m: len(m[2]), reverse=True)
     context = multiprocessing.get_context("fork")
     with concurrent.futures.ProcessPoolExecutor(max_workers=min(jobs, len(misses)), mp_context=context) as pool:
@@ -143,16 +200,16 @@ def parse_files(paths, cache_dir=None, jobs=None):
     for i, path in enumerate(paths):
         try:
             text = _read(path)
-            lexcheck.check(text, path)
+            tree = _cached_tree(cache_dir, _cache_key(text))
+            if tree is None:
+                lexcheck.check(text, path)
         except StError as e:
             results.append(e)
             continue
-        key = _cache_key(text)
-        tree = _cached_tree(cache_dir, key)
         results.append(SourceFile(path, text, tree) if tree is not None else None)
         if tree is None:
             misses.append((i, path, text))
-    parsed = _parse_misses(misses, default_jobs() if jobs is None else jobs)
+    parsed = _parse_misses(misses, default_jobs() if jobs is None else jobs, cache_dir)
     for i, path, text in misses:
         pickled, error = parsed[i]
         if error is not None:
