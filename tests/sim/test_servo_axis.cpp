@@ -607,6 +607,22 @@ TEST(ServoAxisHoming, Mode0StartingOnTheCamOnlyCreeps) {
     EXPECT_FALSE(axis.JobActive());
 }
 
+// Standing right on the cam's edge (where an aborted run can leave the axis), the creep's home point is
+// where it stands: reached before the axis moves, it must still end the run, referenced there.
+TEST(ServoAxisHoming, Mode0StartingOnTheCamEdgeEndsAtOnce) {
+    ServoAxisConfig config;
+    config.startPosition = config.referenceSwitch;
+    ServoAxis axis(config);
+    ASSERT_TRUE(axis.ReferenceSwitch());
+    ASSERT_EQ(axis.Home(Ms(0)), axis_error::kNone);
+    axis.Update(Ms(1));
+    EXPECT_TRUE(axis.Referenced());
+    EXPECT_FALSE(axis.HomingActive());
+    EXPECT_FALSE(axis.JobActive());
+    EXPECT_NEAR(axis.Position(), config.referencePosition, kNear);
+    EXPECT_EQ(axis.Status(), AxisStatus::kInPosition);
+}
+
 TEST(ServoAxisHoming, Mode1LoadsAtTheFirstIndexPulseOffTheCam) {
     ServoAxisConfig config;
     config.homingMode = HomingMode::kSwitchAndIndex;

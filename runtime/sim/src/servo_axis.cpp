@@ -179,6 +179,9 @@ void ServoAxis::Handle(const Event& event) {
                 BrakeFromHere(config_.deceleration);
                 homingStep_ = HomingStep::kCreepBrake;
             }
+            // Reached at a standstill (a run started right on the cam's edge): there is no ramp whose end
+            // would close the step, so it closes now, or the run would stay ACTIVE for ever.
+            if (!trajectory_.Moves()) MotionEnded();
             break;
         case EventKind::kTrajectoryEnd:
             HoldAt(trajectory_.EndPosition());
