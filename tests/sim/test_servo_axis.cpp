@@ -713,6 +713,23 @@ TEST(ServoAxisHoming, InterruptAbortsTheReferenceRun) {
     EXPECT_EQ(axis.Status(), AxisStatus::kStopped);
 }
 
+// An interrupt in the very instant a profile begins finds no speed to brake from; the job must end all the
+// same. From -19.5 the search enters the cam at 10 ms (0.5 units at 10000 units/s^2, 100 units/s) and
+// brakes 10 ms / 0.5 units: standing at -20.5 at 20 ms, where the creep starts.
+TEST(ServoAxisHoming, InterruptAsAProfileBeginsStillEndsTheRun) {
+    for (const double interruptMs : {0.0, 20.0}) {
+        ServoAxisConfig config;
+        config.startPosition = -19.5;
+        ServoAxis axis(config);
+        ASSERT_EQ(axis.Home(Ms(0)), axis_error::kNone);
+        axis.Interrupt(Ms(interruptMs));
+        axis.Update(Ms(interruptMs + 1.0));
+        EXPECT_FALSE(axis.HomingActive()) << interruptMs;
+        EXPECT_FALSE(axis.JobActive()) << interruptMs;
+        EXPECT_EQ(axis.Status(), AxisStatus::kStopped) << interruptMs;
+    }
+}
+
 TEST(ServoAxisHoming, ReferenceRunDropsTheG29Shift) {
     ServoAxis axis;
     ASSERT_EQ(axis.ShiftPosition(Ms(0), 40.0), axis_error::kNone);

@@ -280,6 +280,9 @@ void ServoAxis::BrakeJob() {
     homingStep_ = HomingStep::kNone;
     activity_ = Activity::kBraking;
     BrakeFromHere(jobDeceleration_);
+    // A profile that had only just begun (an abort in the instant a reference run turns to creep) has no
+    // speed to brake from: no ramp will end the job, so it ends here.
+    if (!trajectory_.Moves()) MotionEnded();
 }
 
 void ServoAxis::EndJob(bool interrupted) {
