@@ -30,7 +30,7 @@ struct OpenJob {
     bool supersedes = false;
 };
 
-// PAC_SOAK_TRACE=<from>:<to> in the environment: the soak prints FB_PAC_Axis and its module in every scan
+// PAC_SOAK_TRACE=<from>:<to> in the environment: the soak prints FB_PAC_Axis and its module, and FB_PAC_Ctrl, in every scan
 // of that range, to see how a run came to a violation.
 class TraceWindow {
 public:
@@ -75,7 +75,7 @@ public:
 
 private:
     void CheckAfterScan();
-    void TraceAxis(std::int64_t scan, std::uint32_t control);
+    void Trace(std::int64_t scan, std::uint32_t control);
     // Closes `job` when `fb` shows a final output; a violation when its limit passed first.
     template <class Fb>
     bool Follow(OpenJob& job, const pac::FbInstance<Fb>& fb, const char* name);
