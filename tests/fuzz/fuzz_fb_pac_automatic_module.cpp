@@ -8,7 +8,8 @@
 //   - it writes its module only in the AUTOMATIC statuses 10..19 (InExchange exactly then), else the bytes
 //     stay as the other writer left them, and the received outputs hold;
 //   - what it sends round-trips: FW, N and R read back from the module are the inputs, or, for a value the
-//     field cannot carry, the last value that fitted, with Error: nothing out of range goes out silently;
+//     field cannot carry, the last value that fitted, with Error: nothing out of range goes out silently, and
+//     nothing cut or in the wrong number format (a kept value the layout or format in force cannot carry: 0);
 //   - ErrorID <> 0 exactly when Error, ErrorSource LIBRARY exactly then;
 //   - the received outputs are the reply's FW, N, R in the layout and number format in force.
 #include <cmath>
@@ -24,6 +25,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/sim/automatic_module.hpp"
 #include "pac/st_program.hpp"
+#include "real_bits.hpp"
 
 namespace {
 
@@ -32,11 +34,7 @@ using pac::sim::AutomaticLayout;
 using pac::sim::AutomaticModuleData;
 using pac::sim::Image12;
 
-std::uint32_t BitsOf(float value) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
+using pac::test::BitsOf;
 
 // What the FB should put in the R field, worked out apart from it: IEEE bits, or the value x 1000 as DINT
 // (2.5.3); nothing for NaN, infinity or a scaled value beyond DINT.
@@ -45,6 +43,15 @@ bool RealFits(float value, bool integerMode) {
     if (!integerMode) return true;
     const double scaled = static_cast<double>(value) * 1000.0;
     return scaled >= std::numeric_limits<std::int32_t>::min() && scaled <= std::numeric_limits<std::int32_t>::max();
+}
+
+// The REAL the library makes of a received IEEE pattern (F_PAC_DwordToReal, docs/ieee754.md): the value itself
+// when finite, the largest REAL of its sign for an infinity, 0.0 for a NaN; never a non-finite REAL.
+float FiniteRealOf(std::uint32_t bits) {
+    const float value = pac::test::FloatOf(bits);
+    if (std::isnan(value)) return 0.0f;
+    if (std::isinf(value)) return std::copysign(std::numeric_limits<float>::max(), value);
+    return value;
 }
 
 class AutomaticModuleFuzzRun {
@@ -83,7 +90,7 @@ private:
         }
         if ((bits & 0x08U) != 0) fb.REALREGISTER.value = in_.Real();
         if ((bits & 0x10U) != 0) fb.INTEGERMODE.value = in_.Bit() ? TRUE : FALSE;
-        if ((bits & 0x20U) != 0) fb.LAYOUT.value = static_cast<E_PAC_AUTOLAYOUT>(in_.Below(3));
+        if ((bits & 0x20U) != 0) SetLayoutNumber(in_.Below(3));
         if ((bits & 0x40U) != 0) {  // the other writer of the module (FB_PAC_Axis) leaves its bytes
             for (auto& b : fb.TOPAC.value.table) b = in_.Byte();
         }
@@ -135,7 +142,7 @@ private:
         CheckReceived();
     }
 
-    // What the module carries now against the inputs; `sent_` is the last value of each field that fitted.
+    // What the module carries now against the inputs and the last values that fitted.
     void CheckSent() {
         const auto& fb = module_.Data();
         const AutomaticLayout layout = LayoutInForce();
@@ -143,31 +150,31 @@ private:
         if (onWire.Encode(layout) != ToPac()) Fail("the module's unused bytes are not 0");
         if (onWire.flagWord != fb.FLAGWORD.value) Fail("FW on the module is not FlagWord");
 
-        const std::int32_t n = fb.INTREGISTER.value;
-        const bool intFits = layout == AutomaticLayout::kShiftedWidths || (n >= -32768 && n <= 32767);
-        if (intFits) sentInt_ = n;
+        auto intFitsLayout = [layout](std::int32_t n) {
+            return layout == AutomaticLayout::kShiftedWidths || (n >= -32768 && n <= 32767);
+        };
+        const bool intFits = intFitsLayout(fb.INTREGISTER.value);
+        if (intFits) sentInt_ = fb.INTREGISTER.value;
+        if (!intFitsLayout(sentInt_)) sentInt_ = 0;  // kept from the other layout: 0, never cut to 16 bits
         if (onWire.intRegister != sentInt_) Fail("N on the module is neither IntRegister nor the last that fitted");
 
-        const float r = fb.REALREGISTER.value;
         const bool integerMode = fb.INTEGERMODE.value != 0;
-        const bool realFits = RealFits(r, integerMode);
-        if (realFits) {
-            CheckRealEncoding(onWire.realBits, r, integerMode);
-        } else if (onWire.realBits != sentRealBits_) {
-            Fail("R on the module is neither RealRegister nor the last that fitted");
-        }
-        sentRealBits_ = onWire.realBits;
+        const bool realFits = RealFits(fb.REALREGISTER.value, integerMode);
+        if (realFits) sentReal_ = fb.REALREGISTER.value;
+        if (!RealFits(sentReal_, integerMode)) sentReal_ = 0.0f;  // kept from the other format: 0
+        CheckRealEncoding(onWire.realBits, sentReal_, integerMode);
         if ((fb.ERROR.value != 0) != (!intFits || !realFits)) Fail("Error is not 'a value does not fit its field'");
     }
 
     void CheckRealEncoding(std::uint32_t bits, float r, bool integerMode) {
         if (!integerMode) {
-            if (bits != BitsOf(r)) Fail("R on the module is not RealRegister's IEEE bits");
+            // -0.0 goes out as 16#00000000 (F_PAC_RealToDword, docs/ieee754.md): the controller sees 0 either way.
+            if (bits != (r == 0.0f ? 0U : BitsOf(r))) Fail("R on the module is not the IEEE bits of RealRegister or the last that fitted");
             return;
         }
         const double scaled = static_cast<double>(r) * 1000.0;
         if (std::fabs(static_cast<double>(static_cast<std::int32_t>(bits)) - scaled) > 0.5) {
-            Fail("R on the module is not RealRegister x 1000 to the nearest DINT");
+            Fail("R on the module is not RealRegister or the last that fitted x 1000 to the nearest DINT");
         }
     }
 
@@ -180,7 +187,7 @@ private:
         if (fb.RECEIVEDINTREGISTER.value != wanted.intRegister) Fail("ReceivedIntRegister is not the reply's N");
         const float got = fb.RECEIVEDREALREGISTER.value;
         if (fb.INTEGERMODE.value == 0) {
-            if (BitsOf(got) != wanted.realBits) Fail("ReceivedRealRegister is not the reply's IEEE bits");
+            if (BitsOf(got) != BitsOf(FiniteRealOf(wanted.realBits))) Fail("ReceivedRealRegister is not the reply's REAL");
             return;
         }
         // DINT / 1000 rounded to REAL: within half a REAL step of the exact quotient.
@@ -190,10 +197,20 @@ private:
         }
     }
 
-    // Every Layout but the library's default reads as the widths printed (the FB's ELSE).
+    // Layout as a number: 2 is no E_PAC_AutoLayout value, which C++ may not hold in the enumeration type (the
+    // ST's C holds any). Every number but the library's default reads as the widths printed (the FB's ELSE).
+    void SetLayoutNumber(std::uint32_t number) {
+        static_assert(sizeof module_.Data().LAYOUT.value == sizeof number, "an enumeration is 32 bits here");
+        std::memcpy(&module_.Data().LAYOUT.value, &number, sizeof number);
+    }
+    std::uint32_t LayoutNumber() {
+        std::uint32_t number;
+        std::memcpy(&number, &module_.Data().LAYOUT.value, sizeof number);
+        return number;
+    }
     AutomaticLayout LayoutInForce() {
-        return module_.Data().LAYOUT.value == E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW2_N4 ? AutomaticLayout::kShiftedWidths
-                                                                                     : AutomaticLayout::kAxisWidths;
+        return LayoutNumber() == E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW2_N4 ? AutomaticLayout::kShiftedWidths
+                                                                        : AutomaticLayout::kAxisWidths;
     }
 
     void Fail(const char* rule) {
@@ -203,10 +220,9 @@ private:
     void Trace() {
         const auto& fb = module_.Data();
         const Image12 to = ToPac();
-        std::fprintf(stderr, "scan %lld: OpStatus %u FW %04X N %d R %08X IntMode %d Layout %d | ToPac",
+        std::fprintf(stderr, "scan %lld: OpStatus %u FW %04X N %d R %08X IntMode %d Layout %u | ToPac",
                      static_cast<long long>(plc_.Task().ScanCount()), fb.OPSTATUS.value, fb.FLAGWORD.value,
-                     fb.INTREGISTER.value, BitsOf(fb.REALREGISTER.value), fb.INTEGERMODE.value,
-                     static_cast<int>(fb.LAYOUT.value));
+                     fb.INTREGISTER.value, BitsOf(fb.REALREGISTER.value), fb.INTEGERMODE.value, LayoutNumber());
         for (std::uint8_t b : to) std::fprintf(stderr, " %02X", b);
         std::fprintf(stderr, " | InEx %d Err %d ErrID %04X\n", fb.INEXCHANGE.value, fb.ERROR.value, fb.ERRORID.value);
     }
@@ -214,8 +230,9 @@ private:
     FuzzBytes& in_;
     pac::fuzz::FuzzPlc plc_;
     pac::FbInstance<FB_PAC_AUTOMATICMODULE> module_ = PAC_FB(FB_PAC_AUTOMATICMODULE);
-    std::int32_t sentInt_ = 0;        // the FB's N field starts at 0
-    std::uint32_t sentRealBits_ = 0;  // and its R field
+    // The last values that fitted, which the fields carry in the layout and number format in force; 0 at first.
+    std::int32_t sentInt_ = 0;
+    float sentReal_ = 0.0f;
     bool trace_ = pac::fuzz::TraceWanted();
 };
 
