@@ -61,7 +61,7 @@ private:
         static std::int64_t total = 0;
         return total;
     }
-    static void Print() { std::fprintf(stderr, "scans fuzzed: %lld\n", static_cast<long long>(Total())); }
+    static void Print() { std::fprintf(stderr, "scans run: %lld\n", static_cast<long long>(Total())); }
 };
 
 // The PLC: one task at a cycle of 1..16 ms taken from the input.
