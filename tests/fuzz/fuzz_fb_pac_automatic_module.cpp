@@ -155,14 +155,15 @@ private:
         };
         const bool intFits = intFitsLayout(fb.INTREGISTER.value);
         if (intFits) sentInt_ = fb.INTREGISTER.value;
-        if (!intFitsLayout(sentInt_)) sentInt_ = 0;  // kept from the other layout: 0, never cut to 16 bits
-        if (onWire.intRegister != sentInt_) Fail("N on the module is neither IntRegister nor the last that fitted");
+        // Kept from the other layout, which this one cannot carry: 0, never cut to 16 bits.
+        const std::int32_t n = intFitsLayout(sentInt_) ? sentInt_ : 0;
+        if (onWire.intRegister != n) Fail("N on the module is neither IntRegister nor the last that fitted");
 
         const bool integerMode = fb.INTEGERMODE.value != 0;
         const bool realFits = RealFits(fb.REALREGISTER.value, integerMode);
         if (realFits) sentReal_ = fb.REALREGISTER.value;
-        if (!RealFits(sentReal_, integerMode)) sentReal_ = 0.0f;  // kept from the other format: 0
-        CheckRealEncoding(onWire.realBits, sentReal_, integerMode);
+        // Kept from the other format, which this one cannot carry: 0.
+        CheckRealEncoding(onWire.realBits, RealFits(sentReal_, integerMode) ? sentReal_ : 0.0f, integerMode);
         if ((fb.ERROR.value != 0) != (!intFits || !realFits)) Fail("Error is not 'a value does not fit its field'");
     }
 

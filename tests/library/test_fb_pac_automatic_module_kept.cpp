@@ -2,8 +2,8 @@
 // the layout or the number format changed (Layout, IntegerMode = FB_PAC_Ctrl.IntegerModeActive, which follows a
 // format change of the controller). The field keeps the last value that fitted, in the layout and format in
 // force: never the other layout's value cut to 16 bits, never the other format's bits (manual 2.5.3: the same
-// 32 bits are 640.0 as REAL and 1 076 101 120 / 1000 as DINT x 1000). One that the layout or format in force
-// cannot carry either goes out as 0, with Error. The fuzz target found the cut N (docs/testing.md).
+// 32 bits are 640.0 as REAL and 1 142 947 840 / 1000 as DINT x 1000). One that the layout or format in force
+// cannot carry either goes out as 0, with Error. The fuzz target found both (docs/testing.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -79,6 +79,9 @@ TEST_F(KeptFields, AnRTheNewFormatCannotCarryGoesOutAsZero) {
     // 3.0e6 is a REAL, but 3.0e9 is beyond DINT: in the integer format it cannot be sent at all.
     EXPECT_EQ(Scan(kFw2N4, false, 0, 3.0e6f).realBits, pac::test::BitsOf(3.0e6f));
     EXPECT_EQ(Scan(kFw2N4, true, 0, 3.0e6f).realBits, 0U);
+    ExpectRefused();
+    // It is still the last value that fitted: the REAL format carries it again.
+    EXPECT_EQ(Scan(kFw2N4, false, 0, std::nanf("")).realBits, pac::test::BitsOf(3.0e6f));
     ExpectRefused();
     EXPECT_EQ(Scan(kFw2N4, true, 0, 1.5f).realBits, 1500U);
     EXPECT_FALSE(fb_->ERROR.value);
