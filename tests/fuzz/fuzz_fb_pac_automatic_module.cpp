@@ -33,7 +33,6 @@ using pac::fuzz::FuzzBytes;
 using pac::sim::AutomaticLayout;
 using pac::sim::AutomaticModuleData;
 using pac::sim::Image12;
-
 using pac::test::BitsOf;
 
 // What the FB should put in the R field, worked out apart from it: IEEE bits, or the value x 1000 as DINT

@@ -103,7 +103,7 @@ void SoakPlc::CheckAfterScan() {
 }
 
 void SoakPlc::Trace(std::int64_t scan, std::uint32_t control) {
-    const FB_PAC_AXIS& axis = *axis_.operator->();
+    const FB_PAC_AXIS& axis = axis_.Data();
     std::cout << "scan " << scan << " status " << int{bench_.Controller().OperatingStatus()} << " axis E"
               << int{axis.EXECUTE.value} << " cmd " << axis.COMMAND.value << " pos " << axis.POSITION.value << " A"
               << int{axis.ABORT.value} << " en" << int{axis.ENABLE.value} << " jog" << int{axis.JOGPOSITIVE.value}

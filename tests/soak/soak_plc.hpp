@@ -30,8 +30,8 @@ struct OpenJob {
     bool supersedes = false;
 };
 
-// PAC_SOAK_TRACE=<from>:<to> in the environment: the soak prints FB_PAC_Axis and its module, and FB_PAC_Ctrl, in every scan
-// of that range, to see how a run came to a violation.
+// PAC_SOAK_TRACE=<from>:<to> in the environment: the soak prints FB_PAC_Axis and its module, and FB_PAC_Ctrl,
+// in every scan of that range, to see how a run came to a violation.
 class TraceWindow {
 public:
     TraceWindow();
