@@ -45,6 +45,25 @@ inline TIME ShortTime(FuzzBytes& in) {
     return pac::ToIecTime(std::chrono::milliseconds(in.Byte()));
 }
 
+// The scans every input of this process ran, for the fuzz figures in scans and not only in inputs. A count
+// that outlives the runs because libFuzzer calls the target once per input and ends the process itself;
+// printed when the process exits normally (a timed fuzz run, a corpus replay).
+class ScanTally {
+public:
+    static void Add(std::int64_t scans) {
+        static const bool printAtExit = std::atexit(Print) == 0;
+        (void)printAtExit;
+        Total() += scans;
+    }
+
+private:
+    static std::int64_t& Total() {
+        static std::int64_t total = 0;
+        return total;
+    }
+    static void Print() { std::fprintf(stderr, "scans run: %lld\n", static_cast<long long>(Total())); }
+};
+
 // The PLC: one task at a cycle of 1..16 ms taken from the input.
 class FuzzPlc {
 public:
@@ -60,6 +79,7 @@ public:
         for (int i = 0; i < kMaxInputScans && !in.Exhausted(); ++i) task_.Scan();
         const auto settleScans = kSettleTime / task_.CycleTime() + 1;
         for (std::int64_t i = 0; i < settleScans && busy(); ++i) task_.Scan();
+        ScanTally::Add(task_.ScanCount());
     }
 
 private:

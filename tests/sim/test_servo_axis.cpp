@@ -607,6 +607,22 @@ TEST(ServoAxisHoming, Mode0StartingOnTheCamOnlyCreeps) {
     EXPECT_FALSE(axis.JobActive());
 }
 
+// Standing right on the cam's edge (where an aborted run can leave the axis), the creep's home point is
+// where it stands: reached before the axis moves, it must still end the run, referenced there.
+TEST(ServoAxisHoming, Mode0StartingOnTheCamEdgeEndsAtOnce) {
+    ServoAxisConfig config;
+    config.startPosition = config.referenceSwitch;
+    ServoAxis axis(config);
+    ASSERT_TRUE(axis.ReferenceSwitch());
+    ASSERT_EQ(axis.Home(Ms(0)), axis_error::kNone);
+    axis.Update(Ms(1));
+    EXPECT_TRUE(axis.Referenced());
+    EXPECT_FALSE(axis.HomingActive());
+    EXPECT_FALSE(axis.JobActive());
+    EXPECT_NEAR(axis.Position(), config.referencePosition, kNear);
+    EXPECT_EQ(axis.Status(), AxisStatus::kInPosition);
+}
+
 TEST(ServoAxisHoming, Mode1LoadsAtTheFirstIndexPulseOffTheCam) {
     ServoAxisConfig config;
     config.homingMode = HomingMode::kSwitchAndIndex;
@@ -695,6 +711,23 @@ TEST(ServoAxisHoming, InterruptAbortsTheReferenceRun) {
     EXPECT_FALSE(axis.HomingActive());
     EXPECT_FALSE(axis.Referenced());
     EXPECT_EQ(axis.Status(), AxisStatus::kStopped);
+}
+
+// An interrupt in the very instant a profile begins finds no speed to brake from; the job must end all the
+// same. From -19.5 the search enters the cam at 10 ms (0.5 units at 10000 units/s^2, 100 units/s) and
+// brakes 10 ms / 0.5 units: standing at -20.5 at 20 ms, where the creep starts.
+TEST(ServoAxisHoming, InterruptAsAProfileBeginsStillEndsTheRun) {
+    for (const double interruptMs : {0.0, 20.0}) {
+        ServoAxisConfig config;
+        config.startPosition = -19.5;
+        ServoAxis axis(config);
+        ASSERT_EQ(axis.Home(Ms(0)), axis_error::kNone);
+        axis.Interrupt(Ms(interruptMs));
+        axis.Update(Ms(interruptMs + 1.0));
+        EXPECT_FALSE(axis.HomingActive()) << interruptMs;
+        EXPECT_FALSE(axis.JobActive()) << interruptMs;
+        EXPECT_EQ(axis.Status(), AxisStatus::kStopped) << interruptMs;
+    }
 }
 
 TEST(ServoAxisHoming, ReferenceRunDropsTheG29Shift) {

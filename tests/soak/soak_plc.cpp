@@ -1,5 +1,8 @@
 #include "soak_plc.hpp"
 
+#include <cstdlib>
+#include <iostream>
+
 #include "axis_control_rules.hpp"
 #include "pac/axis_module_bits.hpp"
 #include "pac/iec_time.hpp"
@@ -21,6 +24,14 @@ pac::sim::ModuleLayout SoakLayout() {
 }
 
 }  // namespace
+
+TraceWindow::TraceWindow() {
+    const char* range = std::getenv("PAC_SOAK_TRACE");
+    if (range == nullptr) return;
+    char* colon = nullptr;
+    from_ = std::strtoll(range, &colon, 10);
+    to_ = *colon == ':' ? std::strtoll(colon + 1, nullptr, 10) : from_;
+}
 
 SoakPlc::SoakPlc(const PlcBenchTiming& timing, SoakReport& report)
     : report_(report),
@@ -79,6 +90,7 @@ void SoakPlc::CheckAfterScan() {
     ledger_.Follow(bench_.Controller().Log(), scan);
     const std::uint32_t control =
         pac::sim::ReadDword(bench_.ToPac().Module12(bench_.Bus().Layout().AxisOffset(1)), 0);
+    if (trace_.Covers(scan)) Trace(scan, control);
     if (const char* broken =
             pac::test::AxisControlWordViolation(control, pac::axis_control::kTraverseBits, pac::axis_control::kStart)) {
         report_.Violation(scan, std::string("FB_PAC_Axis control word: ") + broken);
@@ -88,6 +100,17 @@ void SoakPlc::CheckAfterScan() {
     }
     Follow(ctrlJob_, ctrl_, "FB_PAC_Ctrl");
     Follow(axisJob_, axis_, "FB_PAC_Axis");
+}
+
+void SoakPlc::Trace(std::int64_t scan, std::uint32_t control) {
+    const FB_PAC_AXIS& axis = axis_.Data();
+    std::cout << "scan " << scan << " status " << int{bench_.Controller().OperatingStatus()} << " axis E"
+              << int{axis.EXECUTE.value} << " cmd " << axis.COMMAND.value << " pos " << axis.POSITION.value << " A"
+              << int{axis.ABORT.value} << " en" << int{axis.ENABLE.value} << " jog" << int{axis.JOGPOSITIVE.value}
+              << int{axis.JOGNEGATIVE.value} << " state " << axis.STATE.value << " " << pac::test::OutputsOf(axis_)
+              << std::hex << " control 16#" << control << " status 16#" << axis.STATUSWORD.value << std::dec
+              << " actual " << axis.ACTUALPOSITION.value << " | ctrl E" << int{ctrl_->EXECUTE.value} << " request "
+              << ctrl_->REQUEST.value << " state " << ctrl_->STATE.value << " " << pac::test::OutputsOf(ctrl_) << "\n";
 }
 
 template <class Fb>

@@ -30,6 +30,18 @@ struct OpenJob {
     bool supersedes = false;
 };
 
+// PAC_SOAK_TRACE=<from>:<to> in the environment: the soak prints FB_PAC_Axis and its module, and FB_PAC_Ctrl,
+// in every scan of that range, to see how a run came to a violation.
+class TraceWindow {
+public:
+    TraceWindow();
+    bool Covers(std::int64_t scan) const { return scan >= from_ && scan <= to_; }
+
+private:
+    std::int64_t from_ = 1;
+    std::int64_t to_ = 0;
+};
+
 class SoakPlc {
 public:
     static constexpr int kCommandFbs = 2;
@@ -63,6 +75,7 @@ public:
 
 private:
     void CheckAfterScan();
+    void Trace(std::int64_t scan, std::uint32_t control);
     // Closes `job` when `fb` shows a final output; a violation when its limit passed first.
     template <class Fb>
     bool Follow(OpenJob& job, const pac::FbInstance<Fb>& fb, const char* name);
@@ -73,6 +86,7 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
     pac::test::PlcOpenWatch watch_;
+    TraceWindow trace_;
     CommandLedger ledger_;
     std::array<OpenJob, kCommandFbs> cmdJobs_{};
     OpenJob ctrlJob_;

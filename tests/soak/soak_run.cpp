@@ -320,6 +320,10 @@ bool SoakRun::Recover(const std::string& when) {
         return false;
     };
 
+    // A mode request made before the fault ended may still run: a STOP that lands after ONLINE was confirmed
+    // would stop the recovery's own moves (20, not ONLINE). It ends first; the recovery goes from where it left.
+    if (!ScanUntil([&] { return !plc_.CtrlJob().open; }, deadline)) return fail("FB_PAC_Ctrl's request never ended");
+    ctrl->EXECUTE.value = FALSE;
     if (!ScanUntil([&] { return ctrl->READY.value != 0; }, deadline)) return fail("the PA-CONTROL never showed Ready");
     ScanFor(milliseconds(20));  // the first control word after a boot is only the reference for the CTRL edges
     // ONLINE runs and no system error: ONLINE's bit also shows while a malfunction is braking (status 37).

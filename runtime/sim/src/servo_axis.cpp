@@ -179,6 +179,9 @@ void ServoAxis::Handle(const Event& event) {
                 BrakeFromHere(config_.deceleration);
                 homingStep_ = HomingStep::kCreepBrake;
             }
+            // Reached at a standstill (a run started right on the cam's edge): there is no ramp whose end
+            // would close the step, so it closes now, or the run would stay ACTIVE for ever.
+            if (!trajectory_.Moves()) MotionEnded();
             break;
         case EventKind::kTrajectoryEnd:
             HoldAt(trajectory_.EndPosition());
@@ -277,6 +280,9 @@ void ServoAxis::BrakeJob() {
     homingStep_ = HomingStep::kNone;
     activity_ = Activity::kBraking;
     BrakeFromHere(jobDeceleration_);
+    // A profile that had only just begun (an abort in the instant a reference run turns to creep) has no
+    // speed to brake from: no ramp will end the job, so it ends here.
+    if (!trajectory_.Moves()) MotionEnded();
 }
 
 void ServoAxis::EndJob(bool interrupted) {
