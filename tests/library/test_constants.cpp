@@ -40,7 +40,7 @@ std::vector<std::uint32_t> ManualErrorNumbers() {
 std::vector<std::uint32_t> LibraryErrorCodes() {
     std::vector<std::uint32_t> codes;
     for (std::uint32_t code = 0x8001; code <= 0x8015; ++code) codes.push_back(code);
-    for (std::uint32_t code = 0x8020; code <= 0x8021; ++code) codes.push_back(code);
+    for (std::uint32_t code = 0x8020; code <= 0x8022; ++code) codes.push_back(code);
     return codes;
 }
 

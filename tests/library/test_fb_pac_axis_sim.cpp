@@ -43,13 +43,17 @@ using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 namespace ac = pac::axis_control;
 namespace as = pac::axis_status;
+using pac::sim::ActiveForJobs;
 using pac::sim::CmdErrorRestart;
+using pac::sim::NoReferenceAnswer;
 using pac::sim::EnableMode;
 using pac::test::BusTiming;
 
 const pac::test::GvlConstants kGvl;
 const std::uint32_t kErrAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
 const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kErrStopTimeout = kGvl["PAC_LIB_ERR_STOP_TIMEOUT"];
+constexpr std::uint32_t kE525 = pac::sim::AxisModule::kSystemErrorNoReference;
 const std::uint32_t kNoReference = kGvl["PAC_ERR_NO_REFERENCE"];      // 43
 const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];              // 55
 const std::uint32_t kAxisDisplaced = kGvl["PAC_ERR_AXIS_DISPLACED"];  // 56
@@ -185,8 +189,19 @@ private:
 // The PLC: FB_PAC_Ctrl on the CTRL module and one FB_PAC_Axis per axis module of a simulated PA-CONTROL,
 // each axis taking the format in force from FB_PAC_Ctrl as a PLC program wires them.
 
+// A reading of the axis module the manual leaves open (docs/open_points.md): which jobs raise ACTIVE, and how a
+// move of an unreferenced axis is refused.
+struct AxisReading {
+    ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
+    NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
+
+    bool ActiveOnlyWhenTraversing() const { return activeFor == ActiveForJobs::kTraversingOnly; }
+    bool E525() const { return noReference == NoReferenceAnswer::kSystemError525; }
+};
+
 struct BenchOptions {
     BusTiming timing{1, 10, 0};
+    AxisReading reading;
     int axes = 1;
     EnableMode enableMode = EnableMode::kHalt;
     bool referenced = true;  // at power-on
@@ -212,6 +227,8 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     config.axisMachine.enableMode = o.enableMode;
     config.referencedAtPowerOn = o.referenced;
     config.axisModule.cmdErrorRestart = o.cmdErrorRestart;
+    config.axisModule.activeFor = o.reading.activeFor;
+    config.axisModule.noReference = o.reading.noReference;
     return config;
 }
 
@@ -384,16 +401,44 @@ AxisStep S(std::uint32_t control, std::uint32_t status, char output) { return {c
 // ---------------------------------------------------------------------------------------------------
 // Every timing of the FB_PAC_Cmd simulator tests: PLC cycle x PA-CONTROL cycle x latency.
 
-class AxisSimTiming : public ::testing::TestWithParam<BusTiming> {
+struct AxisSimCase {
+    BusTiming timing;
+    AxisReading reading;
+};
+
+std::string Describe(const AxisReading& r) {
+    return std::string(r.ActiveOnlyWhenTraversing() ? "ACTIVE for traversing jobs only" : "ACTIVE for every job") +
+           (r.E525() ? ", unreferenced: E525" : ", unreferenced: CMD error 43");
+}
+
+void PrintTo(const AxisSimCase& c, std::ostream* out) {
+    *out << pac::test::Describe(c.timing) << "; " << Describe(c.reading);
+}
+
+std::string AxisSimCaseName(const ::testing::TestParamInfo<AxisSimCase>& info) {
+    return pac::test::BusTimingName({info.param.timing, info.index});
+}
+
+std::vector<AxisSimCase> OnReading(const AxisReading& reading) {
+    std::vector<AxisSimCase> cases;
+    for (const BusTiming& t : pac::test::StandardBusTimings()) cases.push_back({t, reading});
+    return cases;
+}
+
+class AxisSimTiming : public ::testing::TestWithParam<AxisSimCase> {
 protected:
     BenchOptions Options() const {
         BenchOptions o;
-        o.timing = GetParam();
+        o.timing = GetParam().timing;
+        o.reading = GetParam().reading;
         return o;
     }
-    // Every failure names the bus timing.
+    const AxisReading& Reading() const { return GetParam().reading; }
+    // Every failure names the bus timing and the reading.
     void SetUp() override {
-        trace_ = std::make_unique<::testing::ScopedTrace>(__FILE__, __LINE__, pac::test::Describe(GetParam()));
+        std::ostringstream what;
+        PrintTo(GetParam(), &what);
+        trace_ = std::make_unique<::testing::ScopedTrace>(__FILE__, __LINE__, what.str());
     }
     void TearDown() override { trace_.reset(); }
 
@@ -675,9 +720,25 @@ TEST_P(AxisSimTiming, CmdErrorsAndRecoveryOnBothRestartStyles) {
             const Outcome outcome = bench.Run(1, job);
             EXPECT_TRUE(outcome.Done()) << outcome;
         };
+        // Unreferenced: CMD error 43, or system error E525 as an axis error (the 2.7.2 note), whose number the FB
+        // passes through unchanged; ResetError clears the axis error for the next job.
+        auto expectNoReference = [&] {
+            if (!Reading().E525()) return expectError({kAbsolute, 10.0f}, kNoReference);
+            const Outcome outcome = bench.StartAndWait(1, {kAbsolute, 10.0f});
+            EXPECT_TRUE(outcome.Error()) << outcome;
+            EXPECT_EQ(outcome.ErrorId(), kE525) << outcome;
+            EXPECT_EQ(fb->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM);
+            EXPECT_EQ(fb->AXISERRORNUMBER.value, kE525);
+            EXPECT_FALSE(fb->CMDERROR.value);
+            fb->EXECUTE.value = FALSE;
+            fb->RESETERROR.value = TRUE;
+            ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "E525 reset"));
+            fb->RESETERROR.value = FALSE;
+            bench.Scan();
+        };
         // 43 twice in a row with the same number, then good: G26, which the stale 43 must not fail.
-        expectError({kAbsolute, 10.0f}, kNoReference);
-        expectError({kAbsolute, 10.0f}, kNoReference);
+        expectNoReference();
+        expectNoReference();
         EXPECT_EQ(bench.Position(1), 0.0f);
         expectDone({kSetReferenced, 0.0f});
         EXPECT_FALSE(fb->CMDERROR.value);
@@ -1021,6 +1082,19 @@ TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
     const std::int64_t edge = bench.ScanCount();
     ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kSetPosition) << "the axis is free: Start in the edge scan";
     const pac::test::ProtocolWindow window(bench.Options().timing);
+    if (Reading().ActiveOnlyWhenTraversing()) {
+        // No ACTIVE ever: Done once the controller's answer would have been visible, never before.
+        const int answer = window.Request(bench.Now()).max;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+        EXPECT_TRUE(fb->DONE.value);
+        EXPECT_GE(bench.ScanCount(), edge + answer) << "not before the controller's answer could arrive";
+        EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off with Done";
+        EXPECT_EQ(bench.Position(1), 3.0f);
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        bench.ExpectJobsSeen(1, 1);
+        return;
+    }
     const int takeOver = window.Minimum(bench.Now());
     ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
     EXPECT_EQ(bench.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
@@ -1249,7 +1323,11 @@ std::vector<BusTiming> JitteredSessions() {
 INSTANTIATE_TEST_SUITE_P(JitteredBuses, AxisSimJitter, ::testing::ValuesIn(JitteredSessions()),
                          pac::test::BusTimingName);
 
-INSTANTIATE_TEST_SUITE_P(BusTimings, AxisSimTiming, ::testing::ValuesIn(pac::test::StandardBusTimings()),
-                         pac::test::BusTimingName);
+INSTANTIATE_TEST_SUITE_P(BusTimings, AxisSimTiming, ::testing::ValuesIn(OnReading({})), AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(ActiveWhenTraversing, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kTraversingOnly})), AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(NoReferenceE525, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kEveryJob, NoReferenceAnswer::kSystemError525})),
+                         AxisSimCaseName);
 
 }  // namespace

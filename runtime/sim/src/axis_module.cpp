@@ -158,7 +158,16 @@ void AxisModule::StartEdge(const AxisModuleCommand& command, ServoAxis& axis, co
     if (refusal == 0) {
         cmdError_ = 0;
         pendingCmdError_ = 0;
-        active_ = true;  // taken over: ACTIVE in the same cycle, even for a job that is already complete
+        // Taken over: ACTIVE in the same cycle, even for a job that is already complete, unless this
+        // controller raises it for traversing tasks only.
+        active_ = !(jobComplete_ && config_.activeFor == ActiveForJobs::kTraversingOnly);
+        return;
+    }
+    if (refusal == axis_error::kNoReferencePoint && config_.noReference == NoReferenceAnswer::kSystemError525) {
+        // 2.7.2 note: a system error instead of the command error; the Start clears an earlier CMD error.
+        cmdError_ = 0;
+        pendingCmdError_ = 0;
+        axis.RaiseAxisError(context.now, kSystemErrorNoReference);
         return;
     }
     ShowCmdError(refusal);

@@ -66,8 +66,26 @@ enum class CmdErrorRestart {
     kOneCycleClear,  // the edge cycle shows flag and number 0; a refusal shows from the next cycle on
 };
 
+// Which jobs raise ACTIVE (2.7.4.8: "the control processes a traversing task"), an open reading
+// (docs/open_points.md). A job that does not traverse: G26, G29, delete offset, reset "displaced", a G123 move
+// whose input condition is not met, a move to where the axis stands.
+enum class ActiveForJobs {
+    kEveryJob,        // every job taken over shows ACTIVE for at least its take-over cycle (the default)
+    kTraversingOnly,  // a job complete in its take-over cycle never shows ACTIVE
+};
+
+// How a move of an unreferenced axis is refused, an open reading (docs/open_points.md): CMD error 43 (6.5) or,
+// as the 2.7.2 note says, system error E525 "no reference point", which the module can show only as the axis
+// error bit with its number.
+enum class NoReferenceAnswer {
+    kCmdError43,       // the default
+    kSystemError525,   // no CMD error; axis error 525 until "reset axis error"
+};
+
 struct AxisModuleConfig {
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
+    ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
+    NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
 };
 
 class AxisModule {
@@ -76,6 +94,7 @@ public:
     static constexpr std::uint16_t kInadmissible = 20;  // 6.5 "inadmissible command": no / several traverse
                                                         // bits, a bad G123 combination, Start outside ONLINE
     static constexpr int kDefaultConditionInput = 1;    // 2.7.3.10: input 1 at the start of ONLINE
+    static constexpr std::uint16_t kSystemErrorNoReference = 525;  // E525, NoReferenceAnswer::kSystemError525
 
     explicit AxisModule(AxisModuleConfig config = {});
 
