@@ -861,6 +861,43 @@ TEST_P(AxisSimTiming, AbortMidMoveThenANewJob) {
     bench.ExpectJobsSeen(1, 2);
 }
 
+// A stop lasts as long as the axis brakes: with 50 per mille of the axis parameter acceleration (500 units/s²)
+// from 600 units/s the axis brakes for 1.2 s, longer than Timeout (1 s). The job ends when ACTIVE has fallen,
+// and StopTimeout shorter than the braking ends it with its own error while the axis still moves.
+TEST_P(AxisSimTiming, StopEndsWhenActiveFallsAndStopTimeoutBoundsIt) {
+    for (const bool bounded : {false, true}) {
+        SCOPED_TRACE(bounded ? "StopTimeout 500 ms" : "StopTimeout default");
+        AxisSimBench bench(Options());
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        if (bounded) fb->STOPTIMEOUT.value = pac::ToIecTime(milliseconds(500));
+        const Outcome started = bench.StartAndWait(1, {kAbsolute, 5000.0f, 1000, 50}, 100);
+        ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Motion(1).ActualSpeed() >= 600.0; }, 1500, "600 units/s"));
+        fb->ABORT.value = TRUE;
+        const nanoseconds abortAt = bench.Now();
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 3000, "final output"));
+        if (bounded) {
+            EXPECT_TRUE(fb->ERROR.value);
+            EXPECT_EQ(fb->ERRORID.value, kErrStopTimeout);
+            EXPECT_TRUE(fb->ACTIVE.value) << "the axis still brakes";
+            EXPECT_TRUE(bench.Motion(1).Moving());
+            ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1500, "the axis stands"));
+        } else {
+            EXPECT_TRUE(fb->COMMANDABORTED.value);
+            EXPECT_GT(bench.Now() - abortAt, milliseconds(1000)) << "longer than Timeout";
+            EXPECT_FALSE(fb->ACTIVE.value);
+            EXPECT_FALSE(bench.Motion(1).Moving());
+        }
+        fb->ABORT.value = FALSE;
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        const Outcome next = bench.Run(1, {kRelative, -10.0f});
+        EXPECT_TRUE(next.Done()) << next;
+        bench.ExpectJobsSeen(1, 2);
+    }
+}
+
 TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
     AxisSimBench bench(Options());
     bench.GoOnline();
@@ -1216,6 +1253,40 @@ TEST(AxisSimTakeOverBound, GoodJobAfterARefusalMayTakeLongerThanTwiceTheFirstTak
     EXPECT_EQ(bench.Position(1), 10.0f);
     bench.ExpectJobsSeen(1, 3);
 }
+
+// ---- Start low long enough before a take-over was measured -----------------------------------------------
+
+// The first job after a PLC start is aborted in the scan after its Start: nothing measured yet. On the slow
+// timings of the grid the controller's answer to that Start (ACTIVE, then its fall) comes long after 10 ms; had
+// the FB counted the axis free after Start had been low for the update time, the next Start would reach the
+// controller while it still processes the old job (the edge lost, 2.7.3.2) and the old job's ACTIVE would pass
+// for the new job's take-over.
+class AxisSimSlowStart : public ::testing::TestWithParam<BusTiming> {};
+
+TEST_P(AxisSimSlowStart, LateActiveOfAnAbortedFirstJobIsNotTheNextJobsTakeOver) {
+    BenchOptions o;
+    o.timing = GetParam();
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.SetJob(1, {kAbsolute, 400.0f});
+    fb->EXECUTE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 100, "Start"));
+    fb->ABORT.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1000, "the first job aborted"));
+    EXPECT_TRUE(fb->COMMANDABORTED.value);
+    fb->ABORT.value = FALSE;
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
+    EXPECT_TRUE(next.Done()) << next;
+    EXPECT_EQ(bench.Position(1), 50.0f) << "the second job ran";
+    bench.ExpectJobsSeen(1, 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(SlowBuses, AxisSimSlowStart,
+                         ::testing::ValuesIn(pac::test::BusTimingGrid({5, 10}, {3, 10}, {2, 3})),
+                         pac::test::BusTimingName);
 
 // ---- jittered buses --------------------------------------------------------------------------------------
 
