@@ -343,6 +343,54 @@ TEST_F(AxisModuleSequences, RelativeTraversingInteger_2_7_9_3) {
     Run(RelativeTraversing());
 }
 
+// The readings the manual leaves open (docs/open_points.md), as module settings.
+class AxisModuleActiveForTraversingOnly : public AxisModuleBench {
+protected:
+    AxisModuleActiveForTraversingOnly()
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kTraversingOnly}) {}
+};
+
+TEST_F(AxisModuleActiveForTraversingOnly, JobsThatDoNotTraverseNeverShowActiveButTraversesDo) {
+    // G29 to 5: carried out in the take-over cycle, no ACTIVE; a refused move before it left CMD error 65, which
+    // the G29's Start clears (2.7.4.14).
+    Run({
+        {kOn, kOnReferenced, 0, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnReferenced | as::kCmdError, 65, 0, 0.0},
+    });
+    toPac_.position = EncodeModulePosition(20000.0, integer_);
+    Step(kOn);
+    Run({
+        {kOn | ac::kSetPosition | ac::kStart, kOnReferenced, 0, 0, 5.0},
+        {kOn | ac::kSetPosition, kOnReferenced, 0, 0, 5.0},
+        {kOn, kOnReferenced, 0, 0, 5.0},
+    });
+    // A move does: ACTIVE from its take-over until it is complete and Start is 0.
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
+    const AxisModuleReply end = StepUntilClear(kOn | ac::kMoveAbsolute, as::kActive);
+    EXPECT_EQ(DecodeModulePosition(end.position, integer_), 105.0);
+}
+
+class AxisModuleNoReferenceE525 : public AxisModuleBench {
+protected:
+    AxisModuleNoReferenceE525()
+        : AxisModuleBench(ServoAxisConfig{}, AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                              NoReferenceAnswer::kSystemError525}) {}
+};
+
+TEST_F(AxisModuleNoReferenceE525, MoveOfAnUnreferencedAxisIsSystemErrorE525UntilReset) {
+    toPac_.position = EncodeModulePosition(10.0, integer_);
+    Step(kOn);
+    const AxisModuleReply refused = Step(kOn | ac::kMoveAbsolute | ac::kStart);
+    EXPECT_EQ(refused.cmdError, 0) << "no CMD error";
+    EXPECT_EQ(refused.axisError, AxisModule::kSystemErrorNoReference);
+    EXPECT_EQ(refused.status & (as::kActive | as::kCmdError | as::kAxisError), as::kAxisError);
+    EXPECT_EQ(Step(kOn).axisError, AxisModule::kSystemErrorNoReference) << "kept until reset";
+    const AxisModuleReply reset = Step(kOn | ac::kResetAxisError);
+    EXPECT_EQ(reset.axisError, 0);
+    EXPECT_EQ(reset.status & as::kAxisError, 0u);
+}
+
 class AxisModuleLimitSwitch : public AxisModuleBench {
 protected:
     static ServoAxisConfig Config() {
