@@ -45,6 +45,7 @@ namespace ac = pac::axis_control;
 namespace as = pac::axis_status;
 using pac::sim::ActiveForJobs;
 using pac::sim::CmdErrorRestart;
+using pac::sim::InterruptedTraverse;
 using pac::sim::NoReferenceAnswer;
 using pac::sim::EnableMode;
 using pac::test::BusTiming;
@@ -194,7 +195,9 @@ private:
 struct AxisReading {
     ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
     NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
+    InterruptedTraverse interrupted = InterruptedTraverse::kEnds;
 
+    bool ContinuesAfterAxisOn() const { return interrupted == InterruptedTraverse::kContinuesAfterAxisOn; }
     bool ActiveOnlyWhenTraversing() const { return activeFor == ActiveForJobs::kTraversingOnly; }
     bool E525() const { return noReference == NoReferenceAnswer::kSystemError525; }
 };
@@ -229,6 +232,7 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     config.axisModule.cmdErrorRestart = o.cmdErrorRestart;
     config.axisModule.activeFor = o.reading.activeFor;
     config.axisModule.noReference = o.reading.noReference;
+    config.axisModule.interruptedTraverse = o.reading.interrupted;
     return config;
 }
 
@@ -408,7 +412,8 @@ struct AxisSimCase {
 
 std::string Describe(const AxisReading& r) {
     return std::string(r.ActiveOnlyWhenTraversing() ? "ACTIVE for traversing jobs only" : "ACTIVE for every job") +
-           (r.E525() ? ", unreferenced: E525" : ", unreferenced: CMD error 43");
+           (r.E525() ? ", unreferenced: E525" : ", unreferenced: CMD error 43") +
+           (r.ContinuesAfterAxisOn() ? ", interrupted traverse continued after Axis ON" : "");
 }
 
 void PrintTo(const AxisSimCase& c, std::ostream* out) {
@@ -916,6 +921,19 @@ TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
     fb->EXECUTE.value = FALSE;
     fb->ENABLE.value = TRUE;
     ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    if (Reading().ContinuesAfterAxisOn()) {
+        // The controller continues the aborted move by itself (2.7.2 note): the FB shows it, without a job.
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->ACTIVEWITHOUTJOB.value != 0; }, 200, "ActiveWithoutJob"));
+        EXPECT_FALSE(fb->BUSY.value);
+        EXPECT_EQ(bench.Control(1), kOn) << "nothing sent for it";
+        ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1000, "the continued move's end"));
+        EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
+        EXPECT_EQ(bench.Position(1), 400.0f) << "at the aborted job's target";
+    } else {
+        bench.ScanMs(100);
+        EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
+        EXPECT_EQ(bench.Position(1), stoppedAt) << "the aborted move stays ended";
+    }
     const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
     EXPECT_TRUE(next.Done()) << next;
     EXPECT_EQ(bench.Position(1), 50.0f);
@@ -1397,6 +1415,10 @@ INSTANTIATE_TEST_SUITE_P(JitteredBuses, AxisSimJitter, ::testing::ValuesIn(Jitte
 INSTANTIATE_TEST_SUITE_P(BusTimings, AxisSimTiming, ::testing::ValuesIn(OnReading({})), AxisSimCaseName);
 INSTANTIATE_TEST_SUITE_P(ActiveWhenTraversing, AxisSimTiming,
                          ::testing::ValuesIn(OnReading({ActiveForJobs::kTraversingOnly})), AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(ContinuedAfterAxisOn, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kEveryJob, NoReferenceAnswer::kCmdError43,
+                                                        InterruptedTraverse::kContinuesAfterAxisOn})),
+                         AxisSimCaseName);
 INSTANTIATE_TEST_SUITE_P(NoReferenceE525, AxisSimTiming,
                          ::testing::ValuesIn(OnReading({ActiveForJobs::kEveryJob, NoReferenceAnswer::kSystemError525})),
                          AxisSimCaseName);

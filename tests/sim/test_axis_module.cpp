@@ -353,12 +353,13 @@ protected:
 TEST_F(AxisModuleActiveForTraversingOnly, JobsThatDoNotTraverseNeverShowActiveButTraversesDo) {
     // G29 to 5: carried out in the take-over cycle, no ACTIVE; a refused move before it left CMD error 65, which
     // the G29's Start clears (2.7.4.14).
+    toPac_.position = EncodeModulePosition(20000.0, integer_);  // beyond the traverse range: 65
     Run({
         {kOn, kOnReferenced, 0, 0, 0.0},
         {kOn | ac::kMoveAbsolute | ac::kStart, kOnReferenced | as::kCmdError, 65, 0, 0.0},
+        {kOn, kOnReferenced | as::kCmdError, 65, 0, 0.0},
     });
-    toPac_.position = EncodeModulePosition(20000.0, integer_);
-    Step(kOn);
+    toPac_.position = EncodeModulePosition(5.0, integer_);
     Run({
         {kOn | ac::kSetPosition | ac::kStart, kOnReferenced, 0, 0, 5.0},
         {kOn | ac::kSetPosition, kOnReferenced, 0, 0, 5.0},
@@ -369,6 +370,44 @@ TEST_F(AxisModuleActiveForTraversingOnly, JobsThatDoNotTraverseNeverShowActiveBu
     EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
     const AxisModuleReply end = StepUntilClear(kOn | ac::kMoveAbsolute, as::kActive);
     EXPECT_EQ(DecodeModulePosition(end.position, integer_), 105.0);
+}
+
+class AxisModuleContinuesAfterAxisOn : public AxisModuleBench {
+protected:
+    AxisModuleContinuesAfterAxisOn()
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                         NoReferenceAnswer::kCmdError43,
+                                                         InterruptedTraverse::kContinuesAfterAxisOn}) {}
+};
+
+TEST_F(AxisModuleContinuesAfterAxisOn, MoveInterruptedByAxisOffGoesOnToItsTargetAfterAxisOn) {
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    Step(kOn);
+    EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
+    for (int i = 0; i < 5; ++i) Step(kOn | ac::kMoveAbsolute);
+    // Axis ON 0 and the traverse bit removed together, as FB_PAC_Axis does when Enable falls.
+    const AxisModuleReply stopped = StepUntilClear(0, as::kActive);
+    const double stoppedAt = DecodeModulePosition(stopped.position, integer_);
+    EXPECT_LT(stoppedAt, 105.0);
+    EXPECT_EQ(Step(0).status & as::kActive, 0u) << "nothing runs while the axis is off";
+    // Axis ON again, no traverse bit, no Start: the controller continues by itself.
+    EXPECT_EQ(Step(kOn).status & as::kActive, as::kActive);
+    const AxisModuleReply end = StepUntilClear(kOn, as::kActive);
+    EXPECT_EQ(DecodeModulePosition(end.position, integer_), 105.0);
+    EXPECT_EQ(Step(kOn).status & as::kActive, 0u) << "continued once";
+}
+
+TEST_F(AxisModuleSequences, MoveInterruptedByAxisOffStaysEndedByDefault) {
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    Step(kOn);
+    Step(kOn | ac::kMoveAbsolute | ac::kStart);
+    for (int i = 0; i < 5; ++i) Step(kOn | ac::kMoveAbsolute);
+    const AxisModuleReply stopped = StepUntilClear(0, as::kActive);
+    for (int i = 0; i < 20; ++i) {
+        const AxisModuleReply r = Step(kOn);
+        EXPECT_EQ(r.status & as::kActive, 0u);
+        EXPECT_EQ(r.position, stopped.position);
+    }
 }
 
 class AxisModuleNoReferenceE525 : public AxisModuleBench {

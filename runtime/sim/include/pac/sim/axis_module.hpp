@@ -82,10 +82,19 @@ enum class NoReferenceAnswer {
     kSystemError525,   // no CMD error; axis error 525 until "reset axis error"
 };
 
+// What becomes of a traverse interrupted by Axis ON = 0 (2.7.2 note: "continued after the axis-ON function
+// according to axis parameter 'switch on traverse mode'"), an open reading (docs/open_points.md).
+enum class InterruptedTraverse {
+    kEnds,                   // the job ends interrupted (HALT); the default
+    kContinuesAfterAxisOn,   // a move's target is approached again by itself once the drive is enabled again in
+                             // ONLINE proper, whatever the traverse bit says (the master removed it meanwhile)
+};
+
 struct AxisModuleConfig {
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
     ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
     NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
+    InterruptedTraverse interruptedTraverse = InterruptedTraverse::kEnds;
 };
 
 class AxisModule {
@@ -131,6 +140,7 @@ private:
     void StartEdge(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     std::uint16_t TakeOver(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     bool ConditionHolds(const AxisModuleContext& context) const;
+    void ContinueInterruptedTraverse(ServoAxis& axis, const AxisModuleContext& context);
     void ShowCmdError(std::uint16_t number);
 
     AxisModuleConfig config_;
@@ -141,6 +151,10 @@ private:
     std::uint32_t job_ = 0;          // the traverse bit of the job taken over; 0: none
     bool jobComplete_ = true;
     bool interrupted_ = false;       // the module has interrupted the job (bit removed, G123)
+    bool continued_ = false;         // the job is an interrupted traverse continued by the controller itself
+    bool toContinue_ = false;        // kContinuesAfterAxisOn: a move was interrupted by Axis ON = 0
+    double target_ = 0.0;            // the target of the last move taken over
+    Dynamics dynamics_{0.0, 0.0, 0.0};
     Condition condition_ = Condition::kNone;
     bool active_ = false;
     bool stoppedByG123_ = false;
