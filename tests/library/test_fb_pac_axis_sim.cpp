@@ -209,6 +209,7 @@ struct BenchOptions {
     EnableMode enableMode = EnableMode::kHalt;
     bool referenced = true;  // at power-on
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
+    pac::sim::SpeedChange speedChange = pac::sim::SpeedChange::kNotWhileTraversing;  // the axis type (2.7.6)
 };
 
 struct Job {
@@ -233,6 +234,7 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     config.axisModule.activeFor = o.reading.activeFor;
     config.axisModule.noReference = o.reading.noReference;
     config.axisModule.interruptedTraverse = o.reading.interrupted;
+    config.axisModule.speedChange = o.speedChange;
     return config;
 }
 
@@ -900,6 +902,70 @@ TEST_P(AxisSimTiming, StopEndsWhenActiveFallsAndStopTimeoutBoundsIt) {
         const Outcome next = bench.Run(1, {kRelative, -10.0f});
         EXPECT_TRUE(next.Done()) << next;
         bench.ExpectJobsSeen(1, 2);
+    }
+}
+
+// 2.7.6: a new speed while a move runs, on an axis type that takes it (the move arrives ten times sooner), and
+// refused with 16#8023 where the FB is told the axis type cannot, or no move runs (the move unchanged).
+TEST_P(AxisSimTiming, SpeedChangeDuringAMoveWhereTheAxisTypeAllowsIt) {
+    const auto kNoChange = kGvl["PAC_LIB_ERR_NO_DYNAMICS_CHANGE"];
+    for (const bool changeable : {true, false}) {
+        SCOPED_TRACE(changeable ? "axis type with speed change" : "axis type without");
+        BenchOptions o = Options();
+        o.speedChange = changeable ? pac::sim::SpeedChange::kWhileTraversing : pac::sim::SpeedChange::kNotWhileTraversing;
+        AxisSimBench bench(o);
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        fb->DYNAMICSCHANGEABLE.value = changeable ? TRUE : FALSE;
+        fb->VELOCITY.value = 500;
+        fb->CHANGEDYNAMICS.value = TRUE;
+        bench.Scan();
+        EXPECT_TRUE(fb->CHANGEREFUSED.value) << "no move runs";
+        EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange);
+        fb->CHANGEDYNAMICS.value = FALSE;
+        bench.Scan();
+        EXPECT_FALSE(fb->CHANGEREFUSED.value);
+        const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 100, 1000}, 100);
+        ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 10.0f; }, 300, "moving at 100 units/s"));
+        const nanoseconds changeAt = bench.Now();
+        fb->VELOCITY.value = 0;
+        fb->CHANGEDYNAMICS.value = TRUE;
+        bench.Scan();
+        fb->CHANGEDYNAMICS.value = FALSE;
+        if (changeable) {
+            EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_VELOCITY"]);
+            bench.Scan();
+            fb->VELOCITY.value = 1000;
+            fb->ACCELERATION.value = 0;
+            fb->CHANGEDYNAMICS.value = TRUE;
+            bench.Scan();
+            EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"]);
+            fb->CHANGEDYNAMICS.value = FALSE;
+            bench.Scan();
+            fb->ACCELERATION.value = 1000;
+            fb->CHANGEDYNAMICS.value = TRUE;
+            bench.Scan();
+            EXPECT_TRUE(fb->DYNAMICSCHANGED.value);
+            EXPECT_FALSE(fb->CHANGEREFUSED.value);
+            EXPECT_EQ(bench.Control(1), kOn | ac::kMoveAbsolute) << "the job's bits as they were, no Start";
+        } else {
+            EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange) << "the FB knows the axis type cannot";
+        }
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 4000, "final output"));
+        EXPECT_TRUE(fb->DONE.value);
+        EXPECT_EQ(bench.Position(1), 300.0f);
+        const auto took = bench.Now() - changeAt;
+        if (changeable) {
+            EXPECT_LT(took, milliseconds(500)) << "about 290 units at 1000 units/s";
+        } else {
+            EXPECT_GT(took, milliseconds(2500)) << "about 290 units at 100 units/s";
+        }
+        fb->CHANGEDYNAMICS.value = FALSE;
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        EXPECT_FALSE(fb->DYNAMICSCHANGED.value);
+        bench.ExpectJobsSeen(1, 1);
     }
 }
 

@@ -410,6 +410,43 @@ TEST_F(AxisModuleSequences, MoveInterruptedByAxisOffStaysEndedByDefault) {
     }
 }
 
+class AxisModuleSpeedChange : public AxisModuleBench {
+protected:
+    explicit AxisModuleSpeedChange(SpeedChange change = SpeedChange::kWhileTraversing)
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                         NoReferenceAnswer::kCmdError43, InterruptedTraverse::kEnds,
+                                                         change}) {}
+    // A move to 1000 at 100 per mille (100 units/s); at 0.2 s the speed field goes to 1000 per mille. Returns the
+    // cycles from the change to the end of the job.
+    int MoveWithSpeedChange() {
+        toPac_.position = EncodeModulePosition(1000.0, integer_);
+        toPac_.speedPerMille = 100;
+        Step(kOn);
+        Step(kOn | ac::kMoveAbsolute | ac::kStart);
+        for (int i = 0; i < 20; ++i) Step(kOn | ac::kMoveAbsolute);
+        EXPECT_NEAR(axis_.ActualSpeed(), 100.0, 1e-6);
+        toPac_.speedPerMille = 1000;
+        int cycles = 0;
+        while ((Step(kOn | ac::kMoveAbsolute).status & as::kActive) != 0 && cycles < 2000) ++cycles;
+        EXPECT_EQ(axis_.Position(), 1000.0) << "at the same target";
+        return cycles;
+    }
+};
+
+TEST_F(AxisModuleSpeedChange, NewSpeedDuringAMoveAppliesWhereTheAxisTypeAllowsIt) {
+    // 980 units left at 100 units/s: ramp 0.09 s to 1000 units/s, about 0.98 s in all, against 9.8 s.
+    EXPECT_LT(MoveWithSpeedChange(), 110);
+}
+
+class AxisModuleNoSpeedChange : public AxisModuleSpeedChange {
+protected:
+    AxisModuleNoSpeedChange() : AxisModuleSpeedChange(SpeedChange::kNotWhileTraversing) {}
+};
+
+TEST_F(AxisModuleNoSpeedChange, NewSpeedDuringAMoveIsIgnoredByOtherAxisTypes) {
+    EXPECT_GT(MoveWithSpeedChange(), 970);
+}
+
 class AxisModuleNoReferenceE525 : public AxisModuleBench {
 protected:
     AxisModuleNoReferenceE525()

@@ -105,6 +105,7 @@ void AxisModule::Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleCo
     FollowMode(axis, context);
     if (context.service != AxisModuleService::kReportOnly) ApplyDrive(control, axis, context);
     FollowJob(control, axis, context);
+    FollowDynamics(command, axis, context);
     ContinueInterruptedTraverse(axis, context);
     // 2.7.4.8: ACTIVE falls at the earliest when the job is complete and Start is 0 again.
     if (active_ && jobComplete_ && (control & kStart) == 0) active_ = false;
@@ -230,6 +231,8 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     toContinue_ = false;
     target_ = axis.Target();
     dynamics_ = dynamics;
+    speedPerMille_ = command.speedPerMille;
+    accelerationPerMille_ = command.accelerationPerMille;
     condition_ = condition;
     if (condition != Condition::kNone) {
         stoppedByG123_ = false;  // bit 11 is about the last job with G123
@@ -242,6 +245,17 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     }
     jobComplete_ = !axis.JobActive();
     return 0;
+}
+
+void AxisModule::FollowDynamics(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context) {
+    if (config_.speedChange != SpeedChange::kWhileTraversing || !JobRunning() || interrupted_ || job_ == kHome) return;
+    if (command.speedPerMille == speedPerMille_ && command.accelerationPerMille == accelerationPerMille_) return;
+    speedPerMille_ = command.speedPerMille;
+    accelerationPerMille_ = command.accelerationPerMille;
+    // Values outside 1..1000 / 1..65535 are ignored: the move goes on as it was (no answer channel but the
+    // CMD error, which belongs to Start commands, 2.7.4.14).
+    const auto dynamics = ScaledDynamics(axis.Config(), speedPerMille_, accelerationPerMille_);
+    if (dynamics && axis.ChangeDynamics(context.now, *dynamics)) dynamics_ = *dynamics;
 }
 
 void AxisModule::ContinueInterruptedTraverse(ServoAxis& axis, const AxisModuleContext& context) {

@@ -90,11 +90,20 @@ enum class InterruptedTraverse {
                              // ONLINE proper, whatever the traverse bit says (the master removed it meanwhile)
 };
 
+// Whether the axis type changes speed and ramps while it traverses (2.7.2 note: "not possible for all axes
+// types", only PA-CONTROL MP, LV-servoTEC, flexmoTEC, intelliMOT, dunMOT; 2.7.6 names PLS-MP, servoTEC, linMOT,
+// intelliMOT). Where it can, new per-mille values in bytes 4..7 during a move or jog apply at once.
+enum class SpeedChange {
+    kNotWhileTraversing,  // the values are taken with Start only (the default)
+    kWhileTraversing,
+};
+
 struct AxisModuleConfig {
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
     ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
     NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
     InterruptedTraverse interruptedTraverse = InterruptedTraverse::kEnds;
+    SpeedChange speedChange = SpeedChange::kNotWhileTraversing;
 };
 
 class AxisModule {
@@ -141,6 +150,7 @@ private:
     std::uint16_t TakeOver(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     bool ConditionHolds(const AxisModuleContext& context) const;
     void ContinueInterruptedTraverse(ServoAxis& axis, const AxisModuleContext& context);
+    void FollowDynamics(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     void ShowCmdError(std::uint16_t number);
 
     AxisModuleConfig config_;
@@ -155,6 +165,8 @@ private:
     bool toContinue_ = false;        // kContinuesAfterAxisOn: a move was interrupted by Axis ON = 0
     double target_ = 0.0;            // the target of the last move taken over
     Dynamics dynamics_{0.0, 0.0, 0.0};
+    std::uint16_t speedPerMille_ = 0;         // the per-mille values in force for the job
+    std::uint16_t accelerationPerMille_ = 0;
     Condition condition_ = Condition::kNone;
     bool active_ = false;
     bool stoppedByG123_ = false;
