@@ -1191,6 +1191,24 @@ TEST_P(AxisSimTiming, G123StopsTheMoveWhenTheInputDrops) {
     bench.ExpectJobsSeen(1, 3);
 }
 
+// A reference run in the homing mode that loads the reference the next time the switch is actuated, without
+// moving: complete in its take-over cycle, so on a controller that shows ACTIVE for traversing tasks only it
+// has no ACTIVE either, and is Done all the same.
+TEST_P(AxisSimTiming, ReferenceRunThatLoadsOnTheSwitchWithoutMoving) {
+    BenchOptions o = Options();
+    o.referenced = false;
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    pac::sim::ServoAxisConfig config = bench.Motion(1).Config();
+    config.homingMode = pac::sim::HomingMode::kLoadOnSwitch;
+    bench.Motion(1).SetConfig(bench.Now(), config);
+    const Outcome home = bench.Run(1, {kHome});
+    EXPECT_TRUE(home.Done()) << home;
+    EXPECT_EQ(bench.Position(1), 0.0f) << "no move";
+    EXPECT_TRUE(bench.Motion(1).HomingArmed());
+    bench.ExpectJobsSeen(1, 1);
+}
+
 // ---- the FB adds no scan: an instant job at the protocol minimum ---------------------------------------
 
 TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
