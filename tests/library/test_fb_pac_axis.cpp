@@ -60,6 +60,11 @@ constexpr int kTimeoutScans = 20;  // Timeout in the tests, at 1 ms per scan
 // has been read by at least one controller cycle, so Start and the reset bit must have been 0 that long
 // before the FB can be sure the PA-CONTROL has seen them 0 (and sees the next rise as an edge).
 constexpr int kPacUpdateScans = 10;
+// Before it has measured a take-over the FB assumes the longest one the library is made for: 3 scans of bus
+// latency each way, a scan, and the update time (FB_PAC_Axis.md); Start must have been 0 that long plus the
+// update time before the first Start after a restart.
+constexpr int kAssumedTakeoverScans = 3 + 3 + 1 + kPacUpdateScans;
+constexpr int kStartLowAfterRestartScans = kAssumedTakeoverScans + kPacUpdateScans;
 constexpr BYTE kOnline = 31;  // operating status (2.4.2)
 
 std::uint32_t TraverseBits(std::uint32_t control) { return control & ctrl::kTraverseBits; }
@@ -160,8 +165,9 @@ protected:
     bool StartBit() const { return (ControlWord() & ctrl::kStart) != 0; }
     std::uint32_t Traverse() const { return TraverseBits(ControlWord()); }
     int RoundTrip() const { return outLatency_ + inLatency_ + 1; }  // scans from writing to seeing the answer
-    // Long enough for the FB to count the axis as free after a (re)start: Start 0 for the update time.
-    void Settle() { Cycle(RoundTrip() + 2 + kPacUpdateScans); }
+    // Long enough for the FB to count the axis as free after a (re)start: Start 0 for the assumed take-over
+    // plus the update time.
+    void Settle() { Cycle(RoundTrip() + 2 + kStartLowAfterRestartScans); }
 
     pac::FbInstance<FB_PAC_AXIS> fb_ = PAC_FB(FB_PAC_AXIS);
     pac::test::PlcOpenChecker rules_{"FB_PAC_Axis"};
@@ -417,18 +423,20 @@ INSTANTIATE_TEST_SUITE_P(OutIn, FbPacAxisLatency, ::testing::Combine(::testing::
                                     std::to_string(std::get<1>(info.param));
                          });
 
-TEST_F(FbPacAxis, StartWaitsForTheUpdateTimeAfterARestart) {
-    // The PA-CONTROL may still see a Start from before a PLC restart: Start goes out once it has been 0 on the
-    // wire for the PA-CONTROL's longest update time, so the PA-CONTROL has seen it 0 and sees a new edge.
+TEST_F(FbPacAxis, StartWaitsForTheAssumedTakeOverAfterARestart) {
+    // The PA-CONTROL may still see a Start from before a PLC restart, and an answer to it may still be on its
+    // way: Start goes out once it has been 0 on the wire for the longest take-over the FB assumes before it
+    // measured one, plus the update time, so the PA-CONTROL has seen it 0 and sees a new edge.
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));  // longer than the wait
     SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
     Execute(true);
-    for (int i = 0; i < kPacUpdateScans; ++i) {
+    for (int i = 0; i < kStartLowAfterRestartScans; ++i) {
         Cycle(1);
         EXPECT_FALSE(StartBit()) << "scan " << task_.ScanCount();
         EXPECT_TRUE(Busy());
     }
     Cycle(1);
-    EXPECT_TRUE(StartBit()) << "0 since the first scan, seen from the second: 10 ms at scan 11";
+    EXPECT_TRUE(StartBit()) << "0 since the first scan, seen from the second: 27 ms at scan 28";
 }
 
 TEST_F(FbPacAxis, DoneShowsForExactlyOneScanWhenExecuteFellEarly) {
@@ -727,7 +735,9 @@ TEST_F(FbPacAxis, ResetWithoutAnAxisErrorIsOneScan) {
 // the axis to be free, before the take-over, and while it stops after Abort; Abort in those waits ends it with
 // CommandAborted. A CMD error with number 0 is reported as 16#8008, so that Error never comes with ErrorID 0.
 
-TEST_F(FbPacAxis, AxisErrorBeforeTheTakeOverIsAnError) {
+// An axis error that comes before the take-over is the controller's answer to the Start (E525 "no reference
+// point", 2.7.2 note): the job ends with its number unchanged, as a system error number.
+TEST_F(FbPacAxis, AxisErrorBeforeTheTakeOverIsAnErrorWithItsNumber) {
     Settle();
     axis_->Mute(true);  // the Start edge gets no answer
     SetJob(E_PAC_AXISCOMMAND__PAC_AX_HOME);
@@ -738,7 +748,8 @@ TEST_F(FbPacAxis, AxisErrorBeforeTheTakeOverIsAnError) {
     axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
     EXPECT_TRUE(Error());
-    EXPECT_EQ(fb_->ERRORID.value, kErrAxisError);
+    EXPECT_EQ(fb_->ERRORID.value, kLimitSwitch);
+    EXPECT_EQ(fb_->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM);
     EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and the traverse bit off";
 }
 
@@ -755,9 +766,10 @@ TEST_F(FbPacAxis, AbortBeforeTheTakeOverIsCommandAbortedWhenStartHasBeenLowLongE
     EXPECT_EQ(ControlWord(), ctrl::kAxisOn) << "Start and the traverse bit off in the Abort scan";
     ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
     EXPECT_TRUE(Aborted());
-    // Nothing was taken over, so nothing was measured: Start must have been 0 on the wire for the update
-    // time before the axis counts as free (read back from the scan after the Abort scan).
-    EXPECT_EQ(task_.ScanCount(), a + 1 + kPacUpdateScans);
+    // Nothing was taken over, so nothing was measured: Start must have been 0 on the wire for the assumed
+    // take-over plus the update time before the axis counts as free (read back from the scan after the Abort
+    // scan): a late answer to the Start is visible by then.
+    EXPECT_EQ(task_.ScanCount(), a + 1 + kStartLowAfterRestartScans);
 }
 
 TEST_F(FbPacAxis, CmdErrorWithNumberZeroIsReportedAsNotAllowed) {
@@ -839,14 +851,31 @@ TEST_F(FbPacAxisLongMove, AbortInterruptsAndEndsWhenTheAxisIsFree) {
     EXPECT_TRUE(Run().Done());
 }
 
-TEST_F(FbPacAxisLongMove, AbortEndsAfterTimeoutWhenActiveStaysUp) {
+// A stop ends when ACTIVE has fallen, not after Timeout: the axis may brake for longer.
+TEST_F(FbPacAxisLongMove, AbortEndsWhenActiveFallsEvenAfterTimeout) {
+    axis_->HoldActive(true);
+    fb_->ABORT.value = TRUE;
+    Cycle(1);
+    Cycle(2 * kTimeoutScans);
+    EXPECT_TRUE(Busy()) << "ACTIVE still set: the stop goes on";
+    axis_->HoldActive(false);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 10, "final output"));
+    EXPECT_TRUE(Aborted());
+    EXPECT_FALSE(fb_->ACTIVE.value);
+}
+
+// An axis that stays ACTIVE is an error of its own after StopTimeout, never Busy for ever.
+TEST_F(FbPacAxisLongMove, StopTimeoutEndsAStopWhileActiveStaysUp) {
+    constexpr int kStopTimeoutScans = 50;
+    fb_->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(kStopTimeoutScans));
     axis_->HoldActive(true);
     fb_->ABORT.value = TRUE;
     Cycle(1);
     const std::int64_t a = task_.ScanCount();
-    ASSERT_TRUE(RunUntil([&] { return Final(); }, 40, "final output"));
-    EXPECT_TRUE(Aborted());
-    EXPECT_EQ(task_.ScanCount(), a + kTimeoutScans);
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 2 * kStopTimeoutScans, "final output"));
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_STOP_TIMEOUT"]);
+    EXPECT_EQ(task_.ScanCount(), a + kStopTimeoutScans);
     EXPECT_TRUE(fb_->ACTIVE.value) << "Active tells the truth";
     // The next job waits for the axis to be free, bounded by Timeout.
     fb_->ABORT.value = FALSE;

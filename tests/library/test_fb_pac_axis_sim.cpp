@@ -43,13 +43,18 @@ using std::chrono::milliseconds;
 using std::chrono::nanoseconds;
 namespace ac = pac::axis_control;
 namespace as = pac::axis_status;
+using pac::sim::ActiveForJobs;
 using pac::sim::CmdErrorRestart;
+using pac::sim::InterruptedTraverse;
+using pac::sim::NoReferenceAnswer;
 using pac::sim::EnableMode;
 using pac::test::BusTiming;
 
 const pac::test::GvlConstants kGvl;
 const std::uint32_t kErrAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
 const std::uint32_t kErrNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
+const std::uint32_t kErrStopTimeout = kGvl["PAC_LIB_ERR_STOP_TIMEOUT"];
+constexpr std::uint32_t kE525 = pac::sim::AxisModule::kSystemErrorNoReference;
 const std::uint32_t kNoReference = kGvl["PAC_ERR_NO_REFERENCE"];      // 43
 const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];              // 55
 const std::uint32_t kAxisDisplaced = kGvl["PAC_ERR_AXIS_DISPLACED"];  // 56
@@ -185,12 +190,26 @@ private:
 // The PLC: FB_PAC_Ctrl on the CTRL module and one FB_PAC_Axis per axis module of a simulated PA-CONTROL,
 // each axis taking the format in force from FB_PAC_Ctrl as a PLC program wires them.
 
+// A reading of the axis module the manual leaves open (docs/open_points.md): which jobs raise ACTIVE, and how a
+// move of an unreferenced axis is refused.
+struct AxisReading {
+    ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
+    NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
+    InterruptedTraverse interrupted = InterruptedTraverse::kEnds;
+
+    bool ContinuesAfterAxisOn() const { return interrupted == InterruptedTraverse::kContinuesAfterAxisOn; }
+    bool ActiveOnlyWhenTraversing() const { return activeFor == ActiveForJobs::kTraversingOnly; }
+    bool E525() const { return noReference == NoReferenceAnswer::kSystemError525; }
+};
+
 struct BenchOptions {
     BusTiming timing{1, 10, 0};
+    AxisReading reading;
     int axes = 1;
     EnableMode enableMode = EnableMode::kHalt;
     bool referenced = true;  // at power-on
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
+    pac::sim::SpeedChange speedChange = pac::sim::SpeedChange::kNotWhileTraversing;  // the axis type (2.7.6)
 };
 
 struct Job {
@@ -212,6 +231,10 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     config.axisMachine.enableMode = o.enableMode;
     config.referencedAtPowerOn = o.referenced;
     config.axisModule.cmdErrorRestart = o.cmdErrorRestart;
+    config.axisModule.activeFor = o.reading.activeFor;
+    config.axisModule.noReference = o.reading.noReference;
+    config.axisModule.interruptedTraverse = o.reading.interrupted;
+    config.axisModule.speedChange = o.speedChange;
     return config;
 }
 
@@ -384,16 +407,45 @@ AxisStep S(std::uint32_t control, std::uint32_t status, char output) { return {c
 // ---------------------------------------------------------------------------------------------------
 // Every timing of the FB_PAC_Cmd simulator tests: PLC cycle x PA-CONTROL cycle x latency.
 
-class AxisSimTiming : public ::testing::TestWithParam<BusTiming> {
+struct AxisSimCase {
+    BusTiming timing;
+    AxisReading reading;
+};
+
+std::string Describe(const AxisReading& r) {
+    return std::string(r.ActiveOnlyWhenTraversing() ? "ACTIVE for traversing jobs only" : "ACTIVE for every job") +
+           (r.E525() ? ", unreferenced: E525" : ", unreferenced: CMD error 43") +
+           (r.ContinuesAfterAxisOn() ? ", interrupted traverse continued after Axis ON" : "");
+}
+
+void PrintTo(const AxisSimCase& c, std::ostream* out) {
+    *out << pac::test::Describe(c.timing) << "; " << Describe(c.reading);
+}
+
+std::string AxisSimCaseName(const ::testing::TestParamInfo<AxisSimCase>& info) {
+    return pac::test::BusTimingName({info.param.timing, info.index});
+}
+
+std::vector<AxisSimCase> OnReading(const AxisReading& reading) {
+    std::vector<AxisSimCase> cases;
+    for (const BusTiming& t : pac::test::StandardBusTimings()) cases.push_back({t, reading});
+    return cases;
+}
+
+class AxisSimTiming : public ::testing::TestWithParam<AxisSimCase> {
 protected:
     BenchOptions Options() const {
         BenchOptions o;
-        o.timing = GetParam();
+        o.timing = GetParam().timing;
+        o.reading = GetParam().reading;
         return o;
     }
-    // Every failure names the bus timing.
+    const AxisReading& Reading() const { return GetParam().reading; }
+    // Every failure names the bus timing and the reading.
     void SetUp() override {
-        trace_ = std::make_unique<::testing::ScopedTrace>(__FILE__, __LINE__, pac::test::Describe(GetParam()));
+        std::ostringstream what;
+        PrintTo(GetParam(), &what);
+        trace_ = std::make_unique<::testing::ScopedTrace>(__FILE__, __LINE__, what.str());
     }
     void TearDown() override { trace_.reset(); }
 
@@ -675,9 +727,25 @@ TEST_P(AxisSimTiming, CmdErrorsAndRecoveryOnBothRestartStyles) {
             const Outcome outcome = bench.Run(1, job);
             EXPECT_TRUE(outcome.Done()) << outcome;
         };
+        // Unreferenced: CMD error 43, or system error E525 as an axis error (the 2.7.2 note), whose number the FB
+        // passes through unchanged; ResetError clears the axis error for the next job.
+        auto expectNoReference = [&] {
+            if (!Reading().E525()) return expectError({kAbsolute, 10.0f}, kNoReference);
+            const Outcome outcome = bench.StartAndWait(1, {kAbsolute, 10.0f});
+            EXPECT_TRUE(outcome.Error()) << outcome;
+            EXPECT_EQ(outcome.ErrorId(), kE525) << outcome;
+            EXPECT_EQ(fb->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM);
+            EXPECT_EQ(fb->AXISERRORNUMBER.value, kE525);
+            EXPECT_FALSE(fb->CMDERROR.value);
+            fb->EXECUTE.value = FALSE;
+            fb->RESETERROR.value = TRUE;
+            ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "E525 reset"));
+            fb->RESETERROR.value = FALSE;
+            bench.Scan();
+        };
         // 43 twice in a row with the same number, then good: G26, which the stale 43 must not fail.
-        expectError({kAbsolute, 10.0f}, kNoReference);
-        expectError({kAbsolute, 10.0f}, kNoReference);
+        expectNoReference();
+        expectNoReference();
         EXPECT_EQ(bench.Position(1), 0.0f);
         expectDone({kSetReferenced, 0.0f});
         EXPECT_FALSE(fb->CMDERROR.value);
@@ -800,6 +868,107 @@ TEST_P(AxisSimTiming, AbortMidMoveThenANewJob) {
     bench.ExpectJobsSeen(1, 2);
 }
 
+// A stop lasts as long as the axis brakes: with 50 per mille of the axis parameter acceleration (500 units/s²)
+// from 600 units/s the axis brakes for 1.2 s, longer than Timeout (1 s). The job ends when ACTIVE has fallen,
+// and StopTimeout shorter than the braking ends it with its own error while the axis still moves.
+TEST_P(AxisSimTiming, StopEndsWhenActiveFallsAndStopTimeoutBoundsIt) {
+    for (const bool bounded : {false, true}) {
+        SCOPED_TRACE(bounded ? "StopTimeout 500 ms" : "StopTimeout default");
+        AxisSimBench bench(Options());
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        if (bounded) fb->STOPTIMEOUT.value = pac::ToIecTime(milliseconds(500));
+        const Outcome started = bench.StartAndWait(1, {kAbsolute, 5000.0f, 1000, 50}, 100);
+        ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Motion(1).ActualSpeed() >= 600.0; }, 1500, "600 units/s"));
+        fb->ABORT.value = TRUE;
+        const nanoseconds abortAt = bench.Now();
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 3000, "final output"));
+        if (bounded) {
+            EXPECT_TRUE(fb->ERROR.value);
+            EXPECT_EQ(fb->ERRORID.value, kErrStopTimeout);
+            EXPECT_TRUE(fb->ACTIVE.value) << "the axis still brakes";
+            EXPECT_TRUE(bench.Motion(1).Moving());
+            ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1500, "the axis stands"));
+        } else {
+            EXPECT_TRUE(fb->COMMANDABORTED.value);
+            EXPECT_GT(bench.Now() - abortAt, milliseconds(1000)) << "longer than Timeout";
+            EXPECT_FALSE(fb->ACTIVE.value);
+            EXPECT_FALSE(bench.Motion(1).Moving());
+        }
+        fb->ABORT.value = FALSE;
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        const Outcome next = bench.Run(1, {kRelative, -10.0f});
+        EXPECT_TRUE(next.Done()) << next;
+        bench.ExpectJobsSeen(1, 2);
+    }
+}
+
+// 2.7.6: a new speed while a move runs, on an axis type that takes it (the move arrives ten times sooner), and
+// refused with 16#8023 where the FB is told the axis type cannot, or no move runs (the move unchanged).
+TEST_P(AxisSimTiming, SpeedChangeDuringAMoveWhereTheAxisTypeAllowsIt) {
+    const auto kNoChange = kGvl["PAC_LIB_ERR_NO_DYNAMICS_CHANGE"];
+    for (const bool changeable : {true, false}) {
+        SCOPED_TRACE(changeable ? "axis type with speed change" : "axis type without");
+        BenchOptions o = Options();
+        o.speedChange = changeable ? pac::sim::SpeedChange::kWhileTraversing : pac::sim::SpeedChange::kNotWhileTraversing;
+        AxisSimBench bench(o);
+        bench.GoOnline();
+        auto& fb = bench.Fb(1);
+        fb->DYNAMICSCHANGEABLE.value = changeable ? TRUE : FALSE;
+        fb->VELOCITY.value = 500;
+        fb->CHANGEDYNAMICS.value = TRUE;
+        bench.Scan();
+        EXPECT_TRUE(fb->CHANGEREFUSED.value) << "no move runs";
+        EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange);
+        fb->CHANGEDYNAMICS.value = FALSE;
+        bench.Scan();
+        EXPECT_FALSE(fb->CHANGEREFUSED.value);
+        const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 100, 1000}, 100);
+        ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 10.0f; }, 300, "moving at 100 units/s"));
+        const nanoseconds changeAt = bench.Now();
+        fb->VELOCITY.value = 0;
+        fb->CHANGEDYNAMICS.value = TRUE;
+        bench.Scan();
+        fb->CHANGEDYNAMICS.value = FALSE;
+        if (changeable) {
+            EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_VELOCITY"]);
+            bench.Scan();
+            fb->VELOCITY.value = 1000;
+            fb->ACCELERATION.value = 0;
+            fb->CHANGEDYNAMICS.value = TRUE;
+            bench.Scan();
+            EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"]);
+            fb->CHANGEDYNAMICS.value = FALSE;
+            bench.Scan();
+            fb->ACCELERATION.value = 1000;
+            fb->CHANGEDYNAMICS.value = TRUE;
+            bench.Scan();
+            EXPECT_TRUE(fb->DYNAMICSCHANGED.value);
+            EXPECT_FALSE(fb->CHANGEREFUSED.value);
+            EXPECT_EQ(bench.Control(1), kOn | ac::kMoveAbsolute) << "the job's bits as they were, no Start";
+        } else {
+            EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange) << "the FB knows the axis type cannot";
+        }
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 4000, "final output"));
+        EXPECT_TRUE(fb->DONE.value);
+        EXPECT_EQ(bench.Position(1), 300.0f);
+        const auto took = bench.Now() - changeAt;
+        if (changeable) {
+            EXPECT_LT(took, milliseconds(500)) << "about 290 units at 1000 units/s";
+        } else {
+            EXPECT_GT(took, milliseconds(2500)) << "about 290 units at 100 units/s";
+        }
+        fb->CHANGEDYNAMICS.value = FALSE;
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        EXPECT_FALSE(fb->DYNAMICSCHANGED.value);
+        bench.ExpectJobsSeen(1, 1);
+    }
+}
+
 TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
     AxisSimBench bench(Options());
     bench.GoOnline();
@@ -818,6 +987,19 @@ TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
     fb->EXECUTE.value = FALSE;
     fb->ENABLE.value = TRUE;
     ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    if (Reading().ContinuesAfterAxisOn()) {
+        // The controller continues the aborted move by itself (2.7.2 note): the FB shows it, without a job.
+        ASSERT_TRUE(bench.WaitFor([&] { return fb->ACTIVEWITHOUTJOB.value != 0; }, 200, "ActiveWithoutJob"));
+        EXPECT_FALSE(fb->BUSY.value);
+        EXPECT_EQ(bench.Control(1), kOn) << "nothing sent for it";
+        ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1000, "the continued move's end"));
+        EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
+        EXPECT_EQ(bench.Position(1), 400.0f) << "at the aborted job's target";
+    } else {
+        bench.ScanMs(100);
+        EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
+        EXPECT_EQ(bench.Position(1), stoppedAt) << "the aborted move stays ended";
+    }
     const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
     EXPECT_TRUE(next.Done()) << next;
     EXPECT_EQ(bench.Position(1), 50.0f);
@@ -1009,6 +1191,24 @@ TEST_P(AxisSimTiming, G123StopsTheMoveWhenTheInputDrops) {
     bench.ExpectJobsSeen(1, 3);
 }
 
+// A reference run in the homing mode that loads the reference the next time the switch is actuated, without
+// moving: complete in its take-over cycle, so on a controller that shows ACTIVE for traversing tasks only it
+// has no ACTIVE either, and is Done all the same.
+TEST_P(AxisSimTiming, ReferenceRunThatLoadsOnTheSwitchWithoutMoving) {
+    BenchOptions o = Options();
+    o.referenced = false;
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    pac::sim::ServoAxisConfig config = bench.Motion(1).Config();
+    config.homingMode = pac::sim::HomingMode::kLoadOnSwitch;
+    bench.Motion(1).SetConfig(bench.Now(), config);
+    const Outcome home = bench.Run(1, {kHome});
+    EXPECT_TRUE(home.Done()) << home;
+    EXPECT_EQ(bench.Position(1), 0.0f) << "no move";
+    EXPECT_TRUE(bench.Motion(1).HomingArmed());
+    bench.ExpectJobsSeen(1, 1);
+}
+
 // ---- the FB adds no scan: an instant job at the protocol minimum ---------------------------------------
 
 TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
@@ -1021,6 +1221,19 @@ TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
     const std::int64_t edge = bench.ScanCount();
     ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kSetPosition) << "the axis is free: Start in the edge scan";
     const pac::test::ProtocolWindow window(bench.Options().timing);
+    if (Reading().ActiveOnlyWhenTraversing()) {
+        // No ACTIVE ever: Done once the controller's answer would have been visible, never before.
+        const int answer = window.Request(bench.Now()).max;
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+        EXPECT_TRUE(fb->DONE.value);
+        EXPECT_GE(bench.ScanCount(), edge + answer) << "not before the controller's answer could arrive";
+        EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off with Done";
+        EXPECT_EQ(bench.Position(1), 3.0f);
+        fb->EXECUTE.value = FALSE;
+        bench.Scan();
+        bench.ExpectJobsSeen(1, 1);
+        return;
+    }
     const int takeOver = window.Minimum(bench.Now());
     ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
     EXPECT_EQ(bench.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
@@ -1143,6 +1356,40 @@ TEST(AxisSimTakeOverBound, GoodJobAfterARefusalMayTakeLongerThanTwiceTheFirstTak
     bench.ExpectJobsSeen(1, 3);
 }
 
+// ---- Start low long enough before a take-over was measured -----------------------------------------------
+
+// The first job after a PLC start is aborted in the scan after its Start: nothing measured yet. On the slow
+// timings of the grid the controller's answer to that Start (ACTIVE, then its fall) comes long after 10 ms; had
+// the FB counted the axis free after Start had been low for the update time, the next Start would reach the
+// controller while it still processes the old job (the edge lost, 2.7.3.2) and the old job's ACTIVE would pass
+// for the new job's take-over.
+class AxisSimSlowStart : public ::testing::TestWithParam<BusTiming> {};
+
+TEST_P(AxisSimSlowStart, LateActiveOfAnAbortedFirstJobIsNotTheNextJobsTakeOver) {
+    BenchOptions o;
+    o.timing = GetParam();
+    AxisSimBench bench(o);
+    bench.GoOnline();
+    auto& fb = bench.Fb(1);
+    bench.SetJob(1, {kAbsolute, 400.0f});
+    fb->EXECUTE.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 100, "Start"));
+    fb->ABORT.value = TRUE;
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1000, "the first job aborted"));
+    EXPECT_TRUE(fb->COMMANDABORTED.value);
+    fb->ABORT.value = FALSE;
+    fb->EXECUTE.value = FALSE;
+    bench.Scan();
+    const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
+    EXPECT_TRUE(next.Done()) << next;
+    EXPECT_EQ(bench.Position(1), 50.0f) << "the second job ran";
+    bench.ExpectJobsSeen(1, 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(SlowBuses, AxisSimSlowStart,
+                         ::testing::ValuesIn(pac::test::BusTimingGrid({5, 10}, {3, 10}, {2, 3})),
+                         pac::test::BusTimingName);
+
 // ---- jittered buses --------------------------------------------------------------------------------------
 
 // Two axes through a session of jobs, refusals, interruptions and an axis error, on a bus whose every image is
@@ -1249,7 +1496,15 @@ std::vector<BusTiming> JitteredSessions() {
 INSTANTIATE_TEST_SUITE_P(JitteredBuses, AxisSimJitter, ::testing::ValuesIn(JitteredSessions()),
                          pac::test::BusTimingName);
 
-INSTANTIATE_TEST_SUITE_P(BusTimings, AxisSimTiming, ::testing::ValuesIn(pac::test::StandardBusTimings()),
-                         pac::test::BusTimingName);
+INSTANTIATE_TEST_SUITE_P(BusTimings, AxisSimTiming, ::testing::ValuesIn(OnReading({})), AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(ActiveWhenTraversing, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kTraversingOnly})), AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(ContinuedAfterAxisOn, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kEveryJob, NoReferenceAnswer::kCmdError43,
+                                                        InterruptedTraverse::kContinuesAfterAxisOn})),
+                         AxisSimCaseName);
+INSTANTIATE_TEST_SUITE_P(NoReferenceE525, AxisSimTiming,
+                         ::testing::ValuesIn(OnReading({ActiveForJobs::kEveryJob, NoReferenceAnswer::kSystemError525})),
+                         AxisSimCaseName);
 
 }  // namespace

@@ -343,6 +343,130 @@ TEST_F(AxisModuleSequences, RelativeTraversingInteger_2_7_9_3) {
     Run(RelativeTraversing());
 }
 
+// The readings the manual leaves open (docs/open_points.md), as module settings.
+class AxisModuleActiveForTraversingOnly : public AxisModuleBench {
+protected:
+    AxisModuleActiveForTraversingOnly()
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kTraversingOnly}) {}
+};
+
+TEST_F(AxisModuleActiveForTraversingOnly, JobsThatDoNotTraverseNeverShowActiveButTraversesDo) {
+    // G29 to 5: carried out in the take-over cycle, no ACTIVE; a refused move before it left CMD error 65, which
+    // the G29's Start clears (2.7.4.14).
+    toPac_.position = EncodeModulePosition(20000.0, integer_);  // beyond the traverse range: 65
+    Run({
+        {kOn, kOnReferenced, 0, 0, 0.0},
+        {kOn | ac::kMoveAbsolute | ac::kStart, kOnReferenced | as::kCmdError, 65, 0, 0.0},
+        {kOn, kOnReferenced | as::kCmdError, 65, 0, 0.0},
+    });
+    toPac_.position = EncodeModulePosition(5.0, integer_);
+    Run({
+        {kOn | ac::kSetPosition | ac::kStart, kOnReferenced, 0, 0, 5.0},
+        {kOn | ac::kSetPosition, kOnReferenced, 0, 0, 5.0},
+        {kOn, kOnReferenced, 0, 0, 5.0},
+    });
+    // A move does: ACTIVE from its take-over until it is complete and Start is 0.
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
+    const AxisModuleReply end = StepUntilClear(kOn | ac::kMoveAbsolute, as::kActive);
+    EXPECT_EQ(DecodeModulePosition(end.position, integer_), 105.0);
+}
+
+class AxisModuleContinuesAfterAxisOn : public AxisModuleBench {
+protected:
+    AxisModuleContinuesAfterAxisOn()
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                         NoReferenceAnswer::kCmdError43,
+                                                         InterruptedTraverse::kContinuesAfterAxisOn}) {}
+};
+
+TEST_F(AxisModuleContinuesAfterAxisOn, MoveInterruptedByAxisOffGoesOnToItsTargetAfterAxisOn) {
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    Step(kOn);
+    EXPECT_EQ(Step(kOn | ac::kMoveAbsolute | ac::kStart).status, kOnActive);
+    for (int i = 0; i < 5; ++i) Step(kOn | ac::kMoveAbsolute);
+    // Axis ON 0 and the traverse bit removed together, as FB_PAC_Axis does when Enable falls.
+    const AxisModuleReply stopped = StepUntilClear(0, as::kActive);
+    const double stoppedAt = DecodeModulePosition(stopped.position, integer_);
+    EXPECT_LT(stoppedAt, 105.0);
+    EXPECT_EQ(Step(0).status & as::kActive, 0u) << "nothing runs while the axis is off";
+    // Axis ON again, no traverse bit, no Start: the controller continues by itself.
+    EXPECT_EQ(Step(kOn).status & as::kActive, as::kActive);
+    const AxisModuleReply end = StepUntilClear(kOn, as::kActive);
+    EXPECT_EQ(DecodeModulePosition(end.position, integer_), 105.0);
+    EXPECT_EQ(Step(kOn).status & as::kActive, 0u) << "continued once";
+}
+
+TEST_F(AxisModuleSequences, MoveInterruptedByAxisOffStaysEndedByDefault) {
+    toPac_.position = EncodeModulePosition(105.0, integer_);
+    Step(kOn);
+    Step(kOn | ac::kMoveAbsolute | ac::kStart);
+    for (int i = 0; i < 5; ++i) Step(kOn | ac::kMoveAbsolute);
+    const AxisModuleReply stopped = StepUntilClear(0, as::kActive);
+    for (int i = 0; i < 20; ++i) {
+        const AxisModuleReply r = Step(kOn);
+        EXPECT_EQ(r.status & as::kActive, 0u);
+        EXPECT_EQ(r.position, stopped.position);
+    }
+}
+
+class AxisModuleSpeedChange : public AxisModuleBench {
+protected:
+    explicit AxisModuleSpeedChange(SpeedChange change = SpeedChange::kWhileTraversing)
+        : AxisModuleBench(Referenced(), AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                         NoReferenceAnswer::kCmdError43, InterruptedTraverse::kEnds,
+                                                         change}) {}
+    // A move to 1000 at 100 per mille (100 units/s); at 0.2 s the speed field goes to 1000 per mille. Returns the
+    // cycles from the change to the end of the job.
+    int MoveWithSpeedChange() {
+        toPac_.position = EncodeModulePosition(1000.0, integer_);
+        toPac_.speedPerMille = 100;
+        Step(kOn);
+        Step(kOn | ac::kMoveAbsolute | ac::kStart);
+        for (int i = 0; i < 20; ++i) Step(kOn | ac::kMoveAbsolute);
+        EXPECT_NEAR(axis_.ActualSpeed(), 100.0, 1e-6);
+        toPac_.speedPerMille = 1000;
+        int cycles = 0;
+        while ((Step(kOn | ac::kMoveAbsolute).status & as::kActive) != 0 && cycles < 2000) ++cycles;
+        EXPECT_EQ(axis_.Position(), 1000.0) << "at the same target";
+        return cycles;
+    }
+};
+
+TEST_F(AxisModuleSpeedChange, NewSpeedDuringAMoveAppliesWhereTheAxisTypeAllowsIt) {
+    // 980 units left at 100 units/s: ramp 0.09 s to 1000 units/s, about 0.98 s in all, against 9.8 s.
+    EXPECT_LT(MoveWithSpeedChange(), 110);
+}
+
+class AxisModuleNoSpeedChange : public AxisModuleSpeedChange {
+protected:
+    AxisModuleNoSpeedChange() : AxisModuleSpeedChange(SpeedChange::kNotWhileTraversing) {}
+};
+
+TEST_F(AxisModuleNoSpeedChange, NewSpeedDuringAMoveIsIgnoredByOtherAxisTypes) {
+    EXPECT_GT(MoveWithSpeedChange(), 970);
+}
+
+class AxisModuleNoReferenceE525 : public AxisModuleBench {
+protected:
+    AxisModuleNoReferenceE525()
+        : AxisModuleBench(ServoAxisConfig{}, AxisModuleConfig{CmdErrorRestart::kSameCycle, ActiveForJobs::kEveryJob,
+                                                              NoReferenceAnswer::kSystemError525}) {}
+};
+
+TEST_F(AxisModuleNoReferenceE525, MoveOfAnUnreferencedAxisIsSystemErrorE525UntilReset) {
+    toPac_.position = EncodeModulePosition(10.0, integer_);
+    Step(kOn);
+    const AxisModuleReply refused = Step(kOn | ac::kMoveAbsolute | ac::kStart);
+    EXPECT_EQ(refused.cmdError, 0) << "no CMD error";
+    EXPECT_EQ(refused.axisError, AxisModule::kSystemErrorNoReference);
+    EXPECT_EQ(refused.status & (as::kActive | as::kCmdError | as::kAxisError), as::kAxisError);
+    EXPECT_EQ(Step(kOn).axisError, AxisModule::kSystemErrorNoReference) << "kept until reset";
+    const AxisModuleReply reset = Step(kOn | ac::kResetAxisError);
+    EXPECT_EQ(reset.axisError, 0);
+    EXPECT_EQ(reset.status & as::kAxisError, 0u);
+}
+
 class AxisModuleLimitSwitch : public AxisModuleBench {
 protected:
     static ServoAxisConfig Config() {

@@ -105,6 +105,8 @@ void AxisModule::Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleCo
     FollowMode(axis, context);
     if (context.service != AxisModuleService::kReportOnly) ApplyDrive(control, axis, context);
     FollowJob(control, axis, context);
+    FollowDynamics(command, axis, context);
+    ContinueInterruptedTraverse(axis, context);
     // 2.7.4.8: ACTIVE falls at the earliest when the job is complete and Start is 0 again.
     if (active_ && jobComplete_ && (control & kStart) == 0) active_ = false;
     // 2.7.3.2: a job is recognised on the Start edge while none is processed; an edge during a job is lost.
@@ -120,6 +122,7 @@ void AxisModule::FollowMode(ServoAxis& axis, const AxisModuleContext& context) {
         const auto now = context.now;
         axis.SetDriveDisabled(now, false);
         axis.SetAxisOn(now, true);
+        toContinue_ = false;  // the switch-on that continues a traverse is the axis-ON function in ONLINE
     }
     served_ = online;
 }
@@ -130,6 +133,10 @@ void AxisModule::ApplyDrive(std::uint32_t control, ServoAxis& axis, const AxisMo
     const bool disable = (control & kDisableDrive) != 0;
     if (axis.DriveDisabled() != disable) axis.SetDriveDisabled(now, disable);
     const bool on = (control & kAxisOn) != 0;
+    if (!on && axis.AxisOn() && JobRunning() && job_ != kJogPositive && job_ != kJogNegative && job_ != kHome &&
+        config_.interruptedTraverse == InterruptedTraverse::kContinuesAfterAxisOn) {
+        toContinue_ = true;  // a move: its target is known; a reference run or jog is not continued here
+    }
     if (axis.AxisOn() != on) axis.SetAxisOn(now, on);
     // Edge: an error raised between two cycles is always shown for at least one cycle, even with bit 16
     // held; a reset refused because the cause persists (ServoAxis::ResetAxisError) needs a new edge.
@@ -138,7 +145,7 @@ void AxisModule::ApplyDrive(std::uint32_t control, ServoAxis& axis, const AxisMo
 
 void AxisModule::FollowJob(std::uint32_t control, ServoAxis& axis, const AxisModuleContext& context) {
     if (job_ == 0 || jobComplete_) return;
-    if (axis.JobActive() && !interrupted_) {
+    if (axis.JobActive() && !interrupted_ && !continued_) {
         if ((control & job_) == 0) {
             // 2.7.3 note: removing the traverse bit interrupts the job (the axis brakes, HALT).
             axis.Interrupt(context.now);
@@ -158,7 +165,16 @@ void AxisModule::StartEdge(const AxisModuleCommand& command, ServoAxis& axis, co
     if (refusal == 0) {
         cmdError_ = 0;
         pendingCmdError_ = 0;
-        active_ = true;  // taken over: ACTIVE in the same cycle, even for a job that is already complete
+        // Taken over: ACTIVE in the same cycle, even for a job that is already complete, unless this
+        // controller raises it for traversing tasks only.
+        active_ = !(jobComplete_ && config_.activeFor == ActiveForJobs::kTraversingOnly);
+        return;
+    }
+    if (refusal == axis_error::kNoReferencePoint && config_.noReference == NoReferenceAnswer::kSystemError525) {
+        // 2.7.2 note: a system error instead of the command error; the Start clears an earlier CMD error.
+        cmdError_ = 0;
+        pendingCmdError_ = 0;
+        axis.RaiseAxisError(context.now, kSystemErrorNoReference);
         return;
     }
     ShowCmdError(refusal);
@@ -211,6 +227,12 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
 
     job_ = traverse;
     interrupted_ = false;
+    continued_ = false;
+    toContinue_ = false;
+    target_ = axis.Target();
+    dynamics_ = dynamics;
+    speedPerMille_ = command.speedPerMille;
+    accelerationPerMille_ = command.accelerationPerMille;
     condition_ = condition;
     if (condition != Condition::kNone) {
         stoppedByG123_ = false;  // bit 11 is about the last job with G123
@@ -223,6 +245,30 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     }
     jobComplete_ = !axis.JobActive();
     return 0;
+}
+
+void AxisModule::FollowDynamics(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context) {
+    if (config_.speedChange != SpeedChange::kWhileTraversing || !JobRunning() || interrupted_ || job_ == kHome) return;
+    if (command.speedPerMille == speedPerMille_ && command.accelerationPerMille == accelerationPerMille_) return;
+    speedPerMille_ = command.speedPerMille;
+    accelerationPerMille_ = command.accelerationPerMille;
+    // Values outside 1..1000 / 1..65535 are ignored: the move goes on as it was (no answer channel but the
+    // CMD error, which belongs to Start commands, 2.7.4.14).
+    const auto dynamics = ScaledDynamics(axis.Config(), speedPerMille_, accelerationPerMille_);
+    if (dynamics && axis.ChangeDynamics(context.now, *dynamics)) dynamics_ = *dynamics;
+}
+
+void AxisModule::ContinueInterruptedTraverse(ServoAxis& axis, const AxisModuleContext& context) {
+    if (!toContinue_ || axis.JobActive() || !axis.AxisOn()) return;
+    if (context.service != AxisModuleService::kJobs || axis.Drive() != DriveState::kEnabled) return;
+    toContinue_ = false;
+    // The axis parameter "switch on traverse mode" continues the move to its target; a displaced axis is not
+    // moved (2.7.4.12: the refusal leaves the job ended).
+    if (axis.MoveAbsolute(context.now, target_, dynamics_, JobOptions{}) != axis_error::kNone) return;
+    continued_ = true;
+    interrupted_ = false;
+    jobComplete_ = false;
+    active_ = true;
 }
 
 bool AxisModule::ConditionHolds(const AxisModuleContext& context) const {

@@ -268,7 +268,7 @@ void ServoAxis::BrakeJob() {
         EndJob(true);
         return;
     }
-    if (trajectory_.PhaseAt(Seconds()) == MotionPhase::kDecelerating) {
+    if (trajectory_.FinalRampAt(Seconds())) {
         // Already braking with the job's deceleration: a move ends at its target,
         // a homing run at the end of this ramp.
         if (activity_ == Activity::kHoming) {
@@ -479,6 +479,20 @@ std::uint16_t ServoAxis::ResetDisplaced(nanoseconds now) {
     Update(now);
     displaced_ = false;
     return axis_error::kNone;
+}
+
+bool ServoAxis::ChangeDynamics(nanoseconds now, const Dynamics& dynamics) {
+    Update(now);
+    if (activity_ != Activity::kPositioning || !trajectory_.Moves() || !IsValid(dynamics)) return false;
+    if (trajectory_.FinalRampAt(Seconds())) return false;
+    const auto plan = Trajectory::FromSpeed(CommandedMachine(), target_, std::fabs(CommandedVelocity()), dynamics,
+                                            config_.rampType);
+    if (!plan) return false;
+    jobDeceleration_ = dynamics.deceleration;
+    SetMotion(*plan, target_);
+    RunEventsUntil(now_);
+    Settle();
+    return true;
 }
 
 void ServoAxis::Interrupt(nanoseconds now) {

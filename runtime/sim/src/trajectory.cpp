@@ -75,6 +75,42 @@ Trajectory Trajectory::PointToPoint(double start, double target, const Dynamics&
     return t;
 }
 
+std::optional<Trajectory> Trajectory::FromSpeed(double start, double target, double speed, const Dynamics& dynamics,
+                                               RampType ramp) {
+    const double distance = std::fabs(target - start);
+    const double a = dynamics.acceleration;
+    const double d = dynamics.deceleration;
+    const double v = dynamics.speed;
+    const double stop = speed * speed / (2.0 * d);
+    if (!(speed > 0.0) || distance < stop) return std::nullopt;
+    Trajectory t;
+    t.start_ = start;
+    t.sign_ = target > start ? 1.0 : -1.0;
+    t.ramp_ = ramp;
+    if (v < speed) {
+        // Down to the new speed and, at the end, to standstill: together exactly the stop from `speed`.
+        t.Append((speed - v) / d, speed, v);
+        t.Append((distance - stop) / v, v, v);
+        t.Append(v / d, v, 0.0);
+    } else {
+        const double up = (v * v - speed * speed) / (2.0 * a);
+        const double down = v * v / (2.0 * d);
+        if (up + down <= distance) {
+            t.Append((v - speed) / a, speed, v);
+            t.Append((distance - up - down) / v, v, v);
+            t.Append(v / d, v, 0.0);
+        } else {
+            // Peak p with (p^2 - speed^2)/2a + p^2/2d = distance; p >= speed since distance >= stop.
+            const double peak = std::sqrt((2.0 * a * d * distance + d * speed * speed) / (a + d));
+            t.Append((peak - speed) / a, speed, peak);
+            t.Append(peak / d, peak, 0.0);
+        }
+    }
+    t.distance_ = distance;
+    t.end_ = target;
+    return t;
+}
+
 Trajectory Trajectory::Run(double start, Direction direction, double speed, double acceleration, RampType ramp) {
     Trajectory t;
     t.start_ = start;
@@ -153,6 +189,12 @@ MotionPhase Trajectory::PhaseAt(double t) const {
     if (s->endSpeed > s->startSpeed) return MotionPhase::kAccelerating;
     if (s->endSpeed < s->startSpeed) return MotionPhase::kDecelerating;
     return MotionPhase::kConstantSpeed;
+}
+
+bool Trajectory::FinalRampAt(double t) const {
+    if (!Moves() || t >= duration_) return false;
+    const Segment* s = SegmentAt(t < 0.0 ? 0.0 : t);
+    return s == &segments_.back() && s->endSpeed == 0.0 && s->startSpeed > 0.0;
 }
 
 std::optional<double> Trajectory::TimeToReach(double position) const {

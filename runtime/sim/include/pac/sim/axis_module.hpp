@@ -66,8 +66,44 @@ enum class CmdErrorRestart {
     kOneCycleClear,  // the edge cycle shows flag and number 0; a refusal shows from the next cycle on
 };
 
+// Which jobs raise ACTIVE (2.7.4.8: "the control processes a traversing task"), an open reading
+// (docs/open_points.md). A job that does not traverse: G26, G29, delete offset, reset "displaced", a G123 move
+// whose input condition is not met, a move to where the axis stands.
+enum class ActiveForJobs {
+    kEveryJob,        // every job taken over shows ACTIVE for at least its take-over cycle (the default)
+    kTraversingOnly,  // a job complete in its take-over cycle never shows ACTIVE
+};
+
+// How a move of an unreferenced axis is refused, an open reading (docs/open_points.md): CMD error 43 (6.5) or,
+// as the 2.7.2 note says, system error E525 "no reference point", which the module can show only as the axis
+// error bit with its number.
+enum class NoReferenceAnswer {
+    kCmdError43,       // the default
+    kSystemError525,   // no CMD error; axis error 525 until "reset axis error"
+};
+
+// What becomes of a traverse interrupted by Axis ON = 0 (2.7.2 note: "continued after the axis-ON function
+// according to axis parameter 'switch on traverse mode'"), an open reading (docs/open_points.md).
+enum class InterruptedTraverse {
+    kEnds,                   // the job ends interrupted (HALT); the default
+    kContinuesAfterAxisOn,   // a move's target is approached again by itself once the drive is enabled again in
+                             // ONLINE proper, whatever the traverse bit says (the master removed it meanwhile)
+};
+
+// Whether the axis type changes speed and ramps while it traverses (2.7.2 note: "not possible for all axes
+// types", only PA-CONTROL MP, LV-servoTEC, flexmoTEC, intelliMOT, dunMOT; 2.7.6 names PLS-MP, servoTEC, linMOT,
+// intelliMOT). Where it can, new per-mille values in bytes 4..7 during a move or jog apply at once.
+enum class SpeedChange {
+    kNotWhileTraversing,  // the values are taken with Start only (the default)
+    kWhileTraversing,
+};
+
 struct AxisModuleConfig {
     CmdErrorRestart cmdErrorRestart = CmdErrorRestart::kSameCycle;
+    ActiveForJobs activeFor = ActiveForJobs::kEveryJob;
+    NoReferenceAnswer noReference = NoReferenceAnswer::kCmdError43;
+    InterruptedTraverse interruptedTraverse = InterruptedTraverse::kEnds;
+    SpeedChange speedChange = SpeedChange::kNotWhileTraversing;
 };
 
 class AxisModule {
@@ -76,6 +112,7 @@ public:
     static constexpr std::uint16_t kInadmissible = 20;  // 6.5 "inadmissible command": no / several traverse
                                                         // bits, a bad G123 combination, Start outside ONLINE
     static constexpr int kDefaultConditionInput = 1;    // 2.7.3.10: input 1 at the start of ONLINE
+    static constexpr std::uint16_t kSystemErrorNoReference = 525;  // E525, NoReferenceAnswer::kSystemError525
 
     explicit AxisModule(AxisModuleConfig config = {});
 
@@ -112,6 +149,8 @@ private:
     void StartEdge(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     std::uint16_t TakeOver(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     bool ConditionHolds(const AxisModuleContext& context) const;
+    void ContinueInterruptedTraverse(ServoAxis& axis, const AxisModuleContext& context);
+    void FollowDynamics(const AxisModuleCommand& command, ServoAxis& axis, const AxisModuleContext& context);
     void ShowCmdError(std::uint16_t number);
 
     AxisModuleConfig config_;
@@ -122,6 +161,12 @@ private:
     std::uint32_t job_ = 0;          // the traverse bit of the job taken over; 0: none
     bool jobComplete_ = true;
     bool interrupted_ = false;       // the module has interrupted the job (bit removed, G123)
+    bool continued_ = false;         // the job is an interrupted traverse continued by the controller itself
+    bool toContinue_ = false;        // kContinuesAfterAxisOn: a move was interrupted by Axis ON = 0
+    double target_ = 0.0;            // the target of the last move taken over
+    Dynamics dynamics_{0.0, 0.0, 0.0};
+    std::uint16_t speedPerMille_ = 0;         // the per-mille values in force for the job
+    std::uint16_t accelerationPerMille_ = 0;
     Condition condition_ = Condition::kNone;
     bool active_ = false;
     bool stoppedByG123_ = false;

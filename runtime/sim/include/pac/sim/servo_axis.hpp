@@ -86,6 +86,10 @@ public:
     // Reset "displaced during OFF" (control word bit 13). Always accepted.
     [[nodiscard]] std::uint16_t ResetDisplaced(std::chrono::nanoseconds now);
 
+    // 2.7.6: new speed and ramps for the move under way (axis types that allow it), on to the same target from
+    // the commanded position and speed. False, the move going on as planned, when no move runs, it is on its
+    // final ramp or braking, or it could no longer stop at its target with the new deceleration.
+    bool ChangeDynamics(std::chrono::nanoseconds now, const Dynamics& dynamics);
     // Interrupt (traverse bit removed, CMD stop): brake with the job's deceleration; the job ends interrupted
     // (HALT) once standing. A move already on its final deceleration ramp finishes at its target instead.
     void Interrupt(std::chrono::nanoseconds now);

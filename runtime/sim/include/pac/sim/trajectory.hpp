@@ -39,6 +39,11 @@ public:
     // From standstill at `start` to standstill at `target`: accelerate, cruise at `dynamics.speed`, decelerate.
     // A move too short to reach that speed turns at the highest speed it can reach (no cruise).
     static Trajectory PointToPoint(double start, double target, const Dynamics& dynamics, RampType ramp);
+    // From `speed` (>= 0, towards `target`) at `start` to standstill at `target` with new dynamics: a ramp to
+    // dynamics.speed (or the highest speed the distance allows), cruise, decelerate. nullopt when the distance
+    // is shorter than braking from `speed` with dynamics.deceleration takes (a speed change too late, 2.7.6).
+    static std::optional<Trajectory> FromSpeed(double start, double target, double speed, const Dynamics& dynamics,
+                                               RampType ramp);
     // From standstill, up to `speed`, then on at that speed without end (a search run).
     static Trajectory Run(double start, Direction direction, double speed, double acceleration, RampType ramp);
     // From `speed` (>= 0) in `direction` down to standstill.
@@ -49,6 +54,7 @@ public:
     double VelocityAt(double t) const;      // signed
     double AccelerationAt(double t) const;  // signed (the sign of the velocity change)
     MotionPhase PhaseAt(double t) const;
+    bool FinalRampAt(double t) const;  // on the last ramp, down to standstill (not a ramp to a lower speed)
 
     bool Moves() const { return !segments_.empty(); }
     Direction Dir() const { return sign_ > 0.0 ? Direction::kPositive : Direction::kNegative; }
