@@ -178,6 +178,24 @@ TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
     EXPECT_EQ(bench.Position(1), 10.0f);
 }
 
+// An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever: from
+// 1000 units/s at the axis parameter's 10000 units/s2 the axis brakes for 100 ms, StopTimeout is 20 ms.
+TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
+    McBench bench(GetParam(), 1);
+    bench.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    bench.PowerUp();
+    McBlocks& b = bench.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+    Execute(bench, b.halt);
+    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
+    EXPECT_TRUE(b.halt->ERROR.value);
+    EXPECT_EQ(b.halt->ERRORID.value, kStopTimeout);
+    EXPECT_TRUE(bench.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
+    Release(bench, b.halt);
+    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+}
+
 TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     McBench bench(GetParam(), 1);
     bench.PowerUp();
@@ -267,6 +285,25 @@ TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
     ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
     EXPECT_TRUE(b.stop->DONE.value);
     EXPECT_GT(bench.Position(1), 0.0f) << "stopped before the cam";
+}
+
+// MC_Stop in the scan after MC_Home: the traverse bit of the reference run may fall in the controller cycle
+// that takes it over, before the axis has any speed; the stop still ends and the axis stands, not ACTIVE.
+TEST_P(McSim, AStopRightAfterHomeEndsWithTheAxisStanding) {
+    McBench bench(GetParam(), 1);
+    bench.PowerUp();
+    McBlocks& b = bench.Blocks(1);
+    Execute(bench, b.home);
+    bench.Scan();
+    Execute(bench, b.stop);
+    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
+    EXPECT_TRUE(b.stop->DONE.value) << "ErrorID " << b.stop->ERRORID.value;
+    EXPECT_TRUE(b.home->COMMANDABORTED.value);
+    EXPECT_FALSE(bench.Ref(1).STATUS.ACTIVE);
+    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
+    Release(bench, b.stop);
+    bench.Scan();
+    EXPECT_EQ(bench.State(1), kStandstill);
 }
 
 TEST_P(McSim, AnAxisErrorMeansErrorStopUntilMcResetSeesItGone) {
