@@ -20,6 +20,7 @@ inline const std::uint32_t kNotReady = kGvl["PAC_LIB_ERR_NOT_READY"];
 inline const std::uint32_t kAxisError = kGvl["PAC_LIB_ERR_AXIS_ERROR"];
 inline const std::uint32_t kInvalidVelocity = kGvl["PAC_LIB_ERR_INVALID_VELOCITY"];
 inline const std::uint32_t kInvalidAcceleration = kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"];
+inline const std::uint32_t kInvalidPosition = kGvl["PAC_LIB_ERR_INVALID_POSITION"];
 inline const std::uint32_t kMcDisabled = kGvl["PAC_LIB_ERR_MC_DISABLED"];
 inline const std::uint32_t kMcErrorStop = kGvl["PAC_LIB_ERR_MC_ERROR_STOP"];
 inline const std::uint32_t kMcStopping = kGvl["PAC_LIB_ERR_MC_STOPPING"];

@@ -457,6 +457,8 @@ TEST_P(McSim, WhatThePaControlCannotDoIsRefusedAndAbortsNothing) {
     refusedB([&] { b.moveB->VELOCITY.value = NAN; }, kInvalidVelocity, "NaN");
     refusedB([&] { b.moveB->ACCELERATION.value = -1.0f; }, kInvalidAcceleration, "negative acceleration");
     refusedB([&] { b.moveB->ACCELERATION.value = 700000.0f; }, kInvalidAcceleration, "beyond 65535 per mille");
+    refusedB([&] { b.moveB->POSITION.value = NAN; }, kInvalidPosition, "Position NaN");
+    refusedB([&] { b.moveB->POSITION.value = INFINITY; }, kInvalidPosition, "Position infinite");
     b.velocity->VELOCITY.value = 100.0f;
     b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_SHORTEST_WAY;
     Execute(bench, b.velocity);
