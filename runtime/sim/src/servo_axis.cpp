@@ -48,7 +48,13 @@ ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
 // ---- time and positions -------------------------------------------------------------------------------
 
 double ServoAxis::Seconds() const { return ToSeconds(now_ - trajectoryStart_); }
-double ServoAxis::CommandedMachine() const { return trajectory_.PositionAt(Seconds()); }
+double ServoAxis::CommandedMachine() const {
+    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
+    // cycle (position, limit switches, following error) evaluate it once.
+    if (!settledAt_ || *settledAt_ != now_) return trajectory_.PositionAt(Seconds());
+    if (!settledCommanded_) settledCommanded_ = trajectory_.PositionAt(Seconds());
+    return *settledCommanded_;
+}
 double ServoAxis::ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
 double ServoAxis::CommandedVelocity() const { return trajectory_.VelocityAt(Seconds()); }
 
@@ -92,10 +98,12 @@ void ServoAxis::Update(nanoseconds now) {
     // Nothing changed since the last call brought the axis to this very time: no event is due, nothing settles.
     // The simulator asks several times per cycle (the axis group, the axis module), each search costs.
     if (settledAt_ && *settledAt_ == now) return;
+    settledAt_.reset();  // the events change the axis
     RunEventsUntil(now);
     now_ = now;
     Settle();
     settledAt_ = now;
+    settledCommanded_.reset();
 }
 
 void ServoAxis::Advance(nanoseconds now) {

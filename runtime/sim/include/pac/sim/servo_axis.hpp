@@ -209,6 +209,7 @@ private:
     std::chrono::nanoseconds now_{0};
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
     std::optional<std::chrono::nanoseconds> settledAt_;
+    mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
 
     // Motion: the running profile (machine coordinates), its start, the job's target (NaN: none yet).
     Trajectory trajectory_;
