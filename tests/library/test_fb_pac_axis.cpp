@@ -1299,4 +1299,22 @@ TEST_F(FbPacAxis, NumbersAndActualPositionInBothFormats) {
     EXPECT_EQ(fb_->ACTUALPOSITION.value, 0.0f);
 }
 
+// The FB decodes the module only when something it depends on changed: a new number format with the same
+// bytes on the wire is such a change.
+TEST_F(FbPacAxis, ActualPositionFollowsTheFormatWhileTheImageStays) {
+    AxisImage reply{};
+    pac::test::WriteBe32(reply, 0, status::kDriveEnabled);
+    pac::test::WriteBe32(reply, 8, 0x44200000u);  // IEEE 640.0, or 1142947840 / 1000 as DINT x 1000
+    forcedReply_ = reply;
+    fb_->INTEGERMODE.value = TRUE;
+    Cycle(2);
+    EXPECT_NEAR(fb_->ACTUALPOSITION.value, 1142947.84, 0.2);
+    fb_->INTEGERMODE.value = FALSE;
+    Cycle(1);
+    EXPECT_EQ(fb_->ACTUALPOSITION.value, 640.0f);
+    fb_->INTEGERMODE.value = TRUE;
+    Cycle(1);
+    EXPECT_NEAR(fb_->ACTUALPOSITION.value, 1142947.84, 0.2);
+}
+
 }  // namespace

@@ -48,7 +48,13 @@ ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
 // ---- time and positions -------------------------------------------------------------------------------
 
 double ServoAxis::Seconds() const { return ToSeconds(now_ - trajectoryStart_); }
-double ServoAxis::CommandedMachine() const { return trajectory_.PositionAt(Seconds()); }
+double ServoAxis::CommandedMachine() const {
+    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
+    // cycle (position, limit switches, following error) evaluate it once.
+    if (!settledAt_ || *settledAt_ != now_) return trajectory_.PositionAt(Seconds());
+    if (!settledCommanded_) settledCommanded_ = trajectory_.PositionAt(Seconds());
+    return *settledCommanded_;
+}
 double ServoAxis::ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
 double ServoAxis::CommandedVelocity() const { return trajectory_.VelocityAt(Seconds()); }
 
@@ -89,9 +95,20 @@ bool ServoAxis::OnCam(double machinePosition) const {
 
 void ServoAxis::Update(nanoseconds now) {
     if (now < now_) return;
+    // Nothing changed since the last call brought the axis to this very time: no event is due, nothing settles.
+    // The simulator asks several times per cycle (the axis group, the axis module), each search costs.
+    if (settledAt_ && *settledAt_ == now) return;
+    settledAt_.reset();  // the events change the axis
     RunEventsUntil(now);
     now_ = now;
     Settle();
+    settledAt_ = now;
+    settledCommanded_.reset();
+}
+
+void ServoAxis::Advance(nanoseconds now) {
+    Update(now);
+    settledAt_.reset();  // the caller changes the axis now: the next Update() must look for events again
 }
 
 void ServoAxis::RunEventsUntil(nanoseconds until) {
@@ -345,36 +362,36 @@ std::uint16_t ServoAxis::StartMove(double target, const Dynamics& dynamics, JobO
 }
 
 std::uint16_t ServoAxis::MoveAbsolute(nanoseconds now, double target, const Dynamics& dynamics, JobOptions options) {
-    Update(now);
+    Advance(now);
     return StartMove(target, dynamics, options, true, true);
 }
 
 std::uint16_t ServoAxis::MoveRelative(nanoseconds now, double distance, const Dynamics& dynamics,
                                       JobOptions options) {
-    Update(now);
+    Advance(now);
     return StartMove(CommandedPosition() + distance, dynamics, options, true, true);
 }
 
 std::uint16_t ServoAxis::MoveToMaxRange(nanoseconds now, const Dynamics& dynamics, JobOptions options) {
-    Update(now);
+    Advance(now);
     return StartMove(MaxRange(), dynamics, options, true, true);
 }
 
 std::uint16_t ServoAxis::MoveToMinRange(nanoseconds now, const Dynamics& dynamics, JobOptions options) {
-    Update(now);
+    Advance(now);
     return StartMove(MinRange(), dynamics, options, true, true);
 }
 
 std::uint16_t ServoAxis::Jog(nanoseconds now, Direction direction, double distance, const Dynamics& dynamics,
                              JobOptions options) {
-    Update(now);
+    Advance(now);
     if (const auto refusal = MotionRefusal()) return refusal;
     if (!(distance >= 0.0) || !std::isfinite(distance)) return axis_error::kValueOutsideRange;
     return StartMove(CommandedPosition() + Sign(direction) * distance, dynamics, options, false, false);
 }
 
 std::uint16_t ServoAxis::Home(nanoseconds now) {
-    Update(now);
+    Advance(now);
     if (const auto refusal = MotionRefusal()) return refusal;
     const bool onCam = ReferenceSwitch();
     if (config_.homingMode != HomingMode::kLoadOnSwitch) {
@@ -448,7 +465,7 @@ std::uint16_t ServoAxis::SetPositionRefusal(double position) const {
 }
 
 std::uint16_t ServoAxis::SetPositionReferenced(nanoseconds now, double position) {
-    Update(now);
+    Advance(now);
     if (const auto refusal = SetPositionRefusal(position)) return refusal;
     offset_ = position - ActualMachine();
     referenced_ = true;
@@ -457,7 +474,7 @@ std::uint16_t ServoAxis::SetPositionReferenced(nanoseconds now, double position)
 }
 
 std::uint16_t ServoAxis::ShiftPosition(nanoseconds now, double position) {
-    Update(now);
+    Advance(now);
     if (const auto refusal = SetPositionRefusal(position)) return refusal;
     const double displacement = position - Position();
     offset_ += displacement;
@@ -467,7 +484,7 @@ std::uint16_t ServoAxis::ShiftPosition(nanoseconds now, double position) {
 }
 
 std::uint16_t ServoAxis::DeleteShift(nanoseconds now) {
-    Update(now);
+    Advance(now);
     if (const auto refusal = SetPositionRefusal(0.0)) return refusal;
     offset_ -= shift_;
     shift_ = 0.0;
@@ -476,13 +493,13 @@ std::uint16_t ServoAxis::DeleteShift(nanoseconds now) {
 }
 
 std::uint16_t ServoAxis::ResetDisplaced(nanoseconds now) {
-    Update(now);
+    Advance(now);
     displaced_ = false;
     return axis_error::kNone;
 }
 
 bool ServoAxis::ChangeDynamics(nanoseconds now, const Dynamics& dynamics) {
-    Update(now);
+    Advance(now);
     if (activity_ != Activity::kPositioning || !trajectory_.Moves() || !IsValid(dynamics)) return false;
     if (trajectory_.FinalRampAt(Seconds())) return false;
     const auto plan = Trajectory::FromSpeed(CommandedMachine(), target_, std::fabs(CommandedVelocity()), dynamics,
@@ -496,14 +513,14 @@ bool ServoAxis::ChangeDynamics(nanoseconds now, const Dynamics& dynamics) {
 }
 
 void ServoAxis::Interrupt(nanoseconds now) {
-    Update(now);
+    Advance(now);
     BrakeJob();
     RunEventsUntil(now_);
     Settle();
 }
 
 void ServoAxis::EmergencyStop(nanoseconds now) {
-    Update(now);
+    Advance(now);
     if (trajectory_.Moves()) HoldAt(CommandedMachine());
     if (activity_ != Activity::kNone) EndJob(true);
     ApplyDriveRequest();
@@ -511,7 +528,7 @@ void ServoAxis::EmergencyStop(nanoseconds now) {
 }
 
 bool ServoAxis::ResetAxisError(nanoseconds now) {
-    Update(now);
+    Advance(now);
     if (axisError_ == 0) return true;
     if (IsPowered(drive_) && std::isfinite(config_.followingErrorLimit) &&
         std::fabs(FollowingError()) > config_.followingErrorLimit) {
@@ -551,7 +568,7 @@ void ServoAxis::ApplyDriveRequest() {
 }
 
 void ServoAxis::SetAxisOn(nanoseconds now, bool on) {
-    Update(now);
+    Advance(now);
     axisOn_ = on;
     ApplyDriveRequest();
     RunEventsUntil(now_);
@@ -559,7 +576,7 @@ void ServoAxis::SetAxisOn(nanoseconds now, bool on) {
 }
 
 void ServoAxis::SetDriveDisabled(nanoseconds now, bool disabled) {
-    Update(now);
+    Advance(now);
     driveDisabled_ = disabled;
     ApplyDriveRequest();
     RunEventsUntil(now_);
@@ -568,7 +585,7 @@ void ServoAxis::SetDriveDisabled(nanoseconds now, bool disabled) {
 
 void ServoAxis::SetConfig(nanoseconds now, const ServoAxisConfig& config) {
     config.Validate();
-    Update(now);
+    Advance(now);
     ChangeRegime([&] { config_ = config; });
     ApplyDriveRequest();
     CheckFollowingError();
@@ -580,7 +597,7 @@ void ServoAxis::SetConfig(nanoseconds now, const ServoAxisConfig& config) {
 
 void ServoAxis::SetDisturbance(nanoseconds now, double offset) {
     if (!std::isfinite(offset)) throw std::invalid_argument("ServoAxis::SetDisturbance: offset must be finite");
-    Update(now);
+    Advance(now);
     ChangeRegime([&] { disturbance_ = offset; });
     CheckFollowingError();
     RunEventsUntil(now_);
@@ -588,7 +605,7 @@ void ServoAxis::SetDisturbance(nanoseconds now, double offset) {
 }
 
 void ServoAxis::SetBlocked(nanoseconds now, bool blocked) {
-    Update(now);
+    Advance(now);
     if (blocked == blocked_) return;
     ChangeRegime([&] {
         if (blocked) blockedAt_ = ActualMachine();
@@ -601,7 +618,7 @@ void ServoAxis::SetBlocked(nanoseconds now, bool blocked) {
 
 bool ServoAxis::Displace(nanoseconds now, double delta) {
     if (!std::isfinite(delta)) throw std::invalid_argument("ServoAxis::Displace: delta must be finite");
-    Update(now);
+    Advance(now);
     if (IsPowered(drive_) || blocked_) return false;
     const bool wasOnCam = ReferenceSwitch();
     HoldAt(CommandedMachine() + delta);  // without current the command follows the axis
@@ -615,7 +632,7 @@ bool ServoAxis::Displace(nanoseconds now, double delta) {
 
 void ServoAxis::Place(nanoseconds now, double position) {
     if (!std::isfinite(position)) throw std::invalid_argument("ServoAxis::Place: position must be finite");
-    Update(now);
+    Advance(now);
     if (activity_ != Activity::kNone) EndJob(false);
     interrupted_ = false;
     const double machine = position - offset_;
@@ -627,7 +644,7 @@ void ServoAxis::Place(nanoseconds now, double position) {
 
 void ServoAxis::RaiseAxisError(nanoseconds now, std::uint16_t number) {
     if (number == 0) throw std::invalid_argument("ServoAxis::RaiseAxisError: number must not be 0");
-    Update(now);
+    Advance(now);
     Fail(number, ActualMachine() - disturbance_);
     Settle();
 }

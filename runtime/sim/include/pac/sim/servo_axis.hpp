@@ -173,6 +173,8 @@ private:
     std::uint16_t SetPositionRefusal(double position) const;
     bool IntoActuatedLimitSwitch(Direction direction) const;
 
+    // Update(), for the calls that change the axis after it: every one of them comes through here.
+    void Advance(std::chrono::nanoseconds now);
     void RunEventsUntil(std::chrono::nanoseconds until);
     std::optional<Event> NextEvent() const;
     std::optional<std::chrono::nanoseconds> WhenCommandReaches(double commanded) const;
@@ -205,6 +207,9 @@ private:
 
     ServoAxisConfig config_;
     std::chrono::nanoseconds now_{0};
+    // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
+    std::optional<std::chrono::nanoseconds> settledAt_;
+    mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
 
     // Motion: the running profile (machine coordinates), its start, the job's target (NaN: none yet).
     Trajectory trajectory_;
