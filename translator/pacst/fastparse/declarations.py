@@ -46,7 +46,7 @@ class Declarations:
         raw = [s.keyword("TYPE"), None, self._type_declaration(s)]
         s.semicolons(raw, least=0)
         raw.append(s.keyword("END_TYPE"))
-        s.semicolons(raw, least=0)
+        _no_trailing_semicolon(s)
         return node("data_type_declaration", raw)
 
     def _type_declaration(self, s):
@@ -169,7 +169,7 @@ class Declarations:
         word = s.peek_word()
         if word == "VAR":
             rule, attrs, body = ("function_var_declarations" if in_function else "var_declarations"), True, True
-        elif word in _BLOCKS:
+        elif word in _BLOCKS and not (in_function and word == "VAR_TEMP"):
             rule, attrs, body = _BLOCKS[word]
         else:
             return None
@@ -183,7 +183,9 @@ class Declarations:
                 raw.append(self._var_decl(s))
                 s.semicolons(raw)
         raw.append(s.keyword("END_VAR"))
-        s.semicolons(raw, least=0)
+        if s.peek_punct() == ";":
+            # `END_VAR;` before a body: the `;` may be the block's or an empty statement of the body.
+            raise Decline("; after END_VAR")
         return node(rule, raw)
 
     def _var_blocks(self, s, in_function):
@@ -206,7 +208,7 @@ class Declarations:
             s.semicolons(decl)
             raw.append(node("global_var_decl", decl))
         raw.append(s.keyword("END_VAR"))
-        s.semicolons(raw, least=0)
+        _no_trailing_semicolon(s)
         return node("global_var_declarations", raw)
 
     # POUs
@@ -215,11 +217,11 @@ class Declarations:
         raw = [s.keyword("FUNCTION"), None, self._identifier(s), s.punct(":")]
         spec = self._specification(s)
         raw.append(node("indirect_simple_specification", [None, spec, None]))
-        s.semicolons(raw, least=0)
+        _no_trailing_semicolon(s)
         blocks = self._var_blocks(s, in_function=True)
         raw += blocks or [None]
         raw += [self._st.statement_list(s), s.keyword("END_FUNCTION")]
-        s.semicolons(raw, least=0)
+        _no_trailing_semicolon(s)
         return node("function_declaration", raw)
 
     def _function_block(self, s):
@@ -228,5 +230,12 @@ class Declarations:
             raise Decline("inheritance")
         raw += self._var_blocks(s, in_function=False)
         raw += [self._st.statement_list(s), s.word_token("END_FUNCTION_BLOCK")]
-        s.semicolons(raw, least=0)
+        _no_trailing_semicolon(s)
         return node("function_block_type_declaration", raw)
+
+
+def _no_trailing_semicolon(s):
+    """A `;` after the end of a file's element (or after a FUNCTION's header) may belong to it or stand
+    alone (an empty element or statement); which, blark's parser decides."""
+    if s.peek_punct() == ";":
+        raise Decline("; after the end of an element")

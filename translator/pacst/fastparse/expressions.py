@@ -90,6 +90,8 @@ class Expressions:
 
     def literal_label(self, s):
         """A CASE label's number: an integer_literal, not an expression."""
+        if s.peek_char() in "-+":
+            return self._literals.signed_integer_literal(s)
         return self._literals.integer_literal(s)
 
     def variable_name(self, s):

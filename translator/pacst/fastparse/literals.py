@@ -16,7 +16,8 @@ _INTEGER = re.compile(r"[0-9][0-9_]*")
 _SIGNED = re.compile(r"[-+][0-9][0-9_]*")
 _FIXED_POINT = re.compile(r"[0-9][0-9_]*\.[0-9][0-9_]*")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_STRING = re.compile(r"'[^$'\n]*'")
+# A string without line breaks; `$` only in the escapes blark's grammar knows.
+_STRING = re.compile(r"'([^$'\n]|\$[$LNPRTlnprt']|\$[0-9A-F][0-9A-F])*'")
 _WORD_CHAR = re.compile(r"[A-Za-z0-9_.#]")
 # Duration units, smallest last: each but the last may be followed by the next one.
 _UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"))
@@ -68,7 +69,7 @@ class Literals:
         if c == "'":
             span = s.pattern(_STRING, skip=False)
             if span is None:
-                raise Decline("string with escapes")
+                raise Decline("string not read here")
             tok = s.token("SINGLE_BYTE_CHARACTER_STRING", *span)
             s.skip()
             return node("string_literal", [tok])
@@ -106,6 +107,15 @@ class Literals:
         tok = s.token("INTEGER", *span)
         _end_of_literal(s)
         return node("integer_literal", [None, node("integer", [tok])])
+
+    def signed_integer_literal(self, s):
+        """integer_literal of a number with its sign (a CASE label's form)."""
+        span = s.pattern(_SIGNED, skip=False)
+        if span is None:
+            raise Decline("signed number expected")
+        tok = s.token("SIGNED_INTEGER", *span)
+        _end_of_literal(s)
+        return node("integer_literal", [None, node("signed_integer", [tok])])
 
     def _typed(self, s, word, m):
         type_start, hash_end = s.pos, m.end()

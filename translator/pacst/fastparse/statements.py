@@ -57,18 +57,18 @@ class Statements:
             assign = s.token("ASSIGNMENT", start, s.pos)
             s.skip()
             raw = [target, assign, self._x.expression(s)]
-            s.semicolons(raw)
+            _end(s, raw, least=1)
             return node("assignment_statement", raw)
         if p == "(":
             raw = [self._x.function_call(s, target)]
-            s.semicolons(raw)
+            _end(s, raw, least=1)
             return node("function_call_statement", raw)
         raise Decline("statement not read here")
 
     def _bare(self, rule, word):
         def read(s):
             raw = [s.keyword(word)]
-            s.semicolons(raw)
+            _end(s, raw, least=1)
             return node(rule, raw)
         return read
 
@@ -79,7 +79,7 @@ class Statements:
             raw.append(node("else_if_clause", clause))
         raw.append(self._else(s))
         raw.append(s.keyword("END_IF"))
-        s.semicolons(raw, least=0)
+        _end(s, raw, least=0)
         return node("if_statement", raw)
 
     def _else(self, s):
@@ -97,7 +97,7 @@ class Statements:
         if not elements:
             raise Decline("CASE without branches")
         raw += [node("case_elements", elements), self._else(s), s.keyword("END_CASE")]
-        s.semicolons(raw, least=0)
+        _end(s, raw, least=0)
         return node("case_statement", raw)
 
     def _case_element(self, s):
@@ -109,7 +109,7 @@ class Statements:
         return node("case_element", raw)
 
     def _case_label(self, s):
-        if s.peek_char().isdigit():
+        if s.peek_char().isdigit() or s.peek_char() in "-+" and s.peek_char(1).isdigit():
             start = s.pos
             low = self._x.literal_label(s)
             if s.peek_punct() != "..":
@@ -130,13 +130,13 @@ class Statements:
     def _while(self, s):
         raw = [s.keyword("WHILE"), self._x.expression(s), s.keyword("DO"), self._required_list(s),
                s.keyword("END_WHILE")]
-        s.semicolons(raw, least=0)
+        _end(s, raw, least=0)
         return node("while_statement", raw)
 
     def _repeat(self, s):
         raw = [s.keyword("REPEAT"), self._required_list(s), s.keyword("UNTIL"), self._x.expression(s),
                s.keyword("END_REPEAT")]
-        s.semicolons(raw, least=0)
+        _end(s, raw, least=0)
         return node("repeat_statement", raw)
 
     def _required_list(self, s):
@@ -147,10 +147,18 @@ class Statements:
 
 
 def _is_label(s):
-    """Whether the name at the position is followed by `:` (and not `:=`): a CASE label."""
+    """Whether the name at the position is followed by `:` (not `:=`) or `,`: a CASE label."""
     save = s.pos
     try:
         s.word_token("IDENTIFIER")
-        return s.peek_punct() == ":"
+        return s.peek_punct() in (":", ",")
     finally:
         s.pos = save
+
+
+def _end(s, raw, least):
+    """The `;` that end a statement. A second one would be an empty statement, which blark may take
+    either way and the subset refuses: declined."""
+    s.semicolons(raw, least)
+    if s.peek_punct() == ";":
+        raise Decline("empty statement")

@@ -6,7 +6,9 @@ import re
 INTEGER_TYPES = frozenset("SINT INT DINT LINT USINT UINT UDINT ULINT".split())
 REAL_TYPES = frozenset(("REAL", "LREAL"))
 BIT_STRING_TYPES = frozenset("BOOL BYTE WORD DWORD LWORD".split())
-DATE_TYPES = frozenset(("TIME",))
+DATE_TYPES = frozenset(("TIME", "LTIME"))
+# Other date and time types: left to blark's parser.
+OTHER_DATE_TYPES = frozenset("DATE LDATE TIME_OF_DAY TOD LTIME_OF_DAY LTOD DATE_AND_TIME DT LDATE_AND_TIME LDT".split())
 
 
 def elementary_type(word):
