@@ -1,7 +1,11 @@
-"""Parses ST files with blark and caches the typed AST per file content.
+"""Parses ST files to blark's typed AST and caches it per file content.
 
-blark needs several milliseconds per source line, so a rebuild after touching one file re-parses
-only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
+The parse itself is the fast parser's (fastparse/), which builds exactly the tree blark's Earley
+parser would; blark's Earley parser (several milliseconds per source line) parses only what the
+fast parser declines: text outside the portable subset and every syntax error, so that refusals
+keep blark's messages and positions. blark's preprocessing and transform run as they are.
+
+A rebuild after touching one file re-parses only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
 of its text and the versions of blark, of the lexical checks and of this cache format. The files
 the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
 timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
@@ -25,6 +29,7 @@ from blark.parse import new_parser, parse_source_code
 
 from . import lexcheck
 from .errors import StError
+from .fastparse import Decline, FastParser
 
 _CACHE_FORMAT = 2
 # Below about a second of parsing, starting worker processes costs more than it saves.
@@ -66,23 +71,45 @@ class _ParserPickler(pickle.Pickler):
         return NotImplemented
 
 
+class _FastFirst:
+    """The parser parse_source_code is given: the fast parser, and blark's where that declines."""
+
+    def __init__(self, earley):
+        self.options = earley.options
+        self._earley = earley
+        self._fast = FastParser(earley)
+
+    def parse(self, text, start):
+        if start == "iec_source":
+            try:
+                return self._fast.parse(text)
+            except Decline:
+                pass
+        return self._earley.parse(text, start=start)
+
+
 # The one parser of this process (and of the workers it forks), from _parser().
 _PARSER = None
 
 
-def _parser(cache_dir):
+def _earley_parser(cache_dir):
     """blark's parser: from the cache when it holds one for this grammar and these versions, else built
     (and then stored there)."""
+    key = _parser_key() if cache_dir else None
+    parser = _cached_tree(cache_dir, key) if key else None
+    if parser is None:
+        parser = new_parser()
+        if key:
+            buf = io.BytesIO()
+            _ParserPickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(parser)
+            _store(cache_dir, key, buf.getvalue())
+    return parser
+
+
+def _parser(cache_dir):
     global _PARSER
     if _PARSER is None:
-        key = _parser_key() if cache_dir else None
-        _PARSER = _cached_tree(cache_dir, key) if key else None
-        if _PARSER is None:
-            _PARSER = new_parser()
-            if key:
-                buf = io.BytesIO()
-                _ParserPickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(_PARSER)
-                _store(cache_dir, key, buf.getvalue())
+        _PARSER = _FastFirst(_earley_parser(cache_dir))
     return _PARSER
 
 
