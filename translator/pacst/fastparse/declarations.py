@@ -218,8 +218,8 @@ class Declarations:
         spec = self._specification(s)
         raw.append(node("indirect_simple_specification", [None, spec, None]))
         _no_trailing_semicolon(s)
-        blocks = self._var_blocks(s, in_function=True)
-        raw += blocks or [None]
+        # `[ function_var_block+ ]` leaves no placeholder when absent: its content is an inlined rule.
+        raw += self._var_blocks(s, in_function=True)
         raw += [self._st.statement_list(s), s.keyword("END_FUNCTION")]
         _no_trailing_semicolon(s)
         return node("function_declaration", raw)

@@ -157,8 +157,11 @@ def _is_label(s):
 
 
 def _end(s, raw, least):
-    """The `;` that end a statement. A second one would be an empty statement, which blark may take
-    either way and the subset refuses: declined."""
-    s.semicolons(raw, least)
+    """The `;` that ends a statement (`least` 0: that may end one). A second one would be an empty
+    statement, which blark may take either way and the subset refuses: declined."""
+    if s.peek_punct() == ";":
+        raw.append(s.punct(";"))
+    elif least:
+        raise Decline("expected ;")
     if s.peek_punct() == ";":
         raise Decline("empty statement")

@@ -1,0 +1,75 @@
+"""The oracle of the fast parser: blark's Earley parser on the same text. Shared by the corpus and
+the generated-input tests (test_fast_parser_*.py)."""
+import os
+import sys
+
+import lark
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(REPO, "translator"))
+from blark import util  # noqa: E402
+from blark.parse import new_parser  # noqa: E402
+
+from pacst.fastparse import Decline, FastParser  # noqa: E402
+
+_POSITIONS = ("line", "column", "end_line", "end_column", "start_pos", "end_pos")
+_META = _POSITIONS + tuple("container_" + p for p in _POSITIONS)
+
+
+def difference(fast, earley, path=""):
+    """Where the two trees differ (a path and what), or None. lark's Token == compares only the text, so
+    token types are compared here, and every position of every node and token."""
+    if isinstance(fast, lark.Tree) and isinstance(earley, lark.Tree):
+        here = f"{path}/{earley.data}"
+        if fast.data != earley.data:
+            return f"{here}: rule {fast.data}"
+        if fast.meta.empty != earley.meta.empty:
+            return f"{here}: meta empty {fast.meta.empty} vs {earley.meta.empty}"
+        for attr in _META:
+            a, b = getattr(fast.meta, attr, None), getattr(earley.meta, attr, None)
+            if a != b:
+                return f"{here}: {attr} {a} vs {b}"
+        if len(fast.children) != len(earley.children):
+            return f"{here}: {len(fast.children)} children vs {len(earley.children)}"
+        for i, (a, b) in enumerate(zip(fast.children, earley.children)):
+            found = difference(a, b, f"{here}[{i}]")
+            if found:
+                return found
+        return None
+    if isinstance(fast, lark.Token) and isinstance(earley, lark.Token):
+        if (fast.type, fast.value) != (earley.type, earley.value):
+            return f"{path}: token {fast.type}={fast.value!r} vs {earley.type}={earley.value!r}"
+        for attr in _POSITIONS:
+            if getattr(fast, attr) != getattr(earley, attr):
+                return f"{path}: token {earley!r} {attr} {getattr(fast, attr)} vs {getattr(earley, attr)}"
+        return None
+    if fast is None and earley is None:
+        return None
+    return f"{path}: {fast!r:.60} vs {earley!r:.60}"
+
+
+class Oracle:
+    """Both parsers on blark's processed text of an ST source."""
+
+    def __init__(self):
+        self.earley = new_parser()
+        self.fast = FastParser(self.earley)
+
+    @staticmethod
+    def processed(source):
+        return util.find_and_clean_comments(source)[1]
+
+    def compare(self, source):
+        """("declined", None), ("same", None) or ("different", what): the fast parser's tree against
+        Earley's. A text Earley refuses must be declined."""
+        text = self.processed(source)
+        try:
+            fast = self.fast.parse(text)
+        except Decline:
+            return "declined", None
+        try:
+            earley = self.earley.parse(text, start="iec_source")
+        except lark.exceptions.LarkError as exc:
+            return "different", f"the fast parser accepted what Earley refuses: {exc}"
+        found = difference(fast, earley)
+        return ("different", found) if found else ("same", None)
