@@ -49,7 +49,7 @@ def statements(expr):
     def extend(body):
         bodies = st.lists(body, max_size=3).map(" ".join)
         return (st.tuples(expr, bodies, st.lists(st.tuples(expr, bodies), max_size=2), st.none() | bodies,
-                          st.sampled_from(["END_IF;", "END_IF", "END_IF;;"]))
+                          st.sampled_from(["END_IF;"] * 4 + ["END_IF", "END_IF;;"]))
                 .map(lambda t: f"IF {t[0]} THEN {t[1]} "
                      + "".join(f"ELSIF {c} THEN {b} " for c, b in t[2])
                      + ("" if t[3] is None else f"ELSE {t[3]} ") + t[4])
@@ -62,7 +62,7 @@ def statements(expr):
     return st.recursive(simple, extend, max_leaves=6)
 
 
-DECLARATIONS = ["a : INT;", "a, b : DINT := 5;", "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;",
+DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : UINT := 16#FF;", "a, b : DINT := 5;", "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;",
                 "s : STRING;", "s : STRING := 'x';", "r : LREAL := -1.5;", "e : E_Mode := PAC_A;",
                 "arr : T_Arr;", "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "u : LTIME;", "q : DATE;"]
 BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP", "VAR_STAT"]
@@ -75,6 +75,7 @@ def declarations():
 
 
 TYPES = ["TYPE E_Mode : (PAC_A, PAC_B); END_TYPE", "TYPE T_Arr : ARRAY[1..8] OF BYTE; END_TYPE",
+         "TYPE E_Mode :\n(\n  PAC_A,\n  PAC_B\n);\nEND_TYPE", "TYPE T_Arr : ARRAY[-2..2, 0..1] OF ST_S;\nEND_TYPE",
          "TYPE ST_S : STRUCT a : INT; b : WORD := 16#1; END_STRUCT; END_TYPE", "TYPE T_A : INT; END_TYPE",
          "TYPE E_B : (B1, B2) INT; END_TYPE", "TYPE ST_E : STRUCT END_STRUCT END_TYPE;"]
 

@@ -33,23 +33,25 @@ _SPACE = re.compile(r"[ \t\f\r\n]+")
 _PUNCT = re.compile(r":=|=>|<>|<=|>=|\.\.|[-+*/=<>()\[\],;:.#^]")
 
 
-def _span(item):
-    """The item whose position starts (or ends) a node: a Tree with a position, a Token or an Anon."""
-    if item is None:
-        return None
-    if isinstance(item, Tree):
-        return item.meta if not item.meta.empty else None
-    return item
-
-
 def node(data, raw):
     """Tree `data` over `raw` (children, None placeholders and Anon tokens), positioned as lark does."""
-    children = [c for c in raw if c.__class__ is not Anon]
-    tree = Tree(data, children)
-    meta = tree.meta
-    first = next((s for s in map(_span, raw) if s is not None), None)
+    children = []
+    first = last = None
+    for item in raw:
+        if item is None:
+            children.append(None)
+            continue
+        if item.__class__ is Anon:
+            span = item
+        else:
+            children.append(item)
+            span = item if item.__class__ is not Tree else (None if item.meta.empty else item.meta)
+        if span is not None:
+            if first is None:
+                first = span
+            last = span
+    meta = Meta()
     if first is not None:
-        last = next(s for s in map(_span, reversed(raw)) if s is not None)
         meta.empty = False
         meta.line = meta.container_line = first.line
         meta.column = meta.container_column = first.column
@@ -57,7 +59,7 @@ def node(data, raw):
         meta.end_line = meta.container_end_line = last.end_line
         meta.end_column = meta.container_end_column = last.end_column
         meta.end_pos = meta.container_end_pos = last.end_pos
-    return tree
+    return Tree(data, children, meta)
 
 
 class Scanner:
