@@ -37,14 +37,14 @@ def expressions():
 
 
 def _labels():
-    label = st.sampled_from(["1", "2", "-5", "+3", "0", "10..20", "-5..-2", "PAC_A", "PAC_B", "16#F", "E.A"])
+    label = st.sampled_from(["1", "2", "-5", "+3", "0", "10..20", "-5..-2", "PAC_A", "PAC_B"] * 2 + ["16#F", "E.A"])
     return st.lists(label, min_size=1, max_size=3).map(", ".join)
 
 
 def statements(expr):
     simple = (st.tuples(st.sampled_from(NAMES[:8]), expr).map(lambda t: f"{t[0]} := {t[1]};")
               | expr.map(lambda e: f"fb(IN := {e});")
-              | st.sampled_from(["EXIT;", "RETURN;", "CONTINUE;", ";", "a := 1;;", "fb();", "a := b := 1;"]))
+              | st.sampled_from(["EXIT;", "RETURN;", "CONTINUE;", "fb();"] * 2 + [";", "a := 1;;", "a := b := 1;"]))
 
     def extend(body):
         bodies = st.lists(body, max_size=3).map(" ".join)
@@ -64,20 +64,20 @@ def statements(expr):
 
 DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : UINT := 16#FF;", "a, b : DINT := 5;", "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;",
                 "s : STRING;", "s : STRING := 'x';", "r : LREAL := -1.5;", "e : E_Mode := PAC_A;",
-                "arr : T_Arr;", "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "u : LTIME;", "q : DATE;"]
-BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP", "VAR_STAT"]
+                "arr : T_Arr;", "u : LTIME;"] * 3 + ["x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
+BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + ["VAR_STAT"]
 
 
 def declarations():
     block = st.tuples(st.sampled_from(BLOCKS), st.lists(st.sampled_from(DECLARATIONS), max_size=3),
-                      st.sampled_from(["END_VAR", "END_VAR;"])).map(lambda t: f"{t[0]}\n  {' '.join(t[1])}\n{t[2]}")
+                      st.sampled_from(["END_VAR"] * 5 + ["END_VAR;"])).map(lambda t: f"{t[0]}\n  {' '.join(t[1])}\n{t[2]}")
     return st.lists(block, max_size=3).map("\n".join)
 
 
 TYPES = ["TYPE E_Mode : (PAC_A, PAC_B); END_TYPE", "TYPE T_Arr : ARRAY[1..8] OF BYTE; END_TYPE",
          "TYPE E_Mode :\n(\n  PAC_A,\n  PAC_B\n);\nEND_TYPE", "TYPE T_Arr : ARRAY[-2..2, 0..1] OF ST_S;\nEND_TYPE",
-         "TYPE ST_S : STRUCT a : INT; b : WORD := 16#1; END_STRUCT; END_TYPE", "TYPE T_A : INT; END_TYPE",
-         "TYPE E_B : (B1, B2) INT; END_TYPE", "TYPE ST_E : STRUCT END_STRUCT END_TYPE;"]
+         "TYPE ST_S : STRUCT a : INT; b : WORD := 16#1; END_STRUCT; END_TYPE"] * 2 + [
+         "TYPE T_A : INT; END_TYPE", "TYPE E_B : (B1, B2) INT; END_TYPE", "TYPE ST_E : STRUCT END_STRUCT END_TYPE;"]
 
 
 def pous(expr):
