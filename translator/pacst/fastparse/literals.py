@@ -12,6 +12,10 @@ _DIGIT_TOKEN = {"2": "BIT_STRING", "8": "OCTAL_STRING", "16": "HEX_STRING"}
 _INTEGER_TREE = {"2": "binary_integer", "8": "octal_integer", "16": "hex_integer"}
 _BIT_STRING_TREE = {"2": "binary_bit_string_literal", "8": "octal_bit_string_literal",
                     "16": "hex_bit_string_literal"}
+# The terminal of the type before `#` in a typed literal.
+_TYPED_KINDS = {**{w: "INTEGER_TYPE_NAME" for w in INTEGER_TYPES},
+                **{w: "BIT_STRING_TYPE_NAME" for w in BIT_STRING_TYPES},
+                **{w: "REAL_TYPE_NAME" for w in REAL_TYPES}}
 _INTEGER = re.compile(r"[0-9][0-9_]*")
 _SIGNED = re.compile(r"[-+][0-9][0-9_]*")
 _FIXED_POINT = re.compile(r"[0-9][0-9_]*\.[0-9][0-9_]*")
@@ -32,12 +36,14 @@ def _end_of_literal(s):
     s.skip()
 
 
-def _based_digits(s, base):
-    """The digits after `2#`, `8#` or `16#` as their token."""
-    span = s.pattern(_DIGITS[base], skip=False)
+def _number(s, regex, kind):
+    """The number `regex` reads at the position as a Token of `kind`, the literal ending there."""
+    span = s.pattern(regex, skip=False)
     if span is None:
-        raise Decline("digits expected")
-    return s.token(_DIGIT_TOKEN[base], *span)
+        raise Decline(f"{kind} expected")
+    tok = s.token(kind, *span)
+    _end_of_literal(s)
+    return tok
 
 
 def _prefix(s, regex):
@@ -86,36 +92,36 @@ class Literals:
         return node(word.lower(), raw + [s.word_token(kind)])
 
     def _untyped_number(self, s):
-        anon, m = _prefix(s, _BASE)
-        if anon is not None:
-            base = m.group(1)
-            tok = _based_digits(s, base)
-            _end_of_literal(s)
-            return node("integer_literal", [None, node(_INTEGER_TREE[base], [anon, tok])])
-        span = s.pattern(self._real, skip=False)
-        if span is not None:
-            tok = s.token(self._real_type, *span)
-            _end_of_literal(s)
-            return node("real_literal", [None, tok])
+        based = self._based(s, "integer_literal", [None])
+        if based is not None:
+            return based
+        if self._real.match(s.text, s.pos):
+            return node("real_literal", [None, _number(s, self._real, self._real_type)])
         return self.integer_literal(s)
 
-    def integer_literal(self, s):
-        """integer_literal of a plain decimal number (the CASE labels' form too)."""
-        span = s.pattern(_INTEGER, skip=False)
-        if span is None:
-            raise Decline("number expected")
-        tok = s.token("INTEGER", *span)
-        _end_of_literal(s)
-        return node("integer_literal", [None, node("integer", [tok])])
+    def _based(self, s, rule, raw):
+        """The `2#`, `8#` or `16#` number at the position under `rule` ([type and `#`] or [None] in
+        `raw`), or None when the position holds none."""
+        anon, m = _prefix(s, _BASE)
+        if anon is None:
+            return None
+        base = m.group(1)
+        tok = _number(s, _DIGITS[base], _DIGIT_TOKEN[base])
+        if rule == "integer_literal":
+            return node(rule, raw + [node(_INTEGER_TREE[base], [anon, tok])])
+        return node(_BIT_STRING_TREE[base], raw + [anon, tok])
+
+    def integer_literal(self, s, raw=(None,)):
+        """integer_literal of a decimal number, signed only after a type (`DINT#-5`)."""
+        if raw[0] is not None and _SIGNED.match(s.text, s.pos):
+            signed = _number(s, _SIGNED, "SIGNED_INTEGER")
+            return node("integer_literal", list(raw) + [node("signed_integer", [signed])])
+        return node("integer_literal", list(raw) + [node("integer", [_number(s, _INTEGER, "INTEGER")])])
 
     def signed_integer_literal(self, s):
         """integer_literal of a number with its sign (a CASE label's form)."""
-        span = s.pattern(_SIGNED, skip=False)
-        if span is None:
-            raise Decline("signed number expected")
-        tok = s.token("SIGNED_INTEGER", *span)
-        _end_of_literal(s)
-        return node("integer_literal", [None, node("signed_integer", [tok])])
+        signed = _number(s, _SIGNED, "SIGNED_INTEGER")
+        return node("integer_literal", [None, node("signed_integer", [signed])])
 
     def _typed(self, s, word, m):
         type_start, hash_end = s.pos, m.end()
@@ -127,50 +133,20 @@ class Literals:
                 anon = s.anon(type_start, hash_end)
                 s.pos = hash_end
                 return self._boolean(s, [anon], after.group(0).upper())
-        if word in INTEGER_TYPES:
-            kind = "INTEGER_TYPE_NAME"
-        elif word in BIT_STRING_TYPES:
-            kind = "BIT_STRING_TYPE_NAME"
-        elif word in REAL_TYPES:
-            kind = "REAL_TYPE_NAME"
-        else:
+        kind = _TYPED_KINDS.get(word)
+        if kind is None:
             raise Decline("typed literal of another type")
-        type_tok = s.token(kind, type_start, hash_end - 1)
-        raw = [type_tok, s.anon(hash_end - 1, hash_end)]
+        raw = [s.token(kind, type_start, hash_end - 1), s.anon(hash_end - 1, hash_end)]
         s.pos = hash_end
         if kind == "REAL_TYPE_NAME":
-            span = s.pattern(self._real, skip=False)
-            if span is None:
-                raise Decline("real literal expected")
-            raw.append(s.token(self._real_type, *span))
-            _end_of_literal(s)
-            return node("real_literal", raw)
-        anon, bm = _prefix(s, _BASE)
-        if anon is not None:
-            base = bm.group(1)
-            tok = _based_digits(s, base)
-            _end_of_literal(s)
-            if kind == "INTEGER_TYPE_NAME":
-                return node("integer_literal", raw + [node(_INTEGER_TREE[base], [anon, tok])])
-            return node(_BIT_STRING_TREE[base], raw + [anon, tok])
-        if kind == "INTEGER_TYPE_NAME":
-            span = s.pattern(_SIGNED, skip=False)
-            if span is not None:
-                tok = s.token("SIGNED_INTEGER", *span)
-                _end_of_literal(s)
-                return node("integer_literal", raw + [node("signed_integer", [tok])])
-            span = s.pattern(_INTEGER, skip=False)
-            if span is None:
-                raise Decline("number expected")
-            tok = s.token("INTEGER", *span)
-            _end_of_literal(s)
-            return node("integer_literal", raw + [node("integer", [tok])])
-        span = s.pattern(_INTEGER, skip=False)
-        if span is None:
-            raise Decline("number expected")
-        tok = s.token("INTEGER", *span)
-        _end_of_literal(s)
-        return node("bit_string_literal", raw + [tok])
+            return node("real_literal", raw + [_number(s, self._real, self._real_type)])
+        integer = kind == "INTEGER_TYPE_NAME"
+        based = self._based(s, "integer_literal" if integer else "bit_string_literal", raw)
+        if based is not None:
+            return based
+        if integer:
+            return self.integer_literal(s, raw)
+        return node("bit_string_literal", raw + [_number(s, _INTEGER, "INTEGER")])
 
     def _duration(self, s, hash_end):
         raw = [s.anon(s.pos, hash_end - 1), s.anon(hash_end - 1, hash_end)]
