@@ -65,7 +65,8 @@ def statements(expr):
 # Mostly the subset's declarations; a few outside it, which the fast parser must decline.
 DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : UINT := 16#FF;", "a, b : DINT := 5;",
                 "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;", "s : STRING;", "s : STRING := 'x';",
-                "r : LREAL := -1.5;", "e : E_Mode := PAC_A;", "arr : T_Arr;", "u : LTIME;"] * 3 + ["x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
+                "r : LREAL := -1.5;", "e : E_Mode := PAC_A;", "arr : T_Arr;", "u : LTIME;"] * 3 + [
+                "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
 BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + ["VAR_STAT"]
 
 
