@@ -96,7 +96,9 @@ class Expressions:
 
     def variable_name(self, s):
         word = s.peek_word()
-        if word is None or not self._vocabulary.is_identifier(word):
+        if word is None or not self._vocabulary.is_identifier(word) or self._vocabulary.is_type_word(word):
+            # A type's name where a variable stands is outside the subset; which rule blark would
+            # make of it is left to blark.
             raise Decline("identifier expected")
         return node("variable_name", [s.word_token("IDENTIFIER"), None])
 

@@ -41,6 +41,11 @@ class Vocabulary:
             raise RuntimeError(f"blark's grammar has changed: real literal terminals {names}")
         return names[0]
 
+    @staticmethod
+    def is_type_word(word):
+        """An elementary type's name (upper case), which IDENTIFIER's pattern does not exclude."""
+        return elementary_type(word) is not None or word in OTHER_DATE_TYPES or word in ("STRING", "WSTRING")
+
     def is_identifier(self, word):
         m = self._identifier.match(word)
         return m is not None and m.end() == len(word)
