@@ -5,8 +5,9 @@ parser would; blark's Earley parser (several milliseconds per source line) parse
 fast parser declines: text outside the portable subset and every syntax error, so that refusals
 keep blark's messages and positions. blark's preprocessing and transform run as they are.
 
-A rebuild after touching one file re-parses only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
-of its text and the versions of blark, of the lexical checks and of this cache format. The files
+A rebuild after touching one file re-parses only that file: the transformed AST of every other
+file comes from a pickle keyed by the SHA-256 of its text and the versions of blark, of the lexical
+checks, of the fast parser and of this cache format. The files
 the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
 timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
 cached too, pickled beside the parses: loading it takes a twentieth of that.
@@ -37,19 +38,24 @@ _CACHE_FORMAT = 2
 _PARALLEL_MIN_CHARS = 100_000
 
 
-def _lexcheck_version():
-    """The lexical checks' own source: a cached parse stands for a text that passed these checks, so a
-    cache hit skips them; changed checks invalidate the cache."""
-    with open(lexcheck.__file__, "rb") as f:
-        return hashlib.sha256(f.read()).hexdigest()
+def _sources_version(modules):
+    """The SHA-256 of the modules' own source. A cached parse stands for a text that passed the lexical
+    checks (a cache hit skips them) and was parsed by the fast parser: changing either invalidates it."""
+    h = hashlib.sha256()
+    for path in modules:
+        with open(path, "rb") as f:
+            h.update(f.read())
+    return h.hexdigest()
 
 
-_LEXCHECK_VERSION = _lexcheck_version()
+_FASTPARSE_DIR = os.path.join(os.path.dirname(__file__), "fastparse")
+_SOURCES_VERSION = _sources_version([lexcheck.__file__] + sorted(
+    os.path.join(_FASTPARSE_DIR, name) for name in os.listdir(_FASTPARSE_DIR) if name.endswith(".py")))
 
 
 def _cache_key(text):
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_LEXCHECK_VERSION}|".encode())
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|".encode())
     h.update(text.encode("utf-8"))
     return h.hexdigest()
 
