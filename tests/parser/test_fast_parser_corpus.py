@@ -2,7 +2,8 @@
 which must all take the fast path), the conformance suite's accepted and refused files, the MATIEC
 verdict snippets and the damaged-input tests' own inputs. Each file's tree must equal Earley's
 exactly, or the file is declined (blark's parser then parses it). Run by ctest as FastParser.Corpus;
-the files are spread over the cores, since Earley needs several milliseconds per line."""
+the files are spread over the cores, since Earley needs several milliseconds per line, and Earley's
+trees are kept in the build tree ($PAC_ORACLE_CACHE) so that a second run parses only changed files."""
 import concurrent.futures
 import glob
 import os
@@ -25,7 +26,7 @@ _ORACLE = None
 def _compare_file(path):
     global _ORACLE
     if _ORACLE is None:
-        _ORACLE = Oracle()
+        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
     with open(path, encoding="utf-8") as f:
         return path, _ORACLE.compare(f.read())
 

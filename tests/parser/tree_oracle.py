@@ -1,8 +1,12 @@
 """The oracle of the fast parser: blark's Earley parser on the same text. Shared by the corpus and
 the generated-input tests (test_fast_parser_*.py)."""
+import hashlib
 import os
+import pickle
 import sys
+import tempfile
 
+import blark
 import lark
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -48,12 +52,65 @@ def difference(fast, earley, path=""):
     return f"{path}: {fast!r:.60} vs {earley!r:.60}"
 
 
-class Oracle:
-    """Both parsers on blark's processed text of an ST source."""
+def _plain(item):
+    """The tree as tuples: lark's Token pickles without its end positions, so trees are kept this way."""
+    if isinstance(item, lark.Tree):
+        meta = {a: getattr(item.meta, a) for a in _META if hasattr(item.meta, a)}
+        return ("tree", item.data, item.meta.empty, meta, [_plain(c) for c in item.children])
+    if isinstance(item, lark.Token):
+        return ("token", item.type, str(item), tuple(getattr(item, a) for a in _POSITIONS))
+    return None
 
-    def __init__(self):
+
+def _from_plain(plain):
+    if plain is None:
+        return None
+    if plain[0] == "token":
+        _, type_, value, (line, column, end_line, end_column, start_pos, end_pos) = plain
+        return lark.Token(type_, value, start_pos, line, column, end_line, end_column, end_pos)
+    _, data, empty, attrs, children = plain
+    meta = lark.tree.Meta()
+    meta.empty = empty
+    for name, value in attrs.items():
+        setattr(meta, name, value)
+    return lark.Tree(data, [_from_plain(c) for c in children], meta)
+
+
+def _grammar_version():
+    h = hashlib.sha256(f"{blark.__version__}|{lark.__version__}|{sys.version}|".encode())
+    with open(blark.GRAMMAR_FILENAME, "rb") as f:
+        h.update(f.read())
+    return h.hexdigest()
+
+
+class Oracle:
+    """Both parsers on blark's processed text of an ST source. With `cache_dir`, Earley's trees are
+    kept there (the build tree, never the repository), keyed by the text and blark's grammar and
+    versions: a second run of the tests parses only what changed with Earley."""
+
+    def __init__(self, cache_dir=None):
         self.earley = new_parser()
         self.fast = FastParser(self.earley)
+        self._cache_dir = cache_dir
+        self._grammar = _grammar_version() if cache_dir else None
+
+    def _earley_tree(self, text):
+        if not self._cache_dir:
+            return self.earley.parse(text, start="iec_source")
+        key = hashlib.sha256(f"{self._grammar}|{text}".encode("utf-8")).hexdigest()
+        path = os.path.join(self._cache_dir, key + ".pickle")
+        try:
+            with open(path, "rb") as f:
+                return _from_plain(pickle.load(f))
+        except (OSError, pickle.UnpicklingError, EOFError):
+            pass
+        tree = self.earley.parse(text, start="iec_source")
+        os.makedirs(self._cache_dir, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=self._cache_dir, suffix=".tmp")
+        with os.fdopen(fd, "wb") as f:
+            pickle.dump(_plain(tree), f, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, path)
+        return tree
 
     @staticmethod
     def processed(source):
@@ -71,7 +128,7 @@ class Oracle:
         except Decline:
             return "declined", None
         try:
-            earley = self.earley.parse(text, start="iec_source")
+            earley = self._earley_tree(text)
         except lark.exceptions.LarkError as exc:
             return "different", f"the fast parser accepted what Earley refuses: {exc}"
         found = difference(fast, earley)
