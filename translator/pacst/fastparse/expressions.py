@@ -143,19 +143,15 @@ class Expressions:
         return node("function_call", raw)
 
     def _param(self, s):
+        """A parameter: `name := value`, `name => variable`, or a value alone."""
         word = s.peek_word()
-        if word is not None and word != "NOT":
-            save = s.pos
-            m = s.pattern(_NAME_THEN_ARROW, skip=False)
-            if m is not None:
-                s.pos = save
-                name = self.variable_name(s)
-                arrow = s.peek_punct()
-                op = s.punct(arrow)
-                if s.peek_punct() in (",", ")"):
-                    raise Decline("empty parameter")
-                if arrow == ":=":
-                    return node("param_assignment", [name, op, self.expression(s)])
-                return node("output_parameter_assignment", [None, name, op, self.expression(s)])
+        if word is not None and word != "NOT" and _NAME_THEN_ARROW.match(s.text, s.pos):
+            name = self.variable_name(s)
+            arrow = s.peek_punct()
+            op = s.punct(arrow)
+            if s.peek_punct() in (",", ")"):
+                raise Decline("empty parameter")
+            if arrow == ":=":
+                return node("param_assignment", [name, op, self.expression(s)])
+            return node("output_parameter_assignment", [None, name, op, self.expression(s)])
         return node("param_assignment", [self.expression(s)])
-

@@ -38,7 +38,7 @@ def _end_of_literal(s):
 
 def _number(s, regex, kind):
     """The number `regex` reads at the position as a Token of `kind`, the literal ending there."""
-    span = s.pattern(regex, skip=False)
+    span = s.pattern(regex)
     if span is None:
         raise Decline(f"{kind} expected")
     tok = s.token(kind, *span)
@@ -73,7 +73,7 @@ class Literals:
         if c.isdigit():
             return self._untyped_number(s)
         if c == "'":
-            span = s.pattern(_STRING, skip=False)
+            span = s.pattern(_STRING)
             if span is None:
                 raise Decline("string not read here")
             tok = s.token("SINGLE_BYTE_CHARACTER_STRING", *span)
@@ -162,10 +162,10 @@ class Literals:
 
     def _interval(self, s, least_unit):
         """The interval at the position, whose first unit is `least_unit` or a later one."""
-        span = s.pattern(_FIXED_POINT, skip=False)
+        span = s.pattern(_FIXED_POINT)
         fixed = span is not None
         if not fixed:
-            span = s.pattern(_INTEGER, skip=False)
+            span = s.pattern(_INTEGER)
             if span is None:
                 raise Decline("duration number expected")
         tok = s.token("FIXED_POINT" if fixed else "INTEGER", *span)

@@ -142,20 +142,14 @@ class Scanner:
             raise Decline(f"expected {p}")
         return self.anon(*self._take(self.pos + len(p)))
 
-    def punct_token(self, type_, p):
-        if self.peek_punct() != p:
-            raise Decline(f"expected {p}")
-        return self.token(type_, *self._take(self.pos + len(p)))
-
-    def pattern(self, regex, skip=True):
-        """(start, end) of `regex` matched at the position, or None; moves past it."""
+    def pattern(self, regex):
+        """(start, end) of `regex` matched at the position, or None; moves past it, not past the space
+        after it (literals are read piece by piece)."""
         m = regex.match(self.text, self.pos)
         if not m:
             return None
-        if not skip:
-            start, self.pos = self.pos, m.end()
-            return start, m.end()
-        return self._take(m.end())
+        start, self.pos = self.pos, m.end()
+        return start, m.end()
 
     def semicolons(self, raw, least=1):
         """Appends the `;` at the position to raw: at least `least` of them."""

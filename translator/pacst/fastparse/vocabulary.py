@@ -30,7 +30,6 @@ class Vocabulary:
         ident = terminals["IDENTIFIER"]
         self._identifier = re.compile(ident.to_regexp())
         self.real_with_point = self._anonymous(terminals, "1.5", "1E5")
-        self.real_with_exponent = self._anonymous(terminals, "1E5", "1.5")
 
     @staticmethod
     def _anonymous(terminals, matches, not_matches):
