@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.join(REPO, "translator"))
 from blark import util  # noqa: E402
 from blark.parse import new_parser  # noqa: E402
 
-from pacst.fastparse import Decline, FastParser  # noqa: E402
+from pacst.fastparse import Decline, FastParser, grammar_facts  # noqa: E402
 
 _POSITIONS = ("line", "column", "end_line", "end_column", "start_pos", "end_pos")
 _META = _POSITIONS + tuple("container_" + p for p in _POSITIONS)
@@ -90,7 +90,7 @@ class Oracle:
 
     def __init__(self, cache_dir=None):
         self.earley = new_parser()
-        self.fast = FastParser(self.earley)
+        self.fast = FastParser(grammar_facts(self.earley))
         self._cache_dir = cache_dir
         self._grammar = _grammar_version() if cache_dir else None
 

@@ -10,7 +10,8 @@ file comes from a pickle keyed by the SHA-256 of its text and the versions of bl
 checks, of the fast parser and of this cache format. The files
 the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
 timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
-cached too, pickled beside the parses: loading it takes a twentieth of that.
+cached too, pickled beside the parses: loading it takes a tenth of that, and happens only when the
+fast parser declines a file (the two facts of the grammar the fast parser needs are cached apart).
 """
 import concurrent.futures
 import hashlib
@@ -30,7 +31,7 @@ from blark.parse import new_parser, parse_source_code
 
 from . import lexcheck
 from .errors import StError
-from .fastparse import Decline, FastParser
+from .fastparse import Decline, FastParser, grammar_facts
 
 _CACHE_FORMAT = 2
 # Below about a second of parsing and transforming (the fast parser and blark's transform read about
@@ -79,12 +80,26 @@ class _ParserPickler(pickle.Pickler):
 
 
 class _FastFirst:
-    """The parser parse_source_code is given: the fast parser, and blark's where that declines."""
+    """The parser parse_source_code is given: the fast parser, and blark's where that declines. blark's
+    parser is loaded only then: the fast parser needs just two facts of its grammar, cached apart."""
 
-    def __init__(self, earley):
-        self.options = earley.options
-        self._earley = earley
-        self._fast = FastParser(earley)
+    def __init__(self, cache_dir):
+        # parse_source_code reads only which start rules there are.
+        self.options = types.SimpleNamespace(start=["iec_source"])
+        self._cache_dir = cache_dir
+        self._earley = None
+        key = "fastparse-" + _parser_key() if cache_dir else None
+        facts = _cached_tree(cache_dir, key) if key else None
+        if facts is None:
+            facts = grammar_facts(self._earley_parser())
+            if key:
+                _store(cache_dir, key, pickle.dumps(facts, protocol=pickle.HIGHEST_PROTOCOL))
+        self._fast = FastParser(facts)
+
+    def _earley_parser(self):
+        if self._earley is None:
+            self._earley = _earley_parser(self._cache_dir)
+        return self._earley
 
     def parse(self, text, start):
         if start == "iec_source":
@@ -92,7 +107,7 @@ class _FastFirst:
                 return self._fast.parse(text)
             except Decline:
                 pass
-        return self._earley.parse(text, start=start)
+        return self._earley_parser().parse(text, start=start)
 
 
 # The one parser of this process (and of the workers it forks), from _parser().
@@ -116,7 +131,7 @@ def _earley_parser(cache_dir):
 def _parser(cache_dir):
     global _PARSER
     if _PARSER is None:
-        _PARSER = _FastFirst(_earley_parser(cache_dir))
+        _PARSER = _FastFirst(cache_dir)
     return _PARSER
 
 

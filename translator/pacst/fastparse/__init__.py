@@ -8,19 +8,18 @@ from .expressions import Expressions
 from .literals import Literals
 from .scanner import Decline, Scanner
 from .statements import Statements
-from .vocabulary import Vocabulary
+from .vocabulary import Vocabulary, grammar_facts
 
-__all__ = ["Decline", "FastParser"]
+__all__ = ["Decline", "FastParser", "grammar_facts"]
 
 
 class FastParser:
     """Parses processed source text (blark's preprocessing done) to blark's tree, or declines."""
 
-    def __init__(self, lark_parser):
-        vocabulary = Vocabulary(lark_parser)
-        real = next(t.pattern.to_regexp() for t in lark_parser.terminals
-                    if t.name == vocabulary.real_with_point)
-        expressions = Expressions(vocabulary, Literals(vocabulary, real))
+    def __init__(self, facts):
+        """`facts`: grammar_facts() of blark's built parser."""
+        vocabulary = Vocabulary(facts)
+        expressions = Expressions(vocabulary, Literals(vocabulary))
         self._declarations = Declarations(vocabulary, expressions, Statements(expressions))
 
     def parse(self, text):

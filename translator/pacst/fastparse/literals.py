@@ -59,9 +59,9 @@ def _prefix(s, regex):
 class Literals:
     """Reads literals; the real literal's pattern and terminal come from blark's grammar."""
 
-    def __init__(self, vocabulary, real_pattern):
+    def __init__(self, vocabulary):
         self._real_type = vocabulary.real_with_point
-        self._real = re.compile(real_pattern)
+        self._real = re.compile(vocabulary.real_pattern)
 
     def constant(self, s):
         """Tree('constant') of the literal at the position, or None when none starts there."""

@@ -1,5 +1,5 @@
 """What the fast parser takes from the installed blark grammar at run time instead of restating it:
-which words may be identifiers, and the names lark gave the anonymous real-literal patterns."""
+which words may be identifiers, and the name lark gave the anonymous real-literal pattern."""
 import re
 
 # The elementary type names of the subset, by the terminal blark's grammar gives each.
@@ -22,23 +22,26 @@ def elementary_type(word):
     return None
 
 
+def grammar_facts(lark_parser):
+    """What the fast parser needs of a built blark parser, as plain data (so that it can be cached
+    without the parser): IDENTIFIER's pattern, and the name and pattern lark gave the anonymous
+    terminal of real literals with a decimal point."""
+    terminals = {t.name: t.pattern for t in lark_parser.terminals}
+    names = [n for n, p in terminals.items() if n.startswith("__ANON") and p.type == "re"
+             and re.fullmatch(p.to_regexp(), "1.5") and not re.fullmatch(p.to_regexp(), "1E5")]
+    if len(names) != 1:
+        raise RuntimeError(f"blark's grammar has changed: real literal terminals {names}")
+    return {"identifier": terminals["IDENTIFIER"].to_regexp(), "real_terminal": names[0],
+            "real_pattern": terminals[names[0]].to_regexp()}
+
+
 class Vocabulary:
-    """Read from a built blark (lark) parser's terminals."""
+    """The words and terminals of blark's grammar that the fast parser needs, from grammar_facts."""
 
-    def __init__(self, lark_parser):
-        terminals = {t.name: t.pattern for t in lark_parser.terminals}
-        ident = terminals["IDENTIFIER"]
-        self._identifier = re.compile(ident.to_regexp())
-        self.real_with_point = self._anonymous(terminals, "1.5", "1E5")
-
-    @staticmethod
-    def _anonymous(terminals, matches, not_matches):
-        """The anonymous terminal that reads `matches` whole but not `not_matches`."""
-        names = [n for n, p in terminals.items() if n.startswith("__ANON") and p.type == "re"
-                 and re.fullmatch(p.to_regexp(), matches) and not re.fullmatch(p.to_regexp(), not_matches)]
-        if len(names) != 1:
-            raise RuntimeError(f"blark's grammar has changed: real literal terminals {names}")
-        return names[0]
+    def __init__(self, facts):
+        self._identifier = re.compile(facts["identifier"])
+        self.real_with_point = facts["real_terminal"]
+        self.real_pattern = facts["real_pattern"]
 
     @staticmethod
     def is_type_word(word):
