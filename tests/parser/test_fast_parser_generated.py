@@ -6,7 +6,7 @@ import os
 import sys
 import unittest
 
-from hypothesis import given, seed, strategies as st
+from hypothesis import example, given, seed, strategies as st
 
 from tree_oracle import REPO, Oracle
 import st_strategies
@@ -46,6 +46,9 @@ class Generated(unittest.TestCase):
 
     @SETTINGS
     @given(st_strategies.pous(EXPRESSIONS))
+    # Found by the mutations: a block closed by another block's keyword, a keyword as an enum value.
+    @example("FUNCTION_BLOCK FB_X\nVAR a : INT; END_VAR\na := 1;\nEND_FUNCTION\n")
+    @example("TYPE E_X : (A, END_TYPE); END_TYPE\n")
     def test_pou(self, source):
         _check(self, "POUs", source)
 

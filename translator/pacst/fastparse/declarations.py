@@ -35,10 +35,7 @@ class Declarations:
         return node("iec_source", items)
 
     def _identifier(self, s):
-        word = s.peek_word()
-        if word is None or not self._vocabulary.is_identifier(word):
-            raise Decline("identifier expected")
-        return s.word_token("IDENTIFIER")
+        return self._x.name_token(s)
 
     # Types
 
@@ -65,7 +62,7 @@ class Declarations:
     def _enumeration(self, s):
         raw = [s.punct("(")]
         while True:
-            raw.append(node("enumerated_value", [None, s.word_token("DOTTED_IDENTIFIER"), None]))
+            raw.append(node("enumerated_value", [None, self._x.name_token(s, "DOTTED_IDENTIFIER"), None]))
             if s.peek_punct() != ",":
                 break
             raw.append(s.punct(","))
@@ -225,11 +222,11 @@ class Declarations:
         return node("function_declaration", raw)
 
     def _function_block(self, s):
-        raw = [s.word_token("FUNCTION_BLOCK"), None, self._identifier(s), None, None]
+        raw = [s.keyword_token("FUNCTION_BLOCK"), None, self._identifier(s), None, None]
         if s.peek_word() in ("EXTENDS", "IMPLEMENTS"):
             raise Decline("inheritance")
         raw += self._var_blocks(s, in_function=False)
-        raw += [self._st.statement_list(s), s.word_token("END_FUNCTION_BLOCK")]
+        raw += [self._st.statement_list(s), s.keyword_token("END_FUNCTION_BLOCK")]
         _no_trailing_semicolon(s)
         return node("function_block_type_declaration", raw)
 

@@ -94,13 +94,17 @@ class Expressions:
             return self._literals.signed_integer_literal(s)
         return self._literals.integer_literal(s)
 
-    def variable_name(self, s):
+    def name_token(self, s, type_="IDENTIFIER"):
+        """The name at the position as a Token of `type_` (IDENTIFIER, DOTTED_IDENTIFIER), or Decline
+        for a keyword. An elementary type's name is declined too: outside the subset where a name
+        stands, and which rule blark would make of it is left to blark."""
         word = s.peek_word()
         if word is None or not self._vocabulary.is_identifier(word) or self._vocabulary.is_type_word(word):
-            # A type's name where a variable stands is outside the subset; which rule blark would
-            # make of it is left to blark.
             raise Decline("identifier expected")
-        return node("variable_name", [s.word_token("IDENTIFIER"), None])
+        return s.word_token(type_)
+
+    def variable_name(self, s):
+        return node("variable_name", [self.name_token(s), None])
 
     def variable(self, s):
         """variable_name, or multi_element_variable with its subscripts and fields."""

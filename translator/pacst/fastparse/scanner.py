@@ -129,6 +129,12 @@ class Scanner:
             raise Decline(f"expected {word}")
         return self.anon(*self._take(m.end()))
 
+    def keyword_token(self, word):
+        """The keyword `word` (upper case) as a Token of type `word` (blark keeps a few), or Decline."""
+        if self.peek_word() != word:
+            raise Decline(f"expected {word}")
+        return self.word_token(word)
+
     def word_token(self, type_):
         """The word at the position as a Token of `type_`."""
         m = _WORD.match(self.text, self.pos)

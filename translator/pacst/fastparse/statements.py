@@ -28,7 +28,7 @@ class Statements:
         if word in _LIST_ENDS:
             return True
         if in_case:
-            # A CASE branch ends where the next label starts: a number, or a name followed by `:`.
+            # A CASE branch ends where the next label starts: a number, or a name followed by `:` or `,`.
             if s.peek_char().isdigit() or s.peek_punct() in ("-", "+"):
                 return True
             if word is not None and _is_label(s):
@@ -122,7 +122,7 @@ class Statements:
         word = s.peek_word()
         if word is None:
             raise Decline("CASE label not read here")
-        tok = s.word_token("DOTTED_IDENTIFIER")
+        tok = self._x.name_token(s, "DOTTED_IDENTIFIER")
         if s.peek_punct() in (".", ".."):
             raise Decline("dotted CASE label")
         return node("enumerated_value", [None, tok, None])
