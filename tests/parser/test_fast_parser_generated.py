@@ -46,9 +46,11 @@ class Generated(unittest.TestCase):
 
     @SETTINGS
     @given(st_strategies.pous(EXPRESSIONS))
-    # Found by the mutations: a block closed by another block's keyword, a keyword as an enum value.
+    # Found by the mutations: a block closed by another block's keyword, a keyword as an enum value,
+    # a date type blark names DATE_TYPE_NAME.
     @example("FUNCTION_BLOCK FB_X\nVAR a : INT; END_VAR\na := 1;\nEND_FUNCTION\n")
     @example("TYPE E_X : (A, END_TYPE); END_TYPE\n")
+    @example("FUNCTION_BLOCK FB_X\nVAR a : DT; END_VAR\na := 1;\nEND_FUNCTION_BLOCK\n")
     def test_pou(self, source):
         _check(self, "POUs", source)
 

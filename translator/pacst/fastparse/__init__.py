@@ -20,7 +20,7 @@ class FastParser:
         """`facts`: grammar_facts() of blark's built parser."""
         vocabulary = Vocabulary(facts)
         expressions = Expressions(vocabulary, Literals(vocabulary))
-        self._declarations = Declarations(vocabulary, expressions, Statements(expressions))
+        self._declarations = Declarations(expressions, Statements(expressions))
 
     def parse(self, text):
         """blark's tree of `text` from the start rule iec_source; raises Decline."""

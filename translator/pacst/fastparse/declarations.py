@@ -16,8 +16,7 @@ _BLOCKS = {
 class Declarations:
     """Reads a whole file over `statements` and `expressions`."""
 
-    def __init__(self, vocabulary, expressions, statements):
-        self._vocabulary = vocabulary
+    def __init__(self, expressions, statements):
         self._x = expressions
         self._st = statements
         self._top = {"TYPE": self._type, "FUNCTION": self._function,
@@ -92,16 +91,7 @@ class Declarations:
                 break
             raw.append(s.punct(","))
         raw += [s.punct("]"), s.keyword("OF")]
-        word = s.peek_word()
-        if word in ("ARRAY", "STRING", "WSTRING", "POINTER", "REFERENCE"):
-            raise Decline("array element type not read here")
-        kind = elementary_type(word) or "IDENTIFIER"
-        if kind == "IDENTIFIER" and (word is None or not self._vocabulary.is_identifier(word)):
-            raise Decline("array element type expected")
-        element = s.word_token(kind)
-        if s.peek_punct() in ("(", "[", "."):
-            raise Decline("array element type not read here")
-        raw.append(node("non_generic_type_name", [None, element]))
+        raw.append(node("non_generic_type_name", [None, self._type_token(s)]))
         return node("array_specification", raw)
 
     # Variables
@@ -121,16 +111,16 @@ class Declarations:
             if s.peek_punct() in ("(", "["):
                 raise Decline("sized STRING")
             return node("simple_specification", [node("string_type_specification", [tok, None])])
-        kind = elementary_type(word)
-        if kind is None:
-            if word is None or not self._vocabulary.is_identifier(word) or word in ("ARRAY", "POINTER",
-                                                                                     "REFERENCE", "WSTRING"):
-                raise Decline("type not read here")
-            kind = "IDENTIFIER"
-        tok = s.word_token(kind)
+        return node("simple_specification", [self._type_token(s)])
+
+    def _type_token(self, s):
+        """An elementary type's name as its terminal, or a named type's as IDENTIFIER. Anything else
+        (ARRAY, POINTER TO, other date types, dotted names...) is left to blark."""
+        kind = elementary_type(s.peek_word())
+        tok = s.word_token(kind) if kind else self._x.name_token(s)
         if s.peek_punct() in ("(", "[", "."):
             raise Decline("type not read here")
-        return node("simple_specification", [tok])
+        return tok
 
     def _spec_init(self, s):
         raw = [self._specification(s)]
