@@ -1,11 +1,17 @@
-"""Parses ST files with blark and caches the typed AST per file content.
+"""Parses ST files to blark's typed AST and caches it per file content.
 
-blark needs several milliseconds per source line, so a rebuild after touching one file re-parses
-only that file: the transformed AST of every other file comes from a pickle keyed by the SHA-256
-of its text and the versions of blark, of the lexical checks and of this cache format. The files
+The parse itself is the fast parser's (fastparse/), which builds exactly the tree blark's Earley
+parser would; blark's Earley parser (several milliseconds per source line) parses only what the
+fast parser declines: text outside the portable subset and every syntax error, so that refusals
+keep blark's messages and positions. blark's preprocessing and transform run as they are.
+
+A rebuild after touching one file re-parses only that file: the transformed AST of every other
+file comes from a pickle keyed by the SHA-256 of its text and the versions of blark, of the lexical
+checks, of the fast parser and of this cache format. The files
 the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
 timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
-cached too, pickled beside the parses: loading it takes a twentieth of that.
+cached too, pickled beside the parses: loading it takes a tenth of that, and happens only when the
+fast parser declines a file (the two facts of the grammar the fast parser needs are cached apart).
 """
 import concurrent.futures
 import hashlib
@@ -25,25 +31,32 @@ from blark.parse import new_parser, parse_source_code
 
 from . import lexcheck
 from .errors import StError
+from .fastparse import Decline, FastParser, grammar_facts
 
 _CACHE_FORMAT = 2
-# Below about a second of parsing, starting worker processes costs more than it saves.
-_PARALLEL_MIN_CHARS = 4000
+# Below about a second of parsing and transforming (the fast parser and blark's transform read about
+# 130,000 characters a second together), starting worker processes costs more than it saves.
+_PARALLEL_MIN_CHARS = 100_000
 
 
-def _lexcheck_version():
-    """The lexical checks' own source: a cached parse stands for a text that passed these checks, so a
-    cache hit skips them; changed checks invalidate the cache."""
-    with open(lexcheck.__file__, "rb") as f:
-        return hashlib.sha256(f.read()).hexdigest()
+def _sources_version(modules):
+    """The SHA-256 of the modules' own source. A cached parse stands for a text that passed the lexical
+    checks (a cache hit skips them) and was parsed by the fast parser: changing either invalidates it."""
+    h = hashlib.sha256()
+    for path in modules:
+        with open(path, "rb") as f:
+            h.update(f.read())
+    return h.hexdigest()
 
 
-_LEXCHECK_VERSION = _lexcheck_version()
+_FASTPARSE_DIR = os.path.join(os.path.dirname(__file__), "fastparse")
+_SOURCES_VERSION = _sources_version([lexcheck.__file__] + sorted(
+    os.path.join(_FASTPARSE_DIR, name) for name in os.listdir(_FASTPARSE_DIR) if name.endswith(".py")))
 
 
 def _cache_key(text):
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_LEXCHECK_VERSION}|".encode())
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|".encode())
     h.update(text.encode("utf-8"))
     return h.hexdigest()
 
@@ -66,23 +79,59 @@ class _ParserPickler(pickle.Pickler):
         return NotImplemented
 
 
+class _FastFirst:
+    """The parser parse_source_code is given: the fast parser, and blark's where that declines. blark's
+    parser is loaded only then: the fast parser needs just two facts of its grammar, cached apart."""
+
+    def __init__(self, cache_dir):
+        # parse_source_code reads only which start rules there are.
+        self.options = types.SimpleNamespace(start=["iec_source"])
+        self._cache_dir = cache_dir
+        self._earley = None
+        key = "fastparse-" + _parser_key() if cache_dir else None
+        facts = _cached_tree(cache_dir, key) if key else None
+        if facts is None:
+            facts = grammar_facts(self._earley_parser())
+            if key:
+                _store(cache_dir, key, pickle.dumps(facts, protocol=pickle.HIGHEST_PROTOCOL))
+        self._fast = FastParser(facts)
+
+    def _earley_parser(self):
+        if self._earley is None:
+            self._earley = _earley_parser(self._cache_dir)
+        return self._earley
+
+    def parse(self, text, start):
+        if start == "iec_source":
+            try:
+                return self._fast.parse(text)
+            except Decline:
+                pass
+        return self._earley_parser().parse(text, start=start)
+
+
 # The one parser of this process (and of the workers it forks), from _parser().
 _PARSER = None
 
 
-def _parser(cache_dir):
+def _earley_parser(cache_dir):
     """blark's parser: from the cache when it holds one for this grammar and these versions, else built
     (and then stored there)."""
+    key = _parser_key() if cache_dir else None
+    parser = _cached_tree(cache_dir, key) if key else None
+    if parser is None:
+        parser = new_parser()
+        if key:
+            buf = io.BytesIO()
+            _ParserPickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(parser)
+            _store(cache_dir, key, buf.getvalue())
+    return parser
+
+
+def _parser(cache_dir):
     global _PARSER
     if _PARSER is None:
-        key = _parser_key() if cache_dir else None
-        _PARSER = _cached_tree(cache_dir, key) if key else None
-        if _PARSER is None:
-            _PARSER = new_parser()
-            if key:
-                buf = io.BytesIO()
-                _ParserPickler(buf, protocol=pickle.HIGHEST_PROTOCOL).dump(_PARSER)
-                _store(cache_dir, key, buf.getvalue())
+        _PARSER = _FastFirst(cache_dir)
     return _PARSER
 
 

@@ -1,0 +1,72 @@
+"""The fast parser against blark's Earley parser on every ST file the project has: the library (st/,
+which must all take the fast path), the conformance suite's accepted and refused files, the MATIEC
+verdict snippets and the damaged-input tests' own inputs. Each file's tree must equal Earley's
+exactly, or the file is declined (blark's parser then parses it). Run by ctest as FastParser.Corpus;
+the files are spread over the cores, since Earley needs several milliseconds per line, and Earley's
+trees are kept in the build tree ($PAC_ORACLE_CACHE) so that a second run parses only changed files."""
+import concurrent.futures
+import glob
+import os
+import sys
+import unittest
+
+from tree_oracle import REPO, Oracle
+
+VERDICTS = os.path.join(REPO, "..", "shared", "matiec-verdicts", "snippets")
+CORPORA = {
+    "library": sorted(glob.glob(os.path.join(REPO, "st", "**", "*.st"), recursive=True)),
+    "conformance accept": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "accept", "*.st"))),
+    "conformance refuse": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse", "*.st"))),
+    "matiec verdicts": sorted(glob.glob(os.path.join(VERDICTS, "*.st"))),
+}
+
+_ORACLE = None
+
+
+def _compare_file(path):
+    global _ORACLE
+    if _ORACLE is None:
+        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+    with open(path, encoding="utf-8") as f:
+        return path, _ORACLE.compare(f.read())
+
+
+def _compare_all(paths):
+    jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    if jobs <= 1:
+        return dict(map(_compare_file, paths))
+    with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
+        # Longest first, so that no worker is left with a long file at the end.
+        ordered = sorted(paths, key=os.path.getsize, reverse=True)
+        return dict(pool.map(_compare_file, ordered))
+
+
+class Corpus(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.results = _compare_all([p for paths in CORPORA.values() for p in paths])
+
+    def test_every_tree_equals_earleys(self):
+        for name, paths in CORPORA.items():
+            declined = [p for p in paths if self.results[p][0] == "declined"]
+            print(f"{name}: {len(paths)} files, {len(paths) - len(declined)} parsed fast, "
+                  f"{len(declined)} declined", file=sys.stderr)
+            for path in paths:
+                verdict, what = self.results[path]
+                with self.subTest(path=os.path.relpath(path, REPO)):
+                    self.assertNotEqual(verdict, "different", what)
+
+    def test_the_library_takes_the_fast_path(self):
+        self.assertTrue(CORPORA["library"])
+        declined = [os.path.relpath(p, REPO) for p in CORPORA["library"] if self.results[p][0] != "same"]
+        self.assertEqual(declined, [])
+
+    def test_the_conformance_suite_takes_the_fast_path(self):
+        paths = CORPORA["conformance accept"]
+        self.assertTrue(paths)
+        declined = [os.path.relpath(p, REPO) for p in paths if self.results[p][0] != "same"]
+        self.assertEqual(declined, [])
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

@@ -1,0 +1,30 @@
+"""A recursive-descent parser of the portable ST subset that builds exactly the lark tree blark's
+Earley parser builds for the same text (rule names, None placeholders, token types and values,
+positions), so that blark's transform and everything after it in pacst stay as they are. It reads
+in one pass what Earley needs thousands of items per line for; whatever it does not know, and every
+syntax error, it declines (Decline), and blark's parser decides instead."""
+from .declarations import Declarations
+from .expressions import Expressions
+from .literals import Literals
+from .scanner import Decline, Scanner
+from .statements import Statements
+from .vocabulary import Vocabulary, grammar_facts
+
+__all__ = ["Decline", "FastParser", "grammar_facts"]
+
+
+class FastParser:
+    """Parses processed source text (blark's preprocessing done) to blark's tree, or declines."""
+
+    def __init__(self, facts):
+        """`facts`: grammar_facts() of blark's built parser."""
+        vocabulary = Vocabulary(facts)
+        expressions = Expressions(vocabulary, Literals(vocabulary))
+        self._declarations = Declarations(expressions, Statements(expressions))
+
+    def parse(self, text):
+        """blark's tree of `text` from the start rule iec_source; raises Decline."""
+        try:
+            return self._declarations.source(Scanner(text))
+        except RecursionError:
+            raise Decline("nested too deeply") from None
