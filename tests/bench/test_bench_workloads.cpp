@@ -1,0 +1,59 @@
+// The benchmark table's workloads (bench/workloads.hpp) without valgrind: a workload that finishes no job,
+// or a hand-written C handshake that no longer does what the FBs do, would print the cost of another
+// program than the one its row names (as when the bench's axes once stood still for want of an input).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "workloads.hpp"
+
+namespace {
+
+using std::chrono::milliseconds;
+
+// The scans each workload runs here; the table measures 2000 (docs/benchmarks.md).
+constexpr int kScans = 2000;
+
+TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
+    // At a 1 ms PLC cycle a command, a mode request or an automatic-module job ends within tens of scans and
+    // an axis move within hundreds, so 2000 scans hold several of each.
+    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "axis-job", "automatic-job", "plant-pac1",
+                             "plant-pac10"}) {
+        const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
+        EXPECT_EQ(result.scans, kScans) << name;
+        EXPECT_GE(result.jobs, 2) << name;
+    }
+}
+
+TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
+    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "axis-idle", "automatic-idle"}) {
+        const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
+        EXPECT_EQ(result.scans, kScans) << name;
+        EXPECT_EQ(result.jobs, 0) << name;
+    }
+}
+
+TEST(BenchWorkloads, AnUnknownWorkloadIsRefused) {
+    EXPECT_THROW(pac::bench::RunWorkload("no-such-workload", 1), std::invalid_argument);
+}
+
+// The scan-cost ratio compares the library's CMD interface with the hand-written C only if both write the
+// same module and give the same outputs in every scan: on timings where the waits differ.
+TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
+    for (int plcMs : {1, 5}) {
+        for (int pacMs : {1, 10}) {
+            for (int latency : {0, 2}) {
+                pac::PlcBenchTiming timing;
+                timing.plcCycle = milliseconds(plcMs);
+                timing.pacCycle = milliseconds(pacMs);
+                timing.latencyCycles = latency;
+                EXPECT_EQ(pac::bench::CompareWithHandWritten(timing, kScans), "")
+                    << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
+            }
+        }
+    }
+}
+
+}  // namespace
