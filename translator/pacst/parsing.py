@@ -8,7 +8,7 @@ keep blark's messages and positions. blark's preprocessing and transform run as 
 A rebuild after touching one file re-parses only that file: the transformed AST of every other
 file comes from a pickle keyed by the SHA-256 of its text and the versions of blark, of the lexical
 checks, of the fast parser and of this cache format. The files
-the cache does not hold are parsed in parallel, one process per core (docs/benchmarks.md has the
+the cache does not hold are parsed in parallel, one process per core (docs/translation_time.md has the
 timings). Building blark's Earley parser from its grammar costs about 0.4 s, so the built parser is
 cached too, pickled beside the parses: loading it takes a tenth of that, and happens only when the
 fast parser declines a file (the two facts of the grammar the fast parser needs are cached apart).
