@@ -57,6 +57,16 @@ bool Final(const pac::FbInstance<Fb>& fb) {
 // MC_MoveVelocity never ends with Done.
 inline bool Final(const pac::FbInstance<MC_MOVEVELOCITY>& fb) { return fb->ERROR.value || fb->COMMANDABORTED.value; }
 
+// Scans until `fb` is final, at most `ms` of simulated time, and succeeds only if it ended with Done: the
+// failure names the ErrorID it ended with instead.
+template <class Fb>
+::testing::AssertionResult EndsDone(McBench& bench, pac::FbInstance<Fb>& fb, int ms, const std::string& what) {
+    ::testing::AssertionResult final = bench.WaitFor([&] { return Final(fb); }, ms, what + " final");
+    if (!final) return final;
+    if (fb->DONE.value) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << what << " ended without Done, ErrorID " << fb->ERRORID.value;
+}
+
 // Execute rises; the next scan sees it.
 template <class Fb>
 void Execute(McBench& bench, pac::FbInstance<Fb>& fb) {

@@ -74,8 +74,7 @@ TEST_P(McSim, MoveAbsoluteAndRelativeReachTheirTargetsInUserUnits) {
     bench.Scan();
     EXPECT_EQ(bench.State(1), kDiscrete);
     EXPECT_TRUE(b.status->DISCRETEMOTION.value && !b.status->STANDSTILL.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
-    EXPECT_TRUE(b.moveA->DONE.value) << "ErrorID " << b.moveA->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.moveA, 2000, "MoveAbsolute"));
     EXPECT_FALSE(b.moveA->ACTIVE.value);
     EXPECT_EQ(bench.Position(1), 120.0f);
     EXPECT_EQ(b.position->POSITION.value, 120.0f);
@@ -92,8 +91,7 @@ TEST_P(McSim, MoveAbsoluteAndRelativeReachTheirTargetsInUserUnits) {
     b.relative->POSITION.value = -20.0f;
     b.relative->VELOCITY.value = 250.0f;  // Acceleration 0.0: the axis parameter, 1000 per mille
     Execute(bench, b.relative);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.relative); }, 2000, "MoveRelative final"));
-    EXPECT_TRUE(b.relative->DONE.value) << "ErrorID " << b.relative->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.relative, 2000, "MoveRelative"));
     EXPECT_EQ(bench.Position(1), 100.0f);
     EXPECT_EQ(bench.SentWord(1, 6), 250u);
     EXPECT_EQ(bench.SentWord(1, 4), 1000u);
@@ -139,8 +137,7 @@ TEST_P(McSim, ANewBlockAbortsTheRunningOneAlongAChain) {
     EXPECT_TRUE(b.velocity->COMMANDABORTED.value);
     EXPECT_FALSE(b.velocity->INVELOCITY.value);
     EXPECT_EQ(bench.State(1), kDiscrete) << "a halt is a discrete motion";
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 2000, "Halt final"));
-    EXPECT_TRUE(b.halt->DONE.value) << "ErrorID " << b.halt->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.halt, 2000, "Halt"));
     EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
     EXPECT_EQ(bench.State(1), kStandstill);
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value && b.moveB->COMMANDABORTED.value && b.relative->COMMANDABORTED.value)
@@ -152,8 +149,7 @@ TEST_P(McSim, ANewBlockAbortsTheRunningOneAlongAChain) {
     // The axis works on from where it stands.
     SetMove(b.moveA, 40.0f);
     Execute(bench, b.moveA);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 20000, "MoveAbsolute final"));
-    EXPECT_TRUE(b.moveA->DONE.value) << "ErrorID " << b.moveA->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.moveA, 20000, "MoveAbsolute"));
     EXPECT_EQ(bench.Position(1), 40.0f);
 }
 
@@ -162,8 +158,7 @@ TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
     bench.PowerUp();
     McBlocks& b = bench.Blocks(1);
     Execute(bench, b.halt);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
-    EXPECT_TRUE(b.halt->DONE.value);
+    ASSERT_TRUE(EndsDone(bench, b.halt, 100, "Halt"));
     Release(bench, b.halt);
     ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
     Execute(bench, b.halt);
@@ -173,8 +168,7 @@ TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
     Execute(bench, b.moveB);
     bench.Scan();
     EXPECT_TRUE(b.halt->COMMANDABORTED.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveB); }, 20000, "MoveAbsolute B final"));
-    EXPECT_TRUE(b.moveB->DONE.value) << "ErrorID " << b.moveB->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
     EXPECT_EQ(bench.Position(1), 10.0f);
 }
 
@@ -206,8 +200,7 @@ TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     bench.Scan();
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value);
     EXPECT_EQ(bench.State(1), kStopping);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
-    EXPECT_TRUE(b.stop->DONE.value) << "ErrorID " << b.stop->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
     EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
     bench.Scan(3);
     EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
@@ -223,8 +216,7 @@ TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     Release(bench, b.home);
     // A second MC_Stop may come in Stopping and holds it from then on; the first keeps its Done.
     Execute(bench, b.stop2);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop2); }, 200, "Stop 2 final"));
-    EXPECT_TRUE(b.stop2->DONE.value);
+    ASSERT_TRUE(EndsDone(bench, b.stop2, 200, "Stop 2"));
     EXPECT_TRUE(b.stop->DONE.value);
     Release(bench, b.stop);
     bench.Scan(2);
@@ -233,8 +225,7 @@ TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     bench.Scan();
     EXPECT_EQ(bench.State(1), kStandstill);
     Execute(bench, b.moveB);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveB); }, 20000, "MoveAbsolute B final"));
-    EXPECT_TRUE(b.moveB->DONE.value) << "ErrorID " << b.moveB->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
 }
 
 TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
@@ -267,8 +258,7 @@ TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
     Execute(bench, b.halt);
     EXPECT_EQ(b.halt->ERRORID.value, kMcState);
     Release(bench, b.halt);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.home); }, 20000, "Home final"));
-    EXPECT_TRUE(b.home->DONE.value) << "ErrorID " << b.home->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.home, 20000, "Home"));
     EXPECT_TRUE(bench.Ref(1).STATUS.REFERENCED);
     EXPECT_EQ(bench.State(1), kStandstill);
     Release(bench, b.home);
@@ -282,8 +272,7 @@ TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
     Execute(bench, b.stop);
     bench.Scan();
     EXPECT_TRUE(b.home->COMMANDABORTED.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
-    EXPECT_TRUE(b.stop->DONE.value);
+    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
     EXPECT_GT(bench.Position(1), 0.0f) << "stopped before the cam";
 }
 
@@ -296,8 +285,7 @@ TEST_P(McSim, AStopRightAfterHomeEndsWithTheAxisStanding) {
     Execute(bench, b.home);
     bench.Scan();
     Execute(bench, b.stop);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
-    EXPECT_TRUE(b.stop->DONE.value) << "ErrorID " << b.stop->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
     EXPECT_TRUE(b.home->COMMANDABORTED.value);
     EXPECT_FALSE(bench.Ref(1).STATUS.ACTIVE);
     EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
@@ -344,8 +332,7 @@ TEST_P(McSim, AnAxisErrorMeansErrorStopUntilMcResetSeesItGone) {
     Release(bench, b.reset);
     bench.Pac().Axes().SetDisturbance(1, bench.Now(), 0.0);
     Execute(bench, b.reset);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.reset); }, 500, "Reset final"));
-    EXPECT_TRUE(b.reset->DONE.value) << "ErrorID " << b.reset->ERRORID.value;
+    ASSERT_TRUE(EndsDone(bench, b.reset, 500, "Reset"));
     EXPECT_EQ(bench.State(1), kDisabled) << "MC_Power is off";
     Release(bench, b.reset);
     b.power->ENABLE.value = TRUE;

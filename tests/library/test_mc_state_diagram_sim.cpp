@@ -156,8 +156,7 @@ TEST_P(McStateSim, StopEndsAContinuousMotionAndPowerOffDisablesFromHomingAndStop
         bench.Scan();
         EXPECT_TRUE(b.velocity->COMMANDABORTED.value);
         EXPECT_EQ(bench.State(1), kStopping);
-        ASSERT_TRUE(bench.WaitFor([&] { return Final(b.stop); }, 2000, "Stop final"));
-        EXPECT_TRUE(b.stop->DONE.value);
+        ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
     }
     for (const auto state : {kHoming, kStopping}) {
         SCOPED_TRACE("from state " + std::to_string(static_cast<int>(state)));
