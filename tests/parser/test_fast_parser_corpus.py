@@ -12,7 +12,7 @@ import unittest
 
 from tree_oracle import REPO, Oracle
 
-VERDICTS = os.path.join(REPO, "..", "shared", "matiec-verdicts", "snippets")
+VERDICTS = os.path.join(REPO, "tests", "conformance", "matiec_verdicts", "snippets")
 CORPORA = {
     "library": sorted(glob.glob(os.path.join(REPO, "st", "**", "*.st"), recursive=True)),
     "conformance accept": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "accept", "*.st"))),
