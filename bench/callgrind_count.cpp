@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -35,8 +36,10 @@ bool ValgrindAvailable() { return std::system("valgrind --version > /dev/null 2>
 
 std::optional<CallgrindCount> CountInstructions(const std::string& self, const std::string& workload,
                                                 const std::vector<std::string>& functions, int scans) {
-    char dir[] = "/tmp/pac-bench-XXXXXX";
-    if (mkdtemp(dir) == nullptr) return std::nullopt;
+    // The system's temporary folder ($TMPDIR or its default), not a path written into the source.
+    std::string pattern = (std::filesystem::temp_directory_path() / "pac-bench-XXXXXX").string();
+    char* dir = mkdtemp(pattern.data());
+    if (dir == nullptr) return std::nullopt;
     const std::string out = std::string(dir) + "/callgrind.out";
     std::ostringstream command;
     command << "valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file=" << Quoted(out);

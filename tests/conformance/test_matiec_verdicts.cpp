@@ -1,4 +1,4 @@
-// pacst against real MATIEC's measured verdicts (../shared/matiec-verdicts/, read in place): every
+// pacst against real MATIEC's measured verdicts (matiec_verdicts/ beside this file, README there): every
 // snippet iec2c rejects, pacst refuses with file:line:col and a reason; every snippet iec2c accepts,
 // pacst accepts too or refuses for a reason on record in stricter_than_matiec.tsv. With the matiec
 // preset (IEC2C set) the same corpus is run through iec2c, which must still give each recorded verdict.
@@ -76,7 +76,7 @@ std::map<std::string, std::string> MatiecVerdicts::stricter_;
 std::map<std::string, std::vector<std::string>> MatiecVerdicts::refusals_;
 
 TEST_F(MatiecVerdicts, CorpusIsThere) {
-    // A missing ../shared would make every other test here pass vacuously.
+    // A missing or unreadable corpus would make every other test here pass vacuously.
     EXPECT_GE(verdicts_.size(), 100u) << "cannot read " << PAC_MATIEC_VERDICTS_DIR;
     int rejected = 0;
     for (const auto& [name, v] : verdicts_) rejected += v.accepted ? 0 : 1;

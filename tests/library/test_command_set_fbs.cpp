@@ -669,7 +669,7 @@ TEST_P(CommandSetFbs, AxisValuesAreDecoded) {
     ASSERT_TRUE(bench.Run(bench.readValue).Done());
     EXPECT_EQ(bench.LastCode(), 0x1920);
     EXPECT_EQ(bench.readValue->VALUE.value, 40.0F);
-    EXPECT_EQ(bench.readValue->RAWVALUE.value, 0x42200000u) << "5.2.4.27 example bytes (NOTES.md: 40.0)";
+    EXPECT_EQ(bench.readValue->RAWVALUE.value, 0x42200000u) << "5.2.4.27 example bytes (docs/manual_errata.md: 40.0)";
     bench.Motion(1).Place(bench.Now(), 321.5);
     bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_ENCODER_POSITION;
     ASSERT_TRUE(bench.Run(bench.readValue).Done());

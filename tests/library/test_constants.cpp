@@ -1,5 +1,5 @@
 // The constant list GVL_PAC (for CODESYS/TwinCAT users) and F_PAC_ErrorText agree with each other and
-// with the manual as corrected by NOTES.md.
+// with the manual as corrected in docs/manual_errata.md.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -24,7 +24,7 @@ const pac::test::GvlConstants& Gvl() {
     return gvl;
 }
 
-// The command error numbers of manual 6.5, read as NOTES.md corrects the table: 0x25 is 37, the second
+// The command error numbers of manual 6.5, read as docs/manual_errata.md corrects the table: 0x25 is 37, the second
 // 0x1D is 0x1E (30), the second 0x2D is 0x2E (46), 0x2F is 47, and 0x31 is listed once.
 std::vector<std::uint32_t> ManualErrorNumbers() {
     std::vector<std::uint32_t> numbers = {16, 17, 18, 19, 20, 21, 26, 27, 28, 29, 30, 31};
@@ -54,7 +54,7 @@ std::map<std::uint32_t, std::vector<std::string>> ConstantsByValue(const std::st
 }
 
 // Every command code of chapter 5: the overview 5.1 checked against each description's header in 5.2, with
-// the errata of NOTES.md (190E, not the overview's second 190D; 1934 / 1935 / 1937, not 934 / 935 / 0937).
+// the errata in docs/manual_errata.md (190E, not the overview's second 190D; 1934 / 1935 / 1937, not 934 / 935 / 0937).
 std::vector<std::uint32_t> ManualCommandCodes() {
     return {0x0600, 0x0602, 0x0603,                                  // 5.2.1
             0x0700, 0x1700, 0x1701, 0x1702,                          // 5.2.2
@@ -144,7 +144,7 @@ TEST(GvlPac, CommandCodesAndStatusesFollowTheNotes) {
     EXPECT_EQ(Gvl()["PAC_CMD_SEND_SYSTEM_FLAG"], 0x1934u);
     EXPECT_EQ(Gvl()["PAC_CMD_SEND_SYSTEM_N_REG"], 0x1935u);
     EXPECT_EQ(Gvl()["PAC_CMD_SEND_SYSTEM_R_REG"], 0x1937u);
-    EXPECT_EQ(Gvl()["PAC_STATUS_ONLINE"], 31u);  // decimal, 16#1F (NOTES.md)
+    EXPECT_EQ(Gvl()["PAC_STATUS_ONLINE"], 31u);  // decimal, 16#1F (docs/manual_errata.md)
     EXPECT_EQ(Gvl()["PAC_STATUS_HOME_POSITION"], 1u);
 }
 

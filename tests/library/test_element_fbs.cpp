@@ -351,7 +351,7 @@ TEST(ElementFbs, ReadSystemFlag) {
     s.Pac().Io().systemFlags.Set(200, true);
     s.Fb()->NUMBER.value = 200;
     ASSERT_TRUE(s.Run().Done());
-    EXPECT_FRAME(s, 0x1934, 200, 0u);  // 5.2.4.29, code per NOTES.md
+    EXPECT_FRAME(s, 0x1934, 200, 0u);  // 5.2.4.29, code per docs/manual_errata.md
     EXPECT_EQ(s.Fb()->VALUE.value, TRUE);
     s.Fb()->NUMBER.value = 201;
     ASSERT_TRUE(s.Run().Done());
@@ -366,7 +366,7 @@ TEST(ElementFbs, ReadSystemIntReg) {
     s.Pac().Io().systemIntRegisters.SetInt(20, -7);
     s.Fb()->NUMBER.value = 20;
     ASSERT_TRUE(s.Run().Done());
-    EXPECT_FRAME(s, 0x1935, 20, 0u);  // 5.2.4.30, code per NOTES.md
+    EXPECT_FRAME(s, 0x1935, 20, 0u);  // 5.2.4.30, code per docs/manual_errata.md
     EXPECT_EQ(s.Fb()->VALUE.value, -7);
     s.Pac().SetSystemError(529);
     s.Fb()->NUMBER.value = 10;  // SN10: the system error number
@@ -380,7 +380,7 @@ TEST(ElementFbs, ReadSystemRealRegIsBitExact) {
     for (float v : RealSamples()) {
         s.Pac().Io().systemRealRegisters.SetReal(5, v);
         ASSERT_TRUE(s.Run().Done()) << v;
-        EXPECT_FRAME(s, 0x1937, 5, 0u);  // 5.2.4.31, code per NOTES.md
+        EXPECT_FRAME(s, 0x1937, 5, 0u);  // 5.2.4.31, code per docs/manual_errata.md
         EXPECT_EQ(BitsOf(s.Fb()->VALUE.value), BitsOf(v)) << v;
     }
 }

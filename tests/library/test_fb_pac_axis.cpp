@@ -255,7 +255,7 @@ TEST_F(FbPacAxis, PositionBytesInBothFormatsExactly) {
     };
     const Case cases[] = {
         {12.345f, false, BitsOf(12.345f)},
-        {640.0f, false, 0x44200000u},  // NOTES.md: the real bytes of 640.0
+        {640.0f, false, 0x44200000u},  // docs/manual_errata.md: the real bytes of 640.0
         {10.0f, false, 0x41200000u},
         {12.345f, true, 12345u},
         {25.045f, true, 25045u},

@@ -1,5 +1,5 @@
 // The Interbus-S complex example of manual 4.2.4 driven by FB_PAC_Cmd against the simulated
-// PA-CONTROL, byte for byte, with the errata of NOTES.md corrected: replies to SEND = 0 end in 20 00,
+// PA-CONTROL, byte for byte, with the errata of docs/manual_errata.md corrected: replies to SEND = 0 end in 20 00,
 // the third command writes N3, and 640.0 is 44 20 00 00. With FB_PAC_CmdInterface.TwoStepWrite the FB
 // writes both of the example's rows, "command code & parameter" with the SEND flag unchanged and then
 // "SEND flag toggle"; by default it writes the toggle row at once. Between commands the module is parked

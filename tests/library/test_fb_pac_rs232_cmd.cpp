@@ -1,5 +1,5 @@
 // FB_PAC_Rs232Cmd against hand-written bytes, scan by scan: the command frames of manual 3.4 byte for byte
-// (with the errata of NOTES.md and docs/open_points.md), the manual's acknowledgements read back, the CHECKs
+// (with the errata of docs/manual_errata.md and docs/open_points.md), the manual's acknowledgements read back, the CHECKs
 // it takes, a reply split over many scans, noise before STX, cut-off and damaged replies, the rules for
 // sending again or polling, and the PLCopen rules on every scan.
 #include <gtest/gtest.h>

@@ -108,7 +108,7 @@ TEST(Ieee754, Zero) {
     EXPECT_EQ(BitsOf(ToReal(0x00000000u)), 0x00000000u);
 }
 
-// The manual's examples that are right (NOTES.md), as the bus carries them: byte 0 is the top byte.
+// The manual's examples that are right (docs/manual_errata.md), as the bus carries them: byte 0 is the top byte.
 TEST(Ieee754, ManualExamples) {
     struct Example { std::uint32_t bits; float value; };
     const Example examples[] = {
@@ -122,7 +122,7 @@ TEST(Ieee754, ManualExamples) {
     EXPECT_NEAR(ToReal(0x42DE38D5u), 111.111, 1e-5);
 }
 
-// The manual's wrong examples (NOTES.md errata table): the value it meant, with its real bytes,
+// The manual's wrong examples (docs/manual_errata.md, the IEEE-754 table): the value it meant, with its real bytes,
 // and what its printed bytes really decode to.
 TEST(Ieee754, ManualErrataCorrected) {
     struct Example { std::uint32_t bits; float value; };

@@ -12,7 +12,7 @@ import unittest
 
 from tree_oracle import REPO, Oracle
 
-VERDICTS = os.path.join(REPO, "..", "shared", "matiec-verdicts", "snippets")
+VERDICTS = os.path.join(REPO, "tests", "conformance", "matiec_verdicts", "snippets")
 CORPORA = {
     "library": sorted(glob.glob(os.path.join(REPO, "st", "**", "*.st"), recursive=True)),
     "conformance accept": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "accept", "*.st"))),
@@ -48,6 +48,7 @@ class Corpus(unittest.TestCase):
 
     def test_every_tree_equals_earleys(self):
         for name, paths in CORPORA.items():
+            self.assertTrue(paths, f"no ST files found for the corpus '{name}'")  # a moved folder reads as empty
             declined = [p for p in paths if self.results[p][0] == "declined"]
             print(f"{name}: {len(paths)} files, {len(paths) - len(declined)} parsed fast, "
                   f"{len(declined)} declined", file=sys.stderr)

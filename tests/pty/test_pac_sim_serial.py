@@ -1,5 +1,5 @@
 """pac_sim --serial over its pseudo-terminal with pyserial, as a real client: the frames of manual 3.4
-byte for byte (with the errata of NOTES.md and docs/open_points.md), a frame written one byte at a time,
+byte for byte (with the errata of docs/manual_errata.md and docs/open_points.md), a frame written one byte at a time,
 noise before a frame, a refused CHECK and the EOT poll.
 
 Usage: test_pac_sim_serial.py PATH_TO_PAC_SIM

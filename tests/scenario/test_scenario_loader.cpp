@@ -88,7 +88,7 @@ TEST(ScenarioLoader, ReadsEveryField) {
     EXPECT_EQ(put.code, 0x0907);
     EXPECT_EQ(put.name, "PAC_CMD_PUT_FLOAT_REG");
     EXPECT_EQ(put.param, 2);
-    EXPECT_EQ(put.data.bits, 0x41200000u);  // 10.0 (NOTES.md: not 43 20 00 00)
+    EXPECT_EQ(put.data.bits, 0x41200000u);  // 10.0 (docs/manual_errata.md: not 43 20 00 00)
     EXPECT_TRUE(put.data.isReal);
     EXPECT_EQ(put.timeoutMs, 200);
     EXPECT_EQ(put.endTimeoutMs, 300);

@@ -109,7 +109,7 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     // the module is parked (190B, the SEND flag kept) in the scan that sees the reply.
     EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 |"), std::string::npos) << out;
     EXPECT_NE(out.find("| 00 00 00 00 00 00 99 0B | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
-    // R1 = 640.0 is 44 20 00 00 (NOTES.md), printed as a REAL because the step expects one.
+    // R1 = 640.0 is 44 20 00 00 (docs/manual_errata.md), printed as a REAL because the step expects one.
     EXPECT_NE(out.find("| 44 20 00 00 00 01 A0 00 |"), std::string::npos) << out;
     EXPECT_NE(out.find("AckData 640.0 (16#44200000): as expected"), std::string::npos) << out;
     EXPECT_NE(out.find("ErrorID 38 PAC_ERR_N_REGISTER \"inadmissible N register\""), std::string::npos) << out;

@@ -37,7 +37,7 @@ PaControlConfig WithModules(AutomaticModuleConfig modules) {
 // ---- the bytes ----------------------------------------------------------------------------------------
 
 TEST(AutomaticModuleBytes, BothLayoutsBigEndian) {
-    const AutomaticModuleData d{0x1234, -2, FloatToBits(10.0f)};  // 10.0 = 41 20 00 00 (NOTES.md)
+    const AutomaticModuleData d{0x1234, -2, FloatToBits(10.0f)};  // 10.0 = 41 20 00 00 (docs/manual_errata.md)
     EXPECT_EQ(Hex(d.Encode(AutomaticLayout::kShiftedWidths)), "12 34 00 00 FF FF FF FE 41 20 00 00");
     EXPECT_EQ(Hex(d.Encode(AutomaticLayout::kAxisWidths)), "00 00 12 34 00 00 FF FE 41 20 00 00");
     for (AutomaticLayout layout : {AutomaticLayout::kShiftedWidths, AutomaticLayout::kAxisWidths}) {

@@ -49,7 +49,7 @@ TEST(Image8, HexRoundTripAndBadInput) {
     EXPECT_FALSE(IsAllZero(FromHex("00 00 00 00 00 00 00 01")));
 }
 
-// The IEEE values of the manual, checked against NOTES.md (several printed patterns are wrong).
+// The IEEE values of the manual, checked against docs/manual_errata.md (several printed patterns are wrong).
 TEST(Image8, RealBitPatterns) {
     EXPECT_EQ(FloatToBits(10.0F), 0x41200000U);
     EXPECT_EQ(FloatToBits(200.0F), 0x43480000U);

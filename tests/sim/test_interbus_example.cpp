@@ -1,5 +1,5 @@
 // The Interbus-S complex example of manual 4.2.4, byte for byte, with its errata corrected
-// (NOTES.md): the replies for SEND = 0 end in 20 00 (RF 0, BF 1), not 02 00; the third command
+// (docs/manual_errata.md): the replies for SEND = 0 end in 20 00 (RF 0, BF 1), not 02 00; the third command
 // writes N3 (its parameter is 3), not N2; R1 holds 640.0 = 44 20 00 00 (44 20 20 00 is 640.5).
 // The controller runs one cycle per row; each first row of a pair loads code and parameter with the
 // SEND flag unchanged, which must not be taken as a command.

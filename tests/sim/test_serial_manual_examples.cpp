@@ -1,4 +1,4 @@
-// The examples of manual 3.4 byte for byte, with the errata of NOTES.md and docs/open_points.md: the
+// The examples of manual 3.4 byte for byte, with the errata of docs/manual_errata.md: the
 // acknowledgements exactly as printed (their CHECK is the XOR of the text and ETX, decimal), except the
 // 0603 acknowledgement, whose printed CHECK 8 leaves ETX out. The master frames are sent as printed where
 // the print is right; their CHECKs follow no single rule, so the controller verifies none in 3.4.1 and
@@ -51,14 +51,14 @@ TEST_F(ComplexExample1, TheFourCommandsAndTheirAcknowledgements) {
     // Input 5, as printed.
     EXPECT_EQ(HexOf(bench_.Exchange(Hex("01 02 31 39 30 30 3B 35 3B 30 3B 30 03 36 04"))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 31 03 35 37 04");
-    // N2: the print sends 1960 (NOTES.md); 1906 with its CHECK.
+    // N2: the print sends 1960 (docs/manual_errata.md); 1906 with its CHECK.
     EXPECT_EQ(HexOf(bench_.Exchange(rs232::Frame("1906;2;0;0", rs232::CheckRule::kXorText))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 32 32 32 03 35 38 04");
     // N3 := 333, as printed.
     EXPECT_EQ(HexOf(bench_.Exchange(Hex("01 02 30 39 30 36 3B 33 3B 30 3B 33 33 33 03 34 04"))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 33 33 33 03 35 39 04");
     EXPECT_EQ(bench_.Pac().Io().intRegisters.GetInt(3), 333);
-    // R1: the print sends 1971;3 and data type 0 where its table says 1 (NOTES.md, open_points.md).
+    // R1: the print sends 1971;3 and data type 0 where its table says 1 (docs/manual_errata.md).
     EXPECT_EQ(HexOf(bench_.Exchange(rs232::Frame("1907;1;1;0", rs232::CheckRule::kXorText))),
               "01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04");
 }

@@ -1,7 +1,7 @@
 """Checks on the raw text that blark's grammar is too lenient for but MATIEC is not.
 
 blark accepts `//` comments, pragmas, nested comments, `;;` and a missing `;` after END_IF;
-MATIEC refuses them all (../shared/st-portable-subset.md, "Lexical"), so they are refused here
+MATIEC refuses them all (docs/st_subset.md, "Lexical rules"), so they are refused here
 before parsing, with the exact position.
 """
 import re

@@ -1,4 +1,4 @@
-"""Names an identifier of the library may not take (../shared/st-portable-subset.md, "Identifiers")."""
+"""Names an identifier of the library may not take (docs/st_subset.md, "Names")."""
 
 C_KEYWORDS = {
     "AUTO", "BREAK", "CASE", "CHAR", "CONST", "CONTINUE", "DEFAULT", "DO", "DOUBLE", "ELSE", "ENUM",
@@ -31,7 +31,7 @@ TYPE_NAMES = {"BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "
 
 
 # MATIEC's lexer reserves the keywords of every IEC 61131-3 language and of configurations, not only
-# ST's, in every context of a POU (measured: ../shared/matiec-verdicts/, ident_*.st). Words it reads as
+# ST's, in every context of a POU (measured: tests/conformance/matiec_verdicts/, ident_*.st). Words it reads as
 # keywords only where a task or an IL operand may stand (PRIORITY, INTERVAL, SINGLE, Q, PT, IN...) stay free.
 IEC_KEYWORDS = {
     "STEP", "END_STEP", "INITIAL_STEP", "TRANSITION", "END_TRANSITION", "ACTION", "END_ACTION", "FROM",

@@ -1,6 +1,6 @@
 // The bits of the axis module's control and status words (manual 2.7.1 / 2.7.2), named as the library
 // names the jobs (E_PAC_AxisCommand: PAC_AX_SET_POSITION is kSetPosition ...). The manual prints "G29"
-// for both bits 4 and 5; by the order of 2.7.3.4 / 2.7.3.5 bit 4 is G26 and bit 5 G29 (NOTES.md).
+// for both bits 4 and 5; by the order of 2.7.3.4 / 2.7.3.5 bit 4 is G26 and bit 5 G29 (docs/manual_errata.md).
 // The simulated controller and the tests' scripted fake share these numbers and nothing else.
 #pragma once
 

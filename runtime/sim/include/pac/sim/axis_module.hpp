@@ -1,4 +1,4 @@
-// The controller's side of one 12-byte axis module in ONLINE mode (manual 2.7, /work/briefs/axis.md): each
+// The controller's side of one 12-byte axis module in ONLINE mode (manual 2.7, docs/sim_axis_modules.md): each
 // controller cycle it reads the PLC's control word (pac/axis_module_bits.hpp), per-mille dynamics and position,
 // acts on one ServoAxis (Axis ON, DISABLE DRIVE, the Start handshake, interrupts, G123, reset axis error) and
 // composes the status reply. It knows nothing of the bus or of the other axes; docs/sim_axis_modules.md lists
@@ -60,7 +60,7 @@ struct AxisModuleContext {
 
 // How a CMD error that is showing looks in the cycle of the next Start edge (2.7.4.14: "deleted during the
 // next Start command"). Both happen on real controllers as far as the PLC can tell, and FB_PAC_Axis must
-// cope with both (/work/briefs/axis.md).
+// cope with both (docs/sim_axis_modules.md).
 enum class CmdErrorRestart {
     kSameCycle,      // cleared and, if the new job is refused, set again with its number in the same cycle
     kOneCycleClear,  // the edge cycle shows flag and number 0; a refusal shows from the next cycle on

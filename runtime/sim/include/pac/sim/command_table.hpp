@@ -1,5 +1,5 @@
 // The commands the simulated PA-CONTROL knows (manual 5.1, 5.2), with the operating modes each is
-// valid in, and the command error numbers it answers with (6.5, with the corrections of NOTES.md:
+// valid in, and the command error numbers it answers with (6.5, with the corrections of docs/manual_errata.md:
 // 16#25 is 37; the second 16#1D is 16#1E = 30; the second 16#2D is 16#2E = 46; 16#2F is 47).
 #pragma once
 
@@ -41,7 +41,7 @@ constexpr std::uint16_t kGetError = 0x1909;
 constexpr std::uint16_t kGetState = 0x190B;
 constexpr std::uint16_t kGetActualPos = 0x190C;
 constexpr std::uint16_t kGetActualSpeed = 0x190D;
-constexpr std::uint16_t kGetRotationControlPos = 0x190E;  // the overview repeats "190D" (NOTES.md)
+constexpr std::uint16_t kGetRotationControlPos = 0x190E;  // the overview repeats "190D" (docs/manual_errata.md)
 constexpr std::uint16_t kGetMaxTowfault = 0x190F;         // overview only: 5.2.4.21 is missing
 constexpr std::uint16_t kGetStatusAxis = 0x1910;
 constexpr std::uint16_t kGetStatusAllAxis = 0x1911;

@@ -1,5 +1,5 @@
 // Operating statuses of the PA-CONTROL (manual 2.4.2 and 6.4). The status byte holds these DECIMAL
-// codes (ONLINE = 31 = 16#1F; NOTES.md). Mode groups the codes the way the validity tables of 5.1 do.
+// codes (ONLINE = 31 = 16#1F; docs/manual_errata.md). Mode groups the codes the way the validity tables of 5.1 do.
 #pragma once
 
 #include <cstdint>

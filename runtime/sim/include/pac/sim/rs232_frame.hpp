@@ -1,4 +1,4 @@
-// The frames of the RS232 protocol (manual 3.3, 3.3.1) as bytes, with the errata of NOTES.md and the
+// The frames of the RS232 protocol (manual 3.3, 3.3.1) as bytes, with the errata of docs/manual_errata.md and the
 // decisions of docs/sim_serial.md:
 //   command:         SOH STX CMD ; PAR_1 ; TYP_PAR_2 ; PAR_2 ETX CHECK EOT
 //   acknowledgement: SOH STX QUIT ; BE ; STATUS ; ERROR ; TYP_QUIT ; Q_PAR ETX CHECK EOT

@@ -29,7 +29,7 @@ public:
     virtual std::uint16_t SystemError() const = 0;
 };
 
-// Which CHECK of a command frame the controller takes as right (3.1, 3.3; NOTES.md).
+// Which CHECK of a command frame the controller takes as right (3.1, 3.3; docs/manual_errata.md).
 enum class CheckVerification { kXorWithEtx, kXorText, kNone };
 
 struct SerialPortConfig {

@@ -17,7 +17,7 @@
 namespace pac::sim {
 
 // Numbers the axis reports: refusals of a job (the axis module's CMD error number, 2.7.4.14) and axis errors
-// (2.7.4.15). Values of the command error list (6.5, NOTES.md) where one fits.
+// (2.7.4.15). Values of the command error list (6.5, docs/manual_errata.md) where one fits.
 namespace axis_error {
 constexpr std::uint16_t kNone = 0;
 constexpr std::uint16_t kValueOutsideRange = 41;     // 16#29: target not finite, dynamics not > 0
