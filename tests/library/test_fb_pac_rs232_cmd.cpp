@@ -318,11 +318,11 @@ TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
 }
 
 TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
-    const std::string text = "1906;5;0;0";
+    const std::string text = "1906;4;0;0";
     ASSERT_NE(XorText(text), 0);
     ASSERT_NE(XorEtx(text), 0);
     fb_->RETRIES.value = 5;
-    Start(0x1906, 5);
+    Start(0x1906, 4);
     std::vector<int> checks;
     for (int attempt = 0; attempt < 6; ++attempt) {
         checks.push_back(CheckOf(Sent()));
@@ -339,12 +339,12 @@ TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
 // a controller that ignores a wrong CHECK, so AUTO tries the other XOR; it never goes on to "0", and the rule
 // the first acknowledgement confirms is the one kept.
 TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
-    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
     Start(0x0906, 3, 333);
     const std::string text = "0906;3;0;333";
     std::vector<int> checks{CheckOf(Sent())};
     for (int outage = 0; outage < 2; ++outage) {
-        ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 200, "the frame again"));
+        ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the frame again"));
         checks.push_back(CheckOf(Sent()));
     }
     Reply(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
