@@ -1,8 +1,8 @@
 // The examples of manual 3.4 byte for byte, with the errata of NOTES.md and docs/open_points.md: the
 // acknowledgements exactly as printed (their CHECK is the XOR of the text and ETX, decimal), except the
 // 0603 acknowledgement, whose printed CHECK 8 leaves ETX out. The master frames are sent as printed where
-// the print is right; their CHECKs follow no single rule, so the controller verifies none in 3.4.1 and
-// the XOR of the text alone (the rule most of them follow) in 3.4.2 and 3.4.3.
+// the print is right, to the default controller, which verifies the XOR of the text (the rule four of them
+// follow, none the XOR with ETX); 3.4.1 to one that verifies none, with its printed CHECK 7.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -86,7 +86,7 @@ TEST(SerialManualExamples, ThePrintedCheckOf341FollowsNoRule) {
 
 class ComplexExample1 : public ::testing::Test {  // 3.4.2
 protected:
-    ComplexExample1() : bench_(Verifying(CheckVerification::kXorText)) {
+    ComplexExample1() {
         bench_.Pac().Io().inputs.Set(5, true);
         bench_.Pac().Io().intRegisters.SetInt(2, 222);
         bench_.Pac().Io().realRegisters.SetReal(1, 640.0F);
@@ -117,7 +117,7 @@ TEST_F(ComplexExample1, AReadIgnoresTheDataTypeFlag) {
 }
 
 TEST(SerialManualExamples, ComplexExample2StartOnlineMoveAndPoll) {  // 3.4.3
-    SerialBench bench(Verifying(CheckVerification::kXorText));
+    SerialBench bench;
     // Start online: the print sends 0A03 (its CHECK 14 is that of 0603). The acknowledgement as printed but
     // for the CHECK: 11 (XOR with ETX, "31 31"), where the print has 8 (without ETX).
     const Bytes started = bench.Exchange(rs232::Frame("0603;0;0;0", rs232::CheckRule::kXorText));
