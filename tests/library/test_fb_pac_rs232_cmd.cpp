@@ -113,6 +113,14 @@ protected:
     }
     void Reply(const Bytes& bytes) { incoming_.insert(incoming_.end(), bytes.begin(), bytes.end()); }
     bool Final() const { return pac::test::IsFinal(fb_); }
+    // Answers with `reply`, which must end the command Done in the next scan, then releases Execute.
+    void EndDone(const Bytes& reply) {
+        Reply(reply);
+        Cycle(1);
+        EXPECT_TRUE(fb_->DONE.value) << "Done on the reply";
+        fb_->EXECUTE.value = FALSE;
+        Cycle(1);
+    }
     void SetBytesPerScan(int n) { bytesPerScan_ = perScan_ = n; }
 
     pac::FbInstance<FB_PAC_RS232CMD> fb_ = PAC_FB(FB_PAC_RS232CMD);
@@ -347,12 +355,8 @@ TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
         ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the frame again"));
         checks.push_back(CheckOf(Sent()));
     }
-    Reply(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
-    Cycle(1);
-    ASSERT_TRUE(fb_->DONE.value);
+    EndDone(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
     for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
-    fb_->EXECUTE.value = FALSE;
-    Cycle(1);
     Start(0x1906, 3);
     EXPECT_EQ(CheckOf(Sent()), checks.back() == XorText(text) ? XorText("1906;3;0;0") : XorEtx("1906;3;0;0"))
         << "the rule of the frame that was acknowledged";
@@ -361,11 +365,7 @@ TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
 TEST_F(Rs232Cmd, AConfirmedRuleIsKeptThroughCheckErrors) {
     Start(0x1906, 2);
     const Bytes first = Sent();
-    Reply(Frame("0;1;1;0;0;222"));
-    Cycle(1);
-    ASSERT_TRUE(fb_->DONE.value);
-    fb_->EXECUTE.value = FALSE;
-    Cycle(1);
+    EndDone(Frame("0;1;1;0;0;222"));
     Start(0x1906, 2);
     for (int attempt = 0; attempt < 3; ++attempt) {
         EXPECT_EQ(HexOf(Sent()), HexOf(first)) << "attempt " << attempt << ": a spoilt byte changes no rule";
@@ -388,11 +388,7 @@ TEST_F(Rs232Cmd, ALateReplyConfirmsTheRuleOfTheFrameItAnswers) {
     const int sentCheck = CheckOf(Sent());
     Cycle(30);
     ASSERT_TRUE(Sent().empty()) << "waiting for a quiet line";
-    Reply(Frame("0;1;1;0;0;222"));
-    Cycle(1);
-    ASSERT_TRUE(fb_->DONE.value);
-    fb_->EXECUTE.value = FALSE;
-    Cycle(1);
+    EndDone(Frame("0;1;1;0;0;222"));
     Start(0x1906, 2);
     EXPECT_EQ(CheckOf(Sent()), sentCheck);
 }
@@ -405,11 +401,7 @@ TEST_F(Rs232Cmd, AReplyWithCheckZeroCountsOnlyWhenTheProgrammerChoseZero) {
     EXPECT_FALSE(fb_->ACKNOWLEDGED.value) << "an unchecked reply in AUTO";
     ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 200, "the frame again"));
     Sent();
-    Reply(Frame("0;1;1;0;0;222"));
-    Cycle(1);
-    ASSERT_TRUE(fb_->DONE.value);
-    fb_->EXECUTE.value = FALSE;
-    Cycle(1);
+    EndDone(Frame("0;1;1;0;0;222"));
     fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO;
     Start(0x1906, 2);
     EXPECT_EQ(CheckOf(Sent()), 0);
