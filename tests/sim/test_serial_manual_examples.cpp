@@ -30,7 +30,7 @@ TEST(SerialManualExamples, WriteIntegerRegisterN5With12345) {  // 3.4.1
 // Every master frame of 3.4 to a controller with the default settings: none is refused (16). The CHECK of
 // four of the seven prints is the XOR of the text (1900, 0906;3, 1971 as printed; 0603 once its code is
 // corrected), none the XOR with ETX; three print a CHECK that fits no rule and are sent with the XOR of the text.
-// Errata (docs/open_points.md, "Errata of chapter 3"; the manual's errata page):
+// Errata (docs/manual_errata.md, "RS232"):
 //   3.4.1 CHECK 7 fits no rule (XOR of the text 0, with ETX 3): sent with 0;
 //   3.4.2 "read N2" prints the code 1960 for 1906, and its CHECK 6 fits no rule for either (XOR of the text 7,
 //         with ETX 4: the two texts hold the same bytes): sent as 1906 with 7;
