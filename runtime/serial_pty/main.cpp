@@ -39,7 +39,8 @@ constexpr const char* kUsage =
     "               [--check xor-etx|xor-text|none] [--no-zero-check] [--reply-check xor-etx|xor-text|zero]\n"
     "               [--silent-on-bad-check] [--no-idle-poll-reply] [--require-stop-input] [--until-stdin-closes]\n"
     "Prints the pseudo-terminal's path, then serves RS232 frames of manual chapter 3 on it in real time.\n"
-    "--example-setup: input 5 = 1, N2 = 222, R1 = 640.0 (the setup of manual 3.4.2).\n";
+    "--example-setup: input 5 = 1, N2 = 222, R1 = 640.0 (the setup of manual 3.4.2).\n"
+    "Defaults: --check xor-text (the manual's master frames), --reply-check xor-etx (its acknowledgements).\n";
 
 bool Parse(int argc, char** argv, Options& o) {
     std::vector<std::string> args(argv + 1, argv + argc);

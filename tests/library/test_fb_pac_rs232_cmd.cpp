@@ -4,6 +4,8 @@
 // sending again or polling, and the PLCopen rules on every scan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -59,6 +61,25 @@ Bytes Frame(const std::string& text, int check = -1) {
     return bytes;
 }
 
+// The XOR of the text, and with ETX.
+int XorText(const std::string& text) {
+    unsigned sum = 0;
+    for (char c : text) sum ^= static_cast<unsigned char>(c);
+    return static_cast<int>(sum);
+}
+int XorEtx(const std::string& text) { return XorText(text) ^ 3; }
+// A command frame as AUTO writes it first: the XOR of the text (the rule of the manual's master frames).
+Bytes Command(const std::string& text) { return Frame(text, XorText(text)); }
+
+// The CHECK of a command frame the FB sent (the digits between ETX and EOT), -1 for anything else.
+int CheckOf(const Bytes& frame) {
+    if (frame.size() < 5 || frame.back() != 4) return -1;
+    std::size_t etx = frame.size() - 2;
+    while (etx > 0 && frame[etx] != 3) --etx;
+    if (frame[etx] != 3) return -1;
+    return std::stoi(std::string(frame.begin() + static_cast<std::ptrdiff_t>(etx) + 1, frame.end() - 1));
+}
+
 // One FB_PAC_Rs232Cmd whose receive buffer the test fills and whose transmit buffer it reads, scan by scan,
 // with the PLCopen checker after every scan.
 class Rs232Cmd : public pac::ScanTest {
@@ -92,6 +113,14 @@ protected:
     }
     void Reply(const Bytes& bytes) { incoming_.insert(incoming_.end(), bytes.begin(), bytes.end()); }
     bool Final() const { return pac::test::IsFinal(fb_); }
+    // Answers with `reply`, which must end the command Done in the next scan, then releases Execute.
+    void EndDone(const Bytes& reply) {
+        Reply(reply);
+        Cycle(1);
+        EXPECT_TRUE(fb_->DONE.value) << "Done on the reply";
+        fb_->EXECUTE.value = FALSE;
+        Cycle(1);
+    }
     void SetBytesPerScan(int n) { bytesPerScan_ = perScan_ = n; }
 
     pac::FbInstance<FB_PAC_RS232CMD> fb_ = PAC_FB(FB_PAC_RS232CMD);
@@ -132,7 +161,7 @@ TEST_F(Rs232Cmd, ManualFramesWithTheErrataApplied) {
     };
     for (const Case& c : cases) {
         Start(c.code, c.param, c.data);
-        EXPECT_EQ(HexOf(Sent()), HexOf(Frame(c.text))) << c.text << ": the XOR with ETX by default";
+        EXPECT_EQ(HexOf(Sent()), HexOf(Command(c.text))) << c.text << ": the XOR of the text by default";
         fb_->EXECUTE.value = FALSE;
         Reply(Frame("0;1;1;0;0;0"));
         Cycle(3);
@@ -157,7 +186,7 @@ TEST_F(Rs232Cmd, NumbersInTheirAsciiForm) {
     };
     for (const Case& c : cases) {
         Start(c.code, c.param, c.data);
-        EXPECT_EQ(HexOf(Sent()), HexOf(Frame(c.text))) << c.text;
+        EXPECT_EQ(HexOf(Sent()), HexOf(Command(c.text))) << c.text;
         fb_->EXECUTE.value = FALSE;
         Reply(Frame("0;1;1;0;0;0"));
         Cycle(3);
@@ -253,23 +282,26 @@ TEST_F(Rs232Cmd, ACommandErrorEndsWithItsNumber) {
     EXPECT_TRUE(fb_->ACKNOWLEDGED.value);
 }
 
-TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheNextRuleInAuto) {
-    Start(0x0906, 5, 12345);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 3)));
+TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheOtherXorInAuto) {
+    Start(0x1906, 5);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0"))));
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 0))) << "XOR of the text (0) in the scan after";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0")))) << "the XOR with ETX in the scan after";
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;5;0;12345", 0))) << "then \"0\"";
-    Reply(Frame("0;1;1;0;0;12345"));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0")))) << "then the XOR of the text again";
+    Reply(Frame("16;0;1;0;0;0"));
+    Cycle(1);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0"))));
+    Reply(Frame("0;1;1;0;0;0"));
     Cycle(1);
     EXPECT_TRUE(fb_->DONE.value);
-    EXPECT_EQ(fb_->REPEATS.value, 2);
+    EXPECT_EQ(fb_->REPEATS.value, 3);
     fb_->EXECUTE.value = FALSE;
     Cycle(1);
-    Start(0x1906, 5);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", 0))) << "the rule that worked is kept";
+    Start(0x0906, 3, 333);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0906;3;0;333", XorEtx("0906;3;0;333")))) << "the rule that worked is kept";
 }
 
 TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
@@ -286,6 +318,118 @@ TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
     EXPECT_EQ(fb_->REPEATS.value, 2);
 }
 
+// ---- AUTO settles only on a rule a correct acknowledgement confirmed, and never on "0" ----
+
+TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
+    Start(0x1900, 5);  // 3.4.2, input 5: the print's CHECK 6 is the XOR of the text
+    EXPECT_EQ(HexOf(Sent()), "01 02 31 39 30 30 3B 35 3B 30 3B 30 03 36 04");
+}
+
+TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
+    const std::string text = "1906;4;0;0";
+    ASSERT_NE(XorText(text), 0);
+    ASSERT_NE(XorEtx(text), 0);
+    fb_->RETRIES.value = 5;
+    Start(0x1906, 4);
+    std::vector<int> checks;
+    for (int attempt = 0; attempt < 6; ++attempt) {
+        checks.push_back(CheckOf(Sent()));
+        Reply(Frame("16;0;1;0;0;0"));
+        Cycle(1);
+    }
+    for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
+    EXPECT_NE(std::find(checks.begin(), checks.end(), XorEtx(text)), checks.end()) << "both XORs tried";
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, 16u);
+}
+
+// The case: a short outage while the first command runs. Silence before any acknowledgement may mean
+// a controller that ignores a wrong CHECK, so AUTO tries the other XOR; it never goes on to "0", and the rule
+// the first acknowledgement confirms is the one kept.
+TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
+    Start(0x0906, 3, 333);
+    const std::string text = "0906;3;0;333";
+    std::vector<int> checks{CheckOf(Sent())};
+    for (int outage = 0; outage < 2; ++outage) {
+        ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the frame again"));
+        checks.push_back(CheckOf(Sent()));
+    }
+    EndDone(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
+    for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
+    Start(0x1906, 3);
+    EXPECT_EQ(CheckOf(Sent()), checks.back() == XorText(text) ? XorText("1906;3;0;0") : XorEtx("1906;3;0;0"))
+        << "the rule of the frame that was acknowledged";
+}
+
+TEST_F(Rs232Cmd, AConfirmedRuleIsKeptThroughCheckErrors) {
+    Start(0x1906, 2);
+    const Bytes first = Sent();
+    EndDone(Frame("0;1;1;0;0;222"));
+    Start(0x1906, 2);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        EXPECT_EQ(HexOf(Sent()), HexOf(first)) << "attempt " << attempt << ": a spoilt byte changes no rule";
+        Reply(Frame("16;0;1;0;0;0"));
+        Cycle(1);
+    }
+    EXPECT_EQ(HexOf(Sent()), HexOf(first));
+    Reply(Frame("0;1;1;0;0;222"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+    EXPECT_EQ(fb_->REPEATS.value, 3);
+}
+
+// A reply that comes after Timeout, while the FB waits for the line to fall quiet, acknowledges the frame
+// sent before the silence: its rule is the one confirmed, not the one AUTO had moved on to meanwhile.
+TEST_F(Rs232Cmd, ALateReplyConfirmsTheRuleOfTheFrameItAnswers) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    Reply(Hex("55"));  // a byte just before the request: the line is not quiet for QuietTime yet
+    Start(0x1906, 2);
+    const int sentCheck = CheckOf(Sent());
+    Cycle(30);
+    ASSERT_TRUE(Sent().empty()) << "waiting for a quiet line";
+    EndDone(Frame("0;1;1;0;0;222"));
+    Start(0x1906, 2);
+    EXPECT_EQ(CheckOf(Sent()), sentCheck);
+}
+
+TEST_F(Rs232Cmd, AReplyWithCheckZeroCountsOnlyWhenTheProgrammerChoseZero) {
+    Start(0x1906, 2);
+    Sent();
+    Reply(Frame("0;1;1;0;0;222", 0));
+    Cycle(1);
+    EXPECT_FALSE(fb_->ACKNOWLEDGED.value) << "an unchecked reply in AUTO";
+    ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 200, "the frame again"));
+    Sent();
+    EndDone(Frame("0;1;1;0;0;222"));
+    fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO;
+    Start(0x1906, 2);
+    EXPECT_EQ(CheckOf(Sent()), 0);
+    Reply(Frame("0;1;1;0;0;222", 0));
+    Cycle(1);
+    EXPECT_TRUE(fb_->DONE.value);
+}
+
+// ---- REALs are sent exactly or not at all ----
+
+TEST_F(Rs232Cmd, ARealIsSentExactlyOrRefused) {
+    Start(0x0907, 1, pac::test::BitsOf(0.00004F));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Command("0907;1;1;0.00004")));
+    fb_->EXECUTE.value = FALSE;
+    Reply(Frame("0;1;1;0;1;0.0000"));
+    Cycle(3);
+    Start(0x0907, 1, pac::test::BitsOf(1.234567E-7F));  // needs more than 9 decimals
+    EXPECT_TRUE(fb_->ERROR.value);
+    EXPECT_EQ(fb_->ERRORID.value, kGvl["PAC_LIB_ERR_SERIAL_DATA"]);
+    EXPECT_TRUE(Sent().empty());
+}
+
+// 5.2.6.13 sends 0A93 with the data 0; 3.3: "if a data field has no function, enter a 0".
+TEST_F(Rs232Cmd, ACommandWithoutDataSendsZero) {
+    Start(0x0A93, 4);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Command("0A93;4;1;0")));
+}
+
 // A damaged reply: a read is sent again, a command that must not run twice is asked for its
 // acknowledgement with EOT; either only once the line has been quiet for QuietTime.
 TEST_F(Rs232Cmd, ADamagedReplyToAReadSendsItAgainOnceTheLineIsQuiet) {
@@ -297,7 +441,7 @@ TEST_F(Rs232Cmd, ADamagedReplyToAReadSendsItAgainOnceTheLineIsQuiet) {
     Cycle(1);
     EXPECT_TRUE(fb_->BUSY.value);
     ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 100, "the frame again"));
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2;0;0")));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Command("1906;2;0;0")));
     EXPECT_GE(task_.ScanCount(), 2 + 50) << "QuietTime T#50MS after the last byte";
     Reply(Frame("0;1;1;0;0;222"));
     Cycle(1);

@@ -121,7 +121,12 @@ private:
     int repeats_ = 0;
 };
 
-int FrameBytes(const std::string& text) {
+// The bytes of a command frame as AUTO first writes it (the XOR of the text), and of a reply as the
+// simulator writes it by default (the XOR with ETX).
+int RequestBytes(const std::string& text) {
+    return static_cast<int>(pac::sim::rs232::Frame(text, pac::sim::rs232::CheckRule::kXorText).size());
+}
+int ReplyBytes(const std::string& text) {
     return static_cast<int>(pac::sim::rs232::Frame(text, pac::sim::rs232::CheckRule::kXorWithEtx).size());
 }
 
@@ -131,12 +136,12 @@ TEST_P(Rs232Timing, WriteAndReadRegistersAtTheLinesPace) {
     SerialCmdPlc plc(GetParam());
     const FinalOutcome write = plc.Run(0x0906, 3, static_cast<std::uint32_t>(-333));
     ASSERT_TRUE(write.Done()) << write;
-    EXPECT_EQ(write.Scans(), plc.ReplyScans(FrameBytes("0906;3;0;-333"), FrameBytes("0;1;1;0;0;-333")));
+    EXPECT_EQ(write.Scans(), plc.ReplyScans(RequestBytes("0906;3;0;-333"), ReplyBytes("0;1;1;0;0;-333")));
     EXPECT_EQ(plc.Pac().Io().intRegisters.GetInt(3), -333);
 
     const FinalOutcome read = plc.Run(0x1906, 3);
     ASSERT_TRUE(read.Done()) << read;
-    EXPECT_EQ(read.Scans(), plc.ReplyScans(FrameBytes("1906;3;0;0"), FrameBytes("0;1;1;0;0;-333")));
+    EXPECT_EQ(read.Scans(), plc.ReplyScans(RequestBytes("1906;3;0;0"), ReplyBytes("0;1;1;0;0;-333")));
     EXPECT_EQ(plc.AckData(), static_cast<std::uint32_t>(-333));
 
     ASSERT_TRUE(plc.Run(0x0907, 1, BitsOf(640.5F)).Done());
@@ -181,9 +186,9 @@ TEST(Rs232Readings, EveryCheckRuleTheControllerMayVerify) {
         int repeats;  // of the first command, in AUTO
     };
     const Case cases[] = {
-        {pac::sim::CheckVerification::kXorWithEtx, true, true, 0},
-        {pac::sim::CheckVerification::kXorText, false, true, 1},
-        {pac::sim::CheckVerification::kXorText, false, false, 1},
+        {pac::sim::CheckVerification::kXorText, true, true, 0},
+        {pac::sim::CheckVerification::kXorWithEtx, false, true, 1},
+        {pac::sim::CheckVerification::kXorWithEtx, true, false, 1},
         {pac::sim::CheckVerification::kNone, true, true, 0},
     };
     for (const Case& c : cases) {
@@ -200,12 +205,50 @@ TEST(Rs232Readings, EveryCheckRuleTheControllerMayVerify) {
     }
 }
 
+// The case on the default controller: the first two requests are lost in an outage. AUTO tries the
+// other XOR on the silence, never "0"; so a request spoilt later (5552.0 -> 5553.0) is refused with 16 and
+// sent again, never carried out.
+TEST(Rs232Readings, AnOutageAtTheStartNeverLeavesTheLinkUnchecked) {
+    SerialCmdPlc plc(SerialTiming{9600, 1, 10});
+    plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+    plc.Pac().Io().intRegisters.SetInt(4, 4444);
+    pac::sim::SerialWire& toPac = plc.Bench().Line().toPac;
+    const int request = RequestBytes("1906;4;0;0");
+    ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("1906;4;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
+    for (int i = 0; i < 2 * request; ++i) toPac.DropByte(toPac.BytesSent() + static_cast<std::uint64_t>(i));
+    const FinalOutcome read = plc.Run(0x1906, 4);
+    ASSERT_TRUE(read.Done()) << read;
+    EXPECT_EQ(plc.AckData(), 4444u);
+    EXPECT_EQ(plc.Repeats(), 2);
+
+    toPac.CorruptByte(toPac.BytesSent() + 14, 0x01);  // the '2' of 5552.0 becomes '3'
+    const FinalOutcome write = plc.Run(0x0907, 1, BitsOf(5552.0F));
+    ASSERT_TRUE(write.Done()) << write;
+    EXPECT_EQ(plc.Repeats(), 1);
+    EXPECT_EQ(plc.Pac().Serial().Counters().checkErrors, 1u);
+    EXPECT_EQ(plc.Pac().Io().realRegisters.GetReal(1), 5552.0F);
+}
+
+// What the default FB sends, the default controller takes: no command is refused on a clean line.
+TEST(Rs232Readings, TheDefaultsAgree) {
+    SerialCmdPlc plc(SerialTiming{9600, 1, 10});
+    ASSERT_TRUE(plc.Run(0x0906, 3, 333).Done());
+    EXPECT_EQ(plc.Repeats(), 0);
+    ASSERT_TRUE(plc.Run(0x0907, 1, BitsOf(0.00004F)).Done());
+    EXPECT_EQ(plc.Pac().Io().realRegisters.GetReal(1), 0.00004F) << "sent exactly";
+    EXPECT_EQ(plc.Pac().Serial().Counters().checkErrors, 0u);
+}
+
 TEST(Rs232Readings, EveryCheckRuleOfTheReplies) {
     for (auto rule : {pac::sim::rs232::CheckRule::kXorWithEtx, pac::sim::rs232::CheckRule::kXorText,
                       pac::sim::rs232::CheckRule::kZero}) {
         pac::sim::SerialPortConfig port;
         port.replyCheck = rule;
         SerialCmdPlc plc({}, port);
+        if (rule == pac::sim::rs232::CheckRule::kZero) {
+            // An unchecked reply counts only where the programmer chose no checksum.
+            plc.Cmd()->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO;
+        }
         ASSERT_TRUE(plc.Run(0x190B, 0).Done());
         EXPECT_EQ(plc.AckData(), 1u);
     }
@@ -265,7 +308,7 @@ TEST_F(Rs232Faults, ADroppedByteOfTheRequest) {
 }
 
 TEST_F(Rs232Faults, ADroppedEotOfTheRequest) {
-    ToPac().DropByte(ToPac().BytesSent() + FrameBytes("1906;4;0;0") - 1);
+    ToPac().DropByte(ToPac().BytesSent() + RequestBytes("1906;4;0;0") - 1);
     ExpectRead(1);
 }
 

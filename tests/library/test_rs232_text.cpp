@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -108,15 +110,57 @@ TEST(Rs232Reply, AnyFieldOutOfItsFormRefusesTheWholeReply) {
     EXPECT_FALSE(Parse(std::string(65, '1'), reply)) << "longer than a frame's text";
 }
 
-TEST(Rs232Real, OnePointAtMostFourDecimalsTrailingZerosDroppedButOne) {
+// The fewest decimals (one at least, nine at most) whose number is the REAL itself: what the controller reads
+// (3.1: ftoa, then a float) is what Data held.
+TEST(Rs232Real, TheFewestDecimalsThatGiveTheRealBack) {
     EXPECT_EQ(Real(5552.0F), "5552.0");
     EXPECT_EQ(Real(12.345F), "12.345");
     EXPECT_EQ(Real(-0.5F), "-0.5");
     EXPECT_EQ(Real(2.75F), "2.75") << "2.75 rounds to 3: the integer part steps back";
     EXPECT_EQ(Real(0.0001F), "0.0001") << "leading zeros of the decimals";
     EXPECT_EQ(Real(10.05F), "10.05");
-    EXPECT_EQ(Real(0.99999F), "1.0") << "decimals rounded up to 1.0000 carry into the integer part";
-    EXPECT_EQ(Real(-0.00001F), "0.0") << "no sign before a value that rounds to zero";
+    EXPECT_EQ(Real(0.00004F), "0.00004") << "not 0.0";
+    EXPECT_EQ(Real(0.99999F), "0.99999") << "not 1.0";
+    EXPECT_EQ(Real(-0.00001F), "-0.00001");
+    EXPECT_EQ(Real(12.34567F), "12.34567") << "not 12.3457";
+    EXPECT_EQ(Real(0.1F), "0.1") << "0.1 is not exact in binary, but the nearest REAL to 0.1 is this one";
+    EXPECT_EQ(Real(16777215.0F), "16777215.0");
+    EXPECT_EQ(Real(-0.0F), "0.0");
+}
+
+// Seeded random REALs of every magnitude below 1.0E9: either the text gives the REAL back, or no text with at
+// most nine decimals does and the REAL is refused.
+TEST(Rs232Real, ExactOrRefusedForRandomReals) {
+    const std::uint32_t seed = 20261202;
+    std::uint32_t state = seed;
+    auto next = [&state] {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        return state;
+    };
+    int sent = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // exponents 2^-40 .. 2^30, any mantissa and sign
+        const std::uint32_t exponent = 127 - 40 + next() % 71;
+        const std::uint32_t bits = (next() & 0x807FFFFFu) | (exponent << 23);
+        float value;
+        std::memcpy(&value, &bits, sizeof value);
+        if (std::fabs(value) >= 1.0e9F) continue;
+        const std::string text = Real(value);
+        if (text != "-1") {
+            ++sent;
+            EXPECT_EQ(static_cast<float>(std::strtod(text.c_str(), nullptr)), value) << text << ", seed " << seed;
+            continue;
+        }
+        for (int decimals = 1; decimals <= 9; ++decimals) {
+            char buffer[64];
+            std::snprintf(buffer, sizeof buffer, "%.*f", decimals, static_cast<double>(value));
+            EXPECT_NE(static_cast<float>(std::strtod(buffer, nullptr)), value)
+                << buffer << " would have carried it; seed " << seed;
+        }
+    }
+    EXPECT_GT(sent, 5000) << "seed " << seed;
 }
 
 TEST(Rs232Real, ValuesWithoutThisFormOrThatDoNotFitAreRefused) {
@@ -125,6 +169,7 @@ TEST(Rs232Real, ValuesWithoutThisFormOrThatDoNotFitAreRefused) {
     EXPECT_EQ(Real(-std::numeric_limits<float>::infinity()), "-1");
     EXPECT_EQ(Real(1.0e9F), "-1");
     EXPECT_EQ(Real(-1.0e9F), "-1");
+    EXPECT_EQ(Real(1.234567E-7F), "-1") << "more than nine decimals";
     EXPECT_EQ(Real(12.5F, 61), "-1") << "12.5 needs 4 places, 61..64: one more than the text has";
     EXPECT_EQ(Real(1.5F, 61), "1.5") << "exactly fits";
     EXPECT_EQ(Real(123456.5F, 60), "-1") << "the integer part alone does not fit";

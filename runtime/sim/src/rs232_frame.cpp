@@ -74,14 +74,18 @@ bool TakesData(std::uint16_t code) {
     switch (code) {
         case 0x0700: case 0x0800: case 0x0902: case 0x0903: case 0x0904: case 0x0905: case 0x0906: case 0x0907:
         case 0x0A86: case 0x0A87: case 0x0A89: case 0x0A8D: case 0x0A8E: case 0x0A90: case 0x0A91:
-        case 0x0A94: case 0x0A95: case 0x0A96:
+        case 0x0A94: case 0x0A95: case 0x0A96: case 0x0AA2: case 0x0AA3:
             return true;
         default:
             return false;
     }
 }
 
-bool DataIsReal(std::uint16_t code) { return TakesData(code) && (code == 0x0800 || code == 0x0907 || code >= 0x0A00); }
+bool DataIsReal(std::uint16_t code) {
+    // 0AA2 (monitoring 0 / 1) and 0AA3 (the condition's bytes) carry an integer, 5.2.6.22 / 5.2.6.23.
+    const bool integer = code == 0x0AA2 || code == 0x0AA3;
+    return TakesData(code) && !integer && (code == 0x0800 || code == 0x0907 || code >= 0x0A00);
+}
 
 bool AckIsPosition(std::uint16_t code) {
     switch (code) {
