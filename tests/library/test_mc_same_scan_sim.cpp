@@ -1,0 +1,199 @@
+// Two MC_ blocks edged in the same scan, in both call orders (docs/fb/MC_blocks.md, "State diagram"): PLCopen
+// changes the axis state when a command is issued, so the block called second is accepted or refused on the
+// state the first one entered. Every pair of MC_Power (Enable falling), MC_Home, MC_MoveAbsolute,
+// MC_MoveRelative, MC_MoveVelocity, MC_Halt, two MC_Stop and MC_Reset, from Standstill and from DiscreteMotion,
+// on the MC suites' bus timings: the edge scan as the diagram says, the last accepted block runs to its end, a
+// stop is never lost (Stopping refuses motion while its Execute is TRUE) and the axis is never left locked.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mc_test_steps.hpp"
+
+namespace {
+
+using namespace pac::test::mc;
+using pac::test::BusTiming;
+using pac::test::McBench;
+using pac::test::McBlocks;
+using pac::test::McCallOrder;
+
+class McSameScanSim : public ::testing::TestWithParam<BusTiming> {};
+INSTANTIATE_TEST_SUITE_P(BusTimings, McSameScanSim, ::testing::ValuesIn(McTimings()), pac::test::BusTimingName);
+
+const McBlock kPairBlocks[] = {McBlock::kPowerOff,     McBlock::kHome, McBlock::kMoveAbsolute,
+                               McBlock::kMoveRelative, McBlock::kMoveVelocity, McBlock::kHalt,
+                               McBlock::kStop,         McBlock::kStop2, McBlock::kReset};
+
+// What the diagram makes of blocks edged in one scan in call order, from `state`.
+struct Expectation {
+    std::vector<std::uint32_t> refusals;  // per call, 0 accepted
+    E_PAC_MCSTATE state;                  // at the end of the edge scan
+    bool poweredOff = false;
+    bool hasWinner = false;  // a motion block was accepted: the last one owns the axis
+    McBlock winner = McBlock::kReset;
+};
+
+Expectation Expect(E_PAC_MCSTATE state, const std::vector<McBlock>& calls) {
+    Expectation e{{}, state};
+    for (const McBlock block : calls) {
+        const std::uint32_t refusal = Refusal(e.state, block);
+        e.refusals.push_back(refusal);
+        if (refusal != 0) continue;
+        e.state = Entered(e.state, block);
+        if (block == McBlock::kPowerOff) {
+            e.poweredOff = true;
+        } else if (block != McBlock::kReset) {
+            e.hasWinner = true;
+            e.winner = block;
+        }
+    }
+    return e;
+}
+
+// The axis is free again: every block released, MC_Power on, Standstill within 300 ms, and a new
+// MC_MoveAbsolute (A) is accepted and reaches its target. No MC_Stop is cycled for it.
+void ExpectNotLocked(McBench& bench) {
+    McBlocks& b = bench.Blocks(1);
+    for (const McBlock block : kPairBlocks) Disarm(bench, block);
+    b.moveA->EXECUTE.value = FALSE;
+    bench.Scan();
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kStandstill; }, 300, "Standstill"))
+        << "state " << Name(bench.State(1));
+    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 2000, "the axis stands"));
+    const float target = bench.Position(1) + 20.0f;
+    SetMove(b.moveA, target);
+    Execute(bench, b.moveA);
+    EXPECT_TRUE(b.moveA->BUSY.value) << "refused in Standstill: " << pac::test::OutputsOf(b.moveA);
+    ASSERT_TRUE(EndsDone(bench, b.moveA, 2000, "MoveAbsolute A after the pair"));
+    EXPECT_EQ(bench.Position(1), target);
+}
+
+// The last accepted block runs to its end: Done, MC_MoveVelocity InVelocity (then halted); a stop holds
+// Stopping while its Execute stays TRUE, refusing a new move with 16#8032, the axis standing.
+void ExpectWinnerEnds(McBench& bench, McBlock winner) {
+    McBlocks& b = bench.Blocks(1);
+    if (winner == McBlock::kMoveVelocity) {
+        ASSERT_TRUE(bench.WaitFor([&] { return b.velocity->INVELOCITY.value != 0; }, 300, "InVelocity"));
+        if (b.halt->EXECUTE.value) Release(bench, b.halt);
+        Execute(bench, b.halt);
+        ASSERT_TRUE(EndsDone(bench, b.halt, 2000, "Halt of MoveVelocity"));
+        return;
+    }
+    ASSERT_TRUE(bench.WaitFor([&] { return OutputsOf(bench, winner).Final(); }, 20000, std::string(Name(winner)) + " final"));
+    const pac::test::PlcOpenOutputs out = OutputsOf(bench, winner);
+    ASSERT_TRUE(out.done) << Name(winner) << " owns the axis: " << out;
+    if (!IsStop(winner)) return;
+    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving()) << "the stop is done: the axis stands";
+    bench.Scan(3);
+    EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
+    SetMove(b.moveA, bench.Position(1) + 5.0f);
+    if (b.moveA->EXECUTE.value) Release(bench, b.moveA);
+    Execute(bench, b.moveA);
+    EXPECT_EQ(b.moveA->ERRORID.value, kMcStopping) << pac::test::OutputsOf(b.moveA);
+    Release(bench, b.moveA);
+}
+
+void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock second, McCallOrder order) {
+    McBench bench(timing, 1, {}, order);
+    ASSERT_NO_FATAL_FAILURE(bench.PowerUp());
+    McBlocks& b = bench.Blocks(1);
+    if (from == kDiscrete) {
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    }
+    ASSERT_EQ(bench.State(1), from);
+    const std::vector<McBlock> calls = {first, second};
+    const Expectation e = Expect(from, calls);
+    Arm(bench, first);
+    Arm(bench, second);
+    bench.Scan();
+    for (std::size_t i = 0; i < calls.size(); ++i) {
+        if (calls[i] == McBlock::kPowerOff) continue;
+        const pac::test::PlcOpenOutputs out = OutputsOf(bench, calls[i]);
+        if (e.refusals[i] != 0) {
+            EXPECT_TRUE(out.error && out.errorId == e.refusals[i])
+                << Name(calls[i]) << " refused with 16#" << std::hex << e.refusals[i] << " expected: " << out;
+        } else {
+            EXPECT_TRUE(out.busy || (calls[i] == McBlock::kReset && out.done)) << Name(calls[i]) << " accepted: " << out;
+        }
+    }
+    EXPECT_EQ(bench.State(1), e.state) << "the state at the end of the edge scan: " << Name(bench.State(1))
+                                       << " instead of " << Name(e.state);
+    bench.Scan();
+    // Every block accepted before the last one is aborted by it (PLCopen Aborting), and so is A's long move.
+    for (std::size_t i = 0; i < calls.size(); ++i) {
+        if (e.refusals[i] != 0 || calls[i] == McBlock::kReset || calls[i] == McBlock::kPowerOff) continue;
+        if (e.hasWinner && calls[i] == e.winner) continue;
+        EXPECT_TRUE(OutputsOf(bench, calls[i]).aborted) << Name(calls[i]) << ": " << OutputsOf(bench, calls[i]);
+    }
+    if (from == kDiscrete && (e.hasWinner || e.poweredOff)) {
+        EXPECT_TRUE(b.moveA->COMMANDABORTED.value) << "the long move: " << pac::test::OutputsOf(b.moveA);
+    }
+    if (e.poweredOff) {
+        // Power off ends whatever ran: no output asserted but that it ends.
+        ASSERT_TRUE(bench.WaitFor([&] {
+            for (const McBlock block : calls) {
+                if (OutputsOf(bench, block).busy) return false;
+            }
+            return true;
+        }, 2000, "every block of the pair ends"));
+        EXPECT_EQ(bench.State(1), kDisabled);
+    } else if (e.hasWinner) {
+        ExpectWinnerEnds(bench, e.winner);  // and then whether the axis is free, whatever happened
+    } else if (from == kDiscrete) {
+        ASSERT_TRUE(EndsDone(bench, b.moveA, 20000, "the long move, nothing having aborted it"));
+    }
+    ExpectNotLocked(bench);
+}
+
+TEST_P(McSameScanSim, EveryPairOfBlocksEdgedInOneScanFollowsTheDiagramInBothCallOrders) {
+    for (const auto from : {kStandstill, kDiscrete}) {
+        for (std::size_t i = 0; i < std::size(kPairBlocks); ++i) {
+            for (std::size_t j = i + 1; j < std::size(kPairBlocks); ++j) {
+                // kPairBlocks lists the blocks in McBench's call order: reversed, the later one is called first.
+                for (const auto order : {McCallOrder::kAsListed, McCallOrder::kReversed}) {
+                    const bool asListed = order == McCallOrder::kAsListed;
+                    const McBlock first = asListed ? kPairBlocks[i] : kPairBlocks[j];
+                    const McBlock second = asListed ? kPairBlocks[j] : kPairBlocks[i];
+                    SCOPED_TRACE(std::string("from ") + Name(from) + ": " + Name(first) + ", then " + Name(second) +
+                                 " in the same scan");
+                    RunPair(GetParam(), from, first, second, order);
+                }
+            }
+        }
+    }
+}
+
+// The scan in which the MC_Stop holding Stopping sees its Execute FALSE (its stop done) leaves Stopping: a move
+// edged in that scan is accepted when called after MC_Stop, refused with 16#8032 when called before it (the
+// axis was still Stopping then); either way the axis is free afterwards.
+TEST_P(McSameScanSim, ReleasingAStopFreesTheAxisForTheBlocksCalledAfterIt) {
+    for (const auto order : {McCallOrder::kAsListed, McCallOrder::kReversed}) {
+        SCOPED_TRACE(order == McCallOrder::kAsListed ? "MC_MoveAbsolute before MC_Stop" : "MC_Stop first");
+        McBench bench(GetParam(), 1, {}, order);
+        ASSERT_NO_FATAL_FAILURE(bench.PowerUp());
+        McBlocks& b = bench.Blocks(1);
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+        Execute(bench, b.stop);
+        ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
+        bench.Scan(2);
+        ASSERT_EQ(bench.State(1), kStopping);
+        b.stop->EXECUTE.value = FALSE;
+        Arm(bench, McBlock::kMoveAbsolute);
+        bench.Scan();
+        const pac::test::PlcOpenOutputs out = OutputsOf(bench, McBlock::kMoveAbsolute);
+        if (order == McCallOrder::kReversed) {
+            EXPECT_TRUE(out.busy) << out;
+            EXPECT_EQ(bench.State(1), kDiscrete);
+            ASSERT_TRUE(EndsDone(bench, b.moveB, 2000, "MoveAbsolute B"));
+        } else {
+            EXPECT_TRUE(out.error && out.errorId == kMcStopping) << out;
+            EXPECT_EQ(bench.State(1), kStandstill);
+        }
+        ExpectNotLocked(bench);
+    }
+}
+
+}  // namespace
