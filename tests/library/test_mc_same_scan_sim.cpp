@@ -146,6 +146,14 @@ void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock
         if (from == kDiscrete) {
             EXPECT_TRUE(b.moveA->COMMANDABORTED.value) << "the long move: " << pac::test::OutputsOf(b.moveA);
         }
+        // A job not yet started is aborted, never sent to an axis being switched off; a halt or stop is over
+        // once the axis stands.
+        for (std::size_t i = 0; i < calls.size(); ++i) {
+            if (e.refusals[i] != 0 || calls[i] == McBlock::kReset || calls[i] == McBlock::kPowerOff) continue;
+            const pac::test::PlcOpenOutputs out = OutputsOf(bench, calls[i]);
+            const bool halts = calls[i] == McBlock::kHalt || IsStop(calls[i]);
+            EXPECT_TRUE(halts ? out.done : out.aborted) << Name(calls[i]) << " with MC_Power off: " << out;
+        }
     } else if (e.hasWinner) {
         ExpectWinnerEnds(bench, e.winner);  // and then whether the axis is free, whatever happened
     } else if (from == kDiscrete) {
