@@ -43,6 +43,10 @@ struct McBlocks {
     FbInstance<MC_READACTUALPOSITION> position = PAC_FB(MC_READACTUALPOSITION);
     FbInstance<MC_READSTATUS> status = PAC_FB(MC_READSTATUS);
     FbInstance<MC_READAXISERROR> axisError = PAC_FB(MC_READAXISERROR);
+    // Instances that bring the axis into Homing, ContinuousMotion or Stopping before a test edges the ones above.
+    FbInstance<MC_HOME> homeA = PAC_FB(MC_HOME);
+    FbInstance<MC_MOVEVELOCITY> velocityA = PAC_FB(MC_MOVEVELOCITY);
+    FbInstance<MC_STOP> stopA = PAC_FB(MC_STOP);
 };
 
 // MC_MoveVelocity has InVelocity where the others have Done: its PLCopen outputs with Done FALSE.
@@ -55,8 +59,9 @@ inline PlcOpenOutputs VelocityOutputsOf(const FbInstance<MC_MOVEVELOCITY>& fb) {
     return out;
 }
 
-// The order the blocks of an axis are called in every scan: as McBlocks lists them (MC_Power first, MC_Reset
-// last), or the other way round, so that two blocks edged in one scan run in either order.
+// The order the blocks of an axis are called in every scan: as McBlocks lists them (the A instances that bring
+// the axis into a state first, then MC_Power ... MC_Reset), or the other way round, so that two blocks edged
+// in one scan run in either order.
 enum class McCallOrder { kAsListed, kReversed };
 
 class McBench {
@@ -84,6 +89,9 @@ public:
             McBlocks& b = Blocks(k);
             const std::string axis = "axis " + std::to_string(k) + " ";
             std::vector<std::function<void()>> calls = {
+                [&] { CallBlock(b.homeA, k, axis + "MC_Home A"); },
+                [&] { CallBlock(b.velocityA, k); },  // checked below
+                [&] { CallBlock(b.stopA, k, axis + "MC_Stop A"); },
                 [&] { CallBlock(b.power, k); },
                 [&] { CallBlock(b.home, k, axis + "MC_Home"); },
                 [&] { CallBlock(b.moveA, k, axis + "MC_MoveAbsolute A"); },
@@ -101,6 +109,7 @@ public:
             CallBlock(b.status, k);
             CallBlock(b.axisError, k);
             CheckVelocityBlock(b.velocity, axis + "MC_MoveVelocity");
+            CheckVelocityBlock(b.velocityA, axis + "MC_MoveVelocity A");
         }
         plc_.Start();
         plc_.Task().AddProgram([this] {
