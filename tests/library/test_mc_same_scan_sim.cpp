@@ -195,13 +195,15 @@ void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock
         if (e.hasWinner && calls[i] == e.winner) continue;
         EXPECT_TRUE(OutputsOf(bench, calls[i]).aborted) << Name(calls[i]) << ": " << OutputsOf(bench, calls[i]);
     }
-    if (from != kStandstill && e.hasWinner) {
-        // MC_Stop A was done before: another stop takes Stopping over, MC_Stop A keeps its Done.
+    // The A instance loses the axis: CommandAborted; MC_Stop A was done before and keeps its Done.
+    const auto expectReacherEnded = [&] {
+        if (from == kStandstill) return;
         const pac::test::PlcOpenOutputs reacher = ReacherOutputs(bench, from);
         EXPECT_TRUE(from == kStopping ? reacher.done : reacher.aborted) << "the A instance: " << reacher;
-    }
+    };
+    if (e.hasWinner) expectReacherEnded();
     if (e.poweredOff) {
-        // Power off ends whatever ran once the drive reports it off: no output asserted but that it ends.
+        // Power off ends whatever ran once the drive reports it off.
         ASSERT_TRUE(bench.WaitFor([&] {
             for (const McBlock block : calls) {
                 if (OutputsOf(bench, block).busy) return false;
@@ -212,10 +214,7 @@ void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock
         // The drive reports itself off before MC_Power switches it on again: until then DRIVE ENABLED is the
         // old reading, and the state would show Standstill for the bus's round trip.
         ASSERT_TRUE(bench.WaitFor([&] { return !b.power->STATUS.value; }, 300, "MC_Power.Status FALSE"));
-        if (from != kStandstill) {
-            const pac::test::PlcOpenOutputs reacher = ReacherOutputs(bench, from);
-            EXPECT_TRUE(from == kStopping ? reacher.done : reacher.aborted) << "the A instance: " << reacher;
-        }
+        expectReacherEnded();
         // A job not yet started is aborted, never sent to an axis being switched off; a halt or stop is over
         // once the axis stands.
         for (std::size_t i = 0; i < calls.size(); ++i) {
