@@ -100,7 +100,8 @@ inline const char* Name(E_PAC_MCSTATE state) {
 }
 
 // The blocks of axis 1 a test edges by name, in the order McBench calls them (McCallOrder::kAsListed): moveB is
-// the MC_MoveAbsolute edged (moveA brings the axis into a state), MC_Power's edge is Enable falling.
+// the MC_MoveAbsolute edged (moveA and the other A instances bring the axis into a state), MC_Power's edge is
+// Enable falling.
 enum class McBlock { kPowerOff, kHome, kMoveAbsolute, kMoveRelative, kMoveVelocity, kHalt, kStop, kStop2, kReset };
 
 inline const char* Name(McBlock block) {
