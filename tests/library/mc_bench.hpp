@@ -5,6 +5,7 @@
 // as MATIEC's C does with a VAR_IN_OUT. Every Execute block runs under the PLCopen checker in every scan.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -42,11 +43,31 @@ struct McBlocks {
     FbInstance<MC_READACTUALPOSITION> position = PAC_FB(MC_READACTUALPOSITION);
     FbInstance<MC_READSTATUS> status = PAC_FB(MC_READSTATUS);
     FbInstance<MC_READAXISERROR> axisError = PAC_FB(MC_READAXISERROR);
+    // Instances that bring the axis into Homing, ContinuousMotion or Stopping before a test edges the ones above.
+    FbInstance<MC_HOME> homeA = PAC_FB(MC_HOME);
+    FbInstance<MC_MOVEVELOCITY> velocityA = PAC_FB(MC_MOVEVELOCITY);
+    FbInstance<MC_STOP> stopA = PAC_FB(MC_STOP);
 };
+
+// MC_MoveVelocity has InVelocity where the others have Done: its PLCopen outputs with Done FALSE.
+inline PlcOpenOutputs VelocityOutputsOf(const FbInstance<MC_MOVEVELOCITY>& fb) {
+    PlcOpenOutputs out;
+    out.busy = fb->BUSY.value != 0;
+    out.error = fb->ERROR.value != 0;
+    out.aborted = fb->COMMANDABORTED.value != 0;
+    out.errorId = fb->ERRORID.value;
+    return out;
+}
+
+// The order the blocks of an axis are called in every scan: as McBlocks lists them (the A instances that bring
+// the axis into a state first, then MC_Power ... MC_Reset), or the other way round, so that two blocks edged
+// in one scan run in either order.
+enum class McCallOrder { kAsListed, kReversed };
 
 class McBench {
 public:
-    McBench(const BusTiming& timing, int axes, pac::sim::PaControlConfig config = {})
+    McBench(const BusTiming& timing, int axes, pac::sim::PaControlConfig config = {},
+            McCallOrder order = McCallOrder::kAsListed)
         : timing_(timing), layout_{true, axes}, plc_(PlcBenchTimingOf(timing), std::move(config), layout_) {
         auto& pac = plc_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
@@ -67,20 +88,28 @@ public:
         for (int k = 1; k <= axes; ++k) {
             McBlocks& b = Blocks(k);
             const std::string axis = "axis " + std::to_string(k) + " ";
-            CallBlock(b.power, k);
-            CallBlock(b.home, k, axis + "MC_Home");
-            CallBlock(b.moveA, k, axis + "MC_MoveAbsolute A");
-            CallBlock(b.moveB, k, axis + "MC_MoveAbsolute B");
-            CallBlock(b.relative, k, axis + "MC_MoveRelative");
-            CallBlock(b.velocity, k);  // checked below
-            CallBlock(b.halt, k, axis + "MC_Halt");
-            CallBlock(b.stop, k, axis + "MC_Stop");
-            CallBlock(b.stop2, k, axis + "MC_Stop 2");
-            CallBlock(b.reset, k, axis + "MC_Reset");
+            std::vector<std::function<void()>> calls = {
+                [&] { CallBlock(b.homeA, k, axis + "MC_Home A"); },
+                [&] { CallBlock(b.velocityA, k); },  // checked below
+                [&] { CallBlock(b.stopA, k, axis + "MC_Stop A"); },
+                [&] { CallBlock(b.power, k); },
+                [&] { CallBlock(b.home, k, axis + "MC_Home"); },
+                [&] { CallBlock(b.moveA, k, axis + "MC_MoveAbsolute A"); },
+                [&] { CallBlock(b.moveB, k, axis + "MC_MoveAbsolute B"); },
+                [&] { CallBlock(b.relative, k, axis + "MC_MoveRelative"); },
+                [&] { CallBlock(b.velocity, k); },  // checked below
+                [&] { CallBlock(b.halt, k, axis + "MC_Halt"); },
+                [&] { CallBlock(b.stop, k, axis + "MC_Stop"); },
+                [&] { CallBlock(b.stop2, k, axis + "MC_Stop 2"); },
+                [&] { CallBlock(b.reset, k, axis + "MC_Reset"); },
+            };
+            if (order == McCallOrder::kReversed) std::reverse(calls.begin(), calls.end());
+            for (auto& call : calls) call();
             CallBlock(b.position, k);
             CallBlock(b.status, k);
             CallBlock(b.axisError, k);
             CheckVelocityBlock(b.velocity, axis + "MC_MoveVelocity");
+            CheckVelocityBlock(b.velocityA, axis + "MC_MoveVelocity A");
         }
         plc_.Start();
         plc_.Task().AddProgram([this] {
@@ -156,18 +185,13 @@ private:
         checks_.push_back([checker, &fb](std::int64_t scan) { checker->Check(scan, fb); });
     }
 
-    // MC_MoveVelocity has InVelocity where the others have Done: checked with Done FALSE.
+    // MC_MoveVelocity, checked with Done FALSE.
     void CheckVelocityBlock(FbInstance<MC_MOVEVELOCITY>& fb, const std::string& name) {
         auto checker = std::make_shared<PlcOpenChecker>(name);
         checks_.push_back([checker, &fb](std::int64_t scan) {
             CommandInputs in;
             in.execute = fb->EXECUTE.value != 0;
-            PlcOpenOutputs out;
-            out.busy = fb->BUSY.value != 0;
-            out.error = fb->ERROR.value != 0;
-            out.aborted = fb->COMMANDABORTED.value != 0;
-            out.errorId = fb->ERRORID.value;
-            checker->Check(scan, in, out);
+            checker->Check(scan, in, VelocityOutputsOf(fb));
         });
     }
 

@@ -86,6 +86,130 @@ inline void SetMove(pac::FbInstance<MC_MOVEABSOLUTE>& fb, float position, float 
     fb->VELOCITY.value = velocity;
 }
 
+inline const char* Name(E_PAC_MCSTATE state) {
+    switch (state) {
+        case kDisabled: return "Disabled";
+        case kStandstill: return "Standstill";
+        case kHoming: return "Homing";
+        case kDiscrete: return "DiscreteMotion";
+        case kContinuous: return "ContinuousMotion";
+        case kStopping: return "Stopping";
+        case kErrorStop: return "ErrorStop";
+    }
+    return "?";
+}
+
+// The blocks of axis 1 a test edges by name, in the order McBench calls them (McCallOrder::kAsListed): moveB is
+// the MC_MoveAbsolute edged (moveA and the other A instances bring the axis into a state), MC_Power's edge is
+// Enable falling.
+enum class McBlock { kPowerOff, kHome, kMoveAbsolute, kMoveRelative, kMoveVelocity, kHalt, kStop, kStop2, kReset };
+
+inline const char* Name(McBlock block) {
+    switch (block) {
+        case McBlock::kPowerOff: return "MC_Power off";
+        case McBlock::kHome: return "MC_Home";
+        case McBlock::kMoveAbsolute: return "MC_MoveAbsolute";
+        case McBlock::kMoveRelative: return "MC_MoveRelative";
+        case McBlock::kMoveVelocity: return "MC_MoveVelocity";
+        case McBlock::kHalt: return "MC_Halt";
+        case McBlock::kStop: return "MC_Stop";
+        case McBlock::kStop2: return "MC_Stop 2";
+        case McBlock::kReset: return "MC_Reset";
+    }
+    return "?";
+}
+
+inline bool IsStop(McBlock block) { return block == McBlock::kStop || block == McBlock::kStop2; }
+
+// docs/fb/MC_blocks.md, "State diagram": 0 = accepted (Busy, or Done at once), else the ErrorID of the refusal.
+inline std::uint32_t Refusal(E_PAC_MCSTATE state, McBlock block) {
+    if (block == McBlock::kReset || block == McBlock::kPowerOff) return 0;
+    if (state == kErrorStop) return kMcErrorStop;
+    if (state == kDisabled) return kMcDisabled;
+    if (IsStop(block)) return 0;
+    if (state == kStopping) return kMcStopping;
+    if (state == kHoming) return kMcState;
+    if (block == McBlock::kHome && state != kStandstill) return kMcState;
+    return 0;
+}
+
+// The state an accepted block puts the axis in, in the call that issues it (PLCopen: at once).
+inline E_PAC_MCSTATE Entered(E_PAC_MCSTATE state, McBlock block) {
+    switch (block) {
+        case McBlock::kPowerOff: return state == kErrorStop ? kErrorStop : kDisabled;
+        case McBlock::kHome: return kHoming;
+        case McBlock::kMoveAbsolute:
+        case McBlock::kMoveRelative:
+        case McBlock::kHalt: return kDiscrete;
+        case McBlock::kMoveVelocity: return kContinuous;
+        case McBlock::kStop:
+        case McBlock::kStop2: return kStopping;
+        case McBlock::kReset: return state;
+    }
+    return state;
+}
+
+// The block's inputs for its edge, without a scan: MC_MoveAbsolute B to 10, MC_MoveRelative by 10 (both at
+// 500 AE/s), MC_MoveVelocity at 100 AE/s to the max. traverse range, MC_Power's Enable FALSE, else Execute.
+inline void Arm(McBench& bench, McBlock block) {
+    McBlocks& b = bench.Blocks(1);
+    switch (block) {
+        case McBlock::kPowerOff: b.power->ENABLE.value = FALSE; return;
+        case McBlock::kHome: b.home->EXECUTE.value = TRUE; return;
+        case McBlock::kMoveAbsolute:
+            SetMove(b.moveB, 10.0f);
+            b.moveB->EXECUTE.value = TRUE;
+            return;
+        case McBlock::kMoveRelative:
+            b.relative->POSITION.value = 10.0f;
+            b.relative->VELOCITY.value = 500.0f;
+            b.relative->EXECUTE.value = TRUE;
+            return;
+        case McBlock::kMoveVelocity:
+            b.velocity->VELOCITY.value = 100.0f;
+            b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_POSITIVE;
+            b.velocity->EXECUTE.value = TRUE;
+            return;
+        case McBlock::kHalt: b.halt->EXECUTE.value = TRUE; return;
+        case McBlock::kStop: b.stop->EXECUTE.value = TRUE; return;
+        case McBlock::kStop2: b.stop2->EXECUTE.value = TRUE; return;
+        case McBlock::kReset: b.reset->EXECUTE.value = TRUE; return;
+    }
+}
+
+// Execute (MC_Power: Enable) back to where a program leaves it between commands, without a scan.
+inline void Disarm(McBench& bench, McBlock block) {
+    McBlocks& b = bench.Blocks(1);
+    switch (block) {
+        case McBlock::kPowerOff: b.power->ENABLE.value = TRUE; return;
+        case McBlock::kHome: b.home->EXECUTE.value = FALSE; return;
+        case McBlock::kMoveAbsolute: b.moveB->EXECUTE.value = FALSE; return;
+        case McBlock::kMoveRelative: b.relative->EXECUTE.value = FALSE; return;
+        case McBlock::kMoveVelocity: b.velocity->EXECUTE.value = FALSE; return;
+        case McBlock::kHalt: b.halt->EXECUTE.value = FALSE; return;
+        case McBlock::kStop: b.stop->EXECUTE.value = FALSE; return;
+        case McBlock::kStop2: b.stop2->EXECUTE.value = FALSE; return;
+        case McBlock::kReset: b.reset->EXECUTE.value = FALSE; return;
+    }
+}
+
+// The block's PLCopen outputs; MC_MoveVelocity's Done is FALSE (it has InVelocity), MC_Power shows none.
+inline pac::test::PlcOpenOutputs OutputsOf(McBench& bench, McBlock block) {
+    McBlocks& b = bench.Blocks(1);
+    switch (block) {
+        case McBlock::kPowerOff: return {};
+        case McBlock::kHome: return pac::test::OutputsOf(b.home);
+        case McBlock::kMoveAbsolute: return pac::test::OutputsOf(b.moveB);
+        case McBlock::kMoveRelative: return pac::test::OutputsOf(b.relative);
+        case McBlock::kMoveVelocity: return pac::test::VelocityOutputsOf(b.velocity);
+        case McBlock::kHalt: return pac::test::OutputsOf(b.halt);
+        case McBlock::kStop: return pac::test::OutputsOf(b.stop);
+        case McBlock::kStop2: return pac::test::OutputsOf(b.stop2);
+        case McBlock::kReset: return pac::test::OutputsOf(b.reset);
+    }
+    return {};
+}
+
 // Axis 1 moving towards 5000 at 1000 AE/s under MC_MoveAbsolute A, taken over by the controller.
 inline void StartLongMove(McBench& bench) {
     auto& a = bench.Blocks(1).moveA;

@@ -228,6 +228,31 @@ TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
 }
 
+// The request numbers are a UINT and wrap: after 65535 requests an MC_Stop posts under 0, the number every block
+// that never posted still has. MC_Stop 2, never edged and called after it, must not take Stopping away.
+TEST_P(McSim, AStopHoldsStoppingWhenTheRequestNumberWrapsToZero) {
+    McBench bench(GetParam(), 1);
+    bench.PowerUp();
+    McBlocks& b = bench.Blocks(1);
+    bench.Ref(1).REQUESTSERIAL = 65534;  // as a program that has issued 65534 commands left it
+    bench.Ref(1).JOBSERIAL = 65534;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    Execute(bench, b.stop);
+    ASSERT_EQ(bench.Ref(1).REQUESTSERIAL, 0u);
+    EXPECT_EQ(bench.State(1), kStopping);
+    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
+    bench.Scan(3);
+    EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
+    SetMove(b.moveB, 10.0f);
+    Execute(bench, b.moveB);
+    EXPECT_EQ(b.moveB->ERRORID.value, kMcStopping) << pac::test::OutputsOf(b.moveB);
+    Release(bench, b.moveB);
+    Release(bench, b.stop);
+    EXPECT_EQ(bench.State(1), kStandstill);
+    Execute(bench, b.moveB);
+    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
+}
+
 TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
     McBench bench(GetParam(), 1);
     bench.PowerUp();

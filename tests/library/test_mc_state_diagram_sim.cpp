@@ -20,21 +20,6 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, McStateSim, ::testing::ValuesIn(McTimings()
 
 // ---- the state diagram, block by block and state by state ---------------------------------------------
 
-enum class Block { kMoveAbsolute, kMoveRelative, kMoveVelocity, kHalt, kHome, kStop, kReset };
-
-const char* Name(Block block) {
-    switch (block) {
-        case Block::kMoveAbsolute: return "MC_MoveAbsolute";
-        case Block::kMoveRelative: return "MC_MoveRelative";
-        case Block::kMoveVelocity: return "MC_MoveVelocity";
-        case Block::kHalt: return "MC_Halt";
-        case Block::kHome: return "MC_Home";
-        case Block::kStop: return "MC_Stop";
-        case Block::kReset: return "MC_Reset";
-    }
-    return "?";
-}
-
 // Brings axis 1 into `state` with blocks other than the one under test (moveB and stop2 are kept for that).
 void Reach(McBench& bench, E_PAC_MCSTATE state) {
     McBlocks& b = bench.Blocks(1);
@@ -67,73 +52,26 @@ void Reach(McBench& bench, E_PAC_MCSTATE state) {
     ASSERT_EQ(bench.State(1), state);
 }
 
-// A new Execute edge on an instance that may have brought the axis into its state (it goes on meanwhile).
-template <class Fb>
-void Retrigger(McBench& bench, pac::FbInstance<Fb>& fb) {
-    if (fb->EXECUTE.value) Release(bench, fb);
-    Execute(bench, fb);
-}
-
-// The block's Execute edge; its outputs in the edge scan.
-pac::test::PlcOpenOutputs Try(McBench& bench, Block block) {
+// The block's Execute edge; its outputs in the edge scan. An instance that may have brought the axis into its
+// state (it goes on meanwhile) gets a new edge.
+pac::test::PlcOpenOutputs Try(McBench& bench, McBlock block) {
     McBlocks& b = bench.Blocks(1);
-    switch (block) {
-        case Block::kMoveAbsolute:
-            SetMove(b.moveB, 10.0f);
-            Execute(bench, b.moveB);
-            return pac::test::OutputsOf(b.moveB);
-        case Block::kMoveRelative:
-            b.relative->POSITION.value = 10.0f;
-            b.relative->VELOCITY.value = 500.0f;
-            Execute(bench, b.relative);
-            return pac::test::OutputsOf(b.relative);
-        case Block::kMoveVelocity: {
-            b.velocity->VELOCITY.value = 100.0f;
-            b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_NEGATIVE;
-            Retrigger(bench, b.velocity);
-            pac::test::PlcOpenOutputs out;
-            out.busy = b.velocity->BUSY.value != 0;
-            out.error = b.velocity->ERROR.value != 0;
-            out.errorId = b.velocity->ERRORID.value;
-            return out;
-        }
-        case Block::kHalt:
-            Execute(bench, b.halt);
-            return pac::test::OutputsOf(b.halt);
-        case Block::kHome:
-            Retrigger(bench, b.home);
-            return pac::test::OutputsOf(b.home);
-        case Block::kStop:
-            Execute(bench, b.stop);
-            return pac::test::OutputsOf(b.stop);
-        case Block::kReset:
-            Execute(bench, b.reset);
-            return pac::test::OutputsOf(b.reset);
-    }
-    return {};
-}
-
-// docs/fb/MC_blocks.md, "State diagram": 0 = accepted (Busy, or Done at once), else the ErrorID of the refusal.
-std::uint32_t Expected(E_PAC_MCSTATE state, Block block) {
-    if (block == Block::kReset) return 0;
-    if (state == kErrorStop) return kMcErrorStop;
-    if (state == kDisabled) return kMcDisabled;
-    if (block == Block::kStop) return 0;
-    if (state == kStopping) return kMcStopping;
-    if (state == kHoming) return kMcState;
-    if (block == Block::kHome && state != kStandstill) return kMcState;
-    return 0;
+    if (block == McBlock::kMoveVelocity && b.velocity->EXECUTE.value) Release(bench, b.velocity);
+    if (block == McBlock::kHome && b.home->EXECUTE.value) Release(bench, b.home);
+    Arm(bench, block);
+    bench.Scan();
+    return OutputsOf(bench, block);
 }
 
 TEST_P(McStateSim, EveryBlockInEveryStateIsAcceptedOrRefusedAsTheDiagramSays) {
     for (const auto state : {kDisabled, kStandstill, kHoming, kDiscrete, kContinuous, kStopping, kErrorStop}) {
-        for (const Block block : {Block::kMoveAbsolute, Block::kMoveRelative, Block::kMoveVelocity, Block::kHalt,
-                                  Block::kHome, Block::kStop, Block::kReset}) {
-            SCOPED_TRACE(std::string(Name(block)) + " in state " + std::to_string(static_cast<int>(state)));
+        for (const McBlock block : {McBlock::kMoveAbsolute, McBlock::kMoveRelative, McBlock::kMoveVelocity,
+                                    McBlock::kHalt, McBlock::kHome, McBlock::kStop, McBlock::kReset}) {
+            SCOPED_TRACE(std::string(Name(block)) + " in " + Name(state));
             McBench bench(GetParam(), 1);
             ASSERT_NO_FATAL_FAILURE(Reach(bench, state));
             const pac::test::PlcOpenOutputs out = Try(bench, block);
-            const std::uint32_t expected = Expected(state, block);
+            const std::uint32_t expected = Refusal(state, block);
             if (expected != 0) {
                 EXPECT_TRUE(out.error) << out;
                 EXPECT_EQ(out.errorId, expected) << out;
@@ -159,7 +97,7 @@ TEST_P(McStateSim, StopEndsAContinuousMotionAndPowerOffDisablesFromHomingAndStop
         ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
     }
     for (const auto state : {kHoming, kStopping}) {
-        SCOPED_TRACE("from state " + std::to_string(static_cast<int>(state)));
+        SCOPED_TRACE(std::string("from ") + Name(state));
         McBench bench(GetParam(), 1);
         ASSERT_NO_FATAL_FAILURE(Reach(bench, state));
         bench.Blocks(1).power->ENABLE.value = FALSE;
