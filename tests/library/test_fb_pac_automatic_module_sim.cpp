@@ -3,7 +3,9 @@
 // AUTOMATIC program ("R17 := R1 * 2" ...) answers through FW / N / R 16+k, in both number formats and both byte
 // layouts; FB_PAC_Axis stays off the module in AUTOMATIC and takes it back in HOME POSITION and ONLINE. In every
 // controller cycle of AUTOMATIC (the controller's own log) the flags and registers the modules are copied into
-// hold the values FB_PAC_AutomaticModule sends, or zeros: never an axis control word, dynamics or position.
+// hold the values FB_PAC_AutomaticModule sends, or zeros: never an axis control word, dynamics or position. After
+// every scan, once AUTOMATIC has ended, a module carries its axis FB's image whole, or zeros where no axis FB
+// writes it: never flags, which HOME POSITION and ONLINE read as a control word.
 #include <gtest/gtest.h>
 
 #include <array>
