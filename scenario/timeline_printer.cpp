@@ -327,8 +327,6 @@ void TimelinePrinter::PrintCtrlLine(const ScanSample& s) {
     out_ << line;
 }
 
-// Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
-// error number, target / current position.
 // The module as the flag/register interface of AUTOMATIC mode, in the layout of the scenario's controller, the
 // default: the widths printed in 2.6.1 (docs/open_points.md); outside AUTOMATIC the same bytes are the axis
 // interface.
@@ -346,6 +344,8 @@ void TimelinePrinter::PrintAutomaticLine(const ScanSample& s, const AxisSample& 
     out_ << line;
 }
 
+// Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
+// error number, target / current position.
 void TimelinePrinter::PrintAxisLine(const ScanSample& s, const AxisSample& a) {
     char line[320];
     std::snprintf(line, sizeof line,
