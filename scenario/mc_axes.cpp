@@ -100,6 +100,8 @@ McAxes::~McAxes() = default;
 
 McAxes::Axis& McAxes::At(int axis) { return *axes_.at(static_cast<std::size_t>(axis - 1)); }
 
+bool McAxes::OwnsModule(int axis) { return At(axis).cyclic->OWNSMODULE.value != 0; }
+
 void McAxes::Begin(const AxisJob& job) {
     Axis& a = At(job.axis);
     if (job.enable) a.power->ENABLE.value = *job.enable ? TRUE : FALSE;

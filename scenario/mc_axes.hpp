@@ -34,6 +34,7 @@ public:
     void End(const AxisJob& job);  // Execute back to FALSE
     void Fill(AxisSample& sample);  // the pins of the block axis `sample.axis` ran last
     void Take(int axis, AxisOutcome& outcome);
+    bool OwnsModule(int axis);  // FB_PAC_McAxis.OwnsModule as its last call left it
 
 private:
     struct Axis;

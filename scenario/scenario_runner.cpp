@@ -77,10 +77,14 @@ public:
                     axes_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
                 });
             }
-            // The same module in AUTOMATIC (2.6): each FB writes it only in its own modes.
+            // The same module in AUTOMATIC (2.6): each FB writes it only in its own modes; the AUTOMATIC FB, called
+            // after the axis FB, clears it when AUTOMATIC ends unless the axis FB has taken it (AxisOwnsModule).
             plc_.CallAxis(automatic_[k], static_cast<int>(k) + 1, [this, k] {
                 automatic_[k]->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
                 automatic_[k]->OPSTATUS.value = cmd_->OPSTATUS.value;
+                const bool axisOwns =
+                    mc_ ? mc_->OwnsModule(static_cast<int>(k) + 1) : axes_[k]->OWNSMODULE.value != 0;
+                automatic_[k]->AXISOWNSMODULE.value = axisOwns ? TRUE : FALSE;
             });
         }
         plc_.Start();

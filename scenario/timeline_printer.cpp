@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "pac/format_time.hpp"
+#include "pac/sim/automatic_module.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "text_format.hpp"
 
@@ -326,23 +327,25 @@ void TimelinePrinter::PrintCtrlLine(const ScanSample& s) {
     out_ << line;
 }
 
-// Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
-// error number, target / current position.
-// The module as the flag/register interface of AUTOMATIC mode, in the library's layout (FW 2 bytes, 2 not used,
-// N 4, R 4: docs/open_points.md); outside AUTOMATIC the same bytes are the axis interface.
+// The module as the flag/register interface of AUTOMATIC mode, in the layout of the scenario's controller, the
+// default: the widths printed in 2.6.1 (docs/open_points.md); outside AUTOMATIC the same bytes are the axis
+// interface.
 void TimelinePrinter::PrintAutomaticLine(const ScanSample& s, const AxisSample& m) {
+    const pac::sim::AutomaticLayout layout = pac::sim::AutomaticModuleConfig{}.layout;
+    const pac::sim::AutomaticModuleData sent = pac::sim::AutomaticModuleData::Decode(m.toPac, layout);
+    const pac::sim::AutomaticModuleData received = pac::sim::AutomaticModuleData::Decode(m.fromPac, layout);
     char line[320];
     std::snprintf(line, sizeof line, "%8s %6lld | %6d | %6u | %s %10d %10s | %s %10d %10s\n",
                   FormatMsNumber(s.time).c_str(), static_cast<long long>(s.scan), m.axis,
-                  static_cast<unsigned>(s.fromPac[kStatusByte]), Hex4(pac::sim::ReadWordAt(m.toPac, 0)).c_str(),
-                  static_cast<int>(static_cast<std::int32_t>(pac::sim::ReadDword(m.toPac, 4))),
-                  PositionText(pac::sim::ReadDword(m.toPac, 8), m.integerMode).c_str(),
-                  Hex4(pac::sim::ReadWordAt(m.fromPac, 0)).c_str(),
-                  static_cast<int>(static_cast<std::int32_t>(pac::sim::ReadDword(m.fromPac, 4))),
-                  PositionText(pac::sim::ReadDword(m.fromPac, 8), m.integerMode).c_str());
+                  static_cast<unsigned>(s.fromPac[kStatusByte]), Hex4(sent.flagWord).c_str(),
+                  static_cast<int>(sent.intRegister), PositionText(sent.realBits, m.integerMode).c_str(),
+                  Hex4(received.flagWord).c_str(), static_cast<int>(received.intRegister),
+                  PositionText(received.realBits, m.integerMode).c_str());
     out_ << line;
 }
 
+// Module layout 2.7.1 / 2.7.2: control or status dword, acceleration / CMD error number, speed / axis
+// error number, target / current position.
 void TimelinePrinter::PrintAxisLine(const ScanSample& s, const AxisSample& a) {
     char line[320];
     std::snprintf(line, sizeof line,

@@ -2,11 +2,13 @@
 // input makes the PA-CONTROL's side say (raw bytes, an all-zero module, or nothing new) and whatever another
 // writer of the module (FB_PAC_Axis outside AUTOMATIC) leaves in the master's bytes. The input also drives
 // every input of the FB: OpStatus (any byte, AUTOMATIC ones often), FlagWord, IntRegister, RealRegister (any
-// REAL, NaN and infinities included), IntegerMode, Layout (out-of-range values included), and the PLC cycle.
-// Checked after every scan, against the simulator's own reading of the module (AutomaticModuleData, an
-// implementation apart from the FB's):
+// REAL, NaN and infinities included), IntegerMode, Layout (out-of-range values included), AxisOwnsModule, and
+// the PLC cycle. Checked after every scan, against the simulator's own reading of the module
+// (AutomaticModuleData, an implementation apart from the FB's):
 //   - it writes its module only in the AUTOMATIC statuses 10..19 (InExchange exactly then), else the bytes
-//     stay as the other writer left them, and the received outputs hold;
+//     stay as the other writer left them, and the received outputs hold; except once, in the first scan with
+//     a status neither AUTOMATIC nor 0 after it wrote: then the module is all zero if it still held the FB's
+//     own image and AxisOwnsModule was FALSE (2.7.1: outside AUTOMATIC the bytes are a control word);
 //   - what it sends round-trips: FW, N and R read back from the module are the inputs, or, for a value the
 //     field cannot carry, the last value that fitted, with Error: nothing out of range goes out silently, and
 //     nothing cut or in the wrong number format (a kept value the layout or format in force cannot carry: 0);
@@ -66,7 +68,10 @@ public:
 private:
     void Scan() {
         Drive(in_.Byte());
-        NextReply(in_.Byte());
+        const std::uint8_t op = in_.Byte();
+        NextReply(op);
+        // From a bit of the reply's byte that reads no more input, so the corpus kept keeps its meaning.
+        module_.Data().AXISOWNSMODULE.value = (op & 0x04U) != 0 ? TRUE : FALSE;
         const Image12 before = ToPac();
         const Outputs heldOutputs = Received();
         module_();
@@ -131,14 +136,25 @@ private:
         if ((fb.ERRORID.value != 0) != (fb.ERROR.value != 0)) Fail("ErrorID <> 0 is not Error");
         const auto wantedSource = fb.ERROR.value != 0 ? E_PAC_ERRORSOURCE__PAC_ERRSRC_LIBRARY : E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE;
         if (fb.ERRORSOURCE.value != wantedSource) Fail("ErrorSource does not go with Error");
+        const std::uint8_t status = fb.OPSTATUS.value;
+        if (status != 0) knownStatus_ = status;
         if (!automatic) {
-            if (ToPac() != before) Fail("the module was written outside AUTOMATIC");
+            Image12 expected = before;
+            if (holding_ && (knownStatus_ < 10 || knownStatus_ > 19)) {
+                holding_ = false;
+                if (fb.AXISOWNSMODULE.value == 0 && before == written_) expected = Image12{};
+            }
+            if (ToPac() != expected) {
+                Fail("outside AUTOMATIC the module is not as left, or not cleared when AUTOMATIC ended");
+            }
             if (!(Received() == heldOutputs)) Fail("the received outputs changed outside AUTOMATIC");
             if (fb.ERROR.value != 0) Fail("Error outside AUTOMATIC, where nothing is sent");
             return;
         }
         CheckSent();
         CheckReceived();
+        written_ = ToPac();
+        holding_ = true;
     }
 
     // What the module carries now against the inputs and the last values that fitted.
@@ -233,6 +249,10 @@ private:
     // The last values that fitted, which the fields carry in the layout and number format in force; 0 at first.
     std::int32_t sentInt_ = 0;
     float sentReal_ = 0.0f;
+    // The hand-over when AUTOMATIC ends: the last status but 0, and the FB's image while it is on the module.
+    std::uint8_t knownStatus_ = 0;
+    bool holding_ = false;
+    Image12 written_{};
     bool trace_ = pac::fuzz::TraceWanted();
 };
 

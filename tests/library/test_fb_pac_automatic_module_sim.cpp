@@ -3,9 +3,12 @@
 // AUTOMATIC program ("R17 := R1 * 2" ...) answers through FW / N / R 16+k, in both number formats and both byte
 // layouts; FB_PAC_Axis stays off the module in AUTOMATIC and takes it back in HOME POSITION and ONLINE. In every
 // controller cycle of AUTOMATIC (the controller's own log) the flags and registers the modules are copied into
-// hold the values FB_PAC_AutomaticModule sends, or zeros: never an axis control word, dynamics or position.
+// hold the values FB_PAC_AutomaticModule sends, or zeros: never an axis control word, dynamics or position. After
+// every scan, once AUTOMATIC has ended, a module carries its axis FB's image whole, or zeros where no axis FB
+// writes it: never flags, which HOME POSITION and ONLINE read as a control word.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -54,7 +57,14 @@ struct Sent {
 
 struct Options {
     BusTiming timing{1, 10, 0};
-    AutomaticLayout layout = AutomaticLayout::kShiftedWidths;
+    AutomaticLayout layout = AutomaticLayout::kAxisWidths;  // the controller's: the widths printed in 2.6.1
+    bool layoutWired = true;  // FALSE: FB_PAC_AutomaticModule.Layout keeps its default
+    bool axisFbs = true;      // FALSE: no axis FB on the modules, FB_PAC_AutomaticModule is their only writer
+    bool axisOwnsModuleWired = true;  // FB_PAC_AutomaticModule.AxisOwnsModule := FB_PAC_Axis.OwnsModule
+    // TRUE: the FB called first on each module runs before FB_PAC_CmdInterface and sees the operating status of
+    // the scan before; the status changes in the scan between the two FBs (module 1: the AUTOMATIC FB sees it
+    // late, module 2: the axis FB).
+    bool statusChangesBetween = false;
 };
 
 pac::sim::PaControlConfig ConfigFor(const Options& o) {
@@ -90,10 +100,15 @@ public:
             if (k != 1) CallAxisFb(k);
             plc_.CallAxis(Auto(k), k, [this, k] {
                 Auto(k)->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
-                Auto(k)->OPSTATUS.value = OpStatus();
-                Auto(k)->LAYOUT.value = options_.layout == AutomaticLayout::kShiftedWidths
-                                            ? E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW2_N4
-                                            : E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW4_N2;
+                Auto(k)->OPSTATUS.value = StatusFor(k, true);
+                if (options_.layoutWired) {
+                    Auto(k)->LAYOUT.value = options_.layout == AutomaticLayout::kShiftedWidths
+                                                ? E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW2_N4
+                                                : E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW4_N2;
+                }
+                if (options_.axisFbs && options_.axisOwnsModuleWired) {
+                    Auto(k)->AXISOWNSMODULE.value = Axis(k)->OWNSMODULE.value;
+                }
                 const Sent& s = sent_[static_cast<std::size_t>(k - 1)];
                 Auto(k)->FLAGWORD.value = s.flagWord;
                 Auto(k)->INTREGISTER.value = s.n;
@@ -103,7 +118,11 @@ public:
             Axis(k)->ENABLE.value = TRUE;
         }
         plc_.Start();
-        plc_.Task().AddProgram([this] { CheckControllerCycles(); });
+        plc_.Task().AddProgram([this] {
+            CheckControllerCycles();
+            CheckHandOver();
+            statusBefore_ = OpStatus();
+        });
     }
 
     using AxisFb = pac::FbInstance<FB_PAC_AXIS>;
@@ -171,14 +190,64 @@ public:
     }
 
     int AutomaticCyclesChecked() const { return automaticCycles_; }
+    int HandOversChecked() const { return handOvers_; }
 
 private:
+    // The status an FB of module k sees: that of the scan before if it is called before FB_PAC_CmdInterface.
+    std::uint8_t StatusFor(int k, bool automaticFb) const {
+        const bool calledFirst = (k == 1) == automaticFb;
+        return options_.statusChangesBetween && calledFirst ? statusBefore_ : OpStatus();
+    }
+
     void CallAxisFb(int k) {
+        if (!options_.axisFbs) return;
         plc_.CallAxis(Axis(k), k, [this, k] {
             Axis(k)->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
             Axis(k)->MODECHANGE.value = ctrl_->MODECHANGE.value;
-            Axis(k)->OPSTATUS.value = OpStatus();
+            Axis(k)->OPSTATUS.value = StatusFor(k, false);
+            seenByAxis_[static_cast<std::size_t>(k - 1)] = Module(k);
         });
+    }
+    pac::sim::Image12 Module(int k) const { return plc_.ToPac().Module12(layout_.AxisOffset(k)); }
+
+    // After every scan, the module as it goes out. Where an axis FB writes the module it carries that FB's image
+    // whole, in either call order. Where none does, once FB_PAC_AutomaticModule has seen a status that is neither
+    // AUTOMATIC nor 0 it carries no flag data (all zero): in HOME POSITION and ONLINE the bytes are a control
+    // word (2.7.1). An axis FB taking the module over after the AUTOMATIC FB in the same scan was given no flags.
+    void CheckHandOver() {
+        for (int k = 1; k <= kModules; ++k) {
+            const auto i = static_cast<std::size_t>(k - 1);
+            const std::uint8_t autoStatus = Auto(k)->OPSTATUS.value;
+            if (InAutomatic(autoStatus)) autoLeft_[i] = false;
+            if (autoStatus != 0 && !InAutomatic(autoStatus) && Auto(k)->INEXCHANGE.value == 0) {
+                autoLeft_[i] = autoLeft_[i] || everExchanged_[i];
+            }
+            everExchanged_[i] = everExchanged_[i] || Auto(k)->INEXCHANGE.value != 0;
+            // While both FBs see their own mode (the status changed between them), the one called later writes.
+            const bool axisOwns =
+                options_.axisFbs && Axis(k)->OWNSMODULE.value != 0 && Auto(k)->INEXCHANGE.value == 0;
+            const pac::sim::Image12 module = Module(k);
+            std::string what;
+            if (axisOwns) {
+                pac::sim::Image12 axisImage{};
+                for (std::size_t b = 0; b < axisImage.size(); ++b) axisImage[b] = Axis(k)->TOPAC.value.table[b];
+                if (module != axisImage) what = "is not the axis FB's image";
+                // Module 1 calls the axis FB after the AUTOMATIC FB: in the scan it takes the module over, it must
+                // find it cleared, not the flags (its own image only once it has written one).
+                if (k == 1 && !axisOwnedBefore_[i] && !options_.statusChangesBetween && autoLeft_[i] &&
+                    seenByAxis_[i] != pac::sim::Image12{}) {
+                    what = "was handed to the axis FB with the flags in it";
+                }
+                ++handOvers_;
+            } else if (autoLeft_[i] && module != pac::sim::Image12{}) {
+                what = "still carries flag data outside AUTOMATIC";
+            }
+            axisOwnedBefore_[i] = axisOwns;
+            if (!what.empty() && ++violations_ <= 5) {
+                ADD_FAILURE() << "scan " << plc_.Task().ScanCount() << ", status " << int(OpStatus()) << ": module "
+                              << k << " " << what << ": " << pac::sim::ToHex(plc_.ToPac(), layout_);
+            }
+        }
     }
 
     struct Allowed {
@@ -193,7 +262,17 @@ private:
             if (seenAny_ && r.time <= lastTime_) continue;
             seenAny_ = true;
             lastTime_ = r.time;
-            if (!InAutomatic(r.fromPac[kOpStatusByte]) || r.toPac.AllZero()) continue;
+            const std::uint8_t status = r.fromPac[kOpStatusByte];
+            if (!options_.axisFbs && status >= 30 && status <= 39) {
+                // ONLINE acts on the module as a control word (2.7.1): with no axis FB it must be all zero.
+                for (int k = 1; k <= kModules; ++k) {
+                    if (r.toPac.Module12(layout_.AxisOffset(k)) != pac::sim::Image12{} && ++violations_ <= 5) {
+                        ADD_FAILURE() << "ONLINE took module " << k << " as a control word at "
+                                      << pac::sim::FormatTime(r.time) << ": " << pac::sim::ToHex(r.toPac, layout_);
+                    }
+                }
+            }
+            if (!InAutomatic(status) || r.toPac.AllZero()) continue;
             ++automaticCycles_;
             for (int k = 1; k <= kModules; ++k) {
                 const AutomaticModuleData d =
@@ -233,11 +312,17 @@ private:
     nanoseconds lastTime_{0};
     int automaticCycles_ = 0;
     int violations_ = 0;
+    std::uint8_t statusBefore_ = 0;
+    std::array<pac::sim::Image12, kModules> seenByAxis_{};  // the module as the axis FB was given it this scan
+    std::array<bool, kModules> axisOwnedBefore_{};
+    std::array<bool, kModules> everExchanged_{};
+    std::array<bool, kModules> autoLeft_{};  // the AUTOMATIC FB exchanged, then saw neither AUTOMATIC nor 0
+    int handOvers_ = 0;
 };
 
 class AutomaticSim : public ::testing::TestWithParam<BusTiming> {
 protected:
-    Options OptionsFor(AutomaticLayout layout = AutomaticLayout::kShiftedWidths) const {
+    Options OptionsFor(AutomaticLayout layout = AutomaticLayout::kAxisWidths) const {
         Options o;
         o.timing = GetParam();
         o.layout = layout;
@@ -252,10 +337,13 @@ private:
     std::unique_ptr<::testing::ScopedTrace> trace_;
 };
 
-TEST_P(AutomaticSim, RoundTripThroughTheRunningProgramInBothFormats) {
-    for (const bool integer : {false, true}) {
+TEST_P(AutomaticSim, RoundTripThroughTheRunningProgramInBothFormatsAndLayouts) {
+    for (const int variant : {0, 1, 2, 3}) {
+        const bool integer = (variant & 1) != 0;
+        const AutomaticLayout layout = variant < 2 ? AutomaticLayout::kAxisWidths : AutomaticLayout::kShiftedWidths;
         SCOPED_TRACE(integer ? "integer format" : "float format");
-        AutomaticBench bench(OptionsFor());
+        SCOPED_TRACE(layout == AutomaticLayout::kAxisWidths ? "the printed layout" : "the other layout");
+        AutomaticBench bench(OptionsFor(layout));
         bench.Send(1, {0x0001, 41, 1.25f});
         bench.Send(2, {0xBEEF, -300, 640.0f});
         ASSERT_TRUE(bench.StartAutomatic(integer));
@@ -333,7 +421,7 @@ TEST_P(AutomaticSim, ModeChangesInAndOutKeepEachModuleToItsOwner) {
     EXPECT_GT(bench.AutomaticCyclesChecked(), 0);
 }
 
-TEST_P(AutomaticSim, TheOtherLayoutWithModeChangeAndItsRangeOfN) {
+TEST_P(AutomaticSim, ThePrintedLayoutWithModeChangeAndItsRangeOfN) {
     AutomaticBench bench(OptionsFor(AutomaticLayout::kAxisWidths));
     // Axis ON would be M1 and M2 in this layout: FB_PAC_Ctrl.ModeChange clears the axis modules before it.
     bench.Send(1, {0x8001, -32768, 0.5f});
@@ -366,6 +454,90 @@ TEST_P(AutomaticSim, AnRRegisterTheFieldCannotCarryIsRefused) {
     }
     bench.ScanMs(30);
     EXPECT_EQ(bench.Pac().Io().realRegisters.GetReal(1), 2.0f) << "the last value that fitted stays";
+}
+
+// Manual 2.6.1 / 2.6.2 print the widths 4, 2, 2, 4: on a controller that follows the print, the FB with its
+// Layout left alone puts M1..M16 where the controller reads them and reads a negative N17 as negative.
+TEST_P(AutomaticSim, TheDefaultLayoutIsTheOnePrinted) {
+    Options o = OptionsFor(AutomaticLayout::kAxisWidths);
+    o.layoutWired = false;
+    AutomaticBench bench(o);
+    bench.Send(1, {0x8001, -300, 1.5f});
+    ASSERT_TRUE(bench.StartAutomatic());
+    ASSERT_TRUE(bench.WaitReceived(1, 0x0001, -299, 3.0f)) << "FW17 = M257 := M1, N17 := N1 + 1, R17 := R1 * 2";
+    const auto& io = bench.Pac().Io();
+    EXPECT_EQ(io.flags.Word(1), 0x8001) << "M1 and M16";
+    EXPECT_EQ(io.intRegisters.GetInt(1), -300);
+    EXPECT_EQ(bench.Auto(1)->LAYOUT.value, E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW4_N2);
+}
+
+// Out of AUTOMATIC with no axis FB on the modules: in HOME POSITION and ONLINE the bytes are a control word
+// (2.7.1), so the flags FB_PAC_AutomaticModule left there would read, on the printed layout, as Axis ON, Start and
+// absolute traversing to R1 (bytes 2..3 and 8..11), on the other as "reset axis error" (bit 16) with N as the
+// dynamics. It clears its module in the scan that sees the status leave AUTOMATIC.
+TEST_P(AutomaticSim, LeavingAutomaticClearsTheFlagsWhenNoAxisFbTakesTheModule) {
+    for (const AutomaticLayout layout : {AutomaticLayout::kAxisWidths, AutomaticLayout::kShiftedWidths}) {
+        SCOPED_TRACE(layout == AutomaticLayout::kAxisWidths ? "the printed layout" : "the other layout");
+        Options o = OptionsFor(layout);
+        o.axisFbs = false;
+        AutomaticBench bench(o);
+        bench.Send(1, {0x0045, 500, 50.0f});
+        bench.Send(2, {0x0005, 7, 1.0f});
+        ASSERT_TRUE(bench.StartAutomatic());
+        ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 501, 100.0f));
+        const double before = bench.Pac().Axes().Motion(1).Position();
+        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+        EXPECT_FALSE(bench.Auto(1)->INEXCHANGE.value);
+        bench.ScanMs(30);
+        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
+        bench.ScanMs(100);
+        EXPECT_EQ(bench.Pac().Module(1).CmdError(), 0u) << "no flag data taken for a job";
+        EXPECT_EQ(bench.Pac().Axes().Motion(1).Position(), before);
+        EXPECT_EQ(bench.Auto(1)->RECEIVEDINTREGISTER.value, 501) << "the received values hold outside AUTOMATIC";
+    }
+}
+
+// Out of AUTOMATIC with an axis FB on each module, called after the AUTOMATIC FB on module 1 and before it on
+// module 2, also with the status changing between the two: each axis FB's image goes out whole from the scan it
+// takes the module (the clearing never overwrites it), and on module 1 the axis FB finds the module cleared. With
+// AxisOwnsModule wired the flags sent are, byte for byte, the axis FB's HOME image with Axis ON on the printed
+// layout (FW 1, N 0, R 0.0): only that input tells the two apart. Without it, other flags (M1, M3, M7).
+TEST_P(AutomaticSim, TheAxisFbsTakeTheModulesBackInBothCallOrders) {
+    for (const int variant : {0, 1, 2}) {
+        const bool between = variant == 1;
+        const bool wired = variant != 2;
+        SCOPED_TRACE(between ? "the status changes between the two FBs" : "both FBs see the same status");
+        SCOPED_TRACE(wired ? "AxisOwnsModule wired" : "AxisOwnsModule not wired");
+        Options o = OptionsFor(AutomaticLayout::kAxisWidths);
+        o.statusChangesBetween = between;
+        o.axisOwnsModuleWired = wired;
+        AutomaticBench bench(o);
+        const std::uint16_t flags = wired ? 0x0001 : 0x0045;
+        bench.Send(1, {flags, 0, 0.0f});
+        bench.Send(2, {flags, 0, 0.0f});
+        ASSERT_TRUE(bench.StartAutomatic());
+        ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 1, 0.0f));
+        ASSERT_TRUE(bench.WaitReceived(2, flags, 0, -1.0f));
+        const int before = bench.HandOversChecked();
+        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+        ASSERT_TRUE(bench.WaitFor([&] { return bench.Axis(1)->OWNSMODULE.value && bench.Axis(2)->OWNSMODULE.value; },
+                                  100, "axis FBs own"));
+        bench.ScanMs(30);
+        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
+        for (int k = 1; k <= kModules; ++k) {
+            auto& axis = bench.Axis(k);
+            const double start = bench.Pac().Axes().Motion(k).Position();
+            axis->COMMAND.value = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
+            axis->POSITION.value = 5.0f;
+            axis->EXECUTE.value = TRUE;
+            ASSERT_TRUE(bench.WaitFor([&] { return pac::test::IsFinal(axis); }, 2000, "the job's end"));
+            EXPECT_TRUE(axis->DONE.value) << "axis " << k << ": ErrorID 16#" << std::hex << axis->ERRORID.value;
+            EXPECT_NEAR(bench.Pac().Axes().Motion(k).Position(), start + 5.0, 1e-3);
+            axis->EXECUTE.value = FALSE;
+            bench.Scan();
+        }
+        EXPECT_GT(bench.HandOversChecked(), before);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(BusTimings, AutomaticSim, ::testing::ValuesIn(pac::test::StandardAndJitteredBusTimings()),

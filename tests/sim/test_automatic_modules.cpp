@@ -48,6 +48,13 @@ TEST(AutomaticModuleBytes, BothLayoutsBigEndian) {
     }
 }
 
+// 2.6.1 prints the widths 4, 2, 2, 4 (flag word, not used, N, R): a controller built with the default settings
+// reads M1..M16 from bytes 2..3 and N as 16 bits from bytes 6..7.
+TEST(AutomaticModuleBytes, TheDefaultIsTheWidthsAsPrinted) {
+    EXPECT_EQ(AutomaticModuleConfig{}.layout, AutomaticLayout::kAxisWidths);
+    EXPECT_EQ(PaControlConfig{}.automaticModule.layout, AutomaticLayout::kAxisWidths);
+}
+
 TEST(AutomaticModuleBytes, A16BitNKeepsItsLowBitsAndSignExtends) {
     const AutomaticModuleData d{0, 0x12345, 0};
     const Image12 module = d.Encode(AutomaticLayout::kAxisWidths);
@@ -112,7 +119,26 @@ protected:
     AutomaticLayout layout_;
 };
 
-TEST_F(AutomaticModules, ModuleKIsCopiedIntoFwNRkAndBackFrom16PlusK) {
+TEST_F(AutomaticModules, TheDefaultControllerReadsTheWidthsAsPrinted) {
+    Automatic();
+    // FW1 = 16#8001 in bytes 2..3, N1 = -300 (16#FED4) in bytes 6..7, R1 = 10.0.
+    const Image12 module{0x00, 0x00, 0x80, 0x01, 0x00, 0x00, 0xFE, 0xD4, 0x41, 0x20, 0x00, 0x00};
+    axisToPac_[0] = AxisModuleCommand::Decode(module);
+    pac_.Io().intRegisters.SetInt(17, -2);
+    pac_.Io().flags.SetWord(FirstFlagOf(17), 0x0102);
+    Idle();
+    EXPECT_EQ(pac_.Io().flags.Word(1), 0x8001);
+    EXPECT_EQ(pac_.Io().intRegisters.GetInt(1), -300);
+    EXPECT_EQ(pac_.Io().realRegisters.GetReal(1), 10.0f);
+    EXPECT_EQ(Hex(AxisModuleBytes(1)), "00 00 01 02 00 00 FF FE 00 00 00 00");
+}
+
+class AutomaticModulesShifted : public AutomaticModules {
+protected:
+    AutomaticModulesShifted() : AutomaticModules({AutomaticLayout::kShiftedWidths, AutomaticExchange::kWholeMode}) {}
+};
+
+TEST_F(AutomaticModulesShifted, ModuleKIsCopiedIntoFwNRkAndBackFrom16PlusK) {
     Automatic();
     Send(1, {0x8001, 123456, FloatToBits(640.0f)});
     Send(2, {0x00F0, -7, FloatToBits(-0.5f)});

@@ -13,9 +13,9 @@ namespace pac::sim {
 
 // The two readings of the table of 2.6.1 / 2.6.2 (docs/open_points.md#the-module-in-automatic-mode-26).
 enum class AutomaticLayout {
-    kShiftedWidths,  // the library's decision: FW bytes 0..1, not used 2..3, N 32 bits 4..7, R 8..11
-    kAxisWidths,     // the widths as printed: FW as a 4-byte field (M1..M16 in its low word, bytes 2..3),
-                     // not used 4..5, N 16 bits (signed) 6..7, R 8..11
+    kAxisWidths,     // the widths as printed (the default): FW as a 4-byte field (M1..M16 in its low word,
+                     // bytes 2..3), not used 4..5, N 16 bits (signed) 6..7, R 8..11
+    kShiftedWidths,  // the other reading: FW bytes 0..1, not used 2..3, N 32 bits 4..7, R 8..11
 };
 
 // When the controller copies the modules (2.3.4: "in the action loop of the AUTOMATIC interpreter").
@@ -25,7 +25,7 @@ enum class AutomaticExchange {
 };
 
 struct AutomaticModuleConfig {
-    AutomaticLayout layout = AutomaticLayout::kShiftedWidths;
+    AutomaticLayout layout = AutomaticLayout::kAxisWidths;
     AutomaticExchange exchange = AutomaticExchange::kWholeMode;
 };
 
