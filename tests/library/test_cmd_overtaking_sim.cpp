@@ -8,9 +8,11 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "bus_timing.hpp"
 #include "controller_readings.hpp"
@@ -60,6 +62,28 @@ void ExpectOnlySentCommandsOnce(SharedCmdPlc& plc, std::size_t from,
         EXPECT_TRUE(seen.insert({c.code, c.parameter}).second) << "command " << std::hex << c.code << " twice";
     }
 }
+
+// Whether `condition` held in the scan the controller first recognised `code` with `param`: Check() after
+// every scan.
+class AtFirstSight {
+public:
+    AtFirstSight(std::uint16_t code, std::uint16_t param, std::function<bool()> condition)
+        : code_(code), param_(param), condition_(std::move(condition)) {}
+    void Check(SharedCmdPlc& plc) {
+        if (!seen_ && plc.Seen(code_, param_) > 0) {
+            seen_ = true;
+            held_ = condition_();
+        }
+    }
+    bool Held() const { return held_; }
+
+private:
+    std::uint16_t code_;
+    std::uint16_t param_;
+    std::function<bool()> condition_;
+    bool seen_ = false;
+    bool held_ = false;
+};
 
 // One PLC program, online, the axis standing, ready for two command FBs.
 struct OnlinePlc {
@@ -194,14 +218,10 @@ TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
             EXPECT_EQ(plc.Fb(1)->ERRORID.value, kLibAckTimeout) << "no acknowledgement seen within 30 ms";
             link.SetFault(plc.Now(), pac::sim::LinkFault::kNone);
 
-            bool readSeen = false;
-            bool readWhileAxisRan = false;
+            AtFirstSight readWhileAxisRan(code::kGetIntReg, 5, [&] { return motion.JobActive(); });
             for (int scan = 0; scan < 100000 && !(Final(plc.Fb(0)) && Final(plc.Fb(2))); ++scan) {
                 plc.Scan();
-                if (!readSeen && plc.Seen(code::kGetIntReg, 5) > 0) {
-                    readSeen = true;
-                    readWhileAxisRan = motion.JobActive();
-                }
+                readWhileAxisRan.Check(plc);
             }
             ASSERT_TRUE(Final(plc.Fb(0)) && Final(plc.Fb(2)));
             EXPECT_EQ(plc.Seen(code::kStopAxis, 1), 1) << "a stop is never lost";
@@ -211,7 +231,7 @@ TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
             } else {
                 EXPECT_EQ(plc.Fb(0)->ERRORID.value, kLibSuperseded) << std::hex << plc.Fb(0)->ERRORID.value;
             }
-            EXPECT_FALSE(readWhileAxisRan) << "the read went out while the axis still ran a job";
+            EXPECT_FALSE(readWhileAxisRan.Held()) << "the read went out while the axis still ran a job";
             EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << std::hex << plc.Fb(2)->ERRORID.value;
             EXPECT_EQ(plc.Fb(2)->ACKDATA.value, 55u);
             ExpectOnlySentCommandsOnce(plc, online.before,
@@ -244,25 +264,17 @@ TEST_P(CmdOvertaking, AfterEndTimeoutOnlyAStopReachesTheMovingAxis) {
         EXPECT_EQ(plc.Seen(code::kGetIntReg, 5), 0) << "the read went out while the move was processing";
         plc.Set(2, code::kStopAxis, 1);
         plc.Fb(2)->EXECUTE.value = TRUE;
-        bool stopWhileMoving = false;
-        bool readWhileAxisRan = false;
-        bool stopSeen = false;
-        bool readSeen = false;
+        AtFirstSight stopWhileMoving(code::kStopAxis, 1, [&] { return motion.Moving(); });
+        AtFirstSight readWhileAxisRan(code::kGetIntReg, 5, [&] { return motion.JobActive(); });
         for (int scan = 0; scan < 100000 && !(Final(plc.Fb(1)) && Final(plc.Fb(2))); ++scan) {
             plc.Scan();
-            if (!stopSeen && plc.Seen(code::kStopAxis, 1) > 0) {
-                stopSeen = true;
-                stopWhileMoving = motion.Moving();
-            }
-            if (!readSeen && plc.Seen(code::kGetIntReg, 5) > 0) {
-                readSeen = true;
-                readWhileAxisRan = motion.JobActive();
-            }
+            stopWhileMoving.Check(plc);
+            readWhileAxisRan.Check(plc);
         }
-        EXPECT_TRUE(stopWhileMoving) << "the stop reached the moving axis";
+        EXPECT_TRUE(stopWhileMoving.Held()) << "the stop reached the moving axis";
         EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << std::hex << plc.Fb(2)->ERRORID.value;
         EXPECT_LT(plc.Fb(2)->ACKDATA.value, Bits(kTarget)) << "stopped short of the target";
-        EXPECT_FALSE(readWhileAxisRan) << "the read went out while the axis still ran a job";
+        EXPECT_FALSE(readWhileAxisRan.Held()) << "the read went out while the axis still ran a job";
         EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
     }
 }
