@@ -226,6 +226,29 @@ TEST_F(CmdChannelOvertaking, AStopCalledFirstOvertakingAMoveBeforeItsToggleIsNev
     EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]);
 }
 
+// A stop is sent, and before its acknowledgement the program stops calling its FB. The interface does not
+// park over it after the whole scan without a call, as it does for other commands: the stop stays in the
+// module until the reply shows it taken over, and B's read follows its end.
+TEST_F(CmdChannelQueue, AStopWhoseFbIsNoLongerCalledIsNeverWithdrawn) {
+    Request(0, 0x0A93, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A93);
+    const bool stopSend = SendFlag();
+    ASSERT_NE(stopSend, rf_);
+    called_[0] = false;
+    Request(1, 0x1906, 2);
+    for (int scan = 0; scan < 5; ++scan) {
+        Cycle(1);
+        EXPECT_EQ(ModuleCode(), 0x0A93) << "scan " << scan << ": the stop is never withdrawn";
+        EXPECT_EQ(SendFlag(), stopSend);
+        EXPECT_TRUE(interface_->INFLIGHT.value);
+    }
+    Acknowledge(true);  // the controller takes the stop over; the axis stood already
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906) << "B goes in the scan that shows the stop's end";
+    EXPECT_EQ(ModuleParam(), 2);
+}
+
 // Issue 24, item 4: A's reference run processes, B's stop of the axis overtakes it and no acknowledgement
 // comes within B's Timeout (16#8001). The stop stays in the module and the interface stays held: C's read
 // does not go out, nor is a read parked over the stop, until the reply shows the stop taken over and ended.
