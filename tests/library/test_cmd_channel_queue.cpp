@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
@@ -170,6 +171,119 @@ TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledFreesTheInterfaceAtTheEnd
     Acknowledge(true);
     Cycle(1);
     EXPECT_TRUE(Done(1));
+}
+
+// A controller whose PLC cycle equals its own, with no bus latency: in the reply of the next scan it takes
+// over a toggled module (RECEIVE := SEND), a move or a stop processes for three scans, anything else ends at
+// once. It records the code of every command it took over.
+class CmdChannelOvertaking : public CmdChannelQueue {
+protected:
+    void ControllerCycle(int n) {
+        for (int i = 0; i < n; ++i) {
+            Cycle(1);
+            if (SendFlag() != rf_) {
+                taken_.push_back(ModuleCode());
+                const bool long_ = ModuleCode() == 0x0A84 || ModuleCode() == 0x0A87 || ModuleCode() == 0x0A93;
+                Acknowledge(!long_);
+                processing_ = long_ ? 3 : 0;
+            } else if (processing_ > 0 && --processing_ == 0) {
+                bf_ = true;
+            }
+        }
+    }
+    std::vector<std::uint16_t> taken_;
+    int processing_ = 0;
+};
+
+// Issue 24, item 1: a move on A and a stop of its axis on B get their edges in one scan, A called first,
+// with the two-step write. B overtakes A between A's data and A's toggle; only B's command may carry the
+// toggle, and A, whose SEND flag never went out, ends 16#8016, never Done with the stop's answer.
+TEST_F(CmdChannelOvertaking, AStopOvertakingAMoveBeforeItsToggleLeavesTheMoveNeverSent) {
+    interface_->TWOSTEPWRITE.value = TRUE;
+    ControllerCycle(2);
+    Request(0, 0x0A87, 1);
+    Request(1, 0x0A93, 1);
+    ControllerCycle(10);
+    EXPECT_EQ(taken_, std::vector<std::uint16_t>{0x0A93}) << "the controller took the stop alone";
+    ASSERT_TRUE(OutputsOf(fbs_[0]).error) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]);
+    EXPECT_FALSE(fbs_[0]->ACKNOWLEDGED.value);
+    EXPECT_TRUE(Done(1)) << "B: " << OutputsOf(fbs_[1]);
+}
+
+// The same with B called first and its edge one scan after A's: B overtakes A in the scan A toggles, A must
+// not write its toggle over the stop's data (the stop would be lost and A would take its answer).
+TEST_F(CmdChannelOvertaking, AStopCalledFirstOvertakingAMoveBeforeItsToggleIsNeverLost) {
+    interface_->TWOSTEPWRITE.value = TRUE;
+    ControllerCycle(2);
+    Request(1, 0x0A87, 1);
+    ControllerCycle(1);
+    Request(0, 0x0A93, 1);
+    ControllerCycle(10);
+    EXPECT_EQ(taken_, std::vector<std::uint16_t>{0x0A93}) << "the controller took the stop alone";
+    EXPECT_TRUE(Done(0)) << "B: " << OutputsOf(fbs_[0]);
+    ASSERT_TRUE(OutputsOf(fbs_[1]).error) << "A: " << OutputsOf(fbs_[1]);
+    EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]);
+}
+
+// A stop is sent, and before its acknowledgement the program stops calling its FB. The interface does not
+// park over it after the whole scan without a call, as it does for other commands: the stop stays in the
+// module until the reply shows it taken over, and B's read follows its end.
+TEST_F(CmdChannelQueue, AStopWhoseFbIsNoLongerCalledIsNeverWithdrawn) {
+    Request(0, 0x0A93, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A93);
+    const bool stopSend = SendFlag();
+    ASSERT_NE(stopSend, rf_);
+    called_[0] = false;
+    Request(1, 0x1906, 2);
+    for (int scan = 0; scan < 5; ++scan) {
+        Cycle(1);
+        EXPECT_EQ(ModuleCode(), 0x0A93) << "scan " << scan << ": the stop is never withdrawn";
+        EXPECT_EQ(SendFlag(), stopSend);
+        EXPECT_TRUE(interface_->INFLIGHT.value);
+    }
+    Acknowledge(true);  // the controller takes the stop over; the axis stood already
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906) << "B goes in the scan that shows the stop's end";
+    EXPECT_EQ(ModuleParam(), 2);
+}
+
+// Issue 24, item 4: A's reference run processes, B's stop of the axis overtakes it and no acknowledgement
+// comes within B's Timeout (16#8001). The stop stays in the module and the interface stays held: C's read
+// does not go out, nor is a read parked over the stop, until the reply shows the stop taken over and ended.
+TEST_F(CmdChannelQueue, AStopWhoseAcknowledgementIsLostHoldsTheInterfaceUntilTheReplyShowsIt) {
+    Request(0, 0x0A84, 1);
+    Cycle(1);
+    Acknowledge(false);
+    Cycle(1);
+    ASSERT_TRUE(fbs_[0]->ACKNOWLEDGED.value && Busy(0)) << "the reference run processes";
+    fbs_[1]->TIMEOUT.value = TIME{0, 1'000'000};
+    Request(1, 0x0A93, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A93);
+    const bool stopSend = SendFlag();
+    ASSERT_NE(stopSend, rf_);
+    Request(2, 0x1906, 5);
+    Cycle(3);
+    ASSERT_TRUE(OutputsOf(fbs_[1]).error);
+    EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    for (int scan = 0; scan < 10; ++scan) {
+        Cycle(1);
+        EXPECT_EQ(ModuleCode(), 0x0A93) << "scan " << scan << ": the stop is never withdrawn";
+        EXPECT_EQ(SendFlag(), stopSend);
+        EXPECT_TRUE(interface_->INFLIGHT.value);
+    }
+    EXPECT_TRUE(Busy(2)) << "C waits";
+    Acknowledge(false);  // the controller takes the stop over: the axis brakes
+    Cycle(1);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]) << "the reference run was stopped";
+    Cycle(5);
+    EXPECT_NE(ModuleCode(), 0x1906) << "C waits while the stop processes";
+    bf_ = true;  // the axis stands
+    Cycle(1);
+    EXPECT_EQ(ModuleCode(), 0x1906);
+    EXPECT_EQ(ModuleParam(), 5);
 }
 
 }  // namespace

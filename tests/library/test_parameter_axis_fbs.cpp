@@ -99,6 +99,8 @@ public:
     }
 
     void Settle(int scans) { plc_.Scan(scans); }
+    // FB_PAC_CmdInterface.TwoStepWrite: the data a scan before the SEND flag (Interbus-S, 4.2.4).
+    void SetTwoStepWrite(bool on) { plc_.Bench().CmdInterface()->TWOSTEPWRITE.value = on ? TRUE : FALSE; }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
     pac::sim::ServoAxis& Motion(int axis) { return Controller().Axes().Motion(axis); }
     const pac::sim::Dynamics& SessionDynamics(int axis) { return Controller().Axes().SessionDynamics(axis); }
@@ -774,6 +776,27 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
     EXPECT_LT(bench.Motion(2).Position(), 300.0);
     bench.Release(bench.moveRel);
     EXPECT_FALSE(bench.moveRel->COMMANDABORTED.value);
+}
+
+// A move and the stop of its axis edged in one scan, the move's FB called first, with the two-step write:
+// the stop takes the interface between the move's data and its toggle, the move never goes out, and its
+// FB shows CommandAborted (16#8016 inside), never Done with the stop's answer (issue 24, item 1).
+TEST(ParameterAxisFbsOverSim, MoveOvertakenByTheStopOfItsAxisBeforeItWentOutIsCommandAborted) {
+    AxisBench bench({1, 1, 0});
+    bench.SetTwoStepWrite(true);
+    ASSERT_TRUE(bench.GoOnline());
+    const double start = bench.Motion(1).Position();
+    bench.moveAbs->AXIS.value = 1;
+    bench.moveAbs->POSITION.value = 300.0F;
+    bench.stop->AXIS.value = 1;
+    bench.moveAbs->EXECUTE.value = TRUE;
+    bench.Start(bench.stop);
+    const FinalOutcome stopped = bench.Wait(bench.stop);
+    EXPECT_TRUE(stopped.Done()) << stopped;
+    bench.Settle(5);
+    EXPECT_TRUE(bench.moveAbs->COMMANDABORTED.value);
+    EXPECT_FALSE(bench.moveAbs->DONE.value || bench.moveAbs->ERROR.value);
+    EXPECT_EQ(bench.Motion(1).Position(), start) << "the move never reached the controller";
 }
 
 // The axis stop is itself overtaken by cmd_stop (0600, which may overtake anything): CommandAborted.

@@ -1,0 +1,286 @@
+// Stops overtaking commands on one CMD interface against the simulated PA-CONTROL, scan by scan, on the bus
+// timings of the library's tests, on every controller reading (controller_readings.hpp) and with the data
+// written in one step or in two (FB_PAC_CmdInterface.TwoStepWrite, manual 4.2.4). The rule: an FB ends Done
+// only for a command the controller took over and never with another FB's answer, a command that never
+// went out ends 16#8016, a stop is never lost, and a stop whose acknowledgement is not seen keeps the
+// interface until the controller shows it (issue 24, items 1 and 4; docs/fb/FB_PAC_Cmd.md).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "bus_timing.hpp"
+#include "controller_readings.hpp"
+#include "gvl_constants.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/sim/command_table.hpp"
+#include "real_bits.hpp"
+#include "shared_cmd_plc.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using pac::test::SharedCmdPlc;
+using pac::test::SharingCase;
+namespace code = pac::sim::code;
+
+const pac::test::GvlConstants kGvl;
+const std::uint32_t kLibAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
+const std::uint32_t kLibEndTimeout = kGvl["PAC_LIB_ERR_END_TIMEOUT"];
+const std::uint32_t kLibSuperseded = kGvl["PAC_LIB_ERR_SUPERSEDED"];
+const std::uint32_t kLibOvertaken = kGvl["PAC_LIB_ERR_OVERTAKEN"];
+
+constexpr float kTarget = 400.0F;
+
+std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
+
+bool Final(pac::FbInstance<FB_PAC_CMD>& fb) { return fb->DONE.value || fb->ERROR.value; }
+
+std::string WriteName(bool twoStep) { return twoStep ? "two-step write" : "one-step write"; }
+
+// Scans until FB `i` shows a final output; false after maxScans.
+bool ScanUntilFinal(SharedCmdPlc& plc, int i, int maxScans = 100000) {
+    for (int scan = 0; scan < maxScans && !Final(plc.Fb(i)); ++scan) plc.Scan();
+    return Final(plc.Fb(i));
+}
+
+// Every command the controller recognised from `from` on but the harmless 190B of a parked module, each at
+// most once, and only the ones in `sent`.
+void ExpectOnlySentCommandsOnce(SharedCmdPlc& plc, std::size_t from,
+                                const std::set<std::tuple<std::uint16_t, std::uint16_t>>& sent) {
+    std::set<std::tuple<std::uint16_t, std::uint16_t>> seen;
+    const auto& commands = plc.CommandsSeen();
+    for (std::size_t k = from; k < commands.size(); ++k) {
+        const auto& c = commands[k];
+        if (c.code == code::kGetState) continue;
+        EXPECT_TRUE(sent.count({c.code, c.parameter}) == 1) << "command " << std::hex << c.code << " nobody sent";
+        EXPECT_TRUE(seen.insert({c.code, c.parameter}).second) << "command " << std::hex << c.code << " twice";
+    }
+}
+
+// Whether `condition` held in the scan the controller first recognised `code` with `param`: Check() after
+// every scan.
+class AtFirstSight {
+public:
+    AtFirstSight(std::uint16_t code, std::uint16_t param, std::function<bool()> condition)
+        : code_(code), param_(param), condition_(std::move(condition)) {}
+    void Check(SharedCmdPlc& plc) {
+        if (!seen_ && plc.Seen(code_, param_) > 0) {
+            seen_ = true;
+            held_ = condition_();
+        }
+    }
+    bool Held() const { return held_; }
+
+private:
+    std::uint16_t code_;
+    std::uint16_t param_;
+    std::function<bool()> condition_;
+    bool seen_ = false;
+    bool held_ = false;
+};
+
+// One PLC program, online, the axis standing, ready for two command FBs.
+struct OnlinePlc {
+    OnlinePlc(const SharingCase& c, bool twoStep, int fbs) : plc(c, fbs) {
+        plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+        plc.Boot();
+        online = plc.GoOnline();
+        plc.Scan(2);
+        before = plc.CommandsSeen().size();
+    }
+    SharedCmdPlc plc;
+    bool online = false;
+    std::size_t before = 0;
+};
+
+class CmdOvertaking : public ::testing::TestWithParam<SharingCase> {};
+
+// Item 1: a move of axis 1 and a stop of that axis on two FBs, the stop's edge 0..4 scans after the move's,
+// the stop's FB called after or before the move's, with the data written in one step or two. Whatever the
+// interleaving, the stop reaches the controller once and ends Done; the move ends Done only at its target
+// after the controller took it, 16#8007 if the controller took it and the stop ended it, 16#8016 if it never
+// went out.
+TEST_P(CmdOvertaking, StopAndMoveEdgedTogetherEachEndOnTheirOwnCommand) {
+    for (const bool twoStep : {false, true}) {
+        for (const std::uint16_t stop : {code::kStopAxis, code::kStopAxisMultiCmd}) {
+            for (const bool stopFirst : {false, true}) {
+                for (int delay = 0; delay <= 4; ++delay) {
+                    SCOPED_TRACE(WriteName(twoStep) + ", stop " + std::to_string(stop) +
+                                 (stopFirst ? ", stop's FB called first" : ", move's FB called first") +
+                                 ", stop edged " + std::to_string(delay) + " scans after the move");
+                    OnlinePlc online(GetParam(), twoStep, 2);
+                    SharedCmdPlc& plc = online.plc;
+                    ASSERT_TRUE(online.online);
+                    const int moveFb = stopFirst ? 1 : 0;
+                    const int stopFb = stopFirst ? 0 : 1;
+                    plc.Set(moveFb, code::kPosAxisAbsolute, 1, Bits(kTarget));
+                    plc.Set(stopFb, stop, 1);
+                    plc.Fb(stopFb)->TIMEOUT.value = pac::ToIecTime(5s);
+                    plc.Fb(moveFb)->EXECUTE.value = TRUE;
+                    plc.Scan(delay);
+                    plc.Fb(stopFb)->EXECUTE.value = TRUE;
+                    ASSERT_TRUE(ScanUntilFinal(plc, moveFb));
+                    ASSERT_TRUE(ScanUntilFinal(plc, stopFb));
+                    auto& move = plc.Fb(moveFb);
+                    const int moveSeen = plc.Seen(code::kPosAxisAbsolute, 1);
+                    EXPECT_EQ(plc.Seen(stop, 1), 1) << "a stop is never lost";
+                    EXPECT_TRUE(plc.Fb(stopFb)->DONE.value) << "ErrorID " << std::hex << plc.Fb(stopFb)->ERRORID.value;
+                    if (move->DONE.value) {
+                        EXPECT_EQ(moveSeen, 1) << "Done for a move the controller never took";
+                        EXPECT_EQ(move->ACKDATA.value, Bits(kTarget)) << "Done with another command's answer";
+                    } else if (move->ERRORID.value == kLibSuperseded) {
+                        EXPECT_EQ(moveSeen, 1) << "16#8007 says the controller took the move";
+                    } else {
+                        EXPECT_EQ(move->ERRORID.value, kLibOvertaken) << std::hex << move->ERRORID.value;
+                        EXPECT_EQ(moveSeen, 0) << "16#8016 says the move never went out";
+                    }
+                    if (stop == code::kStopAxis) {  // 0A9A ends at once, 0A93 when the axis stands (5.2.6.13)
+                        EXPECT_TRUE(move->DONE.value || !plc.Controller().Axes().Motion(1).JobActive())
+                            << "the axis still runs a job no FB follows";
+                    }
+                    ExpectOnlySentCommandsOnce(plc, online.before,
+                                               {{code::kPosAxisAbsolute, 1}, {stop, 1}});
+                }
+            }
+        }
+    }
+}
+
+// Item 1, the same root cause between ordinary commands: two reads edged 0..2 scans apart, in either call
+// order, one step or two; each FB ends Done with its own register's value.
+TEST_P(CmdOvertaking, TwoCommandsEdgedTogetherEachEndWithItsOwnAnswer) {
+    for (const bool twoStep : {false, true}) {
+        for (const bool secondFirst : {false, true}) {
+            for (int delay = 0; delay <= 2; ++delay) {
+                SCOPED_TRACE(WriteName(twoStep) + (secondFirst ? ", FB 1 edged first" : ", FB 0 edged first") +
+                             ", the other " + std::to_string(delay) + " scans later");
+                OnlinePlc online(GetParam(), twoStep, 2);
+                SharedCmdPlc& plc = online.plc;
+                ASSERT_TRUE(online.online);
+                plc.Controller().Io().intRegisters.SetInt(5, 55);
+                plc.Controller().Io().intRegisters.SetInt(6, 66);
+                plc.Set(0, code::kGetIntReg, 5);
+                plc.Set(1, code::kGetIntReg, 6);
+                const int first = secondFirst ? 1 : 0;
+                plc.Fb(first)->EXECUTE.value = TRUE;
+                plc.Scan(delay);
+                plc.Fb(1 - first)->EXECUTE.value = TRUE;
+                ASSERT_TRUE(ScanUntilFinal(plc, 0));
+                ASSERT_TRUE(ScanUntilFinal(plc, 1));
+                EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
+                EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_EQ(plc.Fb(0)->ACKDATA.value, 55u);
+                EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 66u);
+                ExpectOnlySentCommandsOnce(plc, online.before, {{code::kGetIntReg, 5}, {code::kGetIntReg, 6}});
+            }
+        }
+    }
+}
+
+// Item 4: a reference run of axis 1 processes, a stop of the axis overtakes it and its acknowledgement is
+// not seen within the stop's Timeout (16#8001): the replies freeze, or the controller does not yet read the
+// module. The stop stays in the module until the controller shows it: it reaches the controller once, the
+// reference run's FB never ends Done for a run that was stopped, and a read queued meanwhile goes out only
+// once the axis stands.
+TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
+    for (const bool twoStep : {false, true}) {
+        for (const bool repliesFrozen : {true, false}) {
+            SCOPED_TRACE(WriteName(twoStep) + (repliesFrozen ? ", the replies freeze" : ", the module freezes"));
+            OnlinePlc online(GetParam(), twoStep, 3);
+            SharedCmdPlc& plc = online.plc;
+            ASSERT_TRUE(online.online);
+            auto& axes = plc.Controller().Axes();
+            const auto& motion = axes.Motion(1);
+            axes.SetReferenceSwitch(1, -400.0);
+            axes.Motion(1).Place(plc.Now(), 0.0);
+            plc.Controller().Io().intRegisters.SetInt(5, 55);
+            plc.Set(0, code::kPutStartReference, 1);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            for (int scan = 0; scan < 100000 && !plc.Fb(0)->ACKNOWLEDGED.value; ++scan) plc.Scan();
+            plc.Scan(2);
+            ASSERT_TRUE(plc.Fb(0)->BUSY.value && motion.HomingActive()) << "the reference run processes";
+
+            auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
+            link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+            plc.Set(1, code::kStopAxis, 1);
+            plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(30ms);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            plc.Set(2, code::kGetIntReg, 5);
+            plc.Fb(2)->TIMEOUT.value = pac::ToIecTime(10s);
+            plc.Fb(2)->EXECUTE.value = TRUE;
+            ASSERT_TRUE(ScanUntilFinal(plc, 1));
+            EXPECT_EQ(plc.Fb(1)->ERRORID.value, kLibAckTimeout) << "no acknowledgement seen within 30 ms";
+            link.SetFault(plc.Now(), pac::sim::LinkFault::kNone);
+
+            AtFirstSight readWhileAxisRan(code::kGetIntReg, 5, [&] { return motion.JobActive(); });
+            for (int scan = 0; scan < 100000 && !(Final(plc.Fb(0)) && Final(plc.Fb(2))); ++scan) {
+                plc.Scan();
+                readWhileAxisRan.Check(plc);
+            }
+            ASSERT_TRUE(Final(plc.Fb(0)) && Final(plc.Fb(2)));
+            EXPECT_EQ(plc.Seen(code::kStopAxis, 1), 1) << "a stop is never lost";
+            EXPECT_FALSE(motion.HomingActive());
+            if (plc.Fb(0)->DONE.value) {
+                EXPECT_TRUE(motion.Referenced()) << "Done for a reference run that was stopped";
+            } else {
+                EXPECT_EQ(plc.Fb(0)->ERRORID.value, kLibSuperseded) << std::hex << plc.Fb(0)->ERRORID.value;
+            }
+            EXPECT_FALSE(readWhileAxisRan.Held()) << "the read went out while the axis still ran a job";
+            EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << std::hex << plc.Fb(2)->ERRORID.value;
+            EXPECT_EQ(plc.Fb(2)->ACKDATA.value, 55u);
+            ExpectOnlySentCommandsOnce(plc, online.before,
+                                       {{code::kPutStartReference, 1}, {code::kStopAxis, 1}, {code::kGetIntReg, 5}});
+        }
+    }
+}
+
+// Low item: after 16#8002 (EndTimeout) the move still runs in the controller. The interface stays its until
+// END OF PROCESSING: a read waits; a stop of the axis still goes out at once, ends the move, and the read
+// follows once the axis stands.
+TEST_P(CmdOvertaking, AfterEndTimeoutOnlyAStopReachesTheMovingAxis) {
+    for (const bool twoStep : {false, true}) {
+        SCOPED_TRACE(WriteName(twoStep));
+        OnlinePlc online(GetParam(), twoStep, 3);
+        SharedCmdPlc& plc = online.plc;
+        ASSERT_TRUE(online.online);
+        const auto& motion = plc.Controller().Axes().Motion(1);
+        plc.Controller().Io().intRegisters.SetInt(5, 55);
+        plc.Set(0, code::kPosAxisAbsolute, 1, Bits(kTarget));
+        plc.Fb(0)->ENDTIMEOUT.value = pac::ToIecTime(100ms);
+        plc.Fb(0)->EXECUTE.value = TRUE;
+        ASSERT_TRUE(ScanUntilFinal(plc, 0));
+        ASSERT_EQ(plc.Fb(0)->ERRORID.value, kLibEndTimeout);
+        ASSERT_TRUE(motion.Moving());
+        plc.Set(1, code::kGetIntReg, 5);
+        plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(10s);
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        plc.Scan(10);
+        EXPECT_EQ(plc.Seen(code::kGetIntReg, 5), 0) << "the read went out while the move was processing";
+        plc.Set(2, code::kStopAxis, 1);
+        plc.Fb(2)->EXECUTE.value = TRUE;
+        AtFirstSight stopWhileMoving(code::kStopAxis, 1, [&] { return motion.Moving(); });
+        AtFirstSight readWhileAxisRan(code::kGetIntReg, 5, [&] { return motion.JobActive(); });
+        for (int scan = 0; scan < 100000 && !(Final(plc.Fb(1)) && Final(plc.Fb(2))); ++scan) {
+            plc.Scan();
+            stopWhileMoving.Check(plc);
+            readWhileAxisRan.Check(plc);
+        }
+        EXPECT_TRUE(stopWhileMoving.Held()) << "the stop reached the moving axis";
+        EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << std::hex << plc.Fb(2)->ERRORID.value;
+        EXPECT_LT(plc.Fb(2)->ACKDATA.value, Bits(kTarget)) << "stopped short of the target";
+        EXPECT_FALSE(readWhileAxisRan.Held()) << "the read went out while the axis still ran a job";
+        EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Readings, CmdOvertaking,
+                         ::testing::ValuesIn(pac::test::OnEveryReading(pac::test::StandardAndJitteredBusTimings())),
+                         pac::test::SharingCaseName);
+
+}  // namespace
