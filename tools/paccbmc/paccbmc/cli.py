@@ -35,7 +35,9 @@ def _run(args) -> int:
             if out_dir:
                 out_dir.mkdir(parents=True, exist_ok=True)
                 path = out_dir / f"{args.name}.{prop.name}.inputs"
-                path.write_text(" ".join(str(v) for v in timeline.nondet_values(prop.trace)) + "\n")
+                values = " ".join(str(v) for v in timeline.nondet_values(prop.trace))
+                path.write_text(f"# harness: {args.name}\n# property: {prop.description}\n# status: open\n"
+                                f"{values}\n")
                 print(f"free inputs for the replay: {path}")
     for prop in verdict.unreached:
         print(f"UNREACHED ({prop.status}): {prop.description} [{prop.name}]: a proof whose paths never get "

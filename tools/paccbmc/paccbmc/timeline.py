@@ -13,6 +13,8 @@ def _value(step: dict):
     data = value.get("data")
     if data is None:
         return None
+    if data in ("TRUE", "FALSE"):  # a _Bool
+        return 1 if data == "TRUE" else 0
     try:
         return int(str(data).rstrip("ulUL"), 0)
     except ValueError:

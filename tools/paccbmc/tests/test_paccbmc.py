@@ -12,9 +12,9 @@ def _assign(lhs, data, hidden=False):
 
 TRACE = [
     _assign("tl_scan", "0", hidden=True),  # the globals' zero initialisation: no row
-    _assign("tl_a_busy", "1"), _assign("return_value_nondet_bool", "1"),
+    _assign("tl_a_busy", "TRUE"), _assign("return_value_nondet_bool", "TRUE"),
     _assign("tl_to_pac", "0x1122334455667788ull"), _assign("tl_a_errorid", "32769"), _assign("tl_scan", "1"),
-    _assign("return_value_nondet_uchar", "7"), _assign("tl_a_busy", "0"), _assign("tl_scan", "2"),
+    _assign("return_value_nondet_uchar", "7"), _assign("tl_a_busy", "FALSE"), _assign("tl_scan", "2"),
     {"stepType": "failure", "property": "main.assertion.1"},
 ]
 
