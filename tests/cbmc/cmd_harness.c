@@ -9,6 +9,7 @@
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "POUS.h"
+#include "plcopen_props.h"
 
 #ifndef K
 #define K 10
@@ -139,9 +140,7 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
 
 /* What the harness knows of one caller's job, for the properties. */
 typedef struct {
-    BOOL execute, busy, done, error;
-    int busyScans;
-    int bound;
+    PlcOpenWatch plcopen;
     int edges;      /* Execute edges that the FB took (Busy or a final output followed) */
     int edgeScan;   /* the scan of the job's edge */
     WORD code, param;
@@ -161,37 +160,20 @@ static void SetPins(FB_PAC_CMD *fb, int who) {
 }
 
 static void Check(const FB_PAC_CMD *fb, Watch *w, const Controller *c, int n, BOOL edge) {
-    const BOOL busy = fb->BUSY.value, done = fb->DONE.value, error = fb->ERROR.value;
-    const BOOL execute = fb->EXECUTE.value;
-    const WORD id = fb->ERRORID.value;
-    __CPROVER_assert((busy + done + error) <= 1, "P1 Busy, Done and Error mutually exclusive");
-    __CPROVER_assert(!error || id != 0, "P2 Error implies ErrorID <> 0");
-    __CPROVER_assert(!done || id == 0, "P2 Done implies ErrorID = 0");
-    const BOOL was = w->busy || w->done || w->error;
-    __CPROVER_assert(was || !(busy || done || error) || edge, "P3 no output without an Execute edge");
-    __CPROVER_assert(!(w->done || w->error) || execute || !(done || error),
-                     "P4 a final output clears in the scan that sees Execute FALSE");
-    __CPROVER_assert(!(w->done && w->execute && execute) || done, "P4 Done holds while Execute stays TRUE");
-    __CPROVER_assert(!(w->error && w->execute && execute) || error, "P4 Error holds while Execute stays TRUE");
-    __CPROVER_assert(!w->busy || busy || done || error, "P4 a job that ends shows its final output");
-    if (edge && (busy || done || error) && !w->busy) {
+    const BOOL wasDone = w->plcopen.done;
+    if (CheckPlcOpen(&w->plcopen, fb->EXECUTE.value, edge, fb->BUSY.value, fb->DONE.value, fb->ERROR.value,
+                     fb->ERRORID.value)) {
         w->edges++;
         w->edgeScan = n;
         w->code = fb->CODE.value;
         w->param = fb->PARAM.value;
         w->data = fb->DATA.value;
     }
-    if (done && !w->done) {
+    if (fb->DONE.value && !wasDone) {
         __CPROVER_assert(c->takenScan >= w->edgeScan && c->takenCode == w->code && c->takenParam == w->param
                              && c->takenData == w->data,
                          "P5 Done only for a command the controller took, with its own answer");
     }
-    w->busyScans = busy ? w->busyScans + 1 : 0;
-    __CPROVER_assert(w->busyScans <= w->bound, "P8 Busy within Timeout + 1 + Timeout + EndTimeout");
-    w->execute = execute;
-    w->busy = busy;
-    w->done = done;
-    w->error = error;
 }
 
 /* A command FB's call: the channel in, the body, the channel out (VAR_IN_OUT). */
@@ -224,7 +206,7 @@ int main(void) {
         const unsigned t = TMIN + nondet_uchar() % TMAX, e = 1 + nondet_uchar() % TMAX;
         cmd[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
         cmd[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
-        watch[i].bound = (int)(t + 1 + t + e);
+        watch[i].plcopen.bound = (int)(t + 1 + t + e); /* Timeout + two-step + Timeout + EndTimeout */
     }
     for (int j = 0; j < LAG + 2; ++j) {
         for (int i = 0; i < 8; ++i) recent[j][i] = 0;

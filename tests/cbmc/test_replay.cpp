@@ -19,6 +19,7 @@ extern "C" {
 int pac_cbmc_cmd_one_main(void);
 int pac_cbmc_cmd_two_main(void);
 int pac_cbmc_cmd_one_short_timeout_main(void);
+int pac_cbmc_ctrl_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -61,6 +62,7 @@ void Replay(const Counterexample& c) {
         {"CmdInterface.OneCaller", pac_cbmc_cmd_one_main},
         {"CmdInterface.TwoCallers", pac_cbmc_cmd_two_main},
         {"CmdInterface.OneCallerShortTimeout", pac_cbmc_cmd_one_short_timeout_main},
+        {"Ctrl", pac_cbmc_ctrl_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);
