@@ -161,7 +161,7 @@ static void SetPins(FB_PAC_CMD *fb, int who) {
 
 static void Check(const FB_PAC_CMD *fb, Watch *w, const Controller *c, int n, BOOL edge) {
     const BOOL wasDone = w->plcopen.done;
-    if (CheckPlcOpen(&w->plcopen, fb->EXECUTE.value, edge, fb->BUSY.value, fb->DONE.value, fb->ERROR.value,
+    if (CheckPlcOpen(&w->plcopen, fb->EXECUTE.value, edge, fb->BUSY.value, fb->DONE.value, fb->ERROR.value, FALSE,
                      fb->ERRORID.value)) {
         w->edges++;
         w->edgeScan = n;

@@ -70,7 +70,7 @@ int main(void) {
         tl_to_pac = Bytes8(out);
         tl_scan = n;
 
-        CheckPlcOpen(&watch, ctrl.EXECUTE.value, edge, ctrl.BUSY.value, ctrl.DONE.value, ctrl.ERROR.value,
+        CheckPlcOpen(&watch, ctrl.EXECUTE.value, edge, ctrl.BUSY.value, ctrl.DONE.value, ctrl.ERROR.value, FALSE,
                      ctrl.ERRORID.value);
         /* C1: the control word (bytes 0..1; 2..7 unused) carries at most one request: Error reset, Stop and
          * Cancel are low-active, the two starts high-active; and none at all unless a request waits. */

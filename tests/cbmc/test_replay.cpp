@@ -20,6 +20,7 @@ int pac_cbmc_cmd_one_main(void);
 int pac_cbmc_cmd_two_main(void);
 int pac_cbmc_cmd_one_short_timeout_main(void);
 int pac_cbmc_ctrl_main(void);
+int pac_cbmc_axis_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -63,6 +64,7 @@ void Replay(const Counterexample& c) {
         {"CmdInterface.TwoCallers", pac_cbmc_cmd_two_main},
         {"CmdInterface.OneCallerShortTimeout", pac_cbmc_cmd_one_short_timeout_main},
         {"Ctrl", pac_cbmc_ctrl_main},
+        {"Axis", pac_cbmc_axis_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);
