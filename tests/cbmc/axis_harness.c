@@ -6,8 +6,7 @@
  * (a few values each, in and out of range); per run Position (two values), IntegerMode,
  * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Properties "P<n>"/"A<n>", reachability checks
  * "reach: ..." (which must FAIL), as in cmd_harness.c. */
-#include "POUS.h"
-#include "plcopen_props.h"
+#include "harness.h"
 
 #ifndef K
 #define K 6
@@ -16,30 +15,14 @@
 #define TMAX 2
 #endif
 
-#ifndef PAC_CBMC_REPLAY_SHIM_H /* a replay defines them once for all its harnesses (replay_inputs.c) */
-TIME __CURRENT_TIME;
-BOOL __DEBUG;
-#endif
-
-_Bool nondet_bool(void);
-unsigned char nondet_uchar(void);
-
-#define CYCLE_NS 1000000L /* the PLC cycle: 1 ms */
 /* The traverse bits of the control word (2.7.1): 3..7 and 12..15 the jobs, 10 and 11 the jogs. */
 #define TRAVERSE_BITS 0xFCF8u
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
 static unsigned long long tl_from_pac, tl_to_pac;
 static int tl_op_status, tl_command;
-static BOOL tl_enable, tl_execute, tl_jog_pos, tl_jog_neg, tl_abort, tl_busy, tl_done, tl_error, tl_aborted;
-static WORD tl_errorid;
+static BOOL tl_enable, tl_execute, tl_jog_pos, tl_jog_neg, tl_abort;
 static int tl_scan;
-
-static unsigned long long Bytes8(const BYTE *m) {
-    unsigned long long v = 0;
-    for (int i = 0; i < 8; ++i) v = (v << 8) | m[i];
-    return v;
-}
 
 static BOOL Owns(BYTE status) { return status == 1 || status == 9 || (status >= 30 && status <= 39); }
 
@@ -100,11 +83,8 @@ int main(void) {
         tl_jog_pos = axis.JOGPOSITIVE.value;
         tl_jog_neg = axis.JOGNEGATIVE.value;
         tl_abort = axis.ABORT.value;
-        tl_busy = axis.BUSY.value;
-        tl_done = axis.DONE.value;
-        tl_error = axis.ERROR.value;
-        tl_aborted = axis.COMMANDABORTED.value;
-        tl_errorid = axis.ERRORID.value;
+        TimelineOutputs(axis.BUSY.value, axis.DONE.value, axis.ERROR.value, axis.COMMANDABORTED.value,
+                        axis.ERRORID.value);
         tl_to_pac = Bytes8(out);
         tl_scan = n;
 

@@ -8,8 +8,7 @@
  * With CALLERS = 2 the second FB sends only stops (0600, 0A93, 0A9A), which may overtake.
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
-#include "POUS.h"
-#include "plcopen_props.h"
+#include "harness.h"
 
 #ifndef K
 #define K 10
@@ -27,15 +26,6 @@
 #define TMIN (LAG + 2) /* the round trip: the module out, LAG scans old at most, the reply back */
 #endif
 
-#ifndef PAC_CBMC_REPLAY_SHIM_H /* a replay defines them once for all its harnesses (replay_inputs.c) */
-TIME __CURRENT_TIME;
-BOOL __DEBUG;
-#endif
-
-_Bool nondet_bool(void);
-unsigned char nondet_uchar(void);
-
-#define CYCLE_NS 1000000L /* the PLC cycle: 1 ms, the fastest timing of the library suites */
 #define PARKED_CODE 0x190B
 #define SUPERSEDED 0x8007
 
@@ -54,11 +44,6 @@ static WORD tl_b_code, tl_b_errorid;
 #endif
 static int tl_scan;
 
-static unsigned long long Bytes8(const BYTE *m) {
-    unsigned long long v = 0;
-    for (int i = 0; i < 8; ++i) v = (v << 8) | m[i];
-    return v;
-} /* the module as the PLC left it after scan n (n = 0: power-up) */
 
 /* The controller: only its RECEIVE flag follows the protocol; everything else it says is free. */
 typedef struct {

@@ -4,8 +4,7 @@
  * programmer's Execute, Request (every value of E_PAC_CtrlRequest) and IntegerMode in every scan, and the
  * Timeout (1..TMAX ms). Properties are __CPROVER_assert "P<n> ..." / "C<n> ...", reachability checks
  * "reach: ..." (which must FAIL), as in cmd_harness.c. */
-#include "POUS.h"
-#include "plcopen_props.h"
+#include "harness.h"
 
 #ifndef K
 #define K 6
@@ -14,28 +13,11 @@
 #define TMAX 3
 #endif
 
-#ifndef PAC_CBMC_REPLAY_SHIM_H /* a replay defines them once for all its harnesses (replay_inputs.c) */
-TIME __CURRENT_TIME;
-BOOL __DEBUG;
-#endif
-
-_Bool nondet_bool(void);
-unsigned char nondet_uchar(void);
-
-#define CYCLE_NS 1000000L /* the PLC cycle: 1 ms */
-
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
 static unsigned long long tl_from_pac, tl_to_pac;
-static BOOL tl_execute, tl_busy, tl_done, tl_error;
+static BOOL tl_execute;
 static int tl_request;
-static WORD tl_errorid;
 static int tl_scan;
-
-static unsigned long long Bytes8(const BYTE *m) {
-    unsigned long long v = 0;
-    for (int i = 0; i < 8; ++i) v = (v << 8) | m[i];
-    return v;
-}
 
 int main(void) {
     static FB_PAC_CTRL ctrl;
@@ -63,10 +45,7 @@ int main(void) {
         tl_from_pac = Bytes8(ctrl.FROMPAC.value.table);
         tl_execute = ctrl.EXECUTE.value;
         tl_request = request;
-        tl_busy = ctrl.BUSY.value;
-        tl_done = ctrl.DONE.value;
-        tl_error = ctrl.ERROR.value;
-        tl_errorid = ctrl.ERRORID.value;
+        TimelineOutputs(ctrl.BUSY.value, ctrl.DONE.value, ctrl.ERROR.value, FALSE, ctrl.ERRORID.value);
         tl_to_pac = Bytes8(out);
         tl_scan = n;
 
