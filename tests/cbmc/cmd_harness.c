@@ -69,8 +69,8 @@ static BOOL IsLong(WORD code) {
 }
 
 /* One controller cycle before scan n: read a module (latency), take a command, write the reply.
- * A restart shows status 0 and RECEIVE 0 for at least RESTART scans, and the controller reads no module
- * written before it went down (a real restart lasts far longer than a bus round trip). */
+ * A restart shows status 0 and RECEIVE 0 for at least RESTART scans, and the controller then reads no module
+ * written before the PLC parked it (a real restart lasts far longer than a bus round trip). */
 #define RESTART (LAG + 2)
 static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
     if (c->downSince == 0 && nondet_bool()) {
@@ -83,8 +83,13 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
             for (int i = 0; i < 8; ++i) reply[i] = 0;
             return;
         }
+        /* It reads no module the PLC wrote before it could see the restart and park the module (the data in
+         * the scan after the first status 0, the flag a scan later with TwoStepWrite), and under either reading
+         * it starts from its RECEIVE: a SEND equal to it is no new command. */
+        c->seen = n - 1 - LAG - 1;
+        if (c->seen < c->downSince + 1) c->seen = c->downSince + 1;
+        c->lastSend = c->receive;
         c->downSince = 0;
-        c->seen = n - 1 - LAG - 1; /* below anything it may read now */
     }
     /* The module it reads: 0..LAG scans old, never older than the last one it read. */
     const int lag = (int)(nondet_uchar() % (LAG + 1));
