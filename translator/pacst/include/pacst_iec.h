@@ -99,8 +99,13 @@ extern TIME __CURRENT_TIME;
 extern BOOL __DEBUG;
 
 /* Reports a run-time fault of the generated code (array index out of bounds) and aborts: in a test
- * run an out-of-bounds write must never corrupt the simulated PLC silently. */
+ * run an out-of-bounds write must never corrupt the simulated PLC silently. Under a model checker
+ * (CBMC, docs/verification.md) a fault is a failed property: CBMC takes abort() for the end of a path,
+ * which would hide it. */
 static inline void __pacst_fault(const char *where, const char *what, long value) {
+#ifdef __CPROVER__
+    __CPROVER_assert(0, "pacst run-time fault: array index out of bounds");
+#endif
     fprintf(stderr, "%s: run-time error: %s (%ld)\n", where, what, value);
     abort();
 }

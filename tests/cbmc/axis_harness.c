@@ -1,0 +1,113 @@
+/* Bounded model-checking harness of FB_PAC_Axis on its 12-byte axis module (manual 2.7), on the C that pacst
+ * generates from st/, for K scans (docs/verification.md). Free in every scan: the operating status OpStatus,
+ * the controller's status word and error numbers (module bytes 0..7; the position bytes 8..11 stay 0, which
+ * keeps floating point out of the proof), ModeChange, and the programmer's Enable, Execute, Command (the jog
+ * buttons only with -DJOGS), Abort, ResetError, DisableDrive, DisableLimitSwitches, ChangeDynamics, Velocity and Acceleration
+ * (a few values each, in and out of range); per run Position (two values), IntegerMode,
+ * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Properties "P<n>"/"A<n>", reachability checks
+ * "reach: ..." (which must FAIL), as in cmd_harness.c. */
+#include "harness.h"
+
+#ifndef K
+#define K 6
+#endif
+#ifndef TMAX
+#define TMAX 2
+#endif
+
+/* The traverse bits of the control word (2.7.1): 3..7 and 12..15 the jobs, 10 and 11 the jogs. */
+#define TRAVERSE_BITS 0xFCF8u
+
+/* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
+static unsigned long long tl_from_pac, tl_to_pac;
+static int tl_op_status, tl_command;
+static BOOL tl_enable, tl_execute, tl_jog_pos, tl_jog_neg, tl_abort;
+static int tl_scan;
+
+static BOOL Owns(BYTE status) { return status == 1 || status == 9 || (status >= 30 && status <= 39); }
+
+int main(void) {
+    static FB_PAC_AXIS axis;
+    PlcOpenWatch watch = {0};
+    BYTE lastStatus = 0; /* the last operating status other than 0 */
+    int reachDone = 0, reachLibError = 0, reachPacError = 0, reachAborted = 0;
+    static const WORD velocities[] = {0, 500, 1000, 1001};
+    static const WORD accelerations[] = {0, 1000};
+
+    __CURRENT_TIME = __time_make(0, 0);
+    FB_PAC_AXIS_init__(&axis, FALSE);
+    const unsigned t = 1 + nondet_uchar() % TMAX, st = 1 + nondet_uchar() % TMAX;
+    axis.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+    axis.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
+    axis.POSITION.value = nondet_bool() ? 10.5f : 0.0f;
+    axis.INTEGERMODE.value = nondet_bool();
+    axis.DYNAMICSCHANGEABLE.value = nondet_bool();
+    watch.bound = 1000; /* the axis FB's Busy bound is not checked yet (docs/verification.md) */
+
+    for (int n = 1; n <= K; ++n) {
+        __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        for (int i = 0; i < 8; ++i) axis.FROMPAC.value.table[i] = nondet_uchar();
+        for (int i = 8; i < 12; ++i) axis.FROMPAC.value.table[i] = 0;
+        axis.OPSTATUS.value = nondet_uchar();
+        if (axis.OPSTATUS.value != 0) lastStatus = axis.OPSTATUS.value;
+        axis.MODECHANGE.value = nondet_bool();
+        const BOOL before = axis.EXECUTE.value, jogPos = axis.JOGPOSITIVE.value, jogNeg = axis.JOGNEGATIVE.value;
+        axis.ENABLE.value = nondet_bool();
+        axis.EXECUTE.value = nondet_bool();
+        const unsigned char command = nondet_uchar() % 10;
+        axis.COMMAND.value = (E_PAC_AXISCOMMAND)command;
+#ifdef JOGS /* the jogs are jobs without Execute: P3/P4 for them are not stated yet (docs/verification.md) */
+        axis.JOGPOSITIVE.value = nondet_bool();
+        axis.JOGNEGATIVE.value = nondet_bool();
+#endif
+        axis.ABORT.value = nondet_bool();
+        axis.RESETERROR.value = nondet_bool();
+        axis.DISABLEDRIVE.value = nondet_bool();
+        axis.DISABLELIMITSWITCHES.value = nondet_bool();
+        axis.CHANGEDYNAMICS.value = nondet_bool();
+        axis.VELOCITY.value = velocities[nondet_uchar() % 4];
+        axis.ACCELERATION.value = accelerations[nondet_uchar() % 2];
+        /* A job starts with an Execute edge or a jog button's edge. */
+        const BOOL edge = (axis.EXECUTE.value && !before) || (axis.JOGPOSITIVE.value && !jogPos)
+                          || (axis.JOGNEGATIVE.value && !jogNeg);
+        BYTE module[12];
+        for (int i = 0; i < 12; ++i) module[i] = axis.TOPAC.value.table[i];
+        FB_PAC_AXIS_body__(&axis);
+
+        const BYTE *out = axis.TOPAC.value.table;
+        tl_from_pac = Bytes8(axis.FROMPAC.value.table);
+        tl_op_status = axis.OPSTATUS.value;
+        tl_enable = axis.ENABLE.value;
+        tl_execute = axis.EXECUTE.value;
+        tl_command = command;
+        tl_jog_pos = axis.JOGPOSITIVE.value;
+        tl_jog_neg = axis.JOGNEGATIVE.value;
+        tl_abort = axis.ABORT.value;
+        TimelineOutputs(axis.BUSY.value, axis.DONE.value, axis.ERROR.value, axis.COMMANDABORTED.value,
+                        axis.ERRORID.value);
+        tl_to_pac = Bytes8(out);
+        tl_scan = n;
+
+        CheckPlcOpen(&watch, axis.EXECUTE.value || axis.JOGPOSITIVE.value || axis.JOGNEGATIVE.value, edge,
+                     axis.BUSY.value, axis.DONE.value, axis.ERROR.value, axis.COMMANDABORTED.value,
+                     axis.ERRORID.value);
+        /* A1: the module is the FB's in HOME POSITION and ONLINE only; in any other status it is untouched. */
+        BOOL same = TRUE;
+        for (int i = 0; i < 12; ++i) same = same && out[i] == module[i];
+        __CPROVER_assert(Owns(lastStatus) || same, "A1 the axis module written only in HOME POSITION and ONLINE");
+        /* A2: one job at a time: at most one traverse bit in the control word (bytes 0..3). */
+        const unsigned word = ((unsigned)out[0] << 24) | ((unsigned)out[1] << 16) | ((unsigned)out[2] << 8) | out[3];
+        const unsigned traverse = word & TRAVERSE_BITS;
+        __CPROVER_assert((traverse & (traverse - 1u)) == 0, "A2 at most one traverse bit on the wire");
+
+        if (axis.DONE.value) reachDone = 1;
+        if (axis.ERROR.value && axis.ERRORID.value >= 0x8000) reachLibError = 1;
+        if (axis.ERROR.value && axis.ERRORID.value < 0x8000) reachPacError = 1;
+        if (axis.COMMANDABORTED.value) reachAborted = 1;
+    }
+    __CPROVER_assert(!reachDone, "reach: Done");
+    __CPROVER_assert(!reachLibError, "reach: Error with a library code");
+    __CPROVER_assert(!reachPacError, "reach: Error with the controller's CMD error number");
+    __CPROVER_assert(!reachAborted, "reach: CommandAborted");
+    return 0;
+}

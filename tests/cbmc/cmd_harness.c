@@ -1,0 +1,269 @@
+/* Bounded model-checking harness of the CMD interface (manual 2.4): FB_PAC_CmdInterface with CALLERS
+ * FB_PAC_Cmd on one channel, on the C that pacst generates from st/, for K scans (docs/verification.md).
+ * Free: every byte the controller sends except the RECEIVE flag, which follows the protocol (below); the
+ * programmer's Execute, Code, Param and Data in every scan (SetPins); each FB's Timeout and EndTimeout (a few ms);
+ * TwoStepWrite; the call order of the callers; the bus latency (the controller reads a module 0..LAG scans
+ * old, skipping any); the controller's reading of the handshake (a new command is SEND <> RECEIVE, or a
+ * SEND changed since the last module it read) and its restart (RECEIVE back to 0 or to the last SEND).
+ * With CALLERS = 2 the second FB sends only stops (0600, 0A93, 0A9A), which may overtake.
+ * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
+ * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
+#include "harness.h"
+
+#ifndef K
+#define K 10
+#endif
+#ifndef CALLERS
+#define CALLERS 1
+#endif
+#ifndef LAG
+#define LAG 1
+#endif
+#ifndef TMAX
+#define TMAX 2 /* Timeout TMIN .. TMIN + TMAX - 1 ms, EndTimeout 1 .. TMAX ms */
+#endif
+#ifndef TMIN
+#define TMIN (LAG + 2) /* the round trip: the module out, LAG scans old at most, the reply back */
+#endif
+
+#define PARKED_CODE 0x190B
+#define SUPERSEDED 0x8007
+
+/* The modules as the PLC left them after the last LAG + 2 scans: recent[j] after scan n - 1 - j. */
+static BYTE recent[LAG + 2][8];
+
+/* The timeline of a counterexample (paccbmc prints it scan by scan): assigned at the end of every scan,
+ * tl_scan last. A caller's pins are tl_a_* and tl_b_*. */
+static unsigned long long tl_from_pac, tl_to_pac;
+static int tl_ctrl_read, tl_ctrl_took;
+static BOOL tl_a_execute, tl_a_busy, tl_a_done, tl_a_error;
+static WORD tl_a_code, tl_a_errorid;
+#if CALLERS > 1
+static BOOL tl_b_execute, tl_b_busy, tl_b_done, tl_b_error;
+static WORD tl_b_code, tl_b_errorid;
+#endif
+static int tl_scan;
+
+
+/* The controller: only its RECEIVE flag follows the protocol; everything else it says is free. */
+typedef struct {
+    BOOL receive;
+    int seen;             /* the scan whose module it read last */
+    BOOL lastSend;        /* the SEND flag of that module */
+    BOOL bySendChange;    /* its reading: a new command is a changed SEND (else SEND <> RECEIVE) */
+    int takenScan;        /* the scan it took its last command in (0: none) */
+    WORD takenCode, takenParam;
+    DWORD takenData;
+    int taken;            /* commands taken that were not the parked read */
+    BOOL processingLong;  /* it acknowledged a long command and has not ended it */
+    int downSince;        /* restarting since this scan (0: running) */
+} Controller;
+
+static WORD Word(const BYTE *m, int i) { return (WORD)((m[i] << 8) | m[i + 1]); }
+static DWORD Dword(const BYTE *m) {
+    return ((DWORD)m[0] << 24) | ((DWORD)m[1] << 16) | ((DWORD)m[2] << 8) | (DWORD)m[3];
+}
+static BOOL IsStop(WORD code) { return code == 0x0600 || code == 0x0A93 || code == 0x0A9A; }
+static BOOL IsLong(WORD code) {
+    return F_PAC_ISLONGCOMMAND(TRUE, NULL, code);
+}
+
+/* One controller cycle before scan n: read a module (latency), take a command, write the reply.
+ * A restart shows status 0 and RECEIVE 0 for at least RESTART scans, and the controller then reads no module
+ * written before the PLC parked it (a real restart lasts far longer than a bus round trip). */
+#define RESTART (LAG + 2)
+static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
+    if (c->downSince == 0 && nondet_bool()) {
+        c->downSince = n;
+        c->receive = nondet_bool() ? c->lastSend : FALSE; /* where RECEIVE starts again: 0 or the last SEND */
+        c->processingLong = FALSE;
+    }
+    if (c->downSince != 0) {
+        if (n - c->downSince < RESTART || nondet_bool()) {
+            for (int i = 0; i < 8; ++i) reply[i] = 0;
+            return;
+        }
+        /* It reads no module the PLC wrote before it could see the restart and park the module (the data in
+         * the scan after the first status 0, the flag a scan later with TwoStepWrite), and under either reading
+         * it starts from its RECEIVE: a SEND equal to it is no new command. */
+        c->seen = n - 1 - LAG - 1;
+        if (c->seen < c->downSince + 1) c->seen = c->downSince + 1;
+        c->lastSend = c->receive;
+        c->downSince = 0;
+    }
+    /* The module it reads: 0..LAG scans old, never older than the last one it read. */
+    const int lag = (int)(nondet_uchar() % (LAG + 1));
+    if (n - 1 - lag > c->seen) {
+        BYTE module[8];
+        /* Without module consistency the data may still be those of the module before the flag's. */
+        const BOOL torn = twoStep && nondet_bool();
+        for (int i = 0; i < 8; ++i) module[i] = (torn && i < 6) ? recent[lag + 1][i] : recent[lag][i];
+        const WORD word = Word(module, 6);
+        const BOOL send = (word & 0x8000) != 0;
+        const BOOL isNew = c->bySendChange ? send != c->lastSend : send != c->receive;
+        c->lastSend = send;
+        c->seen = n - 1 - lag;
+        if (isNew) {
+            const WORD code = word & 0x7FFF;
+            const BOOL parked = code == PARKED_CODE && Dword(module) == 0 && Word(module, 4) == 0;
+            /* P6: nothing but a stop of what runs reaches a controller that processes a long command. */
+            __CPROVER_assert(!c->processingLong || parked || IsStop(code),
+                             "P6 only a stop or the parked read while a command is processing");
+            c->receive = send;
+            c->takenScan = n;
+            c->takenCode = code;
+            c->takenParam = Word(module, 4);
+            c->takenData = Dword(module);
+            if (!parked) c->taken++;
+            c->processingLong = IsLong(code);
+        }
+    }
+    /* The reply: data, error number, END OF PROCESSING, COMMAND ERROR, status and PAC error free. */
+    const BYTE flags = nondet_uchar() & 0x60;
+    if (flags != 0) c->processingLong = FALSE;
+    for (int i = 0; i < 5; ++i) reply[i] = nondet_uchar();
+    reply[5] = nondet_uchar();
+    __CPROVER_assume(reply[5] != 0);
+    reply[6] = (BYTE)((c->receive ? 0x80 : 0) | flags | (nondet_uchar() & 0x1F));
+    reply[7] = nondet_uchar();
+}
+
+/* What the harness knows of one caller's job, for the properties. */
+typedef struct {
+    PlcOpenWatch plcopen;
+    int edges;      /* Execute edges that the FB took (Busy or a final output followed) */
+    int edgeScan;   /* the scan of the job's edge */
+    WORD code, param;
+    DWORD data;
+} Watch;
+
+/* The programmer's pins, every scan. Code comes from one representative of each class the FBs tell apart
+ * (a short command, the parked read's own code, a long move, each stop, a code with bit 15 set); the second
+ * caller sends only stops. Param and Data take two values each: enough to tell two commands apart. */
+static const WORD codes[] = {0x1906, 0x190B, 0x0A87, 0x0600, 0x0A93, 0x0A9A, 0x9906};
+static void SetPins(FB_PAC_CMD *fb, int who) {
+    fb->EXECUTE.value = nondet_bool();
+    const unsigned char pick = nondet_uchar();
+    fb->CODE.value = who == 1 ? codes[3 + pick % 3] : codes[pick % (sizeof codes / sizeof codes[0])];
+    fb->PARAM.value = nondet_bool();
+    fb->DATA.value = nondet_bool();
+}
+
+static void Check(const FB_PAC_CMD *fb, Watch *w, const Controller *c, int n, BOOL edge) {
+    const BOOL wasDone = w->plcopen.done;
+    if (CheckPlcOpen(&w->plcopen, fb->EXECUTE.value, edge, fb->BUSY.value, fb->DONE.value, fb->ERROR.value, FALSE,
+                     fb->ERRORID.value)) {
+        w->edges++;
+        w->edgeScan = n;
+        w->code = fb->CODE.value;
+        w->param = fb->PARAM.value;
+        w->data = fb->DATA.value;
+    }
+    if (fb->DONE.value && !wasDone) {
+        __CPROVER_assert(c->takenScan >= w->edgeScan && c->takenCode == w->code && c->takenParam == w->param
+                             && c->takenData == w->data,
+                         "P5 Done only for a command the controller took, with its own answer");
+    }
+}
+
+/* A command FB's call: the channel in, the body, the channel out (VAR_IN_OUT). */
+static void CallCmd(FB_PAC_CMD *fb, FB_PAC_CMDINTERFACE *iface) {
+    fb->CHANNEL.value = iface->CHANNEL.value;
+    FB_PAC_CMD_body__(fb);
+    iface->CHANNEL.value = fb->CHANNEL.value;
+}
+
+int main(void) {
+    static FB_PAC_CMDINTERFACE iface;
+    static FB_PAC_CMD cmd[CALLERS];
+    static Watch watch[CALLERS];
+    Controller ctrl = {0};
+    BYTE reply[8] = {0, 0, 0, 0, 0, 1, 0x20, 0}; /* home position, nothing outstanding */
+    const BOOL twoStep = nondet_bool();
+    const BOOL reversed = CALLERS > 1 && nondet_bool();
+    int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
+
+    ctrl.bySendChange = nondet_bool();
+    __CURRENT_TIME = __time_make(0, 0);
+    FB_PAC_CMDINTERFACE_init__(&iface, FALSE);
+    iface.TWOSTEPWRITE.value = twoStep;
+    for (int i = 0; i < CALLERS; ++i) {
+        const Watch none = {0};
+        watch[i] = none; /* a replay runs the harness more than once in one process */
+        FB_PAC_CMD_init__(&cmd[i], FALSE);
+        /* Timeout at least the bus round trip (TMIN): a shorter one is open defect D1 (docs/verification.md),
+         * checked with -DTMIN=1. */
+        const unsigned t = TMIN + nondet_uchar() % TMAX, e = 1 + nondet_uchar() % TMAX;
+        cmd[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+        cmd[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
+        watch[i].plcopen.bound = (int)(t + 1 + t + e); /* Timeout + two-step + Timeout + EndTimeout */
+    }
+    for (int j = 0; j < LAG + 2; ++j) {
+        for (int i = 0; i < 8; ++i) recent[j][i] = 0;
+    }
+
+    for (int n = 1; n <= K; ++n) {
+        __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        if (n > 1) ControllerStep(&ctrl, n, twoStep, reply);
+        BOOL edge[CALLERS];
+        for (int i = 0; i < CALLERS; ++i) {
+            const BOOL before = cmd[i].EXECUTE.value;
+            SetPins(&cmd[i], i);
+            edge[i] = cmd[i].EXECUTE.value && !before;
+        }
+        for (int i = 0; i < 8; ++i) iface.CHANNEL.value.FROMPAC.table[i] = reply[i];
+        FB_PAC_CMDINTERFACE_body__(&iface);
+        /* Each call with a constant index: a pointer to cmd[symbolic] would split every access in the body. */
+        if (reversed) {
+            for (int i = CALLERS - 1; i >= 0; --i) CallCmd(&cmd[i], &iface);
+        } else {
+            for (int i = 0; i < CALLERS; ++i) CallCmd(&cmd[i], &iface);
+        }
+        for (int j = LAG + 1; j > 0; --j) {
+            for (int i = 0; i < 8; ++i) recent[j][i] = recent[j - 1][i];
+        }
+        for (int i = 0; i < 8; ++i) recent[0][i] = iface.CHANNEL.value.TOPAC.table[i];
+        int edges = 0;
+        for (int i = 0; i < CALLERS; ++i) {
+            if (cmd[i].DONE.value) reachDone = 1;
+            if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
+            if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
+            if (cmd[i].ERROR.value && cmd[i].ERRORID.value == SUPERSEDED) reachSuperseded = 1;
+        }
+        tl_from_pac = Bytes8(reply);
+        tl_ctrl_read = ctrl.seen;
+        tl_ctrl_took = ctrl.takenScan;
+        tl_a_execute = cmd[0].EXECUTE.value;
+        tl_a_code = cmd[0].CODE.value;
+        tl_a_busy = cmd[0].BUSY.value;
+        tl_a_done = cmd[0].DONE.value;
+        tl_a_error = cmd[0].ERROR.value;
+        tl_a_errorid = cmd[0].ERRORID.value;
+#if CALLERS > 1
+        tl_b_execute = cmd[1].EXECUTE.value;
+        tl_b_code = cmd[1].CODE.value;
+        tl_b_busy = cmd[1].BUSY.value;
+        tl_b_done = cmd[1].DONE.value;
+        tl_b_error = cmd[1].ERROR.value;
+        tl_b_errorid = cmd[1].ERRORID.value;
+#endif
+        tl_to_pac = Bytes8(recent[0]);
+        tl_scan = n;
+        for (int i = 0; i < CALLERS; ++i) {
+            Check(&cmd[i], &watch[i], &ctrl, n, edge[i]);
+            edges += watch[i].edges;
+        }
+        /* P7: a toggle is one new command; the parked read aside, none goes out without an edge. */
+        __CPROVER_assert(ctrl.taken <= edges, "P7 no command sent without an Execute edge");
+    }
+    __CPROVER_assert(!reachDone, "reach: Done");
+    __CPROVER_assert(!reachLibError, "reach: Error with a library code");
+    __CPROVER_assert(!reachPacError, "reach: Error with a controller code");
+    __CPROVER_assert(iface.RESYNCS.value == 0, "reach: a resynchronisation");
+#if CALLERS > 1
+    __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
+#else
+    (void)reachSuperseded;
+#endif
+    return 0;
+}

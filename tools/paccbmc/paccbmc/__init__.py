@@ -1,0 +1,1 @@
+"""paccbmc: the model-checking harnesses' runner and counterexample printer (docs/verification.md)."""
