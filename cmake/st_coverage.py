@@ -3,9 +3,9 @@
 pacst's #line directives make gcov count each statement of the generated C on its .st line, so gcovr
 reports on the .st files themselves. This prints one row per POU (file), writes an HTML report of the
 annotated ST and a JSON summary, and checks the project's targets (docs/testing.md#st-coverage):
-every line of the POUs (every folder of st/ but st/types and st/gvl) executed, or listed with the reason no test can execute it, and at
-least 90 % of the branches taken. The exceptions file may give reasons for lines with a branch never
-taken as well:
+every line of the POUs (every folder of st/ but st/types and st/gvl) executed, or listed with the
+reason no test can execute it, and at least 90 % of the branches taken. The exceptions file may give
+reasons for lines with a branch never taken as well:
 
     st/cmd/FB_PAC_Cmd.st:90 | ToPac[6] := BYTE#16#99; | why no test can get there
 
