@@ -1,5 +1,6 @@
 // The translator's command line: refusals name file:line:col and leave nothing generated behind;
-// builds rewrite only the files whose text changed; check mode writes nothing.
+// builds rewrite only the files whose text changed; check mode writes nothing; order prints the declaration
+// order.
 #include <gtest/gtest.h>
 
 #include <filesystem>
