@@ -1,5 +1,5 @@
 /* Benchmark only, not part of the library: what FB_PAC_CmdInterface and one FB_PAC_Cmd do for a program
- * with a single command caller (st/fb/FB_PAC_CmdInterface.st, st/fb/FB_PAC_Cmd.st; manual 2.4), written
+ * with a single command caller (st/cmd/FB_PAC_CmdInterface.st, st/cmd/FB_PAC_Cmd.st; manual 2.4), written
  * by hand in plain C without IEC wrappers, so that the benchmark can set what the translated FBs cost per
  * scan next to it. Same pins, the same waits and timeouts, the same module written scan by scan (parked
  * with 190B between commands, brought back in step with RECEIVE), the same handshake history. What it

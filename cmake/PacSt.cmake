@@ -7,7 +7,8 @@
 # interface changed. With PAC_ST_COMPILER=matiec, iec2c compiles the ST files concatenated in the
 # order given and one C translation unit includes the POUS.c it writes; C++ code sees pacst's POUS.h
 # for the same files, and layout_check.c proves at compile time that both headers agree.
-# List SOURCES in declaration order: a type before its users, a POU before its callers.
+# List SOURCES in declaration order: a type before its users, a POU before its callers (`pacst order FILE...`
+# prints it).
 
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
 # One venv for every build tree (default, debug, ...), like the parse cache below: the packages are the

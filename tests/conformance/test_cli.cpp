@@ -1,11 +1,13 @@
 // The translator's command line: refusals name file:line:col and leave nothing generated behind;
-// builds rewrite only the files whose text changed; check mode writes nothing.
+// builds rewrite only the files whose text changed; check mode writes nothing; order prints the declaration
+// order.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "translator_runner.hpp"
 
@@ -253,6 +255,58 @@ TEST_F(TranslatorCli, ListOutsideItsRulesIsRefused) {
         EXPECT_EQ(result.exitCode, 1) << text;
         EXPECT_NE(result.output.find(list + words), std::string::npos) << text << result.output;
     }
+}
+
+// `pacst order`: the declaration order CMake gives MATIEC and pacst (st/CMakeLists.txt), from the files alone.
+std::string Lines(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const auto& line : lines) text += line + "\n";
+    return text;
+}
+
+TEST_F(TranslatorCli, OrderPutsTypesEnumerationsAndCalleesBeforeTheirUsers) {
+    // Named so that the file names' order is wrong: only the uses can put them right.
+    auto caller = Write("A_Caller.st",
+                        "FUNCTION_BLOCK A_Caller\nVAR_OUTPUT IsOn : BOOL; END_VAR\nVAR Callee : Z_Callee; END_VAR\n"
+                        "Callee();\nIsOn := Callee.Mode = MODE_ON;\nEND_FUNCTION_BLOCK\n");
+    auto values = Write("B_Values.st",  // names only enumeration values, not their type
+                        "FUNCTION_BLOCK B_Values\nVAR_OUTPUT Same : BOOL; END_VAR\nSame := MODE_ON = MODE_OFF;\n"
+                        "END_FUNCTION_BLOCK\n");
+    auto callee = Write("Z_Callee.st",
+                        "FUNCTION_BLOCK Z_Callee\nVAR_INPUT Pair : T_Pair; END_VAR\nVAR_OUTPUT Mode : E_Mode; END_VAR\n"
+                        "Mode := MODE_ON;\nEND_FUNCTION_BLOCK\n");
+    auto pair = Write("T_Pair.st", kTypes);
+    auto mode = Write("E_Mode.st", "TYPE E_Mode : (MODE_OFF, MODE_ON);\nEND_TYPE\n");
+    auto result = RunTranslator({"order", caller, values, callee, pair, mode});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(result.output, Lines({mode, values, pair, callee, caller}));
+    // The order is one the translator accepts; the given one is not.
+    EXPECT_EQ(RunTranslator({"check", mode, values, pair, callee, caller}).exitCode, 0);
+    EXPECT_EQ(RunTranslator({"check", caller, values, callee, pair, mode}).exitCode, 1);
+}
+
+TEST_F(TranslatorCli, OrderBreaksTiesByFileNameWhateverTheFoldersAndTheGivenOrder) {
+    fs::create_directories(dir_ / "a");
+    fs::create_directories(dir_ / "b");
+    auto two = Write("a/FB_Two.st", "FUNCTION_BLOCK FB_Two\nVAR_OUTPUT X : INT; END_VAR\nX := 2;\nEND_FUNCTION_BLOCK\n");
+    auto one = Write("b/FB_One.st", "FUNCTION_BLOCK FB_One\nVAR_OUTPUT X : INT; END_VAR\nX := 1;\nEND_FUNCTION_BLOCK\n");
+    auto counter = Write("FB_Counter.st", kCounter);
+    const auto expected = Lines({counter, one, two});
+    EXPECT_EQ(RunTranslator({"order", two, one, counter}).output, expected);
+    EXPECT_EQ(RunTranslator({"order", one, counter, two}).output, expected);
+}
+
+TEST_F(TranslatorCli, OrderRefusesACycleNamingItsFiles) {
+    auto ping = Write("FB_Ping.st", "FUNCTION_BLOCK FB_Ping\nVAR Other : FB_Pong; END_VAR\nOther();\nEND_FUNCTION_BLOCK\n");
+    auto pong = Write("FB_Pong.st", "FUNCTION_BLOCK FB_Pong\nVAR Other : FB_Ping; END_VAR\nOther();\nEND_FUNCTION_BLOCK\n");
+    auto counter = Write("FB_Counter.st", kCounter);
+    auto result = RunTranslator({"order", counter, pong, ping});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(ping + ":1:1: error: declaration cycle"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("FB_Ping.st (uses FB_Pong) -> FB_Pong.st (uses FB_Ping) -> FB_Ping.st"),
+              std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find(counter), std::string::npos) << "no order printed: " << result.output;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The element command FBs (st/fb/FB_PAC_Read*/Write*/ResetError, docs/fb/element_commands.md)
+// The element command FBs (st/cmd/FB_PAC_Read*/Write*/ResetError, docs/fb/element_commands.md)
 // against the simulated PA-CONTROL over the simulated bus: the frames they send (manual 5.2.4, with
 // the manual's own examples), that written values land in the controller and read values come from
 // it (REAL registers bit for bit), command errors as the PA-CONTROL's numbers, the PLCopen output

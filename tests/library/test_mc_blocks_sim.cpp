@@ -1,4 +1,4 @@
-// The PLCopen MC_ blocks (st/fb/MC_*.st, docs/fb/MC_blocks.md) on FB_PAC_McAxis over the simulated PA-CONTROL's
+// The PLCopen MC_ blocks (st/mc/MC_*.st, docs/fb/MC_blocks.md) on FB_PAC_McAxis over the simulated PA-CONTROL's
 // axis modules, scan by scan on a spread of bus timings, block by block: MC_Power, the moves in user units, abort
 // chains of several blocks on one axis, halt, stop, home, ErrorStop and MC_Reset, a lost link, and what the
 // PA-CONTROL cannot do refused with its ErrorID. The PLCopen checker runs on every Execute block in every scan

@@ -1,6 +1,6 @@
 """Command line: `pacst build` translates ST files to C; `pacst declare` writes only the declarations that
 C++ code of a MATIEC build includes, and the check that MATIEC lays them out the same; `pacst check`
-only checks."""
+only checks; `pacst order` prints files in the declaration order the others need."""
 import argparse
 import os
 import sys
@@ -8,6 +8,7 @@ import time
 
 from .compiler import Compiler
 from . import gvl, layout
+from .order import declaration_order
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_files
@@ -114,6 +115,17 @@ def _check(args):
     return 1 if failed else 0
 
 
+def _order(args):
+    try:
+        order = declaration_order(_parsed(parse_files(args.files, args.cache, args.jobs)))
+    except StErrors as e:
+        for err in e.errors:
+            print(err, file=sys.stderr)
+        return 1
+    print("\n".join(order))
+    return 0
+
+
 def _parse_options(parser):
     # The environment's default lets a test suite that starts pacst many times share one cache (and one
     # built parser) without naming it in every command.
@@ -153,5 +165,10 @@ def main(argv=None):
     check.add_argument("--separately", action="store_true", help="check each file as a program of its own")
     check.add_argument("files", nargs="+")
     check.set_defaults(run=_check)
+    order = sub.add_parser("order", help="print ST files in declaration order: a type, enumeration or POU "
+                                         "before every file that uses it, ties by file name")
+    _parse_options(order)
+    order.add_argument("files", nargs="+")
+    order.set_defaults(run=_order)
     args = parser.parse_args(argv)
     return args.run(args)

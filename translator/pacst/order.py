@@ -1,0 +1,111 @@
+"""The declaration order of a set of ST files, derived from the files themselves: MATIEC (and pacst) need
+every type, enumeration value and POU declared before the file that uses it.
+
+A file depends on every other file that declares a name it mentions (a type, an FB, a FUNCTION or an
+enumeration value: the portable subset makes these one global namespace, so a local variable cannot take
+such a name). The order is a topological sort; among the files that are ready at the same time the one
+with the smaller file name (then path) comes first, so the order does not depend on how the files were
+listed or in which folders they are.
+"""
+import dataclasses
+import heapq
+import os
+import re
+
+import lark
+
+from .common import _cls, _name
+from .errors import StError, StErrors
+
+_IDENTIFIER_TOKENS = {"IDENTIFIER", "DOTTED_IDENTIFIER"}
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def declared_names(tree):
+    """The global names `tree` declares, as spelled there: its types, their enumeration values and its
+    POUs."""
+    names = []
+    for item in tree.items:
+        if _cls(item) == "DataTypeDeclaration":
+            decl = item.declaration
+            if getattr(decl, "name", None) is not None:
+                names.append(_name(decl.name))
+            spec = getattr(getattr(decl, "init", None), "spec", None)
+            names += [_name(value.name) for value in getattr(spec, "values", None) or []]
+        elif getattr(item, "name", None) is not None:
+            names.append(_name(item.name))
+    return names
+
+
+def mentioned_names(tree):
+    """The upper-case identifiers `tree` mentions anywhere (declarations, calls, expressions); a dotted
+    or typed name (a.b, E_Type#Value) counts each of its parts."""
+    words = set()
+    stack = list(tree.items)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, lark.Token):
+            if node.type in _IDENTIFIER_TOKENS:
+                words.update(w.upper() for w in _WORD.findall(str(node)))
+        elif isinstance(node, (list, tuple)):
+            stack.extend(node)
+        elif dataclasses.is_dataclass(node):
+            stack.extend(getattr(node, f.name) for f in dataclasses.fields(node) if f.name != "meta")
+    return words
+
+
+def _sort_key(path):
+    return os.path.basename(path), path
+
+
+def _cycle(deps, left):
+    """One cycle among the files `left` (each has a dependency in `left`): [(file, name it uses)...]."""
+    start = min(left, key=_sort_key)
+    seen, path = {}, []
+    node = start
+    while node not in seen:
+        seen[node] = len(path)
+        dep, name = min(((d, n) for d, n in deps[node].items() if d in left), key=lambda dn: _sort_key(dn[0]))
+        path.append((node, name))
+        node = dep
+    return path[seen[node]:]
+
+
+def declaration_order(sources):
+    """The parsed files `sources` (SourceFiles) in declaration order; raises StErrors naming the files of a
+    cycle, whose files no order can declare before each other."""
+    # A name declared twice is the compiler's to refuse; here the first file (by sort key) owns it.
+    owner = {}  # upper name -> (path of the file that declares it, the name as spelled there)
+    for src in sorted(sources, key=lambda s: _sort_key(s.path)):
+        for name in declared_names(src.tree):
+            owner.setdefault(name.upper(), (src.path, name))
+    deps = {}  # path -> {path it depends on: a name it uses from there}
+    for src in sources:
+        uses = {}
+        for word in sorted(mentioned_names(src.tree)):
+            dep, name = owner.get(word, (src.path, None))
+            if dep != src.path:
+                uses.setdefault(dep, name)
+        deps[src.path] = uses
+    users = {src.path: [] for src in sources}
+    for path, uses in deps.items():
+        for dep in uses:
+            users[dep].append(path)
+    waiting = {path: len(uses) for path, uses in deps.items()}
+    ready = [_sort_key(path) for path, n in waiting.items() if n == 0]
+    heapq.heapify(ready)
+    order = []
+    while ready:
+        _, path = heapq.heappop(ready)
+        order.append(path)
+        for user in users[path]:
+            waiting[user] -= 1
+            if waiting[user] == 0:
+                heapq.heappush(ready, _sort_key(user))
+    left = {path for path, n in waiting.items() if n > 0}
+    if left:
+        cycle = _cycle(deps, left)
+        text = " -> ".join(f"{os.path.basename(path)} (uses {name})" for path, name in cycle)
+        raise StErrors([StError(cycle[0][0], 1, 1, f"declaration cycle, no order declares each of these files "
+                                                   f"before its users: {text} -> {os.path.basename(cycle[0][0])}")])
+    return order
