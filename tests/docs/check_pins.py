@@ -1,6 +1,6 @@
 """The pin tables of the docs say what the ST declares (docs/testing.md, "Self-contained").
 
-  check_pins.py REPO [--cache DIR]
+  check_pins.py REPO [--cache DIR] [--comments]
       DocPins.MatchTheSt. Reads every FUNCTION_BLOCK and FUNCTION of st/**/*.st with pacst's parser
       (translator/pacst, DIR its parse cache) and every pin table of README.md and docs/**/*.md: a Markdown
       table whose header starts `| pin | dir | type |`. A table belongs to the POU its page is named after
@@ -13,7 +13,9 @@
       a link to the shared table) is text. For every POU with a table, its tables together must hold each
       of its VAR_INPUT, VAR_OUTPUT and VAR_IN_OUT pins with the ST's direction and type, and no pin the ST
       lacks; a pin in two tables (the page's and a shared one) is checked in both. A POU without a pin
-      table is not checked: the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose)."""
+      table is not checked: the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose).
+      --comments checks the style rule instead: every public pin has a comment on its declaration's line
+      (file:line of each that has none). Not in CTest while the library has pins without one."""
 import argparse
 import glob
 import os
@@ -27,8 +29,9 @@ SECTIONS = {"InputDeclarations": "in", "OutputDeclarations": "out", "InputOutput
 
 
 class Pin:
-    def __init__(self, name, direction, type_, where):
+    def __init__(self, name, direction, type_, where, commented=True):
         self.name, self.direction, self.type, self.where = name, direction, type_, where
+        self.commented = commented  # ST: its declaration's line holds a comment
 
 
 def st_pous(repo, cache):
@@ -43,6 +46,7 @@ def st_pous(repo, cache):
         if isinstance(src, StError):
             raise SystemExit(f"check_pins: {src}")
         rel = os.path.relpath(src.path, repo)
+        lines = src.text.splitlines()
         for item in src.tree.items:
             if type(item).__name__ not in ("FunctionBlock", "Function"):
                 continue
@@ -51,9 +55,11 @@ def st_pous(repo, cache):
                 direction = SECTIONS.get(type(block).__name__)
                 for decl in block.items if direction else ():
                     spec = getattr(decl.init, "spec", decl.init)
+                    text = lines[decl.meta.line - 1]
                     for var in decl.variables:
                         name = str(var.name)
-                        pins[name.upper()] = Pin(name, direction, str(spec), f"{rel}:{decl.meta.line}")
+                        pins[name.upper()] = Pin(name, direction, str(spec), f"{rel}:{decl.meta.line}",
+                                                 "(*" in text or "//" in text)
             pous[str(item.name).upper()] = (str(item.name), pins)
     return pous
 
@@ -156,13 +162,25 @@ def compare(pous, docs, errors):
                               f"is in no pin table of {name} ({tables})")
 
 
+def uncommented(pous):
+    """The style rule "every public pin a one-line comment": file:line of each pin whose line has none."""
+    return [f"{pin.where}: {name}: {pin.direction} pin {pin.name} has no comment on its line"
+            for name, pins in sorted(pous.values()) for pin in pins.values() if not pin.commented]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("repo")
     parser.add_argument("--cache", help="pacst's parse cache")
+    parser.add_argument("--comments", action="store_true",
+                        help="instead: every public pin of st/ has a comment on its declaration's line")
     args = parser.parse_args(argv)
     repo = os.path.abspath(args.repo)
     pous = st_pous(repo, args.cache)
+    if args.comments:
+        missing = uncommented(pous)
+        print("\n".join(missing + [f"check_pins: {len(missing)} public pin(s) without a comment"]))
+        return 1 if missing else 0
     errors = []
     docs = documented(repo, pous, errors)
     compare(pous, docs, errors)
