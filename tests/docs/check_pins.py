@@ -12,8 +12,9 @@
       in (VAR_INPUT), out (VAR_OUTPUT) or in-out (VAR_IN_OUT); a row without a quoted name (`common pins`,
       a link to the shared table) is text. For every POU with a table, its tables together must hold each
       of its VAR_INPUT, VAR_OUTPUT and VAR_IN_OUT pins with the ST's direction and type, and no pin the ST
-      lacks; a pin in two tables (the page's and a shared one) is checked in both. A POU without a pin
-      table is not checked: the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose).
+      lacks; a pin in two tables (the page's and a shared one) is checked in both. A page named after a
+      POU needs a pin table, a marker a table right after it. A POU without a pin table is not checked:
+      the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose).
       --comments checks the style rule instead: every public pin has a comment on its declaration's line
       (file:line of each that has none). Not in CTest while the library has pins without one."""
 import argparse
@@ -68,11 +69,15 @@ def cells(line):
     return [c.strip() for c in line.strip().strip("|").split("|")]
 
 
-def doc_tables(path):
-    """(line of the header, [POU names] or None, [(line, cells)]) of every pin table of `path`."""
+def doc_tables(path, rel, errors):
+    """(line of the header, its cells, [POU names] or None, [(line, cells)]) of every pin table of `path`
+    (`rel` in messages)."""
     with open(path, encoding="utf-8") as f:
         lines = f.read().splitlines()
     for i, line in enumerate(lines):
+        if MARKER.match(line.strip()) and not (i + 1 < len(lines) and HEADER.match(lines[i + 1])):
+            errors.append(f"{rel}:{i + 1}: <!-- pins: --> must stand on the line right before "
+                          "a pin table's header, or it names nothing")
         if not HEADER.match(line):
             continue
         marker = MARKER.match(lines[i - 1].strip()) if i > 0 else None
@@ -93,7 +98,10 @@ def documented(repo, pous, errors):
     for page in pages:
         rel = os.path.relpath(page, repo)
         stem = os.path.splitext(os.path.basename(page))[0]
-        for line, header, owners, rows in doc_tables(page):
+        tables = list(doc_tables(page, rel, errors))
+        if stem.upper() in pous and not tables:
+            errors.append(f"{rel}: the page of {stem} has no pin table (| pin | dir | type | meaning |)")
+        for line, header, owners, rows in tables:
             where = f"{rel}:{line}"
             if [h.lower() for h in header[:3]] != ["pin", "dir", "type"]:
                 errors.append(f"{where}: a pin table's header starts | pin | dir | type |, not {' | '.join(header)}")
