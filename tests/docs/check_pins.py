@@ -91,7 +91,7 @@ def doc_tables(path, rel, errors):
 
 
 def documented(repo, pous, errors):
-    """{upper POU name: [(Pin, page:line)]} from every pin table of the docs."""
+    """{upper POU name: [Pin, each with its page:line]} from every pin table of the docs."""
     pages = [os.path.join(repo, "README.md")] + sorted(glob.glob(os.path.join(repo, "docs", "**", "*.md"),
                                                                   recursive=True))
     docs = {}
@@ -148,7 +148,7 @@ def row_pins(where, row, errors):
 def compare(pous, docs, errors):
     for up, pins in sorted(docs.items()):
         name, st = pous[up]
-        seen = {}
+        seen = set()
         for pin in pins:
             declared = st.get(pin.name.upper())
             if declared is None:
@@ -162,7 +162,7 @@ def compare(pous, docs, errors):
             if pin.type.upper() != declared.type.upper():
                 errors.append(f"{pin.where}: {name}: pin {pin.name} is {pin.type} here, "
                               f"{declared.type} in {declared.where}")
-            seen.setdefault(pin.name.upper(), pin.where)
+            seen.add(pin.name.upper())
         for up_pin, declared in st.items():
             if up_pin not in seen:
                 tables = ", ".join(sorted({p.where.rsplit(":", 1)[0] for p in pins}))
