@@ -6,7 +6,7 @@
 # N-th case in one process (GoogleTest's own sharding), which is what the sanitizer preset does: there a
 # process costs about 0.4 s of CPU before and after its cases (ASan's start, gcov writing its counters at
 # exit) against milliseconds for most cases, so one process per case was most of the preset's test time
-# (docs/build_time.md). Every case still runs, and a failing case is named in its shard's output.
+# (docs/measurements/build_time_log.md). Every case still runs, and a failing case is named in its shard's output.
 include_guard(GLOBAL)
 include(GoogleTest)
 
