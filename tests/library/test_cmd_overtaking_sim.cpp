@@ -279,9 +279,8 @@ TEST_P(CmdOvertaking, AfterEndTimeoutOnlyAStopReachesTheMovingAxis) {
     }
 }
 
-// The scan (counted from the restart, 1 = the first scan after it) in which FB_PAC_CmdInterface brings the
-// module back in step over a controller that restarted unseen (boot time 0: the PLC never sees status 0)
-// while the module carries SEND 1; 0 if no scan after the restart did so within `maxScans`.
+// One FB online, the module at SEND 1, and the controller restarted at once (boot time 0: it is back before
+// the PLC may have seen its status 0), RECEIVE where the reading puts it.
 struct RestartRun {
     explicit RestartRun(const SharingCase& c, bool twoStep) : online(c, twoStep, 1) {
         SharedCmdPlc& plc = online.plc;
@@ -302,6 +301,9 @@ struct RestartRun {
     std::size_t before = 0;
 };
 
+// The scan (counted from the restart, 1 = the first scan after it) in which FB_PAC_CmdInterface brings the
+// module back in step with the controller ready (status not 0); 0 if none within `maxScans`, -1 if the
+// run could not be prepared.
 int ResyncScanAfterRestart(const SharingCase& c, bool twoStep, int maxScans) {
     RestartRun run(c, twoStep);
     SharedCmdPlc& plc = run.online.plc;
@@ -318,7 +320,8 @@ int ResyncScanAfterRestart(const SharingCase& c, bool twoStep, int maxScans) {
 // 0600 edged in the scan FB_PAC_CmdInterface resynchronises, or in the scans after it, must not toggle in
 // the resync's module write (the controller would never see the parked module in step, take the parked
 // read or nothing, and answer with the RECEIVE the stop expects). Whatever the scan: the stop reaches the
-// controller exactly once and ends Done, and never Done without the controller having taken it.
+// controller exactly once and ends Done (or with the restarted controller's refusal), never Done without
+// the controller having taken it.
 TEST_P(CmdOvertaking, StopEdgedInTheResyncScanIsNeverLost) {
     int scenarios = 0;
     for (const bool twoStep : {false, true}) {
