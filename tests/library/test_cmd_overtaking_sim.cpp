@@ -366,6 +366,46 @@ TEST_P(CmdOvertaking, StopEdgedInTheResyncScanIsNeverLost) {
     }
 }
 
+// D1 (docs/verification.md), open: a Timeout shorter than the bus round trip, before the channel measured
+// any. A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the
+// interface resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for
+// a command the controller took, with its own answer. Disabled until D1 is fixed: it fails on 184 of the
+// 432 cases (latency 2 or 3, and three jittered buses), run it with --gtest_also_run_disabled_tests.
+TEST_P(CmdOvertaking, DISABLED_CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
+    const auto& t = GetParam().timing;
+    for (const bool twoStep : {false, true}) {
+        for (const std::uint16_t next : {code::kGetIntReg, code::kStop}) {
+            for (int delay = 0; delay <= 12; ++delay) {
+                SCOPED_TRACE(WriteName(twoStep) + ", then " + (next == code::kStop ? std::string("0600") : std::string("1906")) + " edged " + std::to_string(delay) +
+                             " scans after the 16#8001");
+                // No command acknowledged before: the channel has measured no round trip yet.
+                SharedCmdPlc plc(GetParam(), 2);
+                plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+                plc.Boot();
+                plc.Controller().Io().intRegisters.SetInt(5, 55);
+                plc.Set(0, code::kPutIntReg, 9, 99);
+                plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(t.PlcCycle());  // one scan: below every round trip
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                ASSERT_TRUE(ScanUntilFinal(plc, 0));
+                if (plc.Fb(0)->ERRORID.value != kLibAckTimeout) continue;  // acknowledged within a scan
+                plc.Scan(delay);
+                plc.Set(1, next, next == code::kStop ? 0 : 5);
+                plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);
+                plc.Fb(1)->EXECUTE.value = TRUE;
+                ASSERT_TRUE(ScanUntilFinal(plc, 1));
+                const std::uint16_t param = next == code::kStop ? 0 : 5;
+                if (plc.Fb(1)->DONE.value) {
+                    EXPECT_EQ(plc.Seen(next, param), 1) << "Done for a command the controller never took";
+                    if (next == code::kGetIntReg) {
+                        EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 55u);
+                    }
+                }
+                EXPECT_LE(plc.Seen(next, param), 1);
+            }
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Readings, CmdOvertaking,
                          ::testing::ValuesIn(pac::test::OnEveryReading(pac::test::StandardAndJitteredBusTimings())),
                          pac::test::SharingCaseName);
