@@ -20,6 +20,7 @@ int pac_cbmc_cmd_one_main(void);
 int pac_cbmc_cmd_two_main(void);
 int pac_cbmc_cmd_one_short_timeout_main(void);
 int pac_cbmc_cmd_one_lag2_main(void);
+int pac_cbmc_cmd_one_short_timeout_lag2_main(void);
 int pac_cbmc_ctrl_main(void);
 int pac_cbmc_axis_main(void);
 
@@ -65,6 +66,7 @@ void Replay(const Counterexample& c) {
         {"CmdInterface.TwoCallers", pac_cbmc_cmd_two_main},
         {"CmdInterface.OneCallerShortTimeout", pac_cbmc_cmd_one_short_timeout_main},
         {"CmdInterface.OneCaller.Lag2", pac_cbmc_cmd_one_lag2_main},
+        {"CmdInterface.OneCallerShortTimeout.Lag2", pac_cbmc_cmd_one_short_timeout_lag2_main},
         {"Ctrl", pac_cbmc_ctrl_main},
         {"Axis", pac_cbmc_axis_main},
     };

@@ -279,6 +279,133 @@ TEST_P(CmdOvertaking, AfterEndTimeoutOnlyAStopReachesTheMovingAxis) {
     }
 }
 
+// One FB online, the module at SEND 1, and the controller restarted at once (boot time 0: it is back before
+// the PLC may have seen its status 0), RECEIVE where the reading puts it.
+struct RestartRun {
+    explicit RestartRun(const SharingCase& c, bool twoStep) : online(c, twoStep, 1) {
+        SharedCmdPlc& plc = online.plc;
+        if (!online.online) return;
+        if (!pac::sim::CommandFrame::Decode(plc.Module()).send) {  // an odd number of commands: SEND 1
+            plc.Set(0, code::kGetIntReg, 5);
+            ready = plc.Run(0).Done();
+            plc.Fb(0)->EXECUTE.value = FALSE;
+            plc.Scan();
+        } else {
+            ready = true;
+        }
+        before = plc.CommandsSeen().size();
+        plc.Controller().PowerCycle(plc.Now());
+    }
+    OnlinePlc online;
+    bool ready = false;
+    std::size_t before = 0;
+};
+
+// The scan (counted from the restart, 1 = the first scan after it) in which FB_PAC_CmdInterface brings the
+// module back in step with the controller ready (status not 0); 0 if none within `maxScans`, -1 if the
+// run could not be prepared.
+int ResyncScanAfterRestart(const SharingCase& c, bool twoStep, int maxScans) {
+    RestartRun run(c, twoStep);
+    SharedCmdPlc& plc = run.online.plc;
+    if (!run.ready) return -1;
+    for (int scan = 1; scan <= maxScans; ++scan) {
+        const auto resyncs = plc.Channel().RESYNCS;
+        plc.Scan();
+        if (plc.Channel().RESYNCS != resyncs && plc.Plc().Bench().CmdInterface()->OPSTATUS.value != 0) return scan;
+    }
+    return 0;
+}
+
+// D3 (docs/verification.md): the controller restarts unseen and comes back out of step with the module; a
+// 0600 edged in the scan FB_PAC_CmdInterface resynchronises, or in the scans after it, must not toggle in
+// the resync's module write (the controller would never see the parked module in step, take the parked
+// read or nothing, and answer with the RECEIVE the stop expects). Whatever the scan: the stop reaches the
+// controller exactly once and ends Done (or with the restarted controller's refusal), never Done without
+// the controller having taken it.
+TEST_P(CmdOvertaking, StopEdgedInTheResyncScanIsNeverLost) {
+    int scenarios = 0;
+    for (const bool twoStep : {false, true}) {
+        const int resync = ResyncScanAfterRestart(GetParam(), twoStep, 200);
+        ASSERT_GE(resync, 0) << WriteName(twoStep) << ": not online";
+        if (resync == 0) continue;  // this reading and timing never leave the module out of step with status
+        ++scenarios;
+        for (int offset = 0; offset <= 2; ++offset) {
+            SCOPED_TRACE(WriteName(twoStep) + ", resync in scan " + std::to_string(resync) + " after the restart, "
+                         "0600 edged " + std::to_string(offset) + " scans after it");
+            RestartRun run(GetParam(), twoStep);
+            SharedCmdPlc& plc = run.online.plc;
+            ASSERT_TRUE(run.ready);
+            plc.Scan(resync - 1);
+            const auto resyncs = plc.Channel().RESYNCS;
+            plc.Scan(offset);
+            plc.Set(0, code::kStop, 0);
+            plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(5s);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            if (offset == 0) {
+                plc.Scan();
+                ASSERT_NE(plc.Channel().RESYNCS, resyncs) << "the 0600 was edged in the resync scan";
+            }
+            ASSERT_TRUE(ScanUntilFinal(plc, 0));
+            // Done, or the restarted controller's own refusal (a command error number, below 16#8000).
+            const auto& stop = plc.Fb(0);
+            EXPECT_TRUE(stop->DONE.value || stop->ERRORID.value < 0x8000u) << "ErrorID " << std::hex << stop->ERRORID.value;
+            EXPECT_EQ(plc.Seen(code::kStop, 0), 1) << "a stop is never lost (Done: "
+                                                   << static_cast<int>(plc.Fb(0)->DONE.value) << ")";
+            ExpectOnlySentCommandsOnce(plc, run.before, {{code::kStop, 0}});
+        }
+    }
+    // On the simulator the restart shows status 0 for a reply, so the interface mostly resynchronises before
+    // the controller is ready; a slow controller behind a slow bus (PA-CONTROL 10 ms, latency 3) still shows
+    // RECEIVE 0 with a status after its restart. There the scenario must arise, or this test could not fail.
+    const auto& reading = GetParam().reading;
+    if (GetParam().timing.plcMs == 1 && GetParam().timing.pacMs == 10 && GetParam().timing.latency == 3 &&
+        GetParam().timing.jitterUs == 0 &&
+        reading.newCommand == pac::sim::NewCommandRule::kSendDiffersFromReceive &&
+        reading.receiveAfterRestart == pac::sim::ReceiveAfterRestart::kZero) {
+        EXPECT_GT(scenarios, 0) << "no resync with the controller ready after the restart";
+    }
+}
+
+// D1 (docs/verification.md), open: a Timeout shorter than the bus round trip, before the channel measured
+// any. A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the
+// interface resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for
+// a command the controller took, with its own answer. Disabled until D1 is fixed: it fails on 184 of the
+// 432 cases (latency 2 or 3, and three jittered buses), run it with --gtest_also_run_disabled_tests.
+TEST_P(CmdOvertaking, DISABLED_CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
+    const auto& t = GetParam().timing;
+    for (const bool twoStep : {false, true}) {
+        for (const std::uint16_t next : {code::kGetIntReg, code::kStop}) {
+            for (int delay = 0; delay <= 12; ++delay) {
+                SCOPED_TRACE(WriteName(twoStep) + ", then " + (next == code::kStop ? std::string("0600") : std::string("1906")) + " edged " + std::to_string(delay) +
+                             " scans after the 16#8001");
+                // No command acknowledged before: the channel has measured no round trip yet.
+                SharedCmdPlc plc(GetParam(), 2);
+                plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+                plc.Boot();
+                plc.Controller().Io().intRegisters.SetInt(5, 55);
+                plc.Set(0, code::kPutIntReg, 9, 99);
+                plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(t.PlcCycle());  // one scan: below every round trip
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                ASSERT_TRUE(ScanUntilFinal(plc, 0));
+                if (plc.Fb(0)->ERRORID.value != kLibAckTimeout) continue;  // acknowledged within a scan
+                plc.Scan(delay);
+                plc.Set(1, next, next == code::kStop ? 0 : 5);
+                plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(5s);
+                plc.Fb(1)->EXECUTE.value = TRUE;
+                ASSERT_TRUE(ScanUntilFinal(plc, 1));
+                const std::uint16_t param = next == code::kStop ? 0 : 5;
+                if (plc.Fb(1)->DONE.value) {
+                    EXPECT_EQ(plc.Seen(next, param), 1) << "Done for a command the controller never took";
+                    if (next == code::kGetIntReg) {
+                        EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 55u);
+                    }
+                }
+                EXPECT_LE(plc.Seen(next, param), 1);
+            }
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Readings, CmdOvertaking,
                          ::testing::ValuesIn(pac::test::OnEveryReading(pac::test::StandardAndJitteredBusTimings())),
                          pac::test::SharingCaseName);
