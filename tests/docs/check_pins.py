@@ -15,8 +15,9 @@
       lacks; a pin in two tables (the page's and a shared one) is checked in both. A page named after a
       POU needs a pin table, a marker a table right after it. A POU without a pin table is not checked:
       the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose).
-      --comments checks the style rule instead: every public pin has a comment on its declaration's line
-      (file:line of each that has none). Not in CTest while the library has pins without one."""
+      --comments checks the style rule instead (DocPins.EveryPinHasAComment): every public pin has a comment
+      (* ... *) with some text in it on its declaration's line; the run lists file:line of each that has none
+      and fails. A // comment does not count (pacst refuses one: not in the portable subset)."""
 import argparse
 import glob
 import os
@@ -26,6 +27,7 @@ import sys
 HEADER = re.compile(r"^\|\s*pin\s*\|", re.I)
 MARKER = re.compile(r"^<!--\s*pins:\s*(.+?)\s*-->$")
 QUOTED = re.compile(r"`([A-Za-z_]\w*)`")
+COMMENT = re.compile(r"\(\*\s*[^\s*]")  # a (* *) comment with some text
 SECTIONS = {"InputDeclarations": "in", "OutputDeclarations": "out", "InputOutputDeclarations": "in-out"}
 
 
@@ -60,7 +62,7 @@ def st_pous(repo, cache):
                     for var in decl.variables:
                         name = str(var.name)
                         pins[name.upper()] = Pin(name, direction, str(spec), f"{rel}:{decl.meta.line}",
-                                                 "(*" in text or "//" in text)
+                                                 bool(COMMENT.search(text)))
             pous[str(item.name).upper()] = (str(item.name), pins)
     return pous
 
