@@ -24,6 +24,7 @@ int pac_cbmc_cmd_one_short_timeout_lag2_main(void);
 int pac_cbmc_ctrl_main(void);
 int pac_cbmc_axis_main(void);
 int pac_cbmc_automatic_main(void);
+int pac_cbmc_mc_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -71,6 +72,7 @@ void Replay(const Counterexample& c) {
         {"Ctrl", pac_cbmc_ctrl_main},
         {"Axis", pac_cbmc_axis_main},
         {"AutomaticModule", pac_cbmc_automatic_main},
+        {"Mc", pac_cbmc_mc_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);
