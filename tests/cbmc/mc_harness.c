@@ -4,7 +4,8 @@
  * the position bytes stay 0), ModeChange, MC_Power.Enable, both blocks' Execute, and the order in which the
  * two blocks are called (FB_PAC_McAxis last); per run IntegerMode, Timeout and StopTimeout (1..TMAX ms).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
- * reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
+ * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
+ * cmd_harness.c. */
 #include "harness.h"
 
 #ifndef K
@@ -40,15 +41,9 @@ static void CallMove(void) {
     ref = move.AXIS.value;
 }
 
-/* MC1..MC3 for one block's outputs. */
-static void CheckBlock(BOOL busy, BOOL done, BOOL error, BOOL aborted, BOOL active, WORD errorId) {
-    __CPROVER_assert(busy + done + error + aborted <= 1,
-                     "MC1 Busy, Done, Error and CommandAborted mutually exclusive");
-    __CPROVER_assert(!active || busy, "MC2 Active only with Busy");
-    __CPROVER_assert(!error || errorId != 0, "MC3 Error implies ErrorID <> 0");
-}
-
 int main(void) {
+    PlcOpenWatch stopWatch = {0}, moveWatch = {0};
+    stopWatch.bound = moveWatch.bound = 1000; /* no Busy bound for the MC blocks yet (docs/verification.md) */
     BOOL stopHeld = FALSE; /* the stop's edge was accepted and its Execute has stayed TRUE since */
     int reachStopDone = 0, reachHeld = 0, reachMoveBusy = 0, reachMoveAborted = 0, reachReleased = 0;
 
@@ -115,11 +110,14 @@ int main(void) {
         tl_to_pac = Bytes8(mcAxis.TOPAC.value.table);
         tl_scan = n;
 
-        CheckBlock(stop.BUSY.value, stop.DONE.value, stop.ERROR.value, stop.COMMANDABORTED.value, stop.BUSY.value,
-                   stop.ERRORID.value);
-        CheckBlock(move.BUSY.value, move.DONE.value, move.ERROR.value, move.COMMANDABORTED.value, move.ACTIVE.value,
-                   move.ERRORID.value);
-        __CPROVER_assert(!power.ERROR.value || power.ERRORID.value != 0, "MC3 Error implies ErrorID <> 0");
+        /* P1..P4 for each block (plcopen_props.h): Busy, Done, Error and CommandAborted exclusive, Error with
+         * an ErrorID, no output without an edge, the final outputs held while Execute stays TRUE. */
+        CheckPlcOpen(&stopWatch, stop.EXECUTE.value, stopEdge, stop.BUSY.value, stop.DONE.value, stop.ERROR.value,
+                     stop.COMMANDABORTED.value, stop.ERRORID.value);
+        CheckPlcOpen(&moveWatch, move.EXECUTE.value, moveEdge, move.BUSY.value, move.DONE.value, move.ERROR.value,
+                     move.COMMANDABORTED.value, move.ERRORID.value);
+        __CPROVER_assert(!move.ACTIVE.value || move.BUSY.value, "MC2 Active only with Busy");
+        __CPROVER_assert(!power.ERROR.value || power.ERRORID.value != 0, "MC3 MC_Power's Error implies ErrorID <> 0");
 
         /* MC4: a stop once accepted is never lost: while its Execute stays TRUE (and it has not failed with an
          * Error) the axis is in Stopping, or ErrorStop / Disabled, and no move is accepted. */
