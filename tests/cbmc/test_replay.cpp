@@ -23,6 +23,8 @@ int pac_cbmc_cmd_one_lag2_main(void);
 int pac_cbmc_cmd_one_short_timeout_lag2_main(void);
 int pac_cbmc_ctrl_main(void);
 int pac_cbmc_axis_main(void);
+int pac_cbmc_automatic_main(void);
+int pac_cbmc_mc_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -69,6 +71,8 @@ void Replay(const Counterexample& c) {
         {"CmdInterface.OneCallerShortTimeout.Lag2", pac_cbmc_cmd_one_short_timeout_lag2_main},
         {"Ctrl", pac_cbmc_ctrl_main},
         {"Axis", pac_cbmc_axis_main},
+        {"AutomaticModule", pac_cbmc_automatic_main},
+        {"Mc", pac_cbmc_mc_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);
