@@ -366,12 +366,11 @@ TEST_P(CmdOvertaking, StopEdgedInTheResyncScanIsNeverLost) {
     }
 }
 
-// D1 (docs/verification.md), open: a Timeout shorter than the bus round trip, before the channel measured
-// any. A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the
-// interface resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for
-// a command the controller took, with its own answer. Disabled until D1 is fixed: it fails on 184 of the
-// 432 cases (latency 2 or 3, and three jittered buses), run it with --gtest_also_run_disabled_tests.
-TEST_P(CmdOvertaking, DISABLED_CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
+// D1 (docs/verification.md): a Timeout shorter than the bus round trip, before the channel measured any.
+// A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the interface
+// resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for a
+// command the controller took, with its own answer.
+TEST_P(CmdOvertaking, CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
     const auto& t = GetParam().timing;
     for (const bool twoStep : {false, true}) {
         for (const std::uint16_t next : {code::kGetIntReg, code::kStop}) {
