@@ -64,6 +64,17 @@ void ExpectOnlySentCommandsOnce(SharedCmdPlc& plc, std::size_t from,
     }
 }
 
+// Where an acknowledgement gets lost: the replies freeze (the controller took the command), or the module
+// does (the controller does not read it). Freeze() freezes that link from now on and returns it.
+std::string FreezeName(bool repliesFrozen) {
+    return repliesFrozen ? ", the replies freeze" : ", the module freezes";
+}
+pac::sim::Link& Freeze(SharedCmdPlc& plc, bool repliesFrozen) {
+    auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
+    link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    return link;
+}
+
 // Whether `condition` held in the scan the controller first recognised `code` with `param`: Check() after
 // every scan.
 class AtFirstSight {
@@ -192,7 +203,7 @@ TEST_P(CmdOvertaking, TwoCommandsEdgedTogetherEachEndWithItsOwnAnswer) {
 TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
     for (const bool twoStep : {false, true}) {
         for (const bool repliesFrozen : {true, false}) {
-            SCOPED_TRACE(WriteName(twoStep) + (repliesFrozen ? ", the replies freeze" : ", the module freezes"));
+            SCOPED_TRACE(WriteName(twoStep) + FreezeName(repliesFrozen));
             OnlinePlc online(GetParam(), twoStep, 3);
             SharedCmdPlc& plc = online.plc;
             ASSERT_TRUE(online.online);
@@ -207,8 +218,7 @@ TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
             plc.Scan(2);
             ASSERT_TRUE(plc.Fb(0)->BUSY.value && motion.HomingActive()) << "the reference run processes";
 
-            auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
-            link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+            auto& link = Freeze(plc, repliesFrozen);
             plc.Set(1, code::kStopAxis, 1);
             plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(30ms);
             plc.Fb(1)->EXECUTE.value = TRUE;
@@ -414,13 +424,12 @@ TEST_P(CmdOvertaking, CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) 
 TEST_P(CmdOvertaking, WriteWhoseAcknowledgementIsLostHoldsTheInterfaceUntilItShows) {
     for (const bool twoStep : {false, true}) {
         for (const bool repliesFrozen : {true, false}) {
-            SCOPED_TRACE(WriteName(twoStep) + (repliesFrozen ? ", the replies freeze" : ", the module freezes"));
+            SCOPED_TRACE(WriteName(twoStep) + FreezeName(repliesFrozen));
             OnlinePlc online(GetParam(), twoStep, 3);
             SharedCmdPlc& plc = online.plc;
             ASSERT_TRUE(online.online);
             plc.Controller().Io().intRegisters.SetInt(5, 55);
-            auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
-            link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+            auto& link = Freeze(plc, repliesFrozen);
             plc.Set(0, code::kPutIntReg, 9, 99);
             plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(30ms);
             plc.Fb(0)->EXECUTE.value = TRUE;
