@@ -191,8 +191,8 @@ int main(void) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
         FB_PAC_CMD_init__(&cmd[i], FALSE);
-        /* Timeout at least the bus round trip (TMIN): a shorter one is open defect D1 (docs/verification.md),
-         * checked with -DTMIN=1. */
+        /* Timeout at least the bus round trip (TMIN); a shorter one (D1, docs/verification.md) is checked
+         * with -DTMIN=1. */
         const unsigned t = TMIN + nondet_uchar() % TMAX, e = 1 + nondet_uchar() % TMAX;
         cmd[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
         cmd[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);

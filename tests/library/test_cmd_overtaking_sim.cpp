@@ -34,6 +34,7 @@ const std::uint32_t kLibAckTimeout = kGvl["PAC_LIB_ERR_ACK_TIMEOUT"];
 const std::uint32_t kLibEndTimeout = kGvl["PAC_LIB_ERR_END_TIMEOUT"];
 const std::uint32_t kLibSuperseded = kGvl["PAC_LIB_ERR_SUPERSEDED"];
 const std::uint32_t kLibOvertaken = kGvl["PAC_LIB_ERR_OVERTAKEN"];
+const std::uint32_t kLibInterfaceBusy = kGvl["PAC_LIB_ERR_INTERFACE_BUSY"];
 
 constexpr float kTarget = 400.0F;
 
@@ -61,6 +62,17 @@ void ExpectOnlySentCommandsOnce(SharedCmdPlc& plc, std::size_t from,
         EXPECT_TRUE(sent.count({c.code, c.parameter}) == 1) << "command " << std::hex << c.code << " nobody sent";
         EXPECT_TRUE(seen.insert({c.code, c.parameter}).second) << "command " << std::hex << c.code << " twice";
     }
+}
+
+// Where an acknowledgement gets lost: the replies freeze (the controller took the command), or the module
+// does (the controller does not read it). Freeze() freezes that link from now on and returns it.
+std::string FreezeName(bool repliesFrozen) {
+    return repliesFrozen ? ", the replies freeze" : ", the module freezes";
+}
+pac::sim::Link& Freeze(SharedCmdPlc& plc, bool repliesFrozen) {
+    auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
+    link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    return link;
 }
 
 // Whether `condition` held in the scan the controller first recognised `code` with `param`: Check() after
@@ -191,7 +203,7 @@ TEST_P(CmdOvertaking, TwoCommandsEdgedTogetherEachEndWithItsOwnAnswer) {
 TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
     for (const bool twoStep : {false, true}) {
         for (const bool repliesFrozen : {true, false}) {
-            SCOPED_TRACE(WriteName(twoStep) + (repliesFrozen ? ", the replies freeze" : ", the module freezes"));
+            SCOPED_TRACE(WriteName(twoStep) + FreezeName(repliesFrozen));
             OnlinePlc online(GetParam(), twoStep, 3);
             SharedCmdPlc& plc = online.plc;
             ASSERT_TRUE(online.online);
@@ -206,8 +218,7 @@ TEST_P(CmdOvertaking, StopWhoseAcknowledgementIsLostKeepsTheInterface) {
             plc.Scan(2);
             ASSERT_TRUE(plc.Fb(0)->BUSY.value && motion.HomingActive()) << "the reference run processes";
 
-            auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
-            link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+            auto& link = Freeze(plc, repliesFrozen);
             plc.Set(1, code::kStopAxis, 1);
             plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(30ms);
             plc.Fb(1)->EXECUTE.value = TRUE;
@@ -366,12 +377,11 @@ TEST_P(CmdOvertaking, StopEdgedInTheResyncScanIsNeverLost) {
     }
 }
 
-// D1 (docs/verification.md), open: a Timeout shorter than the bus round trip, before the channel measured
-// any. A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the
-// interface resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for
-// a command the controller took, with its own answer. Disabled until D1 is fixed: it fails on 184 of the
-// 432 cases (latency 2 or 3, and three jittered buses), run it with --gtest_also_run_disabled_tests.
-TEST_P(CmdOvertaking, DISABLED_CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
+// D1 (docs/verification.md): a Timeout shorter than the bus round trip, before the channel measured any.
+// A write ends 16#8001 before its acknowledgement can arrive; the acknowledgement comes late, the interface
+// resynchronises, and a read or a stop edged 0..12 scans after the 16#8001 must end Done only for a
+// command the controller took, with its own answer.
+TEST_P(CmdOvertaking, CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) {
     const auto& t = GetParam().timing;
     for (const bool twoStep : {false, true}) {
         for (const std::uint16_t next : {code::kGetIntReg, code::kStop}) {
@@ -402,6 +412,52 @@ TEST_P(CmdOvertaking, DISABLED_CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwn
                 }
                 EXPECT_LE(plc.Seen(next, param), 1);
             }
+        }
+    }
+}
+
+// D1, the hold: a write whose acknowledgement is not seen within its Timeout (16#8001: the replies freeze,
+// or the controller does not read the module) holds the interface until the reply shows its SEND flag. A
+// read edged meanwhile is never sent (16#8006); a read edged once the link is back ends Done with its own
+// answer. With the one-step write a controller that never read the write takes the read parked under its
+// SEND flag instead, never the write later.
+TEST_P(CmdOvertaking, WriteWhoseAcknowledgementIsLostHoldsTheInterfaceUntilItShows) {
+    for (const bool twoStep : {false, true}) {
+        for (const bool repliesFrozen : {true, false}) {
+            SCOPED_TRACE(WriteName(twoStep) + FreezeName(repliesFrozen));
+            OnlinePlc online(GetParam(), twoStep, 3);
+            SharedCmdPlc& plc = online.plc;
+            ASSERT_TRUE(online.online);
+            plc.Controller().Io().intRegisters.SetInt(5, 55);
+            auto& link = Freeze(plc, repliesFrozen);
+            plc.Set(0, code::kPutIntReg, 9, 99);
+            plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(30ms);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            ASSERT_TRUE(ScanUntilFinal(plc, 0));
+            EXPECT_EQ(plc.Fb(0)->ERRORID.value, kLibAckTimeout) << "no acknowledgement seen within 30 ms";
+            plc.Set(1, code::kGetIntReg, 5);
+            plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(30ms);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            ASSERT_TRUE(ScanUntilFinal(plc, 1));
+            EXPECT_EQ(plc.Fb(1)->ERRORID.value, kLibInterfaceBusy) << "sent into an interface out of step";
+            link.SetFault(plc.Now(), pac::sim::LinkFault::kNone);
+
+            plc.Set(2, code::kGetIntReg, 6);
+            plc.Controller().Io().intRegisters.SetInt(6, 66);
+            plc.Fb(2)->TIMEOUT.value = pac::ToIecTime(10s);
+            plc.Fb(2)->EXECUTE.value = TRUE;
+            ASSERT_TRUE(ScanUntilFinal(plc, 2));
+            EXPECT_TRUE(plc.Fb(2)->DONE.value) << "ErrorID " << std::hex << plc.Fb(2)->ERRORID.value;
+            EXPECT_EQ(plc.Fb(2)->ACKDATA.value, 66u);
+            EXPECT_EQ(plc.Seen(code::kGetIntReg, 6), 1);
+            EXPECT_EQ(plc.Seen(code::kGetIntReg, 5), 0) << "a command that ended 16#8006 was sent";
+            if (repliesFrozen || twoStep) {
+                EXPECT_EQ(plc.Seen(code::kPutIntReg, 9), 1) << "the controller read the write before the freeze";
+            } else {
+                EXPECT_EQ(plc.Seen(code::kPutIntReg, 9), 0) << "the write went out after its FB gave it up";
+            }
+            ExpectOnlySentCommandsOnce(plc, online.before,
+                                       {{code::kPutIntReg, 9}, {code::kGetIntReg, 6}});
         }
     }
 }
