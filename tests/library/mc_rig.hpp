@@ -15,10 +15,10 @@
 
 #include <gtest/gtest.h>
 
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "plcopen_checker.hpp"
 
@@ -64,11 +64,11 @@ inline PlcOpenOutputs VelocityOutputsOf(const FbInstance<MC_MOVEVELOCITY>& fb) {
 // in one scan run in either order.
 enum class McCallOrder { kAsListed, kReversed };
 
-class McBench {
+class McRig {
 public:
-    McBench(const BusTiming& timing, int axes, pac::sim::PaControlConfig config = {},
+    McRig(const BusTiming& timing, int axes, pac::sim::PaControlConfig config = {},
             McCallOrder order = McCallOrder::kAsListed)
-        : timing_(timing), layout_{true, axes}, plc_(PlcBenchTimingOf(timing), std::move(config), layout_) {
+        : timing_(timing), layout_{true, axes}, plc_(RigTimingOf(timing), std::move(config), layout_) {
         auto& pac = plc_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
                   pac::sim::ParameterTable::SetResult::kOk);
@@ -146,7 +146,7 @@ public:
     float Position(int k) { return Ref(k).ACTUALPOSITION; }
     FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::sim::PaControl& Pac() { return plc_.Controller(); }
-    PacPlcBench& Plc() { return plc_; }
+    PacRig& Plc() { return plc_; }
     std::chrono::nanoseconds Now() const { return plc_.Now(); }
     std::int64_t ScanCount() { return plc_.Task().ScanCount(); }
     // A 16-bit field of the axis module the PLC sends (bytes 4..5 acceleration, 6..7 speed; big-endian).
@@ -197,7 +197,7 @@ private:
 
     BusTiming timing_;
     pac::sim::ModuleLayout layout_;
-    PacPlcBench plc_;
+    PacRig plc_;
     FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<FbInstance<FB_PAC_MCAXIS>>> cyclic_;
     std::vector<std::unique_ptr<McBlocks>> blocks_;

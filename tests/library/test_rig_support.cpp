@@ -1,6 +1,6 @@
-// The test bench of tests/support itself: the protocol windows against timings worked out by hand, the
+// The test rig of tests/support itself: the protocol windows against timings worked out by hand, the
 // PLCopen checker against scan sequences that break each rule (it must report them) and sequences that
-// keep them (it must stay silent), and RunToFinal's count and bound. A bench that cannot fail would
+// keep them (it must stay silent), and RunToFinal's count and bound. A rig that cannot fail would
 // let every library test pass.
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>

@@ -49,7 +49,7 @@ std::vector<std::uint8_t> TakeAll(Ring& ring) {
 }
 }  // namespace com_ring
 
-struct SerialBenchTiming {
+struct SerialRigTiming {
     std::chrono::nanoseconds plcCycle{std::chrono::milliseconds(1)};
     std::chrono::nanoseconds pacCycle{std::chrono::milliseconds(10)};
     std::chrono::nanoseconds pacPhase{0};  // the controller's first cycle
@@ -58,9 +58,9 @@ struct SerialBenchTiming {
     std::uint64_t seed = 1;
 };
 
-class SerialPlcBench {
+class SerialRig {
 public:
-    explicit SerialPlcBench(SerialBenchTiming timing = {}, pac::sim::PaControlConfig config = {},
+    explicit SerialRig(SerialRigTiming timing = {}, pac::sim::PaControlConfig config = {},
                             pac::sim::SerialPortConfig port = {});
 
     // Registers `fb` with its TxBuffer / RxBuffer on the line, after the programs registered before.
@@ -85,12 +85,12 @@ public:
     pac::sim::SerialLine& Line() { return line_; }
     pac::PlcTask& Task() { return task_; }
     std::chrono::nanoseconds Now() const { return clock_.Now(); }
-    const SerialBenchTiming& Timing() const { return timing_; }
+    const SerialRigTiming& Timing() const { return timing_; }
     // Bytes the driver could not put into a full receive buffer.
     std::uint64_t Overruns() const { return overruns_; }
 
 private:
-    SerialBenchTiming timing_;
+    SerialRigTiming timing_;
     pac::SimClock clock_;
     pac::PlcTask task_;
     pac::sim::Bus bus_;

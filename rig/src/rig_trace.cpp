@@ -1,4 +1,4 @@
-#include "pac/bench_trace.hpp"
+#include "pac/rig_trace.hpp"
 
 #include <string>
 
@@ -14,12 +14,12 @@ std::uint64_t Bytes(const pac::sim::ProcessImage& image, std::size_t offset, std
 
 }  // namespace
 
-void TraceBusModules(TraceRecorder& recorder, const PacPlcBench& bench) {
+void TraceBusModules(TraceRecorder& recorder, const PacRig& rig) {
     using pac::sim::ModuleLayout;
-    const ModuleLayout& layout = bench.Layout();
-    auto field = [&recorder, &bench](const std::string& path, bool toPac, std::size_t offset, std::size_t bytes) {
-        recorder.AddBits(path, static_cast<int>(8 * bytes), [&bench, toPac, offset, bytes] {
-            return Bytes(toPac ? bench.ToPac() : bench.FromPac(), offset, bytes);
+    const ModuleLayout& layout = rig.Layout();
+    auto field = [&recorder, &rig](const std::string& path, bool toPac, std::size_t offset, std::size_t bytes) {
+        recorder.AddBits(path, static_cast<int>(8 * bytes), [&rig, toPac, offset, bytes] {
+            return Bytes(toPac ? rig.ToPac() : rig.FromPac(), offset, bytes);
         });
     };
     field("cmd.ToPac", true, ModuleLayout::kCmdOffset, 8);

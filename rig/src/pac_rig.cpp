@@ -1,10 +1,10 @@
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 
 namespace pac {
 
 namespace {
 
-pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::ModuleLayout& layout) {
+pac::sim::BusConfig BusConfigFor(const RigTiming& t, const pac::sim::ModuleLayout& layout) {
     pac::sim::BusConfig config;
     config.layout = layout;
     const auto latency = t.plcCycle * t.latencyCycles;
@@ -13,7 +13,7 @@ pac::sim::BusConfig BusConfigFor(const PlcBenchTiming& t, const pac::sim::Module
     return config;
 }
 
-pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const PlcBenchTiming& t) {
+pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const RigTiming& t) {
     config.bootTime = t.bootTime;
     config.homeCycle = t.pacCycle;
     config.activeCycle = t.pacCycle;
@@ -22,7 +22,7 @@ pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const Plc
 
 }  // namespace
 
-PacPlcBench::PacPlcBench(PlcBenchTiming timing, pac::sim::PaControlConfig config, pac::sim::ModuleLayout layout)
+PacRig::PacRig(RigTiming timing, pac::sim::PaControlConfig config, pac::sim::ModuleLayout layout)
     : timing_(timing),
       task_(clock_, timing.plcCycle),
       bus_(BusConfigFor(timing, layout)),
@@ -34,12 +34,12 @@ PacPlcBench::PacPlcBench(PlcBenchTiming timing, pac::sim::PaControlConfig config
     task_.AddProgram([this] { fromPac_ = bus_.ReadFromPac(clock_.Now()); });
 }
 
-pac::FbInstance<FB_PAC_CMDINTERFACE>& PacPlcBench::CmdInterface() {
+pac::FbInstance<FB_PAC_CMDINTERFACE>& PacRig::CmdInterface() {
     if (!cmdInterface_) cmdInterface_ = std::make_unique<pac::FbInstance<FB_PAC_CMDINTERFACE>>(PAC_FB(FB_PAC_CMDINTERFACE));
     return *cmdInterface_;
 }
 
-void PacPlcBench::RegisterCmdInterface() {
+void PacRig::RegisterCmdInterface() {
     if (cmdInterfaceRegistered_) return;
     RequireModule(pac::sim::ModuleLayout::kCmdOffset, 8);
     cmdInterfaceRegistered_ = true;
@@ -51,14 +51,14 @@ void PacPlcBench::RegisterCmdInterface() {
     });
 }
 
-void PacPlcBench::CopyChannelToModule() {
+void PacRig::CopyChannelToModule() {
     const ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
     for (std::size_t i = 0; i < 8; ++i) toPac_[pac::sim::ModuleLayout::kCmdOffset + i] = channel.TOPAC.table[i];
 }
 
-void PacPlcBench::CallRaw8(std::size_t offset,
+void PacRig::CallRaw8(std::size_t offset,
                            std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
-    if (!program) throw std::invalid_argument("PacPlcBench::CallRaw8: empty program");
+    if (!program) throw std::invalid_argument("PacRig::CallRaw8: empty program");
     RequireModule(offset, 8);
     task_.AddProgram([this, offset, program] {
         pac::sim::Image8 out = toPac_.Module8(offset);
@@ -67,15 +67,15 @@ void PacPlcBench::CallRaw8(std::size_t offset,
     });
 }
 
-void PacPlcBench::Start() {
+void PacRig::Start() {
     task_.AddProgram([this] { bus_.WriteToPac(clock_.Now(), toPac_); });
 }
 
-void PacPlcBench::Scan(int n) {
+void PacRig::Scan(int n) {
     for (int i = 0; i < n; ++i) task_.Scan();
 }
 
-int PacPlcBench::ScanUntil(const std::function<bool()>& predicate, int maxScans) {
+int PacRig::ScanUntil(const std::function<bool()>& predicate, int maxScans) {
     for (int scans = 1; scans <= maxScans; ++scans) {
         task_.Scan();
         if (predicate()) return scans;
@@ -83,7 +83,7 @@ int PacPlcBench::ScanUntil(const std::function<bool()>& predicate, int maxScans)
     return -1;
 }
 
-int PacPlcBench::ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
+int PacRig::ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
     const auto latency = timing_.plcCycle * timing_.latencyCycles;
     const auto arrival = edgeTime + latency;
     auto pacTime = (arrival / timing_.pacCycle) * timing_.pacCycle;
@@ -93,8 +93,8 @@ int PacPlcBench::ProtocolMinimumScans(std::chrono::nanoseconds edgeTime) const {
     return static_cast<int>((scanTime - edgeTime) / timing_.plcCycle);
 }
 
-void PacPlcBench::RequireModule(std::size_t offset, std::size_t size) const {
-    if (offset + size > toPac_.Size()) throw std::out_of_range("PacPlcBench: module not in the bus layout");
+void PacRig::RequireModule(std::size_t offset, std::size_t size) const {
+    if (offset + size > toPac_.Size()) throw std::out_of_range("PacRig: module not in the bus layout");
 }
 
 }  // namespace pac

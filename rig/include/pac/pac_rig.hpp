@@ -2,7 +2,7 @@
 // own cycle. Tests, benchmarks and the scenario program add their function blocks with Call(fb) (CMD
 // module), CallCtrl(fb) (CTRL module) or CallAxis(fb, k) (axis module k), which copy the module's
 // images in and out around the FB's body exactly as a PLC's I/O image would. Command FBs share the CMD
-// interface through one ST_PAC_CmdChannel: before the first of them the bench calls an
+// interface through one ST_PAC_CmdChannel: before the first of them the rig calls an
 // FB_PAC_CmdInterface on it in every scan, as a PLC program must. CallRaw8 adds a hand-written master
 // program on an 8-byte module. The bus carries the modules of `layout` (default: the CMD module alone).
 #pragma once
@@ -30,7 +30,7 @@
 
 namespace pac {
 
-struct PlcBenchTiming {
+struct RigTiming {
     std::chrono::nanoseconds plcCycle{std::chrono::milliseconds(1)};
     std::chrono::nanoseconds pacCycle{std::chrono::milliseconds(10)};
     int latencyCycles = 0;  // bus latency each way, in PLC cycles
@@ -39,14 +39,14 @@ struct PlcBenchTiming {
     std::chrono::nanoseconds bootTime{0};
 };
 
-class PacPlcBench {
+class PacRig {
 public:
-    explicit PacPlcBench(PlcBenchTiming timing = {}, pac::sim::PaControlConfig config = {},
+    explicit PacRig(RigTiming timing = {}, pac::sim::PaControlConfig config = {},
                          pac::sim::ModuleLayout layout = {});
 
     // Registers `fb` as a program on the CMD interface: inputs set by the caller before a scan are
     // that scan's inputs. Call in the order the FBs should run; then call Start(). A command FB (one with
-    // a Channel) runs on the bench's channel, after its FB_PAC_CmdInterface; an FB with ToPac/FromPac
+    // a Channel) runs on the rig's channel, after its FB_PAC_CmdInterface; an FB with ToPac/FromPac
     // (a hand-written master) on the module itself.
     template <class Fb>
     void Call(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
@@ -57,7 +57,7 @@ public:
     pac::FbInstance<FB_PAC_CMDINTERFACE>& CmdInterface();
     // The channel as the last program of the scan left it.
     const ST_PAC_CMDCHANNEL& Channel() { return CmdInterface()->CHANNEL.value; }
-    // Whether the bench calls FB_PAC_CmdInterface in a scan (a test of what happens without it).
+    // Whether the rig calls FB_PAC_CmdInterface in a scan (a test of what happens without it).
     void SetCmdInterfaceCalled(bool called) { cmdInterfaceCalled_ = called; }
     // The CTRL module (the layout must have it).
     template <class Fb>
@@ -96,7 +96,7 @@ public:
     std::chrono::nanoseconds Now() const { return clock_.Now(); }
     const pac::sim::ProcessImage& ToPac() const { return toPac_; }
     const pac::sim::ProcessImage& FromPac() const { return fromPac_; }
-    const PlcBenchTiming& Timing() const { return timing_; }
+    const RigTiming& Timing() const { return timing_; }
     const pac::sim::ModuleLayout& Layout() const { return bus_.Layout(); }
 
 private:
@@ -139,7 +139,7 @@ private:
     // std::out_of_range unless the bus layout has `size` bytes at `offset`.
     void RequireModule(std::size_t offset, std::size_t size) const;
 
-    PlcBenchTiming timing_;
+    RigTiming timing_;
     pac::SimClock clock_;
     pac::PlcTask task_;
     pac::sim::Bus bus_;

@@ -1,16 +1,16 @@
-// A BusTiming as the timing of a PacPlcBench (the PLC wired to the simulated PA-CONTROL).
+// A BusTiming as the timing of a PacRig (the PLC wired to the simulated PA-CONTROL).
 #pragma once
 
 #include <chrono>
 
 #include "bus_timing.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 
 namespace pac::test {
 
-inline PlcBenchTiming PlcBenchTimingOf(const BusTiming& t,
+inline RigTiming RigTimingOf(const BusTiming& t,
                                        std::chrono::nanoseconds bootTime = std::chrono::nanoseconds(0)) {
-    PlcBenchTiming timing;
+    RigTiming timing;
     timing.plcCycle = t.PlcCycle();
     timing.pacCycle = t.PacCycle();
     timing.latencyCycles = t.latency;

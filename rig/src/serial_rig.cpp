@@ -1,5 +1,5 @@
-// A PLC and a simulated PA-CONTROL on an RS232 line (see serial_plc_bench.hpp).
-#include "pac/serial_plc_bench.hpp"
+// A PLC and a simulated PA-CONTROL on an RS232 line (see serial_rig.hpp).
+#include "pac/serial_rig.hpp"
 
 #include <utility>
 
@@ -7,7 +7,7 @@ namespace pac {
 
 namespace {
 
-pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const SerialBenchTiming& timing) {
+pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const SerialRigTiming& timing) {
     config.bootTime = timing.bootTime;
     config.homeCycle = timing.pacCycle;
     config.activeCycle = timing.pacCycle;
@@ -16,7 +16,7 @@ pac::sim::PaControlConfig WithTiming(pac::sim::PaControlConfig config, const Ser
 
 }  // namespace
 
-SerialPlcBench::SerialPlcBench(SerialBenchTiming timing, pac::sim::PaControlConfig config,
+SerialRig::SerialRig(SerialRigTiming timing, pac::sim::PaControlConfig config,
                                pac::sim::SerialPortConfig port)
     : timing_(timing),
       task_(clock_, timing.plcCycle),
@@ -29,11 +29,11 @@ SerialPlcBench::SerialPlcBench(SerialBenchTiming timing, pac::sim::PaControlConf
     runner_.AttachTo(task_);
 }
 
-void SerialPlcBench::Scan(int n) {
+void SerialRig::Scan(int n) {
     for (int i = 0; i < n; ++i) task_.Scan();
 }
 
-int SerialPlcBench::ScanUntil(const std::function<bool()>& predicate, int maxScans) {
+int SerialRig::ScanUntil(const std::function<bool()>& predicate, int maxScans) {
     for (int scans = 1; scans <= maxScans; ++scans) {
         task_.Scan();
         if (predicate()) return scans;
