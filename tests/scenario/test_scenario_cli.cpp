@@ -210,6 +210,22 @@ TEST(ScenarioCli, WritesTheTraceAndTheDiagramBesideTheTimeline) {
     EXPECT_NE(diagram.find("\"head\": {\"text\":\"FB_PAC_Cmd: a command and its acknowledgement"), std::string::npos);
 }
 
+// The trace runs to the scenario's last scan, not to its last change: a final wait in which nothing moves
+// (the PA-CONTROL booted at 50 ms) still ends the waveform at the end of the wait.
+TEST(ScenarioCli, TheTraceEndsAtTheLastScanNotAtTheLastChange) {
+    const std::string vcd = TempFile("run.vcd", "");
+    const std::string file = TempFile("idle.json", R"({"timing": {"plc_cycle_ms": 2}, "steps": [{"wait_ms": 200}]})");
+    const Cli run({"--vcd", vcd, file});
+    ASSERT_EQ(run.exitCode, pac::scenario::kExitOk) << run.err.str();
+    const std::string trace = ReadFile(vcd);
+    const auto stamp = trace.rfind("\n#");
+    ASSERT_NE(stamp, std::string::npos) << trace;
+    const long long lastNs = std::stoll(trace.substr(stamp + 2));
+    // The wait scans for at least 200 ms in whole 2 ms cycles, its first scan one cycle in.
+    EXPECT_GE(lastNs, 200'000'000LL) << trace.substr(stamp);
+    EXPECT_LE(lastNs, 204'000'000LL) << trace.substr(stamp);
+}
+
 TEST(ScenarioCli, TraceOptionsWithoutAFileOrWithAFileItCannotWriteExitTwo) {
     const Cli missing({kDemo, "--vcd"});
     EXPECT_EQ(missing.exitCode, pac::scenario::kExitRefused);
