@@ -19,12 +19,14 @@ constexpr const char* kProgram = "pac_scenario";
 
 void Usage(std::ostream& out) {
     out << "usage: " << kProgram << " [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json\n"
+        << "       " << kProgram << " --version\n"
         << "  Runs the scenario's commands, mode requests and axis jobs through FB_PAC_Cmd, FB_PAC_Ctrl and\n"
         << "  FB_PAC_Axis against the simulated PA-CONTROL and prints a scan-by-scan timeline of the\n"
         << "  modules' images and the FBs' pins (format: docs/scenario.md).\n"
         << "  --check          only check the scenario, do not run it\n"
         << "  --vcd FILE       also write every signal of the run, scan by scan, as VCD (GTKWave)\n"
         << "  --wavedrom FILE  also write the scenario's \"diagram\" (steps, signals) as WaveJSON (WaveDrom)\n"
+        << "  --version        print the library's version (st/library.json) and exit\n"
         << "exit codes: 0 all expectations met, 1 an expectation failed, 2 invalid scenario or usage,\n"
         << "            3 internal error\n";
 }
@@ -64,6 +66,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         const std::string& arg = args[i];
         if (arg == "-h" || arg == "--help") {
             Usage(out);
+            return kExitOk;
+        }
+        if (arg == "--version") {
+            out << kProgram << " (" << PAC_LIBRARY_TITLE << ") " << PAC_LIBRARY_VERSION << "\n";
             return kExitOk;
         }
         if (arg == "--check") {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 
 namespace {
@@ -224,6 +226,22 @@ TEST(ScenarioCli, TheTraceEndsAtTheLastScanNotAtTheLastChange) {
     // The wait scans for at least 200 ms in whole 2 ms cycles, its first scan one cycle in.
     EXPECT_GE(lastNs, 200'000'000LL) << trace.substr(stamp);
     EXPECT_LE(lastNs, 204'000'000LL) << trace.substr(stamp);
+}
+
+// --version names the library's version of st/library.json, compiled in: a copy of the binary away from
+// the source tree prints it too, and exits 0 whatever follows.
+TEST(ScenarioCli, VersionIsTheLibrarysFromItsMetadata) {
+    const auto library = nlohmann::json::parse(ReadFile(std::string(PAC_SOURCE_DIR) + "/st/library.json"));
+    const std::string expected = "pac_scenario (" + library.at("title").get<std::string>() + ") " +
+                                 library.at("version").get<std::string>() + "\n";
+    const Process copy = RunShell(Quoted(CopyBinaryAndDemo() + "/pac_scenario") + " --version");
+    EXPECT_EQ(copy.exitCode, 0) << copy.err;
+    EXPECT_EQ(copy.out, expected);
+    EXPECT_EQ(copy.err, "");
+    const Cli inProcess({"--version", "no-such-file.json"});
+    EXPECT_EQ(inProcess.exitCode, pac::scenario::kExitOk);
+    EXPECT_EQ(inProcess.out.str(), expected);
+    EXPECT_NE(Cli({"--help"}).out.str().find("--version"), std::string::npos);
 }
 
 TEST(ScenarioCli, TraceOptionsWithoutAFileOrWithAFileItCannotWriteExitTwo) {
