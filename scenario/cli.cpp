@@ -5,6 +5,7 @@
 
 #include "gvl_names.hpp"
 #include "pac/vcd_writer.hpp"
+#include "preconditions.hpp"
 #include "scenario_loader.hpp"
 #include "scenario_runner.hpp"
 #include "timeline_printer.hpp"
@@ -107,6 +108,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     } catch (const std::exception& e) {
         err << kProgram << ": internal error while reading " << scenarioFile << ": " << e.what() << "\n";
         return kExitInternalError;
+    }
+    // The run goes on: the warning says in advance why a request will be refused.
+    for (const PreconditionWarning& warning : FindUnmetPreconditions(scenario)) {
+        err << kProgram << ": warning: " << scenarioFile << ": step " << warning.step + 1 << " ($.steps["
+            << warning.step << "]): " << warning.message << "\n";
     }
     if (options.checkOnly) {
         const auto steps = scenario.steps.size();

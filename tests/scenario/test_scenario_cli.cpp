@@ -244,6 +244,22 @@ TEST(ScenarioCli, VersionIsTheLibrarysFromItsMetadata) {
     EXPECT_NE(Cli({"--help"}).out.str().find("--version"), std::string::npos);
 }
 
+// START ONLINE without the external stop input: a warning on stderr before the run, naming the file and
+// the step; the run goes on (the timeline shows the refusal) and --check warns too, exiting 0.
+TEST(ScenarioCli, StartOnlineWithoutTheStopInputWarnsAndRunsOn) {
+    const std::string file = TempFile("online.json", R"({"modules": {"ctrl": true}, "steps": [{"wait_ms": 60},
+        {"ctrl": "PAC_REQ_START_ONLINE", "timeout_ms": 100}]})");
+    const std::string warning = "pac_scenario: warning: " + file +
+                                ": step 2 ($.steps[1]): START ONLINE without an external stop input: system parameter 4 is 0";
+    const Process run = RunBinary(Quoted(file));
+    EXPECT_EQ(run.err.rfind(warning, 0), 0u) << run.err;
+    EXPECT_EQ(run.exitCode, 0) << run.err;  // no expectation given: the timeout (16#8009) fails nothing
+    EXPECT_NE(run.out.find("Result: 2 steps, 0 commands, 1 mode request"), std::string::npos) << run.out;
+    const Cli check({"--check", file});
+    EXPECT_EQ(check.exitCode, pac::scenario::kExitOk);
+    EXPECT_EQ(check.err.str().rfind(warning, 0), 0u) << check.err.str();
+}
+
 TEST(ScenarioCli, TraceOptionsWithoutAFileOrWithAFileItCannotWriteExitTwo) {
     const Cli missing({kDemo, "--vcd"});
     EXPECT_EQ(missing.exitCode, pac::scenario::kExitRefused);
