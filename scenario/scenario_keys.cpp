@@ -5,14 +5,6 @@
 
 namespace pac::scenario::keys {
 
-namespace {
-
-const std::vector<std::string> kStepDefinitions = {"commandStep",    "ctrlStep",        "axesStep",
-                                                   "automaticStep",  "powerCycleStep",  "systemErrorStep",
-                                                   "setInputStep",   "linkFaultStep",   "waitStep"};
-
-}  // namespace
-
 const std::vector<ObjectKeys>& All() {
     static const std::vector<ObjectKeys> all = {
         // "$schema" names the JSON Schema for editors; the loader reads nothing from it.
@@ -53,9 +45,16 @@ const std::vector<std::string>& Of(const std::string& definition) {
     throw std::out_of_range("scenario keys: no definition " + definition);
 }
 
+const std::vector<std::string>& StepDefinitions() {
+    static const std::vector<std::string> steps = {"commandStep",    "ctrlStep",        "axesStep",
+                                                   "automaticStep",  "powerCycleStep",  "systemErrorStep",
+                                                   "setInputStep",   "linkFaultStep",   "waitStep"};
+    return steps;
+}
+
 std::vector<std::string> AnyStep() {
     std::vector<std::string> all;
-    for (const std::string& step : kStepDefinitions) {
+    for (const std::string& step : StepDefinitions()) {
         for (const std::string& key : Of(step)) {
             if (std::find(all.begin(), all.end(), key) == all.end()) all.push_back(key);
         }

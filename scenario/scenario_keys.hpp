@@ -17,6 +17,8 @@ struct ObjectKeys {
 const std::vector<ObjectKeys>& All();
 // The keys of `definition`; std::out_of_range for a definition the table does not have.
 const std::vector<std::string>& Of(const std::string& definition);
+// The definitions of the kinds of step (a step is exactly one of them).
+const std::vector<std::string>& StepDefinitions();
 // Every key any kind of step may have: what a step with no kind is checked against.
 std::vector<std::string> AnyStep();
 

@@ -5,6 +5,7 @@
 // the tree under the schema and damages them place by place against both.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <string>
@@ -111,18 +112,23 @@ TEST(ScenarioSchema, StepsAreTheLoadersKindsEachWithItsKey) {
         const std::string ref = step.at("$ref");
         alternatives.insert(ref.substr(ref.rfind('/') + 1));
     }
-    EXPECT_EQ(alternatives, Names({"commandStep", "ctrlStep", "axesStep", "automaticStep", "powerCycleStep",
-                                   "systemErrorStep", "setInputStep", "linkFaultStep", "waitStep"}));
+    const auto& kinds = pac::scenario::keys::StepDefinitions();
+    EXPECT_EQ(Disagreement(alternatives, Names(kinds.begin(), kinds.end())), "");
     Names faults;
-    for (const std::string& name : alternatives) {
-        const Json& fault = Definition(name).at("properties").value("fault", Json::object());
+    for (const std::string& name : kinds) {
+        // The kind's key (the first of the loader's keys: "command", ..., "fault", "wait_ms") is required.
+        const Json& required = Definition(name).at("required");
+        EXPECT_NE(std::find(required.begin(), required.end(), pac::scenario::keys::Of(name).front()), required.end())
+            << name;
+        const Json fault = Definition(name).at("properties").value("fault", Json::object());
         if (fault.contains("const")) faults.insert(fault.at("const").get<std::string>());
         for (const std::string value : fault.value("enum", Json::array())) faults.insert(value);
     }
-    EXPECT_EQ(faults, Names({"power_cycle", "freeze_link", "zero_link", "thaw_link", "system_error", "set_input"}));
+    Names loaderFaults;
     for (auto kind = 0; kind <= static_cast<int>(pac::scenario::FaultKind::kSetInput); ++kind) {
-        EXPECT_TRUE(faults.count(pac::scenario::ToString(static_cast<pac::scenario::FaultKind>(kind))));
+        loaderFaults.insert(pac::scenario::ToString(static_cast<pac::scenario::FaultKind>(kind)));
     }
+    EXPECT_EQ(Disagreement(faults, loaderFaults), "");
 }
 
 TEST(ScenarioSchema, NamesAreTheOnesTheLoaderTakes) {
