@@ -8,9 +8,9 @@
       once per place of the format (the JSONPath without array indices): every key misspelt (an "x"
       appended) must be refused by both the schema and the loader, and every value replaced by one of
       another type (a string for a number or true/false, a number for a string, an array for an object and
-      back) or by -1 or 10**12 for a number must be refused by both or accepted by both. The loader's
-      ranges that depend on other keys (a diagram's steps within the scenario's, the limit switches' order)
-      are the loader's alone.
+      back) or by a number at or beyond the edge of a range (INTEGER_EDGES, REAL_EDGES) must be refused by
+      both or accepted by both. The ranges that depend on other keys (CONTEXTUAL: a diagram's steps within
+      the scenario's, an axis within modules.axes, the limit switches' order) are the loader's alone.
       The run prints the counts, and fails when a file or a damage disagrees.
 The jsonschema package is pinned in requirements.txt (the venv of tests/scenario)."""
 import argparse
@@ -24,10 +24,10 @@ import tempfile
 
 import jsonschema
 
-# Places whose range depends on other keys (a diagram within the steps, the negative switch below the
-# positive one): the schema cannot say it, the loader does.
-CONTEXTUAL = {"$.diagram.steps[]", "$.controller.limit_switches[#].negative",
-              "$.controller.limit_switches[#].positive"}
+# Places whose range depends on other keys (a diagram within the steps, axes steps within modules.axes,
+# the negative switch below the positive one): the schema cannot say it, the loader does.
+CONTEXTUAL = {"$.diagram.steps[]", "$.modules.axes", "$.steps[].axes[].axis", "$.steps[].automatic[].module",
+              "$.controller.limit_switches[#].negative", "$.controller.limit_switches[#].positive"}
 
 
 def scenario_files(repo):
@@ -63,12 +63,20 @@ def places(value, path="$", pattern="$"):
             yield from places(item, f"{path}[{i}]", f"{pattern}[]")
 
 
+# The edges of the format's integer ranges (the limits and one beyond) and a fraction; beyond a REAL.
+INTEGER_EDGES = [0, 1, 8, 9, 255, 256, 999, 1000, 1001, 1024, 1025, 10000, 10001, 65535, 65536, 600000, 600001,
+                 3600000, 3600001, -2147483648, -2147483649, 2147483647, 2147483648, 4294967295, 4294967296, 0.5]
+REAL_EDGES = [3.5e38, -3.5e38]
+
+
 def other_types(value):
-    """Values of another type than `value`, and numbers out of every range but the widest."""
+    """Values of another type than `value`, and numbers at and beyond the edges of every range."""
     if isinstance(value, bool):
         return [json.dumps(value)]
-    if isinstance(value, (int, float)):
-        return [str(value), -1, 10**12]
+    if isinstance(value, int):
+        return [str(value), -1, 10**12] + INTEGER_EDGES
+    if isinstance(value, float):
+        return [str(value), -1, 10**12] + REAL_EDGES
     if isinstance(value, str):
         return [7]
     if isinstance(value, dict):
