@@ -109,7 +109,9 @@ def mutations(document):
         for value in other_types(container[key]):
             damaged = copy.deepcopy(document)
             resolve(damaged, path)[key] = value
-            yield f"{path}: {json.dumps(value)}", f"{pattern}/{type(value).__name__}/{value if isinstance(value, int) else ''}", damaged, False
+            # Once per place and kind of damage: each number, any string, array or object.
+            kind = json.dumps(value) if isinstance(value, (int, float)) else type(value).__name__
+            yield f"{path}: {json.dumps(value)}", f"{pattern}/{kind}", damaged, False
 
 
 def resolve(document, path):

@@ -66,9 +66,8 @@ TEST(Preconditions, StepsBeforeTheStartChangeWhatItSees) {
     ASSERT_EQ(later.size(), 1u);
     EXPECT_EQ(later[0].step, 3u);  // the second start, after the input lost power
     // A 0700 the scenario expects to be refused does not define the input.
-    EXPECT_EQ(Warnings("", R"({"command": "0700", "param": 4, "data": 3, "expect": {"error": true}}, )" + power + kStartCtrl)
-                  .size(),
-              1u);
+    const std::string refusedDefinition = R"({"command": "0700", "param": 4, "data": 3, "expect": {"error": true}}, )";
+    EXPECT_EQ(Warnings("", refusedDefinition + power + kStartCtrl).size(), 1u);
 }
 
 TEST(Preconditions, AStartThatExpectsTheRefusalIsLeftAlone) {

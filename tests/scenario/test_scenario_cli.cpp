@@ -249,8 +249,8 @@ TEST(ScenarioCli, VersionIsTheLibrarysFromItsMetadata) {
 TEST(ScenarioCli, StartOnlineWithoutTheStopInputWarnsAndRunsOn) {
     const std::string file = TempFile("online.json", R"({"modules": {"ctrl": true}, "steps": [{"wait_ms": 60},
         {"ctrl": "PAC_REQ_START_ONLINE", "timeout_ms": 100}]})");
-    const std::string warning = "pac_scenario: warning: " + file +
-                                ": step 2 ($.steps[1]): START ONLINE without an external stop input: system parameter 4 is 0";
+    const std::string warning = "pac_scenario: warning: " + file + ": step 2 ($.steps[1]): " +
+                                "START ONLINE without an external stop input: system parameter 4 is 0";
     const Process run = RunBinary(Quoted(file));
     EXPECT_EQ(run.err.rfind(warning, 0), 0u) << run.err;
     EXPECT_EQ(run.exitCode, 0) << run.err;  // no expectation given: the timeout (16#8009) fails nothing

@@ -32,7 +32,9 @@ const Json& Schema() {
 }
 
 // The schema of an object of the format: the top level for "scenario", else its definition.
-const Json& Definition(const std::string& name) { return name == "scenario" ? Schema() : Schema().at("definitions").at(name); }
+const Json& Definition(const std::string& name) {
+    return name == "scenario" ? Schema() : Schema().at("definitions").at(name);
+}
 
 Names PropertyNames(const Json& object) {
     Names names;
@@ -101,7 +103,7 @@ TEST(ScenarioSchema, EveryObjectHasTheLoadersKeysAndNoOther) {
     }
     for (const auto& item : Schema().at("definitions").items()) {
         if (item.value().contains("properties")) {
-            EXPECT_TRUE(loaderObjects.count(item.key())) << "the schema's object " << item.key() << " is not the loader's";
+            EXPECT_TRUE(loaderObjects.count(item.key())) << "the schema's object " << item.key() << " is no loader's";
         }
     }
 }
@@ -144,7 +146,9 @@ TEST(ScenarioSchema, NamesAreTheOnesTheLoaderTakes) {
     }
     Names gvlStatusValues;
     for (const PACST_CONSTANT& constant : pac::GvlTable::GvlPac()) {
-        if (std::string(constant.name).rfind("PAC_STATUS_", 0) == 0) gvlStatusValues.insert(std::to_string(constant.value));
+        if (std::string(constant.name).rfind("PAC_STATUS_", 0) == 0) {
+            gvlStatusValues.insert(std::to_string(constant.value));
+        }
     }
     EXPECT_EQ(Disagreement(statusValues, gvlStatusValues), "");
     EXPECT_EQ(EnumOf(Definition("ctrlStep").at("properties").at("ctrl")),
