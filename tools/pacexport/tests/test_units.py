@@ -5,9 +5,8 @@ import unittest
 
 from lxml import etree
 
-from pacexport.blarkparse import ParseCache, source_items
+from pacexport.compare import canonical_items, source_items
 from pacexport.cli import export
-from pacexport.compare import canonical_items
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
@@ -101,7 +100,7 @@ class UnusedShapes(unittest.TestCase):
     def setUpClass(cls):
         cls.directory = tempfile.TemporaryDirectory()
         paths = _write_sources(cls.directory.name)
-        cls.cache = ParseCache(support.config()["cache"])
+        cls.cache = support.config()["cache"]
         cls.image = paths["T_Image.st"]
         gvl = paths.pop("GVL_Test.st")
         cls.library = load_library(INFO, list(paths.values()), [gvl], cls.cache)
