@@ -54,6 +54,8 @@ def cut(text, version, date):
     """CHANGELOG.md with the Unreleased section's entries under `## [version] - date` and a new, empty
     Unreleased section above it. The version must follow the latest release."""
     new = parse_version(version)
+    if not re.fullmatch(r"\d{4}-\d{2}-\d{2}", date):
+        raise ChangelogError(f"date '{date}' is not YYYY-MM-DD")
     latest = latest_release(text)
     if latest is not None and new <= parse_version(latest[0]):
         raise ChangelogError(f"version {version} does not follow the latest release, {latest[0]}")

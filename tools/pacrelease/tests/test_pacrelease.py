@@ -53,6 +53,8 @@ class Changelog(unittest.TestCase):
                 changelog.cut(LOG, version, "2026-02-03")
         with self.assertRaises(changelog.ChangelogError):
             changelog.cut(LOG, "1.2.4", "2026-01-01")  # before the latest release
+        with self.assertRaises(changelog.ChangelogError):
+            changelog.cut(LOG, "1.2.4", "3.2.2026")
 
     def test_nothing_to_release_is_refused(self):
         with self.assertRaises(changelog.ChangelogError):
