@@ -2,7 +2,8 @@
 
 blark accepts `//` comments, pragmas, nested comments, `;;` and a missing `;` after END_IF;
 MATIEC refuses them all (docs/st_subset.md, "Lexical rules"), so they are refused here
-before parsing, with the exact position.
+before parsing, with the exact position. The export (tools/pacexport) reads the library with the same
+tokens: their offsets and the comments are where it cuts a file into declaration and body.
 """
 import re
 

@@ -52,12 +52,9 @@ def scan(path, text):
 
 
 def comment_body(comment_text):
-    """The words of a comment without its delimiters, continuation lines dedented."""
-    if comment_text.startswith("(*"):
-        inner = comment_text[2:-2]
-    else:
-        inner = comment_text[2:]
-    lines = inner.strip().splitlines()
+    """The words of a `(* *)` comment (the only kind the lexer lets through) without its delimiters,
+    continuation lines dedented."""
+    lines = comment_text[2:-2].strip().splitlines()
     return "\n".join(line.strip() for line in lines)
 
 
