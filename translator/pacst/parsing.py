@@ -27,6 +27,7 @@ import types
 
 import blark
 import lark
+from blark import transform as tf
 from blark.parse import new_parser, parse_source_code
 
 from . import lexcheck
@@ -276,3 +277,38 @@ def parse_file(path, cache_dir=None):
     if isinstance(result, StError):
         raise result
     return result
+
+
+class ParsedText:
+    """One parse of parse_text: the code, blark's tree of it and its comments."""
+
+    def __init__(self, code, tree, comments):
+        self.code = code
+        self.tree = tree
+        self.comments = comments
+
+    def items(self, comments=True):
+        """blark's typed items; without comments their text is the canonical form of the code."""
+        return tf.transform(source_code=self.code, tree=self.tree,
+                            comments=list(self.comments) if comments else []).items
+
+
+def parse_text(text, where, cache_dir=None, rule="iec_source"):
+    """Parses `text` from the grammar rule `rule` with the parser and cache of parse_files, but without
+    the lexical checks of the portable subset: for text the exports write and the IDEs read back (a
+    pragma such as {attribute 'qualified_only'}, an object cut into declaration and body as TwinCAT keeps
+    it), which the tests compare with the source. Raises StError at the first syntax error."""
+    key = "text-" + _cache_key(f"{rule}|{text}")
+    cached = _cached_tree(cache_dir, key)
+    if cached is not None:
+        return ParsedText(text, *cached)
+    try:
+        result = parse_source_code(text, starting_rule=rule, fn=where, parser=_parser(cache_dir))
+    except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
+        line, col = _end_of(text)
+        raise StError(where, line, col, f"syntax error: {exc}") from None
+    if result.exception is not None:
+        raise _syntax_error(result.exception, where, text)
+    if cache_dir:
+        _store(cache_dir, key, pickle.dumps((result.tree, result.comments), protocol=pickle.HIGHEST_PROTOCOL))
+    return ParsedText(text, result.tree, result.comments)

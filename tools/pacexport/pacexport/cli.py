@@ -5,7 +5,6 @@ import os
 import shutil
 import sys
 
-from .blarkparse import ParseCache
 from .errors import ExportError
 from .library import load_library
 from .metadata import read_library_info
@@ -30,7 +29,7 @@ def export(library, out):
 
 def _export_command(args):
     info = read_library_info(args.library)
-    library = load_library(info, args.sources, args.gvl, ParseCache(args.cache))
+    library = load_library(info, args.sources, args.gvl, args.cache)
     export(library, args.out)
     if args.stamp:
         with open(args.stamp, "w", encoding="utf-8") as f:
@@ -57,7 +56,7 @@ def main(argv=None):
     ex.add_argument("--library", required=True, help="st/library.json: name and version")
     ex.add_argument("--out", required=True)
     ex.add_argument("--gvl", action="append", default=[], help="a global constant list (repeatable)")
-    ex.add_argument("--cache", help="directory for blark's parses, shared between runs")
+    ex.add_argument("--cache", help="the translator's parse cache (pacst --cache), shared between runs")
     ex.add_argument("--stamp", help="file to write when the export succeeded")
     ex.add_argument("sources", nargs="+", help="the library's ST files in declaration order")
     va = commands.add_parser("validate", help="validate PLCopen XML files against TC6 XML v2.01")

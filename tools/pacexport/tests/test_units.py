@@ -5,9 +5,8 @@ import unittest
 
 from lxml import etree
 
-from pacexport.blarkparse import ParseCache, source_items
+from pacexport.compare import canonical_items, source_items
 from pacexport.cli import export
-from pacexport.compare import canonical_items
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
@@ -59,6 +58,13 @@ class Splitting(unittest.TestCase):
         with self.assertRaises(ExportError):
             split_source("x.st", SOURCES["T_Image.st"] + SOURCES["T_Name.st"])
 
+    def test_the_translators_lexer_cuts_and_refuses(self):
+        # One lexer (pacst.lexcheck): what the translator refuses, the export refuses, at the same place.
+        with self.assertRaisesRegex(ExportError, r"x\.st: 3:3: '//' comment"):
+            split_source("x.st", "FUNCTION_BLOCK FB_X\nVAR\n  // no\n  X : INT;\nEND_VAR\nX := 1;\nEND_FUNCTION_BLOCK\n")
+        with self.assertRaisesRegex(ExportError, "pragma"):
+            split_source("x.st", "{attribute 'hide'}\nTYPE T : INT;\nEND_TYPE\n")
+
     def test_a_pou_without_a_body_is_refused(self):
         with self.assertRaises(ExportError):
             split_source("x.st", "FUNCTION_BLOCK FB_Empty\nVAR\n  X : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n")
@@ -101,7 +107,7 @@ class UnusedShapes(unittest.TestCase):
     def setUpClass(cls):
         cls.directory = tempfile.TemporaryDirectory()
         paths = _write_sources(cls.directory.name)
-        cls.cache = ParseCache(support.config()["cache"])
+        cls.cache = support.config()["cache"]
         cls.image = paths["T_Image.st"]
         gvl = paths.pop("GVL_Test.st")
         cls.library = load_library(INFO, list(paths.values()), [gvl], cls.cache)
@@ -136,6 +142,11 @@ class UnusedShapes(unittest.TestCase):
         root = etree.fromstring(self.data)
         values = {v.get("value") for v in root.iter("{*}simpleValue")}
         self.assertLessEqual({"T#1S", "-5", "'x'", "VAL_TWO", "'abc'", "3", "10"}, values)
+
+    def test_the_parses_are_in_the_translators_cache(self):
+        with tempfile.TemporaryDirectory() as cache:
+            load_library(INFO, [self.image], [], cache)
+            self.assertTrue(any(n.startswith("text-") and n.endswith(".pickle") for n in os.listdir(cache)))
 
     def test_an_object_named_twice_is_refused(self):
         with self.assertRaises(ExportError):
