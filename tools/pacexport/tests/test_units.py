@@ -18,7 +18,7 @@ from pacexport.twincat import cdata, guid
 from pacexport.types import ArrayType, Derived, Elementary, StringType, parse_type, type_text
 from tests import support
 
-INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "Shapes st/ does not use yet.")
+INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "MIT", "Shapes st/ does not use yet.")
 
 SOURCES = {
     "T_Image.st": "TYPE T_Image : ARRAY[0..7, -1..1] OF BYTE;\nEND_TYPE\n",
