@@ -21,6 +21,9 @@ from .plcopen_names import (ATTRIBUTES, BUILD_PROPERTIES, DISCARDED, ENUM_VALUE_
 from .twincat import guid
 from .types import ArrayType, Derived, Elementary, StringType
 
+BOM = b"\xef\xbb\xbf"
+# The Library Manager is an object of the POUs view too: its identity, its place in the tree.
+LIBRARY_MANAGER = "Library Manager"
 # R_TRIG and TON: CODESYS's Standard library, as a new CODESYS project refers to it (placeholder, any version).
 STANDARD_LIBRARY = {"Name": "#Standard", "Namespace": "Standard", "HideWhenReferencedAsDependency": "false",
                     "PublishSymbolsInContainer": "false", "SystemLibrary": "false", "LinkAllContent": "false",
@@ -32,8 +35,9 @@ _ENUM_VALUE_LINE = re.compile(r"^\s*([A-Za-z_]\w*)\s*(?::=\s*[^,(]*?)?\s*,?\s*\(
 def plcopen_bytes(library):
     root = _project(library)
     etree.indent(root, space="  ")
-    # The declaration as CODESYS writes it (lxml's own uses single quotes).
-    return b'<?xml version="1.0" encoding="utf-8"?>\n' + etree.tostring(root, encoding="utf-8", pretty_print=True)
+    # The declaration as CODESYS writes it (lxml's own uses single quotes), after a byte-order mark as well.
+    return BOM + b'<?xml version="1.0" encoding="utf-8"?>\n' + etree.tostring(root, encoding="utf-8",
+                                                                             pretty_print=True)
 
 
 def _el(parent, tag, **attrib):
@@ -103,13 +107,16 @@ def _project(library):
         _pou(pous, pou)
     _el(_el(root, "instances"), "configurations")
     _add_data(root, [(GLOBAL_VARS, lambda data, g=g: _global_list(data, g)) for g in library.global_lists]
-              + [(LIBRARIES, _libraries), (PROJECT_STRUCTURE, lambda data: _project_structure(data, library))])
+              + [(LIBRARIES, lambda data: _libraries(data, info.name)),
+                 (PROJECT_STRUCTURE, lambda data: _project_structure(data, library))])
     _documentation(root, f"{info.title} {info.version} ({info.released}). {info.description} {info.license_line}")
     return root
 
 
-def _libraries(data):
-    _el(_el(data, "Libraries"), "Library", **STANDARD_LIBRARY)
+def _libraries(data, name):
+    libraries = _el(data, "Libraries")
+    _el(libraries, "Library", **STANDARD_LIBRARY)
+    _add_data(libraries, [_object_id(LIBRARY_MANAGER, name)])
 
 
 def folder_of(source):
@@ -118,14 +125,19 @@ def folder_of(source):
 
 
 def _project_structure(data, library):
-    structure = _el(data, "ProjectStructure")
+    """The st/ folders with their objects in declaration order, and the Library Manager, sorted by name
+    as CODESYS lists them."""
     folders = {}
     for obj in library.objects():
-        source = obj.source
-        folder = folders.get(folder_of(source))
-        if folder is None:
-            folder = folders[folder_of(source)] = _el(structure, "Folder", Name=folder_of(source))
-        _el(folder, "Object", Name=source.name, ObjectId=object_id(_id_kind(source.kind), source.name))
+        folders.setdefault(folder_of(obj.source), []).append(obj.source)
+    structure = _el(data, "ProjectStructure")
+    for name in sorted([*folders, LIBRARY_MANAGER], key=str.lower):
+        if name == LIBRARY_MANAGER:
+            _el(structure, "Object", Name=name, ObjectId=object_id(LIBRARY_MANAGER, library.info.name))
+            continue
+        folder = _el(structure, "Folder", Name=name)
+        for source in folders[name]:
+            _el(folder, "Object", Name=source.name, ObjectId=object_id(_id_kind(source.kind), source.name))
 
 
 def _id_kind(kind):
