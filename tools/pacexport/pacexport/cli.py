@@ -21,13 +21,15 @@ def plcopen_file_name(info):
 
 
 def export(library, out):
-    """Writes <out>/<name>.xml and <out>/twincat/, replacing what an earlier export left there."""
+    """Writes <out>/<name>.xml, <out>/twincat/ and <out>/twincat-solution/ (the TwinCAT files as a
+    solution that opens as it is), replacing what an earlier export left there."""
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, plcopen_file_name(library.info)), "wb") as f:
         f.write(plcopen_bytes(library))
     twincat = os.path.join(out, "twincat")
     shutil.rmtree(twincat, ignore_errors=True)
     write_twincat(library, twincat)
+    write_solution(twincat, os.path.join(out, "twincat-solution"), library.info.name, None)
 
 
 def _export_command(args):
@@ -73,7 +75,7 @@ def main(argv=None):
     so.add_argument("--plc", required=True, help="the PLC project's folder (its .plcproj and files)")
     so.add_argument("--out", required=True)
     so.add_argument("--name", required=True, help="the solution's and the TwinCAT project's name")
-    so.add_argument("--program", default="MAIN", help="the PROGRAM the task calls (default MAIN)")
+    so.add_argument("--program", help="the PROGRAM the task calls; without it (a library) no task")
     so.add_argument("--cycle-ms", type=int, default=10, help="the task's cycle time in ms (default 10)")
     args = parser.parse_args(argv)
     commands_by_name = {"export": _export_command, "validate": _validate_command, "solution": _solution_command}

@@ -1,6 +1,7 @@
 """Writes a TwinCAT 3.1 solution around a PLC project, so that a machine program opens in TwinCAT XAE
 as it is: the .sln, the TwinCAT project (.tsproj) with its real-time task, and a copy of the PLC
-project with the task object (PlcTask.TcTTO) that calls the program each cycle.
+project with the task object (PlcTask.TcTTO) that calls the program each cycle. Without a program
+(a library project) there is no task: the solution only opens the project, as TcUnit's does.
 
 The files have the form TwinCAT 4024 writes (tests/ide_reference.json lists what real files carry):
 the PLC project inline in the .tsproj, not in a separate .xti; every Id a UUID derived from the
@@ -79,33 +80,40 @@ def _add_task_to_plcproj(path):
     _crlf_file(path, BOM + text[:at] + entry + text[at:])
 
 
-def tsproj(name, plc_file, plc_name, plc_guid, cycle_ms):
+def tsproj(name, plc_file, plc_name, plc_guid, cycle_ms, with_task):
     plc_path = f"{plc_name}\\{plc_file}"
     tmc = f"{plc_name}\\{plc_name}.tmc"
-    return "\n".join([
+    lines = [
         '<?xml version="1.0"?>',
         '<TcSmProject xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
         'xsi:noNamespaceSchemaLocation="http://www.beckhoff.com/schemas/2012/07/TcSmProject" '
         f'TcSmVersion="1.0" TcVersion="{PRODUCT_VERSION}">',
-        f'\t<Project ProjectGUID="{_guid(name, "tsproj")}" Target64Bit="true" ShowHideConfigurations="#x6">',
-        "\t\t<System>", "\t\t\t<Tasks>",
-        f'\t\t\t\t<Task Id="3" Priority="{TASK_PRIORITY}" CycleTime="{cycle_ms * 10000}" AmsPort="{TASK_AMS_PORT}" '
-        'AdtTasks="true">',
-        f"\t\t\t\t\t<Name>{TASK_NAME}</Name>", "\t\t\t\t</Task>", "\t\t\t</Tasks>", "\t\t</System>", "\t\t<Plc>",
+        f'\t<Project ProjectGUID="{_guid(name, "tsproj")}" Target64Bit="true" ShowHideConfigurations="#x6">']
+    if with_task:
+        lines += [
+            "\t\t<System>", "\t\t\t<Tasks>",
+            f'\t\t\t\t<Task Id="3" Priority="{TASK_PRIORITY}" CycleTime="{cycle_ms * 10000}" '
+            f'AmsPort="{TASK_AMS_PORT}" AdtTasks="true">',
+            f"\t\t\t\t\t<Name>{TASK_NAME}</Name>", "\t\t\t\t</Task>", "\t\t\t</Tasks>", "\t\t</System>"]
+    lines += [
+        "\t\t<Plc>",
         f'\t\t\t<Project GUID="{plc_guid}" Name="{plc_name}" PrjFilePath="{plc_path}" TmcFilePath="{tmc}" '
         f'ReloadTmc="true" AmsPort="{PLC_AMS_PORT}" FileArchiveSettings="#x000e" SymbolicMapping="true">',
         '\t\t\t\t<Instance Id="#x08502000" TcSmClass="TComPlcObjDef" KeepUnrestoredLinks="2" '
         f'TmcPath="{tmc}">',
         f"\t\t\t\t\t<Name>{plc_name} Instance</Name>",
-        '\t\t\t\t\t<CLSID ClassFactory="TcPlc30">{08500001-0000-0000-F000-000000000064}</CLSID>',
-        "\t\t\t\t\t<Contexts>", "\t\t\t\t\t\t<Context>", "\t\t\t\t\t\t\t<Id>0</Id>",
-        f"\t\t\t\t\t\t\t<Name>{TASK_NAME}</Name>", "\t\t\t\t\t\t\t<ManualConfig>",
-        "\t\t\t\t\t\t\t\t<OTCID>#x02010030</OTCID>", "\t\t\t\t\t\t\t</ManualConfig>",
-        f"\t\t\t\t\t\t\t<Priority>{TASK_PRIORITY}</Priority>",
-        f"\t\t\t\t\t\t\t<CycleTime>{cycle_ms * 1000000}</CycleTime>", "\t\t\t\t\t\t</Context>",
-        "\t\t\t\t\t</Contexts>", "\t\t\t\t\t<TaskPouOids>",
-        f'\t\t\t\t\t\t<TaskPouOid Prio="{TASK_PRIORITY}" OTCID="#x08502001"/>', "\t\t\t\t\t</TaskPouOids>",
-        "\t\t\t\t</Instance>", "\t\t\t</Project>", "\t\t</Plc>", "\t</Project>", "</TcSmProject>"]) + "\n"
+        '\t\t\t\t\t<CLSID ClassFactory="TcPlc30">{08500001-0000-0000-F000-000000000064}</CLSID>']
+    if with_task:
+        lines += [
+            "\t\t\t\t\t<Contexts>", "\t\t\t\t\t\t<Context>", "\t\t\t\t\t\t\t<Id>0</Id>",
+            f"\t\t\t\t\t\t\t<Name>{TASK_NAME}</Name>", "\t\t\t\t\t\t\t<ManualConfig>",
+            "\t\t\t\t\t\t\t\t<OTCID>#x02010030</OTCID>", "\t\t\t\t\t\t\t</ManualConfig>",
+            f"\t\t\t\t\t\t\t<Priority>{TASK_PRIORITY}</Priority>",
+            f"\t\t\t\t\t\t\t<CycleTime>{cycle_ms * 1000000}</CycleTime>", "\t\t\t\t\t\t</Context>",
+            "\t\t\t\t\t</Contexts>", "\t\t\t\t\t<TaskPouOids>",
+            f'\t\t\t\t\t\t<TaskPouOid Prio="{TASK_PRIORITY}" OTCID="#x08502001"/>', "\t\t\t\t\t</TaskPouOids>"]
+    lines += ["\t\t\t\t</Instance>", "\t\t\t</Project>", "\t\t</Plc>", "\t</Project>", "</TcSmProject>"]
+    return "\n".join(lines) + "\n"
 
 
 def sln(name, plc_guid):
@@ -128,9 +136,10 @@ def sln(name, plc_guid):
     return BOM + "\n".join(lines) + "\n"
 
 
-def write_solution(plc_dir, out, name, program, cycle_ms):
+def write_solution(plc_dir, out, name, program, cycle_ms=10):
     """Writes <out>/<name>.sln, <out>/<name>/<name>.tsproj and <out>/<name>/<PLC project>/ (a copy of
-    plc_dir with the task object), replacing what an earlier run left there."""
+    plc_dir, with the task object when there is a program to call), replacing what an earlier run left
+    there."""
     if cycle_ms < 1:
         raise ExportError(plc_dir, f"cycle time {cycle_ms} ms is below TwinCAT's 1 ms base time")
     plc_file, plc_name, plc_guid = _plc_project(plc_dir)
@@ -138,7 +147,9 @@ def write_solution(plc_dir, out, name, program, cycle_ms):
     shutil.rmtree(project_dir, ignore_errors=True)
     target = os.path.join(project_dir, plc_name)
     shutil.copytree(plc_dir, target)
-    _crlf_file(os.path.join(target, TASK_FILE), task_object(plc_name, program, cycle_ms))
-    _add_task_to_plcproj(os.path.join(target, plc_file))
-    _crlf_file(os.path.join(project_dir, f"{name}.tsproj"), tsproj(name, plc_file, plc_name, plc_guid, cycle_ms))
+    if program is not None:
+        _crlf_file(os.path.join(target, TASK_FILE), task_object(plc_name, program, cycle_ms))
+        _add_task_to_plcproj(os.path.join(target, plc_file))
+    _crlf_file(os.path.join(project_dir, f"{name}.tsproj"),
+               tsproj(name, plc_file, plc_name, plc_guid, cycle_ms, program is not None))
     _crlf_file(os.path.join(out, f"{name}.sln"), sln(name, plc_guid))

@@ -11,6 +11,7 @@ from lxml import etree
 
 from pacexport.errors import ExportError
 from pacexport.solution import TASK_FILE, write_solution
+from tests import support
 from tests.fixture_machine import CYCLE_MS, INFO, NAME, write_machine
 
 
@@ -80,6 +81,23 @@ class SolutionFiles(unittest.TestCase):
         with tempfile.TemporaryDirectory() as empty:
             with self.assertRaises(ExportError):
                 write_solution(empty, os.path.join(empty, "out"), NAME, "MAIN", CYCLE_MS)
+
+
+
+class LibrarySolution(unittest.TestCase):
+    """The export's TwinCAT library project in a solution of its own: it opens as it is, without a task."""
+
+    def test_blark_finds_the_library_project_with_every_object_and_no_task(self):
+        name = support.library().info.name
+        sln = os.path.join(support.config()["out"], "twincat-solution", f"{name}.sln")
+        (project,) = Solution.from_filename(sln).projects
+        (plc,) = project.load().plcs
+        listed = {s.saved_path.name for s in plc.sources}
+        exported = {os.path.basename(p) for p in _tree(support.twincat_dir())}
+        self.assertEqual(listed, exported - {f"{name}.plcproj"})
+        self.assertNotIn(TASK_FILE, listed)
+        tsproj = etree.parse(os.path.join(os.path.dirname(sln), name, f"{name}.tsproj")).getroot()
+        self.assertIsNone(tsproj.find("Project/System"))
 
 
 if __name__ == "__main__":

@@ -30,7 +30,8 @@ SOURCES = {
     "F_Pick.st": "FUNCTION F_Pick : STRING(20)\nVAR_INPUT\n  Which : BOOL;\nEND_VAR\n"
                  "IF Which THEN\n  F_Pick := 'END_VAR (* not a comment';\nELSE\n  F_Pick := '';\nEND_IF;\n"
                  "END_FUNCTION\n",
-    "FB_Shapes.st": "(* Shapes. *)\nFUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n  T : TIME := T#1S;\nEND_VAR\n"
+    "FB_Shapes.st": "(* Shapes. *)\nFUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n"
+                    "  T : TIME := T#1S;\nEND_VAR\n"
                     "VAR_IN_OUT\n  Pair : S_Pair;\nEND_VAR\nVAR\n  Timer : TON;\nEND_VAR\n"
                     "VAR_TEMP\n  Sum : DINT;\nEND_VAR\n(* END_VAR in a comment *)\nSum := INT_TO_DINT(A + B);\n"
                     "Timer(IN := Sum > 0, PT := T);\nPair.a := A;\nEND_FUNCTION_BLOCK\n",
