@@ -24,7 +24,8 @@ TASK_PRIORITY = 20
 PLC_AMS_PORT = 851  # the first PLC runtime
 TASK_AMS_PORT = 350  # the first real-time task
 _TSPROJ_TYPE = "{B1E792BE-AA5F-4E3C-8C82-674BF9C0715B}"  # Visual Studio's project type of a .tsproj
-_PLATFORMS = ("TwinCAT RT (x64)", "TwinCAT RT (x86)")
+# The target platforms a new TwinCAT 3.1 solution offers.
+_PLATFORMS = ("TwinCAT CE7 (ARMV7)", "TwinCAT OS (ARMT2)", "TwinCAT RT (x64)", "TwinCAT RT (x86)")
 _NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "urn:pa-control-plc:pacexport:solution")
 
 

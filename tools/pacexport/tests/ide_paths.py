@@ -9,7 +9,12 @@ paths name what a tool writes, not what one project holds:
 - the folders and objects of CODESYS's ProjectStructure are one level deep;
 - TwinCAT's option tree in a .plcproj (ProjectExtensions) is cut after the root's own children;
 - `#bom` stands for a UTF-8 byte-order mark at the start of the file.
+
+A solution (.sln) is text, not XML: its paths are its header lines, its top-level settings, the type
+of each project, and the entries of each global section by kind (the configurations by name).
 """
+import re
+
 from lxml import etree
 
 _VAR_LISTS = {"inputVars", "outputVars", "inOutVars", "localVars", "tempVars", "externalVars"}
@@ -74,3 +79,32 @@ def plcopen_paths(data):
 def twincat_paths(data):
     """The folded paths of a TwinCAT file (bytes): an object file, a .plcproj, a .tsproj."""
     return _paths(data, _twincat_fold)
+
+
+def sln_paths(data):
+    """The folded paths of a Visual Studio solution (bytes)."""
+    out = {"#bom"} if data.startswith(_BOM) else set()
+    section = None
+    for line in data.decode("utf-8-sig").splitlines():
+        line = line.strip()
+        project = re.match(r'Project\("(\{[^}]+\})"\)', line)
+        opened = re.match(r"GlobalSection\((\w+)\)", line)
+        if line.startswith(("Microsoft Visual Studio Solution File", "# ")):
+            out.add(line.split(",")[0])
+        elif project:
+            out.add(f"Project({project.group(1).upper()})")
+        elif opened:
+            section = f"Global/GlobalSection({opened.group(1)})"
+            out.add(section)
+        elif line == "EndGlobalSection":
+            section = None
+        elif section and " = " in line:
+            key = line.split(" = ")[0]
+            if key.startswith("{"):  # {project}.<configuration>.ActiveCfg or .Build.0: its kind
+                key = re.sub(r"^\{[^}]+\}\.[^|]+\|[^.]+\.", "", key)
+            out.add(f"{section}/{key}")
+        elif " = " in line:
+            out.add(line.split(" = ")[0])
+        elif line:
+            out.add(line)
+    return out

@@ -6,9 +6,10 @@ import os
 import tempfile
 import unittest
 
+from pacexport.twincat import PRODUCT_VERSION, PROGRAM_VERSION
 from tests import support
 from tests.fixture_machine import NAME, write_machine
-from tests.ide_paths import plcopen_paths, twincat_paths
+from tests.ide_paths import plcopen_paths, sln_paths, twincat_paths
 
 
 def _read(path):
@@ -37,10 +38,16 @@ class IdeReference(unittest.TestCase):
             project = os.path.join(os.path.dirname(sln), NAME)
             cls.exported["twincat_tsproj"] = twincat_paths(_read(os.path.join(project, f"{NAME}.tsproj")))
             cls.exported["twincat_task"] = twincat_paths(_read(glob.glob(os.path.join(project, "*", "*.TcTTO"))[0]))
+            cls.exported["twincat_sln"] = sln_paths(_read(sln))
 
     def test_every_kind_of_file_is_compared(self):
         self.assertEqual(set(self.facts), set(self.exported))
         self.assertEqual(set(_reference()["sources"]), set(self.facts))
+
+    def test_the_versions_written_are_real_twincat_builds(self):
+        builds = _reference()["real_builds"]
+        self.assertIn(PRODUCT_VERSION, builds)  # the objects' ProductVersion and the .tsproj's TcVersion
+        self.assertIn(PROGRAM_VERSION, builds)  # the .plcproj's ProgramVersion
 
     def test_what_real_files_carry_is_exported_or_has_a_reason(self):
         for kind, facts in self.facts.items():
