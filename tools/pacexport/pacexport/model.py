@@ -1,4 +1,5 @@
 """The library as the exports see it: each object's source text and its structured interface."""
+import re
 from dataclasses import dataclass
 from typing import Optional, Tuple, Union
 
@@ -85,5 +86,7 @@ class GlobalList:
         text = self.source.declaration
         tokens, _ = scan(self.source.path, text)
         line_start = text.rfind("\n", 0, tokens[0].start) + 1
-        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes)
+        # A pragma the source already writes is not written twice.
+        present = set(re.findall(r"\{\s*attribute\s+'(\w+)'", text[:tokens[0].start]))
+        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes if a not in present)
         return text[:line_start] + pragmas + text[line_start:]

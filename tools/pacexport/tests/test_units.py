@@ -10,6 +10,7 @@ from pacexport.cli import export
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
+from pacexport.plcopen_names import ENUM_VALUE_DOCUMENTATION, OBJECT_ID, PLAIN_TEXT, PROJECT_STRUCTURE, XHTML, q
 from pacexport.plcopen_read import read_plcopen
 from pacexport.schema import load_schema, schema_errors
 from pacexport.splitting import split_source
@@ -17,7 +18,7 @@ from pacexport.twincat import cdata, guid
 from pacexport.types import ArrayType, Derived, Elementary, StringType, parse_type, type_text
 from tests import support
 
-INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "Shapes st/ does not use yet.")
+INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "MIT", "Shapes st/ does not use yet.")
 
 SOURCES = {
     "T_Image.st": "TYPE T_Image : ARRAY[0..7, -1..1] OF BYTE;\nEND_TYPE\n",
@@ -28,11 +29,16 @@ SOURCES = {
     "F_Pick.st": "FUNCTION F_Pick : STRING(20)\nVAR_INPUT\n  Which : BOOL;\nEND_VAR\n"
                  "IF Which THEN\n  F_Pick := 'END_VAR (* not a comment';\nELSE\n  F_Pick := '';\nEND_IF;\n"
                  "END_FUNCTION\n",
-    "FB_Shapes.st": "FUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n  T : TIME := T#1S;\nEND_VAR\n"
+    "FB_Shapes.st": "(* Shapes. *)\nFUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n"
+                    "  T : TIME := T#1S;\nEND_VAR\n"
                     "VAR_IN_OUT\n  Pair : S_Pair;\nEND_VAR\nVAR\n  Timer : TON;\nEND_VAR\n"
                     "VAR_TEMP\n  Sum : DINT;\nEND_VAR\n(* END_VAR in a comment *)\nSum := INT_TO_DINT(A + B);\n"
                     "Timer(IN := Sum > 0, PT := T);\nPair.a := A;\nEND_FUNCTION_BLOCK\n",
-    "GVL_Test.st": "VAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n  NAME : STRING := 'x';\nEND_VAR\n",
+    "E_Commented.st": "(* Colours. *)\nTYPE E_Commented :\n(\n  RED,  (* stop *)\n  GREEN := 5,  (* go *)\n  BLUE\n);\n"
+                      "END_TYPE\n",
+    # The pragma the export adds to a global list, written by the source already.
+    "GVL_Test.st": "{attribute 'qualified_only'}\nVAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n"
+                   "  NAME : STRING := 'x';\nEND_VAR\n",
 }
 
 
@@ -147,6 +153,48 @@ class UnusedShapes(unittest.TestCase):
         with tempfile.TemporaryDirectory() as cache:
             load_library(INFO, [self.image], [], cache)
             self.assertTrue(any(n.startswith("text-") and n.endswith(".pickle") for n in os.listdir(cache)))
+
+    def _object(self, tag, name):
+        (element,) = [e for e in etree.fromstring(self.data).iter(q(tag)) if e.get("name") == name]
+        return element
+
+    def _data(self, element, name):
+        return [d for d in element.iterfind(f"{q('addData')}/{q('data')}") if d.get("name") == name]
+
+    def test_enumeration_value_comments_are_enum_value_documentation(self):
+        (data,) = self._data(self._object("dataType", "E_Commented"), ENUM_VALUE_DOCUMENTATION)
+        docs = [(v.findtext(q("Name")), "".join(v.find(q("Documentation")).itertext()).strip())
+                for v in data.iter(q("EnumValue"))]
+        self.assertEqual(docs, [("RED", "stop"), ("GREEN", "go")])
+
+    def test_the_pou_header_is_the_interface_documentation_and_nowhere_else(self):
+        pou = self._object("pou", "FB_Shapes")
+        self.assertEqual(pou.findtext(f"{q('interface')}/{q('documentation')}/{{{XHTML}}}xhtml"), "Shapes.")
+        self.assertIsNone(pou.find(q("documentation")))
+        (plain,) = self._data(pou, PLAIN_TEXT)
+        self.assertEqual("".join(plain.itertext()).count("Shapes."), 1)
+
+    def test_a_pragma_the_source_writes_is_not_written_twice(self):
+        gvl = self._object("globalVars", "GVL_Test")
+        (plain,) = self._data(gvl, PLAIN_TEXT)
+        self.assertEqual("".join(plain.itertext()).count("{attribute 'qualified_only'}"), 1)
+        self.assertEqual([a.get("Name") for a in gvl.iter(q("Attribute"))], ["qualified_only"])
+        with open(os.path.join(self.out, "twincat", "GVLs", "GVL_Test.TcGVL"), encoding="utf-8-sig") as f:
+            self.assertEqual(f.read().count("{attribute 'qualified_only'}"), 1)
+
+    def test_the_project_structure_holds_every_object_once_by_its_id(self):
+        root = etree.fromstring(self.data)
+        ids = {}
+        for data in root.iter(q("data")):
+            if data.get("name") == OBJECT_ID:
+                owner = data.getparent().getparent()
+                ids[owner.get("name") or "Library Manager"] = data.findtext(q("ObjectId"))
+        (structure,) = [d for d in root.iter(q("data")) if d.get("name") == PROJECT_STRUCTURE]
+        listed = {o.get("Name"): o.get("ObjectId") for o in structure.iter(q("Object"))}
+        self.assertEqual(len(listed), len(list(structure.iter(q("Object")))))
+        self.assertEqual(listed, ids)
+        self.assertEqual(set(listed) - {"Library Manager"}, {o.source.name for o in self.library.objects()})
+        self.assertEqual(listed["FB_Shapes"], guid("POU", "FB_Shapes").strip("{}"))
 
     def test_an_object_named_twice_is_refused(self):
         with self.assertRaises(ExportError):
