@@ -1,5 +1,4 @@
 """The library as the exports see it: each object's source text and its structured interface."""
-import re
 from dataclasses import dataclass
 from typing import Optional, Tuple, Union
 
@@ -86,7 +85,6 @@ class GlobalList:
         text = self.source.declaration
         tokens, _ = scan(self.source.path, text)
         line_start = text.rfind("\n", 0, tokens[0].start) + 1
-        # A pragma the source already writes is not written twice.
-        present = set(re.findall(r"\{\s*attribute\s+'(\w+)'", text[:tokens[0].start]))
-        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes if a not in present)
+        # The translator's lexer refuses pragmas in the source, so each is written here once.
+        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes)
         return text[:line_start] + pragmas + text[line_start:]

@@ -36,8 +36,8 @@ SOURCES = {
                     "Timer(IN := Sum > 0, PT := T);\nPair.a := A;\nEND_FUNCTION_BLOCK\n",
     "E_Commented.st": "(* Colours. *)\nTYPE E_Commented :\n(\n  RED,  (* stop *)\n  GREEN := 5,  (* go *)\n  BLUE\n);\n"
                       "END_TYPE\n",
-    # The pragma the export adds to a global list, written by the source already.
-    "GVL_Test.st": "{attribute 'qualified_only'}\nVAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n"
+    # A global list: the export adds its pragma.
+    "GVL_Test.st": "VAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n"
                    "  NAME : STRING := 'x';\nEND_VAR\n",
 }
 
@@ -174,7 +174,7 @@ class UnusedShapes(unittest.TestCase):
         (plain,) = self._data(pou, PLAIN_TEXT)
         self.assertEqual("".join(plain.itertext()).count("Shapes."), 1)
 
-    def test_a_pragma_the_source_writes_is_not_written_twice(self):
+    def test_the_pragma_of_a_global_list_is_written_once(self):
         gvl = self._object("globalVars", "GVL_Test")
         (plain,) = self._data(gvl, PLAIN_TEXT)
         self.assertEqual("".join(plain.itertext()).count("{attribute 'qualified_only'}"), 1)
