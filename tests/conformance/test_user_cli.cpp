@@ -57,6 +57,21 @@ TEST_F(TranslatorUserCli, NameOfTwoGlobalListsMustBeQualified) {
     EXPECT_TRUE(Generated("symbols.json"));
 }
 
+TEST_F(TranslatorUserCli, FilesMayComeInAnyOrder) {
+    // TwinCAT and CODESYS keep no declaration order: user mode finds it (`pacst order`), and a POU may use
+    // a global of any list.
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; Lamp : FB_Lamp; END_VAR\nN := Count;\n"
+                                     "Point.X := N;\nLamp(On := TRUE);\nEND_PROGRAM\n");
+    auto fb = Write("FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nPoint.X := 1;\n"
+                                  "END_FUNCTION_BLOCK\n");
+    auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT := 3;\n  Point : ST_Point;\nEND_VAR\n");
+    auto type = Write("ST_Point.st", "TYPE ST_Point :\nSTRUCT\n  X : INT;\nEND_STRUCT;\nEND_TYPE\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), main, fb, list, type});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    result = RunTranslator({"build", "--out", Out(), main, fb, list, type});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps its declaration order (MATIEC)";
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

@@ -36,6 +36,10 @@ def _translate_parsed(file_results, list_results, user=False, native=()):
     # A fault in a POU file is reported before any in a global list.
     sources = _parsed(file_results)
     lists = _parsed(list_results)
+    if user:
+        # A PLC programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
+        by_path = {src.path: src for src in sources}
+        sources = [by_path[path] for path in declaration_order(sources)]
     comp = Compiler(user, native)
     program = comp.compile(sources)
     constants = {}

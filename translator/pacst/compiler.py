@@ -78,19 +78,28 @@ class Compiler:
                 name = self._item_name(item)
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
-        for src in sources:
+        for src, item in self._in_order(sources):
             self.file = src.path
-            for item in src.tree.items:
-                try:
-                    self._item(item, src)
-                except StError as e:
-                    self.errors.append(e)
-                    name = self._item_name(item)
-                    if name is not None:
-                        self.refused.add(name.upper())
+            try:
+                self._item(item, src)
+            except StError as e:
+                self.errors.append(e)
+                name = self._item_name(item)
+                if name is not None:
+                    self.refused.add(name.upper())
         if self.errors:
             raise StErrors(self.errors)
         return self.program
+
+    def _in_order(self, sources):
+        """(file, item) in the order they are declared: the files' order; in user mode every type first,
+        then the global lists, then the POUs, so that a POU may use a global of any list and a list a type
+        of any file (TwinCAT and CODESYS have no declaration order)."""
+        items = [(src, item) for src in sources for item in src.tree.items]
+        if not self.user:
+            return items
+        rank = {"DataTypeDeclaration": 0, "GlobalVariableDeclarations": 1}
+        return sorted(items, key=lambda pair: rank.get(_cls(pair[1]), 2))  # stable: file order within a rank
 
     @staticmethod
     def _item_name(item):
