@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "translator_runner.hpp"
@@ -93,10 +94,105 @@ TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
     auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
     auto result = RunTranslator({"build", "--native", native, "--out", Out(), fb});
     EXPECT_NE(result.exitCode, 0);
-    EXPECT_NE(result.output.find("--native needs --user"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("need --user"), std::string::npos) << result.output;
     result = RunTranslator({"build", "--user", "--native", native, "--out", Out(), fb});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_FALSE(Generated("Asserts.c")) << "the host implements a native FUNCTION";
+}
+
+std::string TcObject(const std::string& element, const std::string& name, const std::string& declaration,
+                     const std::string& body) {
+    std::string text = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
+                       "<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\r\n"
+                       "  <" + element + " Name=\"" + name + "\" Id=\"{0}\">\r\n"
+                       "    <Declaration><![CDATA[" + declaration + "]]></Declaration>\r\n";
+    if (!body.empty()) {
+        text += "    <Implementation>\r\n      <ST><![CDATA[" + body + "]]></ST>\r\n    </Implementation>\r\n";
+    }
+    return text + "  </" + element + ">\r\n</TcPlcObject>\r\n";
+}
+
+const char* kTcMainDeclaration = "PROGRAM MAIN\r\nVAR\r\n  Count : INT; // TwinCAT's comments\r\nEND_VAR\r\n";
+
+TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
+    fs::create_directories(dir_ / "POUs");
+    fs::create_directories(dir_ / "GVLs");
+    auto list = Write("GVLs/GVL_Io.TcGVL",
+                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n  MaxCount : INT := 3;\r\n"
+                                                "END_VAR\r\n", ""));
+    // Line 11 of the file (the body's CDATA opens on line 10), column 12: the undeclared name.
+    auto main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
+                                                  "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Nope;\r\nEND_IF"));
+    auto result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(main + ":11:12: error: undeclared name 'Nope'"), std::string::npos) << result.output;
+
+    main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
+                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF"));
+    auto project = Write("Plant.plcproj",
+                         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
+                         "<Project xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\r\n  <ItemGroup>\r\n"
+                         "    <Compile Include=\"POUs\\MAIN.TcPOU\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <Compile Include=\"GVLs\\GVL_Io.TcGVL\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <None Include=\"PlcTask.TcTTO\"><SubType>Code</SubType></None>\r\n"
+                         "  </ItemGroup>\r\n</Project>\r\n");
+    result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), project});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream c(dir_ / "out" / "MAIN.c");
+    std::string text((std::istreambuf_iterator<char>(c)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("#line 10 \"" + fs::absolute(main).string() + "\""), std::string::npos) << text;
+    EXPECT_TRUE(Generated("GVL_Io.c"));
+}
+
+TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
+    auto method = Write("FB_A.TcPOU",
+                        "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
+                        "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n]]></Declaration>\n"
+                        "    <Implementation><ST><![CDATA[;]]></ST></Implementation>\n"
+                        "    <Method Name=\"Reset\">\n    </Method>\n  </POU>\n</TcPlcObject>\n");
+    auto result = RunTranslator({"check", "--user", method});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(method + ":7:1: error: METHOD Reset of FB_A is outside pacst's user programs"),
+              std::string::npos)
+        << result.output;
+    auto ladder = Write("FB_B.TcPOU",
+                        "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_B\">\n"
+                        "    <Declaration><![CDATA[FUNCTION_BLOCK FB_B\n]]></Declaration>\n"
+                        "    <Implementation>\n      <LD></LD>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
+    result = RunTranslator({"check", "--user", ladder});
+    EXPECT_NE(result.output.find(ladder + ":7:1: error: FB_B is implemented in LD: pacst reads ST only"),
+              std::string::npos)
+        << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenProjectIsReadIntoStFiles) {
+    auto project = Write("plant.xml", R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <types><dataTypes/><pous>
+    <pou name="PRG_Main" pouType="program">
+      <interface><localVars><variable name="Count"><type><INT/></type></variable></localVars></interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">IF GVL_Io.Start THEN
+  Count := Count + 1;
+END_IF;</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <addData><data name="http://www.3s-software.com/plcopenxml/globalvars" handleUnknown="implementation">
+    <globalVars name="GVL_Io">
+      <variable name="Start" address="%IX0.1"><type><BOOL/></type></variable>
+      <variable name="Image" address="%IB2"><type><array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array></type></variable>
+    </globalVars>
+  </data></addData>
+</project>
+)");
+    auto sources = (dir_ / "sources").string();
+    auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), project});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(dir_ / "sources" / "PRG_Main.st"));
+    EXPECT_TRUE(fs::exists(dir_ / "sources" / "GVL_Io.st"));
+    std::ifstream symbols(dir_ / "out" / "symbols.json");
+    std::string text((std::istreambuf_iterator<char>(symbols)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"path\": \"GVL_Io.Image\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"address\": \"%IB2\""), std::string::npos) << text;
 }
 
 }  // namespace

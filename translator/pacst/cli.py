@@ -4,10 +4,11 @@ only checks; `pacst order` prints files in the declaration order the others need
 import argparse
 import os
 import sys
+import tempfile
 import time
 
 from .compiler import Compiler
-from . import gvl, layout, symbols
+from . import gvl, layout, plcopen_read, symbols, twincat
 from .order import declaration_order
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
@@ -28,7 +29,7 @@ def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
     against them; returns (compiler, program, {gvl file: constants}) or raises StErrors. `user`: the
     user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements."""
-    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs)
+    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs, user)
     return _translate_parsed(results[:len(files)], results[len(files):], user, native)
 
 
@@ -60,10 +61,26 @@ def _tables(constants):
 
 
 def _user_files(args):
-    """The files to compile: the native interfaces first (the user's POUs call them)."""
-    if args.native and not args.user:
-        raise SystemExit("pacst: --native needs --user")
-    return list(args.native) + [f for f in args.files if f not in args.native]
+    """The files to compile: the native interfaces first (the user's POUs call them); in user mode a
+    TwinCAT `.plcproj` stands for the object files it lists, a PLCopen XML project for the ST files of
+    its objects (written to a `plcopen` folder beside the output, or a temporary one)."""
+    if (args.native or args.sources_dir) and not args.user:
+        raise SystemExit("pacst: --native and --sources need --user")
+    files = []
+    for path in args.files:
+        if args.user and path.lower().endswith(".plcproj"):
+            files += twincat.project_files(path)
+        elif args.user and path.lower().endswith(".xml"):
+            files += plcopen_read.extract(path, _sources_dir(args))
+        else:
+            files.append(path)
+    return list(args.native) + [f for f in files if f not in args.native]
+
+
+def _sources_dir(args):
+    if args.sources_dir is None:
+        args.sources_dir = tempfile.mkdtemp(prefix="pacst-plcopen-")
+    return args.sources_dir
 
 
 def _build(args):
@@ -120,7 +137,7 @@ def _check(args):
     # --separately: every file is a program of its own (the refusal snippets of the test suite). All
     # files are parsed first, in parallel; then each group is compiled on its own.
     files = _user_files(args)
-    results = parse_files(files + args.gvl, args.cache, args.jobs)
+    results = parse_files(files + args.gvl, args.cache, args.jobs, args.user)
     file_results, list_results = results[:len(files)], results[len(files):]
     natives = file_results[:len(args.native)]
     groups = [natives + [r] for r in file_results[len(natives):]] if args.separately else [file_results]
@@ -137,7 +154,8 @@ def _check(args):
 
 def _order(args):
     try:
-        order = declaration_order(_parsed(parse_files(args.files, args.cache, args.jobs)))
+        files = _user_files(args)
+        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)))
     except StErrors as e:
         for err in e.errors:
             print(err, file=sys.stderr)
@@ -162,6 +180,8 @@ def _user_options(parser):
     parser.add_argument("--native", action="append", default=[], metavar="FILE",
                         help="(--user) an ST file whose FUNCTIONs the host implements in C; each call passes "
                              "the ST file and line of the call")
+    parser.add_argument("--sources", dest="sources_dir", metavar="DIR",
+                        help="(--user) folder for the ST files of a PLCopen XML project (default: a temporary one)")
 
 
 def main(argv=None):
@@ -199,6 +219,7 @@ def main(argv=None):
     order = sub.add_parser("order", help="print ST files in declaration order: a type, enumeration or POU "
                                          "before every file that uses it, ties by file name")
     _parse_options(order)
+    _user_options(order)
     order.add_argument("files", nargs="+")
     order.set_defaults(run=_order)
     args = parser.parse_args(argv)

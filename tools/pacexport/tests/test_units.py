@@ -11,7 +11,7 @@ from pacexport.compare import canonical_items
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
-from pacexport.plcopen_read import read_plcopen
+from pacst.plcopen_read import read_plcopen
 from pacexport.schema import load_schema, schema_errors
 from pacexport.splitting import split_source
 from pacexport.twincat import cdata, guid
