@@ -195,4 +195,47 @@ END_IF;</xhtml></ST></body>
     EXPECT_NE(text.find("\"address\": \"%IB2\""), std::string::npos) << text;
 }
 
+std::string ReadFile(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+TEST_F(TranslatorUserCli, MatiecSourceHasTheConfigurationTasksAndExternals) {
+    auto a = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\n  Image AT %IB0 : ARRAY [0..3] OF BYTE;\nEND_VAR\n");
+    auto b = Write("GVL_B.st", "VAR_GLOBAL\n  Count : INT := 7;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; Flag AT %MX0.1 : BOOL; END_VAR\n"
+                                     "N := GVL_B.Count + GVL_A.Count;\nImage[1] := BYTE#2;\nEND_PROGRAM\n");
+    auto tasks = Write("tasks.json", R"({"PRG_Main": {"task": "Fast", "interval": "T#5MS", "priority": 3}})");
+    auto out = (dir_ / "out" / "user.st").string();
+    auto result = RunTranslator({"matiec", "--tasks", tasks, "--out", out, main, b, a});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string st = ReadFile(out);
+    for (const char* want : {
+             "VAR\n  N : INT;\nEND_VAR\nVAR\n  Flag AT %MX0.1 : BOOL;\nEND_VAR\n",  // located: a block of its own
+             "VAR_EXTERNAL\n  GVL_B_Count : INT;\n  GVL_A_Count : INT;\n  Image : T_PacArray_BYTE_0_3;\nEND_VAR\n",
+             "N := GVL_B_Count + GVL_A_Count;\nImage[1] := BYTE#2;\nEND_PROGRAM",  // qualifiers spelled MATIEC's way
+             "TYPE T_PacArray_BYTE_0_3 : ARRAY [0..3] OF BYTE;\nEND_TYPE",
+             "CONFIGURATION PacConfig\n  VAR_GLOBAL\n",
+             "    GVL_B_Count : INT := 7;\n",
+             "    Image AT %IB0 : T_PacArray_BYTE_0_3;\n",
+             "  RESOURCE PacResource ON PLC\n    TASK Fast(INTERVAL := T#5MS, PRIORITY := 3);\n"
+             "    PROGRAM Inst_PRG_Main WITH Fast : PRG_Main;\n  END_RESOURCE\nEND_CONFIGURATION\n"}) {
+        EXPECT_NE(st.find(want), std::string::npos) << "missing:\n" << want << "\nin:\n" << st;
+    }
+}
+
+TEST_F(TranslatorUserCli, MatiecRefusesAFunctionThatReadsGlobals) {
+    auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Factor : INT := 3;\nEND_VAR\n");
+    auto scale = Write("F_Scale.st", "FUNCTION F_Scale : INT\nVAR_INPUT Raw : INT; END_VAR\nF_Scale := Raw * Factor;\n"
+                                     "END_FUNCTION\n");
+    auto result = RunTranslator({"check", "--user", list, scale});
+    EXPECT_EQ(result.exitCode, 0) << "pacst itself accepts it (CODESYS and TwinCAT do): " << result.output;
+    result = RunTranslator({"matiec", "--out", (dir_ / "out" / "user.st").string(), list, scale});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(scale + ":1:1: error: FUNCTION F_Scale uses global variables: MATIEC's FUNCTIONs "
+                                         "have no VAR_EXTERNAL"),
+              std::string::npos)
+        << result.output;
+}
+
 }  // namespace

@@ -78,10 +78,10 @@ TEST_F(UserProgram, StepChainRunsOverTheGlobalsScanByScan) {
     GVL_PLANT__CMDIN.value.table[7] = 0x42;
     GVL_PLANT__PRESSURE.value = 7;
     PRG_USERMAIN_body__(&prg);
-    EXPECT_EQ(prg.STEP.value, 0) << "no start edge yet";
+    EXPECT_EQ(prg.STEPNO.value, 0) << "no start edge yet";
     GVL_HMI__START.value = TRUE;
     PRG_USERMAIN_body__(&prg);
-    EXPECT_EQ(prg.STEP.value, 1);
+    EXPECT_EQ(prg.STEPNO.value, 1);
     EXPECT_EQ(GVL_PLANT__MODE.value, E_USERMODE__UM_RUN);
     for (unsigned count = 1; count <= 3; ++count) {
         PRG_USERMAIN_body__(&prg);
@@ -92,7 +92,7 @@ TEST_F(UserProgram, StepChainRunsOverTheGlobalsScanByScan) {
     }
     EXPECT_EQ(GVL_PLANT__CMDOUT.value.table[0], 0x85);
     EXPECT_EQ(GVL_PLANT__CMDOUT.value.table[7], 0x42);
-    EXPECT_EQ(prg.STEP.value, 2);
+    EXPECT_EQ(prg.STEPNO.value, 2);
     EXPECT_EQ(GVL_PLANT__MODE.value, E_USERMODE__UM_DONE);
     EXPECT_FALSE(GVL_PLANT__LAMPOUT.value) << "switched off through VAR_EXTERNAL in the last step";
     EXPECT_EQ(Text(GVL_PLANT__BANNER.value), "hello world,") << "a STRING(12) keeps its first 12 characters";
@@ -248,8 +248,8 @@ TEST_F(UserProgram, SymbolTableDescribesProgramsFunctionBlocksAndTypes) {
     EXPECT_EQ(main.at("c_type"), "PRG_USERMAIN");
     EXPECT_EQ(main.at("init"), "PRG_USERMAIN_init__");
     EXPECT_EQ(main.at("body"), "PRG_USERMAIN_body__");
-    const auto& step = ByKey(main.at("variables"), "path", "PRG_UserMain.Step");
-    EXPECT_EQ(step.at("c_name"), "STEP");
+    const auto& step = ByKey(main.at("variables"), "path", "PRG_UserMain.StepNo");
+    EXPECT_EQ(step.at("c_name"), "STEPNO");
     EXPECT_EQ(step.at("direction"), "output");
     EXPECT_EQ(ByKey(main.at("variables"), "name", "Enable").at("initial"), "TRUE");
     EXPECT_EQ(ByKey(main.at("variables"), "name", "Scratch").at("location").at("address"), "%MB4");

@@ -39,6 +39,7 @@ class BodyCompiler:
         if v is None and self.comp.user:
             g = user.lookup_global(self.comp, token)
             if g is not None:
+                pou.globals_used[g.csym] = g
                 return self._global_ref(g, False)
         if v is None:
             if up in self.comp.enum_values:
@@ -73,6 +74,9 @@ class BodyCompiler:
         g = gvl.var(_name(first.field.name))
         if g is None:
             raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
+        if all(e is not g for e, _ in self.pou.externals.values()):
+            self.pou.globals_used[g.csym] = g
+        self.pou.qualifiers.append((node.name.name.start_pos, first.field.name.start_pos, g))
         return self._global_ref(g, False), node.elements[1:]
 
     def ref(self, node):

@@ -8,7 +8,7 @@ import tempfile
 import time
 
 from .compiler import Compiler
-from . import gvl, layout, plcopen_read, symbols, twincat
+from . import gvl, layout, matiec, plcopen_read, symbols, twincat
 from .order import declaration_order
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
@@ -152,6 +152,24 @@ def _check(args):
     return 1 if failed else 0
 
 
+def _matiec(args):
+    args.user = True
+    try:
+        files = _user_files(args)
+        comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native)
+        text = matiec.source(comp, program, matiec.read_tasks(args.tasks))
+    except StError as e:
+        print(e, file=sys.stderr)
+        return 1
+    except StErrors as e:
+        for err in e.errors:
+            print(err, file=sys.stderr)
+        return 1
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    write_outputs(out_dir, {os.path.basename(args.out): text})
+    return 0
+
+
 def _order(args):
     try:
         files = _user_files(args)
@@ -216,6 +234,15 @@ def main(argv=None):
     _user_options(check)
     check.add_argument("files", nargs="+")
     check.set_defaults(run=_check)
+    mat = sub.add_parser("matiec", help="write a user program as one ST file for MATIEC's iec2c, with the "
+                                         "CONFIGURATION, RESOURCE and TASKs it needs")
+    mat.add_argument("--out", required=True, help="the ST file to write")
+    mat.add_argument("--tasks", help="JSON: {\"PRG_Name\": {\"task\": \"Fast\", \"interval\": \"T#10MS\", "
+                                     "\"priority\": 1}}; a PROGRAM not listed runs in PacTask every 10 ms")
+    _parse_options(mat)
+    _user_options(mat)
+    mat.add_argument("files", nargs="+")
+    mat.set_defaults(run=_matiec)
     order = sub.add_parser("order", help="print ST files in declaration order: a type, enumeration or POU "
                                          "before every file that uses it, ties by file name")
     _parse_options(order)

@@ -23,7 +23,9 @@ class Pou:
         self.kind = kind  # "fb" or "function" (a user PROGRAM is an "fb" with `program` set)
         self.program = False
         self.native = False  # a FUNCTION the host implements (user mode, --native)
-        self.externals = {}  # upper name -> GlobalVar, from VAR_EXTERNAL (user mode)
+        self.externals = {}  # upper name -> (GlobalVar, constant), from VAR_EXTERNAL (user mode)
+        self.globals_used = {}  # C name -> GlobalVar the body names without VAR_EXTERNAL (user mode)
+        self.qualifiers = []  # (start, end, GlobalVar): the offsets of each `List.` before a global in the body
         self.name = name
         self.cname = name.upper()
         self.file = file
@@ -72,6 +74,7 @@ class Compiler:
     # ------------------------------------------------------------------ driver
     def compile(self, sources):
         """Check and translate parsed files (in declaration order); raise StErrors on any refusal."""
+        self.sources = sources
         for src in sources:
             self.file = src.path
             for item in src.tree.items:
