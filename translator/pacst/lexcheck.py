@@ -163,7 +163,7 @@ def tokenize(text, file, user=False):
 def check(text, file, user=False):
     """Raise StError for the first lexical rule of the portable subset that `text` breaks. A user program
     (`user`) may have `//` comments and pragmas, and may leave out the `;` after END_IF and the like."""
-    tokens = tokenize(text, file, user)
+    tokens = tokenize(text, file, user=user)
     in_type = False
     type_depth = 0  # STRUCT/UNION and parentheses open inside the current TYPE block
     pou = None  # the keyword that opened the current POU
