@@ -1,5 +1,5 @@
-// pacst's user-program mode on the command line: what needs two files (a name two global lists declare),
-// the symbol table written only in user mode, --native only with --user.
+// pacst's user-program mode on the command line: what needs several files (a name two global lists
+// declare, files in any order), TwinCAT and PLCopen inputs, `pacst matiec`, --native only with --user.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,31 +8,16 @@
 #include <string>
 
 #include "translator_runner.hpp"
+#include "translator_scratch.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using pac::test::RunTranslator;
 
-class TranslatorUserCli : public ::testing::Test {
+class TranslatorUserCli : public pac::test::TranslatorScratch {
 protected:
-    void SetUp() override {
-        dir_ = fs::path(PACST_SCRATCH_DIR) / ("user_" + std::string(::testing::UnitTest::GetInstance()
-                                                                        ->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_ / "out");
-    }
-
-    std::string Write(const std::string& name, const std::string& text) {
-        fs::path p = dir_ / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-
-    std::string Out() const { return (dir_ / "out").string(); }
-    bool Generated(const std::string& name) const { return fs::exists(dir_ / "out" / name); }
-
-    fs::path dir_;
+    TranslatorUserCli() : TranslatorScratch("user_") {}
 };
 
 const char* kMain =

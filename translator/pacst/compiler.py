@@ -422,25 +422,24 @@ class Compiler:
                     raise self.err(item, T.OUTSIDE_SUBSET["STRING"])
                 raise self.err(item, f"{_cls(init)} is outside the portable subset")
             vtype = self._spec_type(init.spec, allow_fb=(pou.kind == "fb"))
-            if vtype.is_fb and section != "var":
-                raise self.err(item, "function block instances are only allowed in VAR")
-            if vtype.is_fb and constant:
-                raise self.err(item, "a function block instance cannot be CONSTANT")
-            if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
-                raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+            self._check_section(pou, section, constant, vtype, item)
             for dv in item.variables:
                 self._declare_var(pou, section, constant, vtype, init.value, dv)
 
-    def _user_vars(self, pou, section, constant, item):
-        """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
-        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
-        value = getattr(item.init, "value", None)
+    def _check_section(self, pou, section, constant, vtype, item):
+        """Whether a variable of type `vtype` may stand in this block of `pou`."""
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
             raise self.err(item, "a function block instance cannot be CONSTANT")
         if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
             raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+
+    def _user_vars(self, pou, section, constant, item):
+        """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
+        value = getattr(item.init, "value", None)
+        self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
             location = None
             if dv.location is not None:
