@@ -68,9 +68,10 @@ def _check_real_point(digits, file, line, col):
                                        f"write {with_point}")
 
 
-def tokenize(text, file, comments=None):
+def tokenize(text, file, comments=None, user=False):
     """Tokens without comments (appended to `comments` when it is a list); raises StError on what
-    MATIEC's lexer would refuse."""
+    MATIEC's lexer would refuse. A user program (`user`) may also have `//` comments and pragmas
+    (`{attribute 'qualified_only'}`), which TwinCAT and CODESYS write; pacst ignores the pragmas."""
     tokens = []
     i, line, col = 0, 1, 1
     n = len(text)
@@ -106,6 +107,16 @@ def tokenize(text, file, comments=None):
             if comments is not None:
                 comments.append(Comment(text[i:end + 2], i, end + 2))
             advance(end + 2)
+            continue
+        if user and text.startswith("//", i):
+            end = text.find("\n", i)
+            advance(n if end < 0 else end)
+            continue
+        if user and c == "{":
+            end = text.find("}", i)
+            if end < 0:
+                raise StError(file, line, col, "pragma is not closed with '}'")
+            advance(end + 1)
             continue
         if text.startswith("//", i):
             raise StError(file, line, col, "'//' comment: MATIEC accepts only '(* ... *)' comments")
@@ -169,9 +180,10 @@ def tokenize(text, file, comments=None):
     return tokens
 
 
-def check(text, file):
-    """Raise StError for the first lexical rule of the portable subset that `text` breaks."""
-    tokens = tokenize(text, file)
+def check(text, file, user=False):
+    """Raise StError for the first lexical rule of the portable subset that `text` breaks. A user program
+    (`user`) may have `//` comments and pragmas, and may leave out the `;` after END_IF and the like."""
+    tokens = tokenize(text, file, user=user)
     in_type = False
     type_depth = 0  # STRUCT/UNION and parentheses open inside the current TYPE block
     pou = None  # the keyword that opened the current POU
@@ -207,7 +219,7 @@ def check(text, file):
             prev_text = prev.upper if prev.kind == "ident" else prev.text
             if prev_text in _EMPTY_BEFORE:
                 raise StError(file, tok.line, tok.col, "empty statement: MATIEC refuses ';;' and empty branches")
-        if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";"):
+        if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";") and not user:
             raise StError(file, tok.line, tok.col + len(tok.text),
                           f"missing ';' after {up}: MATIEC requires it")
         if tok.kind == "ident" and up == "TYPE":

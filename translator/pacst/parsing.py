@@ -30,7 +30,7 @@ import lark
 from blark import transform as tf
 from blark.parse import new_parser, parse_source_code
 
-from . import lexcheck
+from . import lexcheck, twincat
 from .errors import StError
 from .fastparse import Decline, FastParser, grammar_facts
 
@@ -55,9 +55,10 @@ _SOURCES_VERSION = _sources_version([lexcheck.__file__] + sorted(
     os.path.join(_FASTPARSE_DIR, name) for name in os.listdir(_FASTPARSE_DIR) if name.endswith(".py")))
 
 
-def _cache_key(text):
+def _cache_key(text, user=False):
+    """A parse is cached for the text and the mode: a user program passed laxer lexical checks."""
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|".encode())
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|{'user|' if user else ''}".encode())
     h.update(text.encode("utf-8"))
     return h.hexdigest()
 
@@ -177,12 +178,15 @@ class SourceFile:
         self.tree = tree
 
 
-def _read(path):
+def _read(path, user=False):
     try:
-        with open(path, encoding="utf-8") as f:
-            return f.read()
+        with open(path, encoding="utf-8-sig" if user else "utf-8") as f:
+            text = f.read()
     except (OSError, UnicodeDecodeError) as exc:
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
+    if user and twincat.is_object_file(path):
+        return twincat.object_st(text, path)
+    return text
 
 
 def _cached_tree(cache_dir, key):
@@ -243,16 +247,17 @@ def _parse_misses(misses, jobs, cache_dir):
         return {i: future.result() for i, future in futures.items()}
 
 
-def parse_files(paths, cache_dir=None, jobs=None):
+def parse_files(paths, cache_dir=None, jobs=None, user=False):
     """Read, check lexically and parse every file of `paths`: for each, in order, its SourceFile or the
-    StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core)."""
+    StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core).
+    `user`: the files of a user program (laxer lexical checks; TwinCAT's .TcPOU, .TcGVL and .TcDUT read)."""
     results, misses = [], []
     for i, path in enumerate(paths):
         try:
-            text = _read(path)
-            tree = _cached_tree(cache_dir, _cache_key(text))
+            text = _read(path, user)
+            tree = _cached_tree(cache_dir, _cache_key(text, user))
             if tree is None:
-                lexcheck.check(text, path)
+                lexcheck.check(text, path, user)
         except StError as e:
             results.append(e)
             continue
@@ -266,7 +271,7 @@ def parse_files(paths, cache_dir=None, jobs=None):
             results[i] = StError(*error)
             continue
         if cache_dir:
-            _store(cache_dir, _cache_key(text), pickled)
+            _store(cache_dir, _cache_key(text, user), pickled)
         results[i] = SourceFile(path, text, pickle.loads(pickled))
     return results
 

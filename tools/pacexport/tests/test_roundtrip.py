@@ -6,7 +6,7 @@ from lxml import etree
 
 from pacexport.compare import canonical_items, source_items
 from pacexport.plcopen_names import PLAIN_TEXT, XHTML, q
-from pacexport.plcopen_read import read_plcopen
+from pacst.plcopen_read import read_plcopen
 from tests import support
 
 
