@@ -51,9 +51,10 @@ class DiagnosisSim : public ::testing::TestWithParam<BusTiming> {};
 
 TEST_P(DiagnosisSim, ModulesCarryEverythingSoNoCommandIsSent) {
     DiagnosisPlc plc(GetParam(), DiagnosisLayout{true, 2});
-    plc.Boot();
+    // Enabled from the first scan, as a program does: through the boot and a restart too.
     plc.Diag()->AXES.value = 2;
     plc.Diag()->ENABLE.value = TRUE;
+    plc.Boot();
     ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->VALID.value != 0; }, 20));
     EXPECT_EQ(plc.Diag()->OPSTATUS.value, 1);
     EXPECT_EQ(Text(plc.Diag()->OPSTATUSTEXT.value), "home position");
@@ -79,6 +80,9 @@ TEST_P(DiagnosisSim, ModulesCarryEverythingSoNoCommandIsSent) {
     EXPECT_EQ(Text(plc.Diag()->OPSTATUSTEXT.value), "home position with system error");
     EXPECT_GT(plc.Diag()->CHANGECOUNT.value, count);
     EXPECT_TRUE(plc.Diag()->VALID.value);
+    plc.Controller().PowerCycle(plc.Now());
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->ERROR.value != 0; }, 50));
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->VALID.value != 0; }, 300));
     plc.ScanMs(100);
     EXPECT_EQ(plc.CountAll(), 0);
 }
