@@ -87,6 +87,33 @@ TEST_P(DiagnosisSim, ModulesCarryEverythingSoNoCommandIsSent) {
     EXPECT_EQ(plc.CountAll(), 0);
 }
 
+// In AUTOMATIC the axis module carries flags and registers (2.6): FB_PAC_Axis shows no status, and the axis is
+// read by 1910 until the module is an axis module again.
+TEST_P(DiagnosisSim, AnAxisModuleOutsideHomeAndOnlineIsReadByCommand) {
+    const BusTiming& t = GetParam();
+    DiagnosisPlc plc(t, DiagnosisLayout{true, 1});
+    plc.Diag()->AXES.value = 1;
+    plc.SetPollMs(10);
+    plc.Diag()->ENABLE.value = TRUE;
+    plc.Boot();
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->VALID.value != 0; }, 20));
+    EXPECT_EQ(plc.Entry(1).SOURCE, E_PAC_DIAGSOURCE__PAC_DIAGSRC_MODULE);
+    plc.Controller().SetOperatingStatus(15);  // AUTOMATIC, stopped
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Entry(1).SOURCE == E_PAC_DIAGSOURCE__PAC_DIAGSRC_COMMAND; },
+                           20 + 2 * CommandMs(t)));
+    EXPECT_EQ(Text(plc.Diag()->OPSTATUSTEXT.value), "AUTOMATIC, stopped");
+    EXPECT_EQ(plc.Entry(1).AXISERRORNUMBER, 0);
+    EXPECT_EQ(Text(plc.Entry(1).AXISERRORTEXT), "") << "no command reads the axis error number";
+    EXPECT_GE(plc.Count(kGetStatusAxis, 1), 1);
+    plc.Controller().SetOperatingStatus(1);
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Entry(1).SOURCE == E_PAC_DIAGSOURCE__PAC_DIAGSRC_MODULE; },
+                           20 + 2 * CommandMs(t)));
+    plc.ScanMs(CommandMs(t));  // the read on its way, if any
+    const int reads = plc.CountAll();
+    plc.ScanMs(200);
+    EXPECT_EQ(plc.CountAll(), reads) << "1910 although the module carries the axis again";
+}
+
 TEST_P(DiagnosisSim, WithoutModulesItReadsTheAxesByCommandAtThePollRate) {
     const BusTiming& t = GetParam();
     DiagnosisPlc plc(t, DiagnosisLayout{});
