@@ -226,6 +226,28 @@ TEST_P(DiagnosisSim, ACommandErrorTo1910IsThatAxisAnswerTo1909TheFbsError) {
     EXPECT_EQ(plc.CountAll(), before);
 }
 
+// A read that failed on the interface (16#8001 behind a frozen link) is the FB's error until a read succeeds,
+// or until nothing is left to read: then every value is known again without one.
+TEST_P(DiagnosisSim, AFailedReadNoLongerWantedLeavesNoError) {
+    const BusTiming& t = GetParam();
+    DiagnosisPlc plc(t, DiagnosisLayout{});
+    plc.Boot();
+    plc.SetPollMs(10);
+    plc.Diag()->TIMEOUT.value = TIME{0, 50'000'000};  // T#50MS
+    plc.Controller().SetSystemError(529);
+    plc.Diag()->ENABLE.value = TRUE;
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->SYSTEMERRORNUMBER.value == 529; }, 2 * CommandMs(t)));
+    plc.Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->ERROR.value != 0; }, 10 + 2 * 50 + CommandMs(t)));
+    EXPECT_EQ(plc.Diag()->ERRORID.value, 0x8001);  // PAC_LIB_ERR_ACK_TIMEOUT
+    EXPECT_FALSE(plc.Diag()->VALID.value);
+    plc.Controller().SetSystemError(0);
+    plc.Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->VALID.value != 0; }, 200 + 2 * CommandMs(t)));
+    EXPECT_FALSE(plc.Diag()->ERROR.value);
+    EXPECT_EQ(plc.Diag()->SYSTEMERRORNUMBER.value, 0);
+}
+
 TEST_P(DiagnosisSim, AControllerRestartIsAnErrorThenEveryValueIsReadAgain) {
     const BusTiming& t = GetParam();
     DiagnosisPlc plc(t, DiagnosisLayout{});
