@@ -205,6 +205,8 @@ TEST(ScenarioRunner, DiagnosisExampleReadsTheAxesThenTheSystemError) {
     EXPECT_GE(axesRead[1], 1);
     EXPECT_GE(axesRead[2], 1);
     EXPECT_GE(errorReads, 1);
+    EXPECT_NE(run.timeline.str().find("FB_PAC_Diagnosis on the CMD channel (Axes 2, PollTime 20 ms)"), std::string::npos)
+        << run.timeline.str();
 }
 
 TEST(ScenarioRunner, DiagnosisWithEveryValueInAModuleSendsNoCommand) {
