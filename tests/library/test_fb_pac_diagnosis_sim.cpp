@@ -305,6 +305,27 @@ TEST_P(DiagnosisSharing, AnotherCommandWaitsAtMostOneRead) {
     EXPECT_EQ(plc.Count(kGetIntReg, 3), 20);
     EXPECT_GE(plc.Count(kGetStatusAxis), 10) << "the diagnosis did not get its turns";
     EXPECT_EQ(plc.CountAll(), 20 + plc.Count(kGetStatusAxis));
+
+    // The CMD history: every command of both FBs, newest first, as the controller recognised them.
+    plc.Diag()->AXES.value = 0;  // nothing left to read; the FB still shows the history
+    plc.ScanMs(CommandMs(t));    // the read on its way ends
+    plc.Other()->PARAM.value = 7;
+    plc.Other()->EXECUTE.value = TRUE;
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Other()->DONE.value != 0; }, 2 * CommandMs(t)));
+    plc.Other()->EXECUTE.value = FALSE;
+    plc.Scan();
+    const auto& seen = plc.Seen();
+    ASSERT_GE(seen.size(), 16u);
+    EXPECT_EQ(plc.Diag()->HISTORYCOUNT.value, seen.size());
+    const auto& history = plc.Diag()->HISTORY.value.table;
+    EXPECT_EQ(history[0].CODE, kGetIntReg);
+    EXPECT_EQ(history[0].PARAM, 7);
+    EXPECT_EQ(history[0].ERRORID, 0);
+    for (std::size_t i = 0; i < 16; ++i) {
+        const auto& c = seen[seen.size() - 1 - i];
+        EXPECT_EQ(history[i].CODE, c.code) << "entry " << i;
+        EXPECT_EQ(history[i].PARAM, c.param) << "entry " << i;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(BusTimings, DiagnosisSharing,
