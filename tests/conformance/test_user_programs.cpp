@@ -120,6 +120,8 @@ TEST_F(UserProgram, StandardStringFunctions) {
     EXPECT_EQ(Text(prg.CUT.value), "pick");
     EXPECT_TRUE(prg.SAME.value);
     EXPECT_TRUE(prg.DIFFERS.value);
+    EXPECT_EQ(Text(prg.PIN.value), "pic") << "an FB's STRING(3) input keeps 3 characters";
+    EXPECT_EQ(Text(prg.OUT2.value), "pi") << "an output assigned with => to a STRING(2) keeps 2";
 }
 
 // The line of the first occurrence of `marker` in the ST file `name` of user/ (1-based).
