@@ -85,6 +85,11 @@ TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
     EXPECT_FALSE(Generated("Asserts.c")) << "the host implements a native FUNCTION";
 }
 
+std::string ReadFile(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 std::string TcObject(const std::string& element, const std::string& name, const std::string& declaration,
                      const std::string& body) {
     std::string text = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
@@ -102,9 +107,13 @@ const char* kTcMainDeclaration = "PROGRAM MAIN\r\nVAR\r\n  Count : INT; // TwinC
 TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     fs::create_directories(dir_ / "POUs");
     fs::create_directories(dir_ / "GVLs");
+    fs::create_directories(dir_ / "DUTs");
     auto list = Write("GVLs/GVL_Io.TcGVL",
                       TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n  MaxCount : INT := 3;\r\n"
-                                                "END_VAR\r\n", ""));
+                                                "  Where : ST_Point;\r\nEND_VAR\r\n", ""));
+    // TwinCAT writes END_STRUCT without ';'.
+    Write("DUTs/ST_Point.TcDUT", TcObject("DUT", "ST_Point", "TYPE ST_Point :\r\nSTRUCT\r\n  X : INT;\r\nEND_STRUCT\r\n"
+                                                            "END_TYPE\r\n", ""));
     // Line 11 of the file (the body's CDATA opens on line 10), column 12: the undeclared name.
     auto main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
                                                   "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Nope;\r\nEND_IF"));
@@ -113,12 +122,14 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     EXPECT_NE(result.output.find(main + ":11:12: error: undeclared name 'Nope'"), std::string::npos) << result.output;
 
     main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
-                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF"));
+                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF\r\n"
+                                             "GVL_Io.Where.X := Count;"));
     auto project = Write("Plant.plcproj",
                          "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
                          "<Project xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\r\n  <ItemGroup>\r\n"
                          "    <Compile Include=\"POUs\\MAIN.TcPOU\"><SubType>Code</SubType></Compile>\r\n"
                          "    <Compile Include=\"GVLs\\GVL_Io.TcGVL\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <Compile Include=\"DUTs\\ST_Point.TcDUT\"><SubType>Code</SubType></Compile>\r\n"
                          "    <None Include=\"PlcTask.TcTTO\"><SubType>Code</SubType></None>\r\n"
                          "  </ItemGroup>\r\n</Project>\r\n");
     result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), project});
@@ -127,6 +138,7 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     std::string text((std::istreambuf_iterator<char>(c)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("#line 10 \"" + fs::absolute(main).string() + "\""), std::string::npos) << text;
     EXPECT_TRUE(Generated("GVL_Io.c"));
+    EXPECT_NE(ReadFile(dir_ / "out" / "POUS.h").find("} ST_POINT;"), std::string::npos) << "the .TcDUT's STRUCT";
 }
 
 TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
@@ -180,10 +192,6 @@ END_IF;</xhtml></ST></body>
     EXPECT_NE(text.find("\"address\": \"%IB2\""), std::string::npos) << text;
 }
 
-std::string ReadFile(const fs::path& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 TEST_F(TranslatorUserCli, MatiecSourceHasTheConfigurationTasksAndExternals) {
     auto a = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\n  Image AT %IB0 : ARRAY [0..3] OF BYTE;\nEND_VAR\n");
