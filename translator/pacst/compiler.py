@@ -447,14 +447,14 @@ class Compiler:
                     raise self.err(dv.location, "located variables (AT %...) are declared in a global list or "
                                                 "in a PROGRAM's VAR (MATIEC)")
                 location = user.parse_location(self, dv.location, vtype)
-            v = self._declare_var(pou, section, constant, vtype, value, dv, located=True)
+            v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
             v.strlen = strlen
             user.check_string_init(self, v)
 
-    def _declare_var(self, pou, section, constant, vtype, value, dv, located=False):
+    def _declare_var(self, pou, section, constant, vtype, value, dv, may_be_located=False):
         """Check and add one variable of a POU."""
-        if located and _cls(dv) == "DeclaredVariable":
+        if may_be_located and _cls(dv) == "DeclaredVariable":
             token = dv.variable.name
             self._check_ident(token, "variable")
             name = _name(token)
