@@ -85,6 +85,19 @@ TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
     EXPECT_FALSE(Generated("Asserts.c")) << "the host implements a native FUNCTION";
 }
 
+TEST_F(TranslatorUserCli, LibraryConstantListIsAGlobalListOfUserPrograms) {
+    // As the library's GVL_PAC: checked against the POUs' own copies (--gvl) and read by the user's PROGRAM.
+    auto list = Write("GVL_K.st", "VAR_GLOBAL CONSTANT\n  K_STOP : WORD := WORD#16#0600;\nEND_VAR\n");
+    auto fb = Write("FB_Lib.st", "FUNCTION_BLOCK FB_Lib\nVAR_OUTPUT W : WORD; END_VAR\n"
+                                 "VAR CONSTANT K_STOP : WORD := WORD#16#0600; END_VAR\nW := K_STOP;\nEND_FUNCTION_BLOCK\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR A : WORD; B : WORD; END_VAR\nA := K_STOP;\n"
+                                     "B := GVL_K.K_STOP;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--gvl", list, "--out", Out(), list, fb, main});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(Generated("GVL_K.h")) << "the constants table";
+    EXPECT_TRUE(Generated("GVL_K.c")) << "the list's globals";
+}
+
 std::string ReadFile(const fs::path& path) {
     std::ifstream in(path);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
