@@ -63,6 +63,7 @@ TEST_F(UserProgram, GlobalsStartFromTheirInitialValues) {
     EXPECT_EQ(Text(GVL_PLANT__BANNER.value), "ready");
     EXPECT_EQ(GVL_PLANT__MODE.value, E_USERMODE__UM_IDLE);
     EXPECT_EQ(GVL_PLANT__RECIPE.value.SPEED, 50);  // the STRUCT's member default
+    EXPECT_EQ(Text(GVL_PLANT__RECIPE.value.TAGS.table[1]), "");
     EXPECT_EQ(GVL_HMI__CYCLES.value, -1);
     EXPECT_EQ(GVL_PLANT__MAX_CYCLES.value, 3u);
     EXPECT_EQ(Text(GVL_PLANT__GREETING.value), "hello");
