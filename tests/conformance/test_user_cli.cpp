@@ -20,6 +20,7 @@ protected:
     TranslatorUserCli() : TranslatorScratch("user_") {}
 };
 
+const char* kCounter = "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n";
 const char* kMain =
     "PROGRAM PRG_Main\n"
     "VAR N : INT; END_VAR\n"
@@ -67,7 +68,7 @@ TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable
         << result.output;
     EXPECT_NE(result.output.find(main + ":1:1: error: PROGRAM is outside the library's subset"), std::string::npos)
         << result.output;
-    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    auto fb = Write("FB_Counter.st", kCounter);
     ASSERT_EQ(RunTranslator({"build", "--out", Out(), fb}).exitCode, 0);
     EXPECT_FALSE(Generated("symbols.json"));
     ASSERT_EQ(RunTranslator({"build", "--user", "--out", Out(), fb}).exitCode, 0);
@@ -76,7 +77,7 @@ TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable
 
 TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
     auto native = Write("Asserts.st", "FUNCTION AssertTrue\nVAR_INPUT C : BOOL; END_VAR\n;\nEND_FUNCTION\n");
-    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    auto fb = Write("FB_Counter.st", kCounter);
     auto result = RunTranslator({"build", "--native", native, "--out", Out(), fb});
     EXPECT_NE(result.exitCode, 0);
     EXPECT_NE(result.output.find("need --user"), std::string::npos) << result.output;
@@ -89,7 +90,8 @@ TEST_F(TranslatorUserCli, LibraryConstantListIsAGlobalListOfUserPrograms) {
     // As the library's GVL_PAC: checked against the POUs' own copies (--gvl) and read by the user's PROGRAM.
     auto list = Write("GVL_K.st", "VAR_GLOBAL CONSTANT\n  K_STOP : WORD := WORD#16#0600;\nEND_VAR\n");
     auto fb = Write("FB_Lib.st", "FUNCTION_BLOCK FB_Lib\nVAR_OUTPUT W : WORD; END_VAR\n"
-                                 "VAR CONSTANT K_STOP : WORD := WORD#16#0600; END_VAR\nW := K_STOP;\nEND_FUNCTION_BLOCK\n");
+                                 "VAR CONSTANT K_STOP : WORD := WORD#16#0600; END_VAR\nW := K_STOP;\n"
+                                 "END_FUNCTION_BLOCK\n");
     auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR A : WORD; B : WORD; END_VAR\nA := K_STOP;\n"
                                      "B := GVL_K.K_STOP;\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--gvl", list, "--out", Out(), list, fb, main});
@@ -122,8 +124,8 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     fs::create_directories(dir_ / "GVLs");
     fs::create_directories(dir_ / "DUTs");
     auto list = Write("GVLs/GVL_Io.TcGVL",
-                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n  MaxCount : INT := 3;\r\n"
-                                                "  Where : ST_Point;\r\nEND_VAR\r\n", ""));
+                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n"
+                                                "  MaxCount : INT := 3;\r\n  Where : ST_Point;\r\nEND_VAR\r\n", ""));
     // TwinCAT writes END_STRUCT without ';'.
     Write("DUTs/ST_Point.TcDUT", TcObject("DUT", "ST_Point", "TYPE ST_Point :\r\nSTRUCT\r\n  X : INT;\r\nEND_STRUCT\r\n"
                                                             "END_TYPE\r\n", ""));
@@ -189,7 +191,9 @@ END_IF;</xhtml></ST></body>
   <addData><data name="http://www.3s-software.com/plcopenxml/globalvars" handleUnknown="implementation">
     <globalVars name="GVL_Io">
       <variable name="Start" address="%IX0.1"><type><BOOL/></type></variable>
-      <variable name="Image" address="%IB2"><type><array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array></type></variable>
+      <variable name="Image" address="%IB2"><type>
+        <array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array>
+      </type></variable>
     </globalVars>
   </data></addData>
 </project>

@@ -21,7 +21,8 @@ CORPORA = {
     "matiec verdicts": sorted(glob.glob(os.path.join(VERDICTS, "*.st"))),
     # User programs (pacst --user): PROGRAMs and VAR_EXTERNAL take the fast path; located variables,
     # inline arrays and sized STRINGs are Earley's.
-    "user programs": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "user", "**", "*.st"), recursive=True)),
+    "user programs": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "user", "**", "*.st"),
+                                      recursive=True)),
     "user refusals": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse_user", "*.st"))),
 }
 

@@ -6,8 +6,8 @@ MATIEC"): what TwinCAT and CODESYS allow and MATIEC does not is spelled MATIEC's
 - Every POU gets a VAR_EXTERNAL for each global it uses, and `List.Name` loses its `List.` (MATIEC has
   neither implicit global access nor list names).
 - Declarations are written again from what pacst compiled: located variables in VAR blocks of their own,
-  `STRING(n)` as STRING (MATIEC's STRING[n] does not work), an inline array as a named type (a global and its VAR_EXTERNAL must share
-  one type); bodies are copied as they are.
+  `STRING(n)` as STRING (MATIEC's STRING[n] does not work), an inline array as a named type (a global
+  and its VAR_EXTERNAL must share one type); bodies are copied as they are.
 """
 import json
 
