@@ -266,6 +266,10 @@ TEST_F(UserProgram, SymbolTableDescribesProgramsFunctionBlocksAndTypes) {
     EXPECT_EQ(ByKey(lamp.at("variables"), "name", "Enable").at("direction"), "input");
     EXPECT_EQ(ByKey(lamp.at("variables"), "name", "Count").at("direction"), "output");
     EXPECT_EQ(ByKey(lamp.at("externals"), "name", "LampOut").at("global"), "GVL_Plant.LampOut");
+    const auto& feedback = ByKey(lamp.at("variables"), "name", "Feedback").at("location");
+    EXPECT_EQ(feedback.at("address"), "%I*");
+    EXPECT_EQ(feedback.at("area"), "I");
+    EXPECT_TRUE(feedback.at("numbers").empty());
     EXPECT_EQ(ByKey(symbols.at("function_blocks"), "name", "TON").at("standard"), true);
 
     const auto& assertInt = ByKey(symbols.at("functions"), "name", "AssertEquals_INT");

@@ -70,7 +70,7 @@ class Corpus(unittest.TestCase):
 
     def test_user_programs_without_located_variables_take_the_fast_path(self):
         paths = [p for p in CORPORA["user programs"] if os.path.basename(p) in
-                 ("PRG_UserAsserts.st", "FB_UserLamp.st", "GVL_Hmi.st")]
+                 ("PRG_UserAsserts.st", "F_UserScale.st", "GVL_Hmi.st")]
         self.assertEqual(len(paths), 3)
         declined = [os.path.relpath(p, REPO) for p in paths if self.results[p][0] != "same"]
         self.assertEqual(declined, [])

@@ -454,9 +454,11 @@ class Compiler:
         for dv in item.variables:
             location = None
             if dv.location is not None:
-                if not pou.program or section != "var" or constant:
+                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
+                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
+                if not (pou.program or linked) or section != "var" or constant:
                     raise self.err(dv.location, "located variables (AT %...) are declared in a global list or "
-                                                "in a PROGRAM's VAR (MATIEC)")
+                                                "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
                 location = user.parse_location(self, dv.location, vtype)
             v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
