@@ -457,8 +457,9 @@ class Compiler:
                 # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
                 linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
                 if not (pou.program or linked) or section != "var" or constant:
-                    raise self.err(dv.location, "located variables (AT %...) are declared in a global list or "
-                                                "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
+                    # At the name: an `AT %I*` has no position of its own once read back from the parse cache.
+                    raise self.err(dv, "located variables (AT %...) are declared in a global list or "
+                                       "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
                 location = user.parse_location(self, dv.location, vtype)
             v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
