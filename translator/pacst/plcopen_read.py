@@ -13,29 +13,19 @@ from typing import Optional
 from lxml import etree
 
 from .errors import StError
+from .plcopen_names import ATTRIBUTES, CODESYS, GLOBAL_VARS, NS, POU_KEYWORDS, XHTML, q
 
 # CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
-NS = "http://www.plcopen.org/xml/tc6_0200"
-XHTML = "http://www.w3.org/1999/xhtml"
-_CODESYS = "http://www.3s-software.com/plcopenxml/"
-ATTRIBUTES = _CODESYS + "attributes"  # {attribute '...'} pragmas
-GLOBAL_VARS = _CODESYS + "globalvars"  # a global variable list outside any configuration
 # CODESYS's extensions of a POU that ST without METHODs and ACTIONs has no place for.
-_POU_EXTENSIONS = {_CODESYS + "method": "METHOD", _CODESYS + "property": "PROPERTY",
-                   _CODESYS + "action": "ACTION", _CODESYS + "transition": "TRANSITION"}
+_POU_EXTENSIONS = {CODESYS + "method": "METHOD", CODESYS + "property": "PROPERTY",
+                   CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
 
-POU_KEYWORDS = {"functionBlock": "FUNCTION_BLOCK", "function": "FUNCTION", "program": "PROGRAM"}
 # PLCopen's variable lists and the ST keyword that opens each.
 SECTION_KEYWORDS = {"inputVars": "VAR_INPUT", "outputVars": "VAR_OUTPUT", "inOutVars": "VAR_IN_OUT",
                     "localVars": "VAR", "tempVars": "VAR_TEMP", "externalVars": "VAR_EXTERNAL",
                     "globalVars": "VAR_GLOBAL"}
 _ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT", "UINT",
                "UDINT", "ULINT", "REAL", "LREAL", "TIME", "DATE", "DT", "TOD"}
-
-
-def q(tag):
-    """A tag in the TC6 namespace."""
-    return f"{{{NS}}}{tag}"
 
 
 class PlcopenReadError(Exception):

@@ -16,7 +16,7 @@ from lxml import etree
 
 from . import __version__
 from .model import AliasShape, EnumShape, StructShape
-from .plcopen_names import (ATTRIBUTES, BUILD_PROPERTIES, DISCARDED, ENUM_VALUE_DOCUMENTATION, GLOBAL_VARS,
+from pacst.plcopen_names import (ATTRIBUTES, BUILD_PROPERTIES, DISCARDED, ENUM_VALUE_DOCUMENTATION, GLOBAL_VARS,
                             LIBRARIES, NS, OBJECT_ID, PLAIN_TEXT, PROJECT_INFORMATION, PROJECT_STRUCTURE, XHTML, q)
 from .twincat import guid
 from .types import ArrayType, Derived, Elementary, StringType

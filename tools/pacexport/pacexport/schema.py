@@ -9,7 +9,7 @@ import os
 
 from lxml import etree
 
-from .plcopen_names import NS, SCHEMA_NS
+from pacst.plcopen_names import NS, SCHEMA_NS
 
 SCHEMA_FILE = ("data", "tc6", "tc6_xml_v201.xsd")
 

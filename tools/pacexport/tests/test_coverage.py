@@ -5,7 +5,7 @@ import unittest
 
 from lxml import etree
 
-from pacexport.plcopen_names import GLOBAL_VARS, q
+from pacst.plcopen_names import GLOBAL_VARS, q
 from pacexport.splitting import read_source
 from pacexport.twincat import relative_path
 from tests import support

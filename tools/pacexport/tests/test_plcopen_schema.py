@@ -3,7 +3,7 @@ import unittest
 
 from lxml import etree
 
-from pacexport.plcopen_names import NS, SCHEMA_NS, q
+from pacst.plcopen_names import NS, SCHEMA_NS, q
 from pacexport.schema import load_schema, schema_errors
 from tests import support
 

@@ -5,7 +5,7 @@ import unittest
 from lxml import etree
 
 from pacexport.compare import canonical_items, source_items
-from pacexport.plcopen_names import PLAIN_TEXT, XHTML, q
+from pacst.plcopen_names import PLAIN_TEXT, XHTML, q
 from pacst.plcopen_read import read_plcopen
 from tests import support
 

@@ -10,7 +10,7 @@ from pacexport.cli import export
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
-from pacexport.plcopen_names import ENUM_VALUE_DOCUMENTATION, OBJECT_ID, PLAIN_TEXT, PROJECT_STRUCTURE, XHTML, q
+from pacst.plcopen_names import ENUM_VALUE_DOCUMENTATION, OBJECT_ID, PLAIN_TEXT, PROJECT_STRUCTURE, XHTML, q
 from pacst.plcopen_read import read_plcopen
 from pacexport.schema import load_schema, schema_errors
 from pacexport.splitting import split_source

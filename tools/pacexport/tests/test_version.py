@@ -5,7 +5,7 @@ import unittest
 
 from lxml import etree
 
-from pacexport.plcopen_names import XHTML, q
+from pacst.plcopen_names import XHTML, q
 from pacexport.twincat import PRODUCT_VERSION
 from tests import support
 
