@@ -1,0 +1,171 @@
+"""The part of the host that knows the user's program, generated from pacst's symbol table (symbols.json)
+and the wiring file: program and test instances, the tasks, the copies between the bus and the user's
+images, the signals of the VCD. The rest of the host is fixed C++ (tools/pactest/host)."""
+import re
+
+from .wiring import WiringError
+
+_ELEMENTARY_KINDS = {"BOOL": "kBool", "BYTE": "kUnsigned", "WORD": "kUnsigned", "DWORD": "kUnsigned",
+                     "USINT": "kUnsigned", "UINT": "kUnsigned", "UDINT": "kUnsigned", "SINT": "kSigned",
+                     "INT": "kSigned", "DINT": "kSigned", "REAL": "kReal", "LREAL": "kLreal", "TIME": "kTime"}
+
+
+class Symbols:
+    def __init__(self, table):
+        self.table = table
+        self.globals = {g["path"].upper(): g for g in table["globals"]}
+        self.programs = {p["name"].upper(): p for p in table["programs"]}
+        self.fbs = {f["name"].upper(): f for f in table["function_blocks"] if not f.get("standard")}
+
+    def global_var(self, path, where):
+        found = self.globals.get(path.upper())
+        if found is None:
+            raise WiringError(where, f"no global variable {path} in the program (a GVL variable: LIST.NAME)")
+        return found
+
+    def located(self, area):
+        return [g for g in self.table["globals"] if g.get("location") and g["location"]["area"] == area]
+
+
+def _location_byte(g):
+    loc = g["location"]
+    if not loc["numbers"]:
+        return None
+    return loc["numbers"][0]
+
+
+def _copy_module(lines_in, lines_out, symbols, module, where, image_in_size, image_out_size):
+    """The C++ lines that copy `module` between the bus image and the user's variable or located image."""
+    offset, size = module.offset(None), module.size
+    for side, lines in (("in", lines_in), ("out", lines_out)):
+        target = module.image_in if side == "in" else module.image_out
+        path = f"{where}.{side}"
+        if target.startswith("%"):
+            start = int(target[3:])
+            image = "inImage" if side == "in" else "outImage"
+            limit = image_in_size if side == "in" else image_out_size
+            limit[0] = max(limit[0], start + size)
+            if side == "in":
+                lines.append(f"    std::memcpy({image} + {start}, fromPac + {offset}, {size});")
+            else:
+                lines.append(f"    std::memcpy(toPac + {offset}, {image} + {start}, {size});")
+        else:
+            g = symbols.global_var(target, path)
+            lines.append(f"    static_assert(sizeof {g['c_name']}.value == {size}, "
+                         f"\"{target} is not the {size} bytes of the {module.kind} module\");")
+            if side == "in":
+                lines.append(f"    std::memcpy(&{g['c_name']}.value, fromPac + {offset}, {size});")
+            else:
+                lines.append(f"    std::memcpy(toPac + {offset}, &{g['c_name']}.value, {size});")
+
+
+def _located_copies(symbols, copy_in, copy_out, image_in_size, image_out_size):
+    """Every located variable to and from the host's image of %I and %Q (little-endian, as the PLCs the
+    project runs on: TwinCAT and CODESYS on x86 and ARM)."""
+    for area, lines, size in (("I", copy_in, image_in_size), ("Q", copy_out, image_out_size)):
+        for g in symbols.located(area):
+            byte = _location_byte(g)
+            if byte is None:
+                continue
+            loc = g["location"]
+            image = "inImage" if area == "I" else "outImage"
+            if loc["size"] == "X":
+                bit = loc["numbers"][1] if len(loc["numbers"]) > 1 else 0
+                size[0] = max(size[0], byte + 1)
+                if area == "I":
+                    lines.append(f"    {g['c_name']}.value = (inImage[{byte}] >> {bit}) & 1;")
+                else:
+                    lines.append(f"    outImage[{byte}] = (outImage[{byte}] & ~(1u << {bit})) | "
+                                 f"(({g['c_name']}.value & 1u) << {bit});")
+                continue
+            if loc["size"] != "B":
+                # CODESYS numbers %IW and %ID by word and double word, TwinCAT by byte: rather than guess
+                # which the program was written for, pac-test asks for byte addresses.
+                raise WiringError(g["path"], f"located at {loc['address']}: pac-test copies byte (%IB, %QB) and "
+                                             "bit (%IX, %QX) addresses only; declare the image as bytes")
+            lines.append(f"    static_assert({byte} + sizeof {g['c_name']}.value <= 256, \"{g['path']} beyond %{area}B255\");")
+            if area == "I":
+                lines.append(f"    std::memcpy(&{g['c_name']}.value, {image} + {byte}, sizeof {g['c_name']}.value);")
+            else:
+                lines.append(f"    std::memcpy({image} + {byte}, &{g['c_name']}.value, sizeof {g['c_name']}.value);")
+
+
+def _signals(symbols, wanted):
+    """The VCD's signals: the globals and the programs' variables of elementary type (or those `wanted`
+    names, globs with *)."""
+    patterns = [re.compile("^" + re.escape(w).replace("\\*", ".*") + "$", re.I) for w in wanted]
+    out = []
+
+    def add(path, expr, vtype):
+        if vtype.get("kind") != "elementary" or vtype["name"] not in _ELEMENTARY_KINDS:
+            return
+        if patterns and not any(p.match(path) for p in patterns):
+            return
+        out.append(f"    {{\"{path}\", &{expr}, pactest::Signal::Kind::{_ELEMENTARY_KINDS[vtype['name']]}, "
+                   f"{vtype.get('size') or 1}}},")
+
+    for g in symbols.table["globals"]:
+        if not g.get("constant"):
+            add(g["path"], f"{g['c_name']}.value", g["type"])
+    for name, p in symbols.programs.items():
+        for v in p["variables"]:
+            if v.get("wrapped", True):
+                add(f"{p['name']}.{v['name']}", f"program_{p['c_type']}.{v['c_name']}.value", v["type"])
+    return out
+
+
+def generate(symbols, wiring, tests):
+    """The C++ source of the Project for `tests` (symbol table entries of FBs)."""
+    programs_used = []
+    task_lines = []
+    for i, task in enumerate(wiring.tasks):
+        calls = []
+        for j, name in enumerate(task["programs"]):
+            p = symbols.programs.get(name.upper())
+            if p is None:
+                raise WiringError(f"$.tasks[{i}].programs[{j}]", f"no PROGRAM {name} in the sources")
+            if p not in programs_used:
+                programs_used.append(p)
+            calls.append(f"Run_{p['c_type']}")
+        task_lines.append(f"    {{\"{task['name']}\", {task['cycle_ms']}, {{{', '.join(calls)}}}}},")
+    copy_in, copy_out = [], []
+    image_in, image_out = [0], [0]
+    for m in wiring.modules:
+        where = "$.bus." + (m.kind if m.kind != "axis" else f"axes[{m.number - 1}]")
+        _copy_module(copy_in, copy_out, symbols, m, where, image_in, image_out)
+    located_in, located_out = [], []
+    _located_copies(symbols, located_in, located_out, image_in, image_out)
+    out = ["// Generated by pac-test from the symbol table and the wiring file. Do not edit.",
+           "#include <cstdint>", "#include <cstring>", "", "#include \"POUS.h\"", "#include \"pactest_host.hpp\"",
+           "", "namespace {", ""]
+    # %IB0..%IB255 and %QB0..%QB255: the located images (the largest bus image is 112 bytes)
+    out.append("std::uint8_t inImage[256];")
+    out.append("std::uint8_t outImage[256];")
+    for p in programs_used:
+        out.append(f"{p['c_type']} program_{p['c_type']};")
+        out.append(f"void Run_{p['c_type']}() {{ {p['body']}(&program_{p['c_type']}); }}")
+    for t in tests:
+        out.append(f"{t['c_type']} test_{t['c_type']};")
+        out.append(f"void Test_{t['c_type']}() {{ {t['body']}(&test_{t['c_type']}); }}")
+    out += ["", "void Init() {"]
+    for gl in symbols.table["global_lists"]:
+        out.append(f"    {gl['init']}();")
+    for p in programs_used:
+        out.append(f"    std::memset(&program_{p['c_type']}, 0, sizeof program_{p['c_type']});")
+        out.append(f"    {p['init']}(&program_{p['c_type']}, 0);")
+    for t in tests:
+        out.append(f"    std::memset(&test_{t['c_type']}, 0, sizeof test_{t['c_type']});")
+        out.append(f"    {t['init']}(&test_{t['c_type']}, 0);")
+    out += ["}", "",
+            "void CopyIn(const std::uint8_t* fromPac, std::size_t bytes) {", "    (void)bytes;"] + copy_in + \
+        located_in + ["}", "", "void CopyOut(std::uint8_t* toPac, std::size_t bytes) {", "    (void)bytes;"] + \
+        located_out + copy_out + ["}", "", "}  // namespace", "",
+                                  "int main(int argc, char** argv) {", "    pactest::Project project;",
+                                  "    project.tasks = {"] + task_lines + ["    };", "    project.tests = {"]
+    first_task = wiring.tasks[0]["name"]
+    for t in tests:
+        out.append(f"        {{\"{t['name']}\", \"{first_task}\", Test_{t['c_type']}}},")
+    out += ["    };", "    project.init = Init;", "    project.copyIn = CopyIn;", "    project.copyOut = CopyOut;",
+            "    project.signals = {"] + _signals(symbols, wiring.signals) + \
+        ["    };", "    return pactest::Main(argc, argv, project);", "}", ""]
+    return "\n".join(out)
