@@ -97,12 +97,15 @@ def _signals(symbols, wanted):
     out = []
 
     def add(path, expr, vtype):
-        if vtype.get("kind") != "elementary" or vtype["name"] not in _ELEMENTARY_KINDS:
+        if vtype.get("kind") == "enum":  # as its value's number
+            kind = "kUnsigned"
+        elif vtype.get("kind") == "elementary" and vtype["name"] in _ELEMENTARY_KINDS:
+            kind = _ELEMENTARY_KINDS[vtype["name"]]
+        else:
             return
         if patterns and not any(p.match(path) for p in patterns):
             return
-        out.append(f"    {{\"{path}\", &{expr}, pactest::Signal::Kind::{_ELEMENTARY_KINDS[vtype['name']]}, "
-                   f"{vtype.get('size') or 1}}},")
+        out.append(f"        {{\"{path}\", &{expr}, pactest::Signal::Kind::{kind}, static_cast<int>(sizeof {expr})}},")
 
     for g in symbols.table["globals"]:
         if not g.get("constant"):
