@@ -19,7 +19,6 @@ namespace pac::scenario {
 
 namespace {
 
-
 TIME ToTime(int ms) {
     TIME time{};
     time.tv_sec = ms / 1000;

@@ -1,5 +1,7 @@
 #include "pactest_host.hpp"
 
+#include <dlfcn.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -33,6 +35,8 @@ struct Failure {
     std::int64_t scan = 0;
     nanoseconds time{0};
     std::string message;
+    std::string callerModule;   // the executable, for addr2line
+    std::uintptr_t callerOffset = 0;  // the caller's return address within it
 };
 
 // What one test did: the natives write it, Main reads it. One test per process, so one record.
@@ -104,7 +108,11 @@ void WriteResult(const std::string& path, const std::string& test, const TestRec
         const Failure& f = record.failures[i];
         out << (i ? ", " : "") << "{\"file\": " << JsonString(f.file) << ", \"line\": " << f.line
             << ", \"scan\": " << f.scan << ", \"time_ms\": " << Ms(f.time)
-            << ", \"message\": " << JsonString(f.message) << "}";
+            << ", \"message\": " << JsonString(f.message);
+        if (!f.callerModule.empty()) {
+            out << ", \"caller_module\": " << JsonString(f.callerModule) << ", \"caller_offset\": " << f.callerOffset;
+        }
+        out << "}";
     }
     out << "]}\n";
     if (!out) throw std::runtime_error("cannot write " + path);
@@ -248,11 +256,17 @@ int Run(const Options& options, const Project& project) {
 
 }  // namespace
 
-void RecordAssert(const char* file, int line, bool passed, const std::string& message) {
+void RecordAssert(const char* file, int line, bool passed, const std::string& message, const void* caller) {
     if (!running) return;
     ++running->asserts;
     if (passed || running->failures.size() >= kMaxFailures) return;
-    running->failures.push_back({file, line, running->scan, running->time, message});
+    Failure failure{file, line, running->scan, running->time, message, {}, 0};
+    Dl_info info{};
+    if (caller && dladdr(caller, &info) && info.dli_fname) {
+        failure.callerModule = info.dli_fname;
+        failure.callerOffset = reinterpret_cast<std::uintptr_t>(caller) - reinterpret_cast<std::uintptr_t>(info.dli_fbase);
+    }
+    running->failures.push_back(failure);
 }
 
 void RecordFinished() {

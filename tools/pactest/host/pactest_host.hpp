@@ -46,8 +46,10 @@ struct Project {
     std::vector<Signal> signals;
 };
 
-// The assert record the vocabulary's native functions write to (pactest_natives.cpp).
-void RecordAssert(const char* file, int line, bool passed, const std::string& message);
+// The assert record the vocabulary's native functions write to (pactest_natives.cpp). `caller`: the return
+// address into the POU that called the POU of the assert, for an assert inside the vocabulary's own FBs
+// (FB_AssertWithin): pac-test prints the line of the user's test that called it (addr2line).
+void RecordAssert(const char* file, int line, bool passed, const std::string& message, const void* caller = nullptr);
 void RecordFinished();
 
 // `host --scenario FILE --test NAME --time-limit-ms N --result FILE [--vcd FILE] [--base-cycle-ms N]`

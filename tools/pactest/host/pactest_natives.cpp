@@ -43,7 +43,9 @@ extern "C" {
 BOOL ASSERTTRUE(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL CONDITION, STRING MESSAGE) {
     (void)EN;
     Ok(__ENO);
-    pactest::RecordAssert(file__, line__, CONDITION != 0, Text(MESSAGE) + ": expected TRUE, got FALSE");
+    // FB_AssertWithin fails through here: the frame above its body is the user's test (frame pointers kept).
+    pactest::RecordAssert(file__, line__, CONDITION != 0, Text(MESSAGE) + ": expected TRUE, got FALSE",
+                          __builtin_return_address(1));
     return CONDITION;
 }
 

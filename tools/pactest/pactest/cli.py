@@ -43,6 +43,22 @@ def _where(path):
     return rel if not rel.startswith("..") else path
 
 
+def _caller_location(failure):
+    """For an assert inside the vocabulary's own FBs (FB_AssertWithin): the ST line of the user's test that
+    called the FB, from the return address the host recorded (addr2line reads the #line directives' DWARF
+    lines), or None."""
+    if "caller_module" not in failure or not os.path.abspath(failure["file"]).startswith(project.VOCABULARY + os.sep):
+        return None
+    try:
+        text = subprocess.run(["addr2line", "-e", failure["caller_module"], hex(failure["caller_offset"] - 1)],
+                              capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    where = text.split(" (")[0]
+    path, _, line = where.rpartition(":")
+    return (path, int(line)) if line.isdigit() and path and path != "??" else None
+
+
 def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     name = fb["name"]
     result = Result(name, name.upper() in wiring.expected_to_fail)
@@ -66,6 +82,9 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     result.asserts = data["asserts"]
     seen = {}
     for failure in data["failures"]:
+        caller = _caller_location(failure)
+        if caller:
+            failure["file"], failure["line"] = caller
         key = (failure["file"], failure["line"])
         if key in seen:
             seen[key][1] += 1
