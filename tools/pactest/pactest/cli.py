@@ -11,7 +11,7 @@ import subprocess
 import sys
 import time
 
-from . import build, coverage, junit, project
+from . import build, coverage, hostgen, junit, project
 from .wiring import Wiring, WiringError
 
 EXIT_PASSED, EXIT_FAILED, EXIT_REFUSED, EXIT_INTERNAL = 0, 1, 2, 3
@@ -133,6 +133,7 @@ def main(argv=None):
         pac = project.PacBuild(args.pac_build)
         host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs)
         symbols = host_build.translate()
+        hostgen.programs_of(symbols, wiring)
         tests = host_build.tests(symbols)
         if not tests:
             raise WiringError("$.tests", f"no test: no FUNCTION_BLOCK of the sources starts with {wiring.prefix}")
@@ -140,6 +141,7 @@ def main(argv=None):
             if name not in {t["name"].upper() for t in tests}:
                 raise WiringError("$.tests", f"{name} is named in the wiring file but is not a test")
         index, count = args.shard
+        tests = sorted(tests, key=lambda t: t["name"].upper())
         selected = [t for t in tests if shard_of(t["name"], count) == index - 1 and args.filter in t["name"]]
         if args.list:
             print("\n".join(t["name"] for t in selected))

@@ -117,16 +117,27 @@ def _signals(symbols, wanted):
     return out
 
 
-def generate(symbols, wiring, tests):
-    """The C++ source of the Project for `tests` (symbol table entries of FBs)."""
-    programs_used = []
-    task_lines = []
+def programs_of(symbols, wiring):
+    """Each task's programs (symbol table entries), in order; a name the sources lack is refused."""
+    tasks = []
     for i, task in enumerate(wiring.tasks):
-        calls = []
+        programs = []
         for j, name in enumerate(task["programs"]):
             p = symbols.programs.get(name.upper())
             if p is None:
                 raise WiringError(f"$.tasks[{i}].programs[{j}]", f"no PROGRAM {name} in the sources")
+            programs.append(p)
+        tasks.append(programs)
+    return tasks
+
+
+def generate(symbols, wiring, tests):
+    """The C++ source of the Project for `tests` (symbol table entries of FBs)."""
+    programs_used = []
+    task_lines = []
+    for task, programs in zip(wiring.tasks, programs_of(symbols, wiring)):
+        calls = []
+        for p in programs:
             if p not in programs_used:
                 programs_used.append(p)
             calls.append(f"Run_{p['c_type']}")
