@@ -101,7 +101,7 @@ class HostBuild:
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             objects = list(pool.map(lambda s: self._compile(s, s.endswith(".cpp")), c_files + cxx_files))
         linker = os.environ.get("CXX", "c++")
-        link_flags = (["--coverage"] if self.coverage else []) + \
+        link_flags = (["--coverage"] if self.coverage or self.pac.coverage else []) + \
             (["-fsanitize=address,undefined"] if self.pac.sanitize else [])
         _run([linker, *link_flags, "-o", self.exe, *objects, *self.pac.libraries, "-lm"], "linking the host")
         return self.exe
