@@ -16,6 +16,7 @@
 
 #include "controller_setup.hpp"
 #include "gvl_names.hpp"
+#include "pac/bench_trace.hpp"
 #include "pac/pac_plc_bench.hpp"
 #include "pac/trace_recorder.hpp"
 #include "pac/vcd_writer.hpp"
@@ -167,29 +168,9 @@ void AddSignal(pac::TraceRecorder& recorder, const Signal& s) {
     }
 }
 
-// The bus bytes of every module, both ways, and where each simulated axis really is.
-void AddBusSignals(pac::TraceRecorder& recorder, pac::PacPlcBench& plc) {
-    const auto& layout = plc.Layout();
-    auto module = [&](const std::string& scope, std::size_t offset, std::size_t bytes) {
-        for (std::size_t part = 0; part < bytes; part += 8) {
-            const std::size_t n = bytes - part < 8 ? bytes - part : 8;
-            const std::string suffix = bytes > 8 ? (part ? "_8_11" : "_0_7") : "";
-            recorder.AddBits(scope + ".ToPac" + suffix, static_cast<int>(n * 8), [&plc, offset, part, n] {
-                std::uint64_t bits = 0;
-                for (std::size_t i = 0; i < n; ++i) bits = (bits << 8) | plc.ToPac()[offset + part + i];
-                return bits;
-            });
-            recorder.AddBits(scope + ".FromPac" + suffix, static_cast<int>(n * 8), [&plc, offset, part, n] {
-                std::uint64_t bits = 0;
-                for (std::size_t i = 0; i < n; ++i) bits = (bits << 8) | plc.FromPac()[offset + part + i];
-                return bits;
-            });
-        }
-    };
-    module("bus.cmd", pac::sim::ModuleLayout::kCmdOffset, 8);
-    if (layout.ctrl) module("bus.ctrl", pac::sim::ModuleLayout::kCtrlOffset, 8);
-    for (int k = 1; k <= layout.axisModules; ++k) {
-        module("bus.axis" + std::to_string(k), layout.AxisOffset(k), 12);
+// Where each simulated axis really is (the bus modules are the rig's TraceBusModules).
+void AddAxisPositions(pac::TraceRecorder& recorder, pac::PacPlcBench& plc) {
+    for (int k = 1; k <= plc.Layout().axisModules; ++k) {
         recorder.AddReal("sim.axis" + std::to_string(k) + ".Position",
                          [&plc, k] { return plc.Controller().Axes().Motion(k).Position(); });
     }
@@ -230,7 +211,8 @@ int Run(const Options& options, const Project& project) {
     const bool tracing = !options.vcd.empty();
     if (tracing) {
         for (const auto& signal : project.signals) AddSignal(recorder, signal);
-        AddBusSignals(recorder, plc);
+        pac::TraceBusModules(recorder, plc);
+        AddAxisPositions(recorder, plc);
     }
     const nanoseconds limit = milliseconds(options.timeLimitMs);
     bool timedOut = false;

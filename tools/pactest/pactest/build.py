@@ -41,7 +41,9 @@ class HostBuild:
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
         files = project.library_sources() + project.vocabulary_sources() + self.wiring.sources
-        ordered = self._pacst("order", *files).split()
+        # a TwinCAT .plcproj stands for its objects, a PLCopen XML project for ST files written to `sources`
+        sources = ["--sources", os.path.join(self.out, "plcopen")]
+        ordered = self._pacst("order", "--user", *sources, *files).splitlines()
         natives = [a for f in project.native_sources() for a in ("--native", f)]
         self._pacst("build", "--user", "--line-directives", "--out", self.st_out, *natives,
                     "--gvl", project.gvl_pac(), *ordered)
@@ -58,10 +60,10 @@ class HostBuild:
                     raise BuildError(f"$.tests.names[{i}]: no FUNCTION_BLOCK {name} in the sources")
                 found.append(fb)
             return found
-        user_files = set(os.path.abspath(f) for f in self.wiring.sources)
+        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep)
         return [fb for fb in symbols.table["function_blocks"]
                 if not fb.get("standard") and fb["name"].upper().startswith(self.wiring.prefix.upper())
-                and os.path.abspath(fb.get("file") or "") in user_files]
+                and not os.path.abspath(fb.get("file") or "").startswith(theirs)]
 
     def _flags(self, cxx):
         flags = ["-g", "-fno-omit-frame-pointer"]
