@@ -149,7 +149,7 @@ class FixtureTest(unittest.TestCase):
 
     def test_a_test_that_never_finishes_fails_at_its_time_limit(self):
         self.assertEqual(self.messages("FB_TestNeverEnds"), {
-            self.at("FB_TestNeverEnds", "FUNCTION_BLOCK"): "the time limit of 300 ms ran out before TEST_FINISHED()"})
+            self.at("FB_TestNeverEnds", "FUNCTION_BLOCK FB_TestNeverEnds"): "the time limit of 300 ms ran out before TEST_FINISHED()"})
 
     def test_a_vcd_for_each_failing_test_only(self):
         self.assertEqual(sorted(os.listdir(os.path.join(self.out, "vcd"))),
