@@ -204,5 +204,26 @@ class WiringRefusalTest(unittest.TestCase):
                       self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
 
 
+class DocsCiJobsTest(unittest.TestCase):
+    """The CI snippets of docs/user_tests.md call pac-test with options it has: each command line, with the
+    CI system's shard variables filled in, lists the example's tests of that shard."""
+
+    def test_every_pac_test_line_of_the_yaml_blocks_runs(self):
+        with open(os.path.join(ROOT, "docs", "user_tests.md"), encoding="utf-8") as f:
+            blocks = re.findall(r"^```yaml\n(.*?)^```", f.read(), re.S | re.M)
+        commands = [line.split("pac-test", 1)[1] for block in blocks for line in block.splitlines()
+                    if re.search(r"bin/pac-test ", line)]
+        self.assertEqual(len(commands), 2, blocks)
+        wiring = os.path.join(ROOT, "examples", "pick_and_place", "wiring.json")
+        for command in commands:
+            args = command.replace("$CI_NODE_INDEX/$CI_NODE_TOTAL", "1/4").replace("${{ matrix.shard }}", "1").split()
+            self.assertEqual(args[0], "wiring.json")
+            run = pac_test(wiring, os.path.join(OUT, "pick_and_place_docs"), *args[1:], "--list", "--no-coverage")
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertEqual(run.stdout.split(), sorted(
+                n for n in ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
+                            "FB_TestShowsAFailure"] if shard_of(n, 4) == 0))
+
+
 if __name__ == "__main__":
     unittest.main()
