@@ -70,7 +70,7 @@ class HostBuild:
         if self.pac.sanitize:
             flags += ["-fsanitize=address,undefined", "-fno-sanitize-recover=undefined"]
         if cxx:
-            return flags + ["-std=c++17", "-O1"]
+            return flags + ["-std=c++17", "-O1", "-Wall", "-Wextra"]
         # the ST as the library's coverage build compiles it (cmake/PacCoverage.cmake)
         flags += ["-std=c99", "-fwrapv", "-w"]
         return flags + (["--coverage", "-O0", "-DPACST_NO_FORCING"] if self.coverage else ["-O1"])

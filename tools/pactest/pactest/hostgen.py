@@ -141,7 +141,7 @@ def generate(symbols, wiring, tests):
             if p not in programs_used:
                 programs_used.append(p)
             calls.append(f"Run_{p['c_type']}")
-        task_lines.append(f"    {{\"{task['name']}\", {task['cycle_ms']}, {{{', '.join(calls)}}}}},")
+        task_lines.append(f"        {{\"{task['name']}\", {task['cycle_ms']}, {{{', '.join(calls)}}}}},")
     copy_in, copy_out = [], []
     image_in, image_out = [0], [0]
     for m in wiring.modules:
@@ -176,9 +176,8 @@ def generate(symbols, wiring, tests):
         located_out + copy_out + ["}", "", "}  // namespace", "",
                                   "int main(int argc, char** argv) {", "    pactest::Project project;",
                                   "    project.tasks = {"] + task_lines + ["    };", "    project.tests = {"]
-    first_task = wiring.tasks[0]["name"]
     for t in tests:
-        out.append(f"        {{\"{t['name']}\", \"{first_task}\", Test_{t['c_type']}}},")
+        out.append(f"        {{\"{t['name']}\", \"{wiring.test_task}\", Test_{t['c_type']}}},")
     out += ["    };", "    project.init = Init;", "    project.copyIn = CopyIn;", "    project.copyOut = CopyOut;",
             "    project.signals = {"] + _signals(symbols, wiring.signals) + \
         ["    };", "    return pactest::Main(argc, argv, project);", "}", ""]

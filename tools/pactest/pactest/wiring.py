@@ -13,7 +13,7 @@ class WiringError(Exception):
 
 
 TOP_KEYS = {"name", "description", "sources", "tasks", "bus", "timing", "controller", "tests", "signals"}
-TEST_KEYS = {"prefix", "names", "time_limit_ms", "faults", "expected_to_fail"}
+TEST_KEYS = {"prefix", "names", "task", "time_limit_ms", "faults", "expected_to_fail"}
 FAULT_KEYS = {"at_ms", "fault", "link", "number", "input", "value", "note"}
 
 
@@ -86,6 +86,9 @@ class Wiring:
         tests = _object(data.get("tests", {}), "$.tests", TEST_KEYS)
         self.prefix = tests.get("prefix", "FB_Test")
         self.test_names = _names(tests.get("names", []), "$.tests.names")
+        self.test_task = tests.get("task", self.tasks[0]["name"])
+        if self.test_task not in [t["name"] for t in self.tasks]:
+            raise WiringError("$.tests.task", f"no task named {json.dumps(self.test_task)} in $.tasks")
         self.time_limit_ms = _int(tests.get("time_limit_ms", 10000), "$.tests.time_limit_ms", 1, 3600000)
         self.expected_to_fail = set(n.upper() for n in _names(tests.get("expected_to_fail", []), "$.tests.expected_to_fail"))
         self.faults = {}

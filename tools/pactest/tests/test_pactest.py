@@ -130,7 +130,7 @@ class FixtureTest(unittest.TestCase):
 
     def test_every_assert_passes_where_it_should(self):
         self.assertNotIn("FB_TestPasses", {f["test"] for f in self.failures})
-        self.assertRegex(self.result.stdout, r"ok  FB_TestPasses  \(14 asserts")
+        self.assertRegex(self.result.stdout, r"ok  FB_TestPasses  \(15 asserts")
 
     def test_failed_asserts_print_expected_and_actual_at_their_lines(self):
         self.assertEqual(self.messages("FB_TestFails"), {
@@ -190,6 +190,10 @@ class WiringRefusalTest(unittest.TestCase):
 
     def test_unknown_key(self):
         self.assertIn("$.taks: unknown key", self.refused(lambda d: d.update(taks=[])))
+
+    def test_unknown_test_task(self):
+        self.assertIn("$.tests.task: no task named \"Medium\"",
+                      self.refused(lambda d: d["tests"].update(task="Medium")))
 
     def test_unknown_program(self):
         self.assertIn("$.tasks[0].programs[0]: no PROGRAM PRG_Other",
