@@ -155,21 +155,17 @@ def generate(symbols, wiring, tests):
     # %IB0..%IB255 and %QB0..%QB255: the located images (the largest bus image is 112 bytes)
     out.append("std::uint8_t inImage[256];")
     out.append("std::uint8_t outImage[256];")
-    for p in programs_used:
-        out.append(f"{p['c_type']} program_{p['c_type']};")
-        out.append(f"void Run_{p['c_type']}() {{ {p['body']}(&program_{p['c_type']}); }}")
-    for t in tests:
-        out.append(f"{t['c_type']} test_{t['c_type']};")
-        out.append(f"void Test_{t['c_type']}() {{ {t['body']}(&test_{t['c_type']}); }}")
+    # program_X / test_X: each instance, Run_X / Test_X: its body for a task, and its init
+    instances = [("program", "Run", p) for p in programs_used] + [("test", "Test", t) for t in tests]
+    for kind, runner, pou in instances:
+        out.append(f"{pou['c_type']} {kind}_{pou['c_type']};")
+        out.append(f"void {runner}_{pou['c_type']}() {{ {pou['body']}(&{kind}_{pou['c_type']}); }}")
     out += ["", "void Init() {"]
     for gl in symbols.table["global_lists"]:
         out.append(f"    {gl['init']}();")
-    for p in programs_used:
-        out.append(f"    std::memset(&program_{p['c_type']}, 0, sizeof program_{p['c_type']});")
-        out.append(f"    {p['init']}(&program_{p['c_type']}, 0);")
-    for t in tests:
-        out.append(f"    std::memset(&test_{t['c_type']}, 0, sizeof test_{t['c_type']});")
-        out.append(f"    {t['init']}(&test_{t['c_type']}, 0);")
+    for kind, _, pou in instances:
+        out.append(f"    std::memset(&{kind}_{pou['c_type']}, 0, sizeof {kind}_{pou['c_type']});")
+        out.append(f"    {pou['init']}(&{kind}_{pou['c_type']}, 0);")
     out += ["}", "",
             "void CopyIn(const std::uint8_t* fromPac, std::size_t bytes) {", "    (void)bytes;"] + copy_in + \
         located_in + ["}", "", "void CopyOut(std::uint8_t* toPac, std::size_t bytes) {", "    (void)bytes;"] + \
