@@ -259,7 +259,7 @@ int Main(int argc, char** argv, const Project& project) {
     try {
         return Run(ParseOptions(argc, argv), project);
     } catch (const pac::scenario::ScenarioError& e) {
-        std::cerr << "pac-test host: invalid settings: " << e.what() << "\n";
+        std::cerr << e.Path() << ": " << e.Reason() << "\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "pac-test host: " << e.what() << "\n";

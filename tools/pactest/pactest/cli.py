@@ -7,12 +7,13 @@ import concurrent.futures
 import hashlib
 import json
 import os
+import shutil
 import subprocess
 import sys
 import time
 
 from . import build, coverage, hostgen, junit, project
-from .wiring import Wiring, WiringError
+from .wiring import Wiring, WiringError, wiring_path
 
 EXIT_PASSED, EXIT_FAILED, EXIT_REFUSED, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -36,6 +37,7 @@ class Result:
     def __init__(self, name, expected_to_fail):
         self.name, self.expected_to_fail = name, expected_to_fail
         self.outcome, self.lines, self.vcd, self.asserts, self.seconds = "error", [], None, 0, 0.0
+        self.host_exit, self.host_error = None, ""
 
 
 def _where(path):
@@ -65,6 +67,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     scenario = os.path.join(out, "scenarios", name + ".json")
     with open(scenario, "w", encoding="utf-8") as f:
         json.dump(wiring.scenario(name), f, indent=1)
+    step_paths = wiring.step_paths
     result_file = os.path.join(out, "results", name + ".json")
     vcd = os.path.join(vcd_dir, name + ".vcd")
     for stale in (result_file, vcd):
@@ -74,6 +77,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     run = subprocess.run([host, "--scenario", scenario, "--test", name, "--result", result_file, "--vcd", vcd,
                           "--time-limit-ms", str(time_limit_ms)], capture_output=True, text=True)
     result.seconds = time.monotonic() - start
+    result.host_exit, result.host_error = run.returncode, wiring_path(run.stderr.strip(), step_paths)
     if run.returncode not in (0, 1) or not os.path.exists(result_file):
         result.lines = [f"{name}: the host stopped with exit code {run.returncode}: {run.stderr.strip()}"]
         return result
@@ -126,8 +130,9 @@ def main(argv=None):
     args = parser.parse_args(argv)
     started = time.monotonic()
     out = os.path.abspath(args.out)
-    for sub in ("scenarios", "results", "vcd"):
-        os.makedirs(os.path.join(out, sub), exist_ok=True)
+    for sub in ("scenarios", "results", "vcd"):  # nothing of an earlier run's tests stays
+        shutil.rmtree(os.path.join(out, sub), ignore_errors=True)
+        os.makedirs(os.path.join(out, sub))
     try:
         wiring = Wiring(args.wiring)
         pac = project.PacBuild(args.pac_build)
@@ -160,6 +165,10 @@ def main(argv=None):
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms), selected))
     ran = time.monotonic()
+    refused = [r for r in results if r.host_exit == 2]
+    if refused:  # the scenario loader refused the wiring file's timing, controller or faults
+        print(f"pac-test: invalid wiring file {args.wiring}: {refused[0].host_error}", file=sys.stderr)
+        return EXIT_REFUSED
     for r in results:
         mark = {"passed": "ok", "failed": "FAILED", "error": "ERROR", "failed as expected": "failed (expected)",
                 "passed unexpectedly": "FAILED (expected to fail)"}[r.outcome]

@@ -12,6 +12,8 @@ HOST = os.path.join(ROOT, "tools", "pactest", "host")
 # simulator moved folders once; either build layout is found).
 LIBRARIES = [("pac_scenario_lib",), ("pac_names",), ("pac_rig", "pac_bench"), ("pac_st",), ("pac_sim",),
              ("pac_runtime",)]
+# Where a build tree keeps them (not below: build/ holds the other presets' trees, build/debug...).
+LIBRARY_DIRS = ["scenario", "runtime/names", "rig", "runtime/bench", "st", "sim", "runtime/sim", "runtime"]
 INCLUDES = ["runtime/include", "runtime/sim/include", "sim/include", "runtime/bench/include", "rig/include",
             "runtime/names/include", "scenario", "translator/pacst/include"]
 
@@ -55,7 +57,8 @@ class PacBuild:
         self.libraries = []
         missing = []
         for names in LIBRARIES:
-            found = [p for n in names for p in glob.glob(os.path.join(self.folder, "**", f"lib{n}.a"), recursive=True)]
+            found = [os.path.join(self.folder, d, f"lib{n}.a") for n in names for d in LIBRARY_DIRS
+                     if os.path.exists(os.path.join(self.folder, d, f"lib{n}.a"))]
             if found:
                 self.libraries.append(found[0])
             else:
@@ -63,9 +66,8 @@ class PacBuild:
         if missing:
             raise SystemExit(f"pac-test: {self.folder} lacks {', '.join(missing)}: build them first "
                              f"(cmake --build {self.folder} --target pac_scenario_lib)")
-        st_out = glob.glob(os.path.join(self.folder, "**", "pac_st.st-c", "POUS.h"), recursive=True)
-        self.library_c = os.path.dirname(st_out[0]) if st_out else None
-        if self.library_c is None:
+        self.library_c = os.path.join(self.folder, "st", "pac_st.st-c")
+        if not os.path.exists(os.path.join(self.library_c, "POUS.h")):
             raise SystemExit(f"pac-test: {self.folder} holds no translated library (pac_st.st-c): is it a pacst build?")
 
     def library_stems(self):

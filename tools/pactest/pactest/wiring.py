@@ -5,6 +5,7 @@ import glob
 import json
 import math
 import os
+import re
 
 
 class WiringError(Exception):
@@ -155,15 +156,26 @@ class Wiring:
         faults as wait and fault steps (the scenario loader checks them)."""
         timing = dict(self.timing, plc_cycle_ms=self.base_cycle_ms)
         steps, now = [], 0
-        for at, step in sorted(self.faults.get(test.upper(), []), key=lambda f: f[0]):
+        self.step_paths = {}  # the scenario's step index -> the fault's JSONPath in the wiring file
+        faults = self.faults.get(test.upper(), [])
+        for i, (at, step) in sorted(enumerate(faults), key=lambda f: f[1][0]):
             if at > now:
                 steps.append({"wait_ms": at - now})
                 now = at
+            self.step_paths[len(steps)] = f"$.tests.faults.{test}[{i}]"
             steps.append(step)
         steps.append({"wait_ms": 1})  # the format needs a step; the host ignores a last wait
         return {"name": test, "timing": timing, "controller": self.controller,
                 "modules": {"ctrl": any(m.kind == "ctrl" for m in self.modules), "axes": self.axes()},
                 "steps": steps}
+
+
+def wiring_path(message, step_paths):
+    """The scenario loader's refusal with the JSONPath of the wiring file: `$.steps[k]` is a test's fault."""
+    match = re.match(r"\$\.steps\[(\d+)\]", message)
+    if match and int(match.group(1)) in step_paths:
+        return step_paths[int(match.group(1))] + message[match.end():]
+    return message
 
 
 def _no_duplicates(pairs):

@@ -175,7 +175,7 @@ class FixtureTest(unittest.TestCase):
 class WiringRefusalTest(unittest.TestCase):
     """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
 
-    def refused(self, change):
+    def refused(self, change, listing=True):
         with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
             data = json.load(f)
         change(data)
@@ -184,7 +184,7 @@ class WiringRefusalTest(unittest.TestCase):
         data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
         with open(path, "w", encoding="utf-8") as f:
             json.dump(data, f)
-        run = pac_test(path, os.path.join(OUT, "refused"), "--no-coverage", "--list")
+        run = pac_test(path, os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         return run.stderr
 
@@ -194,6 +194,15 @@ class WiringRefusalTest(unittest.TestCase):
     def test_unknown_test_task(self):
         self.assertIn("$.tests.task: no task named \"Medium\"",
                       self.refused(lambda d: d["tests"].update(task="Medium")))
+
+    def test_controller_settings_are_the_scenario_loaders(self):
+        self.assertIn("$.controller.n_registers[\"2000\"]: out of range",
+                      self.refused(lambda d: d.update(controller={"n_registers": {"2000": 1}}), listing=False))
+
+    def test_a_fault_the_scenario_format_does_not_know(self):
+        self.assertIn("$.tests.faults.FB_TestPasses[1].fault: unknown fault \"melt_down\"",
+                      self.refused(lambda d: d["tests"].update(faults={"FB_TestPasses": [
+                          {"at_ms": 10, "fault": "power_cycle"}, {"at_ms": 5, "fault": "melt_down"}]}), listing=False))
 
     def test_unknown_program(self):
         self.assertIn("$.tasks[0].programs[0]: no PROGRAM PRG_Other",
