@@ -75,7 +75,8 @@ Options ParseOptions(int argc, char** argv) {
         else throw std::invalid_argument("unknown option " + arg);
     }
     if (options.scenario.empty() || options.test.empty() || options.result.empty()) {
-        throw std::invalid_argument("usage: host --scenario FILE --test NAME --result FILE [--vcd FILE] [--time-limit-ms N]");
+        throw std::invalid_argument(
+            "usage: host --scenario FILE --test NAME --result FILE [--vcd FILE] [--time-limit-ms N]");
     }
     return options;
 }
@@ -218,7 +219,9 @@ int Run(const Options& options, const Project& project) {
     bool timedOut = false;
     std::size_t next = 0;
     while (!record.finished) {
-        while (next < faults.size() && faults[next].at <= plc.Now()) pac::scenario::InjectFault(plc, faults[next++].fault);
+        while (next < faults.size() && faults[next].at <= plc.Now()) {
+            pac::scenario::InjectFault(plc, faults[next++].fault);
+        }
         if (plc.Now() >= limit) {
             timedOut = true;
             break;
@@ -246,7 +249,8 @@ void RecordAssert(const char* file, int line, bool passed, const std::string& me
     Dl_info info{};
     if (caller && dladdr(caller, &info) && info.dli_fname) {
         failure.callerModule = info.dli_fname;
-        failure.callerOffset = reinterpret_cast<std::uintptr_t>(caller) - reinterpret_cast<std::uintptr_t>(info.dli_fbase);
+        failure.callerOffset =
+            reinterpret_cast<std::uintptr_t>(caller) - reinterpret_cast<std::uintptr_t>(info.dli_fbase);
     }
     running->failures.push_back(failure);
 }

@@ -34,7 +34,9 @@ class HostBuild:
         self.exe = os.path.join(out, "pactest_host")
 
     def _pacst(self, *args):
-        env = dict(os.environ, PYTHONPATH=os.environ.get("PACTEST_TRANSLATOR_DEV", os.path.join(project.ROOT, "translator")))
+        # PACTEST_TRANSLATOR: another checkout's translator folder (to try a translator change on a project)
+        translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
+        env = dict(os.environ, PYTHONPATH=translator)
         cache = os.path.join(self.out, "pacst-cache")
         return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env)
 

@@ -99,7 +99,8 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
         result.lines.append(f"{_where(failure['file'])}:{failure['line']}: test {name}, scan {failure['scan']}, "
                             f"t={failure['time_ms']:g} ms: {failure['message']}{again}")
     if data["timed_out"]:
-        result.lines.append(f"{_where(fb.get('file') or '?')}:{fb.get('line') or 0}: test {name}, scan {data['scans']}, "
+        where = f"{_where(fb.get('file') or '?')}:{fb.get('line') or 0}"
+        result.lines.append(f"{where}: test {name}, scan {data['scans']}, "
                             f"t={data['time_ms']:g} ms: the time limit of {time_limit_ms} ms ran out before "
                             "TEST_FINISHED()")
     failed = bool(result.lines)

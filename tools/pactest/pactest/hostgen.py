@@ -83,7 +83,8 @@ def _located_copies(symbols, copy_in, copy_out, image_in_size, image_out_size):
                 # which the program was written for, pac-test asks for byte addresses.
                 raise WiringError(g["path"], f"located at {loc['address']}: pac-test copies byte (%IB, %QB) and "
                                              "bit (%IX, %QX) addresses only; declare the image as bytes")
-            lines.append(f"    static_assert({byte} + sizeof {g['c_name']}.value <= 256, \"{g['path']} beyond %{area}B255\");")
+            lines.append(f"    static_assert({byte} + sizeof {g['c_name']}.value <= 256, "
+                         f"\"{g['path']} beyond %{area}B255\");")
             if area == "I":
                 lines.append(f"    std::memcpy(&{g['c_name']}.value, {image} + {byte}, sizeof {g['c_name']}.value);")
             else:

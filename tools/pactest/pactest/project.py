@@ -50,7 +50,8 @@ class PacBuild:
         with open(cache, encoding="utf-8") as f:
             self.cache = dict(re.findall(r"^([A-Za-z_0-9]+):[A-Z]+=(.*)$", f.read(), re.M))
         if self.cache.get("PAC_ST_COMPILER", "pacst") != "pacst":
-            raise SystemExit(f"pac-test: {self.folder} is a MATIEC build: the host links pacst's library (use a pacst build)")
+            raise SystemExit(f"pac-test: {self.folder} is a MATIEC build: the host links pacst's library "
+                             "(use a pacst build)")
         # the library's objects carry gcov's counters in a coverage build: the host links with --coverage
         self.coverage = self.cache.get("PAC_COVERAGE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
         self.sanitize = self.cache.get("PAC_SANITIZE", "OFF").upper() in ("ON", "1", "TRUE", "YES")

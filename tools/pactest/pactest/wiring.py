@@ -91,7 +91,8 @@ class Wiring:
         if self.test_task not in [t["name"] for t in self.tasks]:
             raise WiringError("$.tests.task", f"no task named {json.dumps(self.test_task)} in $.tasks")
         self.time_limit_ms = _int(tests.get("time_limit_ms", 10000), "$.tests.time_limit_ms", 1, 3600000)
-        self.expected_to_fail = set(n.upper() for n in _names(tests.get("expected_to_fail", []), "$.tests.expected_to_fail"))
+        expected = _names(tests.get("expected_to_fail", []), "$.tests.expected_to_fail")
+        self.expected_to_fail = set(n.upper() for n in expected)
         self.faults = {}
         faults = _object(tests.get("faults", {}), "$.tests.faults", set(tests.get("faults", {})))
         for test, items in faults.items():
@@ -137,7 +138,8 @@ class Wiring:
         if not isinstance(axes, list) or len(axes) > 8:
             raise WiringError(f"{path}.axes", "expected an array of at most 8 axis modules")
         if axes and "ctrl" not in value:
-            raise WiringError(f"{path}.axes", "axis modules need the CTRL module (they follow it on the bus, manual 2.3)")
+            raise WiringError(f"{path}.axes",
+                              "axis modules need the CTRL module (they follow it on the bus, manual 2.3)")
         for k, axis in enumerate(axes, 1):
             modules.append(Module("axis", k, axis, f"{path}.axes[{k - 1}]"))
         return modules

@@ -19,7 +19,8 @@ from pactest.cli import shard_of  # noqa: E402
 
 PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
 OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
-FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), scan (?P<scan>\d+), t=(?P<t>[\d.]+) ms: (?P<msg>.*)$")
+FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), scan (?P<scan>\d+), "
+                     r"t=(?P<t>[\d.]+) ms: (?P<msg>.*)$")
 
 
 def pac_test(wiring, out, *args):
@@ -149,7 +150,8 @@ class FixtureTest(unittest.TestCase):
 
     def test_a_test_that_never_finishes_fails_at_its_time_limit(self):
         self.assertEqual(self.messages("FB_TestNeverEnds"), {
-            self.at("FB_TestNeverEnds", "FUNCTION_BLOCK FB_TestNeverEnds"): "the time limit of 300 ms ran out before TEST_FINISHED()"})
+            self.at("FB_TestNeverEnds", "FUNCTION_BLOCK FB_TestNeverEnds"):
+                "the time limit of 300 ms ran out before TEST_FINISHED()"})
 
     def test_a_vcd_for_each_failing_test_only(self):
         self.assertEqual(sorted(os.listdir(os.path.join(self.out, "vcd"))),
