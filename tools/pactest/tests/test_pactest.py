@@ -219,6 +219,53 @@ class WiringRefusalTest(unittest.TestCase):
                       self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
 
 
+def outcomes(stdout):
+    """{test: (mark, asserts, [(scan, t, message)...])}: what a run found, without where it found it."""
+    found = {}
+    for line in stdout.splitlines():
+        head = re.match(r"^\s*(ok|FAILED|failed \(expected\)|ERROR)  (\w+)  \((\d+) asserts", line)
+        if head:
+            found[head.group(2)] = (head.group(1), int(head.group(3)), [])
+    for f in failures(stdout):
+        found[f["test"]][2].append((f["scan"], f["t"], f["msg"]))
+    return found
+
+
+class PlcopenRoundTripTest(unittest.TestCase):
+    """The fixture exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS would
+    export a project, and read back by pac-test: the same tests end the same way, with the same failures
+    in the same scans (at the lines of the ST files pac-test extracts from the XML)."""
+
+    def test_same_results_from_the_plcopen_export(self):
+        folder = os.path.join(HERE, "fixture")
+        out = os.path.join(OUT, "roundtrip")
+        info = os.path.join(out, "library.json")
+        os.makedirs(out, exist_ok=True)
+        with open(info, "w", encoding="utf-8") as f:
+            json.dump({"name": "PacTestFixture", "title": "pac-test fixture", "version": "1.0.0",
+                       "released": "2026-12-02", "company": "PA-CONTROL PLC library contributors",
+                       "license": "MIT", "description": "pac-test's own test project"}, f)
+        sources = sorted(n for n in os.listdir(folder) if n.endswith(".st"))
+        python = os.path.join(PAC_BUILD, "venv-pacexport", "bin", "python")
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.path.join(ROOT, "tools", "pacexport"),
+                                                            os.path.join(ROOT, "translator")]))
+        export = subprocess.run([python, "-m", "pacexport", "export", "--library", info, "--out",
+                                 os.path.join(out, "export"), *sources], cwd=folder, env=env,
+                                capture_output=True, text=True)
+        self.assertEqual(export.returncode, 0, export.stderr)
+        with open(os.path.join(folder, "wiring.json"), encoding="utf-8") as f:
+            wiring = json.load(f)
+        wiring["sources"] = ["export/pactestfixture.xml"]
+        with open(os.path.join(out, "wiring.json"), "w", encoding="utf-8") as f:
+            json.dump(wiring, f)
+        from_st = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "st"), "--no-coverage")
+        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
+        self.assertEqual(from_xml.returncode, from_st.returncode, from_xml.stdout + from_xml.stderr)
+        self.assertEqual(len(outcomes(from_st.stdout)), 4, from_st.stdout)
+        self.assertEqual(sum(len(f) for _, _, f in outcomes(from_st.stdout).values()), 7, from_st.stdout)
+        self.assertEqual(outcomes(from_xml.stdout), outcomes(from_st.stdout))
+
+
 class DocsCiJobsTest(unittest.TestCase):
     """The CI snippets of docs/user_tests.md call pac-test with options it has: each command line, with the
     CI system's shard variables filled in, lists the example's tests of that shard."""
