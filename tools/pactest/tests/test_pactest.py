@@ -19,6 +19,7 @@ from pactest.cli import shard_of  # noqa: E402
 
 PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
 OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
+FIXTURE_TESTS = ["FB_TestBusByName", "FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses", "FB_TestWaitFails"]
 FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), scan (?P<scan>\d+), "
                      r"t=(?P<t>[\d.]+) ms: (?P<msg>.*)$")
 
@@ -126,8 +127,8 @@ class FixtureTest(unittest.TestCase):
 
     def test_exit_code_and_counts(self):
         self.assertEqual(self.result.returncode, 1, self.result.stdout + self.result.stderr)
-        self.assertIn("4 tests: 1 passed, 3 failed", self.result.stdout)
-        check_junit(self, os.path.join(self.out, "junit.xml"), tests=4, failed=3, skipped=0)
+        self.assertIn("5 tests: 2 passed, 3 failed", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=3, skipped=0)
 
     def test_every_assert_passes_where_it_should(self):
         self.assertNotIn("FB_TestPasses", {f["test"] for f in self.failures})
@@ -164,10 +165,9 @@ class FixtureTest(unittest.TestCase):
                            "--shard", f"{i}/3")
             self.assertEqual(run.returncode, 0, run.stderr)
             shard = run.stdout.split()
-            self.assertEqual(shard, sorted(n for n in ["FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses",
-                                                       "FB_TestWaitFails"] if shard_of(n, 3) == i - 1))
+            self.assertEqual(shard, [n for n in FIXTURE_TESTS if shard_of(n, 3) == i - 1])
             names += shard
-        self.assertEqual(sorted(names), ["FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses", "FB_TestWaitFails"])
+        self.assertEqual(sorted(names), FIXTURE_TESTS)
         # a test's shard is a function of its name alone: the same in any project, for every count
         self.assertEqual([shard_of("FB_TestPasses", n) for n in (1, 2, 3, 4)],
                          [int(__import__("hashlib").sha256(b"FB_TESTPASSES").hexdigest()[:8], 16) % n
@@ -261,7 +261,7 @@ class PlcopenRoundTripTest(unittest.TestCase):
         from_st = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "st"), "--no-coverage")
         from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
         self.assertEqual(from_xml.returncode, from_st.returncode, from_xml.stdout + from_xml.stderr)
-        self.assertEqual(len(outcomes(from_st.stdout)), 4, from_st.stdout)
+        self.assertEqual(sorted(outcomes(from_st.stdout)), FIXTURE_TESTS, from_st.stdout)
         self.assertEqual(sum(len(f) for _, _, f in outcomes(from_st.stdout).values()), 7, from_st.stdout)
         self.assertEqual(outcomes(from_xml.stdout), outcomes(from_st.stdout))
 
