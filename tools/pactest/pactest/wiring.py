@@ -45,7 +45,7 @@ class Module:
 
     def __init__(self, kind, number, value, path):
         _object(value, path, {"in", "out"})
-        self.kind, self.number = kind, number
+        self.kind, self.number, self.where = kind, number, path
         for side, prefix in (("in", "%IB"), ("out", "%QB")):
             if side not in value or not isinstance(value[side], str):
                 raise WiringError(f"{path}.{side}", "missing: the variable or located address of the image")
@@ -128,20 +128,32 @@ class Wiring:
         return tasks
 
     def _bus(self, value, path):
-        _object(value, path, {"cmd", "ctrl", "axes"})
+        _object(value, path, {"cmd", "ctrl", "axes", "automatic"})
         modules = []
         if "cmd" in value:
             modules.append(Module("cmd", 0, value["cmd"], f"{path}.cmd"))
         if "ctrl" in value:
             modules.append(Module("ctrl", 0, value["ctrl"], f"{path}.ctrl"))
-        axes = value.get("axes", [])
-        if not isinstance(axes, list) or len(axes) > 8:
-            raise WiringError(f"{path}.axes", "expected an array of at most 8 axis modules")
-        if axes and "ctrl" not in value:
+        # Axis module k is also AUTOMATIC module k (manual 2.6): one image, which the library's axis FB and
+        # FB_PAC_AutomaticModule share (AxisOwnsModule); `automatic` names it for a program in AUTOMATIC only.
+        views = {}
+        for kind in ("axes", "automatic"):
+            items = value.get(kind, [])
+            if not isinstance(items, list) or len(items) > 8:
+                raise WiringError(f"{path}.{kind}", "expected an array of at most 8 modules")
+            views[kind] = items
+        count = max(len(views["axes"]), len(views["automatic"]))
+        if count and "ctrl" not in value:
             raise WiringError(f"{path}.axes",
                               "axis modules need the CTRL module (they follow it on the bus, manual 2.3)")
-        for k, axis in enumerate(axes, 1):
-            modules.append(Module("axis", k, axis, f"{path}.axes[{k - 1}]"))
+        for k in range(1, count + 1):
+            axis = views["axes"][k - 1] if k <= len(views["axes"]) else None
+            auto = views["automatic"][k - 1] if k <= len(views["automatic"]) else None
+            if axis is not None and auto is not None and axis != auto:
+                raise WiringError(f"{path}.automatic[{k - 1}]", f"module {k} has one image: the same \"in\" and "
+                                  f"\"out\" as $.bus.axes[{k - 1}], or leave one of them out")
+            where = f"{path}.axes[{k - 1}]" if axis is not None else f"{path}.automatic[{k - 1}]"
+            modules.append(Module("axis", k, axis if axis is not None else auto, where))
         return modules
 
     def _fault(self, item, path):

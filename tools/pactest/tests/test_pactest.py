@@ -206,6 +206,12 @@ class WiringRefusalTest(unittest.TestCase):
                       self.refused(lambda d: d["tests"].update(faults={"FB_TestPasses": [
                           {"at_ms": 10, "fault": "power_cycle"}, {"at_ms": 5, "fault": "melt_down"}]}), listing=False))
 
+    def test_an_automatic_module_is_its_axis_modules_image(self):
+        self.assertIn("$.bus.automatic[0]: module 1 has one image",
+                      self.refused(lambda d: d.update(bus={"ctrl": {"in": "%IB8", "out": "%QB8"},
+                                                           "axes": [{"in": "%IB16", "out": "%QB16"}],
+                                                           "automatic": [{"in": "%IB40", "out": "%QB40"}]})))
+
     def test_unknown_program(self):
         self.assertIn("$.tasks[0].programs[0]: no PROGRAM PRG_Other",
                       self.refused(lambda d: d["tasks"][0].update(programs=["PRG_Other"])))
