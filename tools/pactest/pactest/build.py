@@ -81,10 +81,13 @@ class HostBuild:
         compiler = os.environ.get("CXX" if cxx else "CC", "c++" if cxx else "cc")
         includes = [self.st_out, project.HOST] + self.pac.include_dirs() + [self.pac.library_c]
         command = [compiler, *self._flags(cxx), *[f"-I{d}" for d in includes], "-c", source]
-        key = hashlib.sha1(" ".join(command).encode()).hexdigest()[:10]
+        # Every file includes POUS.h, which changes with any interface (an FB's pins move every caller's
+        # struct offsets) while pacst leaves the text of an unchanged caller's C alone: POUS.h is in the key.
+        with open(os.path.join(self.st_out, "POUS.h"), "rb") as f:
+            declarations = f.read()
+        key = hashlib.sha1(" ".join(command).encode() + declarations).hexdigest()[:10]
         obj = os.path.join(self.obj, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
-        if os.path.exists(obj) and os.path.getmtime(obj) >= os.path.getmtime(source) and \
-                (not cxx or os.path.getmtime(obj) >= os.path.getmtime(os.path.join(self.st_out, "POUS.h"))):
+        if os.path.exists(obj) and os.path.getmtime(obj) >= os.path.getmtime(source):
             return obj
         launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
         _run(launcher + command + ["-o", obj], f"compiling {os.path.basename(source)}")

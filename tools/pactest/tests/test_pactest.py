@@ -174,6 +174,54 @@ class FixtureTest(unittest.TestCase):
                           for n in (1, 2, 3, 4)])
 
 
+COUNTER = """(* SPDX-License-Identifier: MIT *)
+(* Counts its calls. *)
+FUNCTION_BLOCK FB_Counter
+VAR_INPUT
+{extra}  Step : DINT;  (* added per call *)
+END_VAR
+VAR_OUTPUT
+  N : DINT;  (* the sum *)
+END_VAR
+N := N + Step;
+END_FUNCTION_BLOCK
+"""
+COUNTER_TEST = """(* SPDX-License-Identifier: MIT *)
+(* FB_Counter called from another file. *)
+FUNCTION_BLOCK FB_TestCounter
+VAR
+  Count : FB_Counter;
+END_VAR
+Count(Step := 2);
+IF GVL_Plant.Scans = DINT#3 THEN
+  AssertEquals_DINT(Expected := 6, Actual := Count.N, Message := 'three calls of 2');
+  TEST_FINISHED();
+END_IF;
+END_FUNCTION_BLOCK
+"""
+
+
+class RebuildTest(unittest.TestCase):
+    """A second run after an FB's interface changed rebuilds its callers too, whose C text pacst leaves as
+    it was: their objects would read the FB's old layout."""
+
+    def test_an_interface_change_rebuilds_the_callers(self):
+        folder = os.path.join(OUT, "rebuild", "src")
+        os.makedirs(folder, exist_ok=True)
+        for name in ("GVL_Plant.st", "PRG_Count.st", "PRG_Slow.st", "wiring.json"):
+            with open(os.path.join(HERE, "fixture", name), encoding="utf-8") as f, \
+                    open(os.path.join(folder, name), "w", encoding="utf-8") as g:
+                g.write(f.read())
+        with open(os.path.join(folder, "FB_TestCounter.st"), "w", encoding="utf-8") as f:
+            f.write(COUNTER_TEST)
+        for extra in ("", "  Spare1 : DINT;  (* moves Step and N *)\n  Spare2 : LREAL;  (* and more *)\n"):
+            with open(os.path.join(folder, "FB_Counter.st"), "w", encoding="utf-8") as f:
+                f.write(COUNTER.format(extra=extra))
+            run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(OUT, "rebuild", "out"), "--no-coverage")
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertIn("ok  FB_TestCounter  (1 asserts", run.stdout)
+
+
 class WiringRefusalTest(unittest.TestCase):
     """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
 
