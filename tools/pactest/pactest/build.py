@@ -107,6 +107,11 @@ class HostBuild:
                      os.path.join(project.HOST, "pactest_natives.cpp")]
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             objects = list(pool.map(lambda s: self._compile(s, s.endswith(".cpp")), c_files + cxx_files))
+        # An earlier build's objects (another key) would add their old lines to the coverage counts.
+        keep = {os.path.splitext(o)[0] for o in objects}
+        for name in os.listdir(self.obj):
+            if os.path.splitext(os.path.join(self.obj, name))[0] not in keep:
+                os.remove(os.path.join(self.obj, name))
         linker = os.environ.get("CXX", "c++")
         link_flags = (["--coverage"] if self.coverage or self.pac.coverage else []) + \
             (["-fsanitize=address,undefined"] if self.pac.sanitize else [])

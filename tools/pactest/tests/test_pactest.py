@@ -64,7 +64,7 @@ def check_vcd(case, path):
 
 
 class ExampleTest(unittest.TestCase):
-    """examples/pick_and_place: three tests pass, the deliberate failure fails as expected and shows its
+    """examples/pick_and_place: four tests pass, the deliberate failure fails as expected and shows its
     file:line, a VCD and a JUnit XML that validates; the coverage table of its ST is printed."""
 
     @classmethod
@@ -75,7 +75,7 @@ class ExampleTest(unittest.TestCase):
 
     def test_passes_with_the_deliberate_failure_outside_the_count(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
-        self.assertIn("3 passed, 0 failed, 1 failed as expected", self.result.stdout)
+        self.assertIn("5 tests: 4 passed, 0 failed, 1 failed as expected", self.result.stdout)
 
     def test_the_deliberate_failure_names_the_assert_line_scan_and_time(self):
         found = [f for f in failures(self.result.stdout) if f["test"] == "FB_TestShowsAFailure"]
@@ -94,7 +94,7 @@ class ExampleTest(unittest.TestCase):
         self.assertEqual(sorted(os.listdir(os.path.join(self.out, "vcd"))), ["FB_TestShowsAFailure.vcd"])
 
     def test_junit_xml_validates(self):
-        check_junit(self, os.path.join(self.out, "junit.xml"), tests=4, failed=0, skipped=1)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=0, skipped=1)
 
     def test_coverage_table_of_the_machine_program(self):
         self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
@@ -203,7 +203,8 @@ END_FUNCTION_BLOCK
 
 class RebuildTest(unittest.TestCase):
     """A second run after an FB's interface changed rebuilds its callers too, whose C text pacst leaves as
-    it was: their objects would read the FB's old layout."""
+    it was: their objects would read the FB's old layout; and the first build's objects leave no lines in
+    the coverage."""
 
     def test_an_interface_change_rebuilds_the_callers(self):
         folder = os.path.join(OUT, "rebuild", "src")
@@ -214,12 +215,22 @@ class RebuildTest(unittest.TestCase):
                 g.write(f.read())
         with open(os.path.join(folder, "FB_TestCounter.st"), "w", encoding="utf-8") as f:
             f.write(COUNTER_TEST)
+        body_lines = []
         for extra in ("", "  Spare1 : DINT;  (* moves Step and N *)\n  Spare2 : LREAL;  (* and more *)\n"):
+            text = COUNTER.format(extra=extra)
             with open(os.path.join(folder, "FB_Counter.st"), "w", encoding="utf-8") as f:
-                f.write(COUNTER.format(extra=extra))
-            run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(OUT, "rebuild", "out"), "--no-coverage")
+                f.write(text)
+            body_lines.append(text.splitlines().index("N := N + Step;") + 1)
+            out = os.path.join(OUT, "rebuild", "out")
+            run = pac_test(os.path.join(folder, "wiring.json"), out)
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
             self.assertIn("ok  FB_TestCounter  (1 asserts", run.stdout)
+        # the coverage counts the new build's lines only, not the first build's objects' as well
+        with open(os.path.join(out, "coverage", "gcovr.json"), encoding="utf-8") as f:
+            files = {os.path.basename(e["file"]): e for e in json.load(f)["files"]}
+        lines = {line["line_number"] for line in files["FB_Counter.st"]["lines"]}
+        self.assertIn(body_lines[1], lines)
+        self.assertNotIn(body_lines[0], lines)
 
 
 class WiringRefusalTest(unittest.TestCase):
@@ -338,7 +349,7 @@ class DocsCiJobsTest(unittest.TestCase):
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
             self.assertEqual(run.stdout.split(), sorted(
                 n for n in ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
-                            "FB_TestShowsAFailure"] if shard_of(n, 4) == 0))
+                            "FB_TestShowsAFailure", "FB_TestStopInput"] if shard_of(n, 4) == 0))
 
 
 if __name__ == "__main__":
