@@ -24,8 +24,8 @@ def _run(command, what, env=None):
 
 
 class HostBuild:
-    def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None):
-        self.wiring, self.pac, self.out = wiring, pac_build, out
+    def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
+        self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
         self.coverage, self.jobs = coverage, jobs or os.cpu_count() or 1
         venv_python = os.path.join(project.ROOT, "build", "venv", "bin", "python")
         self.pacst_python = pacst_python or (venv_python if os.path.exists(venv_python) else sys.executable)
@@ -37,7 +37,7 @@ class HostBuild:
         # PACTEST_TRANSLATOR: another checkout's translator folder (to try a translator change on a project)
         translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
         env = dict(os.environ, PYTHONPATH=translator)
-        cache = os.path.join(self.out, "pacst-cache")
+        cache = self.parse_cache or os.path.join(self.out, "pacst-cache")
         return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env)
 
     def translate(self):

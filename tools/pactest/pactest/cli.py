@@ -127,6 +127,7 @@ def main(argv=None):
     parser.add_argument("--filter", default="", help="run only the tests whose name contains this text")
     parser.add_argument("--no-coverage", action="store_true", help="no instrumentation, no coverage table")
     parser.add_argument("--list", action="store_true", help="print the tests of this shard and stop")
+    parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache)")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
     args = parser.parse_args(argv)
     started = time.monotonic()
@@ -137,7 +138,8 @@ def main(argv=None):
     try:
         wiring = Wiring(args.wiring)
         pac = project.PacBuild(args.pac_build)
-        host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs)
+        host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs,
+                                     parse_cache=args.parse_cache)
         symbols = host_build.translate()
         hostgen.programs_of(symbols, wiring)
         tests = host_build.tests(symbols)

@@ -26,7 +26,10 @@ FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), sca
 
 def pac_test(wiring, out, *args):
     env = dict(os.environ, PYTHONPATH=TOOL)
-    return subprocess.run([sys.executable, "-m", "pactest", wiring, "--pac-build", PAC_BUILD, "--out", out, *args],
+    # one parse cache for every run: each parses the library, and a cold parse costs most of a run
+    cache = os.path.join(OUT, "pacst-cache")
+    return subprocess.run([sys.executable, "-m", "pactest", wiring, "--pac-build", PAC_BUILD, "--out", out,
+                           "--parse-cache", cache, *args],
                           capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
 
 
