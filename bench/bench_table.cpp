@@ -110,7 +110,7 @@ int PrintSideBySide() {
     for (int plcMs : {1, 2, 5}) {
         for (int pacMs : {1, 3, 10}) {
             for (int latency : {0, 2}) {
-                pac::PlcBenchTiming timing;
+                pac::RigTiming timing;
                 timing.plcCycle = milliseconds(plcMs);
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;
@@ -286,7 +286,7 @@ LatencyRow OverTimings(int latency, const Measure& measure) {
     LatencyRow all;
     for (int plcMs : {1, 2, 5, 10}) {
         for (int pacMs : {1, 3, 10}) {
-            pac::PlcBenchTiming timing;
+            pac::RigTiming timing;
             timing.plcCycle = milliseconds(plcMs);
             timing.pacCycle = milliseconds(pacMs);
             timing.latencyCycles = latency;
@@ -312,14 +312,14 @@ int PrintLatency() {
                 "|---|---:|---:|---:|---:|---:|\n");
     int late = 0;
     for (int latency = 0; latency <= 3; ++latency) {
-        const LatencyRow row = OverTimings(latency, [](const pac::PlcBenchTiming& t) { return MeasureCmd(t, 200); });
+        const LatencyRow row = OverTimings(latency, [](const pac::RigTiming& t) { return MeasureCmd(t, 200); });
         late += row.aboveMinimum;
         PrintLatencyRow("FB_PAC_Cmd", latency, row);
     }
     for (int fbs : {2, 4, 8}) {
         for (int latency : {0, 2}) {
             const LatencyRow row =
-                OverTimings(latency, [fbs](const pac::PlcBenchTiming& t) { return MeasureShared(t, fbs, 20); });
+                OverTimings(latency, [fbs](const pac::RigTiming& t) { return MeasureShared(t, fbs, 20); });
             late += row.aboveMinimum;
             PrintLatencyRow(std::to_string(fbs) + " element FBs, shared", latency, row);
         }
@@ -345,7 +345,7 @@ int PrintSharedRate() {
     for (int pacMs : {1, 3, 10}) {
         double single = 0;
         for (int fbs : {1, 2, 4, 8}) {
-            pac::PlcBenchTiming timing;
+            pac::RigTiming timing;
             timing.pacCycle = milliseconds(pacMs);
             const SharedRate rate = MeasureSharedRate(timing, fbs, kScans);
             if (fbs == 1) single = rate.commandsPerSecond;

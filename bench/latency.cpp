@@ -27,8 +27,8 @@ void LatencyRow::Merge(const LatencyRow& other) {
     aboveMinimum += other.aboveMinimum;
 }
 
-LatencyRow MeasureCmd(const pac::PlcBenchTiming& timing, int commands) {
-    pac::PacPlcBench plc(timing);
+LatencyRow MeasureCmd(const pac::RigTiming& timing, int commands) {
+    pac::PacRig plc(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
     plc.Call(cmd);
     plc.Start();
@@ -75,7 +75,7 @@ private:
 
 // The fewest scans for commands sent one after the other from `edge`, each in the scan that shows the one
 // before it acknowledged.
-int ChainedMinimum(const pac::PacPlcBench& plc, std::chrono::nanoseconds edge, int commands) {
+int ChainedMinimum(const pac::PacRig& plc, std::chrono::nanoseconds edge, int commands) {
     int total = 0;
     for (int i = 0; i < commands; ++i) {
         const int scans = plc.ProtocolMinimumScans(edge);
@@ -87,7 +87,7 @@ int ChainedMinimum(const pac::PacPlcBench& plc, std::chrono::nanoseconds edge, i
 
 // `fbs` element FBs on `plc`'s CMD interface, FB_PAC_WriteIntReg and FB_PAC_ReadIntReg in turn, each read
 // after the write of its register.
-std::vector<std::unique_ptr<SharedFb>> SharedFbs(pac::PacPlcBench& plc, int fbs) {
+std::vector<std::unique_ptr<SharedFb>> SharedFbs(pac::PacRig& plc, int fbs) {
     std::vector<std::unique_ptr<SharedFb>> shared;
     for (int i = 0; i < fbs; ++i) {
         const UINT number = static_cast<UINT>(1 + i / 2);
@@ -106,8 +106,8 @@ std::vector<std::unique_ptr<SharedFb>> SharedFbs(pac::PacPlcBench& plc, int fbs)
 
 }  // namespace
 
-LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds) {
-    pac::PacPlcBench plc(timing);
+LatencyRow MeasureShared(const pac::RigTiming& timing, int fbs, int rounds) {
+    pac::PacRig plc(timing);
     const auto shared = SharedFbs(plc, fbs);
     plc.Start();
     plc.Scan(3);
@@ -128,8 +128,8 @@ LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds)
     return row;
 }
 
-SharedRate MeasureSharedRate(const pac::PlcBenchTiming& timing, int fbs, int scans) {
-    pac::PacPlcBench plc(timing);
+SharedRate MeasureSharedRate(const pac::RigTiming& timing, int fbs, int scans) {
+    pac::PacRig plc(timing);
     const auto shared = SharedFbs(plc, fbs);
     std::vector<long> done(shared.size(), 0);
     std::vector<bool> execute(shared.size(), false);

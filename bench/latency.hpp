@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 
 namespace pac::bench {
 
@@ -22,12 +22,12 @@ struct LatencyRow {
 
 // FB_PAC_Cmd: `commands` commands one after the other on `timing`, the Execute edge at varying phases
 // against the controller's cycle.
-LatencyRow MeasureCmd(const pac::PlcBenchTiming& timing, int commands);
+LatencyRow MeasureCmd(const pac::RigTiming& timing, int commands);
 
 // `fbs` element FBs (FB_PAC_WriteIntReg and FB_PAC_ReadIntReg in turn) on one CMD interface, all started
 // in the same scan, `rounds` times: scans until the last one is Done, against the sum of the protocol
 // minima of the commands one after the other (each goes out in the scan that shows the one before it done).
-LatencyRow MeasureShared(const pac::PlcBenchTiming& timing, int fbs, int rounds);
+LatencyRow MeasureShared(const pac::RigTiming& timing, int fbs, int rounds);
 
 // Commands per simulated second through one CMD interface shared by `fbs` element FBs (FB_PAC_WriteIntReg
 // and FB_PAC_ReadIntReg in turn), each sending its next command as soon as its last one is final (Execute
@@ -39,6 +39,6 @@ struct SharedRate {
     long mostPerFb = 0;
     long errors = 0;
 };
-SharedRate MeasureSharedRate(const pac::PlcBenchTiming& timing, int fbs, int scans);
+SharedRate MeasureSharedRate(const pac::RigTiming& timing, int fbs, int scans);
 
 }  // namespace pac::bench

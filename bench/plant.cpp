@@ -14,8 +14,8 @@ constexpr WORD kReadIntReg = 0x1906;   // cmd_get_int_reg (5.2.4.12)
 constexpr float kTargetA = 0.0F;
 constexpr float kTargetB = 20.0F;
 
-pac::PlcBenchTiming TimingOf(const PlantOptions& o) {
-    pac::PlcBenchTiming timing;
+pac::RigTiming TimingOf(const PlantOptions& o) {
+    pac::RigTiming timing;
     timing.plcCycle = o.plcCycle;
     timing.pacCycle = o.pacCycle;
     return timing;

@@ -1,4 +1,4 @@
-// Benchmark (not a test): one PA-CONTROL with its CMD, CTRL and axis modules on a pac::PacPlcBench, the
+// Benchmark (not a test): one PA-CONTROL with its CMD, CTRL and axis modules on a pac::PacRig, the
 // library's FB_PAC_Cmd, FB_PAC_Ctrl and one FB_PAC_Axis per axis module on them, and an application program
 // that runs in the scans like a PLC program: it brings the controller to ONLINE through FB_PAC_Ctrl, then
 // keeps the FBs busy: FB_PAC_Cmd writes and reads a register over and over, each axis moves back and forth
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/st_program.hpp"
 
 namespace pac::bench {
@@ -45,7 +45,7 @@ public:
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
     pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::FbInstance<FB_PAC_AXIS>& Axis(int k) { return *axes_.at(static_cast<std::size_t>(k - 1)); }
-    pac::PacPlcBench& Plc() { return plc_; }
+    pac::PacRig& Plc() { return plc_; }
     // Jobs that ended with Done since construction: commands and axis moves.
     long CommandsDone() const { return commandsDone_; }
     long MovesDone() const { return movesDone_; }
@@ -59,7 +59,7 @@ private:
     int ScansFor(std::chrono::milliseconds time) const;
 
     PlantOptions options_;
-    pac::PacPlcBench plc_;
+    pac::PacRig plc_;
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<pac::FbInstance<FB_PAC_AXIS>>> axes_;

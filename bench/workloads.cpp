@@ -16,7 +16,7 @@
 #endif
 
 #include "cmd_handshake.h"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/sim/automatic_program.hpp"
 #include "plant.hpp"
 
@@ -62,7 +62,7 @@ void CycleCommand(CommandInputs& in, bool done, bool error) {
 using JobProgram = void (*)(CommandInputs& in, bool done, bool error);
 
 // FB_PAC_Cmd on `plc`'s CMD interface (with the FB_PAC_CmdInterface the bench registers before it).
-void CallLibrary(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, CommandInputs& in, JobProgram program) {
+void CallLibrary(pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd, CommandInputs& in, JobProgram program) {
     plc.Call(cmd, [&cmd, &in, program] {
         if (program) program(in, cmd->DONE.value, cmd->ERROR.value);
         cmd->EXECUTE.value = in.execute;
@@ -73,7 +73,7 @@ void CallLibrary(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, Comman
 }
 
 // The hand-written C handshake on `plc`'s CMD module.
-void CallHandWritten(pac::PacPlcBench& plc, CmdHandshake& hs, CommandInputs& in, JobProgram program) {
+void CallHandWritten(pac::PacRig& plc, CmdHandshake& hs, CommandInputs& in, JobProgram program) {
     plc.CallRaw8(pac::sim::ModuleLayout::kCmdOffset,
                  [&plc, &hs, &in, program](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
                      if (program) program(in, hs.done != 0, hs.error != 0);
@@ -86,7 +86,7 @@ void CallHandWritten(pac::PacPlcBench& plc, CmdHandshake& hs, CommandInputs& in,
 }
 
 WorkloadResult CmdWorkload(bool job, int scans) {
-    pac::PacPlcBench plc;
+    pac::PacRig plc;
     auto cmd = PAC_FB(FB_PAC_CMD);
     CommandInputs in;
     CallLibrary(plc, cmd, in, job ? CycleCommand : nullptr);
@@ -96,7 +96,7 @@ WorkloadResult CmdWorkload(bool job, int scans) {
 }
 
 WorkloadResult HandWrittenWorkload(bool job, int scans) {
-    pac::PacPlcBench plc;
+    pac::PacRig plc;
     CmdHandshake hs;
     CmdHandshakeInit(&hs);
     CommandInputs in;
@@ -146,7 +146,7 @@ WorkloadResult AxisWorkload(bool job, int scans) {
 // answers N17 := N1 + 1 (and R17, FW18 from R1, FW2). A job is an answer that came back.
 WorkloadResult AutomaticWorkload(bool exchange, int scans) {
     constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
-    pac::PacPlcBench plc({}, {}, pac::sim::ModuleLayout{true, 1});
+    pac::PacRig plc({}, {}, pac::sim::ModuleLayout{true, 1});
     plc.Controller().SetAutomaticProgram(
         pac::sim::AutomaticProgram({"N17 := N1 + 1", "R17 := R1 * 2", "FW18 := FW2"}));
     auto ctrl = PAC_FB(FB_PAC_CTRL);
@@ -210,13 +210,13 @@ void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
 
 }  // namespace
 
-std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans) {
-    pac::PacPlcBench library(timing);
+std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans) {
+    pac::PacRig library(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
     CommandInputs libraryIn;
     CallLibrary(library, cmd, libraryIn, CycleCheckedCommand);
     library.Start();
-    pac::PacPlcBench hand(timing);
+    pac::PacRig hand(timing);
     CmdHandshake hs;
     CmdHandshakeInit(&hs);
     CommandInputs handIn;

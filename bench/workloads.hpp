@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 
 namespace pac::bench {
 
@@ -42,6 +42,6 @@ WorkloadResult RunWorkload(const std::string& name, int scans);
 // FB_PAC_CmdInterface with FB_PAC_Cmd and the hand-written C handshake side by side on two benches of the
 // same timing, the same jobs (writes, reads and a refused code) for `scans` scans: the first scan where
 // the CMD module or an output differs, described; empty if they agree on every scan.
-std::string CompareWithHandWritten(const pac::PlcBenchTiming& timing, int scans);
+std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans);
 
 }  // namespace pac::bench

@@ -1,5 +1,10 @@
-# pac_st_library(<target> SOURCES <file.st>... [GVL <list.st>...]): translate Structured Text into a static C
-# library; GVL names global constant lists to check with it (docs/constants.md).
+# pac_st_library(<target> SOURCES <file.st>... [GVL <list.st>...] [USER] [NATIVE <file.st>...]): translate
+# Structured Text into a static C library; GVL names global constant lists to check with it
+# (docs/constants.md). USER translates a user program (`pacst build --user`: PROGRAMs, global variable
+# lists, located variables...; docs/translator.md, "User programs") and writes symbols.json beside
+# POUS.h; NATIVE names ST files whose FUNCTIONs the C or C++ code linked with it implements (asserts).
+# A USER library is translated by pacst with either compiler until the MATIEC backend writes the
+# configuration a user program needs.
 #
 # With PAC_ST_COMPILER=pacst (default) the project's translator runs from a venv inside the build
 # tree. It writes POUS.h (all types and POU interfaces) and one C file per ST file, and rewrites only
@@ -38,7 +43,7 @@ elseif(NOT PAC_ST_COMPILER STREQUAL "pacst")
 endif()
 
 function(pac_st_library target)
-  cmake_parse_arguments(ARG "" "" "SOURCES;GVL" ${ARGN})
+  cmake_parse_arguments(ARG "USER" "" "SOURCES;GVL;NATIVE" ${ARGN})
   if(NOT ARG_SOURCES)
     message(FATAL_ERROR "pac_st_library(${target}): no SOURCES")
   endif()
@@ -63,7 +68,21 @@ function(pac_st_library target)
   list(TRANSFORM gvl_headers PREPEND "${out}/" OUTPUT_VARIABLE out_gvl_headers)
   list(TRANSFORM gvl_headers PREPEND "${out}/decl/" OUTPUT_VARIABLE decl_gvl_headers)
 
-  if(PAC_ST_COMPILER STREQUAL "pacst")
+  set(user_args "")
+  set(user_outputs "")
+  if(ARG_USER)
+    list(APPEND user_args --user)
+    list(APPEND user_outputs "${out}/symbols.json")
+    foreach(native IN LISTS ARG_NATIVE)
+      get_filename_component(abs "${native}" ABSOLUTE)
+      list(APPEND user_args --native "${abs}")
+      list(APPEND gvl_sources "${abs}")  # a dependency of the translation like the lists
+    endforeach()
+  elseif(ARG_NATIVE)
+    message(FATAL_ERROR "pac_st_library(${target}): NATIVE needs USER")
+  endif()
+
+  if(PAC_ST_COMPILER STREQUAL "pacst" OR ARG_USER)
     set(c_files "")
     set(stems "")
     foreach(abs IN LISTS abs_sources)
@@ -83,8 +102,9 @@ function(pac_st_library target)
     add_custom_command(
       OUTPUT "${out}/pacst.stamp"
       BYPRODUCTS "${out}/POUS.h" "${out}/pacst_iec.h" "${out}/pacst_enum_names.h" ${c_files} ${out_gvl_headers}
+                 ${user_outputs}
       COMMAND ${PACST_COMMAND} build --out "${out}" --cache "${PACST_CACHE_DIR}"
-              --stamp "${out}/pacst.stamp" ${line_args} ${gvl_args} ${abs_sources}
+              --stamp "${out}/pacst.stamp" ${line_args} ${gvl_args} ${user_args} ${abs_sources}
       DEPENDS ${abs_sources} ${gvl_sources} ${PACST_TOOL_FILES}
       COMMENT "pacst: translating ${target} (${CMAKE_CURRENT_SOURCE_DIR})"
       VERBATIM)

@@ -5,6 +5,7 @@
 
 #include "gvl_names.hpp"
 #include "pac/vcd_writer.hpp"
+#include "preconditions.hpp"
 #include "scenario_loader.hpp"
 #include "scenario_runner.hpp"
 #include "timeline_printer.hpp"
@@ -19,12 +20,14 @@ constexpr const char* kProgram = "pac_scenario";
 
 void Usage(std::ostream& out) {
     out << "usage: " << kProgram << " [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json\n"
+        << "       " << kProgram << " --version\n"
         << "  Runs the scenario's commands, mode requests and axis jobs through FB_PAC_Cmd, FB_PAC_Ctrl and\n"
         << "  FB_PAC_Axis against the simulated PA-CONTROL and prints a scan-by-scan timeline of the\n"
         << "  modules' images and the FBs' pins (format: docs/scenario.md).\n"
         << "  --check          only check the scenario, do not run it\n"
         << "  --vcd FILE       also write every signal of the run, scan by scan, as VCD (GTKWave)\n"
         << "  --wavedrom FILE  also write the scenario's \"diagram\" (steps, signals) as WaveJSON (WaveDrom)\n"
+        << "  --version        print the library's version (st/library.json) and exit\n"
         << "exit codes: 0 all expectations met, 1 an expectation failed, 2 invalid scenario or usage,\n"
         << "            3 internal error\n";
 }
@@ -66,6 +69,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             Usage(out);
             return kExitOk;
         }
+        if (arg == "--version") {
+            out << kProgram << " (" << PAC_LIBRARY_TITLE << ") " << PAC_LIBRARY_VERSION << "\n";
+            return kExitOk;
+        }
         if (arg == "--check") {
             options.checkOnly = true;
         } else if (arg == "--vcd" || arg == "--wavedrom") {
@@ -101,6 +108,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     } catch (const std::exception& e) {
         err << kProgram << ": internal error while reading " << scenarioFile << ": " << e.what() << "\n";
         return kExitInternalError;
+    }
+    // The run goes on: the warning says in advance why a request will be refused.
+    for (const PreconditionWarning& warning : FindUnmetPreconditions(scenario)) {
+        err << kProgram << ": warning: " << scenarioFile << ": step " << warning.step + 1 << " ($.steps["
+            << warning.step << "]): " << warning.message << "\n";
     }
     if (options.checkOnly) {
         const auto steps = scenario.steps.size();

@@ -1,5 +1,6 @@
 // The command line of pac_scenario, as a function so tests can run it in-process:
 //   pac_scenario [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json
+//   pac_scenario --version   (the library's version of st/library.json, compiled in)
 // Exit codes: 0 every expectation met (or --check: valid), 1 an expectation failed, 2 the scenario
 // was refused (or bad usage), 3 an internal error.
 #pragma once

@@ -8,7 +8,7 @@ namespace pac::scenario {
 
 using std::chrono::milliseconds;
 
-pac::PlcBenchTiming BenchTiming(const Timing& t) {
+pac::RigTiming RigTimingOf(const Timing& t) {
     return {milliseconds(t.plcCycleMs), milliseconds(t.pacCycleMs), t.latencyCycles, milliseconds(t.jitterMs),
             t.seed, milliseconds(t.bootMs)};
 }
@@ -39,7 +39,7 @@ void ApplyControllerSetup(pac::sim::PaControl& pac, const ControllerSetup& setup
     }
 }
 
-void InjectFault(pac::PacPlcBench& plc, const FaultStep& fault) {
+void InjectFault(pac::PacRig& plc, const FaultStep& fault) {
     const auto now = plc.Now();
     switch (fault.kind) {
         case FaultKind::kPowerCycle:

@@ -4,13 +4,13 @@
 // scenario loader.
 #pragma once
 
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "scenario.hpp"
 
 namespace pac::scenario {
 
 // The rig's timing of a scenario's "timing".
-pac::PlcBenchTiming BenchTiming(const Timing& timing);
+pac::RigTiming RigTimingOf(const Timing& timing);
 // The bus modules of a scenario's "modules".
 pac::sim::ModuleLayout Layout(const Modules& modules);
 // The controller settings that must be known when the PA-CONTROL is made.
@@ -20,6 +20,6 @@ pac::sim::PaControlConfig ControllerConfig(const ControllerSetup& setup);
 // AUTOMATIC program.
 void ApplyControllerSetup(pac::sim::PaControl& pac, const ControllerSetup& setup);
 // A fault step, between two scans, at the time of the last scan.
-void InjectFault(pac::PacPlcBench& plc, const FaultStep& fault);
+void InjectFault(pac::PacRig& plc, const FaultStep& fault);
 
 }  // namespace pac::scenario

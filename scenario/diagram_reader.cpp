@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scenario_keys.hpp"
 #include "scenario_signals.hpp"
 
 namespace pac::scenario {
@@ -28,8 +29,7 @@ std::vector<std::string> ReadSignals(const json::Json& list, const std::string& 
 }  // namespace
 
 Diagram ReadDiagram(const json::Json& value, const std::string& path, std::size_t steps, const Modules& modules) {
-    const json::Object object(value, path, {"title", "steps", "signals", "sampled", "context_scans", "max_idle_scans", "hscale"},
-                              "a diagram");
+    const json::Object object(value, path, keys::Of("diagram"), "a diagram");
     Diagram diagram;
     if (const json::Json* title = object.Find("title")) diagram.title = json::String(*title, object.PathOf("title"));
     diagram.lastStep = steps;

@@ -50,7 +50,7 @@ struct McAxes::Axis {
     ST_PAC_AXISREF& Ref() { return cyclic->AXIS.value; }
 
     template <class Fb>
-    void Call(pac::PacPlcBench& plc, pac::FbInstance<Fb>& fb) {
+    void Call(pac::PacRig& plc, pac::FbInstance<Fb>& fb) {
         plc.Task().AddProgram([this, &fb] {
             fb->AXIS.value = Ref();
             fb();
@@ -79,7 +79,7 @@ struct McAxes::Axis {
     }
 };
 
-McAxes::McAxes(pac::PacPlcBench& plc, int axes, std::function<void(FB_PAC_MCAXIS&)> wire) {
+McAxes::McAxes(pac::PacRig& plc, int axes, std::function<void(FB_PAC_MCAXIS&)> wire) {
     for (int k = 1; k <= axes; ++k) axes_.push_back(std::make_unique<Axis>());
     for (int k = 1; k <= axes; ++k) {
         Axis& a = At(k);

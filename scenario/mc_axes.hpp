@@ -14,7 +14,7 @@
 #include "POUS.h"
 
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "scenario.hpp"
 #include "scenario_runner.hpp"
 
@@ -24,7 +24,7 @@ class McAxes {
 public:
     // Registers on `plc`, module by module: FB_PAC_McAxis (`wire` sets its OpStatus, ModeChange, IntegerMode
     // before each call), then the blocks.
-    McAxes(pac::PacPlcBench& plc, int axes, std::function<void(FB_PAC_MCAXIS&)> wire);
+    McAxes(pac::PacRig& plc, int axes, std::function<void(FB_PAC_MCAXIS&)> wire);
     ~McAxes();
     McAxes(const McAxes&) = delete;
     McAxes& operator=(const McAxes&) = delete;

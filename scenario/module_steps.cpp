@@ -6,6 +6,7 @@
 #include <set>
 
 #include "pac/enum_names.hpp"
+#include "scenario_keys.hpp"
 
 namespace pac::scenario {
 
@@ -90,7 +91,7 @@ CtrlStep ModuleStepReader::ReadCtrl(const json::Object& step) const {
     ctrl.timeoutMs = json::Duration(step, "timeout_ms", ctrl.timeoutMs);
     if (const Json* value = step.Find("expect")) {
         const std::string path = step.PathOf("expect");
-        const json::Object expect(*value, path, {"done", "error", "error_id"}, "a ctrl expectation");
+        const json::Object expect(*value, path, keys::Of("ctrlExpectation"), "a ctrl expectation");
         if (const Json* done = expect.Find("done")) ctrl.expect.done = json::Bool(*done, expect.PathOf("done"));
         if (const Json* error = expect.Find("error")) ctrl.expect.error = json::Bool(*error, expect.PathOf("error"));
         if (const Json* id = expect.Find("error_id")) ctrl.expect.errorId = readErrorId_(*id, expect.PathOf("error_id"));
@@ -112,10 +113,7 @@ AxesStep ModuleStepReader::ReadAxes(const json::Object& step) const {
 }
 
 AxisJob ModuleStepReader::ReadJob(const Json& value, const std::string& path) const {
-    const json::Object object(value, path,
-                              {"axis", "enable", "command", "reset_error", "position", "velocity", "acceleration",
-                               "condition", "timeout_ms", "max_ms", "expect"},
-                              "an axis job");
+    const json::Object object(value, path, keys::Of("axisJob"), "an axis job");
     AxisJob job;
     job.axis = static_cast<int>(json::Integer(object.Get("axis"), object.PathOf("axis"), 1, modules_.axes));
     if (const Json* enable = object.Find("enable")) job.enable = json::Bool(*enable, object.PathOf("enable"));
@@ -161,7 +159,7 @@ AutomaticStep ModuleStepReader::ReadAutomatic(const json::Object& step) const {
 }
 
 AutomaticValues ModuleStepReader::ReadAutomaticValues(const Json& value, const std::string& path) const {
-    const json::Object object(value, path, {"module", "flag_word", "n", "r", "expect"}, "the values of a module");
+    const json::Object object(value, path, keys::Of("automaticModule"), "the values of a module");
     AutomaticValues values;
     values.module = static_cast<int>(json::Integer(object.Get("module"), object.PathOf("module"), 1, modules_.axes));
     auto read = [](const json::Object& from, AutomaticExpectation& target) {
@@ -180,7 +178,7 @@ AutomaticValues ModuleStepReader::ReadAutomaticValues(const Json& value, const s
     values.r = sent.r;
     if (const Json* expect = object.Find("expect")) {
         const std::string expectPath = object.PathOf("expect");
-        const json::Object e(*expect, expectPath, {"flag_word", "n", "r", "r_tolerance"}, "an automatic expectation");
+        const json::Object e(*expect, expectPath, keys::Of("automaticExpectation"), "an automatic expectation");
         read(e, values.expect);
         if (const Json* v = e.Find("r_tolerance")) {
             values.expect.rTolerance = json::Number(*v, e.PathOf("r_tolerance"));
@@ -194,9 +192,7 @@ AutomaticValues ModuleStepReader::ReadAutomaticValues(const Json& value, const s
 }
 
 AxisExpectation ModuleStepReader::ReadAxisExpectation(const Json& value, const std::string& path) const {
-    const json::Object expect(value, path,
-                              {"done", "error", "aborted", "error_id", "referenced", "position", "position_tolerance"},
-                              "an axis expectation");
+    const json::Object expect(value, path, keys::Of("axisExpectation"), "an axis expectation");
     AxisExpectation result;
     if (const Json* v = expect.Find("done")) result.done = json::Bool(*v, expect.PathOf("done"));
     if (const Json* v = expect.Find("error")) result.error = json::Bool(*v, expect.PathOf("error"));

@@ -12,6 +12,7 @@
 #include "diagram_reader.hpp"
 #include "json_fields.hpp"
 #include "module_steps.hpp"
+#include "scenario_keys.hpp"
 #include "pac/sim/automatic_program.hpp"
 #include "pac/sim/elements.hpp"
 #include "pac/sim/image8.hpp"
@@ -43,9 +44,8 @@ public:
     explicit Reader(const GvlNames& names) : names_(names) {}
 
     Scenario ReadScenario(const Json& document) const {
-        const json::Object top(document, "$",
-                               {"name", "description", "timing", "modules", "controller", "steps", "diagram"},
-                               "a scenario");
+        const json::Object top(document, "$", keys::Of("scenario"), "a scenario");
+        if (const Json* schema = top.Find("$schema")) json::String(*schema, top.PathOf("$schema"));  // for editors
         Scenario scenario;
         if (const Json* name = top.Find("name")) scenario.name = json::String(*name, top.PathOf("name"));
         if (const Json* text = top.Find("description")) {
@@ -76,9 +76,7 @@ public:
 private:
 
     static Timing ReadTiming(const Json& value, const std::string& path) {
-        const json::Object timing(value, path,
-                                  {"plc_cycle_ms", "pac_cycle_ms", "latency_cycles", "jitter_ms", "seed", "boot_ms"},
-                                  "timing");
+        const json::Object timing(value, path, keys::Of("timing"), "timing");
         Timing result;
         auto integer = [&](const char* key, int min, int max, int fallback) {
             const Json* v = timing.Find(key);
@@ -94,7 +92,7 @@ private:
     }
 
     static Modules ReadModules(const Json& value, const std::string& path) {
-        const json::Object object(value, path, {"ctrl", "axes", "mc_blocks"}, "modules");
+        const json::Object object(value, path, keys::Of("modules"), "modules");
         Modules modules;
         if (const Json* ctrl = object.Find("ctrl")) modules.ctrl = json::Bool(*ctrl, object.PathOf("ctrl"));
         if (const Json* axes = object.Find("axes")) {
@@ -138,11 +136,7 @@ private:
     }
 
     ControllerSetup ReadController(const Json& value, const std::string& path) const {
-        const json::Object controller(
-            value, path,
-            {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced",
-             "limit_switches", "automatic_program"},
-            "controller");
+        const json::Object controller(value, path, keys::Of("controller"), "controller");
         const pac::sim::ElementCounts counts;
         ControllerSetup setup;
         if (const Json* status = controller.Find("operating_status")) {
@@ -186,7 +180,7 @@ private:
 
     // {"negative": -50.0, "positive": 60.0}: machine positions of the switches, at least one of them.
     static LimitSwitches ReadLimitSwitches(const Json& value, const std::string& path) {
-        const json::Object object(value, path, {"negative", "positive"}, "the limit switches of an axis");
+        const json::Object object(value, path, keys::Of("limitSwitches"), "the limit switches of an axis");
         LimitSwitches switches;
         if (const Json* v = object.Find("negative")) switches.negative = json::Number(*v, object.PathOf("negative"));
         if (const Json* v = object.Find("positive")) switches.positive = json::Number(*v, object.PathOf("positive"));
@@ -241,7 +235,7 @@ private:
     static DwordValue ReadDword(const Json& value, const std::string& path) {
         DwordValue result;
         if (value.is_object()) {
-            const json::Object real(value, path, {"real"}, "a REAL value");
+            const json::Object real(value, path, keys::Of("real"), "a REAL value");
             result.bits = pac::sim::FloatToBits(Real(real.Get("real"), real.PathOf("real")));
             result.isReal = true;
             return result;
@@ -284,7 +278,7 @@ private:
     }
 
     Expectation ReadExpectation(const Json& value, const std::string& path) const {
-        const json::Object expect(value, path, {"done", "error", "error_id", "ack_data"}, "an expectation");
+        const json::Object expect(value, path, keys::Of("expectation"), "an expectation");
         Expectation result;
         if (const Json* done = expect.Find("done")) result.done = json::Bool(*done, expect.PathOf("done"));
         if (const Json* error = expect.Find("error")) result.error = json::Bool(*error, expect.PathOf("error"));
@@ -298,12 +292,6 @@ private:
 
     Step ReadStep(const Json& value, const std::string& path, const ModuleStepReader& moduleSteps) const {
         static const std::vector<std::string> kinds = {"command", "ctrl", "axes", "automatic", "fault", "wait_ms"};
-        static const std::vector<std::string> ctrlKeys = {"ctrl", "integer_mode", "timeout_ms", "expect", "note"};
-        static const std::vector<std::string> axesKeys = {"axes", "note"};
-        static const std::vector<std::string> automaticKeys = {"automatic", "max_ms", "note"};
-        static const std::vector<std::string> commandKeys = {"command", "param", "data", "timeout_ms",
-                                                             "end_timeout_ms", "expect", "note"};
-        static const std::vector<std::string> waitKeys = {"wait_ms", "note"};
         json::RequireObject(value, path);
         std::vector<std::string> present;
         for (const auto& kind : kinds) {
@@ -314,32 +302,30 @@ private:
                                    json::ListKeys(present, "and"));
         }
         if (present.empty()) {
-            std::vector<std::string> all = commandKeys;
-            all.insert(all.end(), {"ctrl", "integer_mode", "axes", "automatic", "max_ms", "fault", "link", "wait_ms"});
-            json::Object(value, path, all, "a step");  // an unknown key is the likelier mistake: report it
+            json::Object(value, path, keys::AnyStep(), "a step");  // an unknown key is the likelier mistake: report it
             json::Refuse(path, "missing key: a step needs one of " + json::ListKeys(kinds));
         }
         Step step;
         if (present[0] == "command") {
-            const json::Object object(value, path, commandKeys, "a command step");
+            const json::Object object(value, path, keys::Of("commandStep"), "a command step");
             step.action = ReadCommand(object);
             step.note = ReadNote(object);
         } else if (present[0] == "ctrl") {
-            const json::Object object(value, path, ctrlKeys, "a ctrl step");
+            const json::Object object(value, path, keys::Of("ctrlStep"), "a ctrl step");
             step.action = moduleSteps.ReadCtrl(object);
             step.note = ReadNote(object);
         } else if (present[0] == "axes") {
-            const json::Object object(value, path, axesKeys, "an axes step");
+            const json::Object object(value, path, keys::Of("axesStep"), "an axes step");
             step.action = moduleSteps.ReadAxes(object);
             step.note = ReadNote(object);
         } else if (present[0] == "automatic") {
-            const json::Object object(value, path, automaticKeys, "an automatic step");
+            const json::Object object(value, path, keys::Of("automaticStep"), "an automatic step");
             step.action = moduleSteps.ReadAutomatic(object);
             step.note = ReadNote(object);
         } else if (present[0] == "fault") {
             step.action = ReadFault(value, path, step.note);
         } else {
-            const json::Object object(value, path, waitKeys, "a wait step");
+            const json::Object object(value, path, keys::Of("waitStep"), "a wait step");
             step.action = WaitStep{json::Duration(object, "wait_ms", 0)};
             step.note = ReadNote(object);
         }
@@ -384,26 +370,26 @@ private:
         FaultStep step;
         step.kind = fault->second;
         if (step.kind == FaultKind::kPowerCycle) {
-            const json::Object object(value, path, {"fault", "note"}, "a power_cycle step");
+            const json::Object object(value, path, keys::Of("powerCycleStep"), "a power_cycle step");
             note = ReadNote(object);
             return step;
         }
         if (step.kind == FaultKind::kSystemError) {
             // 5.2.4.15: 1..99 CPU errors, 100..499 hardware, 500..999 errors of the ONLINE / AUTOMATIC mode.
-            const json::Object object(value, path, {"fault", "number", "note"}, "a system_error step");
+            const json::Object object(value, path, keys::Of("systemErrorStep"), "a system_error step");
             note = ReadNote(object);
             step.number = static_cast<int>(json::Integer(object.Get("number"), object.PathOf("number"), 1, 999));
             return step;
         }
         if (step.kind == FaultKind::kSetInput) {
-            const json::Object object(value, path, {"fault", "input", "value", "note"}, "a set_input step");
+            const json::Object object(value, path, keys::Of("setInputStep"), "a set_input step");
             note = ReadNote(object);
             step.number = static_cast<int>(
                 json::Integer(object.Get("input"), object.PathOf("input"), 1, pac::sim::ElementCounts{}.inputs));
             step.value = json::Bool(object.Get("value"), object.PathOf("value"));
             return step;
         }
-        const json::Object object(value, path, {"fault", "link", "note"}, "a link fault step");
+        const json::Object object(value, path, keys::Of("linkFaultStep"), "a link fault step");
         note = ReadNote(object);
         if (const Json* link = object.Find("link")) {
             const std::string side = json::String(*link, object.PathOf("link"));

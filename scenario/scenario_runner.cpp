@@ -12,7 +12,7 @@
 #include "scenario_error.hpp"
 #include "pac/enum_names.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/st_program.hpp"
 
 namespace pac::scenario {
@@ -43,7 +43,7 @@ public:
           observer_(observer),
           axes_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AXIS)),
           automatic_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AUTOMATICMODULE)),
-          plc_(BenchTiming(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
+          plc_(RigTimingOf(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
         plc_.Call(cmd_);
         if (scenario.modules.ctrl) plc_.CallCtrl(ctrl_);
         if (scenario.modules.mcBlocks) {
@@ -361,7 +361,7 @@ private:
     std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
     std::vector<pac::FbInstance<FB_PAC_AUTOMATICMODULE>> automatic_;  // on the same modules; never resized
     std::unique_ptr<McAxes> mc_;  // with Modules::mcBlocks, in place of axes_ (made once plc_ is)
-    pac::PacPlcBench plc_;
+    pac::PacRig plc_;
 };
 
 }  // namespace

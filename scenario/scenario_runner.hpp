@@ -1,5 +1,5 @@
 // Runs a Scenario against the simulated PA-CONTROL: one FB_PAC_Cmd of the library on the CMD
-// interface of a PLC task (pac::PacPlcBench: simulated clock, bus with latency and jitter, the
+// interface of a PLC task (pac::PacRig: simulated clock, bus with latency and jitter, the
 // controller at its own cycle), one FB_PAC_Ctrl on the CTRL interface and one FB_PAC_Axis on each
 // axis module where the scenario has them. Commands, requests and axis jobs raise Execute and hold
 // it until the job ends, then drop it for one scan; faults act between two scans; waits scan. An

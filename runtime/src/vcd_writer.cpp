@@ -94,8 +94,9 @@ void WriteVcd(const Trace& trace, std::ostream& out, const VcdOptions& options) 
     out << "$enddefinitions $end\n";
     const auto& signals = trace.Signals();
     std::vector<std::size_t> next(signals.size(), 0);  // each signal's next change
+    bool stamped = false;
     for (std::size_t sample = 0; sample < trace.Samples(); ++sample) {
-        bool stamped = false;
+        stamped = false;
         for (std::size_t i = 0; i < signals.size(); ++i) {
             const auto& changes = trace.Changes(i);
             if (next[i] >= changes.size() || changes[next[i]].sample != sample) continue;
@@ -107,6 +108,9 @@ void WriteVcd(const Trace& trace, std::ostream& out, const VcdOptions& options) 
         }
         if (sample == 0 && stamped) out << "$end\n";
     }
+    // A viewer ends the waveform at the last time stamp: without one for the last sample, the scans
+    // after the last change would be cut off.
+    if (trace.Samples() > 0 && !stamped) out << "#" << trace.TimeOf(trace.Samples() - 1).count() << "\n";
 }
 
 }  // namespace pac

@@ -45,7 +45,7 @@ TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
     for (int plcMs : {1, 5}) {
         for (int pacMs : {1, 10}) {
             for (int latency : {0, 2}) {
-                pac::PlcBenchTiming timing;
+                pac::RigTiming timing;
                 timing.plcCycle = milliseconds(plcMs);
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;

@@ -10,31 +10,14 @@
 #include <vector>
 
 #include "translator_runner.hpp"
+#include "translator_scratch.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using pac::test::RunTranslator;
 
-class TranslatorCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::path(PACST_SCRATCH_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_ / "out");
-    }
-
-    std::string Write(const std::string& name, const std::string& text) {
-        fs::path p = dir_ / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-
-    std::string Out() const { return (dir_ / "out").string(); }
-    bool Generated(const std::string& name) const { return fs::exists(dir_ / "out" / name); }
-
-    fs::path dir_;
-};
+class TranslatorCli : public pac::test::TranslatorScratch {};
 
 const char* kTypes =
     "TYPE T_Pair : ARRAY[0..1] OF INT;\nEND_TYPE\n";

@@ -1,5 +1,6 @@
 // Every snippet in refuse/ must be refused by `pacst check` at the position and for the reason its
-// first line names: (* expect-error: LINE:COL: words of the message *).
+// first line names: (* expect-error: LINE:COL: words of the message *). Built a second time for
+// refuse_user/ with PACST_REFUSE_USER: the snippets `pacst check --user` must refuse.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,7 +58,11 @@ std::string TranslatorOutput(const std::string& file) {
         text << in.rdbuf();
         return text.str();
     }
+#ifdef PACST_REFUSE_USER
+    return pac::test::RunTranslator({"check", "--user", "--native", PACST_REFUSE_USER, file}).output;
+#else
     return pac::test::RunTranslator({"check", file}).output;
+#endif
 }
 
 std::vector<std::string> ErrorsOf(const std::string& file) {
@@ -92,10 +97,18 @@ std::string NameOf(const ::testing::TestParamInfo<std::string>& info) {
     return stem;
 }
 
+#ifdef PACST_REFUSE_USER
+INSTANTIATE_TEST_SUITE_P(UserSnippets, Refuse, ::testing::ValuesIn(RefuseFiles()), NameOf);
+
+TEST(UserRefuseSuite, HasEnoughSnippets) {
+    EXPECT_GE(RefuseFiles().size(), 10u);
+}
+#else
 INSTANTIATE_TEST_SUITE_P(Snippets, Refuse, ::testing::ValuesIn(RefuseFiles()), NameOf);
 
 TEST(RefuseSuite, HasEnoughSnippets) {
     EXPECT_GE(RefuseFiles().size(), 30u);
 }
+#endif
 
 }  // namespace

@@ -13,8 +13,8 @@
       a link to the shared table) is text. For every POU with a table, its tables together must hold each
       of its VAR_INPUT, VAR_OUTPUT and VAR_IN_OUT pins with the ST's direction and type, and no pin the ST
       lacks; a pin in two tables (the page's and a shared one) is checked in both. A page named after a
-      POU needs a pin table, a marker a table right after it. A POU without a pin table is not checked:
-      the run lists them (MC_blocks.md lists the MC_ blocks' pins in prose).
+      POU needs a pin table, a marker a table right after it; every MC_ block needs one (MC_blocks.md). Any other POU
+      without a pin table is not checked: the run lists them.
       --comments checks the style rule instead (DocPins.EveryPinHasAComment): every public pin has a comment
       (* ... *) with some text in it on its declaration's line; the run lists file:line of each that has none
       and fails. A // comment does not count (pacst refuses one: not in the portable subset)."""
@@ -28,6 +28,7 @@ HEADER = re.compile(r"^\|\s*pin\s*\|", re.I)
 MARKER = re.compile(r"^<!--\s*pins:\s*(.+?)\s*-->$")
 QUOTED = re.compile(r"`([A-Za-z_]\w*)`")
 COMMENT = re.compile(r"\(\*\s*[^\s*]")  # a (* *) comment with some text
+TABLE_REQUIRED = ("MC_",)  # POUs that must have a pin table although no page is named after them
 SECTIONS = {"InputDeclarations": "in", "OutputDeclarations": "out", "InputOutputDeclarations": "in-out"}
 
 
@@ -194,9 +195,11 @@ def main(argv=None):
     errors = []
     docs = documented(repo, pous, errors)
     compare(pous, docs, errors)
+    unchecked = sorted(name for up, (name, pins) in pous.items() if up not in docs and pins)
+    errors += [f"{name}: an MC_ block without a pin table (docs/fb/MC_blocks.md tables every one)"
+               for name in unchecked if name.upper().startswith(TABLE_REQUIRED)]
     for e in errors:
         print(e)
-    unchecked = sorted(name for up, (name, pins) in pous.items() if up not in docs and pins)
     print(f"check_pins: not checked, no pin table: {', '.join(unchecked)}")
     print(f"check_pins: {len(docs)} POU(s) with pin tables, {len(errors)} difference(s)")
     return 1 if errors else 0

@@ -139,6 +139,21 @@ TEST(WriteVcd, WritesHeaderScopesDumpvarsAndThenOnlyTheChanges) {
     EXPECT_EQ(vcd.str(), expected);
 }
 
+// A viewer ends the waveform at the last time stamp: scans after the last change must still show.
+TEST(WriteVcd, EndsAtTheLastSampleAlsoWhenNothingChangedInIt) {
+    pac::Trace trace;
+    trace.AddSignal({"cmd.Execute", pac::SignalKind::kBits, 1});
+    trace.Append(2ms, {Bits(0)});
+    trace.Append(4ms, {Bits(1)});
+    trace.Append(6ms, {Bits(1)});
+    trace.Append(8ms, {Bits(1)});
+    std::ostringstream vcd;
+    pac::WriteVcd(trace, vcd);
+    const std::string text = vcd.str();
+    const std::string changes = text.substr(text.find("$enddefinitions $end\n"));
+    EXPECT_EQ(changes, "$enddefinitions $end\n#2000000\n$dumpvars\n0!\n$end\n#4000000\n1!\n#8000000\n");
+}
+
 TEST(WriteVcd, GivesEverySignalItsOwnIdentifierBeyondOneCharacter) {
     pac::Trace trace;
     for (int i = 0; i < 200; ++i) trace.AddSignal({"s" + std::to_string(i), pac::SignalKind::kBits, 1});

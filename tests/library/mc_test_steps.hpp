@@ -10,7 +10,7 @@
 
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
-#include "mc_bench.hpp"
+#include "mc_rig.hpp"
 #include "pac/sim/servo_axis.hpp"
 
 namespace pac::test::mc {
@@ -60,8 +60,8 @@ inline bool Final(const pac::FbInstance<MC_MOVEVELOCITY>& fb) { return fb->ERROR
 // Scans until `fb` is final, at most `ms` of simulated time, and succeeds only if it ended with Done: the
 // failure names the ErrorID it ended with instead.
 template <class Fb>
-::testing::AssertionResult EndsDone(McBench& bench, pac::FbInstance<Fb>& fb, int ms, const std::string& what) {
-    ::testing::AssertionResult final = bench.WaitFor([&] { return Final(fb); }, ms, what + " final");
+::testing::AssertionResult EndsDone(McRig& rig, pac::FbInstance<Fb>& fb, int ms, const std::string& what) {
+    ::testing::AssertionResult final = rig.WaitFor([&] { return Final(fb); }, ms, what + " final");
     if (!final) return final;
     if (fb->DONE.value) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << what << " ended without Done, ErrorID " << fb->ERRORID.value;
@@ -69,16 +69,16 @@ template <class Fb>
 
 // Execute rises; the next scan sees it.
 template <class Fb>
-void Execute(McBench& bench, pac::FbInstance<Fb>& fb) {
+void Execute(McRig& rig, pac::FbInstance<Fb>& fb) {
     fb->EXECUTE.value = TRUE;
-    bench.Scan();
+    rig.Scan();
 }
 
 // Execute back to FALSE for a scan, as a program does after a final output.
 template <class Fb>
-void Release(McBench& bench, pac::FbInstance<Fb>& fb) {
+void Release(McRig& rig, pac::FbInstance<Fb>& fb) {
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
 }
 
 inline void SetMove(pac::FbInstance<MC_MOVEABSOLUTE>& fb, float position, float velocity = 500.0f) {
@@ -99,7 +99,7 @@ inline const char* Name(E_PAC_MCSTATE state) {
     return "?";
 }
 
-// The blocks of axis 1 a test edges by name, in the order McBench calls them (McCallOrder::kAsListed): moveB is
+// The blocks of axis 1 a test edges by name, in the order McRig calls them (McCallOrder::kAsListed): moveB is
 // the MC_MoveAbsolute edged (moveA and the other A instances bring the axis into a state), MC_Power's edge is
 // Enable falling.
 enum class McBlock { kPowerOff, kHome, kMoveAbsolute, kMoveRelative, kMoveVelocity, kHalt, kStop, kStop2, kReset };
@@ -151,8 +151,8 @@ inline E_PAC_MCSTATE Entered(E_PAC_MCSTATE state, McBlock block) {
 
 // The block's inputs for its edge, without a scan: MC_MoveAbsolute B to 10, MC_MoveRelative by 10 (both at
 // 500 AE/s), MC_MoveVelocity at 100 AE/s to the max. traverse range, MC_Power's Enable FALSE, else Execute.
-inline void Arm(McBench& bench, McBlock block) {
-    McBlocks& b = bench.Blocks(1);
+inline void Arm(McRig& rig, McBlock block) {
+    McBlocks& b = rig.Blocks(1);
     switch (block) {
         case McBlock::kPowerOff: b.power->ENABLE.value = FALSE; return;
         case McBlock::kHome: b.home->EXECUTE.value = TRUE; return;
@@ -178,8 +178,8 @@ inline void Arm(McBench& bench, McBlock block) {
 }
 
 // Execute (MC_Power: Enable) back to where a program leaves it between commands, without a scan.
-inline void Disarm(McBench& bench, McBlock block) {
-    McBlocks& b = bench.Blocks(1);
+inline void Disarm(McRig& rig, McBlock block) {
+    McBlocks& b = rig.Blocks(1);
     switch (block) {
         case McBlock::kPowerOff: b.power->ENABLE.value = TRUE; return;
         case McBlock::kHome: b.home->EXECUTE.value = FALSE; return;
@@ -194,8 +194,8 @@ inline void Disarm(McBench& bench, McBlock block) {
 }
 
 // The block's PLCopen outputs; MC_MoveVelocity's Done is FALSE (it has InVelocity), MC_Power shows none.
-inline pac::test::PlcOpenOutputs OutputsOf(McBench& bench, McBlock block) {
-    McBlocks& b = bench.Blocks(1);
+inline pac::test::PlcOpenOutputs OutputsOf(McRig& rig, McBlock block) {
+    McBlocks& b = rig.Blocks(1);
     switch (block) {
         case McBlock::kPowerOff: return {};
         case McBlock::kHome: return pac::test::OutputsOf(b.home);
@@ -211,13 +211,13 @@ inline pac::test::PlcOpenOutputs OutputsOf(McBench& bench, McBlock block) {
 }
 
 // Axis 1 moving towards 5000 at 1000 AE/s under MC_MoveAbsolute A, taken over by the controller.
-inline void StartLongMove(McBench& bench) {
-    auto& a = bench.Blocks(1).moveA;
+inline void StartLongMove(McRig& rig) {
+    auto& a = rig.Blocks(1).moveA;
     SetMove(a, 5000.0f, 1000.0f);
-    Execute(bench, a);
+    Execute(rig, a);
     ASSERT_TRUE(a->BUSY.value && a->ACTIVE.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Ref(1).STATUS.ACTIVE != 0; }, 200, "ACTIVE"));
-    EXPECT_EQ(bench.State(1), kDiscrete);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Ref(1).STATUS.ACTIVE != 0; }, 200, "ACTIVE"));
+    EXPECT_EQ(rig.State(1), kDiscrete);
 }
 
 }  // namespace pac::test::mc

@@ -70,7 +70,7 @@ std::string FreezeName(bool repliesFrozen) {
     return repliesFrozen ? ", the replies freeze" : ", the module freezes";
 }
 pac::sim::Link& Freeze(SharedCmdPlc& plc, bool repliesFrozen) {
-    auto& link = repliesFrozen ? plc.Plc().Bench().Bus().FromPacLink() : plc.Plc().Bench().Bus().ToPacLink();
+    auto& link = repliesFrozen ? plc.Plc().Rig().Bus().FromPacLink() : plc.Plc().Rig().Bus().ToPacLink();
     link.SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
     return link;
 }
@@ -100,7 +100,7 @@ private:
 // One PLC program, online, the axis standing, ready for two command FBs.
 struct OnlinePlc {
     OnlinePlc(const SharingCase& c, bool twoStep, int fbs) : plc(c, fbs) {
-        plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+        plc.Plc().Rig().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
         plc.Boot();
         online = plc.GoOnline();
         plc.Scan(2);
@@ -322,7 +322,7 @@ int ResyncScanAfterRestart(const SharingCase& c, bool twoStep, int maxScans) {
     for (int scan = 1; scan <= maxScans; ++scan) {
         const auto resyncs = plc.Channel().RESYNCS;
         plc.Scan();
-        if (plc.Channel().RESYNCS != resyncs && plc.Plc().Bench().CmdInterface()->OPSTATUS.value != 0) return scan;
+        if (plc.Channel().RESYNCS != resyncs && plc.Plc().Rig().CmdInterface()->OPSTATUS.value != 0) return scan;
     }
     return 0;
 }
@@ -390,7 +390,7 @@ TEST_P(CmdOvertaking, CommandAfterATimeoutBelowTheRoundTripEndsOnItsOwnCommand) 
                              " scans after the 16#8001");
                 // No command acknowledged before: the channel has measured no round trip yet.
                 SharedCmdPlc plc(GetParam(), 2);
-                plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+                plc.Plc().Rig().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
                 plc.Boot();
                 plc.Controller().Io().intRegisters.SetInt(5, 55);
                 plc.Set(0, code::kPutIntReg, 9, 99);

@@ -176,12 +176,12 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
     ASSERT_TRUE(plc.Fb(0)->DONE.value);
     const auto before = plc.CommandsSeen().size();
 
-    plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    plc.Plc().Rig().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
     plc.Scan(3);
     plc.Controller().PowerCycle(plc.Now());
-    plc.Plc().Bench().ScanUntil([&] { return plc.Controller().Booted(); }, 100000);
+    plc.Plc().Rig().ScanUntil([&] { return plc.Controller().Booted(); }, 100000);
     plc.Scan(20);
-    plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
+    plc.Plc().Rig().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
     plc.Scan(10 + 4 * plc.Timing().latency + plc.Timing().jitterUs / 500 / plc.Timing().plcMs);
     for (std::size_t k = before; k < plc.CommandsSeen().size(); ++k) {
         EXPECT_EQ(plc.CommandsSeen()[k].code, code::kGetState) << "only the parked module's read while nobody sent";
@@ -212,7 +212,7 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
 // although nothing runs; the first command goes out in its edge scan and ends at the protocol minimum.
 TEST_P(CmdRecovery, FirstCommandAfterPowerUpGoesAtOnce) {
     SharedCmdPlc plc(GetParam(), 1, kBoot);
-    plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
+    plc.Plc().Rig().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
     plc.Controller().Io().intRegisters.SetInt(2, 22);
     plc.Set(0, code::kGetIntReg, 2);
     const FinalOutcome read = plc.Run(0);
@@ -232,8 +232,8 @@ TEST_P(CmdRecovery, AfterARestartTheEndedMoveHoldsNothing) {
         ASSERT_TRUE(plc.Run(0).Done());
     }
     plc.Controller().PowerCycle(plc.Now());
-    plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value == 0; }, 100000);
-    plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
+    plc.Plc().Rig().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value == 0; }, 100000);
+    plc.Plc().Rig().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
     plc.Controller().Io().intRegisters.SetInt(2, 23);
     plc.Set(0, code::kGetIntReg, 2);
     const FinalOutcome read = plc.Run(0);
@@ -288,10 +288,10 @@ QueuedRead ReadBehindAMove(const SharingCase& c, nanoseconds timeout) {
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(timeout);
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Plc().Begin(plc.Fb(1));
-    const auto edge = plc.Plc().Bench().Task().ScanCount();
+    const auto edge = plc.Plc().Rig().Task().ScanCount();
     result.outcome = plc.Plc().Wait(plc.Fb(1), 100000, [&] {
         if (result.waitScans == 0 && plc.Fb(0)->DONE.value) {
-            result.waitScans = static_cast<int>(plc.Plc().Bench().Task().ScanCount() - edge);
+            result.waitScans = static_cast<int>(plc.Plc().Rig().Task().ScanCount() - edge);
         }
     });
     return result;
@@ -333,13 +333,13 @@ TEST_P(CmdRecovery, ErrorIdsSayWhetherTheCommandWasSent) {
 
     plc.Fb(1)->EXECUTE.value = FALSE;
     plc.Scan();
-    plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    plc.Plc().Rig().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
     plc.Set(1, code::kPutIntReg, 6, 66);
     plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(100ms);
     const FinalOutcome unknown = plc.Run(1);
     EXPECT_EQ(unknown.ErrorId(), kLibAckTimeout) << unknown;
     EXPECT_EQ(plc.Seen(code::kPutIntReg, 6), 1) << "16#8001: sent, and here executed";
-    plc.Plc().Bench().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
+    plc.Plc().Rig().Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kNone);
     plc.Set(1, code::kGetIntReg, 6);
     const FinalOutcome read = plc.Run(1);
     EXPECT_TRUE(read.Done()) << read;

@@ -196,7 +196,7 @@ TEST_P(CmdSharing, FreshFbLeavesTheCommandInFlightAlone) {
     plc.Fb(0)->EXECUTE.value = TRUE;
     plc.Scan(1);
     const pac::sim::Image8 move = plc.Module();
-    ASSERT_GT(plc.Plc().Bench().ScanUntil([&] { return plc.Fb(0)->ACKNOWLEDGED.value != 0; }, 10000), 0);
+    ASSERT_GT(plc.Plc().Rig().ScanUntil([&] { return plc.Fb(0)->ACKNOWLEDGED.value != 0; }, 10000), 0);
     plc.Scan(3);
     ASSERT_TRUE(plc.Fb(0)->BUSY.value) << "the move is processing";
     plc.Fb(1) = PAC_FB(FB_PAC_CMD);  // re-initialised, idle

@@ -37,9 +37,9 @@ struct TornRun {
 TornRun WriteThroughATornBus(const SharingCase& c, bool twoStep, int commands) {
     const int fbs = 2;
     SharedCmdPlc plc(c, fbs);
-    plc.Plc().Bench().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
+    plc.Plc().Rig().CmdInterface()->TWOSTEPWRITE.value = twoStep ? TRUE : FALSE;
     plc.Boot();
-    plc.Plc().Bench().Bus().ToPacLink().SetTearPercent(kTearPercent);
+    plc.Plc().Rig().Bus().ToPacLink().SetTearPercent(kTearPercent);
     std::set<Frame> sent;
     std::vector<bool> released(fbs, false);
     TornRun run;
@@ -73,7 +73,7 @@ TornRun WriteThroughATornBus(const SharingCase& c, bool twoStep, int commands) {
         if (command.code == code::kGetState && command.parameter == 0 && command.data == 0) continue;
         if (sent.count({command.code, command.parameter, command.data}) == 0) ++run.tornCommands;
     }
-    run.tornReads = plc.Plc().Bench().Bus().ToPacLink().TornReads();
+    run.tornReads = plc.Plc().Rig().Bus().ToPacLink().TornReads();
     return run;
 }
 

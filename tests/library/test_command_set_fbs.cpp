@@ -35,9 +35,9 @@ constexpr std::uint16_t kInjectedErrorNumber = 21;
 // The simulator's axis error for a servo that cannot follow.
 constexpr std::uint16_t kFollowingErrorNumber = 66;
 
-class CommandSetBench {
+class CommandSetRig {
 public:
-    explicit CommandSetBench(const BusTiming& t, pac::sim::PaControlConfig config = {}) : plc_(t, config) {
+    explicit CommandSetRig(const BusTiming& t, pac::sim::PaControlConfig config = {}) : plc_(t, config) {
         plc_.Add("WriteSystemParameter", writeSys);
         plc_.Add("ModeCommand", mode);
         plc_.Add("MoveAxisAbsolute", moveAbs);
@@ -52,7 +52,7 @@ public:
         plc_.Add("SetMoveCondition", condition);
         plc_.Add("ReadAxisValue", readValue);
         plc_.Add("ReadExtendedAxisStatus", readExtended);
-        plc_.Bench().Call(jog);  // level-driven: no Execute for the PLCopen checker
+        plc_.Rig().Call(jog);  // level-driven: no Execute for the PLCopen checker
         plc_.Start();
         for (int i = 0; i < 1000 && !Controller().Booted(); ++i) plc_.Scan();
         plc_.Scan(3 + 2 * t.latency);
@@ -131,463 +131,463 @@ class CommandSetFbs : public ::testing::TestWithParam<BusTiming> {};
 // 5.2.6.14: 0A94 ends its processing at once, so a read may follow during the move; the FB reports Done only
 // when 1910 says "in position" (5.2.4.22: 0), with the end position.
 TEST_P(CommandSetFbs, FreeInterfaceMoveLetsAReadThroughAndIsDoneOnlyInPosition) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.Controller().Io().intRegisters.SetInt(5, -4711);
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 600.0F;  // about 0.7 s at 1000 AE/s
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.moveAbs);
-    bench.ScanWhile([&] { return !bench.moveAbs->ACTIVE.value && bench.moveAbs->BUSY.value; });
-    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
-    EXPECT_EQ(bench.Count(0x0A94), 1u);
-    EXPECT_EQ(bench.Count(0x0A87), 0u);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Controller().Io().intRegisters.SetInt(5, -4711);
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 600.0F;  // about 0.7 s at 1000 AE/s
+    rig.moveAbs->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.moveAbs);
+    rig.ScanWhile([&] { return !rig.moveAbs->ACTIVE.value && rig.moveAbs->BUSY.value; });
+    ASSERT_TRUE(rig.moveAbs->ACTIVE.value);
+    EXPECT_EQ(rig.Count(0x0A94), 1u);
+    EXPECT_EQ(rig.Count(0x0A87), 0u);
 
-    bench.readN->NUMBER.value = 5;
-    bench.Start(bench.readN);
+    rig.readN->NUMBER.value = 5;
+    rig.Start(rig.readN);
     bool doneWhileMoving = true;
-    FinalOutcome read = bench.Wait(bench.readN, 5000);
-    doneWhileMoving = bench.Motion(1).Moving();
-    bench.Release(bench.readN);
+    FinalOutcome read = rig.Wait(rig.readN, 5000);
+    doneWhileMoving = rig.Motion(1).Moving();
+    rig.Release(rig.readN);
     ASSERT_TRUE(read.Done()) << read;
-    EXPECT_EQ(bench.readN->VALUE.value, -4711);
+    EXPECT_EQ(rig.readN->VALUE.value, -4711);
     EXPECT_TRUE(doneWhileMoving) << "the read went through during the move";
-    EXPECT_TRUE(bench.moveAbs->BUSY.value) << "the move is still followed";
+    EXPECT_TRUE(rig.moveAbs->BUSY.value) << "the move is still followed";
 
     bool doneBeforeArrival = false;
-    FinalOutcome move = bench.Wait(bench.moveAbs, 20000, [&] {
-        if (bench.moveAbs->DONE.value && bench.Motion(1).Status() != pac::sim::AxisStatus::kInPosition) {
+    FinalOutcome move = rig.Wait(rig.moveAbs, 20000, [&] {
+        if (rig.moveAbs->DONE.value && rig.Motion(1).Status() != pac::sim::AxisStatus::kInPosition) {
             doneBeforeArrival = true;
         }
     });
     ASSERT_TRUE(move.Done()) << move;
     EXPECT_FALSE(doneBeforeArrival);
-    EXPECT_EQ(bench.Motion(1).Position(), 600.0);
-    EXPECT_EQ(Bits(bench.moveAbs->ACTUALPOSITION.value), Bits(600.0F)) << "the end position, read by 190C";
-    EXPECT_GE(bench.Count(0x1910), 2u);
-    EXPECT_EQ(bench.LastCode(), 0x190C);
-    bench.Release(bench.moveAbs);
-    EXPECT_FALSE(bench.moveAbs->DONE.value);
+    EXPECT_EQ(rig.Motion(1).Position(), 600.0);
+    EXPECT_EQ(Bits(rig.moveAbs->ACTUALPOSITION.value), Bits(600.0F)) << "the end position, read by 190C";
+    EXPECT_GE(rig.Count(0x1910), 2u);
+    EXPECT_EQ(rig.LastCode(), 0x190C);
+    rig.Release(rig.moveAbs);
+    EXPECT_FALSE(rig.moveAbs->DONE.value);
 }
 
 TEST_P(CommandSetFbs, FreeInterfaceRelativeMoveSendsTheManualsCode) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.Motion(2).Place(bench.Now(), 100.0);
-    bench.moveRel->AXIS.value = 2;
-    bench.moveRel->DISTANCE.value = 10.0F;  // 5.2.6.15 example: by 10.0
-    bench.moveRel->FREEINTERFACE.value = TRUE;
-    FinalOutcome move = bench.Run(bench.moveRel);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Motion(2).Place(rig.Now(), 100.0);
+    rig.moveRel->AXIS.value = 2;
+    rig.moveRel->DISTANCE.value = 10.0F;  // 5.2.6.15 example: by 10.0
+    rig.moveRel->FREEINTERFACE.value = TRUE;
+    FinalOutcome move = rig.Run(rig.moveRel);
     ASSERT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Count(0x0A95), 1u);
-    EXPECT_EQ(bench.Motion(2).Position(), 110.0);
-    EXPECT_EQ(bench.moveRel->ACTUALPOSITION.value, 110.0F);
+    EXPECT_EQ(rig.Count(0x0A95), 1u);
+    EXPECT_EQ(rig.Motion(2).Position(), 110.0);
+    EXPECT_EQ(rig.moveRel->ACTUALPOSITION.value, 110.0F);
 }
 
 // A stop ends the job: CommandAborted, as for 0A87, because the controller no longer runs it. 0A9A with
 // FreeInterface is Done when the axis stands.
 TEST_P(CommandSetFbs, StopDuringAFollowedMoveAbortsItAndTheFreeStopIsDoneAtStandstill) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 2000.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.moveAbs);
-    bench.ScanWhile([&] { return bench.Motion(1).Position() < 100.0; });
-    bench.stop->AXIS.value = 1;
-    bench.stop->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.stop);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 2000.0F;
+    rig.moveAbs->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.moveAbs);
+    rig.ScanWhile([&] { return rig.Motion(1).Position() < 100.0; });
+    rig.stop->AXIS.value = 1;
+    rig.stop->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.stop);
     bool stopDoneWhileMoving = false;
-    FinalOutcome stopped = bench.Wait(bench.stop, 20000, [&] {
-        if (bench.stop->DONE.value && bench.Motion(1).Moving()) stopDoneWhileMoving = true;
+    FinalOutcome stopped = rig.Wait(rig.stop, 20000, [&] {
+        if (rig.stop->DONE.value && rig.Motion(1).Moving()) stopDoneWhileMoving = true;
     });
     ASSERT_TRUE(stopped.Done()) << stopped;
     EXPECT_FALSE(stopDoneWhileMoving);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u);
-    EXPECT_EQ(bench.Count(0x0A93), 0u);
-    EXPECT_EQ(Bits(bench.stop->ACTUALPOSITION.value), Bits(static_cast<float>(bench.Motion(1).Position())));
-    FinalOutcome move = bench.Wait(bench.moveAbs, 20000);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u);
+    EXPECT_EQ(rig.Count(0x0A93), 0u);
+    EXPECT_EQ(Bits(rig.stop->ACTUALPOSITION.value), Bits(static_cast<float>(rig.Motion(1).Position())));
+    FinalOutcome move = rig.Wait(rig.moveAbs, 20000);
     EXPECT_TRUE(move.Aborted()) << move;
     EXPECT_FALSE(move.Error());
-    EXPECT_LT(bench.Motion(1).Position(), 2000.0);
+    EXPECT_LT(rig.Motion(1).Position(), 2000.0);
 }
 
 TEST_P(CommandSetFbs, FollowedMoveNotInPositionWithinEndTimeoutIsTheLibrarysError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 3000.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
-    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(300ms);
-    FinalOutcome move = bench.Run(bench.moveAbs);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 3000.0F;
+    rig.moveAbs->FREEINTERFACE.value = TRUE;
+    rig.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(300ms);
+    FinalOutcome move = rig.Run(rig.moveAbs);
     EXPECT_TRUE(move.Error()) << move;
     EXPECT_EQ(move.ErrorId(), kGvl["PAC_LIB_ERR_NOT_IN_POSITION"]);
     EXPECT_EQ(kGvl["PAC_LIB_ERR_NOT_IN_POSITION"], 0x8014u);
-    EXPECT_TRUE(bench.Motion(1).Moving()) << "the library stops following, not the axis";
+    EXPECT_TRUE(rig.Motion(1).Moving()) << "the library stops following, not the axis";
     // A refused start is the controller's number (43 without reference).
-    bench.Motion(2).SetReferenced(false);
-    bench.moveAbs->AXIS.value = 2;
-    bench.moveAbs->POSITION.value = 10.0F;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_NO_REFERENCE"]);
+    rig.Motion(2).SetReferenced(false);
+    rig.moveAbs->AXIS.value = 2;
+    rig.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_NO_REFERENCE"]);
 }
 
 // T#0S on PollInterval and EndTimeout means their defaults (20 ms, 60 s): the move is followed to its end, not
 // cut off at once by an end time of zero, and the status is read every 20 ms, not in every scan.
 TEST_P(CommandSetFbs, FollowedMoveWithZeroTimesUsesTheDefaults) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimFollowedMove(300.0F);
-    bench.moveAbs->POLLINTERVAL.value = pac::ToIecTime(0ms);
-    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(0ms);
-    const nanoseconds start = bench.Now();
-    FinalOutcome move = bench.Run(bench.moveAbs);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimFollowedMove(300.0F);
+    rig.moveAbs->POLLINTERVAL.value = pac::ToIecTime(0ms);
+    rig.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(0ms);
+    const nanoseconds start = rig.Now();
+    FinalOutcome move = rig.Run(rig.moveAbs);
     ASSERT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Motion(1).Position(), 300.0);
-    const auto pauses = (bench.Now() - start) / 20ms;
-    EXPECT_LE(bench.Count(0x1910), static_cast<std::uint64_t>(pauses) + 1u) << "at most one read per 20 ms pause";
+    EXPECT_EQ(rig.Motion(1).Position(), 300.0);
+    const auto pauses = (rig.Now() - start) / 20ms;
+    EXPECT_LE(rig.Count(0x1910), static_cast<std::uint64_t>(pauses) + 1u) << "at most one read per 20 ms pause";
 }
 
 // 5.2.4.22 read refused: the controller's number is the FB's ErrorID, and following stops there (no 190C).
 TEST_P(CommandSetFbs, FollowedMoveStatusReadRefusedIsThatError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimFollowedMove(600.0F);
-    bench.Start(bench.moveAbs);
-    bench.ScanWhile([&] { return !bench.moveAbs->ACTIVE.value && bench.moveAbs->BUSY.value; });
-    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
-    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the next command: the first 1910
-    FinalOutcome move = bench.Wait(bench.moveAbs);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimFollowedMove(600.0F);
+    rig.Start(rig.moveAbs);
+    rig.ScanWhile([&] { return !rig.moveAbs->ACTIVE.value && rig.moveAbs->BUSY.value; });
+    ASSERT_TRUE(rig.moveAbs->ACTIVE.value);
+    rig.Controller().InjectCommandError(kInjectedErrorNumber);  // the next command: the first 1910
+    FinalOutcome move = rig.Wait(rig.moveAbs);
     EXPECT_TRUE(move.Error()) << move;
     EXPECT_EQ(move.ErrorId(), kInjectedErrorNumber);
-    EXPECT_EQ(bench.LastCode(), 0x1910);
-    const std::uint64_t reads = bench.Count(0x1910);
-    bench.SettleFor(200ms);
-    EXPECT_EQ(bench.Count(0x1910), reads) << "no read after the error";
-    EXPECT_EQ(bench.Count(0x190C), 0u);
+    EXPECT_EQ(rig.LastCode(), 0x1910);
+    const std::uint64_t reads = rig.Count(0x1910);
+    rig.SettleFor(200ms);
+    EXPECT_EQ(rig.Count(0x1910), reads) << "no read after the error";
+    EXPECT_EQ(rig.Count(0x190C), 0u);
 }
 
 // 5.2.4.22 status 4 (standing with malfunction): the axis will not arrive; 16#800A, no position read.
 TEST_P(CommandSetFbs, FollowedMoveEndsInTheLibrarysErrorOnAnAxisError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimFollowedMove(2000.0F);
-    bench.Start(bench.moveAbs);
-    bench.ScanWhile([&] { return bench.Motion(1).Position() < 100.0; });
-    bench.Controller().Axes().RaiseAxisError(1, bench.Now(), kFollowingErrorNumber);
-    FinalOutcome move = bench.Wait(bench.moveAbs);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimFollowedMove(2000.0F);
+    rig.Start(rig.moveAbs);
+    rig.ScanWhile([&] { return rig.Motion(1).Position() < 100.0; });
+    rig.Controller().Axes().RaiseAxisError(1, rig.Now(), kFollowingErrorNumber);
+    FinalOutcome move = rig.Wait(rig.moveAbs);
     EXPECT_TRUE(move.Error()) << move;
     EXPECT_EQ(move.ErrorId(), kGvl["PAC_LIB_ERR_AXIS_ERROR"]);
     EXPECT_EQ(kGvl["PAC_LIB_ERR_AXIS_ERROR"], 0x800Au);
-    EXPECT_NE(bench.Motion(1).AxisError(), 0) << "the axis error that ended it";
-    EXPECT_EQ(bench.Count(0x190C), 0u);
-    EXPECT_LT(bench.Motion(1).Position(), 2000.0);
+    EXPECT_NE(rig.Motion(1).AxisError(), 0) << "the axis error that ended it";
+    EXPECT_EQ(rig.Count(0x190C), 0u);
+    EXPECT_LT(rig.Motion(1).Position(), 2000.0);
 }
 
 // The final 190C refused: the controller's number, not Done; the move is over, so nothing more is sent.
 TEST_P(CommandSetFbs, FollowedMoveFinalPositionReadRefusedIsThatError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveRel->AXIS.value = 1;
-    bench.moveRel->DISTANCE.value = 0.0F;  // in position at once: the first 1910 says 0, the next command is 190C
-    bench.moveRel->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.moveRel);
-    bench.ScanWhile([&] { return bench.Count(0x1910) == 0 && bench.moveRel->BUSY.value; });
-    ASSERT_EQ(bench.Count(0x1910), 1u);
-    bench.Controller().InjectCommandError(kInjectedErrorNumber);
-    FinalOutcome move = bench.Wait(bench.moveRel);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveRel->AXIS.value = 1;
+    rig.moveRel->DISTANCE.value = 0.0F;  // in position at once: the first 1910 says 0, the next command is 190C
+    rig.moveRel->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.moveRel);
+    rig.ScanWhile([&] { return rig.Count(0x1910) == 0 && rig.moveRel->BUSY.value; });
+    ASSERT_EQ(rig.Count(0x1910), 1u);
+    rig.Controller().InjectCommandError(kInjectedErrorNumber);
+    FinalOutcome move = rig.Wait(rig.moveRel);
     EXPECT_TRUE(move.Error()) << move;
     EXPECT_EQ(move.ErrorId(), kInjectedErrorNumber);
-    EXPECT_EQ(bench.LastCode(), 0x190C);
-    EXPECT_EQ(bench.Count(0x1910), 1u);
-    const std::uint64_t reads = bench.Count(0x190C);
-    bench.SettleFor(200ms);
-    EXPECT_EQ(bench.Count(0x190C), reads) << "no read after the error";
+    EXPECT_EQ(rig.LastCode(), 0x190C);
+    EXPECT_EQ(rig.Count(0x1910), 1u);
+    const std::uint64_t reads = rig.Count(0x190C);
+    rig.SettleFor(200ms);
+    EXPECT_EQ(rig.Count(0x190C), reads) << "no read after the error";
 }
 
 // ---- mode commands (5.2.1, 5.2.5.1, 5.2.6.1) ----
 
 TEST_P(CommandSetFbs, ModeCommandsReachTheManualsStatuses) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 31) << "5.2.1.3: 001F";
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
-    ASSERT_TRUE(bench.Run(bench.mode).Done());
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 35) << "5.2.1.1: online mode stopped";
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_ONLINE;
-    ASSERT_TRUE(bench.Run(bench.mode).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A81);
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 1);
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_START_AUTO;
-    ASSERT_TRUE(bench.Run(bench.mode).Done());
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 11) << "5.2.1.2: 000B";
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
-    ASSERT_TRUE(bench.Run(bench.mode).Done());
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 15) << "5.2.1.1 example: 000F";
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_AUTO;
-    ASSERT_TRUE(bench.Run(bench.mode).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A41);
-    EXPECT_EQ(bench.mode->OPSTATUS.value, 1);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 31) << "5.2.1.3: 001F";
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    ASSERT_TRUE(rig.Run(rig.mode).Done());
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 35) << "5.2.1.1: online mode stopped";
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_ONLINE;
+    ASSERT_TRUE(rig.Run(rig.mode).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A81);
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 1);
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_START_AUTO;
+    ASSERT_TRUE(rig.Run(rig.mode).Done());
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 11) << "5.2.1.2: 000B";
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    ASSERT_TRUE(rig.Run(rig.mode).Done());
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 15) << "5.2.1.1 example: 000F";
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_ABORT_AUTO;
+    ASSERT_TRUE(rig.Run(rig.mode).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A41);
+    EXPECT_EQ(rig.mode->OPSTATUS.value, 1);
     // 0600 in home position: 5.1.1 marks it for AUTOMATIC (and ONLINE) only.
-    bench.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
-    EXPECT_EQ(bench.Run(bench.mode).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
+    rig.mode->COMMAND.value = E_PAC_MODECOMMAND__PAC_MODE_STOP;
+    EXPECT_EQ(rig.Run(rig.mode).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
 }
 
 // ---- reference and scale (5.2.6.2..5.2.6.5, 5.2.6.16) ----
 
 TEST_P(CommandSetFbs, ReferenceCommandsSetTheFlagAndThePosition) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.reference->AXIS.value = 2;
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.reference->AXIS.value = 2;
     // 5.2.6.5 example: axis 2 to 200.00, data 4348 0000, acknowledged with the same value.
-    bench.Motion(2).Place(bench.Now(), 50.0);
-    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_SET_POSITION;
-    bench.reference->POSITION.value = 200.0F;
-    ASSERT_TRUE(bench.Run(bench.reference).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A86);
-    EXPECT_EQ(bench.LastData(), 0x43480000u);
-    EXPECT_EQ(bench.reference->ACTUALPOSITION.value, 200.0F);
-    EXPECT_EQ(bench.Motion(2).Position(), 200.0);
-    EXPECT_EQ(bench.Motion(2).MaxRange(), 10150.0) << "G29 moves the software limits with the scale";
+    rig.Motion(2).Place(rig.Now(), 50.0);
+    rig.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_SET_POSITION;
+    rig.reference->POSITION.value = 200.0F;
+    ASSERT_TRUE(rig.Run(rig.reference).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A86);
+    EXPECT_EQ(rig.LastData(), 0x43480000u);
+    EXPECT_EQ(rig.reference->ACTUALPOSITION.value, 200.0F);
+    EXPECT_EQ(rig.Motion(2).Position(), 200.0);
+    EXPECT_EQ(rig.Motion(2).MaxRange(), 10150.0) << "G29 moves the software limits with the scale";
     // 5.2.6.4: to zero (G26), software limits unchanged.
-    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_POSITION_ZERO;
-    ASSERT_TRUE(bench.Run(bench.reference).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A85);
-    EXPECT_EQ(bench.Motion(2).Position(), 0.0);
-    EXPECT_EQ(bench.Motion(2).MaxRange(), 10150.0);
+    rig.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_POSITION_ZERO;
+    ASSERT_TRUE(rig.Run(rig.reference).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A85);
+    EXPECT_EQ(rig.Motion(2).Position(), 0.0);
+    EXPECT_EQ(rig.Motion(2).MaxRange(), 10150.0);
     // 0A83 releases an unreferenced axis without moving it; 0A96 references it where it stands (example: 0.0).
-    bench.Motion(2).SetReferenced(false);
-    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RELEASE;
-    ASSERT_TRUE(bench.Run(bench.reference).Done());
-    EXPECT_TRUE(bench.Motion(2).Referenced());
-    bench.Motion(2).SetReferenced(false);
-    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_AT_POSITION;
-    bench.reference->POSITION.value = 12.5F;
-    ASSERT_TRUE(bench.Run(bench.reference).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A96);
-    EXPECT_TRUE(bench.Motion(2).Referenced());
-    EXPECT_EQ(bench.reference->ACTUALPOSITION.value, 12.5F) << "acknowledged with the current position";
+    rig.Motion(2).SetReferenced(false);
+    rig.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RELEASE;
+    ASSERT_TRUE(rig.Run(rig.reference).Done());
+    EXPECT_TRUE(rig.Motion(2).Referenced());
+    rig.Motion(2).SetReferenced(false);
+    rig.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_AT_POSITION;
+    rig.reference->POSITION.value = 12.5F;
+    ASSERT_TRUE(rig.Run(rig.reference).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A96);
+    EXPECT_TRUE(rig.Motion(2).Referenced());
+    EXPECT_EQ(rig.reference->ACTUALPOSITION.value, 12.5F) << "acknowledged with the current position";
     // Axis 3 is not configured: 32.
-    bench.reference->AXIS.value = 3;
-    EXPECT_EQ(bench.Run(bench.reference).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    rig.reference->AXIS.value = 3;
+    EXPECT_EQ(rig.Run(rig.reference).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
 }
 
 // 5.2.6.3: the reference run sets the flag at its end; the FB is Busy until then.
 TEST_P(CommandSetFbs, ReferenceRunIsBusyUntilTheFlagIsSet) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.Controller().Axes().SetReferenceSwitch(1, -20.0);
-    bench.Motion(1).Place(bench.Now(), 0.0);
-    bench.reference->AXIS.value = 1;
-    bench.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RUN;
-    bench.Start(bench.reference);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Controller().Axes().SetReferenceSwitch(1, -20.0);
+    rig.Motion(1).Place(rig.Now(), 0.0);
+    rig.reference->AXIS.value = 1;
+    rig.reference->COMMAND.value = E_PAC_REFERENCECOMMAND__PAC_REF_RUN;
+    rig.Start(rig.reference);
     bool busyWhileHoming = false;
-    FinalOutcome run = bench.Wait(bench.reference, 50000, [&] {
-        if (bench.Motion(1).HomingActive() && bench.reference->BUSY.value) busyWhileHoming = true;
+    FinalOutcome run = rig.Wait(rig.reference, 50000, [&] {
+        if (rig.Motion(1).HomingActive() && rig.reference->BUSY.value) busyWhileHoming = true;
     });
     ASSERT_TRUE(run.Done()) << run;
     EXPECT_TRUE(busyWhileHoming);
-    EXPECT_TRUE(bench.Motion(1).Referenced());
-    EXPECT_FALSE(bench.Motion(1).HomingActive());
-    EXPECT_EQ(bench.Count(0x0A84), 1u);
+    EXPECT_TRUE(rig.Motion(1).Referenced());
+    EXPECT_FALSE(rig.Motion(1).HomingActive());
+    EXPECT_EQ(rig.Count(0x0A84), 1u);
 }
 
 // ---- manual traverse (5.2.6.10..5.2.6.12) ----
 
 // The axis keeps moving beyond one second only because 0A92 follows; Traverse falling stops it with 0A9A.
 TEST_P(CommandSetFbs, ManualTraverseKeepsMovingWhileTraverseStaysTrue) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.jog->AXIS.value = 1;
-    bench.jog->TARGET.value = 5000.0F;
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.SettleFor(1500ms);
-    EXPECT_TRUE(bench.jog->ACTIVE.value);
-    EXPECT_TRUE(bench.Motion(1).Moving()) << "kept alive beyond the one second of 5.2.6.10";
-    EXPECT_EQ(bench.Count(0x0A90), 1u);
-    EXPECT_GE(bench.Count(0x0A92), 4u) << "every 250 ms";
-    EXPECT_GT(bench.jog->ACTUALPOSITION.value, 500.0F) << "0A92 acknowledges the position";
-    bench.jog->TRAVERSE.value = FALSE;
-    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
-    EXPECT_TRUE(bench.jog->DONE.value);
-    EXPECT_FALSE(bench.jog->ERROR.value);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u);
-    bench.SettleFor(300ms);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    EXPECT_LT(bench.Motion(1).Position(), 5000.0);
-    EXPECT_TRUE(bench.jog->DONE.value) << "held until the next rising edge";
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.jog->AXIS.value = 1;
+    rig.jog->TARGET.value = 5000.0F;
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.SettleFor(1500ms);
+    EXPECT_TRUE(rig.jog->ACTIVE.value);
+    EXPECT_TRUE(rig.Motion(1).Moving()) << "kept alive beyond the one second of 5.2.6.10";
+    EXPECT_EQ(rig.Count(0x0A90), 1u);
+    EXPECT_GE(rig.Count(0x0A92), 4u) << "every 250 ms";
+    EXPECT_GT(rig.jog->ACTUALPOSITION.value, 500.0F) << "0A92 acknowledges the position";
+    rig.jog->TRAVERSE.value = FALSE;
+    rig.ScanWhile([&] { return rig.jog->BUSY.value; });
+    EXPECT_TRUE(rig.jog->DONE.value);
+    EXPECT_FALSE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u);
+    rig.SettleFor(300ms);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    EXPECT_LT(rig.Motion(1).Position(), 5000.0);
+    EXPECT_TRUE(rig.jog->DONE.value) << "held until the next rising edge";
 }
 
 TEST_P(CommandSetFbs, ManualTraverseEndsAtMaxTimeWithTheLibrarysError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.jog->AXIS.value = 2;
-    bench.jog->TARGET.value = 100.0F;
-    bench.jog->RELATIVE.value = TRUE;  // 0A91: by 100
-    bench.jog->MAXTIME.value = pac::ToIecTime(60ms);
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
-    EXPECT_TRUE(bench.jog->ERROR.value);
-    EXPECT_EQ(bench.jog->ERRORID.value, kGvl["PAC_LIB_ERR_JOG_TIME_LIMIT"]);
-    EXPECT_EQ(bench.Count(0x0A91), 1u);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u);
-    bench.SettleFor(300ms);
-    EXPECT_FALSE(bench.Motion(2).Moving());
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.jog->AXIS.value = 2;
+    rig.jog->TARGET.value = 100.0F;
+    rig.jog->RELATIVE.value = TRUE;  // 0A91: by 100
+    rig.jog->MAXTIME.value = pac::ToIecTime(60ms);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.ScanWhile([&] { return !rig.jog->ERROR.value && !rig.jog->DONE.value; });
+    EXPECT_TRUE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.jog->ERRORID.value, kGvl["PAC_LIB_ERR_JOG_TIME_LIMIT"]);
+    EXPECT_EQ(rig.Count(0x0A91), 1u);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u);
+    rig.SettleFor(300ms);
+    EXPECT_FALSE(rig.Motion(2).Moving());
 }
 
 // T#0S on KeepAliveInterval and MaxTime means their defaults (250 ms, 60 s): the traverse is kept alive at the
 // default pace, not in every scan, and not ended at once.
 TEST_P(CommandSetFbs, ManualTraverseWithZeroTimesUsesTheDefaults) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimJog(5000.0F);
-    bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(0ms);
-    bench.jog->MAXTIME.value = pac::ToIecTime(0ms);
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.SettleFor(1500ms);
-    EXPECT_TRUE(bench.jog->ACTIVE.value);
-    EXPECT_FALSE(bench.jog->ERROR.value);
-    EXPECT_TRUE(bench.Motion(1).Moving());
-    EXPECT_GE(bench.Count(0x0A92), 4u) << "kept alive";
-    EXPECT_LE(bench.Count(0x0A92), 6u) << "every 250 ms, not faster";
-    EXPECT_EQ(bench.Count(0x0A9A), 0u);
-    bench.jog->TRAVERSE.value = FALSE;
-    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
-    EXPECT_TRUE(bench.jog->DONE.value);
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimJog(5000.0F);
+    rig.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(0ms);
+    rig.jog->MAXTIME.value = pac::ToIecTime(0ms);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.SettleFor(1500ms);
+    EXPECT_TRUE(rig.jog->ACTIVE.value);
+    EXPECT_FALSE(rig.jog->ERROR.value);
+    EXPECT_TRUE(rig.Motion(1).Moving());
+    EXPECT_GE(rig.Count(0x0A92), 4u) << "kept alive";
+    EXPECT_LE(rig.Count(0x0A92), 6u) << "every 250 ms, not faster";
+    EXPECT_EQ(rig.Count(0x0A9A), 0u);
+    rig.jog->TRAVERSE.value = FALSE;
+    rig.ScanWhile([&] { return rig.jog->BUSY.value; });
+    EXPECT_TRUE(rig.jog->DONE.value);
 }
 
 // 0A90 refused: the controller's number, and nothing follows it (no keep-alive, no stop).
 TEST_P(CommandSetFbs, ManualTraverseStartRefusedIsThatError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.Controller().InjectCommandError(kInjectedErrorNumber);
-    bench.AimJog(5000.0F);
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
-    EXPECT_TRUE(bench.jog->ERROR.value);
-    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
-    EXPECT_FALSE(bench.jog->ACTIVE.value);
-    EXPECT_FALSE(bench.jog->BUSY.value);
-    bench.SettleFor(500ms);
-    EXPECT_EQ(bench.Count(0x0A90), 1u);
-    EXPECT_EQ(bench.Count(0x0A92), 0u);
-    EXPECT_EQ(bench.Count(0x0A9A), 0u);
-    EXPECT_FALSE(bench.Motion(1).Moving());
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Controller().InjectCommandError(kInjectedErrorNumber);
+    rig.AimJog(5000.0F);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.ScanWhile([&] { return !rig.jog->ERROR.value && !rig.jog->DONE.value; });
+    EXPECT_TRUE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(rig.jog->ACTIVE.value);
+    EXPECT_FALSE(rig.jog->BUSY.value);
+    rig.SettleFor(500ms);
+    EXPECT_EQ(rig.Count(0x0A90), 1u);
+    EXPECT_EQ(rig.Count(0x0A92), 0u);
+    EXPECT_EQ(rig.Count(0x0A9A), 0u);
+    EXPECT_FALSE(rig.Motion(1).Moving());
 }
 
 // 0A92 refused: the FB stops the axis with 0A9A at once rather than let it run out its second, and reports the
 // keep-alive's number.
 TEST_P(CommandSetFbs, ManualTraverseKeepAliveRefusedStopsTheAxisWithThatError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimJog(5000.0F);
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.ScanWhile([&] { return bench.Count(0x0A92) == 0; });
-    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the next 0A92
-    bench.ScanWhile([&] { return !bench.jog->ERROR.value && !bench.jog->DONE.value; });
-    EXPECT_TRUE(bench.jog->ERROR.value);
-    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
-    EXPECT_FALSE(bench.jog->ACTIVE.value);
-    EXPECT_EQ(bench.Count(0x0A92), 2u);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u);
-    EXPECT_TRUE(bench.jog->TRAVERSE.value) << "stopped by the FB, not by the program";
-    bench.SettleFor(300ms);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    EXPECT_EQ(bench.Count(0x0A92), 2u) << "no keep-alive after the stop";
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimJog(5000.0F);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.ScanWhile([&] { return rig.Count(0x0A92) == 0; });
+    rig.Controller().InjectCommandError(kInjectedErrorNumber);  // the next 0A92
+    rig.ScanWhile([&] { return !rig.jog->ERROR.value && !rig.jog->DONE.value; });
+    EXPECT_TRUE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(rig.jog->ACTIVE.value);
+    EXPECT_EQ(rig.Count(0x0A92), 2u);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u);
+    EXPECT_TRUE(rig.jog->TRAVERSE.value) << "stopped by the FB, not by the program";
+    rig.SettleFor(300ms);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    EXPECT_EQ(rig.Count(0x0A92), 2u) << "no keep-alive after the stop";
 }
 
 // 0A9A refused: the controller's number, not Done; no keep-alive follows, so the PA-CONTROL stops the axis
 // within its second (5.2.6.10).
 TEST_P(CommandSetFbs, ManualTraverseStopRefusedIsThatError) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.AimJog(5000.0F);
-    bench.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(800ms);
-    bench.jog->TRAVERSE.value = TRUE;
-    bench.ScanWhile([&] { return !bench.jog->ACTIVE.value; });
-    bench.SettleFor(100ms);
-    ASSERT_EQ(bench.Count(0x0A92), 0u) << "in the pause: no command on its way";
-    bench.Controller().InjectCommandError(kInjectedErrorNumber);  // the 0A9A
-    bench.jog->TRAVERSE.value = FALSE;
-    bench.ScanWhile([&] { return bench.jog->BUSY.value; });
-    EXPECT_TRUE(bench.jog->ERROR.value);
-    EXPECT_EQ(bench.jog->ERRORID.value, kInjectedErrorNumber);
-    EXPECT_FALSE(bench.jog->DONE.value);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u);
-    bench.SettleFor(1500ms);
-    EXPECT_EQ(bench.Count(0x0A92), 0u);
-    EXPECT_EQ(bench.Count(0x0A9A), 1u) << "no retry";
-    EXPECT_FALSE(bench.Motion(1).Moving());
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimJog(5000.0F);
+    rig.jog->KEEPALIVEINTERVAL.value = pac::ToIecTime(800ms);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.ScanWhile([&] { return !rig.jog->ACTIVE.value; });
+    rig.SettleFor(100ms);
+    ASSERT_EQ(rig.Count(0x0A92), 0u) << "in the pause: no command on its way";
+    rig.Controller().InjectCommandError(kInjectedErrorNumber);  // the 0A9A
+    rig.jog->TRAVERSE.value = FALSE;
+    rig.ScanWhile([&] { return rig.jog->BUSY.value; });
+    EXPECT_TRUE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.jog->ERRORID.value, kInjectedErrorNumber);
+    EXPECT_FALSE(rig.jog->DONE.value);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u);
+    rig.SettleFor(1500ms);
+    EXPECT_EQ(rig.Count(0x0A92), 0u);
+    EXPECT_EQ(rig.Count(0x0A9A), 1u) << "no retry";
+    EXPECT_FALSE(rig.Motion(1).Moving());
 }
 
 // ---- axis on/off, measuring mode, limit switch monitoring, move condition (5.2.6.17..5.2.6.23) ----
 
 TEST_P(CommandSetFbs, SwitchedOffAxisRefusesMovesUntilSwitchedOn) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.switchAxis->AXIS.value = 1;
-    bench.switchAxis->SWITCHON.value = FALSE;
-    ASSERT_TRUE(bench.Run(bench.switchAxis).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A98);
-    EXPECT_FALSE(bench.Motion(1).AxisOn());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 10.0F;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_OFF"]);
-    bench.switchAxis->SWITCHON.value = TRUE;
-    ASSERT_TRUE(bench.Run(bench.switchAxis).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0A97);
-    EXPECT_TRUE(bench.Motion(1).AxisOn());
-    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.switchAxis->AXIS.value = 1;
+    rig.switchAxis->SWITCHON.value = FALSE;
+    ASSERT_TRUE(rig.Run(rig.switchAxis).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A98);
+    EXPECT_FALSE(rig.Motion(1).AxisOn());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_OFF"]);
+    rig.switchAxis->SWITCHON.value = TRUE;
+    ASSERT_TRUE(rig.Run(rig.switchAxis).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0A97);
+    EXPECT_TRUE(rig.Motion(1).AxisOn());
+    EXPECT_TRUE(rig.Run(rig.moveAbs).Done());
 }
 
 TEST_P(CommandSetFbs, MeasuringModeBlocksPositioningAndShowsInTheStatus) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.measuring->AXIS.value = 1;
-    bench.measuring->ACTIVATE.value = TRUE;
-    ASSERT_TRUE(bench.Run(bench.measuring).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0AA0);
-    bench.readStatus->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
-    EXPECT_EQ(bench.readStatus->STATUS.value, 8) << "5.2.4.22: 8, axis in measuring mode";
-    EXPECT_TRUE(bench.readStatus->MEASURINGMODE.value);
-    bench.readExtended->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
-    EXPECT_TRUE(bench.readExtended->MEASURINGMODE.value);
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 10.0F;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_NOT_READY"]);
-    bench.measuring->ACTIVATE.value = FALSE;
-    ASSERT_TRUE(bench.Run(bench.measuring).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0AA1);
-    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.measuring->AXIS.value = 1;
+    rig.measuring->ACTIVATE.value = TRUE;
+    ASSERT_TRUE(rig.Run(rig.measuring).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0AA0);
+    rig.readStatus->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readStatus).Done());
+    EXPECT_EQ(rig.readStatus->STATUS.value, 8) << "5.2.4.22: 8, axis in measuring mode";
+    EXPECT_TRUE(rig.readStatus->MEASURINGMODE.value);
+    rig.readExtended->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readExtended).Done());
+    EXPECT_TRUE(rig.readExtended->MEASURINGMODE.value);
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 10.0F;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_NOT_READY"]);
+    rig.measuring->ACTIVATE.value = FALSE;
+    ASSERT_TRUE(rig.Run(rig.measuring).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0AA1);
+    EXPECT_TRUE(rig.Run(rig.moveAbs).Done());
     // 5.2.6.21: on an axis not in measuring mode, 0AA1 is only acknowledged.
-    EXPECT_TRUE(bench.Run(bench.measuring).Done());
+    EXPECT_TRUE(rig.Run(rig.measuring).Done());
 }
 
 TEST_P(CommandSetFbs, LimitSwitchMonitoringForOneAxisOrAll) {
-    CommandSetBench bench(GetParam());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.monitoring->AXIS.value = 0;
-    bench.monitoring->MONITOR.value = FALSE;
-    ASSERT_TRUE(bench.Run(bench.monitoring).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0AA2);
-    EXPECT_EQ(bench.LastData(), 0u);
-    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(1));
-    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(2));
-    bench.monitoring->AXIS.value = 2;
-    bench.monitoring->MONITOR.value = TRUE;
-    ASSERT_TRUE(bench.Run(bench.monitoring).Done());
-    EXPECT_EQ(bench.LastData(), 1u);
-    EXPECT_FALSE(bench.Controller().Online().LimitSwitchMonitoring(1));
-    EXPECT_TRUE(bench.Controller().Online().LimitSwitchMonitoring(2));
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.monitoring->AXIS.value = 0;
+    rig.monitoring->MONITOR.value = FALSE;
+    ASSERT_TRUE(rig.Run(rig.monitoring).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0AA2);
+    EXPECT_EQ(rig.LastData(), 0u);
+    EXPECT_FALSE(rig.Controller().Online().LimitSwitchMonitoring(1));
+    EXPECT_FALSE(rig.Controller().Online().LimitSwitchMonitoring(2));
+    rig.monitoring->AXIS.value = 2;
+    rig.monitoring->MONITOR.value = TRUE;
+    ASSERT_TRUE(rig.Run(rig.monitoring).Done());
+    EXPECT_EQ(rig.LastData(), 1u);
+    EXPECT_FALSE(rig.Controller().Online().LimitSwitchMonitoring(1));
+    EXPECT_TRUE(rig.Controller().Online().LimitSwitchMonitoring(2));
     // Into an actuated switch: refused (64) while monitored, allowed without monitoring.
-    bench.Controller().Axes().SetLimitSwitches(1, -100.0, 0.0);
-    bench.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
-    bench.moveAbs->POSITION.value = 20.0F;
-    bench.moveAbs->AXIS.value = 2;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_LIMIT_SWITCH"]);
-    bench.moveAbs->AXIS.value = 1;
-    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+    rig.Controller().Axes().SetLimitSwitches(1, -100.0, 0.0);
+    rig.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
+    rig.moveAbs->POSITION.value = 20.0F;
+    rig.moveAbs->AXIS.value = 2;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_LIMIT_SWITCH"]);
+    rig.moveAbs->AXIS.value = 1;
+    EXPECT_TRUE(rig.Run(rig.moveAbs).Done());
 }
 
 // 5.2.6.23: the axis moves as long as the element keeps its value; switching over ends the movement, and
@@ -609,31 +609,31 @@ const ConditionElement kConditionFlag{E_PAC_ELEMENTTYPE__PAC_ELEMENT_FLAG, 3u,
 void ConditionEndsTheMove(const BusTiming& timing, pac::sim::ConditionLayout layout, const ConditionElement& element) {
     pac::sim::PaControlConfig config;
     config.online.conditionLayout = layout;
-    CommandSetBench bench(timing, config);
-    ASSERT_TRUE(bench.GoOnline());
-    pac::sim::BitBank& bank = element.bank(bench.Controller().Io());
+    CommandSetRig rig(timing, config);
+    ASSERT_TRUE(rig.GoOnline());
+    pac::sim::BitBank& bank = element.bank(rig.Controller().Io());
     bank.Set(9, true);
-    bench.condition->AXIS.value = 1;
-    bench.condition->ELEMENT.value = element.type;
-    bench.condition->NUMBER.value = 9;
-    bench.condition->LEVEL.value = TRUE;
-    bench.condition->PROFIBUSBYTEORDER.value = layout == pac::sim::ConditionLayout::kByProfibusByte;
-    ASSERT_TRUE(bench.Run(bench.condition).Done());
-    EXPECT_EQ(bench.LastCode(), 0x0AA3);
+    rig.condition->AXIS.value = 1;
+    rig.condition->ELEMENT.value = element.type;
+    rig.condition->NUMBER.value = 9;
+    rig.condition->LEVEL.value = TRUE;
+    rig.condition->PROFIBUSBYTEORDER.value = layout == pac::sim::ConditionLayout::kByProfibusByte;
+    ASSERT_TRUE(rig.Run(rig.condition).Done());
+    EXPECT_EQ(rig.LastCode(), 0x0AA3);
     const std::uint32_t expected = layout == pac::sim::ConditionLayout::kBySignificance
                                        ? 0x01000009u | element.typeBits << 16
                                        : 0x00090001u | element.typeBits << 8;
-    EXPECT_EQ(bench.LastData(), expected);
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 2000.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.moveAbs);
-    bench.ScanWhile([&] { return bench.Motion(1).Position() < 200.0; });
+    EXPECT_EQ(rig.LastData(), expected);
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 2000.0F;
+    rig.moveAbs->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.moveAbs);
+    rig.ScanWhile([&] { return rig.Motion(1).Position() < 200.0; });
     bank.Set(9, false);
-    FinalOutcome move = bench.Wait(bench.moveAbs);
+    FinalOutcome move = rig.Wait(rig.moveAbs);
     EXPECT_TRUE(move.Aborted()) << move;
-    EXPECT_LT(bench.Motion(1).Position(), 500.0);
-    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_LT(rig.Motion(1).Position(), 500.0);
+    EXPECT_FALSE(rig.Motion(1).Moving());
 }
 
 TEST_P(CommandSetFbs, MoveConditionEndsTheMoveBySignificanceLayout) {
@@ -655,36 +655,36 @@ TEST_P(CommandSetFbs, MoveConditionOnAFlagEndsTheMove) {
 // ---- axis values and the extended status (5.2.4.19..5.2.4.28) ----
 
 TEST_P(CommandSetFbs, AxisValuesAreDecoded) {
-    CommandSetBench bench(GetParam());
-    bench.readValue->AXIS.value = 1;
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x1914);
-    EXPECT_EQ(bench.readValue->VALUE.value, 10000.0F) << "axis parameter 9";
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x1913);
-    EXPECT_EQ(bench.readValue->VALUE.value, 0.0F);
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x1920);
-    EXPECT_EQ(bench.readValue->VALUE.value, 40.0F);
-    EXPECT_EQ(bench.readValue->RAWVALUE.value, 0x42200000u) << "5.2.4.27 example bytes (docs/manual_errata.md: 40.0)";
-    bench.Motion(1).Place(bench.Now(), 321.5);
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_ENCODER_POSITION;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x190E);
-    EXPECT_EQ(bench.readValue->VALUE.value, 321.5F);
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 2000.0F;
-    bench.moveAbs->FREEINTERFACE.value = TRUE;
-    bench.Start(bench.moveAbs);
-    bench.SettleFor(400ms);
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_SPEED;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x190D);
-    EXPECT_EQ(bench.readValue->VALUE.value, 1000.0F) << "the traverse speed of axis parameter 1";
+    CommandSetRig rig(GetParam());
+    rig.readValue->AXIS.value = 1;
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x1914);
+    EXPECT_EQ(rig.readValue->VALUE.value, 10000.0F) << "axis parameter 9";
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x1913);
+    EXPECT_EQ(rig.readValue->VALUE.value, 0.0F);
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x1920);
+    EXPECT_EQ(rig.readValue->VALUE.value, 40.0F);
+    EXPECT_EQ(rig.readValue->RAWVALUE.value, 0x42200000u) << "5.2.4.27 example bytes (docs/manual_errata.md: 40.0)";
+    rig.Motion(1).Place(rig.Now(), 321.5);
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_ENCODER_POSITION;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x190E);
+    EXPECT_EQ(rig.readValue->VALUE.value, 321.5F);
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 2000.0F;
+    rig.moveAbs->FREEINTERFACE.value = TRUE;
+    rig.Start(rig.moveAbs);
+    rig.SettleFor(400ms);
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_SPEED;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x190D);
+    EXPECT_EQ(rig.readValue->VALUE.value, 1000.0F) << "the traverse speed of axis parameter 1";
 }
 
 // 1915 / 1920 on the other reading of the header ("0000 - FFFF"): the FB takes a value with an upper word
@@ -693,20 +693,20 @@ TEST_P(CommandSetFbs, EpValuesAsIntegersAndControllersWithoutThem) {
     pac::sim::PaControlConfig config;
     config.online.epValuesAsReal = false;
     config.online.temperature = 37.0F;
-    CommandSetBench bench(GetParam(), config);
-    bench.readValue->AXIS.value = 2;
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.readValue->RAWVALUE.value, 37u);
-    EXPECT_EQ(bench.readValue->VALUE.value, 37.0F);
-    bench.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_FOLLOWING_ERROR;
-    ASSERT_TRUE(bench.Run(bench.readValue).Done());
-    EXPECT_EQ(bench.LastCode(), 0x1915);
-    EXPECT_EQ(bench.readValue->VALUE.value, 0.0F);
+    CommandSetRig rig(GetParam(), config);
+    rig.readValue->AXIS.value = 2;
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TEMPERATURE;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.readValue->RAWVALUE.value, 37u);
+    EXPECT_EQ(rig.readValue->VALUE.value, 37.0F);
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_FOLLOWING_ERROR;
+    ASSERT_TRUE(rig.Run(rig.readValue).Done());
+    EXPECT_EQ(rig.LastCode(), 0x1915);
+    EXPECT_EQ(rig.readValue->VALUE.value, 0.0F);
 
     pac::sim::PaControlConfig plain;
     plain.online.epCommands = false;
-    CommandSetBench other(GetParam(), plain);
+    CommandSetRig other(GetParam(), plain);
     other.readValue->AXIS.value = 1;
     other.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_MAX_FOLLOWING_ERROR;
     EXPECT_EQ(other.Run(other.readValue).ErrorId(), kGvl["PAC_ERR_UNKNOWN_COMMAND"]);
@@ -714,24 +714,24 @@ TEST_P(CommandSetFbs, EpValuesAsIntegersAndControllersWithoutThem) {
 }
 
 TEST_P(CommandSetFbs, ExtendedStatusDecodesReadinessSwitchesAndStatus) {
-    CommandSetBench bench(GetParam());
-    bench.readExtended->AXIS.value = 2;
-    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
-    EXPECT_EQ(bench.LastCode(), 0x1921);
-    EXPECT_EQ(bench.readExtended->RAWSTATUS.value, 0x01010100u) << "ready, no switch actuated, in position";
-    EXPECT_TRUE(bench.readExtended->POWERREADY.value);
-    EXPECT_FALSE(bench.readExtended->POSITIVELIMITSWITCH.value);
-    EXPECT_FALSE(bench.readExtended->NEGATIVELIMITSWITCH.value);
-    EXPECT_TRUE(bench.readExtended->INPOSITION.value);
+    CommandSetRig rig(GetParam());
+    rig.readExtended->AXIS.value = 2;
+    ASSERT_TRUE(rig.Run(rig.readExtended).Done());
+    EXPECT_EQ(rig.LastCode(), 0x1921);
+    EXPECT_EQ(rig.readExtended->RAWSTATUS.value, 0x01010100u) << "ready, no switch actuated, in position";
+    EXPECT_TRUE(rig.readExtended->POWERREADY.value);
+    EXPECT_FALSE(rig.readExtended->POSITIVELIMITSWITCH.value);
+    EXPECT_FALSE(rig.readExtended->NEGATIVELIMITSWITCH.value);
+    EXPECT_TRUE(rig.readExtended->INPOSITION.value);
     // 5.2.4.28 example 0100 0104: ready, positive switch actuated, negative not, malfunction.
-    bench.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
-    bench.Controller().Axes().RaiseAxisError(2, bench.Now(), 46);
-    ASSERT_TRUE(bench.Run(bench.readExtended).Done());
-    EXPECT_TRUE(bench.readExtended->POSITIVELIMITSWITCH.value);
-    EXPECT_FALSE(bench.readExtended->NEGATIVELIMITSWITCH.value);
-    EXPECT_TRUE(bench.readExtended->MALFUNCTION.value);
-    EXPECT_EQ(bench.readExtended->STATUS.value, 4);
-    EXPECT_EQ(bench.readExtended->RAWSTATUS.value & 0x00FFFFFFu, 0x00000104u);
+    rig.Controller().Axes().SetLimitSwitches(2, -100.0, 0.0);
+    rig.Controller().Axes().RaiseAxisError(2, rig.Now(), 46);
+    ASSERT_TRUE(rig.Run(rig.readExtended).Done());
+    EXPECT_TRUE(rig.readExtended->POSITIVELIMITSWITCH.value);
+    EXPECT_FALSE(rig.readExtended->NEGATIVELIMITSWITCH.value);
+    EXPECT_TRUE(rig.readExtended->MALFUNCTION.value);
+    EXPECT_EQ(rig.readExtended->STATUS.value, 4);
+    EXPECT_EQ(rig.readExtended->RAWSTATUS.value & 0x00FFFFFFu, 0x00000104u);
 }
 
 INSTANTIATE_TEST_SUITE_P(BusTimings, CommandSetFbs, ::testing::ValuesIn(pac::test::BusTimingGrid({1, 5}, {3, 10}, {0, 2})),

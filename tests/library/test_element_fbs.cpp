@@ -52,7 +52,7 @@ public:
     // One command: Execute edge, wait for Done or Error, Execute back to FALSE for one scan.
     FinalOutcome Run(int maxScans = 500) {
         plc_.Begin(fb_);
-        sent_ = CommandFrame::Decode(plc_.Bench().ToPac().Cmd());
+        sent_ = CommandFrame::Decode(plc_.Rig().ToPac().Cmd());
         const FinalOutcome out = plc_.Wait(fb_, maxScans);
         plc_.Release(fb_);
         return out;
@@ -423,7 +423,7 @@ TEST(ElementFbs, LibraryErrorsPassThrough) {
     Single<FB_PAC_READINTREG> s(PAC_FB(FB_PAC_READINTREG));
     s.Fb()->NUMBER.value = 1;
     s.Fb()->TIMEOUT.value = TIME{0, 30'000'000};
-    s.Plc().Bench().Bus().FromPacLink().SetFault(s.Plc().Now(), pac::sim::LinkFault::kFrozen);
+    s.Plc().Rig().Bus().FromPacLink().SetFault(s.Plc().Now(), pac::sim::LinkFault::kFrozen);
     const FinalOutcome out = s.Run();
     ASSERT_TRUE(out.Error());
     EXPECT_EQ(out.ErrorId(), kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
@@ -648,7 +648,7 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
                readN->ERROR.value || readN2->ERROR.value || readR->ERROR.value || readO->ERROR.value ||
                readM->ERROR.value || readI->ERROR.value || readState->ERROR.value || cmd->ERROR.value;
     };
-    ASSERT_GT(plc.Bench().ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
+    ASSERT_GT(plc.Rig().ScanUntil([&] { return allDone() || anyError(); }, 1000), 0);
     ASSERT_FALSE(anyError());
     ASSERT_TRUE(allDone());
 

@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/sim/automatic_module.hpp"
 #include "pac/sim/automatic_program.hpp"
 #include "pac/sim/image8.hpp"
@@ -77,12 +77,12 @@ pac::sim::PaControlConfig ConfigFor(const Options& o) {
 // as a PLC program wires them (operating status from byte 5 of the CMD reply, format and mode change from
 // FB_PAC_Ctrl). The controller runs "R17 := R1 * 2", "M257 := M1", "N17 := N1 + 1", "FW18 := FW2",
 // "R18 := R2 - 1", "N18 := N2 * 2".
-class AutomaticBench {
+class AutomaticRig {
 public:
-    explicit AutomaticBench(const Options& options)
+    explicit AutomaticRig(const Options& options)
         : options_(options),
           layout_{true, kModules},
-          plc_(pac::test::PlcBenchTimingOf(options.timing), ConfigFor(options), layout_) {
+          plc_(pac::test::RigTimingOf(options.timing), ConfigFor(options), layout_) {
         auto& pac = plc_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
                   pac::sim::ParameterTable::SetResult::kOk);
@@ -302,7 +302,7 @@ private:
 
     Options options_;
     pac::sim::ModuleLayout layout_;
-    pac::PacPlcBench plc_;
+    pac::PacRig plc_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<AxisFb>> axes_;  // never moved: the PLC's programs hold references
     std::vector<std::unique_ptr<AutoFb>> autos_;
@@ -343,117 +343,117 @@ TEST_P(AutomaticSim, RoundTripThroughTheRunningProgramInBothFormatsAndLayouts) {
         const AutomaticLayout layout = variant < 2 ? AutomaticLayout::kAxisWidths : AutomaticLayout::kShiftedWidths;
         SCOPED_TRACE(integer ? "integer format" : "float format");
         SCOPED_TRACE(layout == AutomaticLayout::kAxisWidths ? "the printed layout" : "the other layout");
-        AutomaticBench bench(OptionsFor(layout));
-        bench.Send(1, {0x0001, 41, 1.25f});
-        bench.Send(2, {0xBEEF, -300, 640.0f});
-        ASSERT_TRUE(bench.StartAutomatic(integer));
-        EXPECT_EQ(bench.Pac().IntegerFormat(), integer);
-        ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 42, 2.5f));
-        ASSERT_TRUE(bench.WaitReceived(2, 0xBEEF, -600, 639.0f));
-        const auto& io = bench.Pac().Io();
+        AutomaticRig rig(OptionsFor(layout));
+        rig.Send(1, {0x0001, 41, 1.25f});
+        rig.Send(2, {0xBEEF, -300, 640.0f});
+        ASSERT_TRUE(rig.StartAutomatic(integer));
+        EXPECT_EQ(rig.Pac().IntegerFormat(), integer);
+        ASSERT_TRUE(rig.WaitReceived(1, 0x0001, 42, 2.5f));
+        ASSERT_TRUE(rig.WaitReceived(2, 0xBEEF, -600, 639.0f));
+        const auto& io = rig.Pac().Io();
         EXPECT_EQ(io.flags.Word(1), 0x0001);
         EXPECT_EQ(io.intRegisters.GetInt(2), -300);
         EXPECT_EQ(io.realRegisters.GetReal(1), 1.25f);
         // A new value goes through the program and back.
-        bench.Send(1, {0x0000, -5, -12.345f});
-        ASSERT_TRUE(bench.WaitReceived(1, 0x0000, -4, -24.69f));
-        EXPECT_FALSE(bench.Auto(1)->ERROR.value);
-        EXPECT_GT(bench.AutomaticCyclesChecked(), 0);
+        rig.Send(1, {0x0000, -5, -12.345f});
+        ASSERT_TRUE(rig.WaitReceived(1, 0x0000, -4, -24.69f));
+        EXPECT_FALSE(rig.Auto(1)->ERROR.value);
+        EXPECT_GT(rig.AutomaticCyclesChecked(), 0);
     }
 }
 
 TEST_P(AutomaticSim, TheAxisFbStaysOffTheModuleAndRefusesJobsInAutomatic) {
-    AutomaticBench bench(OptionsFor());
-    bench.Send(1, {0x00FF, 7, 3.0f});
-    ASSERT_TRUE(bench.StartAutomatic());
-    auto& axis = bench.Axis(1);
+    AutomaticRig rig(OptionsFor());
+    rig.Send(1, {0x00FF, 7, 3.0f});
+    ASSERT_TRUE(rig.StartAutomatic());
+    auto& axis = rig.Axis(1);
     EXPECT_FALSE(axis->OWNSMODULE.value);
     EXPECT_FALSE(axis->STATUSVALID.value) << "flags are no axis status";
     EXPECT_FALSE(axis->ACTIVE.value);
     axis->COMMAND.value = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
     axis->POSITION.value = 100.0f;
     axis->EXECUTE.value = TRUE;
-    bench.Scan();
+    rig.Scan();
     EXPECT_TRUE(axis->ERROR.value) << "refused in the edge scan";
     EXPECT_EQ(axis->ERRORID.value, kErrWrongMode);
     axis->EXECUTE.value = FALSE;
     axis->JOGPOSITIVE.value = TRUE;
     axis->RESETERROR.value = TRUE;
-    bench.ScanMs(50);
+    rig.ScanMs(50);
     EXPECT_TRUE(axis->ERROR.value) << "a jog too";
     EXPECT_EQ(axis->ERRORID.value, kErrWrongMode);
-    ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 8, 6.0f)) << "FW17 is M257 := M1 alone";
-    EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(1), 7);
+    ASSERT_TRUE(rig.WaitReceived(1, 0x0001, 8, 6.0f)) << "FW17 is M257 := M1 alone";
+    EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(1), 7);
 }
 
 TEST_P(AutomaticSim, ModeChangesInAndOutKeepEachModuleToItsOwner) {
-    AutomaticBench bench(OptionsFor());
-    bench.Send(1, {0x1234, 1000, 50.0f});
-    bench.Send(2, {0x0000, 0, 0.0f});
-    ASSERT_TRUE(bench.StartAutomatic());
-    ASSERT_TRUE(bench.WaitReceived(1, 0x0000, 1001, 100.0f));
+    AutomaticRig rig(OptionsFor());
+    rig.Send(1, {0x1234, 1000, 50.0f});
+    rig.Send(2, {0x0000, 0, 0.0f});
+    ASSERT_TRUE(rig.StartAutomatic());
+    ASSERT_TRUE(rig.WaitReceived(1, 0x0000, 1001, 100.0f));
     // Out: home position, ONLINE, a job on the axis FB; the AUTOMATIC FBs leave the modules.
-    ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
-    EXPECT_FALSE(bench.Auto(1)->INEXCHANGE.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Axis(1)->OWNSMODULE.value != 0; }, 100, "axis FB owns"));
-    bench.ScanMs(30);
-    ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
-    bench.ScanMs(30);
-    auto& axis = bench.Axis(1);
+    ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+    EXPECT_FALSE(rig.Auto(1)->INEXCHANGE.value);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Axis(1)->OWNSMODULE.value != 0; }, 100, "axis FB owns"));
+    rig.ScanMs(30);
+    ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
+    rig.ScanMs(30);
+    auto& axis = rig.Axis(1);
     EXPECT_TRUE(axis->STATUSVALID.value);
-    EXPECT_EQ(bench.Pac().Module(1).CmdError(), 0u) << "no flag data taken for a job";
-    const double before = bench.Pac().Axes().Motion(1).Position();
+    EXPECT_EQ(rig.Pac().Module(1).CmdError(), 0u) << "no flag data taken for a job";
+    const double before = rig.Pac().Axes().Motion(1).Position();
     axis->COMMAND.value = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
     axis->POSITION.value = 10.0f;
     axis->EXECUTE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return pac::test::IsFinal(axis); }, 2000, "the job's end"));
+    ASSERT_TRUE(rig.WaitFor([&] { return pac::test::IsFinal(axis); }, 2000, "the job's end"));
     EXPECT_TRUE(axis->DONE.value) << "ErrorID 16#" << std::hex << axis->ERRORID.value;
-    EXPECT_NEAR(bench.Pac().Axes().Motion(1).Position(), before + 10.0, 1e-3);
+    EXPECT_NEAR(rig.Pac().Axes().Motion(1).Position(), before + 10.0, 1e-3);
     axis->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     // In again: the axis FB's module holds dynamics and a position, none of which may reach the flags.
-    ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
-    bench.ScanMs(30);
-    bench.Send(1, {0x0F0F, -1, -1.0f});
-    ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC));
-    ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 0, -2.0f));
+    ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+    rig.ScanMs(30);
+    rig.Send(1, {0x0F0F, -1, -1.0f});
+    ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC));
+    ASSERT_TRUE(rig.WaitReceived(1, 0x0001, 0, -2.0f));
     EXPECT_FALSE(axis->OWNSMODULE.value);
-    EXPECT_GT(bench.AutomaticCyclesChecked(), 0);
+    EXPECT_GT(rig.AutomaticCyclesChecked(), 0);
 }
 
 TEST_P(AutomaticSim, ThePrintedLayoutWithModeChangeAndItsRangeOfN) {
-    AutomaticBench bench(OptionsFor(AutomaticLayout::kAxisWidths));
+    AutomaticRig rig(OptionsFor(AutomaticLayout::kAxisWidths));
     // Axis ON would be M1 and M2 in this layout: FB_PAC_Ctrl.ModeChange clears the axis modules before it.
-    bench.Send(1, {0x8001, -32768, 0.5f});
-    bench.Send(2, {0x8000, 300, 0.0f});
-    ASSERT_TRUE(bench.StartAutomatic());
-    ASSERT_TRUE(bench.WaitReceived(1, 0x0001, -32767, 1.0f));
-    ASSERT_TRUE(bench.WaitReceived(2, 0x8000, 600, -1.0f));
-    bench.Scan();
-    auto& fb = bench.Auto(1);
+    rig.Send(1, {0x8001, -32768, 0.5f});
+    rig.Send(2, {0x8000, 300, 0.0f});
+    ASSERT_TRUE(rig.StartAutomatic());
+    ASSERT_TRUE(rig.WaitReceived(1, 0x0001, -32767, 1.0f));
+    ASSERT_TRUE(rig.WaitReceived(2, 0x8000, 600, -1.0f));
+    rig.Scan();
+    auto& fb = rig.Auto(1);
     // N beyond 16 bits: refused, the last value stays on the wire.
-    bench.Try(1, {0x8001, 40000, 0.5f});
-    bench.Scan();
+    rig.Try(1, {0x8001, 40000, 0.5f});
+    rig.Scan();
     EXPECT_TRUE(fb->ERROR.value);
     EXPECT_EQ(fb->ERRORID.value, kErrValueRange);
-    bench.ScanMs(30);
-    EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(1), -32768);
+    rig.ScanMs(30);
+    EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(1), -32768);
 }
 
 TEST_P(AutomaticSim, AnRRegisterTheFieldCannotCarryIsRefused) {
-    AutomaticBench bench(OptionsFor());
-    bench.Send(1, {0, 0, 2.0f});
-    ASSERT_TRUE(bench.StartAutomatic(true));
-    ASSERT_TRUE(bench.WaitReceived(1, 0, 1, 4.0f));
-    auto& fb = bench.Auto(1);
+    AutomaticRig rig(OptionsFor());
+    rig.Send(1, {0, 0, 2.0f});
+    ASSERT_TRUE(rig.StartAutomatic(true));
+    ASSERT_TRUE(rig.WaitReceived(1, 0, 1, 4.0f));
+    auto& fb = rig.Auto(1);
     for (const float bad : {3.0e6f, -3.0e6f, std::nanf(""), INFINITY}) {
-        bench.Try(1, {0, 0, bad});
-        bench.Scan();
+        rig.Try(1, {0, 0, bad});
+        rig.Scan();
         EXPECT_TRUE(fb->ERROR.value) << bad;
         EXPECT_EQ(fb->ERRORID.value, kErrValueRange) << bad;
     }
-    bench.ScanMs(30);
-    EXPECT_EQ(bench.Pac().Io().realRegisters.GetReal(1), 2.0f) << "the last value that fitted stays";
+    rig.ScanMs(30);
+    EXPECT_EQ(rig.Pac().Io().realRegisters.GetReal(1), 2.0f) << "the last value that fitted stays";
 }
 
 // Manual 2.6.1 / 2.6.2 print the widths 4, 2, 2, 4: on a controller that follows the print, the FB with its
@@ -461,14 +461,14 @@ TEST_P(AutomaticSim, AnRRegisterTheFieldCannotCarryIsRefused) {
 TEST_P(AutomaticSim, TheDefaultLayoutIsTheOnePrinted) {
     Options o = OptionsFor(AutomaticLayout::kAxisWidths);
     o.layoutWired = false;
-    AutomaticBench bench(o);
-    bench.Send(1, {0x8001, -300, 1.5f});
-    ASSERT_TRUE(bench.StartAutomatic());
-    ASSERT_TRUE(bench.WaitReceived(1, 0x0001, -299, 3.0f)) << "FW17 = M257 := M1, N17 := N1 + 1, R17 := R1 * 2";
-    const auto& io = bench.Pac().Io();
+    AutomaticRig rig(o);
+    rig.Send(1, {0x8001, -300, 1.5f});
+    ASSERT_TRUE(rig.StartAutomatic());
+    ASSERT_TRUE(rig.WaitReceived(1, 0x0001, -299, 3.0f)) << "FW17 = M257 := M1, N17 := N1 + 1, R17 := R1 * 2";
+    const auto& io = rig.Pac().Io();
     EXPECT_EQ(io.flags.Word(1), 0x8001) << "M1 and M16";
     EXPECT_EQ(io.intRegisters.GetInt(1), -300);
-    EXPECT_EQ(bench.Auto(1)->LAYOUT.value, E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW4_N2);
+    EXPECT_EQ(rig.Auto(1)->LAYOUT.value, E_PAC_AUTOLAYOUT__PAC_AUTOLAYOUT_FW4_N2);
 }
 
 // Out of AUTOMATIC with no axis FB on the modules: in HOME POSITION and ONLINE the bytes are a control word
@@ -480,20 +480,20 @@ TEST_P(AutomaticSim, LeavingAutomaticClearsTheFlagsWhenNoAxisFbTakesTheModule) {
         SCOPED_TRACE(layout == AutomaticLayout::kAxisWidths ? "the printed layout" : "the other layout");
         Options o = OptionsFor(layout);
         o.axisFbs = false;
-        AutomaticBench bench(o);
-        bench.Send(1, {0x0045, 500, 50.0f});
-        bench.Send(2, {0x0005, 7, 1.0f});
-        ASSERT_TRUE(bench.StartAutomatic());
-        ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 501, 100.0f));
-        const double before = bench.Pac().Axes().Motion(1).Position();
-        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
-        EXPECT_FALSE(bench.Auto(1)->INEXCHANGE.value);
-        bench.ScanMs(30);
-        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
-        bench.ScanMs(100);
-        EXPECT_EQ(bench.Pac().Module(1).CmdError(), 0u) << "no flag data taken for a job";
-        EXPECT_EQ(bench.Pac().Axes().Motion(1).Position(), before);
-        EXPECT_EQ(bench.Auto(1)->RECEIVEDINTREGISTER.value, 501) << "the received values hold outside AUTOMATIC";
+        AutomaticRig rig(o);
+        rig.Send(1, {0x0045, 500, 50.0f});
+        rig.Send(2, {0x0005, 7, 1.0f});
+        ASSERT_TRUE(rig.StartAutomatic());
+        ASSERT_TRUE(rig.WaitReceived(1, 0x0001, 501, 100.0f));
+        const double before = rig.Pac().Axes().Motion(1).Position();
+        ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+        EXPECT_FALSE(rig.Auto(1)->INEXCHANGE.value);
+        rig.ScanMs(30);
+        ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
+        rig.ScanMs(100);
+        EXPECT_EQ(rig.Pac().Module(1).CmdError(), 0u) << "no flag data taken for a job";
+        EXPECT_EQ(rig.Pac().Axes().Motion(1).Position(), before);
+        EXPECT_EQ(rig.Auto(1)->RECEIVEDINTREGISTER.value, 501) << "the received values hold outside AUTOMATIC";
     }
 }
 
@@ -511,32 +511,32 @@ TEST_P(AutomaticSim, TheAxisFbsTakeTheModulesBackInBothCallOrders) {
         Options o = OptionsFor(AutomaticLayout::kAxisWidths);
         o.statusChangesBetween = between;
         o.axisOwnsModuleWired = wired;
-        AutomaticBench bench(o);
+        AutomaticRig rig(o);
         const std::uint16_t flags = wired ? 0x0001 : 0x0045;
-        bench.Send(1, {flags, 0, 0.0f});
-        bench.Send(2, {flags, 0, 0.0f});
-        ASSERT_TRUE(bench.StartAutomatic());
-        ASSERT_TRUE(bench.WaitReceived(1, 0x0001, 1, 0.0f));
-        ASSERT_TRUE(bench.WaitReceived(2, flags, 0, -1.0f));
-        const int before = bench.HandOversChecked();
-        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Axis(1)->OWNSMODULE.value && bench.Axis(2)->OWNSMODULE.value; },
+        rig.Send(1, {flags, 0, 0.0f});
+        rig.Send(2, {flags, 0, 0.0f});
+        ASSERT_TRUE(rig.StartAutomatic());
+        ASSERT_TRUE(rig.WaitReceived(1, 0x0001, 1, 0.0f));
+        ASSERT_TRUE(rig.WaitReceived(2, flags, 0, -1.0f));
+        const int before = rig.HandOversChecked();
+        ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL));
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Axis(1)->OWNSMODULE.value && rig.Axis(2)->OWNSMODULE.value; },
                                   100, "axis FBs own"));
-        bench.ScanMs(30);
-        ASSERT_TRUE(bench.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
+        rig.ScanMs(30);
+        ASSERT_TRUE(rig.Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE));
         for (int k = 1; k <= kModules; ++k) {
-            auto& axis = bench.Axis(k);
-            const double start = bench.Pac().Axes().Motion(k).Position();
+            auto& axis = rig.Axis(k);
+            const double start = rig.Pac().Axes().Motion(k).Position();
             axis->COMMAND.value = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
             axis->POSITION.value = 5.0f;
             axis->EXECUTE.value = TRUE;
-            ASSERT_TRUE(bench.WaitFor([&] { return pac::test::IsFinal(axis); }, 2000, "the job's end"));
+            ASSERT_TRUE(rig.WaitFor([&] { return pac::test::IsFinal(axis); }, 2000, "the job's end"));
             EXPECT_TRUE(axis->DONE.value) << "axis " << k << ": ErrorID 16#" << std::hex << axis->ERRORID.value;
-            EXPECT_NEAR(bench.Pac().Axes().Motion(k).Position(), start + 5.0, 1e-3);
+            EXPECT_NEAR(rig.Pac().Axes().Motion(k).Position(), start + 5.0, 1e-3);
             axis->EXECUTE.value = FALSE;
-            bench.Scan();
+            rig.Scan();
         }
-        EXPECT_GT(bench.HandOversChecked(), before);
+        EXPECT_GT(rig.HandOversChecked(), before);
     }
 }
 

@@ -19,15 +19,15 @@
 #include <vector>
 
 #include "axis_control_rules.hpp"
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
-#include "pac/bench_trace.hpp"
+#include "pac/rig_trace.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/sim/axis_module.hpp"
 #include "pac/sim/pa_control.hpp"
 #include "pac/st_program.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/trace_dump.hpp"
 #include "plcopen_pins.hpp"
 #include "plcopen_trace.hpp"
@@ -202,7 +202,7 @@ struct AxisReading {
     bool E525() const { return noReference == NoReferenceAnswer::kSystemError525; }
 };
 
-struct BenchOptions {
+struct RigOptions {
     BusTiming timing{1, 10, 0};
     AxisReading reading;
     int axes = 1;
@@ -226,7 +226,7 @@ struct Outcome : pac::test::FinalOutcome {
     nanoseconds edgeTime{0};
 };
 
-pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
+pac::sim::PaControlConfig ConfigFor(const RigOptions& o) {
     pac::sim::PaControlConfig config;
     config.axisMachine.enableMode = o.enableMode;
     config.referencedAtPowerOn = o.referenced;
@@ -238,12 +238,12 @@ pac::sim::PaControlConfig ConfigFor(const BenchOptions& o) {
     return config;
 }
 
-class AxisSimBench {
+class AxisSimRig {
 public:
-    explicit AxisSimBench(const BenchOptions& options)
+    explicit AxisSimRig(const RigOptions& options)
         : options_(options),
           layout_{true, options.axes},
-          plc_(pac::test::PlcBenchTimingOf(options.timing), ConfigFor(options), layout_),
+          plc_(pac::test::RigTimingOf(options.timing), ConfigFor(options), layout_),
           view_(layout_) {
         auto& pac = plc_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
@@ -301,12 +301,12 @@ public:
     pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::sim::PaControl& Pac() { return plc_.Controller(); }
     pac::sim::ServoAxis& Motion(int k) { return plc_.Controller().Axes().Motion(k); }
-    pac::PacPlcBench& Plc() { return plc_; }
+    pac::PacRig& Plc() { return plc_; }
     nanoseconds Now() const { return plc_.Now(); }
     std::int64_t ScanCount() { return plc_.Task().ScanCount(); }
     const AxisTrace& Trace(int k) const { return traces_.at(static_cast<std::size_t>(k - 1)); }
     const ControllerView& View() const { return view_; }
-    const BenchOptions& Options() const { return options_; }
+    const RigOptions& Options() const { return options_; }
 
     std::uint32_t Control(int k) const {
         return pac::sim::ReadDword(plc_.ToPac().Module12(layout_.AxisOffset(k)), 0);
@@ -379,9 +379,9 @@ private:
         }
     }
 
-    BenchOptions options_;
+    RigOptions options_;
     pac::sim::ModuleLayout layout_;
-    pac::PacPlcBench plc_;
+    pac::PacRig plc_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<AxisFb>> axes_;  // never moved: the PLC's programs hold references
     std::vector<AxisTrace> traces_;
@@ -393,13 +393,13 @@ private:
 };
 
 // Axis parameters 8 / 9 (traverse range) and the limit switches (machine positions) of axis k.
-void SetRange(AxisSimBench& bench, int k, float min, float max) {
-    auto& parameters = bench.Pac().Axes().Parameters(k);
+void SetRange(AxisSimRig& rig, int k, float min, float max) {
+    auto& parameters = rig.Pac().Axes().Parameters(k);
     ASSERT_EQ(parameters.Set(pac::sim::axisparam::kMinTraverseArea, pac::test::BitsOf(min)),
               pac::sim::ParameterTable::SetResult::kOk);
     ASSERT_EQ(parameters.Set(pac::sim::axisparam::kMaxTraverseArea, pac::test::BitsOf(max)),
               pac::sim::ParameterTable::SetResult::kOk);
-    ASSERT_TRUE(bench.Pac().Axes().ApplyParameters(k));
+    ASSERT_TRUE(rig.Pac().Axes().ApplyParameters(k));
 }
 
 AxisStep S(std::uint32_t control, std::uint32_t status, char output) { return {control, status, output}; }
@@ -434,8 +434,8 @@ std::vector<AxisSimCase> OnReading(const AxisReading& reading) {
 
 class AxisSimTiming : public ::testing::TestWithParam<AxisSimCase> {
 protected:
-    BenchOptions Options() const {
-        BenchOptions o;
+    RigOptions Options() const {
+        RigOptions o;
         o.timing = GetParam().timing;
         o.reading = GetParam().reading;
         return o;
@@ -469,30 +469,30 @@ TEST_P(AxisSimTiming, AxisOnOff_2_7_9_1_InEveryEnableMode) {
     constexpr std::uint32_t kDisabledStatus = as::kDriveDisabled | as::kDisabled | as::kReferenced | kFree;  // 0x724
     for (const Mode& m : modes) {
         SCOPED_TRACE(m.name);
-        BenchOptions o = Options();
+        RigOptions o = Options();
         o.enableMode = m.mode;
-        AxisSimBench bench(o);
-        bench.GoOnline();
-        auto& fb = bench.Fb(1);
-        const std::size_t mark = bench.Trace(1).Mark();
+        AxisSimRig rig(o);
+        rig.GoOnline();
+        auto& fb = rig.Fb(1);
+        const std::size_t mark = rig.Trace(1).Mark();
         fb->ENABLE.value = FALSE;
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->STATUSWORD.value == m.off; }, 200, "Axis OFF"));
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->STATUSWORD.value == m.off; }, 200, "Axis OFF"));
         EXPECT_FALSE(fb->ENABLED.value);
         EXPECT_EQ(fb->HALTED.value != 0, m.mode == EnableMode::kHalt);
         EXPECT_EQ(fb->IDLE.value != 0, m.mode == EnableMode::kIdle);
         EXPECT_EQ(fb->SAFE.value != 0, m.mode == EnableMode::kSafe);
         EXPECT_EQ(fb->DRIVEDISABLED.value != 0, m.mode != EnableMode::kHalt);
-        bench.ScanMs(20);
+        rig.ScanMs(20);
         fb->ENABLE.value = TRUE;
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
-        bench.ScanMs(20);
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+        rig.ScanMs(20);
         fb->DISABLEDRIVE.value = TRUE;
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->DISABLED.value != 0; }, 200, "DISABLED"));
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->DISABLED.value != 0; }, 200, "DISABLED"));
         EXPECT_TRUE(fb->DRIVEDISABLED.value);
-        bench.ScanMs(20);
+        rig.ScanMs(20);
         fb->DISABLEDRIVE.value = FALSE;
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON again"));
-        bench.ScanMs(20);
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON again"));
+        rig.ScanMs(20);
         const Steps expected = {S(kOn, kOnReferenced, '-'),
                                 S(0, kOnReferenced, '-'),
                                 S(0, m.off, '-'),
@@ -502,18 +502,18 @@ TEST_P(AxisSimTiming, AxisOnOff_2_7_9_1_InEveryEnableMode) {
                                 S(kOn | ac::kDisableDrive, kDisabledStatus, '-'),
                                 S(kOn, kDisabledStatus, '-'),
                                 S(kOn, kOnReferenced, '-')};
-        EXPECT_EQ(bench.Trace(1).Since(mark), expected) << Show(bench.Trace(1).Since(mark));
-        bench.ExpectJobsSeen(1, 0);
+        EXPECT_EQ(rig.Trace(1).Since(mark), expected) << Show(rig.Trace(1).Since(mark));
+        rig.ExpectJobsSeen(1, 0);
     }
 }
 
 TEST_P(AxisSimTiming, Referencing_2_7_9_2) {
-    BenchOptions o = Options();
+    RigOptions o = Options();
     o.referenced = false;
-    AxisSimBench bench(o);
-    bench.GoOnline();
-    EXPECT_FALSE(bench.Fb(1)->REFERENCED.value);
-    const Outcome home = bench.Run(1, {kHome});
+    AxisSimRig rig(o);
+    rig.GoOnline();
+    EXPECT_FALSE(rig.Fb(1)->REFERENCED.value);
+    const Outcome home = rig.Run(1, {kHome});
     ASSERT_TRUE(home.Done()) << home;
     // G25 with the axis parameters: search negative to the cam edge (machine -20), creep back, load 0 there,
     // brake 0.5 AE past it (docs/sim_axis.md, homing mode 0).
@@ -523,44 +523,44 @@ TEST_P(AxisSimTiming, Referencing_2_7_9_2) {
                             S(kOn | ac::kHome, kOnActive, 'B'),
                             S(kOn, kOnReferenced, 'D'),
                             S(kOn, kOnReferenced, '-')};
-    EXPECT_EQ(bench.Trace(1).Since(home.mark), expected) << Show(bench.Trace(1).Since(home.mark));
-    EXPECT_TRUE(bench.Fb(1)->REFERENCED.value);
-    EXPECT_EQ(bench.Position(1), 0.5f);
-    bench.ExpectJobsSeen(1, 1);
+    EXPECT_EQ(rig.Trace(1).Since(home.mark), expected) << Show(rig.Trace(1).Since(home.mark));
+    EXPECT_TRUE(rig.Fb(1)->REFERENCED.value);
+    EXPECT_EQ(rig.Position(1), 0.5f);
+    rig.ExpectJobsSeen(1, 1);
 }
 
 TEST_P(AxisSimTiming, RelativeTraversing_2_7_9_3_InBothFormats) {
     for (const bool integer : {false, true}) {
         SCOPED_TRACE(integer ? "integer format" : "IEEE format");
-        AxisSimBench bench(Options());
-        bench.GoOnline(integer);
-        const Outcome move = bench.Run(1, {kRelative, 37.625f});
+        AxisSimRig rig(Options());
+        rig.GoOnline(integer);
+        const Outcome move = rig.Run(1, {kRelative, 37.625f});
         ASSERT_TRUE(move.Done()) << move;
         const Steps expected = {S(kOn, kOnReferenced, '-'),
                                 S(kOn | ac::kStart | ac::kMoveRelative, kOnReferenced, 'B'),
                                 S(kOn | ac::kMoveRelative, kOnActive, 'B'),
                                 S(kOn, kOnReferenced, 'D'),
                                 S(kOn, kOnReferenced, '-')};
-        EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
-        EXPECT_EQ(bench.Position(1), 37.625f);
-        EXPECT_EQ(bench.Motion(1).Position(), 37.625);
+        EXPECT_EQ(rig.Trace(1).Since(move.mark), expected) << Show(rig.Trace(1).Since(move.mark));
+        EXPECT_EQ(rig.Position(1), 37.625f);
+        EXPECT_EQ(rig.Motion(1).Position(), 37.625);
         // The position bytes on the wire, in the format in force (2.5.3): 37.625 or 37625.
-        const pac::sim::Image12 reply = bench.Plc().FromPac().Module12(16);
+        const pac::sim::Image12 reply = rig.Plc().FromPac().Module12(16);
         EXPECT_EQ(pac::sim::ReadDword(reply, 8), integer ? 37625u : pac::test::BitsOf(37.625f));
-        const pac::sim::Image12 sent = bench.Plc().ToPac().Module12(16);
+        const pac::sim::Image12 sent = rig.Plc().ToPac().Module12(16);
         EXPECT_EQ(pac::sim::ReadDword(sent, 8), integer ? 37625u : pac::test::BitsOf(37.625f));
-        bench.ExpectJobsSeen(1, 1);
+        rig.ExpectJobsSeen(1, 1);
     }
 }
 
 TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
-    AxisSimBench bench(Options());
-    bench.Pac().Axes().SetLimitSwitches(1, -50.0, 60.0);
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
+    AxisSimRig rig(Options());
+    rig.Pac().Axes().SetLimitSwitches(1, -50.0, 60.0);
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
     // The move runs into the positive limit switch: the axis stops on it at once with axis error 64 (FAULT,
     // axis error bit, HALT, the switch bit 0); the job ends with 16#800A and the number in AxisErrorNumber.
-    const Outcome move = bench.StartAndWait(1, {kRelative, 100.0f});
+    const Outcome move = rig.StartAndWait(1, {kRelative, 100.0f});
     ASSERT_TRUE(move.Error()) << move;
     EXPECT_EQ(move.ErrorId(), kErrAxisError);
     constexpr std::uint32_t kOnSwitch = as::kDriveEnabled | as::kHalt | as::kReferenced | as::kNegativeLimitNotActuated;
@@ -569,46 +569,46 @@ TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
                             S(kOn | ac::kStart | ac::kMoveRelative, kOnReferenced, 'B'),
                             S(kOn | ac::kMoveRelative, kOnActive, 'B'),
                             S(kOn, kFault, 'E')};
-    EXPECT_EQ(bench.Trace(1).Since(move.mark), expected) << Show(bench.Trace(1).Since(move.mark));
+    EXPECT_EQ(rig.Trace(1).Since(move.mark), expected) << Show(rig.Trace(1).Since(move.mark));
     EXPECT_TRUE(fb->AXISERROR.value);
     EXPECT_TRUE(fb->FAULT.value);
     EXPECT_EQ(fb->AXISERRORNUMBER.value, kLimitSwitch);
     EXPECT_TRUE(fb->POSITIVELIMITACTUATED.value);
     EXPECT_FALSE(fb->NEGATIVELIMITACTUATED.value);
-    EXPECT_EQ(bench.Position(1), 60.0f) << "stopped on the switch";
+    EXPECT_EQ(rig.Position(1), 60.0f) << "stopped on the switch";
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     // A job while the axis error is pending: refused at the edge, nothing sent.
-    Outcome refused = bench.Run(1, {kRelative, -10.0f});
+    Outcome refused = rig.Run(1, {kRelative, -10.0f});
     EXPECT_EQ(refused.ErrorId(), kErrAxisError);
     EXPECT_EQ(refused.finalScan, refused.edgeScan);
     // ResetError: bit 16 until the axis error bit is seen 0.
-    std::size_t mark = bench.Trace(1).Mark();
+    std::size_t mark = rig.Trace(1).Mark();
     fb->RESETERROR.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
-    bench.ScanMs(20);
+    ASSERT_TRUE(rig.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
+    rig.ScanMs(20);
     fb->RESETERROR.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     const Steps reset = {S(kOn, kFault, '-'), S(kOn | ac::kResetAxisError, kFault, '-'), S(kOn, kOnSwitch, '-')};
-    EXPECT_EQ(bench.Trace(1).Since(mark), reset) << Show(bench.Trace(1).Since(mark));
+    EXPECT_EQ(rig.Trace(1).Since(mark), reset) << Show(rig.Trace(1).Since(mark));
     EXPECT_EQ(fb->AXISERRORNUMBER.value, 0);
     // Further into the switch: refused (CMD error 64); away from it: moves.
-    const Outcome further = bench.Run(1, {kRelative, 10.0f});
+    const Outcome further = rig.Run(1, {kRelative, 10.0f});
     ASSERT_TRUE(further.Error()) << further;
     EXPECT_EQ(further.ErrorId(), kLimitSwitch);
     const Steps refusal = {S(kOn, kOnSwitch, '-'),
                            S(kOn | ac::kStart | ac::kMoveRelative, kOnSwitch, 'B'),
                            S(kOn, kOnSwitch | as::kCmdError, 'E'),
                            S(kOn, kOnSwitch | as::kCmdError, '-')};
-    EXPECT_EQ(bench.Trace(1).Since(further.mark), refusal) << Show(bench.Trace(1).Since(further.mark));
+    EXPECT_EQ(rig.Trace(1).Since(further.mark), refusal) << Show(rig.Trace(1).Since(further.mark));
     EXPECT_TRUE(fb->CMDERROR.value);
     EXPECT_EQ(fb->CMDERRORNUMBER.value, kLimitSwitch);
-    const Outcome away = bench.Run(1, {kRelative, -30.0f});
+    const Outcome away = rig.Run(1, {kRelative, -30.0f});
     ASSERT_TRUE(away.Done()) << away;
-    EXPECT_EQ(bench.Position(1), 30.0f);
+    EXPECT_EQ(rig.Position(1), 30.0f);
     EXPECT_FALSE(fb->POSITIVELIMITACTUATED.value);
     EXPECT_FALSE(fb->CMDERROR.value) << "cleared by the Start edge of the good job (2.7.4.14)";
-    bench.ExpectJobsSeen(1, 3);
+    rig.ExpectJobsSeen(1, 3);
 }
 
 // ---- every command, both formats ------------------------------------------------------------------------
@@ -616,93 +616,93 @@ TEST_P(AxisSimTiming, RelativeTraversingWithLimitSwitchError_2_7_9_4) {
 TEST_P(AxisSimTiming, EveryCommandInBothFormats) {
     for (const bool integer : {false, true}) {
         SCOPED_TRACE(integer ? "integer format" : "IEEE format");
-        BenchOptions o = Options();
+        RigOptions o = Options();
         o.referenced = false;
-        AxisSimBench bench(o);
-        SetRange(bench, 1, -50.0f, 150.0f);
-        bench.Pac().Axes().SetLimitSwitches(1, -80.0, 180.0);
-        bench.GoOnline(integer);
-        auto& fb = bench.Fb(1);
+        AxisSimRig rig(o);
+        SetRange(rig, 1, -50.0f, 150.0f);
+        rig.Pac().Axes().SetLimitSwitches(1, -80.0, 180.0);
+        rig.GoOnline(integer);
+        auto& fb = rig.Fb(1);
         auto run = [&](const Job& job) {
-            const Outcome outcome = bench.Run(1, job);
+            const Outcome outcome = rig.Run(1, job);
             EXPECT_TRUE(outcome.Done()) << "command " << job.command << " " << job.position << ": " << outcome;
             return outcome;
         };
         run({kHome});
         EXPECT_TRUE(fb->REFERENCED.value);
-        EXPECT_EQ(bench.Position(1), 0.5f);
+        EXPECT_EQ(rig.Position(1), 0.5f);
         run({kAbsolute, 100.0f, 800, 2000});
-        EXPECT_EQ(bench.Position(1), 100.0f);
+        EXPECT_EQ(rig.Position(1), 100.0f);
         // The job as the PA-CONTROL took it over with the Start edge: data, bit and Start in one image (2.3.3).
-        ASSERT_EQ(bench.View().Jobs(1).size(), 2u);
-        const pac::sim::AxisModuleCommand job = bench.View().Jobs(1).back();
+        ASSERT_EQ(rig.View().Jobs(1).size(), 2u);
+        const pac::sim::AxisModuleCommand job = rig.View().Jobs(1).back();
         EXPECT_EQ(job.control, kOn | ac::kStart | ac::kMoveAbsolute);
         EXPECT_EQ(job.speedPerMille, 800);
         EXPECT_EQ(job.accelerationPerMille, 2000);
         EXPECT_EQ(job.position, integer ? 100000u : pac::test::BitsOf(100.0f));
         run({kRelative, -20.5f, 500, 500});
-        EXPECT_EQ(bench.Position(1), 79.5f);
+        EXPECT_EQ(rig.Position(1), 79.5f);
         run({kToMax});
-        EXPECT_EQ(bench.Position(1), 150.0f) << "axis parameter 9";
+        EXPECT_EQ(rig.Position(1), 150.0f) << "axis parameter 9";
         run({kToMin, 0.0f, 1000, 3000});
-        EXPECT_EQ(bench.Position(1), -50.0f) << "axis parameter 8";
+        EXPECT_EQ(rig.Position(1), -50.0f) << "axis parameter 8";
         run({kAbsolute, 100.0f});
         // G29: the position becomes 125.25 and the software limits move with it (2.7.3.5): -24.75..175.25.
         run({kSetPosition, 125.25f});
-        EXPECT_EQ(bench.View().Jobs(1).back().position, integer ? 125250u : pac::test::BitsOf(125.25f));
-        EXPECT_EQ(bench.Position(1), 125.25f);
-        EXPECT_EQ(bench.Motion(1).MaxRange(), 175.25);
+        EXPECT_EQ(rig.View().Jobs(1).back().position, integer ? 125250u : pac::test::BitsOf(125.25f));
+        EXPECT_EQ(rig.Position(1), 125.25f);
+        EXPECT_EQ(rig.Motion(1).MaxRange(), 175.25);
         EXPECT_TRUE(fb->REFERENCED.value) << "G29 leaves the reference as it is";
         run({kToMax});
-        EXPECT_EQ(bench.Position(1), 175.25f) << "the maximum shifted by G29";
-        Outcome outside = bench.Run(1, {kAbsolute, 180.0f});
+        EXPECT_EQ(rig.Position(1), 175.25f) << "the maximum shifted by G29";
+        Outcome outside = rig.Run(1, {kAbsolute, 180.0f});
         EXPECT_EQ(outside.ErrorId(), kPositionRange) << outside;
         run({kAbsolute, -24.75f});
-        EXPECT_EQ(bench.Position(1), -24.75f) << "the minimum shifted by G29";
+        EXPECT_EQ(rig.Position(1), -24.75f) << "the minimum shifted by G29";
         // Delete the G29 offsets: position and limits back by 25.25.
         run({kClearOffset});
-        EXPECT_EQ(bench.Position(1), -50.0f);
-        EXPECT_EQ(bench.Motion(1).MaxRange(), 150.0);
-        outside = bench.Run(1, {kAbsolute, 160.0f});
+        EXPECT_EQ(rig.Position(1), -50.0f);
+        EXPECT_EQ(rig.Motion(1).MaxRange(), 150.0);
+        outside = rig.Run(1, {kAbsolute, 160.0f});
         EXPECT_EQ(outside.ErrorId(), kPositionRange) << outside;
         run({kAbsolute, 100.0f});
         // G26: position 10, referenced, the limits as they are (2.7.3.4).
         run({kSetReferenced, 10.0f});
-        EXPECT_EQ(bench.Position(1), 10.0f);
-        EXPECT_EQ(bench.Motion(1).MinRange(), -50.0);
+        EXPECT_EQ(rig.Position(1), 10.0f);
+        EXPECT_EQ(rig.Motion(1).MinRange(), -50.0);
         run({kToMin});
-        EXPECT_EQ(bench.Position(1), -50.0f);
+        EXPECT_EQ(rig.Position(1), -50.0f);
         run({kClearDisplaced});
-        EXPECT_EQ(bench.Position(1), -50.0f);
-        EXPECT_EQ(bench.Motion(1).Position(), -50.0);
-        bench.ExpectJobsSeen(1, 16);
+        EXPECT_EQ(rig.Position(1), -50.0f);
+        EXPECT_EQ(rig.Motion(1).Position(), -50.0);
+        rig.ExpectJobsSeen(1, 16);
     }
 }
 
 TEST_P(AxisSimTiming, DisplacedWhileOffAndClearDisplaced) {
-    BenchOptions o = Options();
+    RigOptions o = Options();
     o.enableMode = EnableMode::kIdle;
-    AxisSimBench bench(o);
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
+    AxisSimRig rig(o);
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
     fb->ENABLE.value = FALSE;
-    ASSERT_TRUE(bench.WaitFor([&] { return fb->IDLE.value != 0; }, 200, "IDLE"));
-    ASSERT_TRUE(bench.Pac().Axes().Displace(1, bench.Now(), 5.0));
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->IDLE.value != 0; }, 200, "IDLE"));
+    ASSERT_TRUE(rig.Pac().Axes().Displace(1, rig.Now(), 5.0));
     fb->ENABLE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
     EXPECT_TRUE(fb->DISPLACEDWHILEOFF.value);
     EXPECT_TRUE(fb->GROUPDISPLACEDWHILEOFF.value);
-    EXPECT_EQ(bench.Position(1), 5.0f) << "the displaced position is taken over";
-    const Outcome refused = bench.Run(1, {kRelative, 1.0f});
+    EXPECT_EQ(rig.Position(1), 5.0f) << "the displaced position is taken over";
+    const Outcome refused = rig.Run(1, {kRelative, 1.0f});
     EXPECT_EQ(refused.ErrorId(), kAxisDisplaced) << refused;
-    const Outcome clear = bench.Run(1, {kClearDisplaced});
+    const Outcome clear = rig.Run(1, {kClearDisplaced});
     EXPECT_TRUE(clear.Done()) << clear;
     EXPECT_FALSE(fb->DISPLACEDWHILEOFF.value);
     EXPECT_FALSE(fb->GROUPDISPLACEDWHILEOFF.value);
-    const Outcome move = bench.Run(1, {kRelative, 1.0f});
+    const Outcome move = rig.Run(1, {kRelative, 1.0f});
     EXPECT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Position(1), 6.0f);
-    bench.ExpectJobsSeen(1, 3);
+    EXPECT_EQ(rig.Position(1), 6.0f);
+    rig.ExpectJobsSeen(1, 3);
 }
 
 // ---- CMD errors, both restart styles --------------------------------------------------------------------
@@ -710,28 +710,28 @@ TEST_P(AxisSimTiming, DisplacedWhileOffAndClearDisplaced) {
 TEST_P(AxisSimTiming, CmdErrorsAndRecoveryOnBothRestartStyles) {
     for (const CmdErrorRestart style : {CmdErrorRestart::kSameCycle, CmdErrorRestart::kOneCycleClear}) {
         SCOPED_TRACE(style == CmdErrorRestart::kSameCycle ? "kSameCycle" : "kOneCycleClear");
-        BenchOptions o = Options();
+        RigOptions o = Options();
         o.referenced = false;
         o.cmdErrorRestart = style;
-        AxisSimBench bench(o);
-        bench.GoOnline();
-        auto& fb = bench.Fb(1);
+        AxisSimRig rig(o);
+        rig.GoOnline();
+        auto& fb = rig.Fb(1);
         auto expectError = [&](const Job& job, std::uint32_t number) {
-            const Outcome outcome = bench.Run(1, job);
+            const Outcome outcome = rig.Run(1, job);
             EXPECT_TRUE(outcome.Error()) << outcome;
             EXPECT_EQ(outcome.ErrorId(), number) << outcome;
             EXPECT_EQ(fb->CMDERRORNUMBER.value, number);
             EXPECT_TRUE(fb->CMDERROR.value);
         };
         auto expectDone = [&](const Job& job) {
-            const Outcome outcome = bench.Run(1, job);
+            const Outcome outcome = rig.Run(1, job);
             EXPECT_TRUE(outcome.Done()) << outcome;
         };
         // Unreferenced: CMD error 43, or system error E525 as an axis error (the 2.7.2 note), whose number the FB
         // passes through unchanged; ResetError clears the axis error for the next job.
         auto expectNoReference = [&] {
             if (!Reading().E525()) return expectError({kAbsolute, 10.0f}, kNoReference);
-            const Outcome outcome = bench.StartAndWait(1, {kAbsolute, 10.0f});
+            const Outcome outcome = rig.StartAndWait(1, {kAbsolute, 10.0f});
             EXPECT_TRUE(outcome.Error()) << outcome;
             EXPECT_EQ(outcome.ErrorId(), kE525) << outcome;
             EXPECT_EQ(fb->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_SYSTEM);
@@ -739,133 +739,133 @@ TEST_P(AxisSimTiming, CmdErrorsAndRecoveryOnBothRestartStyles) {
             EXPECT_FALSE(fb->CMDERROR.value);
             fb->EXECUTE.value = FALSE;
             fb->RESETERROR.value = TRUE;
-            ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "E525 reset"));
+            ASSERT_TRUE(rig.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "E525 reset"));
             fb->RESETERROR.value = FALSE;
-            bench.Scan();
+            rig.Scan();
         };
         // 43 twice in a row with the same number, then good: G26, which the stale 43 must not fail.
         expectNoReference();
         expectNoReference();
-        EXPECT_EQ(bench.Position(1), 0.0f);
+        EXPECT_EQ(rig.Position(1), 0.0f);
         expectDone({kSetReferenced, 0.0f});
         EXPECT_FALSE(fb->CMDERROR.value);
         expectDone({kAbsolute, 10.0f});
-        EXPECT_EQ(bench.Position(1), 10.0f);
+        EXPECT_EQ(rig.Position(1), 10.0f);
         // 55: the job goes out with Axis ON 0 and the PA-CONTROL refuses it; twice, then good.
         fb->ENABLE.value = FALSE;
-        bench.ScanMs(30);
+        rig.ScanMs(30);
         expectError({kRelative, 5.0f}, kAxisOff);
         expectError({kRelative, 5.0f}, kAxisOff);
         fb->ENABLE.value = TRUE;
-        bench.ScanMs(30);
+        rig.ScanMs(30);
         // 65 after 55 (another number), twice, then a good one after the same failed job.
         expectError({kAbsolute, 20000.0f}, kPositionRange);
         expectError({kAbsolute, 20000.0f}, kPositionRange);
         expectDone({kRelative, 5.0f});
-        EXPECT_EQ(bench.Position(1), 15.0f);
+        EXPECT_EQ(rig.Position(1), 15.0f);
         // Failed, good, failed with the same number: the good job cleared the bit in between.
         expectError({kAbsolute, -1.0f}, kPositionRange);
         expectDone({kAbsolute, 12.0f});
         expectError({kAbsolute, -1.0f}, kPositionRange);
-        EXPECT_EQ(bench.Position(1), 12.0f);
-        bench.ExpectJobsSeen(1, 12);
+        EXPECT_EQ(rig.Position(1), 12.0f);
+        rig.ExpectJobsSeen(1, 12);
     }
 }
 
 // ---- axis errors and ResetError -------------------------------------------------------------------------
 
 TEST_P(AxisSimTiming, FollowingErrorOfABlockedAxisAndItsReset) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    const Outcome start = bench.StartAndWait(1, {kAbsolute, 200.0f}, 60);
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    const Outcome start = rig.StartAndWait(1, {kAbsolute, 200.0f}, 60);
     ASSERT_FALSE(start.Done() || start.Error() || start.Aborted()) << start;
-    ASSERT_TRUE(bench.WaitFor([&] { return fb->ACTIVE.value != 0; }, 200, "ACTIVE"));
-    bench.Pac().Axes().SetBlocked(1, bench.Now(), true);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->ACTIVE.value != 0; }, 200, "ACTIVE"));
+    rig.Pac().Axes().SetBlocked(1, rig.Now(), true);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 300, "final output"));
     EXPECT_TRUE(fb->ERROR.value);
     EXPECT_EQ(fb->ERRORID.value, kErrAxisError);
     EXPECT_EQ(fb->AXISERRORNUMBER.value, kFollowingError);
     EXPECT_TRUE(fb->FAULT.value);
-    EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off";
+    EXPECT_EQ(rig.Control(1), kOn) << "Start and the traverse bit off";
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
-    bench.Pac().Axes().SetBlocked(1, bench.Now(), false);
+    rig.Scan();
+    rig.Pac().Axes().SetBlocked(1, rig.Now(), false);
     fb->RESETERROR.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value && (bench.Control(1) & ac::kResetAxisError) == 0; },
+    ASSERT_TRUE(rig.WaitFor([&] { return !fb->AXISERROR.value && (rig.Control(1) & ac::kResetAxisError) == 0; },
                               300, "reset"));
     fb->RESETERROR.value = FALSE;
-    const float stoppedAt = bench.Position(1);
+    const float stoppedAt = rig.Position(1);
     EXPECT_LT(stoppedAt, 200.0f);
-    const Outcome move = bench.Run(1, {kAbsolute, 200.0f});
+    const Outcome move = rig.Run(1, {kAbsolute, 200.0f});
     EXPECT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Position(1), 200.0f);
-    bench.ExpectJobsSeen(1, 2);
+    EXPECT_EQ(rig.Position(1), 200.0f);
+    rig.ExpectJobsSeen(1, 2);
 }
 
 TEST_P(AxisSimTiming, DisturbanceKeepsTheAxisErrorUntilItsCauseIsGone) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 5.0);
-    ASSERT_TRUE(bench.WaitFor([&] { return fb->AXISERROR.value != 0; }, 200, "axis error"));
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 5.0);
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->AXISERROR.value != 0; }, 200, "axis error"));
     EXPECT_EQ(fb->AXISERRORNUMBER.value, kFollowingError);
     // The reset is refused while the cause persists: the pulse ends after Timeout, the error stays.
     fb->RESETERROR.value = TRUE;
-    bench.Scan();
-    ASSERT_NE(bench.Control(1) & ac::kResetAxisError, 0u);
-    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kResetAxisError) == 0; }, 1500, "pulse ended"));
+    rig.Scan();
+    ASSERT_NE(rig.Control(1) & ac::kResetAxisError, 0u);
+    ASSERT_TRUE(rig.WaitFor([&] { return (rig.Control(1) & ac::kResetAxisError) == 0; }, 1500, "pulse ended"));
     EXPECT_TRUE(fb->AXISERROR.value);
     fb->RESETERROR.value = FALSE;
-    bench.Scan();
-    const Outcome refused = bench.Run(1, {kRelative, 1.0f});
+    rig.Scan();
+    const Outcome refused = rig.Run(1, {kRelative, 1.0f});
     EXPECT_EQ(refused.ErrorId(), kErrAxisError) << refused;
     EXPECT_EQ(refused.finalScan, refused.edgeScan) << "refused at the edge, nothing sent";
-    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 0.0);
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 0.0);
     fb->RESETERROR.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
+    ASSERT_TRUE(rig.WaitFor([&] { return !fb->AXISERROR.value; }, 300, "axis error reset"));
     fb->RESETERROR.value = FALSE;
-    const Outcome move = bench.Run(1, {kRelative, 1.0f});
+    const Outcome move = rig.Run(1, {kRelative, 1.0f});
     EXPECT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Position(1), 1.0f);
-    bench.ExpectJobsSeen(1, 1);
+    EXPECT_EQ(rig.Position(1), 1.0f);
+    rig.ExpectJobsSeen(1, 1);
 }
 
 // ---- interruptions: Abort, Enable, link, a new job -----------------------------------------------------
 
 // A long move under way (0 -> 400, 1000 AE/s), taken over and running.
-void StartLongMove(AxisSimBench& bench, Outcome& started) {
-    started = bench.StartAndWait(1, {kAbsolute, 400.0f}, 150);
+void StartLongMove(AxisSimRig& rig, Outcome& started) {
+    started = rig.StartAndWait(1, {kAbsolute, 400.0f}, 150);
     ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 20.0f; }, 300, "moving"));
-    ASSERT_TRUE(bench.Fb(1)->ACTIVE.value);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) > 20.0f; }, 300, "moving"));
+    ASSERT_TRUE(rig.Fb(1)->ACTIVE.value);
 }
 
 TEST_P(AxisSimTiming, AbortMidMoveThenANewJob) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
     Outcome started;
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig, started));
     fb->ABORT.value = TRUE;
-    bench.Scan();
-    EXPECT_EQ(bench.Control(1), kOn) << "the traverse bit goes off in the Abort scan";
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    rig.Scan();
+    EXPECT_EQ(rig.Control(1), kOn) << "the traverse bit goes off in the Abort scan";
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 500, "final output"));
     EXPECT_TRUE(fb->COMMANDABORTED.value);
     EXPECT_TRUE(fb->HALTED.value) << "the axis stands: HALT";
     EXPECT_FALSE(fb->ACTIVE.value);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    const float stoppedAt = bench.Position(1);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    const float stoppedAt = rig.Position(1);
     EXPECT_LT(stoppedAt, 400.0f);
-    EXPECT_EQ(stoppedAt, static_cast<float>(bench.Motion(1).Position()));
+    EXPECT_EQ(stoppedAt, static_cast<float>(rig.Motion(1).Position()));
     fb->ABORT.value = FALSE;
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
-    const Outcome next = bench.Run(1, {kRelative, -10.0f});
+    rig.Scan();
+    const Outcome next = rig.Run(1, {kRelative, -10.0f});
     EXPECT_TRUE(next.Done()) << next;
-    EXPECT_NEAR(bench.Position(1), stoppedAt - 10.0f, 1e-3);
+    EXPECT_NEAR(rig.Position(1), stoppedAt - 10.0f, 1e-3);
     EXPECT_FALSE(fb->HALTED.value);
-    bench.ExpectJobsSeen(1, 2);
+    rig.ExpectJobsSeen(1, 2);
 }
 
 // A stop lasts as long as the axis brakes: with 50 per mille of the axis parameter acceleration (500 units/s²)
@@ -874,34 +874,34 @@ TEST_P(AxisSimTiming, AbortMidMoveThenANewJob) {
 TEST_P(AxisSimTiming, StopEndsWhenActiveFallsAndStopTimeoutBoundsIt) {
     for (const bool bounded : {false, true}) {
         SCOPED_TRACE(bounded ? "StopTimeout 500 ms" : "StopTimeout default");
-        AxisSimBench bench(Options());
-        bench.GoOnline();
-        auto& fb = bench.Fb(1);
+        AxisSimRig rig(Options());
+        rig.GoOnline();
+        auto& fb = rig.Fb(1);
         if (bounded) fb->STOPTIMEOUT.value = pac::ToIecTime(milliseconds(500));
-        const Outcome started = bench.StartAndWait(1, {kAbsolute, 5000.0f, 1000, 50}, 100);
+        const Outcome started = rig.StartAndWait(1, {kAbsolute, 5000.0f, 1000, 50}, 100);
         ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Motion(1).ActualSpeed() >= 600.0; }, 1500, "600 units/s"));
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Motion(1).ActualSpeed() >= 600.0; }, 1500, "600 units/s"));
         fb->ABORT.value = TRUE;
-        const nanoseconds abortAt = bench.Now();
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 3000, "final output"));
+        const nanoseconds abortAt = rig.Now();
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 3000, "final output"));
         if (bounded) {
             EXPECT_TRUE(fb->ERROR.value);
             EXPECT_EQ(fb->ERRORID.value, kErrStopTimeout);
             EXPECT_TRUE(fb->ACTIVE.value) << "the axis still brakes";
-            EXPECT_TRUE(bench.Motion(1).Moving());
-            ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1500, "the axis stands"));
+            EXPECT_TRUE(rig.Motion(1).Moving());
+            ASSERT_TRUE(rig.WaitFor([&] { return !fb->ACTIVE.value; }, 1500, "the axis stands"));
         } else {
             EXPECT_TRUE(fb->COMMANDABORTED.value);
-            EXPECT_GT(bench.Now() - abortAt, milliseconds(1000)) << "longer than Timeout";
+            EXPECT_GT(rig.Now() - abortAt, milliseconds(1000)) << "longer than Timeout";
             EXPECT_FALSE(fb->ACTIVE.value);
-            EXPECT_FALSE(bench.Motion(1).Moving());
+            EXPECT_FALSE(rig.Motion(1).Moving());
         }
         fb->ABORT.value = FALSE;
         fb->EXECUTE.value = FALSE;
-        bench.Scan();
-        const Outcome next = bench.Run(1, {kRelative, -10.0f});
+        rig.Scan();
+        const Outcome next = rig.Run(1, {kRelative, -10.0f});
         EXPECT_TRUE(next.Done()) << next;
-        bench.ExpectJobsSeen(1, 2);
+        rig.ExpectJobsSeen(1, 2);
     }
 }
 
@@ -911,51 +911,51 @@ TEST_P(AxisSimTiming, SpeedChangeDuringAMoveWhereTheAxisTypeAllowsIt) {
     const auto kNoChange = kGvl["PAC_LIB_ERR_NO_DYNAMICS_CHANGE"];
     for (const bool changeable : {true, false}) {
         SCOPED_TRACE(changeable ? "axis type with speed change" : "axis type without");
-        BenchOptions o = Options();
+        RigOptions o = Options();
         o.speedChange = changeable ? pac::sim::SpeedChange::kWhileTraversing : pac::sim::SpeedChange::kNotWhileTraversing;
-        AxisSimBench bench(o);
-        bench.GoOnline();
-        auto& fb = bench.Fb(1);
+        AxisSimRig rig(o);
+        rig.GoOnline();
+        auto& fb = rig.Fb(1);
         fb->DYNAMICSCHANGEABLE.value = changeable ? TRUE : FALSE;
         fb->VELOCITY.value = 500;
         fb->CHANGEDYNAMICS.value = TRUE;
-        bench.Scan();
+        rig.Scan();
         EXPECT_TRUE(fb->CHANGEREFUSED.value) << "no move runs";
         EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange);
         fb->CHANGEDYNAMICS.value = FALSE;
-        bench.Scan();
+        rig.Scan();
         EXPECT_FALSE(fb->CHANGEREFUSED.value);
-        const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 100, 1000}, 100);
+        const Outcome started = rig.StartAndWait(1, {kAbsolute, 300.0f, 100, 1000}, 100);
         ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 10.0f; }, 300, "moving at 100 units/s"));
-        const nanoseconds changeAt = bench.Now();
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) > 10.0f; }, 300, "moving at 100 units/s"));
+        const nanoseconds changeAt = rig.Now();
         fb->VELOCITY.value = 0;
         fb->CHANGEDYNAMICS.value = TRUE;
-        bench.Scan();
+        rig.Scan();
         fb->CHANGEDYNAMICS.value = FALSE;
         if (changeable) {
             EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_VELOCITY"]);
-            bench.Scan();
+            rig.Scan();
             fb->VELOCITY.value = 1000;
             fb->ACCELERATION.value = 0;
             fb->CHANGEDYNAMICS.value = TRUE;
-            bench.Scan();
+            rig.Scan();
             EXPECT_EQ(fb->CHANGEERRORID.value, kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"]);
             fb->CHANGEDYNAMICS.value = FALSE;
-            bench.Scan();
+            rig.Scan();
             fb->ACCELERATION.value = 1000;
             fb->CHANGEDYNAMICS.value = TRUE;
-            bench.Scan();
+            rig.Scan();
             EXPECT_TRUE(fb->DYNAMICSCHANGED.value);
             EXPECT_FALSE(fb->CHANGEREFUSED.value);
-            EXPECT_EQ(bench.Control(1), kOn | ac::kMoveAbsolute) << "the job's bits as they were, no Start";
+            EXPECT_EQ(rig.Control(1), kOn | ac::kMoveAbsolute) << "the job's bits as they were, no Start";
         } else {
             EXPECT_EQ(fb->CHANGEERRORID.value, kNoChange) << "the FB knows the axis type cannot";
         }
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 4000, "final output"));
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 4000, "final output"));
         EXPECT_TRUE(fb->DONE.value);
-        EXPECT_EQ(bench.Position(1), 300.0f);
-        const auto took = bench.Now() - changeAt;
+        EXPECT_EQ(rig.Position(1), 300.0f);
+        const auto took = rig.Now() - changeAt;
         if (changeable) {
             EXPECT_LT(took, milliseconds(500)) << "about 290 units at 1000 units/s";
         } else {
@@ -963,323 +963,323 @@ TEST_P(AxisSimTiming, SpeedChangeDuringAMoveWhereTheAxisTypeAllowsIt) {
         }
         fb->CHANGEDYNAMICS.value = FALSE;
         fb->EXECUTE.value = FALSE;
-        bench.Scan();
+        rig.Scan();
         EXPECT_FALSE(fb->DYNAMICSCHANGED.value);
-        bench.ExpectJobsSeen(1, 1);
+        rig.ExpectJobsSeen(1, 1);
     }
 }
 
 TEST_P(AxisSimTiming, EnableFallingMidMoveThenANewJob) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
     Outcome started;
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig, started));
     fb->ENABLE.value = FALSE;
-    bench.Scan();
-    EXPECT_EQ(bench.Control(1), 0u) << "Axis ON and the traverse bit off";
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    rig.Scan();
+    EXPECT_EQ(rig.Control(1), 0u) << "Axis ON and the traverse bit off";
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 500, "final output"));
     EXPECT_TRUE(fb->COMMANDABORTED.value);
     EXPECT_TRUE(fb->HALTED.value);
     EXPECT_FALSE(fb->ENABLED.value);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    const float stoppedAt = bench.Position(1);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    const float stoppedAt = rig.Position(1);
     fb->EXECUTE.value = FALSE;
     fb->ENABLE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->ENABLED.value != 0; }, 200, "Axis ON"));
     if (Reading().ContinuesAfterAxisOn()) {
         // The controller continues the aborted move by itself (2.7.2 note): the FB shows it, without a job.
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->ACTIVEWITHOUTJOB.value != 0; }, 200, "ActiveWithoutJob"));
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->ACTIVEWITHOUTJOB.value != 0; }, 200, "ActiveWithoutJob"));
         EXPECT_FALSE(fb->BUSY.value);
-        EXPECT_EQ(bench.Control(1), kOn) << "nothing sent for it";
-        ASSERT_TRUE(bench.WaitFor([&] { return !fb->ACTIVE.value; }, 1000, "the continued move's end"));
+        EXPECT_EQ(rig.Control(1), kOn) << "nothing sent for it";
+        ASSERT_TRUE(rig.WaitFor([&] { return !fb->ACTIVE.value; }, 1000, "the continued move's end"));
         EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
-        EXPECT_EQ(bench.Position(1), 400.0f) << "at the aborted job's target";
+        EXPECT_EQ(rig.Position(1), 400.0f) << "at the aborted job's target";
     } else {
-        bench.ScanMs(100);
+        rig.ScanMs(100);
         EXPECT_FALSE(fb->ACTIVEWITHOUTJOB.value);
-        EXPECT_EQ(bench.Position(1), stoppedAt) << "the aborted move stays ended";
+        EXPECT_EQ(rig.Position(1), stoppedAt) << "the aborted move stays ended";
     }
-    const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
+    const Outcome next = rig.Run(1, {kAbsolute, 50.0f});
     EXPECT_TRUE(next.Done()) << next;
-    EXPECT_EQ(bench.Position(1), 50.0f);
+    EXPECT_EQ(rig.Position(1), 50.0f);
     EXPECT_NE(stoppedAt, 50.0f);
-    bench.ExpectJobsSeen(1, 2);
+    rig.ExpectJobsSeen(1, 2);
 }
 
 TEST_P(AxisSimTiming, AllZeroLinkOnThePlcSideMidMove) {
     for (const auto fault : {pac::sim::LinkFault::kAllZero, pac::sim::LinkFault::kDisconnected}) {
         SCOPED_TRACE(fault == pac::sim::LinkFault::kAllZero ? "kAllZero" : "kDisconnected");
-        AxisSimBench bench(Options());
-        bench.GoOnline();
-        auto& fb = bench.Fb(1);
+        AxisSimRig rig(Options());
+        rig.GoOnline();
+        auto& fb = rig.Fb(1);
         Outcome started;
-        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
-        bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), fault);
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 200, "final output"));
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(rig, started));
+        rig.Plc().Bus().FromPacLink().SetFault(rig.Now(), fault);
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 200, "final output"));
         EXPECT_TRUE(fb->COMMANDABORTED.value) << "an all-zero module aborts the job at once";
         EXPECT_FALSE(fb->STATUSVALID.value);
-        EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off";
+        EXPECT_EQ(rig.Control(1), kOn) << "Start and the traverse bit off";
         // The PA-CONTROL still gets the module: it sees the traverse bit go and stops the axis (HALT).
-        bench.ScanMs(300);
-        EXPECT_FALSE(bench.Motion(1).Moving());
-        EXPECT_TRUE(bench.Motion(1).Interrupted());
-        EXPECT_EQ(bench.Pac().OperatingStatus(), 31) << "the controller saw no all-zero image";
+        rig.ScanMs(300);
+        EXPECT_FALSE(rig.Motion(1).Moving());
+        EXPECT_TRUE(rig.Motion(1).Interrupted());
+        EXPECT_EQ(rig.Pac().OperatingStatus(), 31) << "the controller saw no all-zero image";
         fb->EXECUTE.value = FALSE;
-        bench.Scan();
-        const Outcome whileLost = bench.Run(1, {kRelative, 5.0f});
+        rig.Scan();
+        const Outcome whileLost = rig.Run(1, {kRelative, 5.0f});
         EXPECT_EQ(whileLost.ErrorId(), kErrNotReady) << whileLost;
-        bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
-        ASSERT_TRUE(bench.WaitFor([&] { return fb->STATUSVALID.value != 0; }, 200, "link back"));
+        rig.Plc().Bus().FromPacLink().SetFault(rig.Now(), pac::sim::LinkFault::kNone);
+        ASSERT_TRUE(rig.WaitFor([&] { return fb->STATUSVALID.value != 0; }, 200, "link back"));
         EXPECT_TRUE(fb->HALTED.value);
-        const float stoppedAt = bench.Position(1);
-        EXPECT_EQ(stoppedAt, static_cast<float>(bench.Motion(1).Position()));
-        const Outcome next = bench.Run(1, {kRelative, 5.0f});
+        const float stoppedAt = rig.Position(1);
+        EXPECT_EQ(stoppedAt, static_cast<float>(rig.Motion(1).Position()));
+        const Outcome next = rig.Run(1, {kRelative, 5.0f});
         EXPECT_TRUE(next.Done()) << next;
-        EXPECT_NEAR(bench.Position(1), stoppedAt + 5.0f, 1e-3);
-        bench.ExpectJobsSeen(1, 2);
+        EXPECT_NEAR(rig.Position(1), stoppedAt + 5.0f, 1e-3);
+        rig.ExpectJobsSeen(1, 2);
     }
 }
 
 TEST_P(AxisSimTiming, NewExecuteEdgeMidMoveAbortsTheOldJobAndRunsTheNewOne) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
     Outcome started;
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig, started));
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     EXPECT_TRUE(fb->BUSY.value);
-    bench.SetJob(1, {kRelative, -30.0f, 500, 1000});
+    rig.SetJob(1, {kRelative, -30.0f, 500, 1000});
     fb->EXECUTE.value = TRUE;
-    bench.Scan();
+    rig.Scan();
     EXPECT_TRUE(fb->COMMANDABORTED.value) << "the old job, in the edge scan";
-    EXPECT_EQ(bench.Control(1) & ac::kTraverseBits, 0u) << "its traverse bit goes off";
-    bench.Scan();
+    EXPECT_EQ(rig.Control(1) & ac::kTraverseBits, 0u) << "its traverse bit goes off";
+    rig.Scan();
     EXPECT_FALSE(fb->COMMANDABORTED.value) << "for exactly one scan";
     EXPECT_TRUE(fb->BUSY.value) << "the new job owns the outputs";
     // The old move brakes from full speed (50 AE); the new one starts once the axis is free, from where it stands.
-    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 500, "Start of the new job"));
-    EXPECT_EQ(bench.Control(1), kOn | ac::kStart | ac::kMoveRelative);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    const double stoppedAt = bench.Motion(1).Position();
+    ASSERT_TRUE(rig.WaitFor([&] { return (rig.Control(1) & ac::kStart) != 0; }, 500, "Start of the new job"));
+    EXPECT_EQ(rig.Control(1), kOn | ac::kStart | ac::kMoveRelative);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    const double stoppedAt = rig.Motion(1).Position();
     EXPECT_GT(stoppedAt, 20.0 + 49.0) << "braked from full speed";
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1500, "final output"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 1500, "final output"));
     EXPECT_TRUE(fb->DONE.value) << "ErrorID 16#" << std::hex << fb->ERRORID.value;
-    EXPECT_NEAR(bench.Position(1), stoppedAt - 30.0, 1e-3);
+    EXPECT_NEAR(rig.Position(1), stoppedAt - 30.0, 1e-3);
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
-    bench.ExpectJobsSeen(1, 2);
+    rig.Scan();
+    rig.ExpectJobsSeen(1, 2);
 }
 
 TEST_P(AxisSimTiming, StopOnlineMidMoveIsCommandAbortedAndJobsWaitForTheResume) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    auto& ctrl = bench.Ctrl();
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    auto& ctrl = rig.Ctrl();
     Outcome started;
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench, started));
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig, started));
     // STOP ONLINE (CTRL): the PA-CONTROL brakes every axis and interrupts its job; the move ends with HALT, which
     // FB_PAC_Axis reports as CommandAborted (interrupted from outside).
     ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_STOP;
     ctrl->EXECUTE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 500, "final output"));
     EXPECT_TRUE(fb->COMMANDABORTED.value);
     EXPECT_TRUE(fb->HALTED.value);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    ASSERT_TRUE(bench.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE stopped"));
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    ASSERT_TRUE(rig.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE stopped"));
     EXPECT_TRUE(ctrl->ONLINESTOPPED.value);
     ctrl->EXECUTE.value = FALSE;
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     // No jobs while ONLINE is stopped: CMD error 20, passed through.
-    const Outcome whileStopped = bench.Run(1, {kRelative, 5.0f});
+    const Outcome whileStopped = rig.Run(1, {kRelative, 5.0f});
     EXPECT_EQ(whileStopped.ErrorId(), kInadmissible) << whileStopped;
     // The resume does not continue the interrupted job; a new one runs.
     ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
     ctrl->EXECUTE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE again"));
+    ASSERT_TRUE(rig.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE again"));
     ctrl->EXECUTE.value = FALSE;
-    const float stoppedAt = bench.Position(1);
+    const float stoppedAt = rig.Position(1);
     EXPECT_LT(stoppedAt, 400.0f);
-    const Outcome next = bench.Run(1, {kRelative, 5.0f});
+    const Outcome next = rig.Run(1, {kRelative, 5.0f});
     EXPECT_TRUE(next.Done()) << next;
-    EXPECT_NEAR(bench.Position(1), stoppedAt + 5.0f, 1e-3);
-    bench.ExpectJobsSeen(1, 3);
+    EXPECT_NEAR(rig.Position(1), stoppedAt + 5.0f, 1e-3);
+    rig.ExpectJobsSeen(1, 3);
 }
 
 // ---- jog -------------------------------------------------------------------------------------------------
 
 TEST_P(AxisSimTiming, JogMovesWhileHeldAndAtMostItsDistance) {
-    BenchOptions o = Options();
+    RigOptions o = Options();
     o.referenced = false;  // a jog needs no reference
-    AxisSimBench bench(o);
-    bench.Pac().Axes().SetLimitSwitches(1, -500.0, 500.0);
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    bench.SetJob(1, {E_PAC_AXISCOMMAND__PAC_AX_NONE, 150.0f, 500, 1000});
+    AxisSimRig rig(o);
+    rig.Pac().Axes().SetLimitSwitches(1, -500.0, 500.0);
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    rig.SetJob(1, {E_PAC_AXISCOMMAND__PAC_AX_NONE, 150.0f, 500, 1000});
     // Positive, held for 60 ms more once it moves, then released: the axis brakes and stands; Done for one scan.
     fb->JOGPOSITIVE.value = TRUE;
-    bench.Scan();
+    rig.Scan();
     ASSERT_TRUE(fb->BUSY.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 0.0f; }, 200, "jogging"));
-    bench.ScanMs(60);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) > 0.0f; }, 200, "jogging"));
+    rig.ScanMs(60);
     EXPECT_TRUE(fb->BUSY.value);
-    EXPECT_EQ(bench.Control(1) & ac::kTraverseBits, ac::kJogPositive);
-    const float held = bench.Position(1);
+    EXPECT_EQ(rig.Control(1) & ac::kTraverseBits, ac::kJogPositive);
+    const float held = rig.Position(1);
     fb->JOGPOSITIVE.value = FALSE;
-    bench.Scan();
-    EXPECT_EQ(bench.Control(1), kOn) << "released: the bit goes";
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    rig.Scan();
+    EXPECT_EQ(rig.Control(1), kOn) << "released: the bit goes";
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 300, "final output"));
     EXPECT_TRUE(fb->DONE.value);
-    bench.Scan();
+    rig.Scan();
     EXPECT_FALSE(fb->DONE.value) << "one scan: the jog input is FALSE";
-    const float released = bench.Position(1);
+    const float released = rig.Position(1);
     EXPECT_GT(released, held);
     EXPECT_LT(released, 150.0f) << "released before its distance";
-    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_FALSE(rig.Motion(1).Moving());
     EXPECT_FALSE(fb->REFERENCED.value);
     // Negative, held to its distance: stops after 150, Done held while the input is held.
     fb->JOGNEGATIVE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1500, "final output"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 1500, "final output"));
     EXPECT_TRUE(fb->DONE.value);
-    EXPECT_NEAR(bench.Position(1), released - 150.0f, 1e-3) << "at most Position";
-    bench.ScanMs(50);
+    EXPECT_NEAR(rig.Position(1), released - 150.0f, 1e-3) << "at most Position";
+    rig.ScanMs(50);
     EXPECT_TRUE(fb->DONE.value);
-    EXPECT_EQ(bench.Control(1), kOn) << "no second jog while held";
+    EXPECT_EQ(rig.Control(1), kOn) << "no second jog while held";
     fb->JOGNEGATIVE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     EXPECT_FALSE(fb->DONE.value);
-    bench.ExpectJobsSeen(1, 2);
+    rig.ExpectJobsSeen(1, 2);
 }
 
 // ---- G123 ------------------------------------------------------------------------------------------------
 
 TEST_P(AxisSimTiming, G123StopsTheMoveWhenTheInputDrops) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    bench.Pac().SetConditionInput(1, kConditionInput);  // after ONLINE started (it sets input 1)
-    bench.Pac().Io().inputs.Set(kConditionInput, true);
-    const Outcome started = bench.StartAndWait(1, {kAbsolute, 300.0f, 1000, 1000, kWhileInput1}, 100);
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    rig.Pac().SetConditionInput(1, kConditionInput);  // after ONLINE started (it sets input 1)
+    rig.Pac().Io().inputs.Set(kConditionInput, true);
+    const Outcome started = rig.StartAndWait(1, {kAbsolute, 300.0f, 1000, 1000, kWhileInput1}, 100);
     ASSERT_FALSE(started.Done() || started.Error() || started.Aborted()) << started;
-    EXPECT_EQ(bench.Trace(1).Since(started.mark).at(1).control,
+    EXPECT_EQ(rig.Trace(1).Since(started.mark).at(1).control,
               kOn | ac::kStart | ac::kMoveAbsolute | ac::kWhileInput1);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 50.0f; }, 300, "moving"));
-    bench.Pac().Io().inputs.Set(kConditionInput, false);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "final output"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) > 50.0f; }, 300, "moving"));
+    rig.Pac().Io().inputs.Set(kConditionInput, false);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 500, "final output"));
     EXPECT_TRUE(fb->DONE.value) << "its own condition ended it (FB_PAC_Axis.md): Done";
     EXPECT_TRUE(fb->STOPPEDBYCONDITION.value);
     EXPECT_TRUE(fb->HALTED.value);
-    EXPECT_LT(bench.Position(1), 300.0f);
-    EXPECT_FALSE(bench.Motion(1).Moving());
+    EXPECT_LT(rig.Position(1), 300.0f);
+    EXPECT_FALSE(rig.Motion(1).Moving());
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     // The condition does not hold at the start: taken over and ended at once, without a move.
-    const float standing = bench.Position(1);
-    const Outcome notMet = bench.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
+    const float standing = rig.Position(1);
+    const Outcome notMet = rig.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
     EXPECT_TRUE(notMet.Done()) << notMet;
-    EXPECT_EQ(bench.Position(1), standing);
+    EXPECT_EQ(rig.Position(1), standing);
     EXPECT_TRUE(fb->STOPPEDBYCONDITION.value);
     // The condition holds: the move ends at its target, and its take-over cleared bit 11.
-    bench.Pac().Io().inputs.Set(kConditionInput, true);
-    const Outcome met = bench.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
+    rig.Pac().Io().inputs.Set(kConditionInput, true);
+    const Outcome met = rig.Run(1, {kRelative, 10.0f, 1000, 1000, kWhileInput1});
     EXPECT_TRUE(met.Done()) << met;
-    EXPECT_NEAR(bench.Position(1), standing + 10.0f, 1e-3);
+    EXPECT_NEAR(rig.Position(1), standing + 10.0f, 1e-3);
     EXPECT_FALSE(fb->STOPPEDBYCONDITION.value);
     EXPECT_FALSE(fb->HALTED.value);
-    bench.ExpectJobsSeen(1, 3);
+    rig.ExpectJobsSeen(1, 3);
 }
 
 // A reference run in the homing mode that loads the reference the next time the switch is actuated, without
 // moving: complete in its take-over cycle, so on a controller that shows ACTIVE for traversing tasks only it
 // has no ACTIVE either, and is Done all the same.
 TEST_P(AxisSimTiming, ReferenceRunThatLoadsOnTheSwitchWithoutMoving) {
-    BenchOptions o = Options();
+    RigOptions o = Options();
     o.referenced = false;
-    AxisSimBench bench(o);
-    bench.GoOnline();
-    pac::sim::ServoAxisConfig config = bench.Motion(1).Config();
+    AxisSimRig rig(o);
+    rig.GoOnline();
+    pac::sim::ServoAxisConfig config = rig.Motion(1).Config();
     config.homingMode = pac::sim::HomingMode::kLoadOnSwitch;
-    bench.Motion(1).SetConfig(bench.Now(), config);
-    const Outcome home = bench.Run(1, {kHome});
+    rig.Motion(1).SetConfig(rig.Now(), config);
+    const Outcome home = rig.Run(1, {kHome});
     EXPECT_TRUE(home.Done()) << home;
-    EXPECT_EQ(bench.Position(1), 0.0f) << "no move";
-    EXPECT_TRUE(bench.Motion(1).HomingArmed());
-    bench.ExpectJobsSeen(1, 1);
+    EXPECT_EQ(rig.Position(1), 0.0f) << "no move";
+    EXPECT_TRUE(rig.Motion(1).HomingArmed());
+    rig.ExpectJobsSeen(1, 1);
 }
 
 // ---- the FB adds no scan: an instant job at the protocol minimum ---------------------------------------
 
 TEST_P(AxisSimTiming, InstantJobAtTheProtocolMinimum) {
-    AxisSimBench bench(Options());
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    bench.SetJob(1, {kSetPosition, 3.0f});
+    AxisSimRig rig(Options());
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    rig.SetJob(1, {kSetPosition, 3.0f});
     fb->EXECUTE.value = TRUE;
-    bench.Scan();
-    const std::int64_t edge = bench.ScanCount();
-    ASSERT_EQ(bench.Control(1), kOn | ac::kStart | ac::kSetPosition) << "the axis is free: Start in the edge scan";
-    const pac::test::ProtocolWindow window(bench.Options().timing);
+    rig.Scan();
+    const std::int64_t edge = rig.ScanCount();
+    ASSERT_EQ(rig.Control(1), kOn | ac::kStart | ac::kSetPosition) << "the axis is free: Start in the edge scan";
+    const pac::test::ProtocolWindow window(rig.Options().timing);
     if (Reading().ActiveOnlyWhenTraversing()) {
         // No ACTIVE ever: Done once the controller's answer would have been visible, never before.
-        const int answer = window.Request(bench.Now()).max;
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+        const int answer = window.Request(rig.Now()).max;
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 300, "final output"));
         EXPECT_TRUE(fb->DONE.value);
-        EXPECT_GE(bench.ScanCount(), edge + answer) << "not before the controller's answer could arrive";
-        EXPECT_EQ(bench.Control(1), kOn) << "Start and the traverse bit off with Done";
-        EXPECT_EQ(bench.Position(1), 3.0f);
+        EXPECT_GE(rig.ScanCount(), edge + answer) << "not before the controller's answer could arrive";
+        EXPECT_EQ(rig.Control(1), kOn) << "Start and the traverse bit off with Done";
+        EXPECT_EQ(rig.Position(1), 3.0f);
         fb->EXECUTE.value = FALSE;
-        bench.Scan();
-        bench.ExpectJobsSeen(1, 1);
+        rig.Scan();
+        rig.ExpectJobsSeen(1, 1);
         return;
     }
-    const int takeOver = window.Minimum(bench.Now());
-    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
-    EXPECT_EQ(bench.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
+    const int takeOver = window.Minimum(rig.Now());
+    ASSERT_TRUE(rig.WaitFor([&] { return (rig.Control(1) & ac::kStart) == 0; }, 300, "Start dropped"));
+    EXPECT_EQ(rig.ScanCount(), edge + takeOver) << "Start drops in the scan that sees ACTIVE";
     EXPECT_TRUE(fb->ACTIVE.value);
-    EXPECT_EQ(bench.Control(1), kOn | ac::kSetPosition) << "the traverse bit stays";
-    const std::int64_t drop = bench.ScanCount();
-    const int release = window.Minimum(bench.Now());
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "final output"));
+    EXPECT_EQ(rig.Control(1), kOn | ac::kSetPosition) << "the traverse bit stays";
+    const std::int64_t drop = rig.ScanCount();
+    const int release = window.Minimum(rig.Now());
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 300, "final output"));
     EXPECT_TRUE(fb->DONE.value);
-    EXPECT_EQ(bench.ScanCount(), drop + release) << "Done in the scan that sees ACTIVE fall";
-    EXPECT_EQ(bench.Control(1), kOn);
-    EXPECT_EQ(bench.Position(1), 3.0f);
+    EXPECT_EQ(rig.ScanCount(), drop + release) << "Done in the scan that sees ACTIVE fall";
+    EXPECT_EQ(rig.Control(1), kOn);
+    EXPECT_EQ(rig.Position(1), 3.0f);
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
-    bench.ExpectJobsSeen(1, 1);
+    rig.Scan();
+    rig.ExpectJobsSeen(1, 1);
 }
 
 // ---- eight axes at once ----------------------------------------------------------------------------------
 
 TEST_P(AxisSimTiming, EightAxesAtOnceWithIndependentErrors) {
-    BenchOptions o = Options();
+    RigOptions o = Options();
     o.axes = 8;
-    AxisSimBench bench(o);
-    bench.Pac().Axes().SetLimitSwitches(3, -50.0, 45.0);
-    bench.GoOnline();
+    AxisSimRig rig(o);
+    rig.Pac().Axes().SetLimitSwitches(3, -50.0, 45.0);
+    rig.GoOnline();
     for (int k = 1; k <= 8; ++k) {
-        bench.SetJob(k, {kRelative, 20.0f * static_cast<float>(k)});
-        bench.Fb(k)->EXECUTE.value = TRUE;
+        rig.SetJob(k, {kRelative, 20.0f * static_cast<float>(k)});
+        rig.Fb(k)->EXECUTE.value = TRUE;
     }
-    bench.Scan();
+    rig.Scan();
     for (int k = 1; k <= 8; ++k) {
-        EXPECT_EQ(bench.Control(k), kOn | ac::kStart | ac::kMoveRelative) << "axis " << k << ": Start in the edge scan";
+        EXPECT_EQ(rig.Control(k), kOn | ac::kStart | ac::kMoveRelative) << "axis " << k << ": Start in the edge scan";
     }
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Fb(6)->ACTIVE.value != 0 && bench.Position(6) > 10.0f; }, 300,
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Fb(6)->ACTIVE.value != 0 && rig.Position(6) > 10.0f; }, 300,
                               "axis 6 moving"));
-    bench.Pac().Axes().SetBlocked(6, bench.Now(), true);
+    rig.Pac().Axes().SetBlocked(6, rig.Now(), true);
     auto allFinal = [&] {
         for (int k = 1; k <= 8; ++k) {
-            if (!bench.Final(k)) return false;
+            if (!rig.Final(k)) return false;
         }
         return true;
     };
-    ASSERT_TRUE(bench.WaitFor(allFinal, 1500, "every axis's final output"));
+    ASSERT_TRUE(rig.WaitFor(allFinal, 1500, "every axis's final output"));
     for (int k = 1; k <= 8; ++k) {
         SCOPED_TRACE("axis " + std::to_string(k));
-        auto& fb = bench.Fb(k);
+        auto& fb = rig.Fb(k);
         if (k == 3 || k == 6) {
             EXPECT_TRUE(fb->ERROR.value);
             EXPECT_EQ(fb->ERRORID.value, kErrAxisError);
@@ -1287,36 +1287,36 @@ TEST_P(AxisSimTiming, EightAxesAtOnceWithIndependentErrors) {
         } else {
             EXPECT_TRUE(fb->DONE.value);
             EXPECT_FALSE(fb->AXISERROR.value);
-            EXPECT_EQ(bench.Position(k), 20.0f * static_cast<float>(k));
+            EXPECT_EQ(rig.Position(k), 20.0f * static_cast<float>(k));
         }
     }
-    EXPECT_EQ(bench.Position(3), 45.0f);
-    EXPECT_LT(bench.Position(6), 120.0f);
-    EXPECT_EQ(bench.Pac().OperatingStatus(), 31) << "an axis error is no system error (2.7)";
-    for (int k = 1; k <= 8; ++k) bench.Fb(k)->EXECUTE.value = FALSE;
-    bench.Scan();
+    EXPECT_EQ(rig.Position(3), 45.0f);
+    EXPECT_LT(rig.Position(6), 120.0f);
+    EXPECT_EQ(rig.Pac().OperatingStatus(), 31) << "an axis error is no system error (2.7)";
+    for (int k = 1; k <= 8; ++k) rig.Fb(k)->EXECUTE.value = FALSE;
+    rig.Scan();
     // Reset both; each moves again, the others stay where they are.
-    bench.Pac().Axes().SetBlocked(6, bench.Now(), false);
-    bench.Fb(3)->RESETERROR.value = TRUE;
-    bench.Fb(6)->RESETERROR.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Fb(3)->AXISERROR.value && !bench.Fb(6)->AXISERROR.value; }, 300,
+    rig.Pac().Axes().SetBlocked(6, rig.Now(), false);
+    rig.Fb(3)->RESETERROR.value = TRUE;
+    rig.Fb(6)->RESETERROR.value = TRUE;
+    ASSERT_TRUE(rig.WaitFor([&] { return !rig.Fb(3)->AXISERROR.value && !rig.Fb(6)->AXISERROR.value; }, 300,
                               "both reset"));
-    bench.Fb(3)->RESETERROR.value = FALSE;
-    bench.Fb(6)->RESETERROR.value = FALSE;
-    bench.SetJob(3, {kRelative, -20.0f});
-    bench.SetJob(6, {kAbsolute, 120.0f});
-    bench.Fb(3)->EXECUTE.value = TRUE;
-    bench.Fb(6)->EXECUTE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(3) && bench.Final(6); }, 1000, "final outputs"));
-    EXPECT_TRUE(bench.Fb(3)->DONE.value);
-    EXPECT_TRUE(bench.Fb(6)->DONE.value);
-    EXPECT_EQ(bench.Position(3), 25.0f);
-    EXPECT_EQ(bench.Position(6), 120.0f);
+    rig.Fb(3)->RESETERROR.value = FALSE;
+    rig.Fb(6)->RESETERROR.value = FALSE;
+    rig.SetJob(3, {kRelative, -20.0f});
+    rig.SetJob(6, {kAbsolute, 120.0f});
+    rig.Fb(3)->EXECUTE.value = TRUE;
+    rig.Fb(6)->EXECUTE.value = TRUE;
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(3) && rig.Final(6); }, 1000, "final outputs"));
+    EXPECT_TRUE(rig.Fb(3)->DONE.value);
+    EXPECT_TRUE(rig.Fb(6)->DONE.value);
+    EXPECT_EQ(rig.Position(3), 25.0f);
+    EXPECT_EQ(rig.Position(6), 120.0f);
     for (int k = 1; k <= 8; ++k) {
         if (k != 3 && k != 6) {
-            EXPECT_EQ(bench.Position(k), 20.0f * static_cast<float>(k));
+            EXPECT_EQ(rig.Position(k), 20.0f * static_cast<float>(k));
         }
-        bench.ExpectJobsSeen(k, k == 3 || k == 6 ? 2 : 1);
+        rig.ExpectJobsSeen(k, k == 3 || k == 6 ? 2 : 1);
     }
 }
 
@@ -1328,32 +1328,32 @@ TEST_P(AxisSimTiming, EightAxesAtOnceWithIndependentErrors) {
 // longest measured take-over (2 ms) reported Error 43 for a good job the controller had not even seen yet; the
 // bound now adds the controller's longest update time (2.3.4).
 TEST(AxisSimTakeOverBound, GoodJobAfterARefusalMayTakeLongerThanTwiceTheFirstTakeOver) {
-    BenchOptions o;
+    RigOptions o;
     o.timing = {1, 10, 0};
     o.referenced = false;
-    AxisSimBench bench(o);
-    bench.GoOnline();
+    AxisSimRig rig(o);
+    rig.GoOnline();
     // The edge in the scan 1 ms before a controller cycle.
-    ASSERT_GT(bench.ScanUntil([&] { return bench.Now() % 10ms == 8ms; }, 20), 0);
-    const Outcome refused = bench.Run(1, {kAbsolute, 10.0f});
+    ASSERT_GT(rig.ScanUntil([&] { return rig.Now() % 10ms == 8ms; }, 20), 0);
+    const Outcome refused = rig.Run(1, {kAbsolute, 10.0f});
     ASSERT_TRUE(refused.Error()) << refused;
     EXPECT_EQ(refused.ErrorId(), kNoReference);
     const pac::test::ScanWindow answer = pac::test::ProtocolWindow(o.timing).Request(refused.edgeTime);
     EXPECT_EQ(answer.max, 1) << "the edge scan lies 1 ms before a controller cycle";
     EXPECT_TRUE(answer.Contains(refused.Scans())) << refused << ", the protocol allows " << answer;
-    const Outcome good = bench.Run(1, {kSetReferenced, 0.0f});
+    const Outcome good = rig.Run(1, {kSetReferenced, 0.0f});
     EXPECT_TRUE(good.Done()) << good;
     const auto isStart = [](const AxisStep& step) { return (step.control & ac::kStart) != 0; };
     const auto isActive = [](const AxisStep& step) { return (step.status & as::kActive) != 0; };
-    const std::int64_t start = bench.Trace(1).ScanOf(good.mark, isStart);
-    const std::int64_t takeOver = bench.Trace(1).ScanOf(good.mark, isActive);
+    const std::int64_t start = rig.Trace(1).ScanOf(good.mark, isStart);
+    const std::int64_t takeOver = rig.Trace(1).ScanOf(good.mark, isActive);
     ASSERT_GT(start, 0);
     EXPECT_GT(takeOver - start, 2) << "longer than twice the first take-over";
-    EXPECT_TRUE(bench.Fb(1)->REFERENCED.value);
-    const Outcome move = bench.Run(1, {kAbsolute, 10.0f});
+    EXPECT_TRUE(rig.Fb(1)->REFERENCED.value);
+    const Outcome move = rig.Run(1, {kAbsolute, 10.0f});
     EXPECT_TRUE(move.Done()) << move;
-    EXPECT_EQ(bench.Position(1), 10.0f);
-    bench.ExpectJobsSeen(1, 3);
+    EXPECT_EQ(rig.Position(1), 10.0f);
+    rig.ExpectJobsSeen(1, 3);
 }
 
 // ---- Start low long enough before a take-over was measured -----------------------------------------------
@@ -1366,24 +1366,24 @@ TEST(AxisSimTakeOverBound, GoodJobAfterARefusalMayTakeLongerThanTwiceTheFirstTak
 class AxisSimSlowStart : public ::testing::TestWithParam<BusTiming> {};
 
 TEST_P(AxisSimSlowStart, LateActiveOfAnAbortedFirstJobIsNotTheNextJobsTakeOver) {
-    BenchOptions o;
+    RigOptions o;
     o.timing = GetParam();
-    AxisSimBench bench(o);
-    bench.GoOnline();
-    auto& fb = bench.Fb(1);
-    bench.SetJob(1, {kAbsolute, 400.0f});
+    AxisSimRig rig(o);
+    rig.GoOnline();
+    auto& fb = rig.Fb(1);
+    rig.SetJob(1, {kAbsolute, 400.0f});
     fb->EXECUTE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return (bench.Control(1) & ac::kStart) != 0; }, 100, "Start"));
+    ASSERT_TRUE(rig.WaitFor([&] { return (rig.Control(1) & ac::kStart) != 0; }, 100, "Start"));
     fb->ABORT.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1000, "the first job aborted"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 1000, "the first job aborted"));
     EXPECT_TRUE(fb->COMMANDABORTED.value);
     fb->ABORT.value = FALSE;
     fb->EXECUTE.value = FALSE;
-    bench.Scan();
-    const Outcome next = bench.Run(1, {kAbsolute, 50.0f});
+    rig.Scan();
+    const Outcome next = rig.Run(1, {kAbsolute, 50.0f});
     EXPECT_TRUE(next.Done()) << next;
-    EXPECT_EQ(bench.Position(1), 50.0f) << "the second job ran";
-    bench.ExpectJobsSeen(1, 2);
+    EXPECT_EQ(rig.Position(1), 50.0f) << "the second job ran";
+    rig.ExpectJobsSeen(1, 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(SlowBuses, AxisSimSlowStart,
@@ -1394,13 +1394,13 @@ INSTANTIATE_TEST_SUITE_P(SlowBuses, AxisSimSlowStart,
 
 // Two axes through a session of jobs, refusals, interruptions and an axis error, on a bus whose every image is
 // delayed by the latency plus a seeded uniform draw from [0, jitter] (never overtaking the one before).
-void MixedSession(AxisSimBench& bench, bool integer) {
-    bench.Pac().Axes().SetLimitSwitches(2, -50.0, 40.0);
-    bench.GoOnline(integer);
-    auto& one = bench.Fb(1);
-    auto& two = bench.Fb(2);
+void MixedSession(AxisSimRig& rig, bool integer) {
+    rig.Pac().Axes().SetLimitSwitches(2, -50.0, 40.0);
+    rig.GoOnline(integer);
+    auto& one = rig.Fb(1);
+    auto& two = rig.Fb(2);
     auto expect = [&](int k, const Job& job, char result, std::uint32_t errorId = 0) {
-        const Outcome o = bench.Run(k, job);
+        const Outcome o = rig.Run(k, job);
         if (result == 'D') {
             EXPECT_TRUE(o.Done()) << "axis " << k << ": " << o;
         } else {
@@ -1409,75 +1409,75 @@ void MixedSession(AxisSimBench& bench, bool integer) {
         }
     };
     // Axis 2 references while axis 1 is refused twice with the same number, then referenced and moved.
-    bench.SetJob(2, {kHome});
+    rig.SetJob(2, {kHome});
     two->EXECUTE.value = TRUE;
     expect(1, {kAbsolute, 10.0f}, 'E', kNoReference);
     expect(1, {kAbsolute, 10.0f}, 'E', kNoReference);
     expect(1, {kSetReferenced, 0.0f}, 'D');
     expect(1, {kAbsolute, 10.0f}, 'D');
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(2); }, 1000, "axis 2 referenced"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(2); }, 1000, "axis 2 referenced"));
     EXPECT_TRUE(two->DONE.value);
     two->EXECUTE.value = FALSE;
     expect(1, {kAbsolute, 20000.0f}, 'E', kPositionRange);
     expect(1, {kAbsolute, 20000.0f}, 'E', kPositionRange);
     expect(1, {kRelative, 5.0f}, 'D');
-    EXPECT_EQ(bench.Position(1), 15.0f);
+    EXPECT_EQ(rig.Position(1), 15.0f);
     // Axis 2 runs into its limit switch (machine 40 = 60 after homing) while axis 1 is aborted mid-move.
-    bench.SetJob(2, {kRelative, 100.0f});
+    rig.SetJob(2, {kRelative, 100.0f});
     two->EXECUTE.value = TRUE;
-    const Outcome longMove = bench.StartAndWait(1, {kAbsolute, 300.0f}, 100);
+    const Outcome longMove = rig.StartAndWait(1, {kAbsolute, 300.0f}, 100);
     EXPECT_FALSE(longMove.Done() || longMove.Error() || longMove.Aborted()) << longMove;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) > 40.0f; }, 300, "axis 1 moving"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) > 40.0f; }, 300, "axis 1 moving"));
     one->ABORT.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 500, "axis 1 aborted"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 500, "axis 1 aborted"));
     EXPECT_TRUE(one->COMMANDABORTED.value);
     one->ABORT.value = FALSE;
     one->EXECUTE.value = FALSE;
-    bench.Scan();
+    rig.Scan();
     expect(1, {kRelative, -5.0f}, 'D');
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(2); }, 1000, "axis 2 on its switch"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(2); }, 1000, "axis 2 on its switch"));
     EXPECT_EQ(two->ERRORID.value, kErrAxisError);
     EXPECT_EQ(two->AXISERRORNUMBER.value, kLimitSwitch);
     two->EXECUTE.value = FALSE;
     two->RESETERROR.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return !two->AXISERROR.value; }, 300, "axis 2 reset"));
+    ASSERT_TRUE(rig.WaitFor([&] { return !two->AXISERROR.value; }, 300, "axis 2 reset"));
     two->RESETERROR.value = FALSE;
     expect(2, {kRelative, -10.0f}, 'D');
-    EXPECT_EQ(bench.Position(2), 50.0f);
+    EXPECT_EQ(rig.Position(2), 50.0f);
     // A new job while axis 1 moves: the old one aborted, the new one done.
-    const Outcome back = bench.StartAndWait(1, {kAbsolute, 10.0f}, 50);
+    const Outcome back = rig.StartAndWait(1, {kAbsolute, 10.0f}, 50);
     EXPECT_FALSE(back.Done() || back.Error() || back.Aborted()) << back;
-    ASSERT_TRUE(bench.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "axis 1 moving back"));
+    ASSERT_TRUE(rig.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "axis 1 moving back"));
     one->EXECUTE.value = FALSE;
-    bench.Scan();
-    bench.SetJob(1, {kRelative, 2.0f});
+    rig.Scan();
+    rig.SetJob(1, {kRelative, 2.0f});
     one->EXECUTE.value = TRUE;
-    bench.Scan();
+    rig.Scan();
     EXPECT_TRUE(one->COMMANDABORTED.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 1000, "the new job"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 1000, "the new job"));
     EXPECT_TRUE(one->DONE.value);
     one->EXECUTE.value = FALSE;
     // A short jog.
-    bench.Scan();
+    rig.Scan();
     one->JOGNEGATIVE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "jogging"));
+    ASSERT_TRUE(rig.WaitFor([&] { return one->ACTIVE.value != 0; }, 300, "jogging"));
     one->JOGNEGATIVE.value = FALSE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Final(1); }, 300, "jog ended"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Final(1); }, 300, "jog ended"));
     EXPECT_TRUE(one->DONE.value);
-    bench.Scan();
-    bench.ExpectJobsSeen(1, 12);
-    bench.ExpectJobsSeen(2, 3);
+    rig.Scan();
+    rig.ExpectJobsSeen(1, 12);
+    rig.ExpectJobsSeen(2, 3);
 }
 
 class AxisSimJitter : public ::testing::TestWithParam<BusTiming> {};
 
 TEST_P(AxisSimJitter, MixedSession) {
-    BenchOptions o;
+    RigOptions o;
     o.timing = GetParam();
     o.axes = 2;
     o.referenced = false;
-    AxisSimBench bench(o);
-    MixedSession(bench, GetParam().seed % 2 == 0);
+    AxisSimRig rig(o);
+    MixedSession(rig, GetParam().seed % 2 == 0);
 }
 
 // The jitter comes from the bus alone, not from what FB_PAC_Axis's take-over bound assumes (FB_PAC_Axis.md:

@@ -12,7 +12,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/sim/image8.hpp"
 #include "pac/st_program.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 
 namespace {
 
@@ -31,7 +31,7 @@ class FbPacCmdInterbus : public ::testing::TestWithParam<bool> {};
 
 TEST_P(FbPacCmdInterbus, ComplexExampleByteForByte) {
     const bool twoStep = GetParam();
-    pac::PacPlcBench plc({1ms, 10ms, 1});
+    pac::PacRig plc({1ms, 10ms, 1});
     plc.Controller().Io().inputs.Set(5, true);
     plc.Controller().Io().intRegisters.SetInt(2, 12345678);
     plc.Controller().Io().realRegisters.SetReal(1, 640.0F);

@@ -24,9 +24,9 @@ using pac::test::BusTiming;
 using pac::test::FinalOutcome;
 
 // A PLC with one FB_PAC_Cmd on the CMD interface of a simulated PA-CONTROL.
-class CmdBench {
+class CmdRig {
 public:
-    explicit CmdBench(const BusTiming& timing, nanoseconds bootTime = 0ns) : plc_(timing, {}, bootTime) {
+    explicit CmdRig(const BusTiming& timing, nanoseconds bootTime = 0ns) : plc_(timing, {}, bootTime) {
         plc_.Add("FB_PAC_Cmd", cmd_);
         plc_.Start();
     }
@@ -52,7 +52,7 @@ public:
 
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
-    pac::sim::Bus& Bus() { return plc_.Bench().Bus(); }
+    pac::sim::Bus& Bus() { return plc_.Rig().Bus(); }
     nanoseconds Now() const { return plc_.Now(); }
 
 private:
@@ -64,43 +64,43 @@ private:
 class CmdTiming : public ::testing::TestWithParam<BusTiming> {};
 
 TEST_P(CmdTiming, WriteThenReadRegisterAtTheProtocolMinimum) {
-    CmdBench bench(GetParam());
-    bench.Settle(3);
-    const FinalOutcome write = bench.Run(0x0906, 3, 333);
+    CmdRig rig(GetParam());
+    rig.Settle(3);
+    const FinalOutcome write = rig.Run(0x0906, 3, 333);
     ASSERT_TRUE(write.Done()) << "0906: " << write;
-    EXPECT_TRUE(bench.Window().Contains(write.Scans())) << write << ", the protocol allows " << bench.Window();
-    const FinalOutcome read = bench.Run(0x1906, 3, 0);
-    EXPECT_TRUE(read.Done() && bench.Window().Contains(read.Scans())) << read << ", the protocol allows "
-                                                                       << bench.Window();
-    EXPECT_EQ(bench.AckData(), 333u);
-    EXPECT_EQ(bench.Controller().Counters().recognized, 2u) << "exactly the two commands, nothing spurious";
+    EXPECT_TRUE(rig.Window().Contains(write.Scans())) << write << ", the protocol allows " << rig.Window();
+    const FinalOutcome read = rig.Run(0x1906, 3, 0);
+    EXPECT_TRUE(read.Done() && rig.Window().Contains(read.Scans())) << read << ", the protocol allows "
+                                                                       << rig.Window();
+    EXPECT_EQ(rig.AckData(), 333u);
+    EXPECT_EQ(rig.Controller().Counters().recognized, 2u) << "exactly the two commands, nothing spurious";
 }
 
 TEST_P(CmdTiming, CommandErrorThenGoodCommand) {
-    CmdBench bench(GetParam());
-    bench.Settle(3);
-    const FinalOutcome refused = bench.Run(0x1906, 60000, 0);
-    EXPECT_TRUE(refused.Error() && bench.Window().Contains(refused.Scans())) << refused;
-    EXPECT_EQ(bench.Controller().Counters().failed, 1u);
-    const FinalOutcome write = bench.Run(0x0906, 5, 77);
+    CmdRig rig(GetParam());
+    rig.Settle(3);
+    const FinalOutcome refused = rig.Run(0x1906, 60000, 0);
+    EXPECT_TRUE(refused.Error() && rig.Window().Contains(refused.Scans())) << refused;
+    EXPECT_EQ(rig.Controller().Counters().failed, 1u);
+    const FinalOutcome write = rig.Run(0x0906, 5, 77);
     EXPECT_TRUE(write.Done()) << write;
-    const FinalOutcome read = bench.Run(0x1906, 5, 0);
+    const FinalOutcome read = rig.Run(0x1906, 5, 0);
     ASSERT_TRUE(read.Done()) << read;
-    EXPECT_EQ(bench.AckData(), 77u);
-    EXPECT_EQ(bench.Controller().Counters().recognized, 3u);
-    EXPECT_EQ(bench.Controller().Counters().executed, 2u);
+    EXPECT_EQ(rig.AckData(), 77u);
+    EXPECT_EQ(rig.Controller().Counters().recognized, 3u);
+    EXPECT_EQ(rig.Controller().Counters().executed, 2u);
 }
 
 TEST_P(CmdTiming, ErrorNumberIsThePacNumberUnchanged) {
     pac::test::GvlConstants gvl;
-    CmdBench bench(GetParam());
-    bench.Settle(3);
-    bench.Cmd()->CODE.value = 0x1906;
-    bench.Cmd()->PARAM.value = 60000;
-    bench.Cmd()->EXECUTE.value = TRUE;
-    bench.Settle(200);
-    ASSERT_TRUE(bench.Cmd()->ERROR.value);
-    EXPECT_EQ(bench.Cmd()->ERRORID.value, gvl["PAC_ERR_N_REGISTER"]);
+    CmdRig rig(GetParam());
+    rig.Settle(3);
+    rig.Cmd()->CODE.value = 0x1906;
+    rig.Cmd()->PARAM.value = 60000;
+    rig.Cmd()->EXECUTE.value = TRUE;
+    rig.Settle(200);
+    ASSERT_TRUE(rig.Cmd()->ERROR.value);
+    EXPECT_EQ(rig.Cmd()->ERRORID.value, gvl["PAC_ERR_N_REGISTER"]);
 }
 
 // PA-CONTROL cycle 7 ms besides the standard grid's: a cycle that is no multiple of any PLC cycle.
@@ -111,114 +111,114 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, CmdTiming,
 TEST(CmdOverSim, JitteredBusLosesAndDuplicatesNothing) {
     for (std::uint64_t seed : {11u, 12u, 13u, 14u, 15u}) {
         SCOPED_TRACE("jitter seed " + std::to_string(seed));
-        CmdBench bench({2, 3, 1, 5000, seed});
-        bench.Settle(3);
+        CmdRig rig({2, 3, 1, 5000, seed});
+        rig.Settle(3);
         for (std::uint32_t n = 1; n <= 20; ++n) {
-            const FinalOutcome write = bench.Run(0x0906, static_cast<std::uint16_t>(n), n * 1000);
-            ASSERT_TRUE(write.Done() && bench.Window().Contains(write.Scans())) << "write " << n << ": " << write
-                                                                                << ", allowed " << bench.Window();
-            const FinalOutcome read = bench.Run(0x1906, static_cast<std::uint16_t>(n), 0);
-            ASSERT_TRUE(read.Done() && bench.Window().Contains(read.Scans())) << "read " << n << ": " << read
-                                                                              << ", allowed " << bench.Window();
-            EXPECT_EQ(bench.AckData(), n * 1000) << "register " << n;
+            const FinalOutcome write = rig.Run(0x0906, static_cast<std::uint16_t>(n), n * 1000);
+            ASSERT_TRUE(write.Done() && rig.Window().Contains(write.Scans())) << "write " << n << ": " << write
+                                                                                << ", allowed " << rig.Window();
+            const FinalOutcome read = rig.Run(0x1906, static_cast<std::uint16_t>(n), 0);
+            ASSERT_TRUE(read.Done() && rig.Window().Contains(read.Scans())) << "read " << n << ": " << read
+                                                                              << ", allowed " << rig.Window();
+            EXPECT_EQ(rig.AckData(), n * 1000) << "register " << n;
         }
-        EXPECT_EQ(bench.Controller().Counters().recognized, 40u);
+        EXPECT_EQ(rig.Controller().Counters().recognized, 40u);
     }
 }
 
 TEST(CmdOverSim, ControllerBootingRefusesThenWorks) {
     pac::test::GvlConstants gvl;
-    CmdBench bench({1, 10, 0}, 50ms);
-    bench.Settle(5);  // still booting: status 0
-    const FinalOutcome refused = bench.Run(0x1906, 1, 0);
+    CmdRig rig({1, 10, 0}, 50ms);
+    rig.Settle(5);  // still booting: status 0
+    const FinalOutcome refused = rig.Run(0x1906, 1, 0);
     EXPECT_EQ(refused.Scans(), 0) << "refused in the edge scan: " << refused;
     EXPECT_EQ(refused.ErrorId(), gvl["PAC_LIB_ERR_NOT_READY"]);
-    bench.Settle(60);
-    const FinalOutcome write = bench.Run(0x0906, 1, 5);
+    rig.Settle(60);
+    const FinalOutcome write = rig.Run(0x0906, 1, 5);
     EXPECT_TRUE(write.Done()) << write;
-    EXPECT_EQ(bench.Controller().Counters().recognized, 1u);
+    EXPECT_EQ(rig.Controller().Counters().recognized, 1u);
 }
 
 TEST(CmdOverSim, PowerCycleDuringCommandThenOneCleanCommand) {
     pac::test::GvlConstants gvl;
-    CmdBench bench({1, 10, 1}, 30ms);
-    bench.Settle(40);
-    ASSERT_TRUE(bench.Run(0x0906, 1, 5).Done());  // SEND = 1 acknowledged
-    const auto before = bench.Controller().Counters().recognized;
-    bench.Cmd()->CODE.value = 0x0906;
-    bench.Cmd()->PARAM.value = 2;
-    bench.Cmd()->DATA.value = 6;
-    bench.Cmd()->EXECUTE.value = TRUE;
-    bench.Settle(1);  // SEND toggles to 0
-    bench.Controller().PowerCycle(bench.Now());
-    bench.Settle(100);
-    EXPECT_TRUE(bench.Cmd()->ERROR.value);
-    EXPECT_EQ(bench.Cmd()->ERRORID.value, gvl["PAC_LIB_ERR_CONNECTION_LOST"]);
-    bench.Cmd()->EXECUTE.value = FALSE;
-    bench.Settle(1);
-    const FinalOutcome read = bench.Run(0x1906, 1, 0);
+    CmdRig rig({1, 10, 1}, 30ms);
+    rig.Settle(40);
+    ASSERT_TRUE(rig.Run(0x0906, 1, 5).Done());  // SEND = 1 acknowledged
+    const auto before = rig.Controller().Counters().recognized;
+    rig.Cmd()->CODE.value = 0x0906;
+    rig.Cmd()->PARAM.value = 2;
+    rig.Cmd()->DATA.value = 6;
+    rig.Cmd()->EXECUTE.value = TRUE;
+    rig.Settle(1);  // SEND toggles to 0
+    rig.Controller().PowerCycle(rig.Now());
+    rig.Settle(100);
+    EXPECT_TRUE(rig.Cmd()->ERROR.value);
+    EXPECT_EQ(rig.Cmd()->ERRORID.value, gvl["PAC_LIB_ERR_CONNECTION_LOST"]);
+    rig.Cmd()->EXECUTE.value = FALSE;
+    rig.Settle(1);
+    const FinalOutcome read = rig.Run(0x1906, 1, 0);
     EXPECT_TRUE(read.Done()) << read;
-    EXPECT_EQ(bench.AckData(), 5u) << "N registers are kept over a power cycle";
-    EXPECT_EQ(bench.Controller().Counters().recognized, before + 1) << "the restart replayed nothing";
+    EXPECT_EQ(rig.AckData(), 5u) << "N registers are kept over a power cycle";
+    EXPECT_EQ(rig.Controller().Counters().recognized, before + 1) << "the restart replayed nothing";
 }
 
 // Execute released while the command runs: Done shows for one scan. A program that raises Execute again in
 // the very next scan asks for a new command and must get it, not the old Done (the soak's ledger found the
 // edge swallowed: Done for a command never sent).
 TEST(CmdOverSim, AnEdgeRightAfterAOneScanDoneSendsTheNextCommand) {
-    CmdBench bench({1, 3, 1});
-    bench.Settle(5);
-    auto& cmd = bench.Cmd();
+    CmdRig rig({1, 3, 1});
+    rig.Settle(5);
+    auto& cmd = rig.Cmd();
     cmd->CODE.value = 0x0906;
     cmd->PARAM.value = 1;
     cmd->DATA.value = 7;
     cmd->EXECUTE.value = TRUE;
-    bench.Settle(1);
+    rig.Settle(1);
     cmd->EXECUTE.value = FALSE;
-    for (int i = 0; i < 200 && !cmd->DONE.value; ++i) bench.Settle(1);
+    for (int i = 0; i < 200 && !cmd->DONE.value; ++i) rig.Settle(1);
     ASSERT_TRUE(cmd->DONE.value) << "the first command's one-scan Done";
     cmd->DATA.value = 8;
     cmd->EXECUTE.value = TRUE;
-    bench.Settle(1);
+    rig.Settle(1);
     EXPECT_FALSE(cmd->DONE.value) << "the first command's Done answered the new edge";
     EXPECT_TRUE(cmd->BUSY.value);
-    for (int i = 0; i < 200 && !pac::test::IsFinal(cmd); ++i) bench.Settle(1);
+    for (int i = 0; i < 200 && !pac::test::IsFinal(cmd); ++i) rig.Settle(1);
     EXPECT_TRUE(cmd->DONE.value);
-    EXPECT_EQ(bench.Controller().Counters().Count(0x0906), 2u);
-    EXPECT_EQ(bench.Controller().Io().intRegisters.GetInt(1), 8);
+    EXPECT_EQ(rig.Controller().Counters().Count(0x0906), 2u);
+    EXPECT_EQ(rig.Controller().Io().intRegisters.GetInt(1), 8);
 }
 
 TEST(CmdOverSim, LinkLossAndReconnectionRepeatNoCommand) {
-    CmdBench bench({1, 3, 1});
-    bench.Settle(5);
-    ASSERT_TRUE(bench.Run(0x0906, 1, 5).Done());  // SEND = 1 acknowledged; the module holds 0906 N1 := 5
-    bench.Controller().Io().intRegisters.SetInt(1, 42);  // changed since by the PA-CONTROL's program
-    bench.Bus().Disconnect(bench.Now());
-    bench.Settle(50);
-    bench.Bus().Reconnect(bench.Now());
-    bench.Settle(50);
-    EXPECT_EQ(bench.Controller().Counters().Count(0x0906), 1u) << "0906 was not repeated";
-    EXPECT_EQ(bench.Controller().Io().intRegisters.GetInt(1), 42);
-    const FinalOutcome read = bench.Run(0x1906, 1, 0);
+    CmdRig rig({1, 3, 1});
+    rig.Settle(5);
+    ASSERT_TRUE(rig.Run(0x0906, 1, 5).Done());  // SEND = 1 acknowledged; the module holds 0906 N1 := 5
+    rig.Controller().Io().intRegisters.SetInt(1, 42);  // changed since by the PA-CONTROL's program
+    rig.Bus().Disconnect(rig.Now());
+    rig.Settle(50);
+    rig.Bus().Reconnect(rig.Now());
+    rig.Settle(50);
+    EXPECT_EQ(rig.Controller().Counters().Count(0x0906), 1u) << "0906 was not repeated";
+    EXPECT_EQ(rig.Controller().Io().intRegisters.GetInt(1), 42);
+    const FinalOutcome read = rig.Run(0x1906, 1, 0);
     EXPECT_TRUE(read.Done()) << read;
-    EXPECT_EQ(bench.AckData(), 42u);
+    EXPECT_EQ(rig.AckData(), 42u);
 }
 
 TEST(CmdOverSim, FrozenLinkTimesOutAndRecoversAfterThaw) {
     pac::test::GvlConstants gvl;
     const BusTiming timing{1, 3, 0};
-    CmdBench bench(timing);
-    bench.Settle(5);
-    bench.Cmd()->TIMEOUT.value = TIME{0, 50'000'000};
-    bench.Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kFrozen);
-    const FinalOutcome frozen = bench.Run(0x0906, 1, 9);
+    CmdRig rig(timing);
+    rig.Settle(5);
+    rig.Cmd()->TIMEOUT.value = TIME{0, 50'000'000};
+    rig.Bus().FromPacLink().SetFault(rig.Now(), pac::sim::LinkFault::kFrozen);
+    const FinalOutcome frozen = rig.Run(0x0906, 1, 9);
     EXPECT_EQ(frozen.ErrorId(), gvl["PAC_LIB_ERR_ACK_TIMEOUT"]) << frozen;
     EXPECT_EQ(frozen.Scans(), pac::test::ProtocolWindow(timing).TimeoutScans(50ms)) << "Timeout from the edge scan";
-    bench.Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
-    bench.Settle(10);
-    const FinalOutcome read = bench.Run(0x1906, 1, 0);
+    rig.Bus().FromPacLink().SetFault(rig.Now(), pac::sim::LinkFault::kNone);
+    rig.Settle(10);
+    const FinalOutcome read = rig.Run(0x1906, 1, 0);
     EXPECT_TRUE(read.Done()) << read;
-    EXPECT_EQ(bench.AckData(), 9u) << "the command itself had reached the controller";
+    EXPECT_EQ(rig.AckData(), 9u) << "the command itself had reached the controller";
 }
 
 }  // namespace

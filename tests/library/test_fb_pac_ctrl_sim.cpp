@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
 #include "pac/scan_test.hpp"
 #include "pac/st_program.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "plcopen_checker.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
@@ -168,18 +168,18 @@ public:
         : CtrlSimPlc(static_cast<const BusTiming&>(c), WithReading(config, c.stoppedModeBits), bootTime) {}
     explicit CtrlSimPlc(const BusTiming& timing, sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
         : timing_(timing),
-          bench_(pac::test::PlcBenchTimingOf(timing, bootTime), config, sim::ModuleLayout{true, 0}),
+          rig_(pac::test::RigTimingOf(timing, bootTime), config, sim::ModuleLayout{true, 0}),
           window_(timing),
           rules_(timing) {
-        bench_.Call(cmd_);
-        bench_.CallRaw8(sim::ModuleLayout::kCmdOffset, [this](const sim::Image8&, sim::Image8& out) {
+        rig_.Call(cmd_);
+        rig_.CallRaw8(sim::ModuleLayout::kCmdOffset, [this](const sim::Image8&, sim::Image8& out) {
             if (zeroCmdModule_) out = sim::Image8{};
         });
-        bench_.CallCtrl(ctrl_);
-        bench_.CallRaw8(sim::ModuleLayout::kCtrlOffset, [this](const sim::Image8&, sim::Image8& out) {
+        rig_.CallCtrl(ctrl_);
+        rig_.CallRaw8(sim::ModuleLayout::kCtrlOffset, [this](const sim::Image8&, sim::Image8& out) {
             if (zeroCtrlModule_) out = sim::Image8{};
         });
-        bench_.Start();
+        rig_.Start();
         WireExternalStop(true);
     }
 
@@ -194,13 +194,13 @@ public:
 
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
-            bench_.Scan();
-            const std::int64_t scan = bench_.Task().ScanCount();
+            rig_.Scan();
+            const std::int64_t scan = rig_.Task().ScanCount();
             const auto plcCycle = timing_.PlcCycle();
             ctrlRules_.Check(scan, ctrl_, pac::test::RequestBusyBoundOf(ctrl_, plcCycle));
             cmdRules_.Check(scan, cmd_, pac::test::CommandBusyBoundOf(cmd_, plcCycle));
             if (!naiveSeen_) {
-                rules_.Check(ctrl_.Data(), latched_, bench_.ToPac(), Controller().LastToPacImage(), bench_.Task());
+                rules_.Check(ctrl_.Data(), latched_, rig_.ToPac(), Controller().LastToPacImage(), rig_.Task());
             }
         }
     }
@@ -215,7 +215,7 @@ public:
     // One scan; its number.
     std::int64_t Step() {
         Scan();
-        return bench_.Task().ScanCount();
+        return rig_.Task().ScanCount();
     }
     // Until the FB shows Ready, then until the controller has read the idle control word and the FB
     // shows the controller's answer (the first control word after the boot is only the reference for
@@ -235,7 +235,7 @@ public:
         latched_ = r;
         Scan();
         edge_ = Now();
-        edgeScan_ = bench_.Task().ScanCount();
+        edgeScan_ = rig_.Task().ScanCount();
     }
     // Scans until Done or Error, at most maxScans after the edge scan.
     FinalOutcome WaitEnd(int maxScans) {
@@ -273,7 +273,7 @@ public:
         cmd_->EXECUTE.value = TRUE;
         Scan();
         edge_ = Now();
-        const FinalOutcome f = pac::test::RunToFinal(cmd_, bench_.Task().ScanCount(), [this] { return Step(); },
+        const FinalOutcome f = pac::test::RunToFinal(cmd_, rig_.Task().ScanCount(), [this] { return Step(); },
                                                      ScansFor(3s));
         cmdOpStatus_ = cmd_->OPSTATUS.value;
         ctrlAtCmdEnd_ = ctrl_.Data();
@@ -331,7 +331,7 @@ public:
     }
 
     // The CTRL control word the PLC wrote in its last scan, and the one the controller read last.
-    std::uint16_t WireControlWord() const { return ControlWordRules::ControlWord(bench_.ToPac()); }
+    std::uint16_t WireControlWord() const { return ControlWordRules::ControlWord(rig_.ToPac()); }
     std::uint16_t ControlWordSeenByController() { return ControlWordRules::ControlWord(Controller().LastToPacImage()); }
     std::uint16_t IdleWord() { return static_cast<std::uint16_t>((ctrl_->INTEGERMODE.value ? 0x8000 : 0) | kIdleByte); }
 
@@ -344,17 +344,17 @@ public:
     int ScansFor(nanoseconds t) const { return timing_.ScansFor(t); }
     pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
-    sim::PaControl& Controller() { return bench_.Controller(); }
-    sim::Bus& Bus() { return bench_.Bus(); }
-    nanoseconds Now() const { return bench_.Now(); }
-    std::int64_t ScanCount() { return bench_.Task().ScanCount(); }
+    sim::PaControl& Controller() { return rig_.Controller(); }
+    sim::Bus& Bus() { return rig_.Bus(); }
+    nanoseconds Now() const { return rig_.Now(); }
+    std::int64_t ScanCount() { return rig_.Task().ScanCount(); }
     nanoseconds Edge() const { return edge_; }
     const ProtocolWindow& Window() const { return window_; }
     const BusTiming& Timing() const { return timing_; }
 
 private:
     BusTiming timing_;
-    pac::PacPlcBench bench_;
+    pac::PacRig rig_;
     ProtocolWindow window_;
     ControlWordRules rules_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);

@@ -17,7 +17,7 @@
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
 #include "pac/scan_test.hpp"
-#include "pac/serial_plc_bench.hpp"
+#include "pac/serial_rig.hpp"
 #include "pac/st_program.hpp"
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"

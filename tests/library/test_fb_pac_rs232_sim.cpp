@@ -14,7 +14,7 @@
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
-#include "pac/serial_plc_bench.hpp"
+#include "pac/serial_rig.hpp"
 #include "pac/sim/rs232_frame.hpp"
 #include "pac/st_program.hpp"
 #include "plcopen_checker.hpp"
@@ -52,9 +52,9 @@ class SerialCmdPlc {
 public:
     explicit SerialCmdPlc(const SerialTiming& t, pac::sim::SerialPortConfig port = {},
                           pac::sim::PaControlConfig config = OnlineReady())
-        : bench_(Timing(t), config, port), checker_("FB_PAC_Rs232Cmd") {
-        bench_.Call(cmd_);
-        bench_.Task().AddProgram([this] { checker_.Check(bench_.Task().ScanCount(), cmd_, BusyBound()); });
+        : rig_(Timing(t), config, port), checker_("FB_PAC_Rs232Cmd") {
+        rig_.Call(cmd_);
+        rig_.Task().AddProgram([this] { checker_.Check(rig_.Task().ScanCount(), cmd_, BusyBound()); });
     }
     ~SerialCmdPlc() { EXPECT_EQ(checker_.Violations(), 0); }
 
@@ -63,16 +63,16 @@ public:
         cmd_->PARAM.value = param;
         cmd_->DATA.value = data;
         cmd_->EXECUTE.value = TRUE;
-        bench_.Scan();
-        edgeTime_ = bench_.Now();
-        const FinalOutcome outcome = pac::test::RunToFinal(cmd_, bench_.Task().ScanCount(), [&] {
-            bench_.Scan();
-            return bench_.Task().ScanCount();
+        rig_.Scan();
+        edgeTime_ = rig_.Now();
+        const FinalOutcome outcome = pac::test::RunToFinal(cmd_, rig_.Task().ScanCount(), [&] {
+            rig_.Scan();
+            return rig_.Task().ScanCount();
         }, maxScans);
         ackData_ = cmd_->ACKDATA.value;
         repeats_ = cmd_->REPEATS.value;
         cmd_->EXECUTE.value = FALSE;
-        bench_.Scan();
+        rig_.Scan();
         return outcome;
     }
 
@@ -80,33 +80,33 @@ public:
     // end of the edge scan, the controller's first cycle after its last byte answers with `replyBytes`,
     // and the first scan after the reply's last byte reads it.
     int ReplyScans(int requestBytes, int replyBytes) const {
-        const nanoseconds character = bench_.Timing().format.CharacterTime();
-        const nanoseconds pacCycle = bench_.Timing().pacCycle;
+        const nanoseconds character = rig_.Timing().format.CharacterTime();
+        const nanoseconds pacCycle = rig_.Timing().pacCycle;
         const nanoseconds requestEnd = edgeTime_ + requestBytes * character;
         nanoseconds cycle = ((requestEnd + pacCycle - 1ns) / pacCycle) * pacCycle;
         const nanoseconds replyEnd = cycle + replyBytes * character;
-        const nanoseconds plc = bench_.Timing().plcCycle;
+        const nanoseconds plc = rig_.Timing().plcCycle;
         return static_cast<int>((replyEnd - edgeTime_ + plc - 1ns) / plc);
     }
 
     std::optional<int> BusyBound() const {
         // Every request: its Timeout, a scan, at most a QuietTime and Timeout of waiting for quiet and room;
         // Retries + 1 requests before the acknowledgement, then EndTimeout.
-        const nanoseconds plc = bench_.Timing().plcCycle;
+        const nanoseconds plc = rig_.Timing().plcCycle;
         auto scans = [&](nanoseconds t) { return static_cast<int>((t + plc - 1ns) / plc); };
         const int request = 3 * scans(pac::FromIecTime(cmd_->TIMEOUT.value)) + 3;
         return (cmd_->RETRIES.value + 1) * request + scans(pac::FromIecTime(cmd_->ENDTIMEOUT.value)) + 2;
     }
 
     pac::FbInstance<FB_PAC_RS232CMD>& Cmd() { return cmd_; }
-    pac::SerialPlcBench& Bench() { return bench_; }
-    pac::sim::PaControl& Pac() { return bench_.Controller(); }
+    pac::SerialRig& Rig() { return rig_; }
+    pac::sim::PaControl& Pac() { return rig_.Controller(); }
     std::uint32_t AckData() const { return ackData_; }
     int Repeats() const { return repeats_; }
 
 private:
-    static pac::SerialBenchTiming Timing(const SerialTiming& t) {
-        pac::SerialBenchTiming timing;
+    static pac::SerialRigTiming Timing(const SerialTiming& t) {
+        pac::SerialRigTiming timing;
         timing.plcCycle = std::chrono::milliseconds(t.plcMs);
         timing.pacCycle = std::chrono::milliseconds(t.pacMs);
         timing.format.baud = t.baud;
@@ -114,7 +114,7 @@ private:
     }
 
     pac::FbInstance<FB_PAC_RS232CMD> cmd_ = PAC_FB(FB_PAC_RS232CMD);
-    pac::SerialPlcBench bench_;
+    pac::SerialRig rig_;
     pac::test::PlcOpenChecker checker_;
     nanoseconds edgeTime_{0};
     std::uint32_t ackData_ = 0;
@@ -212,7 +212,7 @@ TEST(Rs232Readings, AnOutageAtTheStartNeverLeavesTheLinkUnchecked) {
     SerialCmdPlc plc(SerialTiming{9600, 1, 10});
     plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
     plc.Pac().Io().intRegisters.SetInt(4, 4444);
-    pac::sim::SerialWire& toPac = plc.Bench().Line().toPac;
+    pac::sim::SerialWire& toPac = plc.Rig().Line().toPac;
     const int request = RequestBytes("1906;4;0;0");
     ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("1906;4;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
     for (int i = 0; i < 2 * request; ++i) toPac.DropByte(toPac.BytesSent() + static_cast<std::uint64_t>(i));
@@ -291,8 +291,8 @@ protected:
     Rs232Faults() : plc_(SerialTiming{9600, 1, 10}) { plc_.Pac().Io().intRegisters.SetInt(4, 4444); }
     // A PLC that has talked to the controller before: the CHECK rule is confirmed (AUTO).
     void SetUp() override { ExpectRead(0); }
-    pac::sim::SerialWire& ToPac() { return plc_.Bench().Line().toPac; }
-    pac::sim::SerialWire& FromPac() { return plc_.Bench().Line().fromPac; }
+    pac::sim::SerialWire& ToPac() { return plc_.Rig().Line().toPac; }
+    pac::sim::SerialWire& FromPac() { return plc_.Rig().Line().fromPac; }
     void ExpectRead(int repeats) {
         const FinalOutcome read = plc_.Run(0x1906, 4);
         ASSERT_TRUE(read.Done()) << read;
@@ -335,8 +335,8 @@ TEST_F(Rs232Faults, ADelayedReplyLongerThanTimeout) {
 }
 
 TEST_F(Rs232Faults, NoiseBeforeTheReply) {
-    plc_.Bench().Task().AddProgram([this] {
-        if (plc_.Bench().Task().ScanCount() == 3) FromPac().Noise(plc_.Bench().Now(), {0x7F, 0x03, 0x30, 0x04, 0x55});
+    plc_.Rig().Task().AddProgram([this] {
+        if (plc_.Rig().Task().ScanCount() == 3) FromPac().Noise(plc_.Rig().Now(), {0x7F, 0x03, 0x30, 0x04, 0x55});
     });
     ExpectRead(0);
 }

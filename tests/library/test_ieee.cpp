@@ -229,7 +229,7 @@ TEST(Ieee754, RandomFloatsEncodeAndRoundTrip) {
     EXPECT_EQ(checked, kSweepCount);
 }
 
-// Every one of the 2^32 patterns, both ways, is the target ieee_exhaustive_run (bench/ieee_exhaustive.cpp;
+// Every one of the 2^32 patterns, both ways, is the target ieee_exhaustive_run (rig/ieee_exhaustive.cpp;
 // minutes on every core, so not a test); its last result is in docs/ieee754.md.
 
 // ---------------------------------------------------------------- bounded work (code review as a test)

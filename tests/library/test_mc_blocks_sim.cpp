@@ -2,7 +2,7 @@
 // axis modules, scan by scan on a spread of bus timings, block by block: MC_Power, the moves in user units, abort
 // chains of several blocks on one axis, halt, stop, home, ErrorStop and MC_Reset, a lost link, and what the
 // PA-CONTROL cannot do refused with its ErrorID. The PLCopen checker runs on every Execute block in every scan
-// (mc_bench.hpp). The state diagram state by state: test_mc_state_diagram_sim.cpp.
+// (mc_rig.hpp). The state diagram state by state: test_mc_state_diagram_sim.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +14,7 @@ namespace {
 
 using namespace pac::test::mc;
 using pac::test::BusTiming;
-using pac::test::McBench;
+using pac::test::McRig;
 using pac::test::McBlocks;
 
 class McSim : public ::testing::TestWithParam<BusTiming> {};
@@ -23,381 +23,381 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, McSim, ::testing::ValuesIn(McTimings()), pa
 // ---- MC_Power and the states Disabled / Standstill ----------------------------------------------------------
 
 TEST_P(McSim, PowerEnablesTheDriveAndLeavesDisabled) {
-    McBench bench(GetParam(), 1);
-    McBlocks& b = bench.Blocks(1);
+    McRig rig(GetParam(), 1);
+    McBlocks& b = rig.Blocks(1);
     b.position->ENABLE.value = TRUE;
     b.axisError->ENABLE.value = TRUE;
-    bench.GoOnline();
+    rig.GoOnline();
     EXPECT_FALSE(b.power->ERROR.value) << "no error while not enabled";
     EXPECT_FALSE(b.power->STATUS.value);
-    EXPECT_EQ(bench.State(1), kDisabled);
+    EXPECT_EQ(rig.State(1), kDisabled);
     // Disabled refuses every motion block; MC_Reset has nothing to reset.
     SetMove(b.moveA, 10.0f);
-    Execute(bench, b.moveA);
+    Execute(rig, b.moveA);
     EXPECT_EQ(b.moveA->ERRORID.value, kMcDisabled);
-    Release(bench, b.moveA);
-    Execute(bench, b.stop);
+    Release(rig, b.moveA);
+    Execute(rig, b.stop);
     EXPECT_EQ(b.stop->ERRORID.value, kMcDisabled);
-    Release(bench, b.stop);
-    Execute(bench, b.reset);
+    Release(rig, b.stop);
+    Execute(rig, b.reset);
     EXPECT_TRUE(b.reset->DONE.value) << "Done in the edge scan";
-    Release(bench, b.reset);
+    Release(rig, b.reset);
 
     b.power->ENABLE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return b.power->STATUS.value != 0; }, 100, "Status"));
+    ASSERT_TRUE(rig.WaitFor([&] { return b.power->STATUS.value != 0; }, 100, "Status"));
     EXPECT_TRUE(b.power->VALID.value);
-    EXPECT_TRUE(bench.Ref(1).STATUS.ENABLED);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kStandstill);
+    EXPECT_TRUE(rig.Ref(1).STATUS.ENABLED);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStandstill);
     EXPECT_TRUE(b.position->VALID.value && b.position->BUSY.value && !b.position->ERROR.value);
     EXPECT_EQ(b.axisError->AXISERRORID.value, 0u);
 
     b.power->ENABLE.value = FALSE;
-    ASSERT_TRUE(bench.WaitFor([&] { return b.power->STATUS.value == 0; }, 100, "Status off"));
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kDisabled);
+    ASSERT_TRUE(rig.WaitFor([&] { return b.power->STATUS.value == 0; }, 100, "Status off"));
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kDisabled);
 }
 
 // ---- the motion blocks -----------------------------------------------------------------------------------
 
 TEST_P(McSim, MoveAbsoluteAndRelativeReachTheirTargetsInUserUnits) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
     b.status->ENABLE.value = TRUE;
     b.position->ENABLE.value = TRUE;
     SetMove(b.moveA, 120.0f, 500.0f);
     b.moveA->ACCELERATION.value = 20000.0f;
     b.moveA->DECELERATION.value = 20000.0f;  // equal to Acceleration: one ramp, accepted
-    Execute(bench, b.moveA);
+    Execute(rig, b.moveA);
     EXPECT_TRUE(b.moveA->BUSY.value && b.moveA->ACTIVE.value);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kDiscrete);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kDiscrete);
     EXPECT_TRUE(b.status->DISCRETEMOTION.value && !b.status->STANDSTILL.value);
-    ASSERT_TRUE(EndsDone(bench, b.moveA, 2000, "MoveAbsolute"));
+    ASSERT_TRUE(EndsDone(rig, b.moveA, 2000, "MoveAbsolute"));
     EXPECT_FALSE(b.moveA->ACTIVE.value);
-    EXPECT_EQ(bench.Position(1), 120.0f);
+    EXPECT_EQ(rig.Position(1), 120.0f);
     EXPECT_EQ(b.position->POSITION.value, 120.0f);
     // 500 AE/s of 1000 AE/s, 20000 AE/s2 of 10000 AE/s2: per mille in the module's fields (2.7.5, 2.7.6).
-    EXPECT_EQ(bench.SentWord(1, 6), 500u);
-    EXPECT_EQ(bench.SentWord(1, 4), 2000u);
-    bench.Scan(3);
+    EXPECT_EQ(rig.SentWord(1, 6), 500u);
+    EXPECT_EQ(rig.SentWord(1, 4), 2000u);
+    rig.Scan(3);
     EXPECT_TRUE(b.moveA->DONE.value) << "Done holds while Execute";
-    EXPECT_EQ(bench.State(1), kStandstill);
+    EXPECT_EQ(rig.State(1), kStandstill);
     EXPECT_TRUE(b.status->STANDSTILL.value);
-    Release(bench, b.moveA);
+    Release(rig, b.moveA);
     EXPECT_FALSE(b.moveA->DONE.value);
 
     b.relative->POSITION.value = -20.0f;
     b.relative->VELOCITY.value = 250.0f;  // Acceleration 0.0: the axis parameter, 1000 per mille
-    Execute(bench, b.relative);
-    ASSERT_TRUE(EndsDone(bench, b.relative, 2000, "MoveRelative"));
-    EXPECT_EQ(bench.Position(1), 100.0f);
-    EXPECT_EQ(bench.SentWord(1, 6), 250u);
-    EXPECT_EQ(bench.SentWord(1, 4), 1000u);
+    Execute(rig, b.relative);
+    ASSERT_TRUE(EndsDone(rig, b.relative, 2000, "MoveRelative"));
+    EXPECT_EQ(rig.Position(1), 100.0f);
+    EXPECT_EQ(rig.SentWord(1, 6), 250u);
+    EXPECT_EQ(rig.SentWord(1, 4), 1000u);
     // Execute already FALSE at the end: the final output shows for one scan only.
     b.relative->POSITION.value = 5.0f;
-    Release(bench, b.relative);
-    Execute(bench, b.relative);
+    Release(rig, b.relative);
+    Execute(rig, b.relative);
     b.relative->EXECUTE.value = FALSE;
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.relative); }, 2000, "MoveRelative final"));
-    bench.Scan();
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.relative); }, 2000, "MoveRelative final"));
+    rig.Scan();
     EXPECT_FALSE(Final(b.relative));
-    EXPECT_EQ(bench.Position(1), 105.0f);
+    EXPECT_EQ(rig.Position(1), 105.0f);
 }
 
 TEST_P(McSim, ANewBlockAbortsTheRunningOneAlongAChain) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
     // A -> B: B takes the axis, A shows CommandAborted and holds it while its Execute stays TRUE.
     SetMove(b.moveB, 300.0f, 1000.0f);
-    Execute(bench, b.moveB);
-    bench.Scan();
+    Execute(rig, b.moveB);
+    rig.Scan();
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value);
     EXPECT_FALSE(b.moveA->BUSY.value || b.moveA->ACTIVE.value);
     EXPECT_TRUE(b.moveB->BUSY.value);
     // B -> MoveRelative in the next scans, -> MoveVelocity -> Halt: each aborts the one before.
     b.relative->POSITION.value = 50.0f;
     b.relative->VELOCITY.value = 1000.0f;
-    Execute(bench, b.relative);
-    bench.Scan();
+    Execute(rig, b.relative);
+    rig.Scan();
     EXPECT_TRUE(b.moveB->COMMANDABORTED.value);
     b.velocity->VELOCITY.value = 500.0f;
     b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_POSITIVE;
-    Execute(bench, b.velocity);
-    bench.Scan();
+    Execute(rig, b.velocity);
+    rig.Scan();
     EXPECT_TRUE(b.relative->COMMANDABORTED.value);
-    EXPECT_EQ(bench.State(1), kContinuous);
-    ASSERT_TRUE(bench.WaitFor([&] { return b.velocity->INVELOCITY.value != 0; }, 300, "InVelocity"));
+    EXPECT_EQ(rig.State(1), kContinuous);
+    ASSERT_TRUE(rig.WaitFor([&] { return b.velocity->INVELOCITY.value != 0; }, 300, "InVelocity"));
     EXPECT_TRUE(b.velocity->BUSY.value && b.velocity->ACTIVE.value);
-    Execute(bench, b.halt);
-    bench.Scan();
+    Execute(rig, b.halt);
+    rig.Scan();
     EXPECT_TRUE(b.velocity->COMMANDABORTED.value);
     EXPECT_FALSE(b.velocity->INVELOCITY.value);
-    EXPECT_EQ(bench.State(1), kDiscrete) << "a halt is a discrete motion";
-    ASSERT_TRUE(EndsDone(bench, b.halt, 2000, "Halt"));
-    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
-    EXPECT_EQ(bench.State(1), kStandstill);
+    EXPECT_EQ(rig.State(1), kDiscrete) << "a halt is a discrete motion";
+    ASSERT_TRUE(EndsDone(rig, b.halt, 2000, "Halt"));
+    EXPECT_FALSE(rig.Pac().Axes().Motion(1).Moving());
+    EXPECT_EQ(rig.State(1), kStandstill);
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value && b.moveB->COMMANDABORTED.value && b.relative->COMMANDABORTED.value)
         << "held while Execute";
-    for (auto* fb : {&b.moveA, &b.moveB}) Release(bench, *fb);
-    Release(bench, b.relative);
-    Release(bench, b.velocity);
-    Release(bench, b.halt);
+    for (auto* fb : {&b.moveA, &b.moveB}) Release(rig, *fb);
+    Release(rig, b.relative);
+    Release(rig, b.velocity);
+    Release(rig, b.halt);
     // The axis works on from where it stands.
     SetMove(b.moveA, 40.0f);
-    Execute(bench, b.moveA);
-    ASSERT_TRUE(EndsDone(bench, b.moveA, 20000, "MoveAbsolute"));
-    EXPECT_EQ(bench.Position(1), 40.0f);
+    Execute(rig, b.moveA);
+    ASSERT_TRUE(EndsDone(rig, b.moveA, 20000, "MoveAbsolute"));
+    EXPECT_EQ(rig.Position(1), 40.0f);
 }
 
 TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    Execute(bench, b.halt);
-    ASSERT_TRUE(EndsDone(bench, b.halt, 100, "Halt"));
-    Release(bench, b.halt);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.halt);
-    bench.Scan();
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    Execute(rig, b.halt);
+    ASSERT_TRUE(EndsDone(rig, b.halt, 100, "Halt"));
+    Release(rig, b.halt);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.halt);
+    rig.Scan();
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value);
     SetMove(b.moveB, 10.0f);
-    Execute(bench, b.moveB);
-    bench.Scan();
+    Execute(rig, b.moveB);
+    rig.Scan();
     EXPECT_TRUE(b.halt->COMMANDABORTED.value);
-    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
-    EXPECT_EQ(bench.Position(1), 10.0f);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
+    EXPECT_EQ(rig.Position(1), 10.0f);
 }
 
 // An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever: from
 // 1000 units/s at the axis parameter's 10000 units/s2 the axis brakes for 100 ms, StopTimeout is 20 ms.
 TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
-    McBench bench(GetParam(), 1);
-    bench.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
-    Execute(bench, b.halt);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
+    McRig rig(GetParam(), 1);
+    rig.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+    Execute(rig, b.halt);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
     EXPECT_TRUE(b.halt->ERROR.value);
     EXPECT_EQ(b.halt->ERRORID.value, kStopTimeout);
-    EXPECT_TRUE(bench.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
-    Release(bench, b.halt);
-    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+    EXPECT_TRUE(rig.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
+    Release(rig, b.halt);
+    ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
 }
 
 TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.stop);
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.stop);
     EXPECT_TRUE(b.stop->BUSY.value);
-    bench.Scan();
+    rig.Scan();
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value);
-    EXPECT_EQ(bench.State(1), kStopping);
-    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
-    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
-    bench.Scan(3);
-    EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
+    EXPECT_EQ(rig.State(1), kStopping);
+    ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
+    EXPECT_FALSE(rig.Pac().Axes().Motion(1).Moving());
+    rig.Scan(3);
+    EXPECT_EQ(rig.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
     SetMove(b.moveB, 10.0f);
-    Execute(bench, b.moveB);
+    Execute(rig, b.moveB);
     EXPECT_EQ(b.moveB->ERRORID.value, kMcStopping);
-    Release(bench, b.moveB);
-    Execute(bench, b.halt);
+    Release(rig, b.moveB);
+    Execute(rig, b.halt);
     EXPECT_EQ(b.halt->ERRORID.value, kMcStopping);
-    Release(bench, b.halt);
-    Execute(bench, b.home);
+    Release(rig, b.halt);
+    Execute(rig, b.home);
     EXPECT_EQ(b.home->ERRORID.value, kMcStopping);
-    Release(bench, b.home);
+    Release(rig, b.home);
     // A second MC_Stop may come in Stopping and holds it from then on; the first keeps its Done.
-    Execute(bench, b.stop2);
-    ASSERT_TRUE(EndsDone(bench, b.stop2, 200, "Stop 2"));
+    Execute(rig, b.stop2);
+    ASSERT_TRUE(EndsDone(rig, b.stop2, 200, "Stop 2"));
     EXPECT_TRUE(b.stop->DONE.value);
-    Release(bench, b.stop);
-    bench.Scan(2);
-    EXPECT_EQ(bench.State(1), kStopping) << "the second MC_Stop holds it now";
-    Release(bench, b.stop2);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kStandstill);
-    Execute(bench, b.moveB);
-    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
+    Release(rig, b.stop);
+    rig.Scan(2);
+    EXPECT_EQ(rig.State(1), kStopping) << "the second MC_Stop holds it now";
+    Release(rig, b.stop2);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStandstill);
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
 }
 
 // The request numbers are a UINT and wrap: after 65535 requests an MC_Stop posts under 0, the number every block
 // that never posted still has. MC_Stop 2, never edged and called after it, must not take Stopping away.
 TEST_P(McSim, AStopHoldsStoppingWhenTheRequestNumberWrapsToZero) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    bench.Ref(1).REQUESTSERIAL = 65534;  // as a program that has issued 65534 commands left it
-    bench.Ref(1).JOBSERIAL = 65534;
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.stop);
-    ASSERT_EQ(bench.Ref(1).REQUESTSERIAL, 0u);
-    EXPECT_EQ(bench.State(1), kStopping);
-    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
-    bench.Scan(3);
-    EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    rig.Ref(1).REQUESTSERIAL = 65534;  // as a program that has issued 65534 commands left it
+    rig.Ref(1).JOBSERIAL = 65534;
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.stop);
+    ASSERT_EQ(rig.Ref(1).REQUESTSERIAL, 0u);
+    EXPECT_EQ(rig.State(1), kStopping);
+    ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
+    rig.Scan(3);
+    EXPECT_EQ(rig.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
     SetMove(b.moveB, 10.0f);
-    Execute(bench, b.moveB);
+    Execute(rig, b.moveB);
     EXPECT_EQ(b.moveB->ERRORID.value, kMcStopping) << pac::test::OutputsOf(b.moveB);
-    Release(bench, b.moveB);
-    Release(bench, b.stop);
-    EXPECT_EQ(bench.State(1), kStandstill);
-    Execute(bench, b.moveB);
-    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
+    Release(rig, b.moveB);
+    Release(rig, b.stop);
+    EXPECT_EQ(rig.State(1), kStandstill);
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
 }
 
 TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
     b.home->POSITION.value = 1.0f;
-    Execute(bench, b.home);
+    Execute(rig, b.home);
     EXPECT_EQ(b.home->ERRORID.value, kMcHomePosition) << "the reference point is the axis parameter's";
-    Release(bench, b.home);
+    Release(rig, b.home);
     b.home->POSITION.value = 0.0f;
     // From a motion state MC_Home is refused and the motion goes on.
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.home);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.home);
     EXPECT_EQ(b.home->ERRORID.value, kMcState);
     EXPECT_TRUE(b.moveA->BUSY.value) << "a refused block aborts nothing";
-    Release(bench, b.home);
-    Execute(bench, b.halt);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 2000, "Halt final"));
-    Release(bench, b.halt);
-    Release(bench, b.moveA);
+    Release(rig, b.home);
+    Execute(rig, b.halt);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.halt); }, 2000, "Halt final"));
+    Release(rig, b.halt);
+    Release(rig, b.moveA);
     // Homing: the reference run G25 (the simulator's cam at -20).
-    Execute(bench, b.home);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kHoming);
+    Execute(rig, b.home);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kHoming);
     SetMove(b.moveB, 10.0f);
-    Execute(bench, b.moveB);
+    Execute(rig, b.moveB);
     EXPECT_EQ(b.moveB->ERRORID.value, kMcState);
-    Release(bench, b.moveB);
-    Execute(bench, b.halt);
+    Release(rig, b.moveB);
+    Execute(rig, b.halt);
     EXPECT_EQ(b.halt->ERRORID.value, kMcState);
-    Release(bench, b.halt);
-    ASSERT_TRUE(EndsDone(bench, b.home, 20000, "Home"));
-    EXPECT_TRUE(bench.Ref(1).STATUS.REFERENCED);
-    EXPECT_EQ(bench.State(1), kStandstill);
-    Release(bench, b.home);
+    Release(rig, b.halt);
+    ASSERT_TRUE(EndsDone(rig, b.home, 20000, "Home"));
+    EXPECT_TRUE(rig.Ref(1).STATUS.REFERENCED);
+    EXPECT_EQ(rig.State(1), kStandstill);
+    Release(rig, b.home);
     // MC_Stop ends a reference run, here in its search for the cam (from 300 towards -20 at 500 AE/s).
     SetMove(b.moveA, 300.0f, 1000.0f);
-    Execute(bench, b.moveA);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
-    Release(bench, b.moveA);
-    Execute(bench, b.home);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) < 250.0f; }, 1000, "searching"));
-    Execute(bench, b.stop);
-    bench.Scan();
+    Execute(rig, b.moveA);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
+    Release(rig, b.moveA);
+    Execute(rig, b.home);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) < 250.0f; }, 1000, "searching"));
+    Execute(rig, b.stop);
+    rig.Scan();
     EXPECT_TRUE(b.home->COMMANDABORTED.value);
-    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
-    EXPECT_GT(bench.Position(1), 0.0f) << "stopped before the cam";
+    ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
+    EXPECT_GT(rig.Position(1), 0.0f) << "stopped before the cam";
 }
 
 // MC_Stop in the scan after MC_Home: the traverse bit of the reference run may fall in the controller cycle
 // that takes it over, before the axis has any speed; the stop still ends and the axis stands, not ACTIVE.
 TEST_P(McSim, AStopRightAfterHomeEndsWithTheAxisStanding) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    Execute(bench, b.home);
-    bench.Scan();
-    Execute(bench, b.stop);
-    ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    Execute(rig, b.home);
+    rig.Scan();
+    Execute(rig, b.stop);
+    ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
     EXPECT_TRUE(b.home->COMMANDABORTED.value);
-    EXPECT_FALSE(bench.Ref(1).STATUS.ACTIVE);
-    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving());
-    Release(bench, b.stop);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kStandstill);
+    EXPECT_FALSE(rig.Ref(1).STATUS.ACTIVE);
+    EXPECT_FALSE(rig.Pac().Axes().Motion(1).Moving());
+    Release(rig, b.stop);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStandstill);
 }
 
 TEST_P(McSim, AnAxisErrorMeansErrorStopUntilMcResetSeesItGone) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
     b.axisError->ENABLE.value = TRUE;
-    Execute(bench, b.reset);
+    Execute(rig, b.reset);
     EXPECT_TRUE(b.reset->DONE.value) << "nothing to reset in Standstill";
-    Release(bench, b.reset);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 5.0);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 300, "MoveAbsolute final"));
+    Release(rig, b.reset);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 5.0);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.moveA); }, 300, "MoveAbsolute final"));
     EXPECT_TRUE(b.moveA->ERROR.value);
     EXPECT_EQ(b.moveA->ERRORID.value, kAxisError);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kErrorStop);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kErrorStop);
     EXPECT_EQ(b.axisError->AXISERRORID.value, kFollowingError);
-    Release(bench, b.moveA);
+    Release(rig, b.moveA);
     // ErrorStop refuses everything but MC_Reset, MC_Power off included.
     SetMove(b.moveB, 10.0f);
-    Execute(bench, b.moveB);
+    Execute(rig, b.moveB);
     EXPECT_EQ(b.moveB->ERRORID.value, kMcErrorStop);
-    Release(bench, b.moveB);
-    Execute(bench, b.stop);
+    Release(rig, b.moveB);
+    Execute(rig, b.stop);
     EXPECT_EQ(b.stop->ERRORID.value, kMcErrorStop);
-    Release(bench, b.stop);
+    Release(rig, b.stop);
     b.power->ENABLE.value = FALSE;
-    bench.ScanMs(50);
-    EXPECT_EQ(bench.State(1), kErrorStop);
+    rig.ScanMs(50);
+    EXPECT_EQ(rig.State(1), kErrorStop);
     // The cause persists: the pulse ends after Timeout, MC_Reset fails with the axis error.
-    Execute(bench, b.reset);
+    Execute(rig, b.reset);
     EXPECT_TRUE(b.reset->BUSY.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.reset); }, 2500, "Reset final"));
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.reset); }, 2500, "Reset final"));
     EXPECT_TRUE(b.reset->ERROR.value);
     EXPECT_EQ(b.reset->ERRORID.value, kAxisError);
-    EXPECT_EQ(bench.State(1), kErrorStop);
-    Release(bench, b.reset);
-    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 0.0);
-    Execute(bench, b.reset);
-    ASSERT_TRUE(EndsDone(bench, b.reset, 500, "Reset"));
-    EXPECT_EQ(bench.State(1), kDisabled) << "MC_Power is off";
-    Release(bench, b.reset);
+    EXPECT_EQ(rig.State(1), kErrorStop);
+    Release(rig, b.reset);
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 0.0);
+    Execute(rig, b.reset);
+    ASSERT_TRUE(EndsDone(rig, b.reset, 500, "Reset"));
+    EXPECT_EQ(rig.State(1), kDisabled) << "MC_Power is off";
+    Release(rig, b.reset);
     b.power->ENABLE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kStandstill; }, 200, "Standstill"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 200, "Standstill"));
 }
 
 TEST_P(McSim, AnAxisErrorDuringAHaltOrAStopFailsIt) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.halt);
-    bench.Pac().Axes().SetDisturbance(1, bench.Now(), 5.0);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 300, "Halt final"));
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.halt);
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 5.0);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.halt); }, 300, "Halt final"));
     EXPECT_TRUE(b.halt->ERROR.value);
     EXPECT_EQ(b.halt->ERRORID.value, kAxisError);
 }
 
 TEST_P(McSim, PowerOffAbortsTheMoveAndALostLinkFailsAHalt) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
     b.power->ENABLE.value = FALSE;
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
     EXPECT_TRUE(b.moveA->COMMANDABORTED.value);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kDisabled; }, 100, "Disabled"));
-    Release(bench, b.moveA);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kDisabled; }, 100, "Disabled"));
+    Release(rig, b.moveA);
     b.power->ENABLE.value = TRUE;
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kStandstill; }, 200, "Standstill"));
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    Execute(bench, b.halt);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 200, "Standstill"));
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+    Execute(rig, b.halt);
     b.position->ENABLE.value = TRUE;
     b.axisError->ENABLE.value = TRUE;
-    bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kAllZero);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 300, "Halt final"));
+    rig.Plc().Bus().FromPacLink().SetFault(rig.Now(), pac::sim::LinkFault::kAllZero);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.halt); }, 300, "Halt final"));
     EXPECT_TRUE(b.halt->ERROR.value);
     EXPECT_EQ(b.halt->ERRORID.value, kNotReady);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kDisabled) << "no module status";
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kDisabled) << "no module status";
     // No axis status: MC_Power and the read blocks show Error, their outputs are not valid.
     EXPECT_TRUE(b.power->ERROR.value && !b.power->VALID.value);
     EXPECT_EQ(b.power->ERRORID.value, kNotReady);
@@ -405,43 +405,43 @@ TEST_P(McSim, PowerOffAbortsTheMoveAndALostLinkFailsAHalt) {
     EXPECT_EQ(b.position->ERRORID.value, kNotReady);
     EXPECT_TRUE(b.axisError->ERROR.value && !b.axisError->VALID.value);
     EXPECT_EQ(b.axisError->ERRORID.value, kNotReady);
-    bench.Plc().Bus().FromPacLink().SetFault(bench.Now(), pac::sim::LinkFault::kNone);
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kStandstill; }, 200, "Standstill again"));
+    rig.Plc().Bus().FromPacLink().SetFault(rig.Now(), pac::sim::LinkFault::kNone);
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 200, "Standstill again"));
     EXPECT_TRUE(b.power->VALID.value && b.position->VALID.value && b.axisError->VALID.value);
 }
 
 TEST_P(McSim, MoveVelocityRunsToTheRangeEndAndThatEndsItWithAnError) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
     b.status->ENABLE.value = TRUE;
     SetMove(b.moveA, 30.0f, 1000.0f);
-    Execute(bench, b.moveA);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
-    Release(bench, b.moveA);
+    Execute(rig, b.moveA);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.moveA); }, 2000, "MoveAbsolute final"));
+    Release(rig, b.moveA);
     // To the min. traverse range (axis parameter 8: 0.0) at 300 AE/s.
     b.velocity->VELOCITY.value = 300.0f;
     b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_NEGATIVE;
-    Execute(bench, b.velocity);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kContinuous);
+    Execute(rig, b.velocity);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kContinuous);
     EXPECT_TRUE(b.status->CONTINUOUSMOTION.value);
-    EXPECT_EQ(bench.SentWord(1, 6), 300u);
-    ASSERT_TRUE(bench.WaitFor([&] { return Final(b.velocity); }, 2000, "MoveVelocity final"));
+    EXPECT_EQ(rig.SentWord(1, 6), 300u);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.velocity); }, 2000, "MoveVelocity final"));
     EXPECT_TRUE(b.velocity->ERROR.value);
     EXPECT_EQ(b.velocity->ERRORID.value, kMcRangeEnd);
-    EXPECT_EQ(bench.Position(1), 0.0f);
-    bench.Scan();
-    EXPECT_EQ(bench.State(1), kStandstill);
+    EXPECT_EQ(rig.Position(1), 0.0f);
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStandstill);
 }
 
 // ---- what the PA-CONTROL cannot do, and values outside what the module carries ----------------------------
 
 TEST_P(McSim, WhatThePaControlCannotDoIsRefusedAndAbortsNothing) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
     auto refusedB = [&](auto setup, std::uint32_t expected, const char* what) {
         SetMove(b.moveB, 10.0f);
         b.moveB->ACCELERATION.value = 0.0f;
@@ -449,10 +449,10 @@ TEST_P(McSim, WhatThePaControlCannotDoIsRefusedAndAbortsNothing) {
         b.moveB->JERK.value = 0.0f;
         b.moveB->BUFFERMODE.value = E_PAC_MCBUFFERMODE__PAC_MC_ABORTING;
         setup();
-        Execute(bench, b.moveB);
+        Execute(rig, b.moveB);
         EXPECT_TRUE(b.moveB->ERROR.value) << what;
         EXPECT_EQ(b.moveB->ERRORID.value, expected) << what;
-        Release(bench, b.moveB);
+        Release(rig, b.moveB);
         EXPECT_TRUE(b.moveA->BUSY.value) << what << ": the running move goes on";
     };
     refusedB([&] { b.moveB->BUFFERMODE.value = E_PAC_MCBUFFERMODE__PAC_MC_BUFFERED; }, kMcBufferMode, "Buffered");
@@ -473,42 +473,42 @@ TEST_P(McSim, WhatThePaControlCannotDoIsRefusedAndAbortsNothing) {
     refusedB([&] { b.moveB->POSITION.value = INFINITY; }, kInvalidPosition, "Position infinite");
     b.velocity->VELOCITY.value = 100.0f;
     b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_SHORTEST_WAY;
-    Execute(bench, b.velocity);
+    Execute(rig, b.velocity);
     EXPECT_EQ(b.velocity->ERRORID.value, kMcDirection);
-    Release(bench, b.velocity);
+    Release(rig, b.velocity);
     b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_CURRENT;
-    Execute(bench, b.velocity);
+    Execute(rig, b.velocity);
     EXPECT_EQ(b.velocity->ERRORID.value, kMcDirection);
-    Release(bench, b.velocity);
+    Release(rig, b.velocity);
     b.halt->DECELERATION.value = 100.0f;
-    Execute(bench, b.halt);
+    Execute(rig, b.halt);
     EXPECT_EQ(b.halt->ERRORID.value, kMcDeceleration) << "a halt brakes on the running job's ramp";
-    Release(bench, b.halt);
+    Release(rig, b.halt);
     b.halt->DECELERATION.value = 0.0f;
     b.halt->BUFFERMODE.value = E_PAC_MCBUFFERMODE__PAC_MC_BLENDING_NEXT;
-    Execute(bench, b.halt);
+    Execute(rig, b.halt);
     EXPECT_EQ(b.halt->ERRORID.value, kMcBufferMode);
-    Release(bench, b.halt);
+    Release(rig, b.halt);
     b.stop->JERK.value = 1.0f;
-    Execute(bench, b.stop);
+    Execute(rig, b.stop);
     EXPECT_EQ(b.stop->ERRORID.value, kMcJerk);
-    Release(bench, b.stop);
+    Release(rig, b.stop);
     b.home->BUFFERMODE.value = E_PAC_MCBUFFERMODE__PAC_MC_BUFFERED;
-    Execute(bench, b.home);
+    Execute(rig, b.home);
     EXPECT_EQ(b.home->ERRORID.value, kMcBufferMode);
-    Release(bench, b.home);
+    Release(rig, b.home);
     EXPECT_TRUE(b.moveA->BUSY.value);
-    EXPECT_EQ(bench.State(1), kDiscrete);
+    EXPECT_EQ(rig.State(1), kDiscrete);
 }
 
 TEST_P(McSim, WithoutTheAxisParametersNoVelocityFits) {
-    McBench bench(GetParam(), 1);
-    bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
-    bench.Cyclic(1)->MAXVELOCITY.value = 0.0f;
-    bench.Scan();
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    rig.Cyclic(1)->MAXVELOCITY.value = 0.0f;
+    rig.Scan();
     SetMove(b.moveA, 10.0f);
-    Execute(bench, b.moveA);
+    Execute(rig, b.moveA);
     EXPECT_EQ(b.moveA->ERRORID.value, kInvalidVelocity);
 }
 

@@ -17,7 +17,7 @@ namespace {
 
 using namespace pac::test::mc;
 using pac::test::BusTiming;
-using pac::test::McBench;
+using pac::test::McRig;
 using pac::test::McBlocks;
 using pac::test::McCallOrder;
 
@@ -56,93 +56,93 @@ Expectation Expect(E_PAC_MCSTATE state, const std::vector<McBlock>& calls) {
 
 // The axis is free again: every block released, MC_Power on, Standstill within 300 ms, and a new
 // MC_MoveAbsolute A (MC_Home A on an axis left unreferenced) is accepted and ends Done. No MC_Stop is cycled.
-void ExpectNotLocked(McBench& bench) {
-    McBlocks& b = bench.Blocks(1);
-    for (const McBlock block : kPairBlocks) Disarm(bench, block);
+void ExpectNotLocked(McRig& rig) {
+    McBlocks& b = rig.Blocks(1);
+    for (const McBlock block : kPairBlocks) Disarm(rig, block);
     for (auto* fb : {&b.moveA->EXECUTE, &b.homeA->EXECUTE, &b.velocityA->EXECUTE, &b.stopA->EXECUTE}) fb->value = FALSE;
-    bench.Scan();
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.State(1) == kStandstill; }, 300, "Standstill"))
-        << "state " << Name(bench.State(1));
-    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 2000, "the axis stands"));
-    if (!bench.Ref(1).STATUS.REFERENCED) {
+    rig.Scan();
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 300, "Standstill"))
+        << "state " << Name(rig.State(1));
+    ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 2000, "the axis stands"));
+    if (!rig.Ref(1).STATUS.REFERENCED) {
         // An interrupted reference run leaves the axis unreferenced: the controller refuses moves (43).
-        Execute(bench, b.homeA);
+        Execute(rig, b.homeA);
         EXPECT_TRUE(b.homeA->BUSY.value) << "refused in Standstill: " << pac::test::OutputsOf(b.homeA);
-        ASSERT_TRUE(EndsDone(bench, b.homeA, 20000, "Home A after the pair"));
+        ASSERT_TRUE(EndsDone(rig, b.homeA, 20000, "Home A after the pair"));
         return;
     }
-    const float target = bench.Position(1) + 20.0f;
+    const float target = rig.Position(1) + 20.0f;
     SetMove(b.moveA, target);
-    Execute(bench, b.moveA);
+    Execute(rig, b.moveA);
     EXPECT_TRUE(b.moveA->BUSY.value) << "refused in Standstill: " << pac::test::OutputsOf(b.moveA);
-    ASSERT_TRUE(EndsDone(bench, b.moveA, 2000, "MoveAbsolute A after the pair"));
-    EXPECT_EQ(bench.Position(1), target);
+    ASSERT_TRUE(EndsDone(rig, b.moveA, 2000, "MoveAbsolute A after the pair"));
+    EXPECT_EQ(rig.Position(1), target);
 }
 
 // An MC_MoveVelocity that owns the axis reaches InVelocity and is halted by MC_Halt.
-void ExpectInVelocityThenHalt(McBench& bench, pac::FbInstance<MC_MOVEVELOCITY>& velocity) {
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_TRUE(bench.WaitFor([&] { return velocity->INVELOCITY.value != 0; }, 300, "InVelocity"));
-    if (b.halt->EXECUTE.value) Release(bench, b.halt);
-    Execute(bench, b.halt);
-    ASSERT_TRUE(EndsDone(bench, b.halt, 2000, "Halt of MoveVelocity"));
+void ExpectInVelocityThenHalt(McRig& rig, pac::FbInstance<MC_MOVEVELOCITY>& velocity) {
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_TRUE(rig.WaitFor([&] { return velocity->INVELOCITY.value != 0; }, 300, "InVelocity"));
+    if (b.halt->EXECUTE.value) Release(rig, b.halt);
+    Execute(rig, b.halt);
+    ASSERT_TRUE(EndsDone(rig, b.halt, 2000, "Halt of MoveVelocity"));
 }
 
 // A stop is done and its Execute stays TRUE: the axis stands in Stopping and a new move is refused (16#8032).
-void ExpectStoppingHeld(McBench& bench) {
-    McBlocks& b = bench.Blocks(1);
-    EXPECT_FALSE(bench.Pac().Axes().Motion(1).Moving()) << "the stop is done: the axis stands";
-    bench.Scan(3);
-    EXPECT_EQ(bench.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
-    SetMove(b.moveA, bench.Position(1) + 5.0f);
-    if (b.moveA->EXECUTE.value) Release(bench, b.moveA);
-    Execute(bench, b.moveA);
+void ExpectStoppingHeld(McRig& rig) {
+    McBlocks& b = rig.Blocks(1);
+    EXPECT_FALSE(rig.Pac().Axes().Motion(1).Moving()) << "the stop is done: the axis stands";
+    rig.Scan(3);
+    EXPECT_EQ(rig.State(1), kStopping) << "Stopping while MC_Stop's Execute is TRUE";
+    SetMove(b.moveA, rig.Position(1) + 5.0f);
+    if (b.moveA->EXECUTE.value) Release(rig, b.moveA);
+    Execute(rig, b.moveA);
     EXPECT_EQ(b.moveA->ERRORID.value, kMcStopping) << pac::test::OutputsOf(b.moveA);
-    Release(bench, b.moveA);
+    Release(rig, b.moveA);
 }
 
 // The last accepted block runs to its end: Done, MC_MoveVelocity InVelocity (then halted); a stop holds
 // Stopping while its Execute stays TRUE.
-void ExpectWinnerEnds(McBench& bench, McBlock winner) {
+void ExpectWinnerEnds(McRig& rig, McBlock winner) {
     if (winner == McBlock::kMoveVelocity) {
-        ExpectInVelocityThenHalt(bench, bench.Blocks(1).velocity);
+        ExpectInVelocityThenHalt(rig, rig.Blocks(1).velocity);
         return;
     }
     const std::string name = Name(winner);
-    ASSERT_TRUE(bench.WaitFor([&] { return OutputsOf(bench, winner).Final(); }, 20000, name + " final"));
-    const pac::test::PlcOpenOutputs out = OutputsOf(bench, winner);
+    ASSERT_TRUE(rig.WaitFor([&] { return OutputsOf(rig, winner).Final(); }, 20000, name + " final"));
+    const pac::test::PlcOpenOutputs out = OutputsOf(rig, winner);
     ASSERT_TRUE(out.done) << Name(winner) << " owns the axis: " << out;
-    if (IsStop(winner)) ExpectStoppingHeld(bench);
+    if (IsStop(winner)) ExpectStoppingHeld(rig);
 }
 
 // From Standstill into `from` with the A instances, outside the pair: MC_MoveAbsolute A towards 5000 at
 // 1000 AE/s, MC_Home A searching from 300, MC_MoveVelocity A at 200 AE/s, MC_Stop A done on A's move.
-void Reach(McBench& bench, E_PAC_MCSTATE from) {
-    McBlocks& b = bench.Blocks(1);
+void Reach(McRig& rig, E_PAC_MCSTATE from) {
+    McBlocks& b = rig.Blocks(1);
     if (from == kDiscrete || from == kStopping) {
-        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
     }
     if (from == kStopping) {
-        Execute(bench, b.stopA);
-        ASSERT_TRUE(EndsDone(bench, b.stopA, 2000, "Stop A"));
+        Execute(rig, b.stopA);
+        ASSERT_TRUE(EndsDone(rig, b.stopA, 2000, "Stop A"));
     } else if (from == kHoming) {
         SetMove(b.moveA, 300.0f, 1000.0f);
-        Execute(bench, b.moveA);
-        ASSERT_TRUE(EndsDone(bench, b.moveA, 2000, "MoveAbsolute A to 300"));
-        Release(bench, b.moveA);
-        Execute(bench, b.homeA);
-        ASSERT_TRUE(bench.WaitFor([&] { return bench.Position(1) < 290.0f; }, 1000, "searching"));
+        Execute(rig, b.moveA);
+        ASSERT_TRUE(EndsDone(rig, b.moveA, 2000, "MoveAbsolute A to 300"));
+        Release(rig, b.moveA);
+        Execute(rig, b.homeA);
+        ASSERT_TRUE(rig.WaitFor([&] { return rig.Position(1) < 290.0f; }, 1000, "searching"));
     } else if (from == kContinuous) {
         b.velocityA->VELOCITY.value = 200.0f;
-        Execute(bench, b.velocityA);
-        ASSERT_TRUE(bench.WaitFor([&] { return b.velocityA->INVELOCITY.value != 0; }, 300, "InVelocity A"));
+        Execute(rig, b.velocityA);
+        ASSERT_TRUE(rig.WaitFor([&] { return b.velocityA->INVELOCITY.value != 0; }, 300, "InVelocity A"));
     }
-    ASSERT_EQ(bench.State(1), from);
+    ASSERT_EQ(rig.State(1), from);
 }
 
 // The outputs of the A instance that brought the axis into `from`; none from Standstill.
-pac::test::PlcOpenOutputs ReacherOutputs(McBench& bench, E_PAC_MCSTATE from) {
-    McBlocks& b = bench.Blocks(1);
+pac::test::PlcOpenOutputs ReacherOutputs(McRig& rig, E_PAC_MCSTATE from) {
+    McBlocks& b = rig.Blocks(1);
     if (from == kDiscrete) return pac::test::OutputsOf(b.moveA);
     if (from == kHoming) return pac::test::OutputsOf(b.homeA);
     if (from == kContinuous) return pac::test::VelocityOutputsOf(b.velocityA);
@@ -152,32 +152,32 @@ pac::test::PlcOpenOutputs ReacherOutputs(McBench& bench, E_PAC_MCSTATE from) {
 
 // Nothing of the pair took the axis: the A instance runs on to its end (MC_MoveVelocity A: halted), MC_Stop A
 // holds Stopping.
-void ExpectReacherRunsOn(McBench& bench, E_PAC_MCSTATE from) {
-    McBlocks& b = bench.Blocks(1);
+void ExpectReacherRunsOn(McRig& rig, E_PAC_MCSTATE from) {
+    McBlocks& b = rig.Blocks(1);
     if (from == kDiscrete) {
-        ASSERT_TRUE(EndsDone(bench, b.moveA, 20000, "MoveAbsolute A, nothing having aborted it"));
+        ASSERT_TRUE(EndsDone(rig, b.moveA, 20000, "MoveAbsolute A, nothing having aborted it"));
     } else if (from == kHoming) {
-        ASSERT_TRUE(EndsDone(bench, b.homeA, 20000, "Home A, nothing having aborted it"));
+        ASSERT_TRUE(EndsDone(rig, b.homeA, 20000, "Home A, nothing having aborted it"));
     } else if (from == kContinuous) {
-        ExpectInVelocityThenHalt(bench, b.velocityA);
+        ExpectInVelocityThenHalt(rig, b.velocityA);
     } else if (from == kStopping) {
-        ExpectStoppingHeld(bench);
+        ExpectStoppingHeld(rig);
     }
 }
 
 void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock second, McCallOrder order) {
-    McBench bench(timing, 1, {}, order);
-    ASSERT_NO_FATAL_FAILURE(bench.PowerUp());
-    McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(Reach(bench, from));
+    McRig rig(timing, 1, {}, order);
+    ASSERT_NO_FATAL_FAILURE(rig.PowerUp());
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(Reach(rig, from));
     const std::vector<McBlock> calls = {first, second};
     const Expectation e = Expect(from, calls);
-    Arm(bench, first);
-    Arm(bench, second);
-    bench.Scan();
+    Arm(rig, first);
+    Arm(rig, second);
+    rig.Scan();
     for (std::size_t i = 0; i < calls.size(); ++i) {
         if (calls[i] == McBlock::kPowerOff) continue;
-        const pac::test::PlcOpenOutputs out = OutputsOf(bench, calls[i]);
+        const pac::test::PlcOpenOutputs out = OutputsOf(rig, calls[i]);
         if (e.refusals[i] != 0) {
             EXPECT_TRUE(out.error && out.errorId == e.refusals[i])
                 << Name(calls[i]) << " refused with 16#" << std::hex << e.refusals[i] << " expected: " << out;
@@ -186,56 +186,56 @@ void RunPair(const BusTiming& timing, E_PAC_MCSTATE from, McBlock first, McBlock
             EXPECT_TRUE(out.busy || doneAtOnce) << Name(calls[i]) << " accepted: " << out;
         }
     }
-    EXPECT_EQ(bench.State(1), e.state) << "the state at the end of the edge scan: " << Name(bench.State(1))
+    EXPECT_EQ(rig.State(1), e.state) << "the state at the end of the edge scan: " << Name(rig.State(1))
                                        << " instead of " << Name(e.state);
-    bench.Scan();
+    rig.Scan();
     // Every block accepted before the last one is aborted by it (PLCopen Aborting), and so is the A instance.
     for (std::size_t i = 0; i < calls.size(); ++i) {
         if (e.refusals[i] != 0 || calls[i] == McBlock::kReset || calls[i] == McBlock::kPowerOff) continue;
         if (e.hasWinner && calls[i] == e.winner) continue;
-        EXPECT_TRUE(OutputsOf(bench, calls[i]).aborted) << Name(calls[i]) << ": " << OutputsOf(bench, calls[i]);
+        EXPECT_TRUE(OutputsOf(rig, calls[i]).aborted) << Name(calls[i]) << ": " << OutputsOf(rig, calls[i]);
     }
     // The A instance loses the axis: CommandAborted; MC_Stop A was done before and keeps its Done.
     const auto expectReacherEnded = [&] {
         if (from == kStandstill) return;
-        const pac::test::PlcOpenOutputs reacher = ReacherOutputs(bench, from);
+        const pac::test::PlcOpenOutputs reacher = ReacherOutputs(rig, from);
         EXPECT_TRUE(from == kStopping ? reacher.done : reacher.aborted) << "the A instance: " << reacher;
     };
     if (e.hasWinner) expectReacherEnded();
     if (e.poweredOff) {
         // Power off ends whatever ran once the drive reports it off.
-        ASSERT_TRUE(bench.WaitFor([&] {
+        ASSERT_TRUE(rig.WaitFor([&] {
             for (const McBlock block : calls) {
-                if (OutputsOf(bench, block).busy) return false;
+                if (OutputsOf(rig, block).busy) return false;
             }
-            return !ReacherOutputs(bench, from).busy;
+            return !ReacherOutputs(rig, from).busy;
         }, 2000, "every block ends"));
-        EXPECT_EQ(bench.State(1), kDisabled);
+        EXPECT_EQ(rig.State(1), kDisabled);
         // The drive reports itself off before MC_Power switches it on again: until then DRIVE ENABLED is the
         // old reading, and the state would show Standstill for the bus's round trip.
-        ASSERT_TRUE(bench.WaitFor([&] { return !b.power->STATUS.value; }, 300, "MC_Power.Status FALSE"));
+        ASSERT_TRUE(rig.WaitFor([&] { return !b.power->STATUS.value; }, 300, "MC_Power.Status FALSE"));
         expectReacherEnded();
         // A job not yet started is aborted, never sent to an axis being switched off; a halt or stop is over
         // once the axis stands.
         for (std::size_t i = 0; i < calls.size(); ++i) {
             if (e.refusals[i] != 0 || calls[i] == McBlock::kReset || calls[i] == McBlock::kPowerOff) continue;
-            const pac::test::PlcOpenOutputs out = OutputsOf(bench, calls[i]);
+            const pac::test::PlcOpenOutputs out = OutputsOf(rig, calls[i]);
             const bool halts = calls[i] == McBlock::kHalt || IsStop(calls[i]);
             EXPECT_TRUE(halts ? out.done : out.aborted) << Name(calls[i]) << " with MC_Power off: " << out;
         }
     } else if (e.hasWinner) {
-        ExpectWinnerEnds(bench, e.winner);  // and then whether the axis is free, whatever happened
+        ExpectWinnerEnds(rig, e.winner);  // and then whether the axis is free, whatever happened
     } else {
-        ExpectReacherRunsOn(bench, from);
+        ExpectReacherRunsOn(rig, from);
     }
-    ExpectNotLocked(bench);
+    ExpectNotLocked(rig);
 }
 
 TEST_P(McSameScanSim, EveryPairOfBlocksEdgedInOneScanFollowsTheDiagramInBothCallOrders) {
     for (const auto from : {kStandstill, kHoming, kDiscrete, kContinuous, kStopping}) {
         for (std::size_t i = 0; i < std::size(kPairBlocks); ++i) {
             for (std::size_t j = i + 1; j < std::size(kPairBlocks); ++j) {
-                // kPairBlocks lists the blocks in McBench's call order: reversed, the later one is called first.
+                // kPairBlocks lists the blocks in McRig's call order: reversed, the later one is called first.
                 for (const auto order : {McCallOrder::kAsListed, McCallOrder::kReversed}) {
                     const bool asListed = order == McCallOrder::kAsListed;
                     const McBlock first = asListed ? kPairBlocks[i] : kPairBlocks[j];
@@ -255,27 +255,27 @@ TEST_P(McSameScanSim, EveryPairOfBlocksEdgedInOneScanFollowsTheDiagramInBothCall
 TEST_P(McSameScanSim, ReleasingAStopFreesTheAxisForTheBlocksCalledAfterIt) {
     for (const auto order : {McCallOrder::kAsListed, McCallOrder::kReversed}) {
         SCOPED_TRACE(order == McCallOrder::kAsListed ? "MC_MoveAbsolute before MC_Stop" : "MC_Stop first");
-        McBench bench(GetParam(), 1, {}, order);
-        ASSERT_NO_FATAL_FAILURE(bench.PowerUp());
-        McBlocks& b = bench.Blocks(1);
-        ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-        Execute(bench, b.stop);
-        ASSERT_TRUE(EndsDone(bench, b.stop, 2000, "Stop"));
-        bench.Scan(2);
-        ASSERT_EQ(bench.State(1), kStopping);
+        McRig rig(GetParam(), 1, {}, order);
+        ASSERT_NO_FATAL_FAILURE(rig.PowerUp());
+        McBlocks& b = rig.Blocks(1);
+        ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
+        Execute(rig, b.stop);
+        ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
+        rig.Scan(2);
+        ASSERT_EQ(rig.State(1), kStopping);
         b.stop->EXECUTE.value = FALSE;
-        Arm(bench, McBlock::kMoveAbsolute);
-        bench.Scan();
-        const pac::test::PlcOpenOutputs out = OutputsOf(bench, McBlock::kMoveAbsolute);
+        Arm(rig, McBlock::kMoveAbsolute);
+        rig.Scan();
+        const pac::test::PlcOpenOutputs out = OutputsOf(rig, McBlock::kMoveAbsolute);
         if (order == McCallOrder::kReversed) {
             EXPECT_TRUE(out.busy) << out;
-            EXPECT_EQ(bench.State(1), kDiscrete);
-            ASSERT_TRUE(EndsDone(bench, b.moveB, 2000, "MoveAbsolute B"));
+            EXPECT_EQ(rig.State(1), kDiscrete);
+            ASSERT_TRUE(EndsDone(rig, b.moveB, 2000, "MoveAbsolute B"));
         } else {
             EXPECT_TRUE(out.error && out.errorId == kMcStopping) << out;
-            EXPECT_EQ(bench.State(1), kStandstill);
+            EXPECT_EQ(rig.State(1), kStandstill);
         }
-        ExpectNotLocked(bench);
+        ExpectNotLocked(rig);
     }
 }
 

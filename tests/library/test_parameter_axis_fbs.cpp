@@ -38,9 +38,9 @@ std::uint32_t Bits(float value) { return pac::test::BitsOf(value); }
 
 // A PLC with every FB of the page on the CMD interface of one simulated PA-CONTROL, plus a plain
 // FB_PAC_Cmd for the mode commands (0603) the page does not cover.
-class AxisBench {
+class AxisRig {
 public:
-    explicit AxisBench(const BusTiming& t, pac::sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
+    explicit AxisRig(const BusTiming& t, pac::sim::PaControlConfig config = {}, nanoseconds bootTime = 0ns)
         : plc_(t, config, bootTime) {
         plc_.Add("FB_PAC_Cmd", cmd);
         plc_.Add("WriteSystemParameter", writeSys);
@@ -100,7 +100,7 @@ public:
 
     void Settle(int scans) { plc_.Scan(scans); }
     // FB_PAC_CmdInterface.TwoStepWrite: the data a scan before the SEND flag (Interbus-S, 4.2.4).
-    void SetTwoStepWrite(bool on) { plc_.Bench().CmdInterface()->TWOSTEPWRITE.value = on ? TRUE : FALSE; }
+    void SetTwoStepWrite(bool on) { plc_.Rig().CmdInterface()->TWOSTEPWRITE.value = on ? TRUE : FALSE; }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
     pac::sim::ServoAxis& Motion(int axis) { return Controller().Axes().Motion(axis); }
     const pac::sim::Dynamics& SessionDynamics(int axis) { return Controller().Axes().SessionDynamics(axis); }
@@ -155,154 +155,154 @@ protected:
 // ---- system parameters (5.2.2) ----
 
 TEST_P(ParameterAxisFbs, SystemParameterLandsInTheControllerAndReadsBack) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     // 5.2.2.1 example: input 1 as the start input, 0700 parameter 3 data 1.
-    bench.writeSys->PARAMETERNUMBER.value = 3;
-    bench.writeSys->VALUE.value = 1;
-    FinalOutcome write = bench.Run(bench.writeSys);
+    rig.writeSys->PARAMETERNUMBER.value = 3;
+    rig.writeSys->VALUE.value = 1;
+    FinalOutcome write = rig.Run(rig.writeSys);
     ASSERT_TRUE(write.Done());
-    EXPECT_TRUE(bench.Window().Contains(write.Scans())) << write << ", the protocol allows " << bench.Window() << "the FB adds no scan to FB_PAC_Cmd";
-    EXPECT_EQ(bench.Controller().SystemParameters().IntValue(3), 1);
-    const SentCommand sent = Sent(bench.LastCommand());
+    EXPECT_TRUE(rig.Window().Contains(write.Scans())) << write << ", the protocol allows " << rig.Window() << "the FB adds no scan to FB_PAC_Cmd";
+    EXPECT_EQ(rig.Controller().SystemParameters().IntValue(3), 1);
+    const SentCommand sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x0700);
     EXPECT_EQ(sent.param, 3);
     EXPECT_EQ(sent.data, 1u);
 
-    bench.writeSys->VALUE.value = 1000;
-    ASSERT_TRUE(bench.Run(bench.writeSys).Done());
-    EXPECT_EQ(bench.Controller().SystemParameters().IntValue(3), 1000);
+    rig.writeSys->VALUE.value = 1000;
+    ASSERT_TRUE(rig.Run(rig.writeSys).Done());
+    EXPECT_EQ(rig.Controller().SystemParameters().IntValue(3), 1000);
 
-    bench.readSys->PARAMETERNUMBER.value = 3;
-    bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
-    FinalOutcome read = bench.Run(bench.readSys);
+    rig.readSys->PARAMETERNUMBER.value = 3;
+    rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
+    FinalOutcome read = rig.Run(rig.readSys);
     ASSERT_TRUE(read.Done());
-    EXPECT_TRUE(bench.Window().Contains(read.Scans())) << read << ", the protocol allows " << bench.Window();
-    EXPECT_EQ(bench.readSys->VALUE.value, 1000) << "the value holds after Execute fell";
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1700);
+    EXPECT_TRUE(rig.Window().Contains(read.Scans())) << read << ", the protocol allows " << rig.Window();
+    EXPECT_EQ(rig.readSys->VALUE.value, 1000) << "the value holds after Execute fell";
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1700);
 
     // 5.2.2.2 example: language 3 (French).
-    bench.Controller().SystemParameters().Set(1, 3);
-    bench.readSys->PARAMETERNUMBER.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(bench.readSys->VALUE.value, 3);
+    rig.Controller().SystemParameters().Set(1, 3);
+    rig.readSys->PARAMETERNUMBER.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(rig.readSys->VALUE.value, 3);
 }
 
 TEST_P(ParameterAxisFbs, SystemParameterLimitsSelectTheCommand) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     // 5.2.2.3 / 5.2.2.4 examples: at most 4 axes, at least 0.
-    bench.readSys->PARAMETERNUMBER.value = 2;
-    bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1701);
-    EXPECT_EQ(bench.readSys->VALUE.value, 4);
-    bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1702);
-    EXPECT_EQ(bench.readSys->VALUE.value, 0);
-    bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1700);
-    EXPECT_EQ(bench.readSys->VALUE.value, 2);
+    rig.readSys->PARAMETERNUMBER.value = 2;
+    rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1701);
+    EXPECT_EQ(rig.readSys->VALUE.value, 4);
+    rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1702);
+    EXPECT_EQ(rig.readSys->VALUE.value, 0);
+    rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1700);
+    EXPECT_EQ(rig.readSys->VALUE.value, 2);
 }
 
 TEST_P(ParameterAxisFbs, SignedSystemParameterValuesRoundTrip) {
-    AxisBench bench(Param(), WithWideSystemParameter());
+    AxisRig rig(Param(), WithWideSystemParameter());
     for (std::int32_t value : {-1, -2147483647, 2147483647, -123456789, 0}) {
         SCOPED_TRACE("value " + std::to_string(value));
-        bench.writeSys->PARAMETERNUMBER.value = 21;
-        bench.writeSys->VALUE.value = value;
-        ASSERT_TRUE(bench.Run(bench.writeSys).Done());
-        EXPECT_EQ(bench.Controller().SystemParameters().IntValue(21), value);
-        EXPECT_EQ(Sent(bench.LastCommand()).data, static_cast<std::uint32_t>(value));
-        bench.readSys->PARAMETERNUMBER.value = 21;
-        bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
-        ASSERT_TRUE(bench.Run(bench.readSys).Done());
-        EXPECT_EQ(bench.readSys->VALUE.value, value);
+        rig.writeSys->PARAMETERNUMBER.value = 21;
+        rig.writeSys->VALUE.value = value;
+        ASSERT_TRUE(rig.Run(rig.writeSys).Done());
+        EXPECT_EQ(rig.Controller().SystemParameters().IntValue(21), value);
+        EXPECT_EQ(Sent(rig.LastCommand()).data, static_cast<std::uint32_t>(value));
+        rig.readSys->PARAMETERNUMBER.value = 21;
+        rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
+        ASSERT_TRUE(rig.Run(rig.readSys).Done());
+        EXPECT_EQ(rig.readSys->VALUE.value, value);
     }
-    bench.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(bench.readSys->VALUE.value, -2147483647);
+    rig.readSys->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(rig.readSys->VALUE.value, -2147483647);
 }
 
 TEST_P(ParameterAxisFbs, SystemParameterErrorsAreThePacNumbers) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     // Number of axes: 0..4.
-    bench.writeSys->PARAMETERNUMBER.value = 2;
-    bench.writeSys->VALUE.value = 5;
-    FinalOutcome outcome = bench.Run(bench.writeSys);
+    rig.writeSys->PARAMETERNUMBER.value = 2;
+    rig.writeSys->VALUE.value = 5;
+    FinalOutcome outcome = rig.Run(rig.writeSys);
     EXPECT_TRUE(outcome.Error());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    EXPECT_EQ(bench.Controller().SystemParameters().IntValue(2), 2) << "unchanged";
-    bench.writeSys->VALUE.value = -1;
-    EXPECT_EQ(bench.Run(bench.writeSys).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
+    EXPECT_EQ(rig.Controller().SystemParameters().IntValue(2), 2) << "unchanged";
+    rig.writeSys->VALUE.value = -1;
+    EXPECT_EQ(rig.Run(rig.writeSys).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
     // 9 is "currently not used".
-    bench.writeSys->PARAMETERNUMBER.value = 9;
-    bench.writeSys->VALUE.value = 0;
-    EXPECT_EQ(bench.Run(bench.writeSys).ErrorId(), kGvl["PAC_ERR_SYSTEM_PARAMETER"]);
-    bench.readSys->PARAMETERNUMBER.value = 9;
-    bench.readSys->VALUE.value = 77;
-    outcome = bench.Run(bench.readSys);
+    rig.writeSys->PARAMETERNUMBER.value = 9;
+    rig.writeSys->VALUE.value = 0;
+    EXPECT_EQ(rig.Run(rig.writeSys).ErrorId(), kGvl["PAC_ERR_SYSTEM_PARAMETER"]);
+    rig.readSys->PARAMETERNUMBER.value = 9;
+    rig.readSys->VALUE.value = 77;
+    outcome = rig.Run(rig.readSys);
     EXPECT_TRUE(outcome.Error());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_SYSTEM_PARAMETER"]);
-    EXPECT_EQ(bench.readSys->VALUE.value, 77) << "Value changes only with Done";
-    bench.readSys->PARAMETERNUMBER.value = 65535;
-    EXPECT_EQ(bench.Run(bench.readSys).ErrorId(), kGvl["PAC_ERR_SYSTEM_PARAMETER"]);
-    EXPECT_EQ(Sent(bench.LastCommand()).param, 65535);
+    EXPECT_EQ(rig.readSys->VALUE.value, 77) << "Value changes only with Done";
+    rig.readSys->PARAMETERNUMBER.value = 65535;
+    EXPECT_EQ(rig.Run(rig.readSys).ErrorId(), kGvl["PAC_ERR_SYSTEM_PARAMETER"]);
+    EXPECT_EQ(Sent(rig.LastCommand()).param, 65535);
     // A good command after the errors.
-    bench.readSys->PARAMETERNUMBER.value = 2;
-    ASSERT_TRUE(bench.Run(bench.readSys).Done());
-    EXPECT_EQ(bench.readSys->VALUE.value, 2);
+    rig.readSys->PARAMETERNUMBER.value = 2;
+    ASSERT_TRUE(rig.Run(rig.readSys).Done());
+    EXPECT_EQ(rig.readSys->VALUE.value, 2);
 }
 
 // ---- axis parameters (5.2.3) ----
 
 TEST_P(ParameterAxisFbs, AxisParameterTheManualsExample) {
-    AxisBench bench(Param());
-    bench.writeSys->PARAMETERNUMBER.value = 2;  // three axes, so that axis 3 exists
-    bench.writeSys->VALUE.value = 3;
-    ASSERT_TRUE(bench.Run(bench.writeSys).Done());
+    AxisRig rig(Param());
+    rig.writeSys->PARAMETERNUMBER.value = 2;  // three axes, so that axis 3 exists
+    rig.writeSys->VALUE.value = 3;
+    ASSERT_TRUE(rig.Run(rig.writeSys).Done());
     // 5.2.3 example: acceleration 200 for axis 3: parameter 0306, data 43 48 00 00.
-    bench.writeAxis->AXIS.value = 3;
-    bench.writeAxis->PARAMETERNUMBER.value = 6;
-    bench.writeAxis->VALUE.value = 200.0F;
-    FinalOutcome write = bench.Run(bench.writeAxis);
+    rig.writeAxis->AXIS.value = 3;
+    rig.writeAxis->PARAMETERNUMBER.value = 6;
+    rig.writeAxis->VALUE.value = 200.0F;
+    FinalOutcome write = rig.Run(rig.writeAxis);
     ASSERT_TRUE(write.Done());
-    EXPECT_TRUE(bench.Window().Contains(write.Scans())) << write << ", the protocol allows " << bench.Window();
-    SentCommand sent = Sent(bench.LastCommand());
+    EXPECT_TRUE(rig.Window().Contains(write.Scans())) << write << ", the protocol allows " << rig.Window();
+    SentCommand sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x0800);
     EXPECT_EQ(sent.param, 0x0306);
     EXPECT_EQ(sent.data, 0x43480000u);
-    EXPECT_EQ(bench.Controller().Axes().Parameters(3).Value(6), 0x43480000u);
-    EXPECT_EQ(bench.Controller().Axes().Parameters(2).Value(6), pac::sim::FloatToBits(10000.0F)) << "axis 2 untouched";
+    EXPECT_EQ(rig.Controller().Axes().Parameters(3).Value(6), 0x43480000u);
+    EXPECT_EQ(rig.Controller().Axes().Parameters(2).Value(6), pac::sim::FloatToBits(10000.0F)) << "axis 2 untouched";
     // 5.2.3.2 example: the maximum traverse speed of axis 3, parameter 0301: 47 43 50 00 = 50000.0.
-    bench.readAxis->AXIS.value = 3;
-    bench.readAxis->PARAMETERNUMBER.value = 1;
-    bench.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
-    ASSERT_TRUE(bench.Run(bench.readAxis).Done());
-    sent = Sent(bench.LastCommand());
+    rig.readAxis->AXIS.value = 3;
+    rig.readAxis->PARAMETERNUMBER.value = 1;
+    rig.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
+    ASSERT_TRUE(rig.Run(rig.readAxis).Done());
+    sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x1801);
     EXPECT_EQ(sent.param, 0x0301);
-    EXPECT_EQ(Bits(bench.readAxis->VALUE.value), 0x47435000u);
+    EXPECT_EQ(Bits(rig.readAxis->VALUE.value), 0x47435000u);
     // 5.2.3.1 example: is the encoder of axis 2 inverted (parameter 021F)? 0.0: no.
-    bench.readAxis->AXIS.value = 2;
-    bench.readAxis->PARAMETERNUMBER.value = 31;
-    bench.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
-    ASSERT_TRUE(bench.Run(bench.readAxis).Done());
-    sent = Sent(bench.LastCommand());
+    rig.readAxis->AXIS.value = 2;
+    rig.readAxis->PARAMETERNUMBER.value = 31;
+    rig.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
+    ASSERT_TRUE(rig.Run(rig.readAxis).Done());
+    sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x1800);
     EXPECT_EQ(sent.param, 0x021F);
-    EXPECT_EQ(Bits(bench.readAxis->VALUE.value), 0u);
+    EXPECT_EQ(Bits(rig.readAxis->VALUE.value), 0u);
     // The minimum acceleration (1802) of the simulator's table: 1.0.
-    bench.readAxis->AXIS.value = 3;
-    bench.readAxis->PARAMETERNUMBER.value = 6;
-    bench.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
-    ASSERT_TRUE(bench.Run(bench.readAxis).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1802);
-    EXPECT_EQ(bench.readAxis->VALUE.value, 1.0F);
+    rig.readAxis->AXIS.value = 3;
+    rig.readAxis->PARAMETERNUMBER.value = 6;
+    rig.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MIN;
+    ASSERT_TRUE(rig.Run(rig.readAxis).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1802);
+    EXPECT_EQ(rig.readAxis->VALUE.value, 1.0F);
 }
 
 TEST_P(ParameterAxisFbs, AxisParameterRealValuesAreBitExact) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     // Axis parameter 8 (minimum traverse area) allows -1e6..1e6: normal, smallest normal, subnormal,
     // values with all 24 mantissa bits, the ends of the range.
     const std::vector<float> values = {-123.456F, 0.1F, 3.14159274F, std::numeric_limits<float>::min(),
@@ -311,27 +311,27 @@ TEST_P(ParameterAxisFbs, AxisParameterRealValuesAreBitExact) {
         std::ostringstream trace;
         trace << "value " << value << " (bits " << std::hex << Bits(value) << ")";
         SCOPED_TRACE(trace.str());
-        bench.writeAxis->AXIS.value = 1;
-        bench.writeAxis->PARAMETERNUMBER.value = 8;
-        bench.writeAxis->VALUE.value = value;
-        ASSERT_TRUE(bench.Run(bench.writeAxis).Done());
-        EXPECT_EQ(Sent(bench.LastCommand()).data, Bits(value));
-        EXPECT_EQ(bench.Controller().Axes().Parameters(1).Value(8), Bits(value));
-        bench.readAxis->AXIS.value = 1;
-        bench.readAxis->PARAMETERNUMBER.value = 8;
-        bench.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
-        ASSERT_TRUE(bench.Run(bench.readAxis).Done());
-        EXPECT_EQ(Bits(bench.readAxis->VALUE.value), Bits(value));
+        rig.writeAxis->AXIS.value = 1;
+        rig.writeAxis->PARAMETERNUMBER.value = 8;
+        rig.writeAxis->VALUE.value = value;
+        ASSERT_TRUE(rig.Run(rig.writeAxis).Done());
+        EXPECT_EQ(Sent(rig.LastCommand()).data, Bits(value));
+        EXPECT_EQ(rig.Controller().Axes().Parameters(1).Value(8), Bits(value));
+        rig.readAxis->AXIS.value = 1;
+        rig.readAxis->PARAMETERNUMBER.value = 8;
+        rig.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_VALUE;
+        ASSERT_TRUE(rig.Run(rig.readAxis).Done());
+        EXPECT_EQ(Bits(rig.readAxis->VALUE.value), Bits(value));
     }
 }
 
 TEST_P(ParameterAxisFbs, AxisParameterErrorsAreThePacNumbers) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     auto write = [&](int axis, int number, float value) {
-        bench.writeAxis->AXIS.value = static_cast<USINT>(axis);
-        bench.writeAxis->PARAMETERNUMBER.value = static_cast<USINT>(number);
-        bench.writeAxis->VALUE.value = value;
-        return bench.Run(bench.writeAxis);
+        rig.writeAxis->AXIS.value = static_cast<USINT>(axis);
+        rig.writeAxis->PARAMETERNUMBER.value = static_cast<USINT>(number);
+        rig.writeAxis->VALUE.value = value;
+        return rig.Run(rig.writeAxis);
     };
     // Traverse speed 1..50000.
     FinalOutcome outcome = write(1, 1, 0.5F);
@@ -339,93 +339,93 @@ TEST_P(ParameterAxisFbs, AxisParameterErrorsAreThePacNumbers) {
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
     EXPECT_EQ(write(1, 1, 50000.5F).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
     EXPECT_EQ(write(1, 1, std::numeric_limits<float>::quiet_NaN()).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    EXPECT_EQ(Sent(bench.LastCommand()).data, 0x7FC00000u) << "NaN goes out as the one quiet NaN";
+    EXPECT_EQ(Sent(rig.LastCommand()).data, 0x7FC00000u) << "NaN goes out as the one quiet NaN";
     EXPECT_EQ(write(1, 1, std::numeric_limits<float>::infinity()).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    EXPECT_EQ(bench.Controller().Axes().Parameters(1).Value(1), pac::sim::FloatToBits(1000.0F)) << "unchanged";
+    EXPECT_EQ(rig.Controller().Axes().Parameters(1).Value(1), pac::sim::FloatToBits(1000.0F)) << "unchanged";
     // Two axes are configured (system parameter 2); axis 0 does not exist.
     EXPECT_EQ(write(3, 1, 100.0F).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
     EXPECT_EQ(write(0, 1, 100.0F).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
     EXPECT_EQ(write(255, 1, 100.0F).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
-    EXPECT_EQ(Sent(bench.LastCommand()).param, 0xFF01);
+    EXPECT_EQ(Sent(rig.LastCommand()).param, 0xFF01);
     // Parameter 10 (motor phase current) is not in the simulator's table.
     EXPECT_EQ(write(1, 10, 1.0F).ErrorId(), kGvl["PAC_ERR_AXIS_PARAMETER"]);
-    bench.readAxis->AXIS.value = 2;
-    bench.readAxis->PARAMETERNUMBER.value = 0;
-    bench.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
-    EXPECT_EQ(bench.Run(bench.readAxis).ErrorId(), kGvl["PAC_ERR_AXIS_PARAMETER"]);
-    bench.readAxis->AXIS.value = 9;
-    EXPECT_EQ(bench.Run(bench.readAxis).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    rig.readAxis->AXIS.value = 2;
+    rig.readAxis->PARAMETERNUMBER.value = 0;
+    rig.readAxis->KIND.value = E_PAC_PARAMETERLIMIT__PAC_PARAM_MAX;
+    EXPECT_EQ(rig.Run(rig.readAxis).ErrorId(), kGvl["PAC_ERR_AXIS_PARAMETER"]);
+    rig.readAxis->AXIS.value = 9;
+    EXPECT_EQ(rig.Run(rig.readAxis).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
     // Within the limits.
     outcome = write(2, 1, 50000.0F);
     EXPECT_TRUE(outcome.Done());
-    EXPECT_EQ(bench.Controller().Axes().Parameters(2).RealValue(1), 50000.0F);
+    EXPECT_EQ(rig.Controller().Axes().Parameters(2).RealValue(1), 50000.0F);
 }
 
 TEST_P(ParameterAxisFbs, ParameterCommandsAreRefusedOutsideHomePosition) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
     const std::uint32_t inadmissible = kGvl["PAC_ERR_INADMISSIBLE_COMMAND"];
-    bench.writeSys->PARAMETERNUMBER.value = 3;
-    bench.writeSys->VALUE.value = 5;
-    EXPECT_EQ(bench.Run(bench.writeSys).ErrorId(), inadmissible);
-    EXPECT_EQ(bench.Controller().SystemParameters().IntValue(3), 0);
-    bench.readSys->PARAMETERNUMBER.value = 2;
-    EXPECT_EQ(bench.Run(bench.readSys).ErrorId(), inadmissible);
-    bench.writeAxis->AXIS.value = 1;
-    bench.writeAxis->PARAMETERNUMBER.value = 1;
-    bench.writeAxis->VALUE.value = 2000.0F;
-    EXPECT_EQ(bench.Run(bench.writeAxis).ErrorId(), inadmissible);
-    EXPECT_EQ(bench.Controller().Axes().Parameters(1).RealValue(1), 1000.0F);
-    bench.readAxis->AXIS.value = 1;
-    bench.readAxis->PARAMETERNUMBER.value = 1;
-    EXPECT_EQ(bench.Run(bench.readAxis).ErrorId(), inadmissible);
+    rig.writeSys->PARAMETERNUMBER.value = 3;
+    rig.writeSys->VALUE.value = 5;
+    EXPECT_EQ(rig.Run(rig.writeSys).ErrorId(), inadmissible);
+    EXPECT_EQ(rig.Controller().SystemParameters().IntValue(3), 0);
+    rig.readSys->PARAMETERNUMBER.value = 2;
+    EXPECT_EQ(rig.Run(rig.readSys).ErrorId(), inadmissible);
+    rig.writeAxis->AXIS.value = 1;
+    rig.writeAxis->PARAMETERNUMBER.value = 1;
+    rig.writeAxis->VALUE.value = 2000.0F;
+    EXPECT_EQ(rig.Run(rig.writeAxis).ErrorId(), inadmissible);
+    EXPECT_EQ(rig.Controller().Axes().Parameters(1).RealValue(1), 1000.0F);
+    rig.readAxis->AXIS.value = 1;
+    rig.readAxis->PARAMETERNUMBER.value = 1;
+    EXPECT_EQ(rig.Run(rig.readAxis).ErrorId(), inadmissible);
     // AUTOMATIC too.
-    bench.Controller().SetOperatingStatus(11);
-    bench.Settle(2 * (Param().latency + 1) + Param().pacMs);
-    EXPECT_EQ(bench.Run(bench.writeAxis).ErrorId(), inadmissible);
-    EXPECT_EQ(bench.Run(bench.readSys).ErrorId(), inadmissible);
+    rig.Controller().SetOperatingStatus(11);
+    rig.Settle(2 * (Param().latency + 1) + Param().pacMs);
+    EXPECT_EQ(rig.Run(rig.writeAxis).ErrorId(), inadmissible);
+    EXPECT_EQ(rig.Run(rig.readSys).ErrorId(), inadmissible);
 }
 
 // ---- axis position and status (5.2.4.18, 5.2.4.22, 5.2.4.23) ----
 
 TEST_P(ParameterAxisFbs, AxisPositionIsBitExact) {
-    AxisBench bench(Param());
+    AxisRig rig(Param());
     for (float position : {-1234.5678F, 0.1F, 5000.0F, 1.0e-40F}) {
-        bench.Motion(2).Place(bench.Now(), static_cast<double>(position));
-        bench.readPos->AXIS.value = 2;
-        FinalOutcome outcome = bench.Run(bench.readPos);
+        rig.Motion(2).Place(rig.Now(), static_cast<double>(position));
+        rig.readPos->AXIS.value = 2;
+        FinalOutcome outcome = rig.Run(rig.readPos);
         ASSERT_TRUE(outcome.Done());
-        EXPECT_TRUE(bench.Window().Contains(outcome.Scans())) << outcome << ", the protocol allows " << bench.Window();
-        const SentCommand sent = Sent(bench.LastCommand());
+        EXPECT_TRUE(rig.Window().Contains(outcome.Scans())) << outcome << ", the protocol allows " << rig.Window();
+        const SentCommand sent = Sent(rig.LastCommand());
         EXPECT_EQ(sent.code, 0x190C);
         EXPECT_EQ(sent.param, 2);
-        EXPECT_EQ(Bits(bench.readPos->POSITION.value), Bits(position));
+        EXPECT_EQ(Bits(rig.readPos->POSITION.value), Bits(position));
     }
-    bench.readPos->AXIS.value = 3;
-    EXPECT_EQ(bench.Run(bench.readPos).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    rig.readPos->AXIS.value = 3;
+    EXPECT_EQ(rig.Run(rig.readPos).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
 }
 
 TEST_P(ParameterAxisFbs, AxisStatusDecodesTheManualsValues) {
-    AxisBench bench(Param());
-    bench.readStatus->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1910);
-    EXPECT_EQ(bench.readStatus->STATUS.value, 0);
-    EXPECT_TRUE(bench.readStatus->INPOSITION.value);
-    EXPECT_FALSE(bench.readStatus->MOVING.value || bench.readStatus->STOPPED.value ||
-                 bench.readStatus->MALFUNCTION.value || bench.readStatus->MEASURINGMODE.value);
+    AxisRig rig(Param());
+    rig.readStatus->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readStatus).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1910);
+    EXPECT_EQ(rig.readStatus->STATUS.value, 0);
+    EXPECT_TRUE(rig.readStatus->INPOSITION.value);
+    EXPECT_FALSE(rig.readStatus->MOVING.value || rig.readStatus->STOPPED.value ||
+                 rig.readStatus->MALFUNCTION.value || rig.readStatus->MEASURINGMODE.value);
 
-    bench.Motion(2).RaiseAxisError(bench.Now(), 500);
-    bench.readStatus->AXIS.value = 2;
-    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
-    EXPECT_EQ(Sent(bench.LastCommand()).param, 2);
-    EXPECT_EQ(bench.readStatus->STATUS.value, 4);
-    EXPECT_TRUE(bench.readStatus->MALFUNCTION.value);
-    EXPECT_FALSE(bench.readStatus->INPOSITION.value || bench.readStatus->MOVING.value ||
-                 bench.readStatus->STOPPED.value);
+    rig.Motion(2).RaiseAxisError(rig.Now(), 500);
+    rig.readStatus->AXIS.value = 2;
+    ASSERT_TRUE(rig.Run(rig.readStatus).Done());
+    EXPECT_EQ(Sent(rig.LastCommand()).param, 2);
+    EXPECT_EQ(rig.readStatus->STATUS.value, 4);
+    EXPECT_TRUE(rig.readStatus->MALFUNCTION.value);
+    EXPECT_FALSE(rig.readStatus->INPOSITION.value || rig.readStatus->MOVING.value ||
+                 rig.readStatus->STOPPED.value);
 
-    bench.readStatus->AXIS.value = 17;
-    FinalOutcome outcome = bench.Run(bench.readStatus);
+    rig.readStatus->AXIS.value = 17;
+    FinalOutcome outcome = rig.Run(rig.readStatus);
     EXPECT_TRUE(outcome.Error());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
 }
@@ -433,22 +433,22 @@ TEST_P(ParameterAxisFbs, AxisStatusDecodesTheManualsValues) {
 // ---- ONLINE axis commands (5.2.6) ----
 
 TEST_P(ParameterAxisFbs, AbsoluteMoveStaysBusyWithThePositionFollowingAndEndsDoneAtTheTarget) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
     const float target = 123.456F;  // 1000 AE/s (axis parameter 1), ramps of 100 ms: about 223 ms
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = target;
-    bench.Start(bench.moveAbs);
-    const auto edge = bench.EdgeTime();
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = target;
+    rig.Start(rig.moveAbs);
+    const auto edge = rig.EdgeTime();
     float last = 0.0F;
     bool sawBetween = false;
     bool sawActive = false;
     bool monotonic = true;
     bool busyWhileMoving = true;
-    FinalOutcome outcome = bench.Wait(bench.moveAbs, 5000, [&] {
-        const auto& fb = bench.moveAbs.Data();
+    FinalOutcome outcome = rig.Wait(rig.moveAbs, 5000, [&] {
+        const auto& fb = rig.moveAbs.Data();
         if (fb.DONE.value) return;
-        if (bench.Motion(1).Moving() && !fb.BUSY.value) busyWhileMoving = false;
+        if (rig.Motion(1).Moving() && !fb.BUSY.value) busyWhileMoving = false;
         if (fb.ACTIVE.value) {
             sawActive = true;
             if (fb.ACTUALPOSITION.value < last) monotonic = false;
@@ -461,39 +461,39 @@ TEST_P(ParameterAxisFbs, AbsoluteMoveStaysBusyWithThePositionFollowingAndEndsDon
     EXPECT_TRUE(sawBetween) << "ActualPosition followed the axis";
     EXPECT_TRUE(monotonic);
     EXPECT_TRUE(busyWhileMoving);
-    EXPECT_GE(bench.Now() - edge, 123ms) << "Done only at end of processing";
-    EXPECT_FALSE(bench.moveAbs->ACTIVE.value);
-    EXPECT_EQ(Bits(bench.moveAbs->ACTUALPOSITION.value), Bits(target));
-    EXPECT_EQ(Bits(static_cast<float>(bench.Motion(1).Position())), Bits(target));
-    const SentCommand sent = Sent(bench.LastCommand());
+    EXPECT_GE(rig.Now() - edge, 123ms) << "Done only at end of processing";
+    EXPECT_FALSE(rig.moveAbs->ACTIVE.value);
+    EXPECT_EQ(Bits(rig.moveAbs->ACTUALPOSITION.value), Bits(target));
+    EXPECT_EQ(Bits(static_cast<float>(rig.Motion(1).Position())), Bits(target));
+    const SentCommand sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x0A87);
     EXPECT_EQ(sent.param, 1);
     EXPECT_EQ(sent.data, Bits(target));
-    bench.Release(bench.moveAbs);
-    EXPECT_FALSE(bench.moveAbs->DONE.value);
-    EXPECT_EQ(Bits(bench.moveAbs->ACTUALPOSITION.value), Bits(target)) << "kept after Execute fell";
-    EXPECT_EQ(bench.Controller().Counters().Count(0x0A87), 1u);
+    rig.Release(rig.moveAbs);
+    EXPECT_FALSE(rig.moveAbs->DONE.value);
+    EXPECT_EQ(Bits(rig.moveAbs->ACTUALPOSITION.value), Bits(target)) << "kept after Execute fell";
+    EXPECT_EQ(rig.Controller().Counters().Count(0x0A87), 1u);
 
-    bench.readPos->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readPos).Done());
-    EXPECT_EQ(Bits(bench.readPos->POSITION.value), Bits(target));
-    bench.readStatus->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
-    EXPECT_TRUE(bench.readStatus->INPOSITION.value);
+    rig.readPos->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readPos).Done());
+    EXPECT_EQ(Bits(rig.readPos->POSITION.value), Bits(target));
+    rig.readStatus->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readStatus).Done());
+    EXPECT_TRUE(rig.readStatus->INPOSITION.value);
 }
 
 TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.Motion(2).Place(bench.Now(), 100.0);
-    bench.moveRel->AXIS.value = 2;
-    bench.moveRel->DISTANCE.value = -30.5F;
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Motion(2).Place(rig.Now(), 100.0);
+    rig.moveRel->AXIS.value = 2;
+    rig.moveRel->DISTANCE.value = -30.5F;
     float first = -1.0F;
-    bench.Start(bench.moveRel);
+    rig.Start(rig.moveRel);
     bool decreasing = true;
     float last = 1000.0F;
-    FinalOutcome outcome = bench.Wait(bench.moveRel, 5000, [&] {
-        const auto& fb = bench.moveRel.Data();
+    FinalOutcome outcome = rig.Wait(rig.moveRel, 5000, [&] {
+        const auto& fb = rig.moveRel.Data();
         if (!fb.ACTIVE.value) return;
         if (first < 0.0F) first = fb.ACTUALPOSITION.value;
         if (fb.ACTUALPOSITION.value > last) decreasing = false;
@@ -508,246 +508,246 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
         EXPECT_GT(first, 69.5F);
     }
     EXPECT_TRUE(decreasing);
-    EXPECT_EQ(bench.moveRel->ACTUALPOSITION.value, 69.5F);
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x0A89);
-    EXPECT_EQ(Sent(bench.LastCommand()).data, Bits(-30.5F));
-    bench.Release(bench.moveRel);
-    EXPECT_EQ(bench.Motion(2).Position(), 69.5);
+    EXPECT_EQ(rig.moveRel->ACTUALPOSITION.value, 69.5F);
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x0A89);
+    EXPECT_EQ(Sent(rig.LastCommand()).data, Bits(-30.5F));
+    rig.Release(rig.moveRel);
+    EXPECT_EQ(rig.Motion(2).Position(), 69.5);
 }
 
 TEST_P(ParameterAxisFbs, MoveErrorsAreTheManualsNumbers) {
-    AxisBench bench(Param());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 50.0F;
+    AxisRig rig(Param());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 50.0F;
     // Home position: moves need ONLINE.
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
-    ASSERT_TRUE(bench.GoOnline());
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
+    ASSERT_TRUE(rig.GoOnline());
     // Without reference: 43.
-    bench.Motion(1).SetReferenced(false);
+    rig.Motion(1).SetReferenced(false);
     bool active = false;
-    bench.Start(bench.moveAbs);
-    FinalOutcome outcome = bench.Wait(bench.moveAbs, 5000, [&] { active = active || bench.moveAbs->ACTIVE.value; });
-    bench.Release(bench.moveAbs);
+    rig.Start(rig.moveAbs);
+    FinalOutcome outcome = rig.Wait(rig.moveAbs, 5000, [&] { active = active || rig.moveAbs->ACTIVE.value; });
+    rig.Release(rig.moveAbs);
     EXPECT_TRUE(outcome.Error());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_NO_REFERENCE"]);
     EXPECT_FALSE(active);
-    EXPECT_EQ(bench.moveAbs->ACTUALPOSITION.value, 0.0F) << "a command error carries no position";
-    bench.Motion(1).SetReferenced(true);
+    EXPECT_EQ(rig.moveAbs->ACTUALPOSITION.value, 0.0F) << "a command error carries no position";
+    rig.Motion(1).SetReferenced(true);
     // Outside the traverse area (axis parameters 8..9: 0..10000): 65.
-    bench.moveAbs->POSITION.value = 10000.5F;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_POSITION_RANGE"]);
-    bench.moveRel->AXIS.value = 1;
-    bench.moveRel->DISTANCE.value = -0.25F;
-    EXPECT_EQ(bench.Run(bench.moveRel).ErrorId(), kGvl["PAC_ERR_POSITION_RANGE"]);
+    rig.moveAbs->POSITION.value = 10000.5F;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_POSITION_RANGE"]);
+    rig.moveRel->AXIS.value = 1;
+    rig.moveRel->DISTANCE.value = -0.25F;
+    EXPECT_EQ(rig.Run(rig.moveRel).ErrorId(), kGvl["PAC_ERR_POSITION_RANGE"]);
     // Axis 3 is not configured: 32. A target that is no number: 41.
-    bench.moveAbs->AXIS.value = 3;
-    bench.moveAbs->POSITION.value = 50.0F;
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_EQ(bench.Run(bench.moveAbs).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    EXPECT_EQ(bench.Controller().Counters().executed, 2u) << "only 0700 and 0603";
+    rig.moveAbs->AXIS.value = 3;
+    rig.moveAbs->POSITION.value = 50.0F;
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(rig.Run(rig.moveAbs).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    EXPECT_EQ(rig.Controller().Counters().executed, 2u) << "only 0700 and 0603";
     // The axis did not move; a good move afterwards.
-    bench.moveAbs->POSITION.value = 10000.0F;
-    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(20s);
-    EXPECT_TRUE(bench.Run(bench.moveAbs).Done());
+    rig.moveAbs->POSITION.value = 10000.0F;
+    rig.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(20s);
+    EXPECT_TRUE(rig.Run(rig.moveAbs).Done());
 }
 
 TEST_P(ParameterAxisFbs, StopAxisStopsAMoveAndTheMoveShowsCommandAborted) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 1000.0F;  // one second at 1000 AE/s
-    bench.Start(bench.moveAbs);
-    ASSERT_FALSE(bench.Wait(bench.moveAbs, 100).Ended()) << "the move ended too early";
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 1000.0F;  // one second at 1000 AE/s
+    rig.Start(rig.moveAbs);
+    ASSERT_FALSE(rig.Wait(rig.moveAbs, 100).Ended()) << "the move ended too early";
     int guard = 0;
-    while (bench.moveAbs->ACTUALPOSITION.value < 50.0F && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
+    while (rig.moveAbs->ACTUALPOSITION.value < 50.0F && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.moveAbs->ACTIVE.value);
 
-    bench.stop->AXIS.value = 1;
-    bench.Start(bench.stop);
+    rig.stop->AXIS.value = 1;
+    rig.Start(rig.stop);
     bool moveErrored = false;
     bool moveAborted = false;
     bool stopBusyWhileBraking = true;
     bool brakingSeen = false;
     float stopLast = 0.0F;
     bool stopMonotonic = true;
-    FinalOutcome stopped = bench.Wait(bench.stop, 5000, [&] {
-        moveErrored = moveErrored || bench.moveAbs->ERROR.value;
-        moveAborted = moveAborted || bench.moveAbs->COMMANDABORTED.value;
-        if (bench.stop->DONE.value) return;
-        if (bench.Motion(1).Moving() && !bench.stop->BUSY.value) stopBusyWhileBraking = false;
-        if (bench.stop->BUSY.value && bench.stop->ACTUALPOSITION.value > 0.0F) {
+    FinalOutcome stopped = rig.Wait(rig.stop, 5000, [&] {
+        moveErrored = moveErrored || rig.moveAbs->ERROR.value;
+        moveAborted = moveAborted || rig.moveAbs->COMMANDABORTED.value;
+        if (rig.stop->DONE.value) return;
+        if (rig.Motion(1).Moving() && !rig.stop->BUSY.value) stopBusyWhileBraking = false;
+        if (rig.stop->BUSY.value && rig.stop->ACTUALPOSITION.value > 0.0F) {
             brakingSeen = true;
-            if (bench.stop->ACTUALPOSITION.value < stopLast) stopMonotonic = false;
-            stopLast = bench.stop->ACTUALPOSITION.value;
+            if (rig.stop->ACTUALPOSITION.value < stopLast) stopMonotonic = false;
+            stopLast = rig.stop->ACTUALPOSITION.value;
         }
     });
     ASSERT_TRUE(stopped.Done()) << "error " << stopped.ErrorId();
     EXPECT_TRUE(brakingSeen) << "0A93 reports the position while braking";
     EXPECT_TRUE(stopMonotonic);
     EXPECT_TRUE(stopBusyWhileBraking);
-    EXPECT_FALSE(bench.Motion(1).Moving());
-    const float stopPosition = static_cast<float>(bench.Motion(1).Position());
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    const float stopPosition = static_cast<float>(rig.Motion(1).Position());
     EXPECT_LT(stopPosition, 1000.0F);
-    EXPECT_EQ(Bits(bench.stop->ACTUALPOSITION.value), Bits(stopPosition));
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x0A93);
-    EXPECT_EQ(Sent(bench.LastCommand()).param, 1);
+    EXPECT_EQ(Bits(rig.stop->ACTUALPOSITION.value), Bits(stopPosition));
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x0A93);
+    EXPECT_EQ(Sent(rig.LastCommand()).param, 1);
     EXPECT_TRUE(moveAborted);
     EXPECT_FALSE(moveErrored);
-    EXPECT_TRUE(bench.moveAbs->COMMANDABORTED.value) << "held while Execute stays TRUE";
-    EXPECT_FALSE(bench.moveAbs->BUSY.value || bench.moveAbs->DONE.value || bench.moveAbs->ACTIVE.value);
-    EXPECT_EQ(bench.moveAbs->ERRORID.value, 0);
-    bench.Release(bench.stop);
-    bench.Release(bench.moveAbs);
-    EXPECT_FALSE(bench.moveAbs->COMMANDABORTED.value);
+    EXPECT_TRUE(rig.moveAbs->COMMANDABORTED.value) << "held while Execute stays TRUE";
+    EXPECT_FALSE(rig.moveAbs->BUSY.value || rig.moveAbs->DONE.value || rig.moveAbs->ACTIVE.value);
+    EXPECT_EQ(rig.moveAbs->ERRORID.value, 0);
+    rig.Release(rig.stop);
+    rig.Release(rig.moveAbs);
+    EXPECT_FALSE(rig.moveAbs->COMMANDABORTED.value);
 
-    bench.readStatus->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readStatus).Done());
-    EXPECT_EQ(bench.readStatus->STATUS.value, 2);
-    EXPECT_TRUE(bench.readStatus->STOPPED.value);
-    EXPECT_FALSE(bench.readStatus->INPOSITION.value);
-    bench.readPos->AXIS.value = 1;
-    ASSERT_TRUE(bench.Run(bench.readPos).Done());
-    EXPECT_EQ(Bits(bench.readPos->POSITION.value), Bits(stopPosition));
+    rig.readStatus->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readStatus).Done());
+    EXPECT_EQ(rig.readStatus->STATUS.value, 2);
+    EXPECT_TRUE(rig.readStatus->STOPPED.value);
+    EXPECT_FALSE(rig.readStatus->INPOSITION.value);
+    rig.readPos->AXIS.value = 1;
+    ASSERT_TRUE(rig.Run(rig.readPos).Done());
+    EXPECT_EQ(Bits(rig.readPos->POSITION.value), Bits(stopPosition));
 
     // 0A93 on a standing axis: Done at once, with its position.
-    FinalOutcome again = bench.Run(bench.stop);
+    FinalOutcome again = rig.Run(rig.stop);
     EXPECT_TRUE(again.Done());
-    EXPECT_EQ(Bits(bench.stop->ACTUALPOSITION.value), Bits(stopPosition));
+    EXPECT_EQ(Bits(rig.stop->ACTUALPOSITION.value), Bits(stopPosition));
 }
 
 // 5.2.6.6: 0A87 is reported complete only with its end of processing, and another command must not
 // follow before it (0A94 is the command for that). A read asked for during the move waits (Busy) until
 // the move has ended, then goes out; the move FB follows its own command to the end: Done, not aborted.
 TEST_P(ParameterAxisFbs, ACommandDuringAMoveWaitsForItsEndOfProcessing) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 2;
-    bench.moveAbs->POSITION.value = 300.0F;
-    bench.Start(bench.moveAbs);
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 2;
+    rig.moveAbs->POSITION.value = 300.0F;
+    rig.Start(rig.moveAbs);
     int guard = 0;
-    while (!bench.moveAbs->ACTIVE.value && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
-    const std::uint64_t recognisedBefore = bench.Controller().Counters().recognized;
-    bench.readAll->TIMEOUT.value = pac::ToIecTime(std::chrono::seconds(30));
-    bench.readAll->EXECUTE.value = TRUE;
+    while (!rig.moveAbs->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.moveAbs->ACTIVE.value);
+    const std::uint64_t recognisedBefore = rig.Controller().Counters().recognized;
+    rig.readAll->TIMEOUT.value = pac::ToIecTime(std::chrono::seconds(30));
+    rig.readAll->EXECUTE.value = TRUE;
     bool sawMovingWhileReadWaits = false;
     guard = 0;
-    while (!bench.moveAbs->DONE.value && !bench.moveAbs->ERROR.value && !bench.moveAbs->COMMANDABORTED.value &&
+    while (!rig.moveAbs->DONE.value && !rig.moveAbs->ERROR.value && !rig.moveAbs->COMMANDABORTED.value &&
            guard++ < 20000) {
-        bench.Settle(1);
-        ASSERT_EQ(bench.Controller().Counters().recognized, recognisedBefore) << "nothing else during the move";
-        EXPECT_TRUE(bench.readAll->BUSY.value);
-        sawMovingWhileReadWaits = sawMovingWhileReadWaits || bench.Motion(2).Moving();
+        rig.Settle(1);
+        ASSERT_EQ(rig.Controller().Counters().recognized, recognisedBefore) << "nothing else during the move";
+        EXPECT_TRUE(rig.readAll->BUSY.value);
+        sawMovingWhileReadWaits = sawMovingWhileReadWaits || rig.Motion(2).Moving();
     }
     EXPECT_TRUE(sawMovingWhileReadWaits);
-    ASSERT_TRUE(bench.moveAbs->DONE.value) << "the move FB follows its command to its end";
-    EXPECT_EQ(bench.Motion(2).Position(), 300.0);
+    ASSERT_TRUE(rig.moveAbs->DONE.value) << "the move FB follows its command to its end";
+    EXPECT_EQ(rig.Motion(2).Position(), 300.0);
     guard = 0;
-    while (!bench.readAll->DONE.value && !bench.readAll->ERROR.value && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.readAll->DONE.value);
-    EXPECT_EQ(Sent(bench.LastCommand()).code, 0x1911);
-    EXPECT_EQ(bench.readAll->MOVINGAXES.value, 0) << "asked during the move, read after its end";
-    EXPECT_EQ(bench.Controller().Counters().recognized, recognisedBefore + 1);
+    while (!rig.readAll->DONE.value && !rig.readAll->ERROR.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.readAll->DONE.value);
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x1911);
+    EXPECT_EQ(rig.readAll->MOVINGAXES.value, 0) << "asked during the move, read after its end";
+    EXPECT_EQ(rig.Controller().Counters().recognized, recognisedBefore + 1);
 }
 
 TEST_P(ParameterAxisFbs, SetAxisSpeedChangesTheTraverseSpeed) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.setSpeed->AXIS.value = 1;
-    bench.setSpeed->SPEED.value = 2000.0F;
-    FinalOutcome outcome = bench.Run(bench.setSpeed);
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.setSpeed->AXIS.value = 1;
+    rig.setSpeed->SPEED.value = 2000.0F;
+    FinalOutcome outcome = rig.Run(rig.setSpeed);
     ASSERT_TRUE(outcome.Done());
-    const SentCommand sent = Sent(bench.LastCommand());
+    const SentCommand sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x0A8D);
     EXPECT_EQ(sent.param, 1);
     EXPECT_EQ(sent.data, 0x44FA0000u);
-    EXPECT_EQ(bench.SessionDynamics(1).speed, 2000.0);
+    EXPECT_EQ(rig.SessionDynamics(1).speed, 2000.0);
     // Limits of axis parameter 1 (1..50000), and > 0.
-    bench.setSpeed->SPEED.value = 50001.0F;
-    EXPECT_EQ(bench.Run(bench.setSpeed).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    bench.setSpeed->SPEED.value = 0.0F;
-    EXPECT_EQ(bench.Run(bench.setSpeed).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
-    bench.setSpeed->AXIS.value = 3;
-    bench.setSpeed->SPEED.value = 100.0F;
-    EXPECT_EQ(bench.Run(bench.setSpeed).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
-    EXPECT_EQ(bench.SessionDynamics(1).speed, 2000.0);
+    rig.setSpeed->SPEED.value = 50001.0F;
+    EXPECT_EQ(rig.Run(rig.setSpeed).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
+    rig.setSpeed->SPEED.value = 0.0F;
+    EXPECT_EQ(rig.Run(rig.setSpeed).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
+    rig.setSpeed->AXIS.value = 3;
+    rig.setSpeed->SPEED.value = 100.0F;
+    EXPECT_EQ(rig.Run(rig.setSpeed).ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
+    EXPECT_EQ(rig.SessionDynamics(1).speed, 2000.0);
     // 2000 AE at 2000 AE/s with ramps of 10000 AE/s^2 (200 ms, 200 AE each): 1.2 s, not 2.1 s as at 1000 AE/s.
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 2000.0F;
-    bench.Start(bench.moveAbs);
-    const auto edge = bench.EdgeTime();
-    ASSERT_TRUE(bench.Wait(bench.moveAbs).Done());
-    EXPECT_GE(bench.Now() - edge, 1200ms);
-    EXPECT_LT(bench.Now() - edge, 1260ms);
-    bench.Release(bench.moveAbs);
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 2000.0F;
+    rig.Start(rig.moveAbs);
+    const auto edge = rig.EdgeTime();
+    ASSERT_TRUE(rig.Wait(rig.moveAbs).Done());
+    EXPECT_GE(rig.Now() - edge, 1200ms);
+    EXPECT_LT(rig.Now() - edge, 1260ms);
+    rig.Release(rig.moveAbs);
     // Home position: refused.
-    bench.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
-    ASSERT_TRUE(bench.Run(bench.cmd).Done());
-    bench.setSpeed->AXIS.value = 1;
-    EXPECT_EQ(bench.Run(bench.setSpeed).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
+    rig.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
+    ASSERT_TRUE(rig.Run(rig.cmd).Done());
+    rig.setSpeed->AXIS.value = 1;
+    EXPECT_EQ(rig.Run(rig.setSpeed).ErrorId(), kGvl["PAC_ERR_INADMISSIBLE_COMMAND"]);
 }
 
 TEST_P(ParameterAxisFbs, SetAxisAccelerationSendsTheManualsCommand) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
     // 5.2.6.9 example: acceleration 10 for axis 3: 0A8E, parameter 3, data 41 20 00 00.
-    bench.setAccel->AXIS.value = 3;
-    bench.setAccel->ACCELERATION.value = 10.0F;
-    FinalOutcome outcome = bench.Run(bench.setAccel);
-    const SentCommand sent = Sent(bench.LastCommand());
+    rig.setAccel->AXIS.value = 3;
+    rig.setAccel->ACCELERATION.value = 10.0F;
+    FinalOutcome outcome = rig.Run(rig.setAccel);
+    const SentCommand sent = Sent(rig.LastCommand());
     EXPECT_EQ(sent.code, 0x0A8E);
     EXPECT_EQ(sent.param, 3);
     EXPECT_EQ(sent.data, 0x41200000u);
-    EXPECT_EQ(bench.Controller().Counters().Count(0x0A8E), 1u);
+    EXPECT_EQ(rig.Controller().Counters().Count(0x0A8E), 1u);
     // The simulated controller is configured with fewer axes than the manual's example uses.
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
-    bench.setAccel->AXIS.value = 1;
-    outcome = bench.Run(bench.setAccel);
+    rig.setAccel->AXIS.value = 1;
+    outcome = rig.Run(rig.setAccel);
     ASSERT_TRUE(outcome.Done()) << "ErrorID " << outcome.ErrorId();
-    EXPECT_EQ(bench.SessionDynamics(1).acceleration, 10.0);  // one value for both ramps of the CMD moves
-    EXPECT_EQ(bench.SessionDynamics(1).deceleration, 10.0);
+    EXPECT_EQ(rig.SessionDynamics(1).acceleration, 10.0);  // one value for both ramps of the CMD moves
+    EXPECT_EQ(rig.SessionDynamics(1).deceleration, 10.0);
     // Below the acceleration parameter's minimum (1.0): value outside range.
-    bench.setAccel->ACCELERATION.value = 0.5F;
-    EXPECT_EQ(bench.Run(bench.setAccel).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
+    rig.setAccel->ACCELERATION.value = 0.5F;
+    EXPECT_EQ(rig.Run(rig.setAccel).ErrorId(), kGvl["PAC_ERR_VALUE_RANGE"]);
 }
 
 TEST_P(ParameterAxisFbs, MoveLongerThanEndTimeoutIsALibraryError) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 1000.0F;
-    bench.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(200ms);
-    FinalOutcome outcome = bench.Run(bench.moveAbs);
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 1000.0F;
+    rig.moveAbs->ENDTIMEOUT.value = pac::ToIecTime(200ms);
+    FinalOutcome outcome = rig.Run(rig.moveAbs);
     EXPECT_TRUE(outcome.Error());
     EXPECT_FALSE(outcome.Aborted());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_LIB_ERR_END_TIMEOUT"]);
-    EXPECT_TRUE(bench.Motion(1).Moving()) << "the library stops waiting, not the axis";
-    bench.stop->AXIS.value = 1;
-    FinalOutcome stopped = bench.Run(bench.stop);
+    EXPECT_TRUE(rig.Motion(1).Moving()) << "the library stops waiting, not the axis";
+    rig.stop->AXIS.value = 1;
+    FinalOutcome stopped = rig.Run(rig.stop);
     EXPECT_TRUE(stopped.Done());
 }
 
 TEST_P(ParameterAxisFbs, ExecuteFallingDuringAMoveShowsDoneForOneScan) {
-    AxisBench bench(Param());
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 30.0F;
-    bench.Start(bench.moveAbs);
-    bench.Release(bench.moveAbs);
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 30.0F;
+    rig.Start(rig.moveAbs);
+    rig.Release(rig.moveAbs);
     int doneScans = 0;
     int guard = 0;
-    while ((bench.moveAbs->BUSY.value || doneScans == 0) && guard++ < 2000) {
-        bench.Settle(1);
-        if (bench.moveAbs->DONE.value) ++doneScans;
+    while ((rig.moveAbs->BUSY.value || doneScans == 0) && guard++ < 2000) {
+        rig.Settle(1);
+        if (rig.moveAbs->DONE.value) ++doneScans;
     }
-    bench.Settle(3);
+    rig.Settle(3);
     EXPECT_EQ(doneScans, 1);
-    EXPECT_FALSE(bench.moveAbs->DONE.value);
-    EXPECT_EQ(bench.moveAbs->ACTUALPOSITION.value, 30.0F);
-    EXPECT_EQ(bench.Motion(1).Position(), 30.0);
+    EXPECT_FALSE(rig.moveAbs->DONE.value);
+    EXPECT_EQ(rig.moveAbs->ACTUALPOSITION.value, 30.0F);
+    EXPECT_EQ(rig.Motion(1).Position(), 30.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BusTimings, ParameterAxisFbs,
@@ -758,97 +758,97 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, ParameterAxisFbs,
 // covers). A command owns the CMD interface until its end of processing; only a stop of what it runs may
 // overtake it (F_PAC_IsStopOver), and the PA-CONTROL then reports the stop alone: the move FB is aborted.
 TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAborted) {
-    AxisBench bench({1, 3, 1});
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveRel->AXIS.value = 2;
-    bench.moveRel->DISTANCE.value = 300.0F;
-    bench.Start(bench.moveRel);
+    AxisRig rig({1, 3, 1});
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveRel->AXIS.value = 2;
+    rig.moveRel->DISTANCE.value = 300.0F;
+    rig.Start(rig.moveRel);
     int guard = 0;
-    while (!bench.moveRel->ACTIVE.value && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.moveRel->ACTIVE.value);
-    ASSERT_TRUE(bench.Motion(2).Moving());
-    bench.stop->AXIS.value = 2;
-    ASSERT_TRUE(bench.Run(bench.stop).Done());
-    EXPECT_TRUE(bench.moveRel->COMMANDABORTED.value);
-    EXPECT_FALSE(bench.moveRel->ERROR.value);
-    EXPECT_EQ(bench.moveRel->ERRORID.value, 0) << "CommandAborted carries no ErrorID";
-    EXPECT_FALSE(bench.Motion(2).Moving()) << "the stop ended the move";
-    EXPECT_LT(bench.Motion(2).Position(), 300.0);
-    bench.Release(bench.moveRel);
-    EXPECT_FALSE(bench.moveRel->COMMANDABORTED.value);
+    while (!rig.moveRel->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.moveRel->ACTIVE.value);
+    ASSERT_TRUE(rig.Motion(2).Moving());
+    rig.stop->AXIS.value = 2;
+    ASSERT_TRUE(rig.Run(rig.stop).Done());
+    EXPECT_TRUE(rig.moveRel->COMMANDABORTED.value);
+    EXPECT_FALSE(rig.moveRel->ERROR.value);
+    EXPECT_EQ(rig.moveRel->ERRORID.value, 0) << "CommandAborted carries no ErrorID";
+    EXPECT_FALSE(rig.Motion(2).Moving()) << "the stop ended the move";
+    EXPECT_LT(rig.Motion(2).Position(), 300.0);
+    rig.Release(rig.moveRel);
+    EXPECT_FALSE(rig.moveRel->COMMANDABORTED.value);
 }
 
 // A move and the stop of its axis edged in one scan, the move's FB called first, with the two-step write:
 // the stop takes the interface between the move's data and its toggle, the move never goes out, and its
 // FB shows CommandAborted (16#8016 inside), never Done with the stop's answer (issue 24, item 1).
 TEST(ParameterAxisFbsOverSim, MoveOvertakenByTheStopOfItsAxisBeforeItWentOutIsCommandAborted) {
-    AxisBench bench({1, 1, 0});
-    bench.SetTwoStepWrite(true);
-    ASSERT_TRUE(bench.GoOnline());
-    const double start = bench.Motion(1).Position();
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 300.0F;
-    bench.stop->AXIS.value = 1;
-    bench.moveAbs->EXECUTE.value = TRUE;
-    bench.Start(bench.stop);
-    const FinalOutcome stopped = bench.Wait(bench.stop);
+    AxisRig rig({1, 1, 0});
+    rig.SetTwoStepWrite(true);
+    ASSERT_TRUE(rig.GoOnline());
+    const double start = rig.Motion(1).Position();
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 300.0F;
+    rig.stop->AXIS.value = 1;
+    rig.moveAbs->EXECUTE.value = TRUE;
+    rig.Start(rig.stop);
+    const FinalOutcome stopped = rig.Wait(rig.stop);
     EXPECT_TRUE(stopped.Done()) << stopped;
-    bench.Settle(5);
-    EXPECT_TRUE(bench.moveAbs->COMMANDABORTED.value);
-    EXPECT_FALSE(bench.moveAbs->DONE.value || bench.moveAbs->ERROR.value);
-    EXPECT_EQ(bench.Motion(1).Position(), start) << "the move never reached the controller";
+    rig.Settle(5);
+    EXPECT_TRUE(rig.moveAbs->COMMANDABORTED.value);
+    EXPECT_FALSE(rig.moveAbs->DONE.value || rig.moveAbs->ERROR.value);
+    EXPECT_EQ(rig.Motion(1).Position(), start) << "the move never reached the controller";
 }
 
 // The axis stop is itself overtaken by cmd_stop (0600, which may overtake anything): CommandAborted.
 TEST(ParameterAxisFbsOverSim, StopOvertakenByCmdStopWhileTheAxisBrakesIsCommandAborted) {
-    AxisBench bench({1, 3, 1});
-    ASSERT_TRUE(bench.GoOnline());
-    bench.setAccel->AXIS.value = 1;
-    bench.setAccel->ACCELERATION.value = 50.0F;  // AE/s^2 both ways: braking takes a while
-    ASSERT_TRUE(bench.Run(bench.setAccel).Done());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 1000.0F;
-    bench.Start(bench.moveAbs);
-    bench.Settle(400);
-    bench.stop->AXIS.value = 1;
-    bench.Start(bench.stop);
+    AxisRig rig({1, 3, 1});
+    ASSERT_TRUE(rig.GoOnline());
+    rig.setAccel->AXIS.value = 1;
+    rig.setAccel->ACCELERATION.value = 50.0F;  // AE/s^2 both ways: braking takes a while
+    ASSERT_TRUE(rig.Run(rig.setAccel).Done());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 1000.0F;
+    rig.Start(rig.moveAbs);
+    rig.Settle(400);
+    rig.stop->AXIS.value = 1;
+    rig.Start(rig.stop);
     int guard = 0;
-    while (!(bench.stop->BUSY.value && bench.stop->ACTUALPOSITION.value > 0.0F) && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.stop->BUSY.value) << "acknowledged, braking";
-    ASSERT_TRUE(bench.Motion(1).Moving());
-    bench.cmd->CODE.value = 0x0600;
-    bench.cmd->PARAM.value = 0;
-    bench.cmd->DATA.value = 0;
-    ASSERT_TRUE(bench.Run(bench.cmd).Done());
-    EXPECT_TRUE(bench.stop->COMMANDABORTED.value);
-    EXPECT_FALSE(bench.stop->ERROR.value);
-    EXPECT_EQ(bench.stop->ERRORID.value, 0);
+    while (!(rig.stop->BUSY.value && rig.stop->ACTUALPOSITION.value > 0.0F) && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.stop->BUSY.value) << "acknowledged, braking";
+    ASSERT_TRUE(rig.Motion(1).Moving());
+    rig.cmd->CODE.value = 0x0600;
+    rig.cmd->PARAM.value = 0;
+    rig.cmd->DATA.value = 0;
+    ASSERT_TRUE(rig.Run(rig.cmd).Done());
+    EXPECT_TRUE(rig.stop->COMMANDABORTED.value);
+    EXPECT_FALSE(rig.stop->ERROR.value);
+    EXPECT_EQ(rig.stop->ERRORID.value, 0);
 }
 
 // A stop the PA-CONTROL refuses is its error, with its number; the position output keeps its value.
 TEST(ParameterAxisFbsOverSim, StopOfAnAxisTheControllerDoesNotHaveIsItsError) {
-    AxisBench bench({1, 3, 1});
-    ASSERT_TRUE(bench.GoOnline());
-    bench.stop->AXIS.value = 3;  // the simulated controller has fewer axes
-    const FinalOutcome outcome = bench.Run(bench.stop);
+    AxisRig rig({1, 3, 1});
+    ASSERT_TRUE(rig.GoOnline());
+    rig.stop->AXIS.value = 3;  // the simulated controller has fewer axes
+    const FinalOutcome outcome = rig.Run(rig.stop);
     ASSERT_TRUE(outcome.Error());
     EXPECT_FALSE(outcome.Aborted());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_ERR_AXIS_NUMBER"]);
-    EXPECT_EQ(bench.stop->ACTUALPOSITION.value, 0.0F);
+    EXPECT_EQ(rig.stop->ACTUALPOSITION.value, 0.0F);
 }
 
 // A lost link during a move is an Error, not CommandAborted: the reply shows status 0.
 TEST(ParameterAxisFbsOverSim, PowerCycleDuringAMoveIsAnErrorNotCommandAborted) {
-    AxisBench bench({1, 3, 1}, {}, 30ms);
-    ASSERT_TRUE(bench.GoOnline());
-    bench.moveAbs->AXIS.value = 1;
-    bench.moveAbs->POSITION.value = 500.0F;
-    bench.Start(bench.moveAbs);
+    AxisRig rig({1, 3, 1}, {}, 30ms);
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 500.0F;
+    rig.Start(rig.moveAbs);
     int guard = 0;
-    while (!bench.moveAbs->ACTIVE.value && guard++ < 1000) bench.Settle(1);
-    ASSERT_TRUE(bench.moveAbs->ACTIVE.value);
-    bench.Controller().PowerCycle(bench.Now());
-    FinalOutcome outcome = bench.Wait(bench.moveAbs, 1000);
+    while (!rig.moveAbs->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.moveAbs->ACTIVE.value);
+    rig.Controller().PowerCycle(rig.Now());
+    FinalOutcome outcome = rig.Wait(rig.moveAbs, 1000);
     EXPECT_TRUE(outcome.Error());
     EXPECT_FALSE(outcome.Aborted());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_LIB_ERR_CONNECTION_LOST"]);

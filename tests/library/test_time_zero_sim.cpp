@@ -8,11 +8,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/st_program.hpp"
 #include "plcopen_checker.hpp"
 #include "real_bits.hpp"
@@ -31,7 +31,7 @@ std::vector<BusTiming> Timings() { return {{10, 10, 0}, {5, 3, 1}, {2, 1, 1, 150
 
 // Scans of `plc` from now until `fb` shows a final output, at most `limit` of simulated time.
 template <class Fb>
-nanoseconds TimeToFinal(pac::PacPlcBench& plc, pac::FbInstance<Fb>& fb, nanoseconds limit) {
+nanoseconds TimeToFinal(pac::PacRig& plc, pac::FbInstance<Fb>& fb, nanoseconds limit) {
     const nanoseconds start = plc.Now();
     plc.ScanUntil([&] { return pac::test::IsFinal(fb) || plc.Now() - start > limit; },
                   static_cast<int>(limit / plc.Timing().plcCycle) + 10);
@@ -39,7 +39,7 @@ nanoseconds TimeToFinal(pac::PacPlcBench& plc, pac::FbInstance<Fb>& fb, nanoseco
 }
 
 // One command to its end: Execute edge, Done or Error, Execute back to FALSE for a scan.
-bool RunCommand(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, std::uint16_t code, std::uint16_t param,
+bool RunCommand(pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd, std::uint16_t code, std::uint16_t param,
                 std::uint32_t data) {
     cmd->CODE.value = code;
     cmd->PARAM.value = param;
@@ -55,7 +55,7 @@ bool RunCommand(pac::PacPlcBench& plc, pac::FbInstance<FB_PAC_CMD>& cmd, std::ui
 TEST(TimeZero, CmdEndTimeoutZeroIsSixtySeconds) {
     for (const BusTiming& t : Timings()) {
         SCOPED_TRACE(Describe(t));
-        pac::PacPlcBench plc(pac::test::PlcBenchTimingOf(t));
+        pac::PacRig plc(pac::test::RigTimingOf(t));
         auto cmd = PAC_FB(FB_PAC_CMD);
         plc.Call(cmd);
         plc.Start();
@@ -84,7 +84,7 @@ TEST(TimeZero, CmdEndTimeoutZeroIsSixtySeconds) {
 TEST(TimeZero, CtrlTimeoutZeroIsTenSeconds) {
     for (const BusTiming& t : Timings()) {
         SCOPED_TRACE(Describe(t));
-        pac::PacPlcBench plc(pac::test::PlcBenchTimingOf(t), {}, pac::sim::ModuleLayout{true, 0});
+        pac::PacRig plc(pac::test::RigTimingOf(t), {}, pac::sim::ModuleLayout{true, 0});
         auto ctrl = PAC_FB(FB_PAC_CTRL);
         plc.CallCtrl(ctrl);
         plc.Start();

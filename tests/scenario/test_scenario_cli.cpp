@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 
 namespace {
@@ -208,6 +210,54 @@ TEST(ScenarioCli, WritesTheTraceAndTheDiagramBesideTheTimeline) {
     const std::string diagram = ReadFile(wave);
     EXPECT_EQ(diagram.rfind("{\"signal\": [\n  {\"name\":\"t [ms]\"", 0), 0u) << diagram.substr(0, 200);
     EXPECT_NE(diagram.find("\"head\": {\"text\":\"FB_PAC_Cmd: a command and its acknowledgement"), std::string::npos);
+}
+
+// The trace runs to the scenario's last scan, not to its last change: a final wait in which nothing moves
+// (the PA-CONTROL booted at 50 ms) still ends the waveform at the end of the wait.
+TEST(ScenarioCli, TheTraceEndsAtTheLastScanNotAtTheLastChange) {
+    const std::string vcd = TempFile("run.vcd", "");
+    const std::string file = TempFile("idle.json", R"({"timing": {"plc_cycle_ms": 2}, "steps": [{"wait_ms": 200}]})");
+    const Cli run({"--vcd", vcd, file});
+    ASSERT_EQ(run.exitCode, pac::scenario::kExitOk) << run.err.str();
+    const std::string trace = ReadFile(vcd);
+    const auto stamp = trace.rfind("\n#");
+    ASSERT_NE(stamp, std::string::npos) << trace;
+    const long long lastNs = std::stoll(trace.substr(stamp + 2));
+    // The wait scans for at least 200 ms in whole 2 ms cycles, its first scan one cycle in.
+    EXPECT_GE(lastNs, 200'000'000LL) << trace.substr(stamp);
+    EXPECT_LE(lastNs, 204'000'000LL) << trace.substr(stamp);
+}
+
+// --version names the library's version of st/library.json, compiled in: a copy of the binary away from
+// the source tree prints it too, and exits 0 whatever follows.
+TEST(ScenarioCli, VersionIsTheLibrarysFromItsMetadata) {
+    const auto library = nlohmann::json::parse(ReadFile(std::string(PAC_SOURCE_DIR) + "/st/library.json"));
+    const std::string expected = "pac_scenario (" + library.at("title").get<std::string>() + ") " +
+                                 library.at("version").get<std::string>() + "\n";
+    const Process copy = RunShell(Quoted(CopyBinaryAndDemo() + "/pac_scenario") + " --version");
+    EXPECT_EQ(copy.exitCode, 0) << copy.err;
+    EXPECT_EQ(copy.out, expected);
+    EXPECT_EQ(copy.err, "");
+    const Cli inProcess({"--version", "no-such-file.json"});
+    EXPECT_EQ(inProcess.exitCode, pac::scenario::kExitOk);
+    EXPECT_EQ(inProcess.out.str(), expected);
+    EXPECT_NE(Cli({"--help"}).out.str().find("--version"), std::string::npos);
+}
+
+// START ONLINE without the external stop input: a warning on stderr before the run, naming the file and
+// the step; the run goes on (the timeline shows the refusal) and --check warns too, exiting 0.
+TEST(ScenarioCli, StartOnlineWithoutTheStopInputWarnsAndRunsOn) {
+    const std::string file = TempFile("online.json", R"({"modules": {"ctrl": true}, "steps": [{"wait_ms": 60},
+        {"ctrl": "PAC_REQ_START_ONLINE", "timeout_ms": 100}]})");
+    const std::string warning = "pac_scenario: warning: " + file + ": step 2 ($.steps[1]): " +
+                                "START ONLINE without an external stop input: system parameter 4 is 0";
+    const Process run = RunBinary(Quoted(file));
+    EXPECT_EQ(run.err.rfind(warning, 0), 0u) << run.err;
+    EXPECT_EQ(run.exitCode, 0) << run.err;  // no expectation given: the timeout (16#8009) fails nothing
+    EXPECT_NE(run.out.find("Result: 2 steps, 0 commands, 1 mode request"), std::string::npos) << run.out;
+    const Cli check({"--check", file});
+    EXPECT_EQ(check.exitCode, pac::scenario::kExitOk);
+    EXPECT_EQ(check.err.str().rfind(warning, 0), 0u) << check.err.str();
 }
 
 TEST(ScenarioCli, TraceOptionsWithoutAFileOrWithAFileItCannotWriteExitTwo) {

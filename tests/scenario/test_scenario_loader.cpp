@@ -144,6 +144,15 @@ TEST(ScenarioLoader, IntegralNumbersMayBeWrittenWithAFraction) {
     EXPECT_EQ(std::get<WaitStep>(s.steps[0].action).ms, 10);
 }
 
+// "$schema" names the JSON Schema for editors (docs/scenario.md); the loader takes any string and reads
+// nothing from it, and refuses another type as it would anywhere.
+TEST(ScenarioLoader, AcceptsTheSchemaKeyOfEditors) {
+    const Scenario scenario = Load(R"({"$schema": "../scenario.schema.json", "steps": [{"wait_ms": 1}]})");
+    EXPECT_EQ(scenario.steps.size(), 1u);
+    EXPECT_EQ(Refusal(R"({"$schema": 7, "steps": [{"wait_ms": 1}]})"),
+              R"($["$schema"]: wrong type: expected a string, got the number 7)");
+}
+
 TEST(ScenarioLoader, RefusesInvalidJsonWithLineAndColumn) {
     EXPECT_EQ(Refusal("{\"steps\": [\n  {\"wait_ms\": 5},\n]}"),
               "not valid JSON: parse error at line 3, column 1: syntax error while parsing value - unexpected ']'; "
@@ -164,7 +173,7 @@ TEST(ScenarioLoader, RefusesADuplicateKey) {
 TEST(ScenarioLoader, RefusesUnknownKeys) {
     EXPECT_EQ(Refusal(R"({"steps": [{"wait_ms": 1}], "step": 1})"),
               R"($.step: unknown key "step" (a scenario has "name", "description", "timing", "modules", "controller", )"
-              R"("steps" or "diagram"))");
+              R"("steps", "diagram" or "$schema"))");
     EXPECT_EQ(Refusal(R"({"timing": {"plc_cycle": 2}, "steps": [{"wait_ms": 1}]})"),
               R"($.timing.plc_cycle: unknown key "plc_cycle" (timing has "plc_cycle_ms", "pac_cycle_ms", )"
               R"("latency_cycles", "jitter_ms", "seed" or "boot_ms"))");
@@ -187,7 +196,8 @@ TEST(ScenarioLoader, RefusesUnknownKeys) {
     // Without any step kind, a misspelt key is the likelier mistake.
     EXPECT_EQ(Refusal(WithStep(R"({"comand": "0906"})")),
               R"($.steps[0].comand: unknown key "comand" (a step has "command", "param", "data", "timeout_ms", )"
-              R"("end_timeout_ms", "expect", "note", "ctrl", "integer_mode", "axes", "automatic", "max_ms", "fault", "link" or "wait_ms"))");
+              R"("end_timeout_ms", "expect", "note", "ctrl", "integer_mode", "axes", "automatic", "max_ms", "fault", )"
+              R"("number", "input", "value", "link" or "wait_ms"))");
     EXPECT_EQ(Refusal(R"({"controller": {"inputs": {"I5": true}}, "steps": [{"wait_ms": 1}]})"),
               R"($.controller.inputs.I5: unknown key "I5" (the keys are input numbers 1..1024))");
 }

@@ -48,9 +48,9 @@ inline PaControlConfig SerialOnlyConfig() {
     return config;
 }
 
-class SerialBench {
+class SerialRig {
 public:
-    explicit SerialBench(SerialPortConfig port = {}, SerialFormat format = {}, PaControlConfig config = SerialOnlyConfig())
+    explicit SerialRig(SerialPortConfig port = {}, SerialFormat format = {}, PaControlConfig config = SerialOnlyConfig())
         : line_(format), pac_(bus_, config) {
         pac_.AttachSerial(line_, port);
         pac_.Cycle(now_);  // booted at 0

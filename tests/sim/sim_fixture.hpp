@@ -1,4 +1,4 @@
-// A test bench for the simulated PA-CONTROL: a bus, a controller, and the PLC's side written by
+// A test rig for the simulated PA-CONTROL: a bus, a controller, and the PLC's side written by
 // hand. Exchange() is one step of simulated time: the PLC writes its image, the controller runs
 // one cycle, the PLC reads the reply; then time moves on by step_ (10 ms, the home-position cycle).
 // With a CTRL module in the bus layout (CtrlBus()), the to-PAC image carries ctrlWord_ as the CTRL
@@ -57,9 +57,9 @@ inline std::string RealHex(float value) {
     return ToHex(image).substr(0, 11);
 }
 
-class PacBench : public ::testing::Test {
+class PacRig : public ::testing::Test {
 protected:
-    explicit PacBench(PaControlConfig config = QuickConfig(), BusConfig bus = {})
+    explicit PacRig(PaControlConfig config = QuickConfig(), BusConfig bus = {})
         : bus_(bus), pac_(bus_, config), axisToPac_(static_cast<std::size_t>(bus.layout.axisModules)) {}
 
     // One step: PLC writes, controller cycles, PLC reads; returns the CMD reply as hex.

@@ -10,7 +10,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class AckTable : public PacBench {};
+class AckTable : public PacRig {};
 
 TEST_F(AckTable, IdleAfterBootIsRf0Bf1InHomePosition) {
     EXPECT_EQ(Exchange(Image8{}), "00 00 00 00 00 01 20 00");

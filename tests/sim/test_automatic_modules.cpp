@@ -96,10 +96,10 @@ TEST(AutomaticProgramLines, RefusesWhatItCannotRead) {
 
 // ---- the controller -----------------------------------------------------------------------------------
 
-class AutomaticModules : public PacBench {
+class AutomaticModules : public PacRig {
 protected:
     explicit AutomaticModules(AutomaticModuleConfig modules = {})
-        : PacBench(WithModules(modules), AxisBus(2)), layout_(modules.layout) {}
+        : PacRig(WithModules(modules), AxisBus(2)), layout_(modules.layout) {}
 
     void SetUp() override { Idle(); }  // the first CTRL control word: the reference for its edges
 

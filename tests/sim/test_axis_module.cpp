@@ -1,4 +1,4 @@
-// The controller's side of one 12-byte axis module (runtime/sim axis_module.hpp, manual 2.7,
+// The controller's side of one 12-byte axis module (sim axis_module.hpp, manual 2.7,
 // docs/sim_axis_modules.md, docs/simulator.md "Axis modules (2.7)"), driven cycle by cycle: one Step() is one
 // controller cycle of 10 ms with the PLC's 12 bytes, against a ServoAxis with the default parameters
 // (1000 units/s, 10000 units/s^2: a 100-unit move is a triangle of 0.2 s peaking at 50 units). Expected

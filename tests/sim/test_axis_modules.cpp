@@ -33,9 +33,9 @@ std::string Hex(const Image12& module) {
     return ToHex(image);
 }
 
-class AxisModules : public PacBench {
+class AxisModules : public PacRig {
 protected:
-    explicit AxisModules(int n = 1, PaControlConfig config = QuickConfig()) : PacBench(config, AxisBus(n)) {}
+    explicit AxisModules(int n = 1, PaControlConfig config = QuickConfig()) : PacRig(config, AxisBus(n)) {}
 
     void SetUp() override {
         ASSERT_EQ(pac_.SystemParameters().Set(4, 1), ParameterTable::SetResult::kOk);  // external stop: input 1

@@ -7,7 +7,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class BusFaults : public PacBench {};
+class BusFaults : public PacRig {};
 
 TEST_F(BusFaults, AllZeroBeforeCommunicationIsNoEmergencyStop) {
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");

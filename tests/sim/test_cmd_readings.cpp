@@ -16,9 +16,9 @@ PaControlConfig Reading(NewCommandRule rule, ReceiveAfterRestart start, bool end
     return config;
 }
 
-class Readings : public PacBench {
+class Readings : public PacRig {
 protected:
-    explicit Readings(PaControlConfig config) : PacBench(config) {}
+    explicit Readings(PaControlConfig config) : PacRig(config) {}
 
     // Steps until booted, the module parked with SEND = 0.
     void Boot() {

@@ -30,9 +30,9 @@ constexpr std::uint16_t kAutoStoppedWord = 0x0203;
 constexpr std::uint16_t kOnlineActiveWord = 0x0403;
 constexpr std::uint16_t kOnlineStoppedWord = 0x0803;
 
-class CtrlInterface : public PacBench {
+class CtrlInterface : public PacRig {
 protected:
-    explicit CtrlInterface(PaControlConfig config = QuickConfig()) : PacBench(config, CtrlBus()) {}
+    explicit CtrlInterface(PaControlConfig config = QuickConfig()) : PacRig(config, CtrlBus()) {}
 
     void SetUp() override {
         ASSERT_EQ(pac_.SystemParameters().Set(4, 1), ParameterTable::SetResult::kOk);

@@ -7,7 +7,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class ElementCommands : public PacBench {};
+class ElementCommands : public PacRig {};
 
 TEST_F(ElementCommands, Inputs) {
     pac_.Io().inputs.Set(13, true);

@@ -9,7 +9,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class CommandErrors : public PacBench {};
+class CommandErrors : public PacRig {};
 
 TEST_F(CommandErrors, UnknownCodesGiveError19) {
     // 16#0A99 and 16#1912 lie between commands of chapter 5; 16#7FFF and 16#0000 are no commands at all.

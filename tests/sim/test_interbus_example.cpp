@@ -13,9 +13,9 @@
 namespace pac::sim::testing {
 namespace {
 
-class InterbusExample : public PacBench {
+class InterbusExample : public PacRig {
 protected:
-    InterbusExample() : PacBench(BootingIn(20ms)) {}
+    InterbusExample() : PacRig(BootingIn(20ms)) {}
 };
 
 struct Row {

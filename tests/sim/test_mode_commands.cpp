@@ -7,7 +7,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class ModeCommands : public PacBench {};
+class ModeCommands : public PacRig {};
 
 TEST_F(ModeCommands, StartOnlineNeedsAPoweredExternalStopInput) {
     // No stop input defined (system parameter 4 = 0): error 44 = 16#2C.

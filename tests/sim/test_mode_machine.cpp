@@ -18,9 +18,9 @@ std::string Brief(const ReplyFrame& reply) {
     return std::to_string(reply.operatingStatus) + "/" + (reply.endOfProcessing ? "1" : "0");
 }
 
-class ModeMachineTest : public PacBench {
+class ModeMachineTest : public PacRig {
 protected:
-    explicit ModeMachineTest(PaControlConfig config = QuickConfig()) : PacBench(config) {}
+    explicit ModeMachineTest(PaControlConfig config = QuickConfig()) : PacRig(config) {}
 
     void SetUp() override {
         ASSERT_EQ(pac_.SystemParameters().Set(4, 1), ParameterTable::SetResult::kOk);

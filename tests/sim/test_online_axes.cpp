@@ -18,9 +18,9 @@ PaControlConfig WithOnline(OnlineCommandOptions options) {
     return config;
 }
 
-class OnlineAxesBench : public PacBench {
+class OnlineAxesBench : public PacRig {
 protected:
-    explicit OnlineAxesBench(PaControlConfig config = QuickConfig()) : PacBench(config) {}
+    explicit OnlineAxesBench(PaControlConfig config = QuickConfig()) : PacRig(config) {}
     void SetUp() override { GoOnline(); }
     ServoAxis& Axis(int n) { return pac_.Axes().Motion(n); }
     void IdleFor(std::chrono::milliseconds t) {

@@ -12,7 +12,7 @@ namespace {
 // A move of 100 AE from standstill is a triangle of 200 ms peaking at 1000 AE/s: the distance after t s.
 double Triangle100(double t) { return t <= 0.1 ? 5000.0 * t * t : 100.0 - 5000.0 * (0.2 - t) * (0.2 - t); }
 
-class OnlineCommands : public PacBench {
+class OnlineCommands : public PacRig {
 protected:
     void SetUp() override {
         GoOnline();                                          // 0 ms, SEND 1

@@ -7,7 +7,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class ParameterCommands : public PacBench {};
+class ParameterCommands : public PacRig {};
 
 TEST_F(ParameterCommands, SetAndGetSystemParameters) {
     // 5.2.2.1: input 1 as start input (parameter 3): the acknowledgement echoes the value.

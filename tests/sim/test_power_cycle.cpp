@@ -7,9 +7,9 @@
 namespace pac::sim::testing {
 namespace {
 
-class PowerCycle : public PacBench {
+class PowerCycle : public PacRig {
 protected:
-    PowerCycle() : PacBench(BootingIn(30ms)) {}
+    PowerCycle() : PacRig(BootingIn(30ms)) {}
 };
 
 TEST_F(PowerCycle, AllZeroUntilBootedAndCommandsWaitForTheBoot) {

@@ -21,10 +21,10 @@ SerialPortConfig Verifying(CheckVerification verify) {
 }
 
 TEST(SerialManualExamples, WriteIntegerRegisterN5With12345) {  // 3.4.1
-    SerialBench bench(Verifying(CheckVerification::kNone));
-    const Bytes reply = bench.Exchange(Hex("01 02 30 39 30 36 3B 35 3B 30 3B 31 32 33 34 35 03 37 04"));
+    SerialRig rig(Verifying(CheckVerification::kNone));
+    const Bytes reply = rig.Exchange(Hex("01 02 30 39 30 36 3B 35 3B 30 3B 31 32 33 34 35 03 37 04"));
     EXPECT_EQ(HexOf(reply), "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 31 32 33 34 35 03 35 37 04");
-    EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(5), 12345);
+    EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(5), 12345);
 }
 
 // Every master frame of 3.4 to a controller with the default settings: none is refused (16). The CHECK of
@@ -40,10 +40,10 @@ TEST(SerialManualExamples, WriteIntegerRegisterN5With12345) {  // 3.4.1
 //   3.4.3 "move axis 2" CHECK 14 fits no rule (XOR of the text 95, with ETX 92): sent with 95.
 // The acknowledgements as printed but for the one of 0603, whose printed CHECK 8 leaves ETX out (11).
 TEST(SerialManualExamples, TheDefaultControllerTakesEveryPrintedFrameOf34) {
-    SerialBench bench;
-    bench.Pac().Io().inputs.Set(5, true);
-    bench.Pac().Io().intRegisters.SetInt(2, 222);
-    bench.Pac().Io().realRegisters.SetReal(1, 640.0F);
+    SerialRig rig;
+    rig.Pac().Io().inputs.Set(5, true);
+    rig.Pac().Io().intRegisters.SetInt(2, 222);
+    rig.Pac().Io().realRegisters.SetReal(1, 640.0F);
     struct Example {
         const char* section;
         const char* request;
@@ -66,73 +66,73 @@ TEST(SerialManualExamples, TheDefaultControllerTakesEveryPrintedFrameOf34) {
          "01 02 30 3B 30 3B 33 31 3B 30 3B 31 3B 31 32 35 35 2E 30 30 30 03 33 38 04"},
     };
     for (const Example& e : examples) {
-        if (std::string(e.section) == "3.4.3 move axis 2") bench.Pac().Axes().Motion(2).Place(bench.Now(), 1255.0);
-        EXPECT_EQ(HexOf(bench.Exchange(Hex(e.request))), e.reply) << e.section;
+        if (std::string(e.section) == "3.4.3 move axis 2") rig.Pac().Axes().Motion(2).Place(rig.Now(), 1255.0);
+        EXPECT_EQ(HexOf(rig.Exchange(Hex(e.request))), e.reply) << e.section;
     }
-    EXPECT_EQ(bench.Pac().Serial().Counters().checkErrors, 0u);
-    EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(5), 12345);
-    EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(3), 333);
+    EXPECT_EQ(rig.Pac().Serial().Counters().checkErrors, 0u);
+    EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(5), 12345);
+    EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(3), 333);
 }
 
 TEST(SerialManualExamples, ThePrintedCheckOf341FollowsNoRule) {
     // "7" is neither the XOR with ETX (3) nor without (0): a controller that verifies either refuses it (16).
     for (CheckVerification verify : {CheckVerification::kXorWithEtx, CheckVerification::kXorText}) {
-        SerialBench bench(Verifying(verify));
-        const Bytes reply = bench.Exchange(Hex("01 02 30 39 30 36 3B 35 3B 30 3B 31 32 33 34 35 03 37 04"));
+        SerialRig rig(Verifying(verify));
+        const Bytes reply = rig.Exchange(Hex("01 02 30 39 30 36 3B 35 3B 30 3B 31 32 33 34 35 03 37 04"));
         EXPECT_EQ(HexOf(reply), HexOf(rs232::Frame("16;0;1;0;0;0", rs232::CheckRule::kXorWithEtx)));
-        EXPECT_EQ(bench.Pac().Io().intRegisters.GetInt(5), 0) << "a refused frame is not carried out";
+        EXPECT_EQ(rig.Pac().Io().intRegisters.GetInt(5), 0) << "a refused frame is not carried out";
     }
 }
 
 class ComplexExample1 : public ::testing::Test {  // 3.4.2
 protected:
     ComplexExample1() {
-        bench_.Pac().Io().inputs.Set(5, true);
-        bench_.Pac().Io().intRegisters.SetInt(2, 222);
-        bench_.Pac().Io().realRegisters.SetReal(1, 640.0F);
+        rig_.Pac().Io().inputs.Set(5, true);
+        rig_.Pac().Io().intRegisters.SetInt(2, 222);
+        rig_.Pac().Io().realRegisters.SetReal(1, 640.0F);
     }
-    SerialBench bench_;
+    SerialRig rig_;
 };
 
 TEST_F(ComplexExample1, TheFourCommandsAndTheirAcknowledgements) {
     // Input 5, as printed.
-    EXPECT_EQ(HexOf(bench_.Exchange(Hex("01 02 31 39 30 30 3B 35 3B 30 3B 30 03 36 04"))),
+    EXPECT_EQ(HexOf(rig_.Exchange(Hex("01 02 31 39 30 30 3B 35 3B 30 3B 30 03 36 04"))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 31 03 35 37 04");
     // N2: the print sends 1960 (docs/manual_errata.md); 1906 with its CHECK.
-    EXPECT_EQ(HexOf(bench_.Exchange(rs232::Frame("1906;2;0;0", rs232::CheckRule::kXorText))),
+    EXPECT_EQ(HexOf(rig_.Exchange(rs232::Frame("1906;2;0;0", rs232::CheckRule::kXorText))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 32 32 32 03 35 38 04");
     // N3 := 333, as printed.
-    EXPECT_EQ(HexOf(bench_.Exchange(Hex("01 02 30 39 30 36 3B 33 3B 30 3B 33 33 33 03 34 04"))),
+    EXPECT_EQ(HexOf(rig_.Exchange(Hex("01 02 30 39 30 36 3B 33 3B 30 3B 33 33 33 03 34 04"))),
               "01 02 30 3B 31 3B 31 3B 30 3B 30 3B 33 33 33 03 35 39 04");
-    EXPECT_EQ(bench_.Pac().Io().intRegisters.GetInt(3), 333);
+    EXPECT_EQ(rig_.Pac().Io().intRegisters.GetInt(3), 333);
     // R1: the print sends 1971;3 and data type 0 where its table says 1 (docs/manual_errata.md).
-    EXPECT_EQ(HexOf(bench_.Exchange(rs232::Frame("1907;1;1;0", rs232::CheckRule::kXorText))),
+    EXPECT_EQ(HexOf(rig_.Exchange(rs232::Frame("1907;1;1;0", rs232::CheckRule::kXorText))),
               "01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04");
 }
 
 TEST_F(ComplexExample1, AReadIgnoresTheDataTypeFlag) {
     // The printed frame of the R1 read carries data type 0 (and its CHECK is right for it): same answer.
-    EXPECT_EQ(HexOf(bench_.Exchange(rs232::Frame("1907;1;0;0", rs232::CheckRule::kXorText))),
+    EXPECT_EQ(HexOf(rig_.Exchange(rs232::Frame("1907;1;0;0", rs232::CheckRule::kXorText))),
               "01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04");
 }
 
 TEST(SerialManualExamples, ComplexExample2StartOnlineMoveAndPoll) {  // 3.4.3
-    SerialBench bench;
+    SerialRig rig;
     // Start online: the print sends 0A03 (its CHECK 14 is that of 0603). The acknowledgement as printed but
     // for the CHECK: 11 (XOR with ETX, "31 31"), where the print has 8 (without ETX).
-    const Bytes started = bench.Exchange(rs232::Frame("0603;0;0;0", rs232::CheckRule::kXorText));
+    const Bytes started = rig.Exchange(rs232::Frame("0603;0;0;0", rs232::CheckRule::kXorText));
     EXPECT_EQ(HexOf(started), "01 02 30 3B 31 3B 33 31 3B 30 3B 30 3B 30 03 31 31 04");
 
     // Move axis 2 to 5552.0 (the heading says 5520.0; the frame and the end position say 5552.0) from 1255.0;
     // the frame as printed but for its CHECK, 95 ("39 35") where the print has 14.
-    bench.Pac().Axes().Motion(2).Place(bench.Now(), 1255.0);
-    EXPECT_EQ(HexOf(bench.Exchange(Hex("01 02 30 41 38 37 3B 32 3B 31 3B 35 35 35 32 2E 30 03 39 35 04"))),
+    rig.Pac().Axes().Motion(2).Place(rig.Now(), 1255.0);
+    EXPECT_EQ(HexOf(rig.Exchange(Hex("01 02 30 41 38 37 3B 32 3B 31 3B 35 35 35 32 2E 30 03 39 35 04"))),
               "01 02 30 3B 30 3B 33 31 3B 30 3B 31 3B 31 32 35 35 2E 30 30 30 03 33 38 04");
     // Polls during the drive: BE 0 and a position between start and target that grows; then BE 1 at 5552.000.
     double last = 1255.0;
     for (int poll = 0; poll < 20; ++poll) {
-        for (int i = 0; i < 20; ++i) bench.Step();  // 200 ms between polls
-        const Bytes reply = bench.Exchange({rs232::kEot});
+        for (int i = 0; i < 20; ++i) rig.Step();  // 200 ms between polls
+        const Bytes reply = rig.Exchange({rs232::kEot});
         ASSERT_FALSE(reply.empty());
         const std::string text(reply.begin() + 2, std::find(reply.begin(), reply.end(), rs232::kEtx));
         if (text.rfind("0;1;", 0) == 0) {

@@ -1,4 +1,4 @@
-// The simulated servo axis (runtime/sim servo_axis.hpp, docs/sim_axis.md), driven call by call on simulated
+// The simulated servo axis (sim servo_axis.hpp, docs/sim_axis.md), driven call by call on simulated
 // time: profiles at given times, per-mille dynamics, call-frequency independence, refusals, software limits
 // and G29, limit switches, following error, tolerance window timing, homing modes 0/1/2, G26, enable modes,
 // "displaced during OFF", configuration checks. Expected values are worked out in the comments.

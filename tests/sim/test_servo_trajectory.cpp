@@ -1,4 +1,4 @@
-// The servo axis's trajectory generator (runtime/sim trajectory.hpp, docs/sim_axis.md): trapezoid and S
+// The servo axis's trajectory generator (sim trajectory.hpp, docs/sim_axis.md): trapezoid and S
 // profiles at given times against hand-computed values, short moves that never reach full speed, braking,
 // search runs, and the inverse "when does it reach x".
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 namespace pac::sim::testing {
 namespace {
 
-class StatusCommands : public PacBench {};
+class StatusCommands : public PacRig {};
 
 TEST_F(StatusCommands, ErrorNumberSetsFeAndResetClearsIt) {
     EXPECT_EQ(Idle(), "00 00 00 00 00 01 20 00");

@@ -33,32 +33,32 @@ TraceWindow::TraceWindow() {
     to_ = *colon == ':' ? std::strtoll(colon + 1, nullptr, 10) : from_;
 }
 
-SoakPlc::SoakPlc(const PlcBenchTiming& timing, SoakReport& report)
+SoakPlc::SoakPlc(const RigTiming& timing, SoakReport& report)
     : report_(report),
-      bench_(timing, pac::sim::PaControlConfig{}, SoakLayout()),
+      rig_(timing, pac::sim::PaControlConfig{}, SoakLayout()),
       watch_(timing.plcCycle, [this](const std::string& violation) { report_.Violation(ScanCount(), violation); }),
       ledger_(report) {
-    auto& pac = bench_.Controller();
+    auto& pac = rig_.Controller();
     pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput);
     pac.Io().inputs.Set(kExternalStopInput, true);
 
-    bench_.CallCtrl(ctrl_);
-    for (auto& cmd : cmd_) bench_.Call(cmd);
-    bench_.CallAxis(axis_, 1, [this] {
+    rig_.CallCtrl(ctrl_);
+    for (auto& cmd : cmd_) rig_.Call(cmd);
+    rig_.CallAxis(axis_, 1, [this] {
         axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
         axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
-        axis_->OPSTATUS.value = bench_.CmdInterface()->OPSTATUS.value;  // byte 5 of the CMD reply
+        axis_->OPSTATUS.value = rig_.CmdInterface()->OPSTATUS.value;  // byte 5 of the CMD reply
     });
-    bench_.Start();
+    rig_.Start();
     watch_.AddRequest("FB_PAC_Ctrl", ctrl_);
     watch_.AddCommand("FB_PAC_Cmd 1", cmd_[0]);
     watch_.AddCommand("FB_PAC_Cmd 2", cmd_[1]);
     watch_.AddJob("FB_PAC_Axis", axis_);
-    watch_.Attach(bench_.Task());
-    bench_.Task().AddProgram([this] { CheckAfterScan(); });
+    watch_.Attach(rig_.Task());
+    rig_.Task().AddProgram([this] { CheckAfterScan(); });
 }
 
-void SoakPlc::Scan() { bench_.Scan(); }
+void SoakPlc::Scan() { rig_.Scan(); }
 
 void SoakPlc::StartCommand(int fb, std::uint16_t param, std::uint32_t number) {
     auto& cmd = Cmd(fb);
@@ -87,9 +87,9 @@ void SoakPlc::StartAxisJob(E_PAC_AXISCOMMAND command, float position, std::int64
 
 void SoakPlc::CheckAfterScan() {
     const std::int64_t scan = ScanCount();
-    ledger_.Follow(bench_.Controller().Log(), scan);
+    ledger_.Follow(rig_.Controller().Log(), scan);
     const std::uint32_t control =
-        pac::sim::ReadDword(bench_.ToPac().Module12(bench_.Bus().Layout().AxisOffset(1)), 0);
+        pac::sim::ReadDword(rig_.ToPac().Module12(rig_.Bus().Layout().AxisOffset(1)), 0);
     if (trace_.Covers(scan)) Trace(scan, control);
     if (const char* broken =
             pac::test::AxisControlWordViolation(control, pac::axis_control::kTraverseBits, pac::axis_control::kStart)) {
@@ -104,7 +104,7 @@ void SoakPlc::CheckAfterScan() {
 
 void SoakPlc::Trace(std::int64_t scan, std::uint32_t control) {
     const FB_PAC_AXIS& axis = axis_.Data();
-    std::cout << "scan " << scan << " status " << int{bench_.Controller().OperatingStatus()} << " axis E"
+    std::cout << "scan " << scan << " status " << int{rig_.Controller().OperatingStatus()} << " axis E"
               << int{axis.EXECUTE.value} << " cmd " << axis.COMMAND.value << " pos " << axis.POSITION.value << " A"
               << int{axis.ABORT.value} << " en" << int{axis.ENABLE.value} << " jog" << int{axis.JOGPOSITIVE.value}
               << int{axis.JOGNEGATIVE.value} << " state " << axis.STATE.value << " " << pac::test::OutputsOf(axis_)

@@ -1,4 +1,4 @@
-// The PLC of the soak: FB_PAC_Ctrl on the CTRL module, two FB_PAC_Cmd sharing the CMD interface (the bench
+// The PLC of the soak: FB_PAC_Ctrl on the CTRL module, two FB_PAC_Cmd sharing the CMD interface (the rig
 // calls FB_PAC_CmdInterface before them) and FB_PAC_Axis on axis module 1 of a simulated PA-CONTROL, the axis
 // taking the number format in force from FB_PAC_Ctrl as a PLC program wires them. After every scan: the
 // PLCopen rules of every FB with its own Busy bound (plcopen_watch.hpp), the axis control word rule
@@ -13,7 +13,7 @@
 
 #include "command_ledger.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/st_program.hpp"
 #include "plcopen_watch.hpp"
 #include "soak_report.hpp"
@@ -46,7 +46,7 @@ class SoakPlc {
 public:
     static constexpr int kCommandFbs = 2;
 
-    SoakPlc(const PlcBenchTiming& timing, SoakReport& report);
+    SoakPlc(const RigTiming& timing, SoakReport& report);
     SoakPlc(const SoakPlc&) = delete;
     SoakPlc& operator=(const SoakPlc&) = delete;
 
@@ -65,11 +65,11 @@ public:
     const OpenJob& CtrlJob() const { return ctrlJob_; }
     const OpenJob& AxisJob() const { return axisJob_; }
 
-    PacPlcBench& Bench() { return bench_; }
-    pac::sim::PaControl& Controller() { return bench_.Controller(); }
-    std::int64_t ScanCount() { return bench_.Task().ScanCount(); }
-    std::chrono::nanoseconds Now() const { return bench_.Now(); }
-    std::chrono::nanoseconds Cycle() const { return bench_.Timing().plcCycle; }
+    PacRig& Rig() { return rig_; }
+    pac::sim::PaControl& Controller() { return rig_.Controller(); }
+    std::int64_t ScanCount() { return rig_.Task().ScanCount(); }
+    std::chrono::nanoseconds Now() const { return rig_.Now(); }
+    std::chrono::nanoseconds Cycle() const { return rig_.Timing().plcCycle; }
     std::int64_t ScansFor(std::chrono::nanoseconds t) const { return t / Cycle() + 1; }
     const CommandLedger& Ledger() const { return ledger_; }
 
@@ -81,7 +81,7 @@ private:
     bool Follow(OpenJob& job, const pac::FbInstance<Fb>& fb, const char* name);
 
     SoakReport& report_;
-    PacPlcBench bench_;
+    PacRig rig_;
     std::array<pac::FbInstance<FB_PAC_CMD>, kCommandFbs> cmd_{PAC_FB(FB_PAC_CMD), PAC_FB(FB_PAC_CMD)};
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);

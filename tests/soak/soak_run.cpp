@@ -36,11 +36,11 @@ std::int64_t SoakCounts::Faults() const {
     return all;
 }
 
-PlcBenchTiming SoakTiming(std::uint64_t seed) {
+RigTiming SoakTiming(std::uint64_t seed) {
     pac::sim::SplitMix64 rng(seed ^ 0x5EEDULL);
     const int plcMs[] = {1, 2, 5};
     const int pacMs[] = {1, 3, 10};
-    PlcBenchTiming timing;
+    RigTiming timing;
     timing.plcCycle = milliseconds(plcMs[rng.UniformUpTo(2)]);
     timing.pacCycle = milliseconds(pacMs[rng.UniformUpTo(2)]);
     timing.latencyCycles = static_cast<int>(rng.UniformUpTo(2));
@@ -184,7 +184,7 @@ void SoakRun::MaybeFault() {
     }
     if (!Chance(4000)) return;
     auto& pac = plc_.Controller();
-    auto& bus = plc_.Bench().Bus();
+    auto& bus = plc_.Rig().Bus();
     const nanoseconds now = plc_.Now();
     fault_ = static_cast<Fault>(Draw(0, kFaultKinds - 1));
     faultActive_ = true;
@@ -226,7 +226,7 @@ void SoakRun::MaybeFault() {
 
 void SoakRun::EndFault() {
     auto& pac = plc_.Controller();
-    auto& bus = plc_.Bench().Bus();
+    auto& bus = plc_.Rig().Bus();
     const nanoseconds now = plc_.Now();
     faultActive_ = false;
     switch (fault_) {

@@ -35,7 +35,7 @@ struct SoakCounts {
 };
 
 // The bus timing a seed gives: PLC cycle, controller cycle, latency and jitter.
-PlcBenchTiming SoakTiming(std::uint64_t seed);
+RigTiming SoakTiming(std::uint64_t seed);
 
 class SoakRun {
 public:
@@ -77,7 +77,7 @@ private:
     std::uint64_t seed_;
     std::int64_t scans_;
     pac::sim::SplitMix64 rng_;
-    PlcBenchTiming timing_;
+    RigTiming timing_;
     SoakReport report_;
     SoakPlc plc_;
     SoakCounts counts_;

@@ -1,5 +1,5 @@
 // A PLC whose command FBs (FB_PAC_Cmd and the FBs built on it) share the CMD interface of a simulated
-// PA-CONTROL on one bus timing: the PacPlcBench, the PLCopen checker on every FB after every scan, and
+// PA-CONTROL on one bus timing: the PacRig, the PLCopen checker on every FB after every scan, and
 // one command from its Execute edge to its final output, with the scan window the protocol allows for
 // it. Add the FBs in the order the PLC program calls them, then Start(). The CMD module and each FB's
 // PLCopen pins are traced scan by scan; a test that fails leaves the trace as a VCD file
@@ -12,11 +12,11 @@
 #include <string>
 #include <utility>
 
-#include "bench_timing.hpp"
+#include "rig_timing.hpp"
 #include "bus_timing.hpp"
-#include "pac/bench_trace.hpp"
+#include "pac/rig_trace.hpp"
 #include "pac/fb_instance.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/trace_dump.hpp"
 #include "pac/trace_recorder.hpp"
 #include "plcopen_trace.hpp"
@@ -30,20 +30,20 @@ class CommandPlc {
 public:
     explicit CommandPlc(const BusTiming& timing, pac::sim::PaControlConfig config = {},
                         std::chrono::nanoseconds bootTime = std::chrono::nanoseconds(0))
-        : timing_(timing), bench_(PlcBenchTimingOf(timing, bootTime), config), window_(timing), rules_(timing.PlcCycle()) {
-        pac::TraceBusModules(trace_, bench_);
+        : timing_(timing), rig_(RigTimingOf(timing, bootTime), config), window_(timing), rules_(timing.PlcCycle()) {
+        pac::TraceBusModules(trace_, rig_);
     }
 
     template <class Fb>
     void Add(std::string name, pac::FbInstance<Fb>& fb) {
-        bench_.Call(fb);
+        rig_.Call(fb);
         TracePlcOpenPins(trace_, TraceScope(name), fb);
         rules_.AddCommand(std::move(name), fb);
     }
     void Start() {
-        bench_.Start();
-        rules_.Attach(bench_.Task());
-        trace_.AttachTo(bench_.Task());
+        rig_.Start();
+        rules_.Attach(rig_.Task());
+        trace_.AttachTo(rig_.Task());
     }
 
     // The scan that sees the Execute edge.
@@ -51,8 +51,8 @@ public:
     void Begin(pac::FbInstance<Fb>& fb) {
         fb->EXECUTE.value = TRUE;
         Scan();
-        edgeTime_ = bench_.Now();
-        edgeScan_ = bench_.Task().ScanCount();
+        edgeTime_ = rig_.Now();
+        edgeScan_ = rig_.Task().ScanCount();
     }
     // Scans until `fb` shows its final output, counted from the last Begin(); `eachScan` after each scan.
     template <class Fb>
@@ -60,7 +60,7 @@ public:
         return RunToFinal(fb, edgeScan_, [&] {
             Scan();
             if (eachScan) eachScan();
-            return bench_.Task().ScanCount();
+            return rig_.Task().ScanCount();
         }, maxScans);
     }
     // Execute falls for one scan.
@@ -84,25 +84,25 @@ public:
     const ProtocolWindow& Protocol() const { return window_; }
     const pac::Trace& Trace() const { return trace_.Recording(); }
 
-    void Scan(int n = 1) { bench_.Scan(n); }
+    void Scan(int n = 1) { rig_.Scan(n); }
     const BusTiming& Timing() const { return timing_; }
-    PacPlcBench& Bench() { return bench_; }
-    pac::sim::PaControl& Controller() { return bench_.Controller(); }
+    PacRig& Rig() { return rig_; }
+    pac::sim::PaControl& Controller() { return rig_.Controller(); }
     // The CMD module of the newest command the controller recognised (its exchange log): what was sent,
     // after the library has parked the module again.
     pac::sim::Image8 LastCommandSeen() {
-        const auto& records = bench_.Controller().Log().Records();
+        const auto& records = rig_.Controller().Log().Records();
         for (auto it = records.rbegin(); it != records.rend(); ++it) {
             if (it->newCommand) return it->toPac.Cmd();
         }
         return {};
     }
-    std::chrono::nanoseconds Now() const { return bench_.Now(); }
+    std::chrono::nanoseconds Now() const { return rig_.Now(); }
     std::chrono::nanoseconds EdgeTime() const { return edgeTime_; }
 
 private:
     BusTiming timing_;
-    PacPlcBench bench_;
+    PacRig rig_;
     ProtocolWindow window_;
     PlcOpenWatch rules_;
     pac::TraceRecorder trace_;

@@ -1,6 +1,6 @@
 // The scans the protocol allows between something the PLC or the PA-CONTROL does and the first scan
 // that can show its effect, derived from the bus timing alone (BusTiming): the PA-CONTROL's cycles fall
-// on multiples of its cycle time (the bench runs the controller's cycle before a PLC scan at the same
+// on multiples of its cycle time (the rig runs the controller's cycle before a PLC scan at the same
 // time), each direction delays an image by the latency plus up to the jitter, and a scan reads the
 // newest image that has arrived. ScanWindow::min is without jitter, max with the whole jitter both
 // ways; without jitter the window is one exact scan. Tests compare the FBs' results with these

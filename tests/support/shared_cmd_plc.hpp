@@ -32,7 +32,7 @@ public:
             if (i < fbs) {
                 plc_.Add("FB_PAC_Cmd #" + std::to_string(i), fbs_.back());
             } else {
-                plc_.Bench().Call(fbs_.back());
+                plc_.Rig().Call(fbs_.back());
             }
         }
         plc_.Start();
@@ -88,8 +88,8 @@ public:
     void Scan(int n = 1) { plc_.Scan(n); }
     CommandPlc& Plc() { return plc_; }
     pac::sim::PaControl& Controller() { return plc_.Controller(); }
-    const ST_PAC_CMDCHANNEL& Channel() { return plc_.Bench().Channel(); }
-    pac::sim::Image8 Module() { return plc_.Bench().ToPac().Cmd(); }
+    const ST_PAC_CMDCHANNEL& Channel() { return plc_.Rig().Channel(); }
+    pac::sim::Image8 Module() { return plc_.Rig().ToPac().Cmd(); }
     std::chrono::nanoseconds Now() const { return plc_.Now(); }
     const BusTiming& Timing() const { return plc_.Timing(); }
 

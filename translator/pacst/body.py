@@ -3,6 +3,7 @@ import re
 
 from . import literals
 from . import types as T
+from . import user
 from .common import _BIT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
 from .expressions import ExprCompiler
 
@@ -32,6 +33,14 @@ class BodyCompiler:
         if pou.kind == "function" and up == pou.cname:
             return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
         v = pou.var(name)
+        if v is None and up in pou.externals:
+            g, constant = pou.externals[up]
+            return self._global_ref(g, constant)
+        if v is None and self.comp.user:
+            g = user.lookup_global(self.comp, token)
+            if g is not None:
+                pou.globals_used[g.csym] = g
+                return self._global_ref(g, False)
         if v is None:
             if up in self.comp.enum_values:
                 raise self.err(token, f"enumeration value '{name}' cannot be written")
@@ -47,6 +56,29 @@ class BodyCompiler:
             return Ref(f"(*{v.cname})", False, v.type, v, writable=writable, why_not=why)
         return Ref(v.cname, False, v.type, v, writable=writable, why_not=why)
 
+    @staticmethod
+    def _global_ref(g, constant):
+        why = "it is a CONSTANT" if g.constant or constant else ""
+        return Ref(g.csym, True, g.type, g, writable=not why, why_not=why)
+
+    def _qualified_global(self, node):
+        """`List.Name...` in user mode: (the Ref of the global, the elements after its name), or None."""
+        root = _name(node.name.name).upper()
+        if not self.comp.user or self.pou.var(root) is not None or root in self.pou.externals \
+                or root not in self.comp.gvls:
+            return None
+        gvl = self.comp.gvls[root]
+        first = node.elements[0]
+        if _cls(first) != "FieldSelector" or _cls(first.field) != "SimpleVariable":
+            raise self.err(first, f"{gvl.name} is a global variable list: name one of its variables")
+        g = gvl.var(_name(first.field.name))
+        if g is None:
+            raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
+        if all(e is not g for e, _ in self.pou.externals.values()):
+            self.pou.globals_used[g.csym] = g
+        self.pou.qualifiers.append((node.name.name.start_pos, first.field.name.start_pos, g))
+        return self._global_ref(g, False), node.elements[1:]
+
     def ref(self, node):
         cls = _cls(node)
         if cls == "SimpleVariable":
@@ -61,8 +93,9 @@ class BodyCompiler:
         if self.pou.var(root) is None and root in self.comp.types and self.comp.types[root].is_enum:
             raise self.err(node, "qualified enumeration value: write the value alone (E.A and E#A are not "
                                  "accepted by every tool)")
-        r = self._root(node.name.name)
-        for el in node.elements:
+        qualified = self._qualified_global(node)
+        r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
+        for el in elements:
             ecls = _cls(el)
             if ecls == "FieldSelector":
                 if el.dereferenced:
@@ -158,7 +191,10 @@ class BodyCompiler:
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
         te = self.ex.expr(node.expression, r.type)
-        return [ind + r.write(self.ex.coerce(te, r.type, node.expression))]
+        value = self.ex.coerce(te, r.type, node.expression)
+        if r.var.strlen is not None and not r.suffix:  # STRING(n) keeps its first n characters
+            value = f"__pacst_str_limit({value}, {r.var.strlen})"
+        return [ind + r.write(value)]
 
     def _s_IfStatement(self, node, ind, d):
         out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
@@ -307,6 +343,9 @@ class BodyCompiler:
         name = _name(node.name.name)
         up = name.upper()
         v = self.pou.var(name)
+        if v is None and up in self.comp.pous and self.comp.pous[up].native:
+            # A native FUNCTION (an assert) may be called as a statement: the host implements it.
+            return [ind + self.ex._user_call(node, self.comp.pous[up]).code + ";"]
         if v is None:
             if up in self.comp.pous and self.comp.pous[up].kind == "function" or up in ("SHL", "SHR", "ABS") \
                     or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up):

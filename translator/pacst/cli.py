@@ -4,14 +4,17 @@ only checks; `pacst order` prints files in the declaration order the others need
 import argparse
 import os
 import sys
+import tempfile
 import time
 
 from .compiler import Compiler
-from . import gvl, layout
+from . import gvl, layout, matiec, plcopen_read, symbols, twincat
 from .order import declaration_order
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_files
+
+SYMBOLS = "symbols.json"
 
 
 def _parsed(results):
@@ -22,18 +25,23 @@ def _parsed(results):
     return results
 
 
-def translate(files, cache_dir=None, gvl_files=(), jobs=None):
+def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=()):
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
-    against them; returns (compiler, program, {gvl file: constants}) or raises StErrors."""
-    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs)
-    return _translate_parsed(results[:len(files)], results[len(files):])
+    against them; returns (compiler, program, {gvl file: constants}) or raises StErrors. `user`: the
+    user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements."""
+    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs, user)
+    return _translate_parsed(results[:len(files)], results[len(files):], user, native)
 
 
-def _translate_parsed(file_results, list_results):
+def _translate_parsed(file_results, list_results, user=False, native=()):
     # A fault in a POU file is reported before any in a global list.
     sources = _parsed(file_results)
     lists = _parsed(list_results)
-    comp = Compiler()
+    if user:
+        # A PLC programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
+        by_path = {src.path: src for src in sources}
+        sources = [by_path[path] for path in declaration_order(sources)]
+    comp = Compiler(user, native)
     program = comp.compile(sources)
     constants = {}
     errors = []
@@ -52,10 +60,35 @@ def _tables(constants):
     return {_stem(path) + ".h": gvl.table_header(_stem(path), items) for path, items in constants.items()}
 
 
+def _user_files(args):
+    """The files to compile: the native interfaces first (the user's POUs call them); in user mode a
+    TwinCAT `.plcproj` stands for the object files it lists, a PLCopen XML project for the ST files of
+    its objects (written to a `plcopen` folder beside the output, or a temporary one)."""
+    if (args.native or args.sources_dir) and not args.user:
+        raise SystemExit("pacst: --native and --sources need --user")
+    files = []
+    for path in args.files:
+        if args.user and path.lower().endswith(".plcproj"):
+            files += twincat.project_files(path)
+        elif args.user and path.lower().endswith(".xml"):
+            files += plcopen_read.extract(path, _sources_dir(args))
+        else:
+            files.append(path)
+    return list(args.native) + [f for f in files if f not in args.native]
+
+
+def _sources_dir(args):
+    if args.sources_dir is None:
+        args.sources_dir = tempfile.mkdtemp(prefix="pacst-plcopen-")
+    return args.sources_dir
+
+
 def _build(args):
-    names = ["POUS.h", "pacst_iec.h", ENUM_NAMES] + [_stem(f) + ".c" for f in args.files] + [_stem(f) + ".h" for f in args.gvl]
+    files = _user_files(args)
+    names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, SYMBOLS] + [_stem(f) + ".c" for f in files] + \
+        [_stem(f) + ".h" for f in args.gvl]
     try:
-        comp, program, constants = translate(args.files, args.cache, args.gvl, args.jobs)
+        comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native)
     except StErrors as e:
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
@@ -63,8 +96,10 @@ def _build(args):
         for err in e.errors:
             print(err, file=sys.stderr)
         return 1
-    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(args.files)
+    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
     outputs.update(_tables(constants))
+    if args.user:
+        outputs[SYMBOLS] = symbols.symbols(comp, program)
     written = write_outputs(args.out, outputs)
     if args.stamp:
         with open(args.stamp, "w", encoding="utf-8") as f:
@@ -101,13 +136,15 @@ def _declare(args):
 def _check(args):
     # --separately: every file is a program of its own (the refusal snippets of the test suite). All
     # files are parsed first, in parallel; then each group is compiled on its own.
-    results = parse_files(args.files + args.gvl, args.cache, args.jobs)
-    file_results, list_results = results[:len(args.files)], results[len(args.files):]
-    groups = [[r] for r in file_results] if args.separately else [file_results]
+    files = _user_files(args)
+    results = parse_files(files + args.gvl, args.cache, args.jobs, args.user)
+    file_results, list_results = results[:len(files)], results[len(files):]
+    natives = file_results[:len(args.native)]
+    groups = [natives + [r] for r in file_results[len(natives):]] if args.separately else [file_results]
     failed = False
     for group in groups:
         try:
-            _translate_parsed(group, list_results)
+            _translate_parsed(group, list_results, args.user, args.native)
         except StErrors as e:
             failed = True
             for err in e.errors:
@@ -115,9 +152,28 @@ def _check(args):
     return 1 if failed else 0
 
 
+def _matiec(args):
+    args.user = True
+    try:
+        files = _user_files(args)
+        comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native)
+        text = matiec.source(comp, program, matiec.read_tasks(args.tasks))
+    except StError as e:
+        print(e, file=sys.stderr)
+        return 1
+    except StErrors as e:
+        for err in e.errors:
+            print(err, file=sys.stderr)
+        return 1
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    write_outputs(out_dir, {os.path.basename(args.out): text})
+    return 0
+
+
 def _order(args):
     try:
-        order = declaration_order(_parsed(parse_files(args.files, args.cache, args.jobs)))
+        files = _user_files(args)
+        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)))
     except StErrors as e:
         for err in e.errors:
             print(err, file=sys.stderr)
@@ -135,6 +191,17 @@ def _parse_options(parser):
                         help="processes that parse the files the cache lacks (default: one per core)")
 
 
+def _user_options(parser):
+    parser.add_argument("--user", action="store_true",
+                        help="user-program mode: PROGRAMs, global variable lists, located variables, VAR_EXTERNAL, "
+                             "sized STRINGs and the string functions besides the library's subset")
+    parser.add_argument("--native", action="append", default=[], metavar="FILE",
+                        help="(--user) an ST file whose FUNCTIONs the host implements in C; each call passes "
+                             "the ST file and line of the call")
+    parser.add_argument("--sources", dest="sources_dir", metavar="DIR",
+                        help="(--user) folder for the ST files of a PLCopen XML project (default: a temporary one)")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="pacst", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -146,6 +213,7 @@ def main(argv=None):
     build.add_argument("--stamp", help="file written after a successful build, removed after a refusal")
     build.add_argument("--line-directives", action="store_true",
                        help="precede each statement's C with #line naming its ST line (coverage, debuggers)")
+    _user_options(build)
     build.add_argument("-v", "--verbose", action="store_true")
     build.add_argument("files", nargs="+")
     build.set_defaults(run=_build)
@@ -163,11 +231,22 @@ def main(argv=None):
     check.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, and checked against the POUs' constants")
     check.add_argument("--separately", action="store_true", help="check each file as a program of its own")
+    _user_options(check)
     check.add_argument("files", nargs="+")
     check.set_defaults(run=_check)
+    mat = sub.add_parser("matiec", help="write a user program as one ST file for MATIEC's iec2c, with the "
+                                         "CONFIGURATION, RESOURCE and TASKs it needs")
+    mat.add_argument("--out", required=True, help="the ST file to write")
+    mat.add_argument("--tasks", help="JSON: {\"PRG_Name\": {\"task\": \"Fast\", \"interval\": \"T#10MS\", "
+                                     "\"priority\": 1}}; a PROGRAM not listed runs in PacTask every 10 ms")
+    _parse_options(mat)
+    _user_options(mat)
+    mat.add_argument("files", nargs="+")
+    mat.set_defaults(run=_matiec)
     order = sub.add_parser("order", help="print ST files in declaration order: a type, enumeration or POU "
                                          "before every file that uses it, ties by file name")
     _parse_options(order)
+    _user_options(order)
     order.add_argument("files", nargs="+")
     order.set_defaults(run=_order)
     args = parser.parse_args(argv)

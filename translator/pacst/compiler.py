@@ -15,11 +15,17 @@ from .common import _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import reserved_reason
+from . import user
 
 
 class Pou:
     def __init__(self, kind, name, file, node):
-        self.kind = kind  # "fb" or "function"
+        self.kind = kind  # "fb" or "function" (a user PROGRAM is an "fb" with `program` set)
+        self.program = False
+        self.native = False  # a FUNCTION the host implements (user mode, --native)
+        self.externals = {}  # upper name -> (GlobalVar, constant), from VAR_EXTERNAL (user mode)
+        self.globals_used = {}  # C name -> GlobalVar the body names without VAR_EXTERNAL (user mode)
+        self.qualifiers = []  # (start, end, GlobalVar): the offsets of each `List.` before a global in the body
         self.name = name
         self.cname = name.upper()
         self.file = file
@@ -41,7 +47,16 @@ class Program:
 
 
 class Compiler:
-    def __init__(self):
+    """`user`: the user-program mode (docs/translator.md, "User programs"): PROGRAMs, global variable
+    lists, located variables, VAR_EXTERNAL, sized STRINGs, inline arrays and the string functions are
+    accepted on top of the library's subset. `native`: files whose FUNCTIONs the host implements."""
+
+    def __init__(self, user=False, native=()):
+        self.user = user
+        self.native_files = set(native)
+        self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
+        self.gvls = {}  # upper list name -> GlobalList
+        self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -59,25 +74,35 @@ class Compiler:
     # ------------------------------------------------------------------ driver
     def compile(self, sources):
         """Check and translate parsed files (in declaration order); raise StErrors on any refusal."""
+        self.sources = sources
         for src in sources:
             self.file = src.path
             for item in src.tree.items:
                 name = self._item_name(item)
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
-        for src in sources:
+        for src, item in self._in_order(sources):
             self.file = src.path
-            for item in src.tree.items:
-                try:
-                    self._item(item, src)
-                except StError as e:
-                    self.errors.append(e)
-                    name = self._item_name(item)
-                    if name is not None:
-                        self.refused.add(name.upper())
+            try:
+                self._item(item, src)
+            except StError as e:
+                self.errors.append(e)
+                name = self._item_name(item)
+                if name is not None:
+                    self.refused.add(name.upper())
         if self.errors:
             raise StErrors(self.errors)
         return self.program
+
+    def _in_order(self, sources):
+        """(file, item) in the order they are declared: the files' order; in user mode every type first,
+        then the global lists, then the POUs, so that a POU may use a global of any list and a list a type
+        of any file (TwinCAT and CODESYS have no declaration order)."""
+        items = [(src, item) for src in sources for item in src.tree.items]
+        if not self.user:
+            return items
+        rank = {"DataTypeDeclaration": 0, "GlobalVariableDeclarations": 1}
+        return sorted(items, key=lambda pair: rank.get(_cls(pair[1]), 2))  # stable: file order within a rank
 
     @staticmethod
     def _item_name(item):
@@ -97,8 +122,13 @@ class Compiler:
         elif cls == "Function":
             self._pou(item, "function", src)
         elif cls == "Program":
-            raise self.err(item, "PROGRAM is outside the library's subset: write a FUNCTION_BLOCK")
+            if not self.user:
+                raise self.err(item, "PROGRAM is outside the library's subset: write a FUNCTION_BLOCK "
+                                     "(user programs: pacst --user)")
+            self._pou(item, "program", src)
         elif cls == "GlobalVariableDeclarations":
+            if self.user:
+                return user.global_list(self, item, src)
             raise self.err(item, "VAR_GLOBAL is outside the subset: MATIEC allows globals only inside a "
                                  "CONFIGURATION (see docs/translator.md for library constants)")
         else:
@@ -107,7 +137,7 @@ class Compiler:
     # ------------------------------------------------------------------ names
     def _check_ident(self, token, what):
         name = _name(token)
-        why = reserved_reason(name)
+        why = reserved_reason(name, self.user)
         if why:
             raise self.err(token, f"{what} {why}")
 
@@ -138,6 +168,8 @@ class Compiler:
             return self.types[up]
         if up in self.pous:
             pou = self.pous[up]
+            if pou.program:
+                raise self.err(token, f"'{name}' is a PROGRAM: a task runs it, no POU declares an instance")
             if pou.kind == "fb":
                 if not allow_fb:
                     raise self.err(token, f"a function block ({name}) cannot be used here")
@@ -294,19 +326,26 @@ class Compiler:
     }
 
     def _pou(self, node, kind, src):
-        what = "function block" if kind == "fb" else "function"
+        what = {"fb": "function block", "program": "program"}.get(kind, "function")
+        program = kind == "program"
+        kind = "fb" if program else kind
         if getattr(node, "access", None) is not None:
             raise self.err(node, "access specifiers are outside the portable subset")
-        if kind == "fb" and (node.extends is not None or node.implements is not None):
+        if kind == "fb" and not program and (node.extends is not None or node.implements is not None):
             raise self.err(node, "EXTENDS and IMPLEMENTS are outside the portable subset")
         self._declare_global(node.name, what)
+        if self.user and _name(node.name).upper() in self.globals:
+            raise self.err(node.name, f"{what} '{_name(node.name)}' has the name of a global variable")
         pou = Pou(kind, _name(node.name), self.file, node)
+        pou.program = program
+        pou.native = kind == "function" and self.file in self.native_files
         if kind == "fb":
             pou.fbtype = T.FbType(pou.name)
             pou.fbtype.pou = pou
-        else:
-            if node.return_type is None:
+        elif node.return_type is None:
+            if not pou.native:
                 raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
+        else:
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
                 else self._resolve_type(node.return_type, allow_fb=False)
         constant_block = None
@@ -320,7 +359,7 @@ class Compiler:
             if is_constant:
                 constant_block = block
             self._var_block(pou, block)
-            if kind == "function" and pou.ret.is_struct and \
+            if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
@@ -329,6 +368,9 @@ class Compiler:
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
         self.pous[pou.cname] = pou
+        if pou.native:  # the host implements it: its ST body (if any) is for the other tools
+            self.program.items.append(("pou", pou, self.file))
+            return
         try:
             pou.body_c = BodyCompiler(self, pou).compile()
         except StError:
@@ -339,6 +381,8 @@ class Compiler:
     def _var_block(self, pou, block):
         cls = _cls(block)
         section = self._SECTIONS.get(cls)
+        if self.user and cls == "ExternalVariableDeclarations" and pou.kind == "fb":
+            return user.external(self, pou, block)
         if section is None:
             keyword = {"StaticDeclarations": "VAR_STAT", "MethodInstanceVariableDeclarations": "VAR_INST",
                        "ExternalVariableDeclarations": "VAR_EXTERNAL", "AccessDeclarations": "VAR_ACCESS"}.get(
@@ -355,6 +399,9 @@ class Compiler:
         if section == "temp" and pou.kind == "function":
             raise self.err(block, "a FUNCTION has no VAR_TEMP in the portable subset: use VAR")
         for item in block.items:
+            if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration"):
+                self._user_vars(pou, section, constant, item)
+                continue
             if _cls(item) != "VariableOneInitDeclaration":
                 if _cls(item) == "ArrayVariableInitDeclaration":
                     spec = getattr(item.init, "spec", None)
@@ -375,37 +422,68 @@ class Compiler:
                     raise self.err(item, T.OUTSIDE_SUBSET["STRING"])
                 raise self.err(item, f"{_cls(init)} is outside the portable subset")
             vtype = self._spec_type(init.spec, allow_fb=(pou.kind == "fb"))
-            if vtype.is_fb and section != "var":
-                raise self.err(item, "function block instances are only allowed in VAR")
-            if vtype.is_fb and constant:
-                raise self.err(item, "a function block instance cannot be CONSTANT")
-            if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
-                raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+            self._check_section(pou, section, constant, vtype, item)
             for dv in item.variables:
-                name = self._decl_var_name(dv, "variable")
-                up = name.upper()
-                if pou.var(name) is not None:
-                    raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
-                if up in self.types or up in self.pous or up in self.declared_at:
-                    raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
-                if up in self.enum_values:
-                    raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
-                if up == pou.cname:
-                    raise self.err(dv, f"variable '{name}' has the name of its POU")
-                v = T.Var(name, section, vtype, init.value, dv, constant)
-                if constant and init.value is None:
-                    raise self.err(dv, f"constant '{name}' needs a value")
-                if init.value is not None:
-                    if vtype.is_fb or vtype.is_array or vtype.is_struct:
-                        raise self.err(init.value, "initial values are only for elementary and enumeration "
-                                                   "variables: give defaults in the TYPE or in code")
-                    if section == "inout":
-                        raise self.err(init.value, "a VAR_IN_OUT has no initial value")
-                    if section == "temp":
-                        raise self.err(init.value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
-                                                   "from zero in every call; assign it in the body")
-                    self._init_code(v, "x")
-                pou.vars.append(v)
+                self._declare_var(pou, section, constant, vtype, init.value, dv)
+
+    def _check_section(self, pou, section, constant, vtype, item):
+        """Whether a variable of type `vtype` may stand in this block of `pou`."""
+        if vtype.is_fb and section != "var":
+            raise self.err(item, "function block instances are only allowed in VAR")
+        if vtype.is_fb and constant:
+            raise self.err(item, "a function block instance cannot be CONSTANT")
+        if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
+            raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+
+    def _user_vars(self, pou, section, constant, item):
+        """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
+        value = getattr(item.init, "value", None)
+        self._check_section(pou, section, constant, vtype, item)
+        for dv in item.variables:
+            location = None
+            if dv.location is not None:
+                if not pou.program or section != "var" or constant:
+                    raise self.err(dv.location, "located variables (AT %...) are declared in a global list or "
+                                                "in a PROGRAM's VAR (MATIEC)")
+                location = user.parse_location(self, dv.location, vtype)
+            v = self._declare_var(pou, section, constant, vtype, value, dv, located=True)
+            v.location = location
+            v.strlen = strlen
+            user.check_string_init(self, v)
+
+    def _declare_var(self, pou, section, constant, vtype, value, dv, located=False):
+        """Check and add one variable of a POU."""
+        if located and _cls(dv) == "DeclaredVariable":
+            token = dv.variable.name
+            self._check_ident(token, "variable")
+            name = _name(token)
+        else:
+            name = self._decl_var_name(dv, "variable")
+        up = name.upper()
+        if pou.var(name) is not None or up in pou.externals:
+            raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
+        if up in self.types or up in self.pous or up in self.declared_at:
+            raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
+        if up in self.enum_values:
+            raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
+        if up == pou.cname:
+            raise self.err(dv, f"variable '{name}' has the name of its POU")
+        v = T.Var(name, section, vtype, value, dv, constant)
+        if constant and value is None:
+            raise self.err(dv, f"constant '{name}' needs a value")
+        if value is not None:
+            if vtype.is_fb or vtype.is_array or vtype.is_struct:
+                raise self.err(value, "initial values are only for elementary and enumeration "
+                                      "variables: give defaults in the TYPE or in code")
+            if section == "inout":
+                raise self.err(value, "a VAR_IN_OUT has no initial value")
+            if section == "temp":
+                raise self.err(value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
+                                           "from zero in every call; assign it in the body")
+            self._init_code(v, "x")
+        pou.vars.append(v)
+        return v
 
     # ------------------------------------------------------------------ initial values
     def literal_te(self, node, want):

@@ -3,10 +3,15 @@ import re
 
 from . import literals
 from . import types as T
+from . import user
 from .common import TE, _cls, _name, pos
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
+# The standard string functions of user programs and their IEC input names.
+_STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"], "RIGHT": ["IN", "L"],
+                     "MID": ["IN", "L", "P"], "FIND": ["IN1", "IN2"], "INSERT": ["IN1", "IN2", "P"],
+                     "DELETE": ["IN", "L", "P"], "REPLACE": ["IN1", "IN2", "L", "P"]}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
@@ -137,7 +142,10 @@ class ExprCompiler:
             out.append(c)
             i += 1
         value = "".join(out)
-        if len(value) > T.STRING_LITERAL_MAX:
+        if self.comp.user and len(value) > user.STRING_CAPACITY:
+            raise self.err(node, f"STRING literal of {len(value)} characters: a STRING holds at most "
+                                 f"{user.STRING_CAPACITY}")
+        if not self.comp.user and len(value) > T.STRING_LITERAL_MAX:
             raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
                                  "the default STRING length of CODESYS and TwinCAT")
         c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
@@ -311,8 +319,12 @@ class ExprCompiler:
             return self._shift(node, up, want)
         if up in ("ABS", "MIN", "MAX", "LIMIT", "SEL"):
             return self._std_numeric(node, up, want)
+        if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
+            return self._string_function(node, up)
         if up in self.comp.pous:
             pou = self.comp.pous[up]
+            if pou.native and pou.ret is None:
+                raise self.err(node, f"FUNCTION {pou.name} returns nothing: call it as a statement")
             if pou.kind == "fb":
                 raise self.err(node, f"function block type '{name}' called like a function: declare an instance")
             if self.body is not None and pou is self.body.pou:
@@ -329,6 +341,30 @@ class ExprCompiler:
         if up in STANDARD_FUNCTIONS:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
+
+    def _string_function(self, node, fn):
+        """The standard string functions (user mode): positions count from 1, results keep at most the
+        STRING capacity, as MATIEC's library does."""
+        names = _STRING_FUNCTIONS[fn]
+        if fn == "CONCAT" and len(node.parameters) > 2 and all(p.name is None for p in node.parameters):
+            names = [f"IN{i + 1}" for i in range(len(node.parameters))]
+        args = self._positional(node, len(names), names)
+        codes = []
+        for name, arg in zip(names, args):
+            if name in ("L", "P"):
+                te = self.expr(arg, T.INT)
+                if te.type is not T.ANY_INT and not te.type.is_int:
+                    raise self.err(arg, f"{fn}'s {name} is an integer, not {te.type.name}")
+                codes.append(self.coerce(te, T.INT, arg, "argument") if te.type is T.ANY_INT
+                             else f"(long)({te.code})")
+            else:
+                codes.append(self.coerce(self.expr(arg, T.STRING), T.STRING, arg, "argument"))
+        if fn == "CONCAT":
+            code = codes[0]
+            for c in codes[1:]:
+                code = f"__pacst_str_concat({code}, {c})"
+            return TE(T.STRING, code)
+        return TE(T.INT if fn in ("LEN", "FIND") else T.STRING, f"__pacst_str_{fn.lower()}({', '.join(codes)})")
 
     def _positional(self, node, count, names):
         """Arguments of a standard function: all positional, or all formal with the IEC pin names."""
@@ -476,4 +512,7 @@ class ExprCompiler:
             if v.section == "inout" and ref.subscripted:
                 raise self.err(arg, "never pass an array element to a FUNCTION's VAR_IN_OUT (MATIEC)")
             args.append(f"&({ref.read()})")
-        return TE(pou.ret, f"{pou.cname}(TRUE, NULL{''.join(', ' + a for a in args)})")
+        # A native FUNCTION (user mode) is given the call's position: with #line directives,
+        # __FILE__ and __LINE__ are the ST file and line of the call (docs/translator.md).
+        where = "__FILE__, __LINE__, " if pou.native else ""
+        return TE(pou.ret, f"{pou.cname}({where}TRUE, NULL{''.join(', ' + a for a in args)})")

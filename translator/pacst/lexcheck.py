@@ -2,7 +2,8 @@
 
 blark accepts `//` comments, pragmas, nested comments, `;;` and a missing `;` after END_IF;
 MATIEC refuses them all (docs/st_subset.md, "Lexical rules"), so they are refused here
-before parsing, with the exact position.
+before parsing, with the exact position. The export (tools/pacexport) reads the library with the same
+tokens: their offsets and the comments are where it cuts a file into declaration and body.
 """
 import re
 
@@ -20,18 +21,35 @@ _OPENS_BRANCH = {"THEN": "THEN branch", "ELSE": "ELSE branch", "DO": "loop body"
 _ENDS_BRANCH = {"ELSE", "ELSIF", "END_IF", "END_CASE", "END_WHILE", "END_FOR", "UNTIL"}
 
 
-class _Token:
-    __slots__ = ("kind", "text", "line", "col")
+class Token:
+    """A word, literal or punctuation outside comments: its text, line and column, and its offsets in
+    the text (the export cuts a file into declaration and body at them)."""
+    __slots__ = ("kind", "text", "line", "col", "start")
 
-    def __init__(self, kind, text, line, col):
+    def __init__(self, kind, text, line, col, start):
         self.kind = kind
         self.text = text
         self.line = line
         self.col = col
+        self.start = start
+
+    @property
+    def end(self):
+        return self.start + len(self.text)
 
     @property
     def upper(self):
         return self.text.upper()
+
+
+class Comment:
+    """A `(* *)` comment with its delimiters, and its offsets."""
+    __slots__ = ("text", "start", "end")
+
+    def __init__(self, text, start, end):
+        self.text = text
+        self.start = start
+        self.end = end
 
 
 def _check_underscores(digits, file, line, col):
@@ -50,8 +68,10 @@ def _check_real_point(digits, file, line, col):
                                        f"write {with_point}")
 
 
-def tokenize(text, file):
-    """Tokens without comments; raises StError on what MATIEC's lexer would refuse."""
+def tokenize(text, file, comments=None, user=False):
+    """Tokens without comments (appended to `comments` when it is a list); raises StError on what
+    MATIEC's lexer would refuse. A user program (`user`) may also have `//` comments and pragmas
+    (`{attribute 'qualified_only'}`), which TwinCAT and CODESYS write; pacst ignores the pragmas."""
     tokens = []
     i, line, col = 0, 1, 1
     n = len(text)
@@ -84,7 +104,19 @@ def tokenize(text, file):
                     advance(nested)
                     raise StError(file, line, col, "nested comment: MATIEC does not nest '(* *)' comments")
                 break
+            if comments is not None:
+                comments.append(Comment(text[i:end + 2], i, end + 2))
             advance(end + 2)
+            continue
+        if user and text.startswith("//", i):
+            end = text.find("\n", i)
+            advance(n if end < 0 else end)
+            continue
+        if user and c == "{":
+            end = text.find("}", i)
+            if end < 0:
+                raise StError(file, line, col, "pragma is not closed with '}'")
+            advance(end + 1)
             continue
         if text.startswith("//", i):
             raise StError(file, line, col, "'//' comment: MATIEC accepts only '(* ... *)' comments")
@@ -98,7 +130,7 @@ def tokenize(text, file):
                 end += 2 if text[end] == "$" else 1
             if end >= n:
                 raise StError(file, line, col, "string literal is not closed")
-            tokens.append(_Token("string", text[i:end + 1], line, col))
+            tokens.append(Token("string", text[i:end + 1], line, col, i))
             advance(end + 1)
             continue
         m = _IDENT.match(text, i)
@@ -118,14 +150,14 @@ def tokenize(text, file):
                         raise StError(file, line, col, f"qualified enumeration value '{text[i:lit.end()]}': write "
                                                        "the value alone (E#A and E.A are not accepted by every tool)")
                 end = lit.end() if lit else m.end() + 1
-                tokens.append(_Token("literal", text[i:end], line, col))
+                tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
             if "__" in word:
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves")
             if word.endswith("_"):
                 raise StError(file, line, col, f"identifier '{word}' ends with '_', which MATIEC refuses")
-            tokens.append(_Token("ident", word, line, col))
+            tokens.append(Token("ident", word, line, col, i))
             advance(m.end())
             continue
         m = _NUMBER.match(text, i)
@@ -135,22 +167,23 @@ def tokenize(text, file):
                 lit = re.match(r"[0-9_]+", text[i:]).group(0)
             _check_underscores(lit, file, line, col)
             _check_real_point(lit, file, line, col)
-            tokens.append(_Token("number", lit, line, col))
+            tokens.append(Token("number", lit, line, col, i))
             advance(i + len(lit))
             continue
         two = text[i:i + 2]
         if two in _PUNCT2:
-            tokens.append(_Token("punct", two, line, col))
+            tokens.append(Token("punct", two, line, col, i))
             advance(i + 2)
             continue
-        tokens.append(_Token("punct", c, line, col))
+        tokens.append(Token("punct", c, line, col, i))
         advance(i + 1)
     return tokens
 
 
-def check(text, file):
-    """Raise StError for the first lexical rule of the portable subset that `text` breaks."""
-    tokens = tokenize(text, file)
+def check(text, file, user=False):
+    """Raise StError for the first lexical rule of the portable subset that `text` breaks. A user program
+    (`user`) may have `//` comments and pragmas, and may leave out the `;` after END_IF and the like."""
+    tokens = tokenize(text, file, user=user)
     in_type = False
     type_depth = 0  # STRUCT/UNION and parentheses open inside the current TYPE block
     pou = None  # the keyword that opened the current POU
@@ -186,7 +219,7 @@ def check(text, file):
             prev_text = prev.upper if prev.kind == "ident" else prev.text
             if prev_text in _EMPTY_BEFORE:
                 raise StError(file, tok.line, tok.col, "empty statement: MATIEC refuses ';;' and empty branches")
-        if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";"):
+        if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";") and not user:
             raise StError(file, tok.line, tok.col + len(tok.text),
                           f"missing ';' after {up}: MATIEC requires it")
         if tok.kind == "ident" and up == "TYPE":

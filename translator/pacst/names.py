@@ -45,10 +45,11 @@ IEC_KEYWORDS = {
 }
 
 
-def reserved_reason(name):
-    """Why `name` may not be declared, or None when it may."""
+def reserved_reason(name, user=False):
+    """Why `name` may not be declared, or None when it may. A user program (`user`) may take the keywords
+    of the other IEC languages (Step, Action...): pacst's C does not mind, only MATIEC's lexer does."""
     up = name.upper()
-    if up in IEC_KEYWORDS:
+    if up in IEC_KEYWORDS and not user:
         return f"'{name}' is a keyword of IEC 61131-3 (SFC, IL or configurations) that MATIEC reserves"
     if up in C_KEYWORDS:
         return f"'{name}' is a C keyword in the generated code"

@@ -27,9 +27,10 @@ import types
 
 import blark
 import lark
+from blark import transform as tf
 from blark.parse import new_parser, parse_source_code
 
-from . import lexcheck
+from . import lexcheck, twincat
 from .errors import StError
 from .fastparse import Decline, FastParser, grammar_facts
 
@@ -54,9 +55,10 @@ _SOURCES_VERSION = _sources_version([lexcheck.__file__] + sorted(
     os.path.join(_FASTPARSE_DIR, name) for name in os.listdir(_FASTPARSE_DIR) if name.endswith(".py")))
 
 
-def _cache_key(text):
+def _cache_key(text, user=False):
+    """A parse is cached for the text and the mode: a user program passed laxer lexical checks."""
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|".encode())
+    h.update(f"{_CACHE_FORMAT}|{blark.__version__}|{_SOURCES_VERSION}|{'user|' if user else ''}".encode())
     h.update(text.encode("utf-8"))
     return h.hexdigest()
 
@@ -176,12 +178,15 @@ class SourceFile:
         self.tree = tree
 
 
-def _read(path):
+def _read(path, user=False):
     try:
-        with open(path, encoding="utf-8") as f:
-            return f.read()
+        with open(path, encoding="utf-8-sig" if user else "utf-8") as f:
+            text = f.read()
     except (OSError, UnicodeDecodeError) as exc:
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
+    if user and twincat.is_object_file(path):
+        return twincat.object_st(text, path)
+    return text
 
 
 def _cached_tree(cache_dir, key):
@@ -242,16 +247,17 @@ def _parse_misses(misses, jobs, cache_dir):
         return {i: future.result() for i, future in futures.items()}
 
 
-def parse_files(paths, cache_dir=None, jobs=None):
+def parse_files(paths, cache_dir=None, jobs=None, user=False):
     """Read, check lexically and parse every file of `paths`: for each, in order, its SourceFile or the
-    StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core)."""
+    StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core).
+    `user`: the files of a user program (laxer lexical checks; TwinCAT's .TcPOU, .TcGVL and .TcDUT read)."""
     results, misses = [], []
     for i, path in enumerate(paths):
         try:
-            text = _read(path)
-            tree = _cached_tree(cache_dir, _cache_key(text))
+            text = _read(path, user)
+            tree = _cached_tree(cache_dir, _cache_key(text, user))
             if tree is None:
-                lexcheck.check(text, path)
+                lexcheck.check(text, path, user)
         except StError as e:
             results.append(e)
             continue
@@ -265,7 +271,7 @@ def parse_files(paths, cache_dir=None, jobs=None):
             results[i] = StError(*error)
             continue
         if cache_dir:
-            _store(cache_dir, _cache_key(text), pickled)
+            _store(cache_dir, _cache_key(text, user), pickled)
         results[i] = SourceFile(path, text, pickle.loads(pickled))
     return results
 
@@ -276,3 +282,38 @@ def parse_file(path, cache_dir=None):
     if isinstance(result, StError):
         raise result
     return result
+
+
+class ParsedText:
+    """One parse of parse_text: the code, blark's tree of it and its comments."""
+
+    def __init__(self, code, tree, comments):
+        self.code = code
+        self.tree = tree
+        self.comments = comments
+
+    def items(self, comments=True):
+        """blark's typed items; without comments their text is the canonical form of the code."""
+        return tf.transform(source_code=self.code, tree=self.tree,
+                            comments=list(self.comments) if comments else []).items
+
+
+def parse_text(text, where, cache_dir=None, rule="iec_source"):
+    """Parses `text` from the grammar rule `rule` with the parser and cache of parse_files, but without
+    the lexical checks of the portable subset: for text the exports write and the IDEs read back (a
+    pragma such as {attribute 'qualified_only'}, an object cut into declaration and body as TwinCAT keeps
+    it), which the tests compare with the source. Raises StError at the first syntax error."""
+    key = "text-" + _cache_key(f"{rule}|{text}")
+    cached = _cached_tree(cache_dir, key)
+    if cached is not None:
+        return ParsedText(text, *cached)
+    try:
+        result = parse_source_code(text, starting_rule=rule, fn=where, parser=_parser(cache_dir))
+    except Exception as exc:  # blark's own passes (comments, pragmas) raise on some damaged text
+        line, col = _end_of(text)
+        raise StError(where, line, col, f"syntax error: {exc}") from None
+    if result.exception is not None:
+        raise _syntax_error(result.exception, where, text)
+    if cache_dir:
+        _store(cache_dir, key, pickle.dumps((result.tree, result.comments), protocol=pickle.HIGHEST_PROTOCOL))
+    return ParsedText(text, result.tree, result.comments)

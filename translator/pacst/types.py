@@ -152,6 +152,9 @@ class StructType(Type):
 class Var:
     """A declared variable: a POU's interface or private variable, or a struct member."""
 
+    location = None  # user mode: the parsed `AT %...` address (user.Location)
+    strlen = None  # user mode: n of a STRING(n)
+
     def __init__(self, name, section, type_, init, node, constant=False):
         self.name = name
         self.cname = name.upper()

@@ -1,7 +1,8 @@
 // Writes a Trace as a Value Change Dump (IEEE 1364, chapter 18), the format GTKWave and every HDL
 // waveform viewer open. Scopes become nested modules under one top module; bit vectors are `wire`s,
 // REALs `real`s; times are the samples' simulated times in nanoseconds (`$timescale 1 ns`). The file
-// depends on nothing but the trace, so equal runs give equal files.
+// depends on nothing but the trace, so equal runs give equal files. The last sample always has a time
+// stamp (alone when nothing changed in it), so a viewer shows the trace to its end.
 #pragma once
 
 #include <ostream>

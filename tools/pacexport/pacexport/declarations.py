@@ -3,8 +3,8 @@ values and the comments that document them."""
 from typing import Optional
 
 from .errors import ExportError
-from .lexer import comment_body
 from .model import AliasShape, EnumShape, StructShape, Variable, VarBlock
+from .splitting import comment_body
 from .types import parse_type
 
 # blark's classes for the variable blocks the export writes, by PLCopen list.

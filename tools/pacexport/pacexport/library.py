@@ -2,12 +2,14 @@
 from dataclasses import dataclass
 from typing import List
 
-from .blarkparse import ParseFailure, source_items
+from pacst.errors import StError
+from pacst.parsing import parse_text
+
 from .declarations import data_type_shape, type_of, var_blocks
 from .errors import ExportError
 from .metadata import LibraryInfo
 from .model import DataType, GlobalList, Pou
-from .splitting import read_source
+from .splitting import END_OF, read_source
 
 # A global list is used as GVL_PAC.PAC_CMD_STOP: the FBs' local constants of the same names
 # (docs/constants.md) then never meet the list's (docs/import.md).
@@ -25,8 +27,9 @@ class Library:
         return [*self.data_types, *self.pous, *self.global_lists]
 
 
-def load_library(info, sources, global_lists, cache):
-    """sources: the library's files in declaration order; global_lists: its VAR_GLOBAL files."""
+def load_library(info, sources, global_lists, cache_dir=None):
+    """sources: the library's files in declaration order; global_lists: its VAR_GLOBAL files; cache_dir:
+    the translator's parse cache (pacst.parsing), shared with its builds."""
     library = Library(info, [], [], [])
     names = {}
     for path in [*sources, *global_lists]:
@@ -34,13 +37,11 @@ def load_library(info, sources, global_lists, cache):
         if source.name.upper() in names:
             raise ExportError(path, f"{source.name} is declared in {names[source.name.upper()]} too")
         names[source.name.upper()] = path
-        items = source_items(source.kind, source.name, source.declaration, source.body)
+        code = _object_text(source)
         try:
-            parsed = [cache.parse_item(item, path) for item in items]
-        except ParseFailure as exc:
-            raise ExportError(path, str(exc)) from None
-        node = _single(path, parsed[0].items())
-        code = parsed[0].code
+            node = _single(path, parse_text(code, path, cache_dir).items())
+        except StError as exc:
+            raise ExportError(path, f"{exc.line}:{exc.col}: {exc.message}") from None
         if source.kind == "dataType":
             shape, initial = data_type_shape(path, code, node.declaration)
             library.data_types.append(DataType(source, shape, initial))
@@ -50,6 +51,14 @@ def load_library(info, sources, global_lists, cache):
         else:
             library.pous.append(Pou(source, _return_type(path, node), var_blocks(path, code, node.declarations)))
     return library
+
+
+def _object_text(source):
+    """The object as the translator's parser reads it: the declaration first, so that the parse's
+    offsets are the declaration's (declarations.initial_text cuts initial values out at them)."""
+    if source.body is None:
+        return source.declaration
+    return f"{source.declaration}{source.body}\n{END_OF[source.kind]}\n"
 
 
 def _single(path, items):

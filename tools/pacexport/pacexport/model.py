@@ -2,8 +2,7 @@
 from dataclasses import dataclass
 from typing import Optional, Tuple, Union
 
-from .lexer import scan
-from .splitting import SourceObject
+from .splitting import SourceObject, scan
 from .types import TypeRef
 
 # PLCopen's variable lists and the ST keyword that opens each.
@@ -84,7 +83,8 @@ class GlobalList:
         """The list as CODESYS and TwinCAT hold it: the source with the attributes on the lines just
         before VAR_GLOBAL, after the header comment."""
         text = self.source.declaration
-        tokens, _ = scan(text)
+        tokens, _ = scan(self.source.path, text)
         line_start = text.rfind("\n", 0, tokens[0].start) + 1
+        # The translator's lexer refuses pragmas in the source, so each is written here once.
         pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes)
         return text[:line_start] + pragmas + text[line_start:]

@@ -10,6 +10,15 @@ _CODESYS = "http://www.3s-software.com/plcopenxml/"
 PLAIN_TEXT = _CODESYS + "interfaceasplaintext"  # the declaration as text, comments and layout kept
 ATTRIBUTES = _CODESYS + "attributes"  # {attribute '...'} pragmas
 GLOBAL_VARS = _CODESYS + "globalvars"  # a global variable list outside any configuration
+OBJECT_ID = _CODESYS + "objectid"  # an object's identity, which projectstructure refers to
+PROJECT_STRUCTURE = _CODESYS + "projectstructure"  # the folders of the POUs view
+PROJECT_INFORMATION = _CODESYS + "projectinformation"
+LIBRARIES = _CODESYS + "libraries"  # the library references of the POUs view
+ENUM_VALUE_DOCUMENTATION = _CODESYS + "enumvaluedocumentation"  # the comment of each enumeration value
+BUILD_PROPERTIES = _CODESYS + "buildproperties"  # LinkAlways of a global list
+# What CODESYS writes as each data's handleUnknown: identities and the tree are dropped by an importer
+# that does not know them, everything else is the implementation's.
+DISCARDED = (OBJECT_ID, PROJECT_STRUCTURE)
 
 POU_KEYWORDS = {"functionBlock": "FUNCTION_BLOCK", "function": "FUNCTION", "program": "PROGRAM"}
 

@@ -9,8 +9,10 @@ import re
 from dataclasses import dataclass
 from typing import Optional
 
+from pacst.errors import StError
+from pacst.lexcheck import tokenize
+
 from .errors import ExportError
-from .lexer import comment_body, scan
 
 VAR_OPENERS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT",
                "VAR_EXTERNAL"}
@@ -38,11 +40,26 @@ def read_source(path):
     return split_source(path, text.replace("\r\n", "\n"))
 
 
-def split_source(path, text):
+def scan(path, text):
+    """(tokens, comments) of `text` by the translator's lexer (pacst.lexcheck), which refuses what the
+    portable subset has not (line comments, pragmas, nested comments): the export takes the library's
+    sources, which the translator reads."""
+    comments = []
     try:
-        tokens, comments = scan(text)
-    except ValueError as exc:
-        raise ExportError(path, str(exc)) from None
+        return tokenize(text, path, comments), comments
+    except StError as exc:
+        raise ExportError(path, f"{exc.line}:{exc.col}: {exc.message}") from None
+
+
+def comment_body(comment_text):
+    """The words of a `(* *)` comment (the only kind the lexer lets through) without its delimiters,
+    continuation lines dedented."""
+    lines = comment_text[2:-2].strip().splitlines()
+    return "\n".join(line.strip() for line in lines)
+
+
+def split_source(path, text):
+    tokens, comments = scan(path, text)
     if not tokens:
         raise ExportError(path, "holds no declaration")
     first = tokens[0]

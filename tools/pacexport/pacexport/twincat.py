@@ -1,16 +1,22 @@
 """Writes the library as TwinCAT 3 PLC files: a .TcDUT per type, a .TcPOU per POU, a .TcGVL per global
 list, and a .plcproj that lists them.
 
-The files have the form TwinCAT writes: declaration and implementation as CDATA, CRLF line ends,
-and an object Id that is a UUID derived from the object's name, so that the same object keeps its
-Id from build to build and from version to version (TwinCAT matches objects by it).
+The files have the form TwinCAT 3.1 writes (tests/ide_reference.json lists what real files carry):
+a UTF-8 byte-order mark, the declaration and implementation as CDATA, CRLF line ends, the
+ProductVersion of a real TwinCAT 3.1 build, and an object Id that is a UUID derived from the object's
+name, so that the same object keeps its Id from build to build and from version to version (TwinCAT
+matches objects by it). The .plcproj is a library project's: Title, DefaultNamespace PA_CONTROL (the
+calls are PA_CONTROL.MC_Power, which cannot collide with Tc2_MC2), Author, a library category, the
+GVLs linked always and the project options TwinCAT keeps in ProjectExtensions.
 """
 import os
 import uuid
 from xml.sax.saxutils import escape, quoteattr
 
 OBJECT_VERSION = "1.1.0.1"  # the TcPlcObject format of TwinCAT 3.1
-PRODUCT_VERSION = "3.1.4024.0"  # the oldest TwinCAT 3.1 build the files are meant for
+PRODUCT_VERSION = "3.1.4024.15"  # a released TwinCAT 3.1 build (4024.15) that writes this format
+PROGRAM_VERSION = "3.1.4024.0"  # the .plcproj's ProgramVersion: the oldest build of the 4024 line it is for
+BOM = "\ufeff"  # TwinCAT writes its XML files with a UTF-8 byte-order mark
 _NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "urn:pa-control-plc:pacexport")
 
 # Folder and file kind of each object kind; the folders are the ones a new TwinCAT PLC project has.
@@ -38,7 +44,7 @@ def object_file(kind, name, declaration, body):
     """The text of one TwinCAT object file (LF line ends; write_twincat makes them CRLF)."""
     _, tag, _ = FILE_KINDS[kind]
     special = ' SpecialFunc="None"' if tag == "POU" else ""
-    lines = ['<?xml version="1.0" encoding="utf-8"?>',
+    lines = [BOM + '<?xml version="1.0" encoding="utf-8"?>',
              f'<TcPlcObject Version="{OBJECT_VERSION}" ProductVersion="{PRODUCT_VERSION}">',
              f'  <{tag} Name={quoteattr(name)} Id="{guid(tag, name)}"{special}>',
              f"    <Declaration>{cdata(declaration)}</Declaration>"]
@@ -58,30 +64,57 @@ def project_file(library, paths):
     ids = {key: guid("project", f"{info.name}:{key}") for key in (
         "ProjectGuid", "Application", "TypeSystem", "Implicit_Task_Info", "Implicit_KindOfTask",
         "Implicit_Jitter_Distribution", "LibraryReferences")}
+    category = guid("category", info.company)
     properties = [("FileVersion", "1.0.0.0"), ("SchemaVersion", "2.0"), ("ProjectGuid", ids["ProjectGuid"]),
                   ("SubObjectsSortedByName", "True"), ("DownloadApplicationInfo", "true"),
                   ("WriteProductVersion", "true"), ("GenerateTpy", "false"), ("Name", info.name),
-                  ("ProgramVersion", PRODUCT_VERSION)]
+                  ("ProgramVersion", PROGRAM_VERSION)]
     properties += [(k, v) for k, v in ids.items() if k != "ProjectGuid"]
-    properties += [("Company", info.company), ("Title", info.name), ("ProjectVersion", info.ide_version),
-                   ("Description", f"{info.title}: {info.description}")]
-    lines = ['<?xml version="1.0" encoding="utf-8"?>',
+    properties += [("CombineIds", "true"), ("Company", info.company), ("Released", "false"), ("Title", info.name),
+                   ("DefaultNamespace", info.name), ("ProjectVersion", info.ide_version), ("Author", info.company)]
+    lines = [BOM + '<?xml version="1.0" encoding="utf-8"?>',
              '<Project DefaultTargets="Build" xmlns="http://schemas.microsoft.com/developer/msbuild/2003">',
              "  <PropertyGroup>"]
     lines += [f"    <{k}>{escape(v)}</{k}>" for k, v in properties]
-    lines += ["  </PropertyGroup>", "  <ItemGroup>"]
-    for path in paths:
-        lines += [f"    <Compile Include={quoteattr(path.replace('/', chr(92)))}>",
-                  "      <SubType>Code</SubType>", "    </Compile>"]
-    lines += ["  </ItemGroup>", "  <ItemGroup>"]
+    lines += ["    <LibraryCategories>", '      <LibraryCategory xmlns="">', f"        <Id>{category}</Id>",
+              "        <Version>1.0.0.0</Version>", f"        <DefaultName>{escape(info.title)}</DefaultName>",
+              "      </LibraryCategory>", "    </LibraryCategories>", "    <SelectedLibraryCategories>",
+              f'      <Id xmlns="">{category}</Id>', "    </SelectedLibraryCategories>",
+              f"    <Description>{escape(f'{info.title}: {info.description} {info.license_line}')}</Description>",
+              "  </PropertyGroup>", "  <ItemGroup>"]
     lines += [f'    <Folder Include="{f}" />' for f in sorted({p.split("/")[0] for p in paths})]
+    lines += ["  </ItemGroup>", "  <ItemGroup>"]
+    for path in paths:
+        lines += compile_item(path)
     lines += ["  </ItemGroup>", "  <ItemGroup>"]
     for name in LIBRARY_REFERENCES:
         lines += [f'    <PlaceholderReference Include="{name}">',
                   f"      <DefaultResolution>{name}, * (Beckhoff Automation GmbH)</DefaultResolution>",
                   f"      <Namespace>{name}</Namespace>", "    </PlaceholderReference>"]
-    lines += ["  </ItemGroup>", "</Project>"]
+    lines += ["  </ItemGroup>"] + project_extensions() + ["</Project>"]
     return "\n".join(lines) + "\n"
+
+
+def compile_item(path):
+    """A file's entry in the .plcproj; a global list is linked even where nothing refers to it."""
+    lines = [f"    <Compile Include={quoteattr(path.replace('/', chr(92)))}>", "      <SubType>Code</SubType>"]
+    if path.endswith(FILE_KINDS["globalVars"][2]):
+        lines.append("      <LinkAlways>true</LinkAlways>")
+    return lines + ["    </Compile>"]
+
+
+def project_extensions():
+    """The PLC project options as TwinCAT keeps them: the root of its option tree, with no option set
+    (every option at its default), and the type list the tree names."""
+    return ["  <ProjectExtensions>", "    <PlcProjectOptions>", "      <XmlArchive>", "        <Data>",
+            '          <o xml:space="preserve" t="OptionKey">',
+            '            <v n="Name">"&lt;ProjectRoot&gt;"</v>',
+            '            <d n="SubKeys" t="Hashtable" />', '            <d n="Values" t="Hashtable" />',
+            "          </o>", "        </Data>", "        <TypeList>",
+            '          <Type n="Hashtable">System.Collections.Hashtable</Type>',
+            '          <Type n="OptionKey">{54dd0eac-a6d8-46f2-8c27-2f43c7e49861}</Type>',
+            '          <Type n="String">System.String</Type>', "        </TypeList>", "      </XmlArchive>",
+            "    </PlcProjectOptions>", "  </ProjectExtensions>"]
 
 
 def twincat_files(library):

@@ -4,7 +4,6 @@ import functools
 import json
 import os
 
-from pacexport.blarkparse import ParseCache
 from pacexport.cli import plcopen_file_name
 from pacexport.library import load_library
 from pacexport.metadata import read_library_info
@@ -17,7 +16,8 @@ def config():
 
 
 def cache():
-    return ParseCache(config()["cache"])
+    """The translator's parse cache directory (pacst.parsing), which the export shares."""
+    return config()["cache"]
 
 
 @functools.lru_cache(maxsize=None)

@@ -4,6 +4,8 @@ import dataclasses
 import re
 import unittest
 
+from pacst.parsing import parse_text
+
 from pacexport.model import EnumShape
 from pacexport.types import Derived, parse_type
 from tests import support
@@ -45,9 +47,8 @@ class DocsExamples(unittest.TestCase):
                            for name, _ in t.shape.values}
 
     def _programs(self):
-        cache = support.cache()
         for index, code in enumerate(self.blocks):
-            for node in cache.parse(code, "iec_source", f"docs/import.md example {index + 1}").items(False):
+            for node in parse_text(code, f"docs/import.md example {index + 1}", support.cache()).items(False):
                 yield node
 
     def test_there_are_examples_for_both_ides(self):

@@ -4,10 +4,9 @@ import unittest
 
 from lxml import etree
 
-from pacexport.blarkparse import source_items
-from pacexport.compare import canonical_items
+from pacexport.compare import canonical_items, source_items
 from pacexport.plcopen_names import PLAIN_TEXT, XHTML, q
-from pacexport.plcopen_read import read_plcopen
+from pacst.plcopen_read import read_plcopen
 from tests import support
 
 

@@ -6,8 +6,7 @@ import unittest
 from blark.solution import TwincatPlcProject
 from lxml import etree
 
-from pacexport.blarkparse import flatten, source_items
-from pacexport.compare import canonical_items
+from pacexport.compare import canonical_items, flatten, parse_item, source_items
 from pacexport.twincat import FILE_KINDS, guid
 from tests import support
 
@@ -57,7 +56,7 @@ class TwincatBlark(unittest.TestCase):
         for global_list in self.library.global_lists:
             read = self.sources[global_list.source.name].contents
             (item,) = flatten(read.to_blark())
-            (node,) = cache.parse_item(item, str(read.filename)).items(comments=True)
+            (node,) = parse_item(cache, item, str(read.filename)).items(comments=True)
             self.assertEqual(node.attribute_pragmas, ["qualified_only"])
 
     def test_object_ids_follow_from_names_and_differ(self):

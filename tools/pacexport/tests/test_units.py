@@ -5,20 +5,20 @@ import unittest
 
 from lxml import etree
 
-from pacexport.blarkparse import ParseCache, source_items
+from pacexport.compare import canonical_items, source_items
 from pacexport.cli import export
-from pacexport.compare import canonical_items
 from pacexport.errors import ExportError
 from pacexport.library import load_library
 from pacexport.metadata import LibraryInfo
-from pacexport.plcopen_read import read_plcopen
+from pacexport.plcopen_names import ENUM_VALUE_DOCUMENTATION, OBJECT_ID, PLAIN_TEXT, PROJECT_STRUCTURE, XHTML, q
+from pacst.plcopen_read import read_plcopen
 from pacexport.schema import load_schema, schema_errors
 from pacexport.splitting import split_source
 from pacexport.twincat import cdata, guid
 from pacexport.types import ArrayType, Derived, Elementary, StringType, parse_type, type_text
 from tests import support
 
-INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "Shapes st/ does not use yet.")
+INFO = LibraryInfo("T_LIB", "Test library", "1.2.3", "2020-01-02", "Nobody", "MIT", "Shapes st/ does not use yet.")
 
 SOURCES = {
     "T_Image.st": "TYPE T_Image : ARRAY[0..7, -1..1] OF BYTE;\nEND_TYPE\n",
@@ -29,11 +29,16 @@ SOURCES = {
     "F_Pick.st": "FUNCTION F_Pick : STRING(20)\nVAR_INPUT\n  Which : BOOL;\nEND_VAR\n"
                  "IF Which THEN\n  F_Pick := 'END_VAR (* not a comment';\nELSE\n  F_Pick := '';\nEND_IF;\n"
                  "END_FUNCTION\n",
-    "FB_Shapes.st": "FUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n  T : TIME := T#1S;\nEND_VAR\n"
+    "FB_Shapes.st": "(* Shapes. *)\nFUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n  A, B : INT := -5;\n"
+                    "  T : TIME := T#1S;\nEND_VAR\n"
                     "VAR_IN_OUT\n  Pair : S_Pair;\nEND_VAR\nVAR\n  Timer : TON;\nEND_VAR\n"
                     "VAR_TEMP\n  Sum : DINT;\nEND_VAR\n(* END_VAR in a comment *)\nSum := INT_TO_DINT(A + B);\n"
                     "Timer(IN := Sum > 0, PT := T);\nPair.a := A;\nEND_FUNCTION_BLOCK\n",
-    "GVL_Test.st": "VAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n  NAME : STRING := 'x';\nEND_VAR\n",
+    "E_Commented.st": "(* Colours. *)\nTYPE E_Commented :\n(\n  RED,  (* stop *)\n  GREEN := 5,  (* go *)\n  BLUE\n);\n"
+                      "END_TYPE\n",
+    # A global list: the export adds its pragma.
+    "GVL_Test.st": "VAR_GLOBAL CONSTANT\n  LIMIT : INT := 10;  (* the limit *)\n"
+                   "  NAME : STRING := 'x';\nEND_VAR\n",
 }
 
 
@@ -58,6 +63,13 @@ class Splitting(unittest.TestCase):
     def test_two_objects_in_a_file_are_refused(self):
         with self.assertRaises(ExportError):
             split_source("x.st", SOURCES["T_Image.st"] + SOURCES["T_Name.st"])
+
+    def test_the_translators_lexer_cuts_and_refuses(self):
+        # One lexer (pacst.lexcheck): what the translator refuses, the export refuses, at the same place.
+        with self.assertRaisesRegex(ExportError, r"x\.st: 3:3: '//' comment"):
+            split_source("x.st", "FUNCTION_BLOCK FB_X\nVAR\n  // no\n  X : INT;\nEND_VAR\nX := 1;\nEND_FUNCTION_BLOCK\n")
+        with self.assertRaisesRegex(ExportError, "pragma"):
+            split_source("x.st", "{attribute 'hide'}\nTYPE T : INT;\nEND_TYPE\n")
 
     def test_a_pou_without_a_body_is_refused(self):
         with self.assertRaises(ExportError):
@@ -101,7 +113,7 @@ class UnusedShapes(unittest.TestCase):
     def setUpClass(cls):
         cls.directory = tempfile.TemporaryDirectory()
         paths = _write_sources(cls.directory.name)
-        cls.cache = ParseCache(support.config()["cache"])
+        cls.cache = support.config()["cache"]
         cls.image = paths["T_Image.st"]
         gvl = paths.pop("GVL_Test.st")
         cls.library = load_library(INFO, list(paths.values()), [gvl], cls.cache)
@@ -136,6 +148,53 @@ class UnusedShapes(unittest.TestCase):
         root = etree.fromstring(self.data)
         values = {v.get("value") for v in root.iter("{*}simpleValue")}
         self.assertLessEqual({"T#1S", "-5", "'x'", "VAL_TWO", "'abc'", "3", "10"}, values)
+
+    def test_the_parses_are_in_the_translators_cache(self):
+        with tempfile.TemporaryDirectory() as cache:
+            load_library(INFO, [self.image], [], cache)
+            self.assertTrue(any(n.startswith("text-") and n.endswith(".pickle") for n in os.listdir(cache)))
+
+    def _object(self, tag, name):
+        (element,) = [e for e in etree.fromstring(self.data).iter(q(tag)) if e.get("name") == name]
+        return element
+
+    def _data(self, element, name):
+        return [d for d in element.iterfind(f"{q('addData')}/{q('data')}") if d.get("name") == name]
+
+    def test_enumeration_value_comments_are_enum_value_documentation(self):
+        (data,) = self._data(self._object("dataType", "E_Commented"), ENUM_VALUE_DOCUMENTATION)
+        docs = [(v.findtext(q("Name")), "".join(v.find(q("Documentation")).itertext()).strip())
+                for v in data.iter(q("EnumValue"))]
+        self.assertEqual(docs, [("RED", "stop"), ("GREEN", "go")])
+
+    def test_the_pou_header_is_the_interface_documentation_and_nowhere_else(self):
+        pou = self._object("pou", "FB_Shapes")
+        self.assertEqual(pou.findtext(f"{q('interface')}/{q('documentation')}/{{{XHTML}}}xhtml"), "Shapes.")
+        self.assertIsNone(pou.find(q("documentation")))
+        (plain,) = self._data(pou, PLAIN_TEXT)
+        self.assertEqual("".join(plain.itertext()).count("Shapes."), 1)
+
+    def test_the_pragma_of_a_global_list_is_written_once(self):
+        gvl = self._object("globalVars", "GVL_Test")
+        (plain,) = self._data(gvl, PLAIN_TEXT)
+        self.assertEqual("".join(plain.itertext()).count("{attribute 'qualified_only'}"), 1)
+        self.assertEqual([a.get("Name") for a in gvl.iter(q("Attribute"))], ["qualified_only"])
+        with open(os.path.join(self.out, "twincat", "GVLs", "GVL_Test.TcGVL"), encoding="utf-8-sig") as f:
+            self.assertEqual(f.read().count("{attribute 'qualified_only'}"), 1)
+
+    def test_the_project_structure_holds_every_object_once_by_its_id(self):
+        root = etree.fromstring(self.data)
+        ids = {}
+        for data in root.iter(q("data")):
+            if data.get("name") == OBJECT_ID:
+                owner = data.getparent().getparent()
+                ids[owner.get("name") or "Library Manager"] = data.findtext(q("ObjectId"))
+        (structure,) = [d for d in root.iter(q("data")) if d.get("name") == PROJECT_STRUCTURE]
+        listed = {o.get("Name"): o.get("ObjectId") for o in structure.iter(q("Object"))}
+        self.assertEqual(len(listed), len(list(structure.iter(q("Object")))))
+        self.assertEqual(listed, ids)
+        self.assertEqual(set(listed) - {"Library Manager"}, {o.source.name for o in self.library.objects()})
+        self.assertEqual(listed["FB_Shapes"], guid("POU", "FB_Shapes").strip("{}"))
 
     def test_an_object_named_twice_is_refused(self):
         with self.assertRaises(ExportError):

@@ -16,8 +16,8 @@
 
 #include "controller_setup.hpp"
 #include "gvl_names.hpp"
-#include "pac/bench_trace.hpp"
-#include "pac/pac_plc_bench.hpp"
+#include "pac/rig_trace.hpp"
+#include "pac/pac_rig.hpp"
 #include "pac/trace_recorder.hpp"
 #include "pac/vcd_writer.hpp"
 #include "scenario_error.hpp"
@@ -170,7 +170,7 @@ void AddSignal(pac::TraceRecorder& recorder, const Signal& s) {
 }
 
 // Where each simulated axis really is (the bus modules are the rig's TraceBusModules).
-void AddAxisPositions(pac::TraceRecorder& recorder, pac::PacPlcBench& plc) {
+void AddAxisPositions(pac::TraceRecorder& recorder, pac::PacRig& plc) {
     for (int k = 1; k <= plc.Layout().axisModules; ++k) {
         recorder.AddReal("sim.axis" + std::to_string(k) + ".Position",
                          [&plc, k] { return plc.Controller().Axes().Motion(k).Position(); });
@@ -187,7 +187,7 @@ int Run(const Options& options, const Project& project) {
 
     TestRecord record;
     running = &record;
-    pac::PacPlcBench plc(pac::scenario::BenchTiming(scenario.timing),
+    pac::PacRig plc(pac::scenario::RigTimingOf(scenario.timing),
                          pac::scenario::ControllerConfig(scenario.controller), pac::scenario::Layout(scenario.modules));
     const int base = scenario.timing.plcCycleMs;
     project.init();

@@ -1,4 +1,4 @@
-// pac-test's host: runs one test of a user's machine program scan by scan on the rig (PacPlcBench) against
+// pac-test's host: runs one test of a user's machine program scan by scan on the rig (PacRig) against
 // the simulated PA-CONTROL, and writes its result (docs/user_tests.md). pac-test generates the part that
 // knows the user's program (the Project: its tasks, tests, bus images and signals) and links it with
 // this core; one process runs one test, so every test starts from a PLC and a controller at power-on.

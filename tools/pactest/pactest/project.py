@@ -8,14 +8,13 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..")
 VOCABULARY = os.path.join(ROOT, "tools", "pactest", "st")
 HOST = os.path.join(ROOT, "tools", "pactest", "host")
 
-# The static libraries the host links, in link order, each under one of its names (the rig and the
-# simulator moved folders once; either build layout is found).
-LIBRARIES = [("pac_scenario_lib",), ("pac_names",), ("pac_rig", "pac_bench"), ("pac_st",), ("pac_sim",),
-             ("pac_runtime",)]
-# Where a build tree keeps them (not below: build/ holds the other presets' trees, build/debug...).
-LIBRARY_DIRS = ["scenario", "runtime/names", "rig", "runtime/bench", "st", "sim", "runtime/sim", "runtime"]
-INCLUDES = ["runtime/include", "runtime/sim/include", "sim/include", "runtime/bench/include", "rig/include",
-            "runtime/names/include", "scenario", "translator/pacst/include"]
+# The static libraries the host links, in link order, and where a build tree keeps them (not below:
+# build/ holds the other presets' trees, build/debug...).
+LIBRARIES = ["pac_scenario_lib", "pac_names", "pac_rig", "pac_st", "pac_sim", "pac_runtime"]
+LIBRARY_DIRS = {"pac_scenario_lib": "scenario", "pac_names": "runtime/names", "pac_rig": "rig", "pac_st": "st",
+                "pac_sim": "sim", "pac_runtime": "runtime"}
+INCLUDES = ["runtime/include", "sim/include", "rig/include", "runtime/names/include", "scenario",
+            "translator/pacst/include"]
 
 
 def library_sources():
@@ -57,13 +56,12 @@ class PacBuild:
         self.sanitize = self.cache.get("PAC_SANITIZE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
         self.libraries = []
         missing = []
-        for names in LIBRARIES:
-            found = [os.path.join(self.folder, d, f"lib{n}.a") for n in names for d in LIBRARY_DIRS
-                     if os.path.exists(os.path.join(self.folder, d, f"lib{n}.a"))]
-            if found:
-                self.libraries.append(found[0])
+        for name in LIBRARIES:
+            path = os.path.join(self.folder, LIBRARY_DIRS[name], f"lib{name}.a")
+            if os.path.exists(path):
+                self.libraries.append(path)
             else:
-                missing.append(names[0])
+                missing.append(name)
         if missing:
             raise SystemExit(f"pac-test: {self.folder} lacks {', '.join(missing)}: build them first "
                              f"(cmake --build {self.folder} --target pac_scenario_lib)")
@@ -76,4 +74,4 @@ class PacBuild:
         return {os.path.splitext(n)[0] for n in os.listdir(self.library_c) if n.endswith(".c")}
 
     def include_dirs(self):
-        return [os.path.join(ROOT, d) for d in INCLUDES if os.path.isdir(os.path.join(ROOT, d))]
+        return [os.path.join(ROOT, d) for d in INCLUDES]

@@ -94,6 +94,61 @@ static inline int __pacst_string_eq(STRING a, STRING b) {
     return 1;
 }
 
+/* The standard string functions of user programs (pacst --user): positions count from 1, a result
+ * keeps at most STR_MAX_LEN characters, a position or length outside the string is clamped to it. */
+static inline long __pacst_str_clamp(long v, long lo, long hi) { return v < lo ? lo : v > hi ? hi : v; }
+static inline STRING __pacst_str_part(STRING s, long from, long count) {
+    STRING r;
+    long i;
+    from = __pacst_str_clamp(from, 0, s.len);
+    count = __pacst_str_clamp(count, 0, s.len - from);
+    r.len = (uint8_t)count;
+    for (i = 0; i < STR_MAX_LEN; i++) r.body[i] = (uint8_t)(i < count ? s.body[from + i] : 0);
+    return r;
+}
+static inline STRING __pacst_str_concat(STRING a, STRING b) {
+    long i, n = a.len;
+    for (i = 0; i < b.len && n < STR_MAX_LEN; i++) a.body[n++] = b.body[i];
+    a.len = (uint8_t)n;
+    return a;
+}
+static inline INT __pacst_str_len(STRING s) { return (INT)s.len; }
+static inline STRING __pacst_str_limit(STRING s, long n) { return __pacst_str_part(s, 0, n); }
+static inline STRING __pacst_str_left(STRING s, long l) { return __pacst_str_part(s, 0, l); }
+static inline STRING __pacst_str_right(STRING s, long l) {
+    l = __pacst_str_clamp(l, 0, s.len);
+    return __pacst_str_part(s, s.len - l, l);
+}
+static inline STRING __pacst_str_mid(STRING s, long l, long p) {
+    if (p < 1 || p > s.len) return __pacst_str_part(s, 0, 0);
+    return __pacst_str_part(s, p - 1, l);
+}
+static inline INT __pacst_str_find(STRING s, STRING what) {
+    long i, j;
+    if (what.len == 0) return 0;
+    for (i = 0; i + what.len <= s.len; i++) {
+        for (j = 0; j < what.len && s.body[i + j] == what.body[j]; j++) {
+        }
+        if (j == what.len) return (INT)(i + 1);
+    }
+    return 0;
+}
+static inline STRING __pacst_str_replace(STRING s, STRING with, long l, long p) {
+    p = __pacst_str_clamp(p, 1, (long)s.len + 1);
+    l = __pacst_str_clamp(l, 0, (long)s.len - (p - 1));
+    return __pacst_str_concat(__pacst_str_concat(__pacst_str_part(s, 0, p - 1), with),
+                              __pacst_str_part(s, p - 1 + l, s.len));
+}
+static inline STRING __pacst_str_insert(STRING s, STRING with, long p) {
+    p = __pacst_str_clamp(p, 0, s.len);
+    return __pacst_str_concat(__pacst_str_concat(__pacst_str_part(s, 0, p), with), __pacst_str_part(s, p, s.len));
+}
+static inline STRING __pacst_str_delete(STRING s, long l, long p) {
+    STRING none;
+    none.len = 0;
+    return __pacst_str_replace(s, none, l, p);
+}
+
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
 extern TIME __CURRENT_TIME;
 extern BOOL __DEBUG;

@@ -1,0 +1,226 @@
+// pacst's user-program mode on the command line: what needs several files (a name two global lists
+// declare, files in any order), TwinCAT and PLCopen inputs, `pacst matiec`, --native only with --user.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "translator_runner.hpp"
+#include "translator_scratch.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using pac::test::RunTranslator;
+
+class TranslatorUserCli : public pac::test::TranslatorScratch {
+protected:
+    TranslatorUserCli() : TranslatorScratch("user_") {}
+};
+
+const char* kMain =
+    "PROGRAM PRG_Main\n"
+    "VAR N : INT; END_VAR\n"
+    "N := Count;\n"
+    "END_PROGRAM\n";
+
+TEST_F(TranslatorUserCli, NameOfTwoGlobalListsMustBeQualified) {
+    auto a = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
+    auto b = Write("GVL_B.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", kMain);
+    auto result = RunTranslator({"build", "--user", "--out", Out(), a, b, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(main + ":3:6: error: 'Count' is declared in the global lists GVL_A, GVL_B: "
+                                        "qualify it (List.Name)"),
+              std::string::npos)
+        << result.output;
+    EXPECT_FALSE(Generated("symbols.json"));
+    auto qualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nN := GVL_B.Count;\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), a, b, qualified});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(Generated("symbols.json"));
+}
+
+TEST_F(TranslatorUserCli, FilesMayComeInAnyOrder) {
+    // TwinCAT and CODESYS keep no declaration order: user mode finds it (`pacst order`), and a POU may use
+    // a global of any list.
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; Lamp : FB_Lamp; END_VAR\nN := Count;\n"
+                                     "Point.X := N;\nLamp(On := TRUE);\nEND_PROGRAM\n");
+    auto fb = Write("FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nPoint.X := 1;\n"
+                                  "END_FUNCTION_BLOCK\n");
+    auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT := 3;\n  Point : ST_Point;\nEND_VAR\n");
+    auto type = Write("ST_Point.st", "TYPE ST_Point :\nSTRUCT\n  X : INT;\nEND_STRUCT;\nEND_TYPE\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), main, fb, list, type});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    result = RunTranslator({"build", "--out", Out(), main, fb, list, type});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps its declaration order (MATIEC)";
+}
+
+TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
+    auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", kMain);
+    auto result = RunTranslator({"build", "--out", Out(), list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(list + ":1:1: error: VAR_GLOBAL is outside the subset"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find(main + ":1:1: error: PROGRAM is outside the library's subset"), std::string::npos)
+        << result.output;
+    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    ASSERT_EQ(RunTranslator({"build", "--out", Out(), fb}).exitCode, 0);
+    EXPECT_FALSE(Generated("symbols.json"));
+    ASSERT_EQ(RunTranslator({"build", "--user", "--out", Out(), fb}).exitCode, 0);
+    EXPECT_TRUE(Generated("symbols.json"));
+}
+
+TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
+    auto native = Write("Asserts.st", "FUNCTION AssertTrue\nVAR_INPUT C : BOOL; END_VAR\n;\nEND_FUNCTION\n");
+    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    auto result = RunTranslator({"build", "--native", native, "--out", Out(), fb});
+    EXPECT_NE(result.exitCode, 0);
+    EXPECT_NE(result.output.find("need --user"), std::string::npos) << result.output;
+    result = RunTranslator({"build", "--user", "--native", native, "--out", Out(), fb});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_FALSE(Generated("Asserts.c")) << "the host implements a native FUNCTION";
+}
+
+std::string TcObject(const std::string& element, const std::string& name, const std::string& declaration,
+                     const std::string& body) {
+    std::string text = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
+                       "<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\r\n"
+                       "  <" + element + " Name=\"" + name + "\" Id=\"{0}\">\r\n"
+                       "    <Declaration><![CDATA[" + declaration + "]]></Declaration>\r\n";
+    if (!body.empty()) {
+        text += "    <Implementation>\r\n      <ST><![CDATA[" + body + "]]></ST>\r\n    </Implementation>\r\n";
+    }
+    return text + "  </" + element + ">\r\n</TcPlcObject>\r\n";
+}
+
+const char* kTcMainDeclaration = "PROGRAM MAIN\r\nVAR\r\n  Count : INT; // TwinCAT's comments\r\nEND_VAR\r\n";
+
+TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
+    fs::create_directories(dir_ / "POUs");
+    fs::create_directories(dir_ / "GVLs");
+    auto list = Write("GVLs/GVL_Io.TcGVL",
+                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n  MaxCount : INT := 3;\r\n"
+                                                "END_VAR\r\n", ""));
+    // Line 11 of the file (the body's CDATA opens on line 10), column 12: the undeclared name.
+    auto main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
+                                                  "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Nope;\r\nEND_IF"));
+    auto result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(main + ":11:12: error: undeclared name 'Nope'"), std::string::npos) << result.output;
+
+    main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
+                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF"));
+    auto project = Write("Plant.plcproj",
+                         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
+                         "<Project xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\r\n  <ItemGroup>\r\n"
+                         "    <Compile Include=\"POUs\\MAIN.TcPOU\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <Compile Include=\"GVLs\\GVL_Io.TcGVL\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <None Include=\"PlcTask.TcTTO\"><SubType>Code</SubType></None>\r\n"
+                         "  </ItemGroup>\r\n</Project>\r\n");
+    result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), project});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::ifstream c(dir_ / "out" / "MAIN.c");
+    std::string text((std::istreambuf_iterator<char>(c)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("#line 10 \"" + fs::absolute(main).string() + "\""), std::string::npos) << text;
+    EXPECT_TRUE(Generated("GVL_Io.c"));
+}
+
+TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
+    auto method = Write("FB_A.TcPOU",
+                        "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
+                        "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n]]></Declaration>\n"
+                        "    <Implementation><ST><![CDATA[;]]></ST></Implementation>\n"
+                        "    <Method Name=\"Reset\">\n    </Method>\n  </POU>\n</TcPlcObject>\n");
+    auto result = RunTranslator({"check", "--user", method});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(method + ":7:1: error: METHOD Reset of FB_A is outside pacst's user programs"),
+              std::string::npos)
+        << result.output;
+    auto ladder = Write("FB_B.TcPOU",
+                        "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_B\">\n"
+                        "    <Declaration><![CDATA[FUNCTION_BLOCK FB_B\n]]></Declaration>\n"
+                        "    <Implementation>\n      <LD></LD>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
+    result = RunTranslator({"check", "--user", ladder});
+    EXPECT_NE(result.output.find(ladder + ":7:1: error: FB_B is implemented in LD: pacst reads ST only"),
+              std::string::npos)
+        << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenProjectIsReadIntoStFiles) {
+    auto project = Write("plant.xml", R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <types><dataTypes/><pous>
+    <pou name="PRG_Main" pouType="program">
+      <interface><localVars><variable name="Count"><type><INT/></type></variable></localVars></interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">IF GVL_Io.Start THEN
+  Count := Count + 1;
+END_IF;</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <addData><data name="http://www.3s-software.com/plcopenxml/globalvars" handleUnknown="implementation">
+    <globalVars name="GVL_Io">
+      <variable name="Start" address="%IX0.1"><type><BOOL/></type></variable>
+      <variable name="Image" address="%IB2"><type><array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array></type></variable>
+    </globalVars>
+  </data></addData>
+</project>
+)");
+    auto sources = (dir_ / "sources").string();
+    auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), project});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(dir_ / "sources" / "PRG_Main.st"));
+    EXPECT_TRUE(fs::exists(dir_ / "sources" / "GVL_Io.st"));
+    std::ifstream symbols(dir_ / "out" / "symbols.json");
+    std::string text((std::istreambuf_iterator<char>(symbols)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"path\": \"GVL_Io.Image\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"address\": \"%IB2\""), std::string::npos) << text;
+}
+
+std::string ReadFile(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+TEST_F(TranslatorUserCli, MatiecSourceHasTheConfigurationTasksAndExternals) {
+    auto a = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\n  Image AT %IB0 : ARRAY [0..3] OF BYTE;\nEND_VAR\n");
+    auto b = Write("GVL_B.st", "VAR_GLOBAL\n  Count : INT := 7;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; Flag AT %MX0.1 : BOOL; END_VAR\n"
+                                     "N := GVL_B.Count + GVL_A.Count;\nImage[1] := BYTE#2;\nEND_PROGRAM\n");
+    auto tasks = Write("tasks.json", R"({"PRG_Main": {"task": "Fast", "interval": "T#5MS", "priority": 3}})");
+    auto out = (dir_ / "out" / "user.st").string();
+    auto result = RunTranslator({"matiec", "--tasks", tasks, "--out", out, main, b, a});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string st = ReadFile(out);
+    for (const char* want : {
+             "VAR\n  N : INT;\nEND_VAR\nVAR\n  Flag AT %MX0.1 : BOOL;\nEND_VAR\n",  // located: a block of its own
+             "VAR_EXTERNAL\n  GVL_B_Count : INT;\n  GVL_A_Count : INT;\n  Image : T_PacArray_BYTE_0_3;\nEND_VAR\n",
+             "N := GVL_B_Count + GVL_A_Count;\nImage[1] := BYTE#2;\nEND_PROGRAM",  // qualifiers spelled MATIEC's way
+             "TYPE T_PacArray_BYTE_0_3 : ARRAY [0..3] OF BYTE;\nEND_TYPE",
+             "CONFIGURATION PacConfig\n  VAR_GLOBAL\n",
+             "    GVL_B_Count : INT := 7;\n",
+             "    Image AT %IB0 : T_PacArray_BYTE_0_3;\n",
+             "  RESOURCE PacResource ON PLC\n    TASK Fast(INTERVAL := T#5MS, PRIORITY := 3);\n"
+             "    PROGRAM Inst_PRG_Main WITH Fast : PRG_Main;\n  END_RESOURCE\nEND_CONFIGURATION\n"}) {
+        EXPECT_NE(st.find(want), std::string::npos) << "missing:\n" << want << "\nin:\n" << st;
+    }
+}
+
+TEST_F(TranslatorUserCli, MatiecRefusesAFunctionThatReadsGlobals) {
+    auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Factor : INT := 3;\nEND_VAR\n");
+    auto scale = Write("F_Scale.st", "FUNCTION F_Scale : INT\nVAR_INPUT Raw : INT; END_VAR\nF_Scale := Raw * Factor;\n"
+                                     "END_FUNCTION\n");
+    auto result = RunTranslator({"check", "--user", list, scale});
+    EXPECT_EQ(result.exitCode, 0) << "pacst itself accepts it (CODESYS and TwinCAT do): " << result.output;
+    result = RunTranslator({"matiec", "--out", (dir_ / "out" / "user.st").string(), list, scale});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(scale + ":1:1: error: FUNCTION F_Scale uses global variables: MATIEC's FUNCTIONs "
+                                         "have no VAR_EXTERNAL"),
+              std::string::npos)
+        << result.output;
+}
+
+}  // namespace

@@ -1,0 +1,213 @@
+"""Reads a PLCopen XML project (TC6, as CODESYS and TwinCAT export it, and as the project's own export
+`pacexport` writes it) back into ST: one reader for the export's round trip and for pacst's user
+programs (`pacst build --user project.xml`).
+
+Declarations are rebuilt from the structured interface only (variable lists, types, initial values,
+addresses), never from CODESYS's declaration text, so what is read is what every PLCopen importer reads.
+Anything this reader does not know is an error, not a guess.
+"""
+import os
+from dataclasses import dataclass
+from typing import Optional
+
+from lxml import etree
+
+from .errors import StError
+
+# CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
+NS = "http://www.plcopen.org/xml/tc6_0200"
+XHTML = "http://www.w3.org/1999/xhtml"
+_CODESYS = "http://www.3s-software.com/plcopenxml/"
+ATTRIBUTES = _CODESYS + "attributes"  # {attribute '...'} pragmas
+GLOBAL_VARS = _CODESYS + "globalvars"  # a global variable list outside any configuration
+# CODESYS's extensions of a POU that ST without METHODs and ACTIONs has no place for.
+_POU_EXTENSIONS = {_CODESYS + "method": "METHOD", _CODESYS + "property": "PROPERTY",
+                   _CODESYS + "action": "ACTION", _CODESYS + "transition": "TRANSITION"}
+
+POU_KEYWORDS = {"functionBlock": "FUNCTION_BLOCK", "function": "FUNCTION", "program": "PROGRAM"}
+# PLCopen's variable lists and the ST keyword that opens each.
+SECTION_KEYWORDS = {"inputVars": "VAR_INPUT", "outputVars": "VAR_OUTPUT", "inOutVars": "VAR_IN_OUT",
+                    "localVars": "VAR", "tempVars": "VAR_TEMP", "externalVars": "VAR_EXTERNAL",
+                    "globalVars": "VAR_GLOBAL"}
+_ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", "LINT", "USINT", "UINT",
+               "UDINT", "ULINT", "REAL", "LREAL", "TIME", "DATE", "DT", "TOD"}
+
+
+def q(tag):
+    """A tag in the TC6 namespace."""
+    return f"{{{NS}}}{tag}"
+
+
+class PlcopenReadError(Exception):
+    pass
+
+
+@dataclass(frozen=True)
+class StObject:
+    kind: str  # dataType, function, functionBlock, program or globalVars
+    name: str
+    declaration: str
+    body: Optional[str]
+
+    def st(self):
+        """The object as the text of one ST file."""
+        if self.body is None:
+            return self.declaration
+        keyword = POU_KEYWORDS[self.kind]
+        return f"{self.declaration}{self.body.rstrip()}\nEND_{keyword}\n"
+
+
+def read_plcopen(data):
+    """All objects of a PLCopen XML document (bytes), types first, then POUs, then global lists."""
+    root = etree.fromstring(data)
+    if root.tag != q("project"):
+        raise PlcopenReadError(f"root element is {root.tag}, not a TC6 project in {NS}")
+    objects = [_data_type(e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
+    objects += [_pou(e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
+    for data in root.iterfind(f"{q('addData')}/{q('data')}"):
+        if data.get("name") == GLOBAL_VARS:
+            objects += [_global_list(e) for e in data.iterfind(q("globalVars"))]
+    return objects
+
+
+def extract(path, out_dir):
+    """Write each object of the PLCopen project `path` as `<out_dir>/<name>.st` (a global list's name is its
+    file's, as pacst names lists); returns the paths in the project's order. Raises StError."""
+    try:
+        with open(path, "rb") as f:
+            objects = read_plcopen(f.read())
+    except (OSError, etree.XMLSyntaxError, PlcopenReadError) as exc:
+        raise StError(path, getattr(exc, "lineno", None) or 1, 1, f"cannot read the PLCopen project: {exc}") from None
+    os.makedirs(out_dir, exist_ok=True)
+    paths = []
+    for obj in objects:
+        target = os.path.join(out_dir, obj.name + ".st")
+        text = obj.st()
+        try:
+            with open(target, encoding="utf-8") as f:
+                unchanged = f.read() == text
+        except OSError:
+            unchanged = False
+        if not unchanged:  # an unchanged file keeps its time, so a build recompiles nothing for it
+            with open(target, "w", encoding="utf-8") as f:
+                f.write(text)
+        paths.append(target)
+    return paths
+
+
+def _local(element):
+    return etree.QName(element).localname
+
+
+def _only_child(element, what):
+    children = [c for c in element if isinstance(c.tag, str)]
+    if len(children) != 1:
+        raise PlcopenReadError(f"{what} holds {len(children)} elements, not one")
+    return children[0]
+
+
+def _xhtml_text(holder):
+    xhtml = holder.find(f"{{{XHTML}}}xhtml")
+    if xhtml is None:
+        raise PlcopenReadError(f"{_local(holder)} without an xhtml element")
+    return "".join(xhtml.itertext())
+
+
+def type_text(type_holder):
+    """The ST spelling of the type a <type> (or <baseType>) element holds."""
+    element = _only_child(type_holder, _local(type_holder))
+    tag = _local(element)
+    if tag in _ELEMENTARY:
+        return tag
+    if tag in ("string", "wstring"):
+        length = element.get("length")
+        return tag.upper() + (f"({length})" if length else "")
+    if tag == "derived":
+        return element.get("name")
+    if tag == "array":
+        dims = ", ".join(f"{d.get('lower')}..{d.get('upper')}" for d in element.iterfind(q("dimension")))
+        return f"ARRAY[{dims}] OF {type_text(element.find(q('baseType')))}"
+    raise PlcopenReadError(f"type element <{tag}> has no ST form in this reader")
+
+
+def _initial(element):
+    holder = element.find(q("initialValue"))
+    if holder is None:
+        return None
+    value = _only_child(holder, "initialValue")
+    if _local(value) != "simpleValue":
+        raise PlcopenReadError(f"initial value <{_local(value)}> is not a simpleValue")
+    return value.get("value")
+
+
+def _declaration(variable):
+    initial = _initial(variable)
+    address = variable.get("address")
+    located = f" AT {address}" if address else ""
+    text = f"{variable.get('name')}{located} : {type_text(variable.find(q('type')))}"
+    return text if initial is None else f"{text} := {initial}"
+
+
+def _var_list(element, keyword):
+    opener = keyword + (" CONSTANT" if element.get("constant") == "true" else "")
+    lines = [opener] + [f"  {_declaration(v)};" for v in element.iterfind(q("variable"))] + ["END_VAR"]
+    return "\n".join(lines) + "\n"
+
+
+def _pou(element):
+    name, kind = element.get("name"), element.get("pouType")
+    if element.find(f"{q('actions')}/{q('action')}") is not None or \
+            element.find(f"{q('transitions')}/{q('transition')}") is not None:
+        raise PlcopenReadError(f"{name}: ACTIONs and TRANSITIONs have no place in the portable subset")
+    for data in element.iterfind(f"{q('addData')}/{q('data')}"):
+        if data.get("name") in _POU_EXTENSIONS:
+            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s have no place in the portable "
+                                   "subset: write a FUNCTION_BLOCK or FUNCTION")
+    header = f"{POU_KEYWORDS[kind]} {name}"
+    interface = element.find(q("interface"))
+    blocks = []
+    for child in interface if interface is not None else []:
+        tag = _local(child)
+        if tag == "returnType":
+            header += f" : {type_text(child)}"
+        elif tag in SECTION_KEYWORDS:
+            blocks.append(_var_list(child, SECTION_KEYWORDS[tag]))
+        elif tag not in ("addData", "documentation"):
+            raise PlcopenReadError(f"{name}: interface element <{tag}> is not read")
+    st = element.find(f"{q('body')}/{q('ST')}")
+    if st is None:
+        raise PlcopenReadError(f"{name}: no ST body")
+    return StObject(kind, name, header + "\n" + "".join(blocks), _xhtml_text(st))
+
+
+def _data_type(element):
+    name = element.get("name")
+    base = _only_child(element.find(q("baseType")), f"{name}'s baseType")
+    tag = _local(base)
+    initial = _initial(element)
+    suffix = "" if initial is None else f" := {initial}"
+    if tag == "enum":
+        values = ", ".join(v.get("name") + ("" if v.get("value") is None else f" := {v.get('value')}")
+                           for v in base.iterfind(f"{q('values')}/{q('value')}"))
+        enum_base = base.find(q("baseType"))
+        typed = "" if enum_base is None else f" {type_text(enum_base)}"
+        text = f"TYPE {name} : ({values}){typed}{suffix};\nEND_TYPE\n"
+    elif tag == "struct":
+        members = "".join(f"  {_declaration(v)};\n" for v in base.iterfind(q("variable")))
+        text = f"TYPE {name} :\nSTRUCT\n{members}END_STRUCT\nEND_TYPE\n"
+    else:
+        text = f"TYPE {name} : {type_text(element.find(q('baseType')))}{suffix};\nEND_TYPE\n"
+    return StObject("dataType", name, text, None)
+
+
+def _global_list(element):
+    pragmas = []
+    for data in element.iterfind(f"{q('addData')}/{q('data')}"):
+        if data.get("name") == ATTRIBUTES:
+            pragmas += [_pragma(a.get("Name"), a.get("Value")) for a in data.iter(q("Attribute"))]
+    text = "".join(pragmas) + _var_list(element, "VAR_GLOBAL")
+    return StObject("globalVars", element.get("name"), text, None)
+
+
+def _pragma(name, value):
+    return f"{{attribute '{name}' := '{value}'}}\n" if value else f"{{attribute '{name}'}}\n"

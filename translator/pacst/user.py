@@ -1,0 +1,229 @@
+"""The user-program mode's declarations (docs/translator.md, "User programs"): global variable lists,
+located variables, VAR_EXTERNAL, sized STRINGs and inline arrays. The library's subset refuses all of
+them; `pacst --user` accepts them on top of it for a PLC programmer's own machine program.
+
+Every global becomes one C variable of MATIEC's wrapper type (`__IEC_<type>_t <LIST>__<NAME>`), defined
+in the C file of the list's ST file and declared in POUS.h; each list has an init function
+(`<LIST>__init__`). A located variable keeps its own storage: the host copies the process image into
+it before a scan and out of it after (symbols.json gives its address).
+"""
+import os
+
+from . import types as T
+from .common import _cls, _name, pos
+from .names import reserved_reason
+
+# The largest STRING pacst and MATIEC hold (STR_MAX_LEN of pacst_iec.h and of MATIEC's headers).
+STRING_CAPACITY = 126
+_SIZE_BITS = {"X": 1, "B": 8, "W": 16, "D": 32, "L": 64}
+
+
+class GlobalVar(T.Var):
+    """A variable of a global list: `csym` is its C variable, `location` its parsed address or None."""
+
+    def __init__(self, name, type_, init, node, constant, gvl, location, strlen):
+        super().__init__(name, "global", type_, init, node, constant)
+        self.gvl = gvl
+        self.csym = f"{gvl.cname}__{name.upper()}"
+        self.location = location
+        self.strlen = strlen
+
+
+class GlobalList:
+    """One global variable list: a file's VAR_GLOBAL blocks, named like the file (TwinCAT's GVL name)."""
+
+    def __init__(self, name, file, line):
+        self.name = name
+        self.cname = name.upper()
+        self.file = file
+        self.line = line
+        self.vars = []
+
+    def var(self, name):
+        return T.find_var(self.vars, name)
+
+
+class Location:
+    """A parsed `AT %...` address: area I, Q or M; size X, B, W, D; the dotted numbers; or `%I*`."""
+
+    def __init__(self, text, area, size, numbers):
+        self.text = text
+        self.area = area
+        self.size = size
+        self.numbers = numbers  # [] for %I* / %Q*
+
+    def as_json(self):
+        return {"address": self.text, "area": self.area, "size": self.size, "numbers": self.numbers,
+                "bits": _SIZE_BITS.get(self.size)}
+
+
+def parse_location(comp, node, vtype):
+    """The Location of a blark location node, checked against the variable's type."""
+    text = str(node).replace("AT ", "").strip()
+    if _cls(node) == "IncompleteLocation":
+        return Location(text, text[1], None, [])
+    area = node.location_prefix.value
+    size = node.size_prefix.value if node.size_prefix is not None else "X"
+    numbers = [int(str(node.location))] + [int(str(b)) for b in (node.bits or [])]
+    if size == "L":
+        raise comp.err(node, f"{text}: 64-bit located variables are outside pacst's user programs")
+    if size == "X" and len(numbers) != 2:
+        raise comp.err(node, f"{text}: a bit address names the byte and the bit (%IX0.3)")
+    if size != "X" and len(numbers) != 1:
+        raise comp.err(node, f"{text}: only bit addresses have a bit number")
+    if size == "X" and not 0 <= numbers[1] <= 7:
+        raise comp.err(node, f"{text}: bit {numbers[1]} of a byte (0..7)")
+    elem = vtype.elem if vtype.is_array else vtype
+    bits = _SIZE_BITS[size]
+    fits = (elem.is_bool if bits == 1 else (elem.is_int or elem.is_bit) and elem.bits == bits)
+    if not fits or (vtype.is_array and bits == 1):
+        raise comp.err(node, f"{text} holds {bits} bit(s); {vtype.name} does not fit it (an elementary "
+                             f"type or array of {bits}-bit elements)")
+    return Location(text, area, size, numbers)
+
+
+def string_length(comp, spec):
+    """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
+    expr = spec.length.length
+    if _cls(expr) == "ParenthesizedExpression":
+        expr = expr.expr
+    if _cls(expr) != "Integer" or expr.type_name is not None:
+        raise comp.err(spec, "the length of a STRING is an integer literal")
+    n = int(str(expr.value).replace("_", ""))
+    if not 1 <= n <= STRING_CAPACITY:
+        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters")
+    return n
+
+
+def inline_array(comp, spec, file):
+    """The type of an inline `ARRAY [lo..hi] OF T`: one per bounds and element type, named as MATIEC
+    names it (`__ARRAY_OF_BYTE_8`; arrays of equal length share the C type)."""
+    if len(spec.subranges) != 1 or _cls(spec.subranges[0]) != "PartialSubrange":
+        raise comp.err(spec, "an inline ARRAY has one dimension with literal bounds")
+    sub = spec.subranges[0]
+    low, high = comp._literal_int(sub.start), comp._literal_int(sub.stop)
+    if low > high:
+        raise comp.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
+    elem = comp._spec_type(spec.type, allow_fb=False)
+    if elem.is_array:
+        raise comp.err(spec.type, "array of arrays: use an array of a STRUCT that holds the row")
+    key = (low, high, elem.cname)
+    t = comp.inline_arrays.get(key)
+    if t is None:
+        t = T.ArrayType(f"ARRAY [{low}..{high}] OF {elem.name}", low, high, elem)
+        t.cname = f"__ARRAY_OF_{elem.cname}_{high - low + 1}"
+        comp.inline_arrays[key] = t
+        comp.program.items.append(("type", t, file))
+    return t
+
+
+def var_type(comp, init, allow_fb):
+    """(type, STRING length or None) of a user variable's initialisation: inline arrays and sized
+    STRINGs besides what the library's subset declares."""
+    cls = _cls(init)
+    if cls == "ArrayTypeInitialization":
+        if init.indirection is not None:
+            raise comp.err(init, "pointers and references are outside pacst's user programs")
+        if init.value is not None:
+            raise comp.err(init.value, "array initial values are outside pacst's user programs: initialise in code")
+        return inline_array(comp, init.spec, comp.file), None
+    if cls == "StringTypeInitialization" or cls == "TypeInitialization":
+        spec = init.spec
+        tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
+        if _cls(tok) == "StringTypeSpecification" and str(tok.type_name).upper() == "STRING" \
+                and tok.length is not None:
+            return T.STRING, string_length(comp, tok)
+        if cls == "TypeInitialization":
+            return comp._spec_type(spec, allow_fb=allow_fb), None
+    raise comp.err(init, f"{cls} is outside pacst's user programs")
+
+
+def check_string_init(comp, var):
+    """A sized STRING's literal initial value fits its length."""
+    if var.strlen is not None and var.init is not None and _cls(var.init) == "String":
+        te = comp.literal_te(var.init, T.STRING)
+        length = int(te.code.rsplit(",", 1)[1].strip(" )"))
+        if length > var.strlen:
+            raise comp.err(var.init, f"initial value of {length} characters for a STRING({var.strlen})")
+
+
+def global_list(comp, block, src):
+    """Declare one VAR_GLOBAL block of a user global list."""
+    name = os.path.splitext(os.path.basename(src.path))[0]
+    attrs = block.attrs
+    flags = {a.name for a in type(attrs) if a in attrs} if attrs is not None else set()
+    if flags - {"constant", "retain", "persistent", "non_retain"}:
+        raise comp.err(block, f"VAR_GLOBAL {', '.join(sorted(flags))} is outside pacst's user programs")
+    constant = "constant" in flags
+    up = name.upper()
+    gvl = comp.gvls.get(up)
+    if gvl is None:
+        why = reserved_reason(name, True)
+        if why:
+            raise comp.err(block, f"global variable list {why}")
+        if up in comp.types or up in comp.pous or up in comp.enum_values:
+            raise comp.err(block, f"global variable list '{name}' has the name of a type, POU or enumeration value")
+        gvl = comp.gvls[up] = GlobalList(name, src.path, pos(block)[0])
+        comp.program.items.append(("gvl", gvl, src.path))
+    elif gvl.file != src.path:
+        raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
+    for item in block.items:
+        spec = item.spec
+        vtype, strlen = var_type(comp, item.init, allow_fb=False)
+        value = getattr(item.init, "value", None)
+        location = parse_location(comp, spec.location, vtype) if spec.location is not None else None
+        if constant and value is None:
+            raise comp.err(item, "a global constant needs a value")
+        if constant and location is not None:
+            raise comp.err(spec.location, "a located variable cannot be CONSTANT")
+        if value is not None and not (vtype.is_elementary or vtype.is_enum):
+            raise comp.err(value, "initial values are only for elementary and enumeration variables")
+        for token in spec.variables:
+            vname = _name(token)
+            comp._check_ident(token, "global variable")
+            vup = vname.upper()
+            if gvl.var(vname) is not None:
+                raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
+            if vup in comp.types or vup in comp.pous or vup in comp.enum_values or vup in comp.gvls:
+                raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
+                                      "value or global list")
+            v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
+            if value is not None:
+                comp.init_code(v, "x")  # checks the initial value now
+                check_string_init(comp, v)
+            gvl.vars.append(v)
+            comp.globals.setdefault(vup, []).append(v)
+
+
+def lookup_global(comp, token):
+    """The global an unqualified name means in user mode, or None; several lists declaring it is an error."""
+    found = comp.globals.get(_name(token).upper(), [])
+    if len(found) > 1:
+        raise comp.err(token, f"'{_name(token)}' is declared in the global lists "
+                              f"{', '.join(v.gvl.name for v in found)}: qualify it (List.Name)")
+    return found[0] if found else None
+
+
+def external(comp, pou, block):
+    """Declare VAR_EXTERNAL: each names a global of the same type."""
+    constant = block.attrs is not None and "constant" in str(block.attrs).lower()
+    for item in block.items:
+        name = _name(item.name)
+        g = lookup_global(comp, item.name)
+        if g is None:
+            raise comp.err(item.name, f"VAR_EXTERNAL '{name}' names no global variable")
+        spec = item.spec
+        if _cls(spec) == "ArraySpecification":
+            t = inline_array(comp, spec, comp.file)
+        elif _cls(spec) == "SimpleSpecification" and _cls(spec.type) == "StringTypeSpecification":
+            t = T.STRING
+        else:
+            t = comp._spec_type(spec, allow_fb=False)
+        if t is not g.type:
+            raise comp.err(item.name, f"VAR_EXTERNAL '{name}' is {t.name}, the global {g.gvl.name}.{g.name} is "
+                                      f"{g.type.name}")
+        if pou.var(name) is not None or name.upper() in pou.externals:
+            raise comp.err(item.name, f"variable '{name}' is declared twice")
+        if g.constant and not constant:
+            raise comp.err(item.name, f"the global {g.gvl.name}.{g.name} is CONSTANT: declare VAR_EXTERNAL CONSTANT")
+        pou.externals[name.upper()] = (g, constant)
