@@ -19,6 +19,8 @@ from pactest.cli import shard_of  # noqa: E402
 
 PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
 OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
+EXAMPLE_TESTS = ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
+                 "FB_TestShowsAFailure", "FB_TestStopInput"]
 FIXTURE_TESTS = ["FB_TestBusByName", "FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses", "FB_TestWaitFails"]
 FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), scan (?P<scan>\d+), "
                      r"t=(?P<t>[\d.]+) ms: (?P<msg>.*)$")
@@ -300,38 +302,61 @@ def outcomes(stdout):
 
 
 class PlcopenRoundTripTest(unittest.TestCase):
-    """The fixture exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS would
-    export a project, and read back by pac-test: the same tests end the same way, with the same failures
-    in the same scans (at the lines of the ST files pac-test extracts from the XML)."""
+    """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
+    one, and read back by pac-test: the same tests end the same way, with the same failures in the same
+    scans (at the lines of the ST files pac-test extracts from the XML)."""
 
-    def test_same_results_from_the_plcopen_export(self):
-        folder = os.path.join(HERE, "fixture")
-        out = os.path.join(OUT, "roundtrip")
+    def round_trip(self, name, folder, sources, expected):
+        """Exports `sources` ({file name: ST text}), runs the wiring file of `folder` on the XML and on its
+        own sources, and compares."""
+        out = os.path.join(OUT, "roundtrip", name)
+        st = os.path.join(out, "st")
+        os.makedirs(st, exist_ok=True)
+        for file, text in sources.items():
+            with open(os.path.join(st, file), "w", encoding="utf-8") as f:
+                f.write(text)
         info = os.path.join(out, "library.json")
-        os.makedirs(out, exist_ok=True)
         with open(info, "w", encoding="utf-8") as f:
-            json.dump({"name": "PacTestFixture", "title": "pac-test fixture", "version": "1.0.0",
-                       "released": "2026-12-02", "company": "PA-CONTROL PLC library contributors",
-                       "license": "MIT", "description": "pac-test's own test project"}, f)
-        sources = sorted(n for n in os.listdir(folder) if n.endswith(".st"))
+            json.dump({"name": name, "title": name, "version": "1.0.0", "released": "2026-12-02",
+                       "company": "PA-CONTROL PLC library contributors", "license": "MIT",
+                       "description": "exported for pac-test's round trip"}, f)
         python = os.path.join(PAC_BUILD, "venv-pacexport", "bin", "python")
         env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.path.join(ROOT, "tools", "pacexport"),
                                                             os.path.join(ROOT, "translator")]))
         export = subprocess.run([python, "-m", "pacexport", "export", "--library", info, "--out",
-                                 os.path.join(out, "export"), *sources], cwd=folder, env=env,
+                                 os.path.join(out, "export"), *sorted(sources)], cwd=st, env=env,
                                 capture_output=True, text=True)
         self.assertEqual(export.returncode, 0, export.stderr)
         with open(os.path.join(folder, "wiring.json"), encoding="utf-8") as f:
             wiring = json.load(f)
-        wiring["sources"] = ["export/pactestfixture.xml"]
+        wiring["sources"] = [f"export/{name.lower()}.xml"]
         with open(os.path.join(out, "wiring.json"), "w", encoding="utf-8") as f:
             json.dump(wiring, f)
-        from_st = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "st"), "--no-coverage")
+        from_source = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "source"), "--no-coverage")
         from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
-        self.assertEqual(from_xml.returncode, from_st.returncode, from_xml.stdout + from_xml.stderr)
-        self.assertEqual(sorted(outcomes(from_st.stdout)), FIXTURE_TESTS, from_st.stdout)
-        self.assertEqual(sum(len(f) for _, _, f in outcomes(from_st.stdout).values()), 7, from_st.stdout)
-        self.assertEqual(outcomes(from_xml.stdout), outcomes(from_st.stdout))
+        self.assertEqual(from_xml.returncode, from_source.returncode, from_xml.stdout + from_xml.stderr)
+        found = outcomes(from_source.stdout)
+        self.assertEqual(sorted(found), expected[0], from_source.stdout)
+        self.assertEqual(sum(len(f) for _, _, f in found.values()), expected[1], from_source.stdout)
+        self.assertEqual(outcomes(from_xml.stdout), found)
+
+    def test_the_example_from_its_plcopen_export(self):
+        sys.path.insert(0, os.path.join(ROOT, "translator"))
+        from pacst import twincat  # the TwinCAT files as ST, as a CODESYS project would hold them
+        folder = os.path.join(ROOT, "examples", "pick_and_place")
+        sources = {}
+        for path in twincat.project_files(os.path.join(folder, "PickAndPlace", "PickAndPlace.plcproj")):
+            with open(path, encoding="utf-8-sig") as f:
+                sources[os.path.splitext(os.path.basename(path))[0] + ".st"] = twincat.object_st(f.read(), path)
+        self.round_trip("PickAndPlace", folder, sources, (EXAMPLE_TESTS, 1))
+
+    def test_the_fixture_from_its_plcopen_export(self):
+        folder = os.path.join(HERE, "fixture")
+        sources = {}
+        for file in sorted(n for n in os.listdir(folder) if n.endswith(".st")):
+            with open(os.path.join(folder, file), encoding="utf-8") as f:
+                sources[file] = f.read()
+        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7))
 
 
 class DocsCiJobsTest(unittest.TestCase):
@@ -350,9 +375,7 @@ class DocsCiJobsTest(unittest.TestCase):
             self.assertEqual(args[0], "wiring.json")
             run = pac_test(wiring, os.path.join(OUT, "pick_and_place_docs"), *args[1:], "--list", "--no-coverage")
             self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
-            self.assertEqual(run.stdout.split(), sorted(
-                n for n in ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
-                            "FB_TestShowsAFailure", "FB_TestStopInput"] if shard_of(n, 4) == 0))
+            self.assertEqual(run.stdout.split(), [n for n in EXAMPLE_TESTS if shard_of(n, 4) == 0])
 
 
 if __name__ == "__main__":
