@@ -34,61 +34,53 @@ def _location_byte(g):
     return loc["numbers"][0]
 
 
-def _copy_module(lines_in, lines_out, symbols, module, where, image_in_size, image_out_size):
+def _memcpy(lines, side, ours, theirs, size):
+    """`ours` (the program's storage) from `theirs` for an input, `theirs` from `ours` for an output."""
+    destination, source = (ours, theirs) if side == "in" else (theirs, ours)
+    lines.append(f"    std::memcpy({destination}, {source}, {size});")
+
+
+def _copy_module(lines_in, lines_out, symbols, module):
     """The C++ lines that copy `module` between the bus image and the user's variable or located image."""
-    offset, size = module.offset(None), module.size
+    offset, size = module.offset(), module.size
     for side, lines in (("in", lines_in), ("out", lines_out)):
         target = module.image_in if side == "in" else module.image_out
-        path = f"{where}.{side}"
+        bus = f"{'fromPac' if side == 'in' else 'toPac'} + {offset}"
         if target.startswith("%"):
-            start = int(target[3:])
             image = "inImage" if side == "in" else "outImage"
-            limit = image_in_size if side == "in" else image_out_size
-            limit[0] = max(limit[0], start + size)
-            if side == "in":
-                lines.append(f"    std::memcpy({image} + {start}, fromPac + {offset}, {size});")
-            else:
-                lines.append(f"    std::memcpy(toPac + {offset}, {image} + {start}, {size});")
+            _memcpy(lines, side, f"{image} + {int(target[3:])}", bus, size)
         else:
-            g = symbols.global_var(target, path)
+            g = symbols.global_var(target, f"{module.where}.{side}")
             lines.append(f"    static_assert(sizeof {g['c_name']}.value == {size}, "
                          f"\"{target} is not the {size} bytes of the {module.kind} module\");")
-            if side == "in":
-                lines.append(f"    std::memcpy(&{g['c_name']}.value, fromPac + {offset}, {size});")
-            else:
-                lines.append(f"    std::memcpy(toPac + {offset}, &{g['c_name']}.value, {size});")
+            _memcpy(lines, side, f"&{g['c_name']}.value", bus, size)
 
 
-def _located_copies(symbols, copy_in, copy_out, image_in_size, image_out_size):
+def _located_copies(symbols, copy_in, copy_out):
     """Every located variable to and from the host's image of %I and %Q (little-endian, as the PLCs the
     project runs on: TwinCAT and CODESYS on x86 and ARM)."""
-    for area, lines, size in (("I", copy_in, image_in_size), ("Q", copy_out, image_out_size)):
+    for area, side, lines in (("I", "in", copy_in), ("Q", "out", copy_out)):
+        image = "inImage" if area == "I" else "outImage"
         for g in symbols.located(area):
             byte = _location_byte(g)
             if byte is None:
                 continue
-            loc = g["location"]
-            image = "inImage" if area == "I" else "outImage"
+            loc, var = g["location"], f"{g['c_name']}.value"
             if loc["size"] == "X":
                 bit = loc["numbers"][1] if len(loc["numbers"]) > 1 else 0
-                size[0] = max(size[0], byte + 1)
                 if area == "I":
-                    lines.append(f"    {g['c_name']}.value = (inImage[{byte}] >> {bit}) & 1;")
+                    lines.append(f"    {var} = (inImage[{byte}] >> {bit}) & 1;")
                 else:
                     lines.append(f"    outImage[{byte}] = (outImage[{byte}] & ~(1u << {bit})) | "
-                                 f"(({g['c_name']}.value & 1u) << {bit});")
+                                 f"(({var} & 1u) << {bit});")
                 continue
             if loc["size"] != "B":
                 # CODESYS numbers %IW and %ID by word and double word, TwinCAT by byte: rather than guess
                 # which the program was written for, pac-test asks for byte addresses.
                 raise WiringError(g["path"], f"located at {loc['address']}: pac-test copies byte (%IB, %QB) and "
                                              "bit (%IX, %QX) addresses only; declare the image as bytes")
-            lines.append(f"    static_assert({byte} + sizeof {g['c_name']}.value <= 256, "
-                         f"\"{g['path']} beyond %{area}B255\");")
-            if area == "I":
-                lines.append(f"    std::memcpy(&{g['c_name']}.value, {image} + {byte}, sizeof {g['c_name']}.value);")
-            else:
-                lines.append(f"    std::memcpy({image} + {byte}, &{g['c_name']}.value, sizeof {g['c_name']}.value);")
+            lines.append(f"    static_assert({byte} + sizeof {var} <= 256, \"{g['path']} beyond %{area}B255\");")
+            _memcpy(lines, side, f"&{var}", f"{image} + {byte}", f"sizeof {var}")
 
 
 def _signals(symbols, wanted):
@@ -144,11 +136,10 @@ def generate(symbols, wiring, tests):
             calls.append(f"Run_{p['c_type']}")
         task_lines.append(f"        {{\"{task['name']}\", {task['cycle_ms']}, {{{', '.join(calls)}}}}},")
     copy_in, copy_out = [], []
-    image_in, image_out = [0], [0]
     for m in wiring.modules:
-        _copy_module(copy_in, copy_out, symbols, m, m.where, image_in, image_out)
+        _copy_module(copy_in, copy_out, symbols, m)
     located_in, located_out = [], []
-    _located_copies(symbols, located_in, located_out, image_in, image_out)
+    _located_copies(symbols, located_in, located_out)
     out = ["// Generated by pac-test from the symbol table and the wiring file. Do not edit.",
            "#include <cstdint>", "#include <cstring>", "", "#include \"POUS.h\"", "#include \"pactest_host.hpp\"",
            "", "namespace {", ""]

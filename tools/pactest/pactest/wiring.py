@@ -55,7 +55,7 @@ class Module:
         self.image_in, self.image_out = value["in"], value["out"]
         self.size = 12 if kind == "axis" else 8
 
-    def offset(self, axes):
+    def offset(self):
         if self.kind == "cmd":
             return 0
         if self.kind == "ctrl":
