@@ -7,8 +7,6 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
-#include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -16,8 +14,8 @@
 
 #include "controller_setup.hpp"
 #include "gvl_names.hpp"
-#include "pac/rig_trace.hpp"
 #include "pac/pac_rig.hpp"
+#include "pac/rig_trace.hpp"
 #include "pac/trace_recorder.hpp"
 #include "pac/vcd_writer.hpp"
 #include "scenario_error.hpp"
@@ -187,8 +185,8 @@ int Run(const Options& options, const Project& project) {
 
     TestRecord record;
     running = &record;
-    pac::PacRig plc(pac::scenario::RigTimingOf(scenario.timing),
-                         pac::scenario::ControllerConfig(scenario.controller), pac::scenario::Layout(scenario.modules));
+    pac::PacRig plc(pac::scenario::RigTimingOf(scenario.timing), pac::scenario::ControllerConfig(scenario.controller),
+                    pac::scenario::Layout(scenario.modules));
     const int base = scenario.timing.plcCycleMs;
     project.init();
     plc.CallImage([&](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
