@@ -24,12 +24,19 @@ struct Timing {
     int bootMs = 50;  // the PA-CONTROL's boot after power-on: status 0, all-zero reply
 };
 
+// FB_PAC_Diagnosis on the CMD channel, after the other FBs, Enable TRUE from the first scan.
+struct DiagnosisSetup {
+    int axes = 0;      // FB_PAC_Diagnosis.Axes, 0..8
+    int pollMs = 500;  // FB_PAC_Diagnosis.PollTime
+};
+
 // The Profibus modules besides the CMD interface (manual 2.3): the CTRL interface and 0..8 axis
-// modules (which need the CTRL interface).
+// modules (which need the CTRL interface), and the diagnosis FB that watches them.
 struct Modules {
     bool ctrl = false;
     int axes = 0;
     bool mcBlocks = false;  // the axis modules run FB_PAC_McAxis and the PLCopen MC_ blocks, not FB_PAC_Axis
+    std::optional<DiagnosisSetup> diagnosis;
 };
 
 // Hardware limit switches of one axis, at machine positions (none fitted where empty).

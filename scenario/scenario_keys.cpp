@@ -10,7 +10,8 @@ const std::vector<ObjectKeys>& All() {
         // "$schema" names the JSON Schema for editors; the loader reads nothing from it.
         {"scenario", {"name", "description", "timing", "modules", "controller", "steps", "diagram", "$schema"}},
         {"timing", {"plc_cycle_ms", "pac_cycle_ms", "latency_cycles", "jitter_ms", "seed", "boot_ms"}},
-        {"modules", {"ctrl", "axes", "mc_blocks"}},
+        {"modules", {"ctrl", "axes", "mc_blocks", "diagnosis"}},
+        {"diagnosis", {"axes", "poll_ms"}},
         {"controller",
          {"operating_status", "n_registers", "r_registers", "inputs", "system_parameters", "axes_referenced",
           "limit_switches", "automatic_program"}},

@@ -108,7 +108,25 @@ private:
                 json::Refuse(object.PathOf("mc_blocks"), "the MC_ blocks run on axis modules: set \"axes\" to 1..8");
             }
         }
+        if (const Json* diagnosis = object.Find("diagnosis")) {
+            modules.diagnosis = ReadDiagnosis(*diagnosis, object.PathOf("diagnosis"));
+            if (modules.mcBlocks) {
+                json::Refuse(object.PathOf("diagnosis"), "FB_PAC_Diagnosis takes FB_PAC_Axis's status: not with \"mc_blocks\"");
+            }
+        }
         return modules;
+    }
+
+    static DiagnosisSetup ReadDiagnosis(const Json& value, const std::string& path) {
+        const json::Object object(value, path, keys::Of("diagnosis"), "diagnosis");
+        DiagnosisSetup setup;
+        if (const Json* axes = object.Find("axes")) {
+            setup.axes = static_cast<int>(json::Integer(*axes, object.PathOf("axes"), 0, 8));
+        }
+        if (const Json* poll = object.Find("poll_ms")) {
+            setup.pollMs = static_cast<int>(json::Integer(*poll, object.PathOf("poll_ms"), 1, 3600000));
+        }
+        return setup;
     }
 
     // Keys of a register or input table: element numbers 1..count.

@@ -73,6 +73,7 @@ public:
                 automatic_[k]->AXISOWNSMODULE.value = axisOwns ? TRUE : FALSE;
             });
         }
+        if (scenario.modules.diagnosis) CallDiagnosis(*scenario.modules.diagnosis);
         plc_.Start();
         ApplyControllerSetup(plc_.Controller(), scenario.controller);
     }
@@ -129,6 +130,19 @@ public:
     }
 
 private:
+    // FB_PAC_Diagnosis after the other FBs, on the same channel: this scan's axis statuses and system error
+    // number, as a PLC program wires them.
+    void CallDiagnosis(const DiagnosisSetup& setup) {
+        diag_->ENABLE.value = TRUE;
+        diag_->AXES.value = static_cast<INT>(setup.axes);
+        diag_->POLLTIME.value = ToTime(setup.pollMs);
+        diag_->CTRLINTERFACE.value = scenario_.modules.ctrl ? TRUE : FALSE;
+        plc_.Call(diag_, [this] {
+            diag_->CTRLSYSTEMERRORNUMBER.value = ctrl_->SYSTEMERRORNUMBER.value;
+            for (std::size_t k = 0; k < axes_.size(); ++k) diag_->AXISSTATUS.value.table[k] = axes_[k]->STATUS.value;
+        });
+    }
+
     void Scan() {
         plc_.Scan();
         ScanSample sample;
@@ -174,6 +188,18 @@ private:
             if (mc_) mc_->Fill(axis);
             axis.simPosition = plc_.Controller().Axes().Motion(axis.axis).Position();
             sample.axes.push_back(axis);
+        }
+        if (scenario_.modules.diagnosis) {
+            DiagSample diag;
+            diag.valid = diag_->VALID.value != 0;
+            diag.busy = diag_->BUSY.value != 0;
+            diag.error = diag_->ERROR.value != 0;
+            diag.errorId = static_cast<std::uint16_t>(diag_->ERRORID.value);
+            diag.opStatus = static_cast<std::uint8_t>(diag_->OPSTATUS.value);
+            diag.systemErrorNumber = static_cast<std::uint16_t>(diag_->SYSTEMERRORNUMBER.value);
+            diag.changeCount = static_cast<std::uint32_t>(diag_->CHANGECOUNT.value);
+            diag.historyCount = static_cast<std::uint32_t>(diag_->HISTORYCOUNT.value);
+            sample.diag = diag;
         }
         observer_.OnScan(sample);
     }
@@ -361,6 +387,7 @@ private:
     std::vector<pac::FbInstance<FB_PAC_AXIS>> axes_;  // never resized: plc_ holds references
     std::vector<pac::FbInstance<FB_PAC_AUTOMATICMODULE>> automatic_;  // on the same modules; never resized
     std::unique_ptr<McAxes> mc_;  // with Modules::mcBlocks, in place of axes_ (made once plc_ is)
+    pac::FbInstance<FB_PAC_DIAGNOSIS> diag_ = PAC_FB(FB_PAC_DIAGNOSIS);  // with Modules::diagnosis
     pac::PacRig plc_;
 };
 

@@ -49,6 +49,18 @@ struct AxisSample {
     double simPosition = 0.0;  // where the simulated axis really is (axis coordinates)
 };
 
+// FB_PAC_Diagnosis after one scan.
+struct DiagSample {
+    bool valid = false;
+    bool busy = false;
+    bool error = false;
+    std::uint16_t errorId = 0;
+    std::uint8_t opStatus = 0;
+    std::uint16_t systemErrorNumber = 0;
+    std::uint32_t changeCount = 0;
+    std::uint32_t historyCount = 0;
+};
+
 // The modules and their FBs after one scan.
 struct ScanSample {
     std::chrono::nanoseconds time{0};
@@ -63,6 +75,7 @@ struct ScanSample {
     std::uint32_t ackData = 0;
     std::optional<CtrlSample> ctrl;  // where the scenario has the CTRL interface
     std::vector<AxisSample> axes;    // one per axis module
+    std::optional<DiagSample> diag;  // where the scenario has FB_PAC_Diagnosis
 };
 
 // How one command ended.

@@ -71,6 +71,23 @@ ScenarioSignals::ScenarioSignals(const Modules& modules, TraceRecorder& recorder
     AddCmd();
     if (modules.ctrl) AddCtrl();
     for (int axis = 1; axis <= modules.axes; ++axis) AddAxis(axis);
+    if (modules.diagnosis) AddDiagnosis();
+}
+
+void ScenarioSignals::AddDiagnosis() {
+    using pac::sim::CommandFrame;
+    // The command the CMD module carries: the diagnosis's 1909 / 1910 are told from the others by it.
+    Add("cmd.Code", ValueFormat::kHex, 16, [](const ScanSample& s) { return CommandFrame::Decode(s.toPac).code; });
+    const std::string fb = "diag.FB_PAC_Diagnosis.";
+    const auto d = [](const ScanSample& s) -> const DiagSample& { return s.diag.value(); };
+    Add(fb + "Valid", ValueFormat::kBit, 1, [d](const ScanSample& s) { return d(s).valid; });
+    Add(fb + "Busy", ValueFormat::kBit, 1, [d](const ScanSample& s) { return d(s).busy; });
+    Add(fb + "Error", ValueFormat::kBit, 1, [d](const ScanSample& s) { return d(s).error; });
+    Add(fb + "ErrorID", ValueFormat::kErrorId, 16, [d](const ScanSample& s) { return d(s).errorId; });
+    Add(fb + "OpStatus", ValueFormat::kDecimal, 8, [d](const ScanSample& s) { return d(s).opStatus; });
+    Add(fb + "SystemErrorNumber", ValueFormat::kDecimal, 16, [d](const ScanSample& s) { return d(s).systemErrorNumber; });
+    Add(fb + "ChangeCount", ValueFormat::kDecimal, 32, [d](const ScanSample& s) { return d(s).changeCount; });
+    Add(fb + "HistoryCount", ValueFormat::kDecimal, 32, [d](const ScanSample& s) { return d(s).historyCount; });
 }
 
 void ScenarioSignals::Add(const std::string& path, ValueFormat format, int width,

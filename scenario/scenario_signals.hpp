@@ -47,6 +47,7 @@ private:
     void AddCmd();
     void AddCtrl();
     void AddAxis(int axis);
+    void AddDiagnosis();
     void Add(const std::string& path, ValueFormat format, int width, std::function<std::uint64_t(const ScanSample&)> read);
     void AddReal(const std::string& path, std::function<double(const ScanSample&)> read);
 

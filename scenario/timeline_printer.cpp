@@ -111,6 +111,10 @@ void TimelinePrinter::OnStart(const Scenario& scenario) {
     if (m.ctrl) out_ << ", FB_PAC_Ctrl on the CTRL interface";
     if (m.axes > 0 && m.mcBlocks) out_ << ", FB_PAC_McAxis and the MC_ blocks on each axis module";
     if (m.axes > 0 && !m.mcBlocks) out_ << ", an FB_PAC_Axis on each axis module";
+    if (m.diagnosis) {
+        out_ << ", FB_PAC_Diagnosis on the CMD channel (Axes " << m.diagnosis->axes << ", PollTime "
+             << m.diagnosis->pollMs << " ms)";
+    }
     out_ << "\n  a line for each scan in which the step's module or its FB's outputs changed\n\n";
     view_ = View::kCmd;
     viewAxes_.clear();

@@ -20,6 +20,7 @@ protected:
     TranslatorUserCli() : TranslatorScratch("user_") {}
 };
 
+const char* kCounter = "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n";
 const char* kMain =
     "PROGRAM PRG_Main\n"
     "VAR N : INT; END_VAR\n"
@@ -67,7 +68,7 @@ TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable
         << result.output;
     EXPECT_NE(result.output.find(main + ":1:1: error: PROGRAM is outside the library's subset"), std::string::npos)
         << result.output;
-    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    auto fb = Write("FB_Counter.st", kCounter);
     ASSERT_EQ(RunTranslator({"build", "--out", Out(), fb}).exitCode, 0);
     EXPECT_FALSE(Generated("symbols.json"));
     ASSERT_EQ(RunTranslator({"build", "--user", "--out", Out(), fb}).exitCode, 0);
@@ -76,13 +77,32 @@ TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable
 
 TEST_F(TranslatorUserCli, NativeNeedsUserMode) {
     auto native = Write("Asserts.st", "FUNCTION AssertTrue\nVAR_INPUT C : BOOL; END_VAR\n;\nEND_FUNCTION\n");
-    auto fb = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT N : INT; END_VAR\nN := N + 1;\nEND_FUNCTION_BLOCK\n");
+    auto fb = Write("FB_Counter.st", kCounter);
     auto result = RunTranslator({"build", "--native", native, "--out", Out(), fb});
     EXPECT_NE(result.exitCode, 0);
     EXPECT_NE(result.output.find("need --user"), std::string::npos) << result.output;
     result = RunTranslator({"build", "--user", "--native", native, "--out", Out(), fb});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_FALSE(Generated("Asserts.c")) << "the host implements a native FUNCTION";
+}
+
+TEST_F(TranslatorUserCli, LibraryConstantListIsAGlobalListOfUserPrograms) {
+    // As the library's GVL_PAC: checked against the POUs' own copies (--gvl) and read by the user's PROGRAM.
+    auto list = Write("GVL_K.st", "VAR_GLOBAL CONSTANT\n  K_STOP : WORD := WORD#16#0600;\nEND_VAR\n");
+    auto fb = Write("FB_Lib.st", "FUNCTION_BLOCK FB_Lib\nVAR_OUTPUT W : WORD; END_VAR\n"
+                                 "VAR CONSTANT K_STOP : WORD := WORD#16#0600; END_VAR\nW := K_STOP;\n"
+                                 "END_FUNCTION_BLOCK\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR A : WORD; B : WORD; END_VAR\nA := K_STOP;\n"
+                                     "B := GVL_K.K_STOP;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--gvl", list, "--out", Out(), list, fb, main});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(Generated("GVL_K.h")) << "the constants table";
+    EXPECT_TRUE(Generated("GVL_K.c")) << "the list's globals";
+}
+
+std::string ReadFile(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 std::string TcObject(const std::string& element, const std::string& name, const std::string& declaration,
@@ -102,9 +122,13 @@ const char* kTcMainDeclaration = "PROGRAM MAIN\r\nVAR\r\n  Count : INT; // TwinC
 TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     fs::create_directories(dir_ / "POUs");
     fs::create_directories(dir_ / "GVLs");
+    fs::create_directories(dir_ / "DUTs");
     auto list = Write("GVLs/GVL_Io.TcGVL",
-                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n  MaxCount : INT := 3;\r\n"
-                                                "END_VAR\r\n", ""));
+                      TcObject("GVL", "GVL_Io", "{attribute 'qualified_only'}\r\nVAR_GLOBAL\r\n"
+                                                "  MaxCount : INT := 3;\r\n  Where : ST_Point;\r\nEND_VAR\r\n", ""));
+    // TwinCAT writes END_STRUCT without ';'.
+    Write("DUTs/ST_Point.TcDUT", TcObject("DUT", "ST_Point", "TYPE ST_Point :\r\nSTRUCT\r\n  X : INT;\r\nEND_STRUCT\r\n"
+                                                            "END_TYPE\r\n", ""));
     // Line 11 of the file (the body's CDATA opens on line 10), column 12: the undeclared name.
     auto main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
                                                   "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Nope;\r\nEND_IF"));
@@ -113,12 +137,14 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     EXPECT_NE(result.output.find(main + ":11:12: error: undeclared name 'Nope'"), std::string::npos) << result.output;
 
     main = Write("POUs/MAIN.TcPOU", TcObject("POU", "MAIN", kTcMainDeclaration,
-                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF"));
+                                             "IF Count < GVL_Io.MaxCount THEN\r\n  Count := Count + 1;\r\nEND_IF\r\n"
+                                             "GVL_Io.Where.X := Count;"));
     auto project = Write("Plant.plcproj",
                          "<?xml version=\"1.0\" encoding=\"utf-8\"?>\r\n"
                          "<Project xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\r\n  <ItemGroup>\r\n"
                          "    <Compile Include=\"POUs\\MAIN.TcPOU\"><SubType>Code</SubType></Compile>\r\n"
                          "    <Compile Include=\"GVLs\\GVL_Io.TcGVL\"><SubType>Code</SubType></Compile>\r\n"
+                         "    <Compile Include=\"DUTs\\ST_Point.TcDUT\"><SubType>Code</SubType></Compile>\r\n"
                          "    <None Include=\"PlcTask.TcTTO\"><SubType>Code</SubType></None>\r\n"
                          "  </ItemGroup>\r\n</Project>\r\n");
     result = RunTranslator({"build", "--user", "--line-directives", "--out", Out(), project});
@@ -127,6 +153,7 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     std::string text((std::istreambuf_iterator<char>(c)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("#line 10 \"" + fs::absolute(main).string() + "\""), std::string::npos) << text;
     EXPECT_TRUE(Generated("GVL_Io.c"));
+    EXPECT_NE(ReadFile(dir_ / "out" / "POUS.h").find("} ST_POINT;"), std::string::npos) << "the .TcDUT's STRUCT";
 }
 
 TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
@@ -164,7 +191,9 @@ END_IF;</xhtml></ST></body>
   <addData><data name="http://www.3s-software.com/plcopenxml/globalvars" handleUnknown="implementation">
     <globalVars name="GVL_Io">
       <variable name="Start" address="%IX0.1"><type><BOOL/></type></variable>
-      <variable name="Image" address="%IB2"><type><array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array></type></variable>
+      <variable name="Image" address="%IB2"><type>
+        <array><dimension lower="0" upper="3"/><baseType><BYTE/></baseType></array>
+      </type></variable>
     </globalVars>
   </data></addData>
 </project>
@@ -180,10 +209,6 @@ END_IF;</xhtml></ST></body>
     EXPECT_NE(text.find("\"address\": \"%IB2\""), std::string::npos) << text;
 }
 
-std::string ReadFile(const fs::path& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 TEST_F(TranslatorUserCli, MatiecSourceHasTheConfigurationTasksAndExternals) {
     auto a = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\n  Image AT %IB0 : ARRAY [0..3] OF BYTE;\nEND_VAR\n");

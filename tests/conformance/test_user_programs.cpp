@@ -63,6 +63,7 @@ TEST_F(UserProgram, GlobalsStartFromTheirInitialValues) {
     EXPECT_EQ(Text(GVL_PLANT__BANNER.value), "ready");
     EXPECT_EQ(GVL_PLANT__MODE.value, E_USERMODE__UM_IDLE);
     EXPECT_EQ(GVL_PLANT__RECIPE.value.SPEED, 50);  // the STRUCT's member default
+    EXPECT_EQ(Text(GVL_PLANT__RECIPE.value.TAGS.table[1]), "");
     EXPECT_EQ(GVL_HMI__CYCLES.value, -1);
     EXPECT_EQ(GVL_PLANT__MAX_CYCLES.value, 3u);
     EXPECT_EQ(Text(GVL_PLANT__GREETING.value), "hello");
@@ -120,6 +121,8 @@ TEST_F(UserProgram, StandardStringFunctions) {
     EXPECT_EQ(Text(prg.CUT.value), "pick");
     EXPECT_TRUE(prg.SAME.value);
     EXPECT_TRUE(prg.DIFFERS.value);
+    EXPECT_EQ(Text(prg.PIN.value), "pic") << "an FB's STRING(3) input keeps 3 characters";
+    EXPECT_EQ(Text(prg.OUT2.value), "pi") << "an output assigned with => to a STRING(2) keeps 2";
 }
 
 // The line of the first occurrence of `marker` in the ST file `name` of user/ (1-based).
@@ -263,6 +266,10 @@ TEST_F(UserProgram, SymbolTableDescribesProgramsFunctionBlocksAndTypes) {
     EXPECT_EQ(ByKey(lamp.at("variables"), "name", "Enable").at("direction"), "input");
     EXPECT_EQ(ByKey(lamp.at("variables"), "name", "Count").at("direction"), "output");
     EXPECT_EQ(ByKey(lamp.at("externals"), "name", "LampOut").at("global"), "GVL_Plant.LampOut");
+    const auto& feedback = ByKey(lamp.at("variables"), "name", "Feedback").at("location");
+    EXPECT_EQ(feedback.at("address"), "%I*");
+    EXPECT_EQ(feedback.at("area"), "I");
+    EXPECT_TRUE(feedback.at("numbers").empty());
     EXPECT_EQ(ByKey(symbols.at("function_blocks"), "name", "TON").at("standard"), true);
 
     const auto& assertInt = ByKey(symbols.at("functions"), "name", "AssertEquals_INT");

@@ -12,6 +12,7 @@
 
 #include "bus_timing.hpp"
 #include "plcopen_checker.hpp"
+#include "plcopen_enable_checker.hpp"
 #include "plcopen_pins.hpp"
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
@@ -21,6 +22,8 @@ namespace {
 using namespace std::chrono_literals;
 using pac::test::BusTiming;
 using pac::test::CommandInputs;
+using pac::test::EnableOutputs;
+using pac::test::PlcOpenEnableChecker;
 using pac::test::PlcOpenChecker;
 using pac::test::PlcOpenOutputs;
 using pac::test::ProtocolWindow;
@@ -94,6 +97,29 @@ int Violations(const std::vector<ScanOf>& scans, std::optional<int> busyBound = 
     std::int64_t scan = 0;
     for (const ScanOf& s : scans) checker.Check(++scan, s.in, s.out, busyBound);
     return checker.Violations();
+}
+
+// ---- the Enable rules ---------------------------------------------------------------------------------
+
+// Runs the Enable checker over scans of {Enable, Valid, Busy, Error, ErrorID}.
+void EnableViolations(const std::vector<EnableOutputs>& scans) {
+    PlcOpenEnableChecker checker("FB");
+    std::int64_t scan = 0;
+    for (const auto& o : scans) checker.Check(++scan, o);
+}
+
+TEST(PlcOpenEnableChecker, KeptRulesAreSilent) {
+    EnableViolations({{false, false, false, false, 0}, {true, false, true, false, 0}, {true, true, true, false, 0},
+                      {true, false, false, true, 0x8003}, {true, true, true, false, 0}, {false, false, false, false, 0}});
+}
+
+TEST(PlcOpenEnableChecker, ReportsEachBrokenRule) {
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{true, true, false, true, 0x8003}}), "Valid and Error at once");
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{true, false, true, true, 0x8003}}), "Busy and Error at once");
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{true, false, false, true, 0}}), "ErrorID <> 0 not exactly with Error");
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{true, true, true, false, 5}}), "ErrorID <> 0 not exactly with Error");
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{false, true, false, false, 0}}), "a scan that saw Enable FALSE");
+    EXPECT_NONFATAL_FAILURE(EnableViolations({{false, false, true, false, 0}}), "a scan that saw Enable FALSE");
 }
 
 TEST(PlcOpenChecker, KeptRulesAreSilent) {

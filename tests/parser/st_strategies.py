@@ -67,7 +67,8 @@ DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : 
                 "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;", "s : STRING;", "s : STRING := 'x';",
                 "r : LREAL := -1.5;", "e : E_Mode := PAC_A;", "arr : T_Arr;", "u : LTIME;"] * 3 + [
                 "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
-BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + ["VAR_STAT"]
+BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + [
+    "VAR_STAT", "VAR_EXTERNAL", "VAR_EXTERNAL CONSTANT"]
 
 
 def declarations():
@@ -88,5 +89,7 @@ def pous(expr):
     fb = st.tuples(declarations(), body).map(lambda t: f"FUNCTION_BLOCK FB_X\n{t[0]}\n{t[1]}\nEND_FUNCTION_BLOCK")
     fn = st.tuples(st.sampled_from(["INT", "BOOL", "T_Arr", "STRING"]), declarations(), body).map(
         lambda t: f"FUNCTION F_X : {t[0]}\n{t[1]}\n{t[2]}\nEND_FUNCTION")
+    # User programs (pacst --user): PROGRAMs, with or without blocks and body.
+    prg = st.tuples(declarations(), body).map(lambda t: f"PROGRAM PRG_X\n{t[0]}\n{t[1]}\nEND_PROGRAM")
     types = st.lists(st.sampled_from(TYPES), max_size=2).map("\n".join)
-    return st.tuples(types, st.lists(fb | fn, min_size=1, max_size=2).map("\n".join)).map("\n".join)
+    return st.tuples(types, st.lists(fb | fn | prg, min_size=1, max_size=2).map("\n".join)).map("\n".join)

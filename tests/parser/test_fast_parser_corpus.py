@@ -1,5 +1,6 @@
 """The fast parser against blark's Earley parser on every ST file the project has: the library (st/,
-which must all take the fast path), the conformance suite's accepted and refused files, the MATIEC
+which must all take the fast path), the conformance suite's accepted and refused files (the user
+programs' too), the MATIEC
 verdict snippets and the damaged-input tests' own inputs. Each file's tree must equal Earley's
 exactly, or the file is declined (blark's parser then parses it). Run by ctest as FastParser.Corpus;
 the files are spread over the cores, since Earley needs several milliseconds per line, and Earley's
@@ -18,6 +19,11 @@ CORPORA = {
     "conformance accept": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "accept", "*.st"))),
     "conformance refuse": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse", "*.st"))),
     "matiec verdicts": sorted(glob.glob(os.path.join(VERDICTS, "*.st"))),
+    # User programs (pacst --user): PROGRAMs and VAR_EXTERNAL take the fast path; located variables,
+    # inline arrays and sized STRINGs are Earley's.
+    "user programs": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "user", "**", "*.st"),
+                                      recursive=True)),
+    "user refusals": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse_user", "*.st"))),
 }
 
 _ORACLE = None
@@ -60,6 +66,13 @@ class Corpus(unittest.TestCase):
     def test_the_library_takes_the_fast_path(self):
         self.assertTrue(CORPORA["library"])
         declined = [os.path.relpath(p, REPO) for p in CORPORA["library"] if self.results[p][0] != "same"]
+        self.assertEqual(declined, [])
+
+    def test_user_programs_without_located_variables_take_the_fast_path(self):
+        paths = [p for p in CORPORA["user programs"] if os.path.basename(p) in
+                 ("PRG_UserAsserts.st", "F_UserScale.st", "GVL_Hmi.st")]
+        self.assertEqual(len(paths), 3)
+        declined = [os.path.relpath(p, REPO) for p in paths if self.results[p][0] != "same"]
         self.assertEqual(declined, [])
 
     def test_the_conformance_suite_takes_the_fast_path(self):

@@ -483,6 +483,25 @@ TEST(ScenarioLoader, ReadsAndRefusesStepsOfTheMcBlocks) {
               R"($.steps[0].axes[0].command: unknown axis command "MC_Home" (one o)");
 }
 
+// "diagnosis": FB_PAC_Diagnosis's Axes and PollTime, defaults 0 and 500 ms; not with the MC_ blocks.
+TEST(ScenarioLoader, ReadsAndRefusesTheDiagnosis) {
+    const Scenario s = Load(R"({"modules": {"diagnosis": {"axes": 3, "poll_ms": 20}}, "steps": [{"wait_ms": 1}]})");
+    ASSERT_TRUE(s.modules.diagnosis.has_value());
+    EXPECT_EQ(s.modules.diagnosis->axes, 3);
+    EXPECT_EQ(s.modules.diagnosis->pollMs, 20);
+    const Scenario d = Load(R"({"modules": {"diagnosis": {}}, "steps": [{"wait_ms": 1}]})");
+    EXPECT_EQ(d.modules.diagnosis->axes, 0);
+    EXPECT_EQ(d.modules.diagnosis->pollMs, 500);
+    EXPECT_FALSE(Load(R"({"steps": [{"wait_ms": 1}]})").modules.diagnosis.has_value());
+    EXPECT_EQ(Refusal(R"({"modules": {"diagnosis": {"axes": 9}}, "steps": [{"wait_ms": 1}]})"),
+              "$.modules.diagnosis.axes: out of range: 9 is not in 0..8");
+    EXPECT_EQ(Refusal(R"({"modules": {"diagnosis": {"poll_ms": 0}}, "steps": [{"wait_ms": 1}]})"),
+              "$.modules.diagnosis.poll_ms: out of range: 0 is not in 1..3600000");
+    EXPECT_EQ(Refusal(R"({"modules": {"ctrl": true, "axes": 1, "mc_blocks": true, "diagnosis": {}}, )"
+                      R"("steps": [{"wait_ms": 1}]})"),
+              R"($.modules.diagnosis: FB_PAC_Diagnosis takes FB_PAC_Axis's status: not with "mc_blocks")");
+}
+
 TEST(ScenarioLoader, ReadsAutomaticStepsAndTheAutomaticProgram) {
     const Scenario s = Load(R"({
       "modules": {"ctrl": true, "axes": 2},

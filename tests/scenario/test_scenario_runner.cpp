@@ -186,6 +186,37 @@ TEST(ScenarioRunner, TheHandshakeHistoryShowsEveryCommandSent) {
     EXPECT_NE(out.find("  16#0906      3  16#0000014D       0  16#0000014D"), std::string::npos) << out;
 }
 
+// "diagnosis": FB_PAC_Diagnosis on the channel reads by command only what no module carries.
+TEST(ScenarioRunner, DiagnosisExampleReadsTheAxesThenTheSystemError) {
+    const ScenarioRun run(FromFile("examples/diag_poll.json"));
+    ASSERT_TRUE(run.report.Passed()) << run.timeline.str();
+    std::vector<int> axesRead(3, 0);
+    int errorReads = 0;
+    for (const auto& h : run.report.history) {
+        if (h.code == 0x1910 && h.param >= 1 && h.param <= 2) {
+            ++axesRead[h.param];
+        } else if (h.code == 0x1909) {
+            ++errorReads;
+            EXPECT_EQ(h.ackData, 529u);
+        } else {
+            EXPECT_EQ(h.code, 0x1906) << "a command the scenario did not ask for";
+        }
+    }
+    EXPECT_GE(axesRead[1], 1);
+    EXPECT_GE(axesRead[2], 1);
+    EXPECT_GE(errorReads, 1);
+    EXPECT_NE(run.timeline.str().find("FB_PAC_Diagnosis on the CMD channel (Axes 2, PollTime 20 ms)"), std::string::npos)
+        << run.timeline.str();
+}
+
+TEST(ScenarioRunner, DiagnosisWithEveryValueInAModuleSendsNoCommand) {
+    const ScenarioRun run(FromText(R"({"modules": {"ctrl": true, "axes": 2, "diagnosis": {"axes": 2, "poll_ms": 5}},
+        "steps": [{"wait_ms": 300}, {"fault": "system_error", "number": 529}, {"wait_ms": 100},
+                  {"command": "PAC_CMD_GET_INT_REG", "param": 3, "expect": {"done": true}}]})"));
+    ASSERT_TRUE(run.report.Passed()) << run.timeline.str();
+    EXPECT_EQ(run.report.handshakes, 1u) << run.timeline.str();
+}
+
 TEST(ScenarioRunner, LinkFaultExampleMeetsEveryExpectation) {
     const ScenarioRun run(FromFile("examples/link_faults.json"));
     EXPECT_TRUE(run.report.Passed()) << run.timeline.str();

@@ -191,10 +191,7 @@ class BodyCompiler:
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
         te = self.ex.expr(node.expression, r.type)
-        value = self.ex.coerce(te, r.type, node.expression)
-        if r.var.strlen is not None and not r.suffix:  # STRING(n) keeps its first n characters
-            value = f"__pacst_str_limit({value}, {r.var.strlen})"
-        return [ind + r.write(value)]
+        return [ind + r.write(_limited(r.var, self.ex.coerce(te, r.type, node.expression), r.suffix))]
 
     def _s_IfStatement(self, node, ind, d):
         out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
@@ -371,10 +368,11 @@ class BodyCompiler:
                 if target.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
-                post.append(ind + target.write(f"{member}.value"))
+                post.append(ind + target.write(_limited(target.var, f"{member}.value", target.suffix)))
             elif fv.section == "input":
                 te = self.ex.expr(p.value, fv.type)
-                pre.append(f"{ind}__PACST_SETP({member}, , {self.ex.coerce(te, fv.type, p.value, 'argument')});")
+                value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))
+                pre.append(f"{ind}__PACST_SETP({member}, , {value});")
             else:
                 arg = self.ref(p.value)
                 if arg.type is not fv.type:
@@ -388,3 +386,11 @@ class BodyCompiler:
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
         return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
+
+
+def _limited(var, value, suffix=""):
+    """`value` as written to `var` (a member or element of it when `suffix`): a STRING(n) keeps its first
+    n characters (user mode)."""
+    if var.strlen is None or suffix:
+        return value
+    return f"__pacst_str_limit({value}, {var.strlen})"

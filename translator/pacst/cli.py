@@ -63,7 +63,7 @@ def _tables(constants):
 def _user_files(args):
     """The files to compile: the native interfaces first (the user's POUs call them); in user mode a
     TwinCAT `.plcproj` stands for the object files it lists, a PLCopen XML project for the ST files of
-    its objects (written to a `plcopen` folder beside the output, or a temporary one)."""
+    its objects (written to the `--sources` folder, or a temporary one)."""
     if (args.native or args.sources_dir) and not args.user:
         raise SystemExit("pacst: --native and --sources need --user")
     files = []

@@ -199,12 +199,20 @@ class Compiler:
             if _cls(tok) == "StringTypeSpecification":  # STRING[10], WSTRING
                 if str(tok.type_name).upper() == "STRING" and tok.length is None:
                     return T.STRING
+                if str(tok.type_name).upper() == "STRING" and self.user:
+                    # A struct member, array element or result: a STRING, its length checked, not kept.
+                    user.string_length(self, tok)
+                    return T.STRING
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
         if cls == "ArraySpecification":
             raise self.err(spec, "inline ARRAY declaration: declare a named array type (TYPE ... END_TYPE)")
+        if cls == "StringTypeSpecification" and self.user and str(spec.type_name).upper() == "STRING":
+            if spec.length is not None:  # an array's element: a STRING, its length checked, not kept
+                user.string_length(self, spec)
+            return T.STRING
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
@@ -257,9 +265,12 @@ class Compiler:
                 if _cls(el) != "StructureElementDeclaration":
                     raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
                 init = el.init
-                if _cls(init) != "TypeInitialization":
+                if self.user and _cls(init) == "ArrayTypeInitialization":
+                    mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
+                elif _cls(init) != "TypeInitialization":
                     raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
-                mtype = self._spec_type(init.spec, allow_fb=False)
+                else:
+                    mtype = self._spec_type(init.spec, allow_fb=False)
                 for dv in el.variables:
                     name = self._decl_var_name(dv, "member")
                     if name.upper() in seen:
@@ -443,18 +454,20 @@ class Compiler:
         for dv in item.variables:
             location = None
             if dv.location is not None:
-                if not pou.program or section != "var" or constant:
+                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
+                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
+                if not (pou.program or linked) or section != "var" or constant:
                     raise self.err(dv.location, "located variables (AT %...) are declared in a global list or "
-                                                "in a PROGRAM's VAR (MATIEC)")
+                                                "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
                 location = user.parse_location(self, dv.location, vtype)
-            v = self._declare_var(pou, section, constant, vtype, value, dv, located=True)
+            v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
             v.strlen = strlen
             user.check_string_init(self, v)
 
-    def _declare_var(self, pou, section, constant, vtype, value, dv, located=False):
+    def _declare_var(self, pou, section, constant, vtype, value, dv, may_be_located=False):
         """Check and add one variable of a POU."""
-        if located and _cls(dv) == "DeclaredVariable":
+        if may_be_located and _cls(dv) == "DeclaredVariable":
             token = dv.variable.name
             self._check_ident(token, "variable")
             name = _name(token)

@@ -6,8 +6,8 @@ MATIEC"): what TwinCAT and CODESYS allow and MATIEC does not is spelled MATIEC's
 - Every POU gets a VAR_EXTERNAL for each global it uses, and `List.Name` loses its `List.` (MATIEC has
   neither implicit global access nor list names).
 - Declarations are written again from what pacst compiled: located variables in VAR blocks of their own,
-  `STRING(n)` as STRING (MATIEC's STRING[n] does not work), an inline array as a named type (a global and its VAR_EXTERNAL must share
-  one type); bodies are copied as they are.
+  `STRING(n)` as STRING (MATIEC's STRING[n] does not work), an inline array as a named type (a global
+  and its VAR_EXTERNAL must share one type); bodies are copied as they are.
 """
 import json
 
@@ -41,7 +41,8 @@ def _type(t):
 
 
 def _decl(v, name=None):
-    located = f" AT {v.location.text}" if v.location is not None else ""
+    # MATIEC has no `AT %I*`: such a variable is a plain one there, which the host binds by name.
+    located = f" AT {v.location.text}" if v.location is not None and v.location.numbers else ""
     init = f" := {v.init}" if v.init is not None else ""
     # STRING(n) is a plain STRING on MATIEC: it accepts STRING[n] in no VAR_EXTERNAL and then reports such
     # a variable undeclared wherever it is used (measured with iec2c).
@@ -73,8 +74,9 @@ def _blocks(pou, names):
     out = []
     for section in ("input", "output", "inout", "var", "temp"):
         for constant in (False, True):
-            plain = [v for v in pou.vars if v.section == section and v.constant == constant and v.location is None]
-            located = [v for v in pou.vars if v.section == section and v.constant == constant and v.location]
+            group = [v for v in pou.vars if v.section == section and v.constant == constant]
+            located = [v for v in group if v.location is not None and v.location.numbers]
+            plain = [v for v in group if v not in located]
             keyword = _SECTION_KEYWORDS[section] + (" CONSTANT" if constant else "")
             for group in (plain, located):
                 if group:

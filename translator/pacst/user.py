@@ -85,8 +85,10 @@ def parse_location(comp, node, vtype):
 def string_length(comp, spec):
     """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
     expr = spec.length.length
-    if _cls(expr) == "ParenthesizedExpression":
+    if _cls(expr) == "ParenthesizedExpression":  # STRING(n)
         expr = expr.expr
+    elif _cls(expr) == "BracketedExpression":  # STRING[n]
+        expr = expr.expression
     if _cls(expr) != "Integer" or expr.type_name is not None:
         raise comp.err(spec, "the length of a STRING is an integer literal")
     n = int(str(expr.value).replace("_", ""))

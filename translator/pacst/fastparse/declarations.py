@@ -20,7 +20,8 @@ class Declarations:
         self._x = expressions
         self._st = statements
         self._top = {"TYPE": self._type, "FUNCTION": self._function,
-                     "FUNCTION_BLOCK": self._function_block, "VAR_GLOBAL": self._globals}
+                     "FUNCTION_BLOCK": self._function_block, "VAR_GLOBAL": self._globals,
+                     "PROGRAM": self._program}
 
     def source(self, s):
         items = []
@@ -152,8 +153,21 @@ class Declarations:
             s.semicolons(raw)
         return node("var_body", raw)
 
+    def _external_block(self, s):
+        raw = [s.keyword("VAR_EXTERNAL"), self._attributes(s, "variable_attributes", "VAR_ATTRIB", _ATTRIBUTES)]
+        while s.peek_word() != "END_VAR":
+            decl = [self._identifier(s), s.punct(":"), self._specification(s)]
+            s.semicolons(decl)
+            raw.append(node("external_declaration", decl))
+        raw.append(s.keyword("END_VAR"))
+        if s.peek_punct() == ";":
+            raise Decline("; after END_VAR")
+        return node("external_var_declarations", raw)
+
     def _var_block(self, s, in_function):
         word = s.peek_word()
+        if word == "VAR_EXTERNAL" and not in_function:
+            return self._external_block(s)
         if word == "VAR":
             rule, attrs, body = ("function_var_declarations" if in_function else "var_declarations"), True, True
         elif word in _BLOCKS and not (in_function and word == "VAR_TEMP"):
@@ -210,6 +224,19 @@ class Declarations:
         raw += [self._st.statement_list(s), s.keyword("END_FUNCTION")]
         _no_trailing_semicolon(s)
         return node("function_declaration", raw)
+
+    def _program(self, s):
+        raw = [s.keyword("PROGRAM"), self._identifier(s)]
+        blocks = self._var_blocks(s, in_function=False)
+        for block in blocks:
+            body = block.children[-1] if block.data == "var_declarations" else None
+            if body is not None and not body.children:
+                # An empty VAR block of a PROGRAM is an incomplete_located_var_declarations to blark.
+                raise Decline("empty VAR block in a PROGRAM")
+        raw.append(node("program_var_declarations", blocks))
+        raw += [self._st.statement_list(s), s.keyword("END_PROGRAM")]
+        _no_trailing_semicolon(s)
+        return node("program_declaration", raw)
 
     def _function_block(self, s):
         raw = [s.keyword_token("FUNCTION_BLOCK"), None, self._identifier(s), None, None]
