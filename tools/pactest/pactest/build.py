@@ -42,7 +42,8 @@ class HostBuild:
 
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
-        files = project.library_sources() + project.vocabulary_sources() + self.wiring.sources
+        # GVL_PAC among the sources: the program names the library's constants (PAC_CMD_PUT_INT_REG...)
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
         # a TwinCAT .plcproj stands for its objects, a PLCopen XML project for ST files written to `sources`
         sources = ["--sources", os.path.join(self.out, "plcopen")]
         ordered = self._pacst("order", "--user", *sources, *files).splitlines()
