@@ -6,6 +6,7 @@
 #include <variant>
 #include <vector>
 
+#include "controller_setup.hpp"
 #include "expectations.hpp"
 #include "mc_axes.hpp"
 #include "scenario_error.hpp"
@@ -18,8 +19,6 @@ namespace pac::scenario {
 
 namespace {
 
-using std::chrono::milliseconds;
-
 TIME ToTime(int ms) {
     TIME time{};
     time.tv_sec = ms / 1000;
@@ -27,25 +26,12 @@ TIME ToTime(int ms) {
     return time;
 }
 
-pac::sim::ModuleLayout Layout(const Modules& modules) { return pac::sim::ModuleLayout{modules.ctrl, modules.axes}; }
-
 // The C enumerator of an ST enum's value name; the loader has refused every other name.
 template <class Enum, std::size_t N>
 Enum Enumerator(const char* const (&names)[N], const std::string& name) {
     const auto value = pac::EnumNames(names).Find<Enum>(name);
     if (!value) throw std::logic_error("not an enumerator: " + name);
     return *value;
-}
-
-pac::sim::PaControlConfig ControllerConfig(const ControllerSetup& setup) {
-    pac::sim::PaControlConfig config;
-    config.referencedAtPowerOn = setup.axesReferenced;
-    return config;
-}
-
-pac::RigTiming RigTimingOf(const Timing& t) {
-    return {milliseconds(t.plcCycleMs), milliseconds(t.pacCycleMs), t.latencyCycles, milliseconds(t.jitterMs),
-            t.seed, milliseconds(t.bootMs)};
 }
 
 // One PLC with FB_PAC_Cmd on the CMD interface of one simulated PA-CONTROL, FB_PAC_Ctrl on its CTRL
@@ -89,7 +75,7 @@ public:
         }
         if (scenario.modules.diagnosis) CallDiagnosis(*scenario.modules.diagnosis);
         plc_.Start();
-        SetUp(scenario.controller);
+        ApplyControllerSetup(plc_.Controller(), scenario.controller);
     }
 
     StepReport Run(std::size_t index, const Step& step) {
@@ -114,7 +100,7 @@ public:
                 } else if constexpr (std::is_same_v<Action, AutomaticStep>) {
                     report.failures = RunAutomatic(action);
                 } else if constexpr (std::is_same_v<Action, FaultStep>) {
-                    Inject(action);
+                    InjectFault(plc_, action);
                 } else {
                     Wait(action);
                 }
@@ -155,25 +141,6 @@ private:
             diag_->CTRLSYSTEMERRORNUMBER.value = ctrl_->SYSTEMERRORNUMBER.value;
             for (std::size_t k = 0; k < axes_.size(); ++k) diag_->AXISSTATUS.value.table[k] = axes_[k]->STATUS.value;
         });
-    }
-
-    void SetUp(const ControllerSetup& setup) {
-        auto& pac = plc_.Controller();
-        if (setup.operatingStatus) pac.SetOperatingStatus(*setup.operatingStatus);
-        pac.SetAutomaticProgram(pac::sim::AutomaticProgram(setup.automaticProgram));
-        for (const auto& [number, value] : setup.intRegisters) pac.Io().intRegisters.SetInt(number, value);
-        for (const auto& [number, value] : setup.realRegisters) pac.Io().realRegisters.SetReal(number, value);
-        for (const auto& [number, value] : setup.inputs) pac.Io().inputs.Set(number, value);
-        for (const auto& [axis, switches] : setup.limitSwitches) {
-            pac.Axes().SetLimitSwitches(axis, switches.negative, switches.positive);
-        }
-        for (const auto& [number, value] : setup.systemParameters) {
-            if (pac.SystemParameters().Set(number, value) != pac::sim::ParameterTable::SetResult::kOk) {
-                throw ScenarioError("$.controller.system_parameters[\"" + std::to_string(number) + "\"]",
-                                    "refused by the simulated PA-CONTROL: no such system parameter, or " +
-                                        std::to_string(value) + " is outside its limits");
-            }
-        }
     }
 
     void Scan() {
@@ -405,28 +372,6 @@ private:
         const std::int64_t limit = plc_.Task().ScanCount() + step.maxMs / scenario_.timing.plcCycleMs + 1;
         while (!mismatches().empty() && plc_.Task().ScanCount() < limit) Scan();
         return mismatches();
-    }
-
-    void Inject(const FaultStep& fault) {
-        const auto now = plc_.Now();
-        switch (fault.kind) {
-            case FaultKind::kPowerCycle:
-                plc_.Controller().PowerCycle(now);
-                return;
-            case FaultKind::kSystemError:
-                plc_.Controller().RaiseSystemError(static_cast<std::uint16_t>(fault.number));
-                return;
-            case FaultKind::kSetInput:
-                plc_.Controller().Io().inputs.Set(fault.number, fault.value);
-                return;
-            default:
-                break;
-        }
-        pac::sim::LinkFault linkFault = pac::sim::LinkFault::kNone;
-        if (fault.kind == FaultKind::kFreezeLink) linkFault = pac::sim::LinkFault::kFrozen;
-        if (fault.kind == FaultKind::kZeroLink) linkFault = pac::sim::LinkFault::kAllZero;
-        if (fault.link != LinkSide::kFromPac) plc_.Bus().ToPacLink().SetFault(now, linkFault);
-        if (fault.link != LinkSide::kToPac) plc_.Bus().FromPacLink().SetFault(now, linkFault);
     }
 
     void Wait(const WaitStep& wait) {

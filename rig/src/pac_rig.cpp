@@ -67,6 +67,12 @@ void PacRig::CallRaw8(std::size_t offset,
     });
 }
 
+void PacRig::CallImage(
+    std::function<void(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac)> program) {
+    if (!program) throw std::invalid_argument("PacRig::CallImage: empty program");
+    task_.AddProgram([this, program] { program(fromPac_, toPac_); });
+}
+
 void PacRig::Start() {
     task_.AddProgram([this] { bus_.WriteToPac(clock_.Now(), toPac_); });
 }

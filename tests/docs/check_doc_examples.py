@@ -14,7 +14,9 @@
   check_doc_examples.py st REPO OUTDIR PACST... -- LIBRARY.st...
       DocExamples.St. Every `iecst` example file (PATH above, .st) is translated by pacst with the
       library: a PROGRAM (which the portable subset leaves to the vendor's tool) is read as a
-      FUNCTION_BLOCK named after its file and its located variables (`AT %IB0`, `AT %I*`) as plain ones."""
+      FUNCTION_BLOCK named after its file and its located variables (`AT %IB0`, `AT %I*`) as plain ones.
+      Examples of a machine program (examples/, tools/pactest/) are left to PacTest.*, which runs them.
+      A `yaml` block (a CI job) needs no marker: PacTest.DocsCiJobs runs its pac-test command lines."""
 import glob
 import os
 import re
@@ -25,7 +27,7 @@ import textwrap
 FENCE = re.compile(r"^\s*```(\S*)\s*$")
 MARKER = re.compile(r"^<!-- (example|synopsis|vendor-specific): (.+?) -->$")
 NEEDS_MARKER = {"cpp", "iecst", "json"}
-KNOWN = NEEDS_MARKER | {"sh", "text"}
+KNOWN = NEEDS_MARKER | {"sh", "text", "yaml"}
 CPP_WORDS = set("""alignas auto bool break case catch char class const constexpr continue default delete do double
 else enum explicit extern false float for friend if inline int long mutable namespace new noexcept nullptr
 operator override private protected public return short signed sizeof static struct switch template this
@@ -123,7 +125,10 @@ def st(repo, outdir, pacst, library):
     files = []
     for doc in doc_files(repo):
         for _, lang, kind, arg, _ in blocks(doc):
-            if lang == "iecst" and kind == "example" and arg not in files:
+            # A machine program's files (examples/, pac-test's vocabulary) need pacst's user mode and the test
+            # vocabulary: the PacTest.* tests translate, build and run them with pac-test.
+            if lang == "iecst" and kind == "example" and arg not in files and \
+                    not arg.startswith(("examples/", "tools/pactest/")):
                 files.append(arg)
     copies = []
     for name in files:

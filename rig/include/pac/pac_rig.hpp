@@ -76,6 +76,11 @@ public:
     void CallRaw8(std::size_t offset,
                   std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program);
 
+    // A program on the whole process image, for a PLC program that holds its own I/O images (pac-test's
+    // host for a user's machine program, docs/user_tests.md): it reads the input image the scan read
+    // and may rewrite the output image the programs before it left.
+    void CallImage(std::function<void(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac)> program);
+
     // After the FBs: the master's image goes out on the bus at the end of each scan.
     void Start();
 

@@ -13,6 +13,7 @@ _SECTIONS = {
     "OutputDeclarations": "outputVars",
     "InputOutputDeclarations": "inOutVars",
     "VariableDeclarations": "localVars",
+    "LocatedVariableDeclarations": "localVars",  # a PROGRAM's VAR holding AT %IX0.3 (a machine program's)
     "FunctionVariableDeclarations": "localVars",
     "TemporaryVariableDeclarations": "tempVars",
     "ExternalVariableDeclarations": "externalVars",
@@ -47,9 +48,14 @@ def var_block(where, code, block):
 def variables_of(where, code, item):
     """One Variable per name of a declaration such as 'A, B : INT := 5'."""
     names = [_name(v) for v in getattr(item, "variables", None) or []]
-    if getattr(item, "location", None) is not None or any(
-            getattr(v, "location", None) is not None for v in getattr(item, "variables", None) or []):
-        raise ExportError(where, f"'{item}' has an AT location, which a library does not export")
+    if not names and getattr(item, "name", None) is not None:  # a located declaration names one variable
+        names = [_name(item)]
+    # A located variable (AT %IB0) belongs to a machine program, never to the library: PLCopen's address.
+    locations = [getattr(item, "location", None)] + [getattr(v, "location", None)
+                                                     for v in getattr(item, "variables", None) or []]
+    address = next((str(loc).split()[-1] for loc in locations if loc is not None), None)  # "AT %IB0"
+    if address is not None and not address.startswith("%"):
+        raise ExportError(where, f"'{item}' has the location {address}, which PLCopen cannot hold")
     init = item.init
     spec = getattr(item, "spec", None) if init is None else getattr(init, "spec", None)
     if spec is None or getattr(init, "indirection", None) is not None:
@@ -57,7 +63,7 @@ def variables_of(where, code, item):
     ref = type_of(where, spec, ", ".join(names))
     initial = initial_text(where, code, getattr(init, "value", None) if init is not None else None)
     doc = doc_of(item)
-    return [Variable(n, ref, initial, doc) for n in names]
+    return [Variable(n, ref, initial, doc, address) for n in names]
 
 
 def type_of(where, spec, what):

@@ -23,6 +23,7 @@ class Variable:
     type: TypeRef
     initial: Optional[str]  # the initial value as the source spells it
     doc: Optional[str]
+    address: Optional[str] = None  # a machine program's located variable: "%IB0"
 
 
 @dataclass(frozen=True)

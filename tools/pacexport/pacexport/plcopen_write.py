@@ -166,7 +166,7 @@ def _initial_value(parent, text):
 
 def _variables(parent, variables):
     for variable in variables:
-        element = _el(parent, "variable", name=variable.name)
+        element = _el(parent, "variable", name=variable.name, address=variable.address)
         type_element(_el(element, "type"), variable.type)
         _initial_value(element, variable.initial)
         _documentation(element, variable.doc)

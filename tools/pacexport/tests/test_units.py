@@ -209,5 +209,32 @@ class UnusedShapes(unittest.TestCase):
             load_library(INFO, [path], [], self.cache)
 
 
+class LocatedVariables(unittest.TestCase):
+    """A machine program's located variables (pac-test's example, docs/user_tests.md) go out as PLCopen's
+    address and come back as AT: the library has none, a program's bus images do."""
+
+    def test_addresses_go_out_and_come_back(self):
+        with tempfile.TemporaryDirectory() as directory:
+            sources = {"GVL_Io.st": "VAR_GLOBAL\n  CmdIn AT %IB0 : ARRAY [0..7] OF BYTE;  (* the reply *)\n"
+                                    "  Lamp AT %QX2.1 : BOOL;\n  Count : INT;\nEND_VAR\n",
+                       "MAIN.st": "PROGRAM MAIN\nVAR\n  Button AT %IX0.3 : BOOL;\nEND_VAR\n"
+                                  "Count := Count + 1;\nEND_PROGRAM\n"}
+            paths = []
+            for name, text in sources.items():
+                paths.append(os.path.join(directory, name))
+                with open(paths[-1], "w", encoding="utf-8") as f:
+                    f.write(text)
+            library = load_library(INFO, paths, [], support.config()["cache"])
+            export(library, os.path.join(directory, "out"))
+            with open(os.path.join(directory, "out", "t_lib.xml"), "rb") as f:
+                data = f.read()
+        self.assertEqual(schema_errors(load_schema(), data), [])
+        addresses = {v.get("name"): v.get("address") for v in etree.fromstring(data).iter("{*}variable")}
+        self.assertEqual(addresses, {"CmdIn": "%IB0", "Lamp": "%QX2.1", "Count": None, "Button": "%IX0.3"})
+        back = "\n".join(obj.declaration for obj in read_plcopen(data))
+        for declared in ("CmdIn AT %IB0 :", "Lamp AT %QX2.1 :", "Button AT %IX0.3 :"):
+            self.assertIn(declared, back)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -1,0 +1,129 @@
+// The test vocabulary's FUNCTIONs (tools/pactest/st), implemented by the host: pacst --user --native gives
+// each call the ST file and line of the call (docs/user_tests.md#the-test-vocabulary). Their ST bodies are
+// what a PLC runs; these record into the host's result instead.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "POUS.h"
+#include "pactest_host.hpp"
+
+namespace {
+
+std::string Text(const STRING& s) {
+    return std::string(reinterpret_cast<const char*>(s.body), s.len < STR_MAX_LEN ? s.len : STR_MAX_LEN);
+}
+
+template <class T>
+std::string Number(const char* format, T value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, value);
+    return buffer;
+}
+
+std::string TimeText(const TIME& t) {
+    const double ms = static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
+    return Number("T#%gMS", ms);
+}
+
+BOOL Equals(const char* file, int line, bool passed, const std::string& expected, const std::string& actual,
+            const STRING& message) {
+    pactest::RecordAssert(file, line, passed, Text(message) + ": expected " + expected + ", got " + actual);
+    return passed ? TRUE : FALSE;
+}
+
+void Ok(BOOL* eno) {
+    if (eno) *eno = TRUE;
+}
+
+}  // namespace
+
+extern "C" {
+
+BOOL ASSERTTRUE(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL CONDITION, STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    // FB_AssertWithin fails through here, with its own message; the frame above its body is the user's test
+    // (frame pointers kept), whose line pac-test prints.
+    const bool wait = std::strstr(file__, "FB_AssertWithin") != nullptr;
+    pactest::RecordAssert(file__, line__, CONDITION != 0, Text(MESSAGE) + (wait ? "" : ": expected TRUE, got FALSE"),
+                          __builtin_return_address(1));
+    return CONDITION;
+}
+
+BOOL ASSERTFALSE(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL CONDITION, STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    pactest::RecordAssert(file__, line__, CONDITION == 0, Text(MESSAGE) + ": expected FALSE, got TRUE");
+    return CONDITION ? FALSE : TRUE;
+}
+
+#define PACTEST_EQUALS(NAME, TYPE, FORMAT, CAST)                                                              \
+    BOOL NAME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TYPE EXPECTED, TYPE ACTUAL, STRING MESSAGE) { \
+        (void)EN;                                                                                             \
+        Ok(__ENO);                                                                                            \
+        return Equals(file__, line__, EXPECTED == ACTUAL, Number(FORMAT, CAST(EXPECTED)),                     \
+                      Number(FORMAT, CAST(ACTUAL)), MESSAGE);                                                 \
+    }
+
+PACTEST_EQUALS(ASSERTEQUALS_BOOL, BOOL, "%s", [](BOOL b) { return b ? "TRUE" : "FALSE"; })
+PACTEST_EQUALS(ASSERTEQUALS_INT, INT, "%d", static_cast<int>)
+PACTEST_EQUALS(ASSERTEQUALS_DINT, DINT, "%ld", static_cast<long>)
+PACTEST_EQUALS(ASSERTEQUALS_UINT, UINT, "%u", static_cast<unsigned>)
+PACTEST_EQUALS(ASSERTEQUALS_UDINT, UDINT, "%lu", static_cast<unsigned long>)
+PACTEST_EQUALS(ASSERTEQUALS_BYTE, BYTE, "16#%02X", static_cast<unsigned>)
+PACTEST_EQUALS(ASSERTEQUALS_WORD, WORD, "16#%04X", static_cast<unsigned>)
+PACTEST_EQUALS(ASSERTEQUALS_DWORD, DWORD, "16#%08lX", static_cast<unsigned long>)
+
+BOOL ASSERTEQUALS_TIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIME EXPECTED, TIME ACTUAL,
+                       STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    const bool passed = EXPECTED.tv_sec == ACTUAL.tv_sec && EXPECTED.tv_nsec == ACTUAL.tv_nsec;
+    return Equals(file__, line__, passed, TimeText(EXPECTED), TimeText(ACTUAL), MESSAGE);
+}
+
+BOOL ASSERTEQUALS_STRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING EXPECTED, STRING ACTUAL,
+                         STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    return Equals(file__, line__, Text(EXPECTED) == Text(ACTUAL), "'" + Text(EXPECTED) + "'",
+                  "'" + Text(ACTUAL) + "'", MESSAGE);
+}
+
+BOOL ASSERTEQUALS_REAL(const char* file__, int line__, BOOL EN, BOOL* __ENO, REAL EXPECTED, REAL ACTUAL, REAL DELTA,
+                       STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    const bool passed = std::fabs(ACTUAL - EXPECTED) <= DELTA;
+    return Equals(file__, line__, passed, Number("%g", EXPECTED) + " +/- " + Number("%g", DELTA),
+                  Number("%g", ACTUAL), MESSAGE);
+}
+
+BOOL ASSERTEQUALS_LREAL(const char* file__, int line__, BOOL EN, BOOL* __ENO, LREAL EXPECTED, LREAL ACTUAL,
+                        LREAL DELTA, STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    const bool passed = std::fabs(ACTUAL - EXPECTED) <= DELTA;
+    return Equals(file__, line__, passed, Number("%.15g", EXPECTED) + " +/- " + Number("%g", DELTA),
+                  Number("%.15g", ACTUAL), MESSAGE);
+}
+
+BOOL TEST_FINISHED(const char* file__, int line__, BOOL EN, BOOL* __ENO) {
+    (void)file__;
+    (void)line__;
+    (void)EN;
+    Ok(__ENO);
+    pactest::RecordFinished();
+    return TRUE;
+}
+
+BOOL PACTESTRECORD(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL PASSED, STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    pactest::RecordAssert(file__, line__, PASSED != 0, Text(MESSAGE));
+    return PASSED;
+}
+
+}  // extern "C"

@@ -1,0 +1,120 @@
+"""Translating the user's ST with the library and the test vocabulary (pacst --user), generating the host and
+compiling it against a build of the project. Objects are kept between runs and rebuilt only when their source
+or flags change; ccache is used when it is on the PATH."""
+import concurrent.futures
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+from . import hostgen, project
+
+
+class BuildError(Exception):
+    pass
+
+
+def _run(command, what, env=None):
+    result = subprocess.run(command, capture_output=True, text=True, env=env)
+    if result.returncode != 0:
+        raise BuildError(f"{what} failed:\n{result.stdout}{result.stderr}".rstrip())
+    return result.stdout
+
+
+class HostBuild:
+    def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
+        self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
+        self.coverage, self.jobs = coverage, jobs or os.cpu_count() or 1
+        venv_python = os.path.join(project.ROOT, "build", "venv", "bin", "python")
+        self.pacst_python = pacst_python or (venv_python if os.path.exists(venv_python) else sys.executable)
+        self.st_out = os.path.join(out, "st-c")
+        self.obj = os.path.join(out, "obj")
+        self.exe = os.path.join(out, "pactest_host")
+
+    def _pacst(self, *args):
+        # PACTEST_TRANSLATOR: another checkout's translator folder (to try a translator change on a project)
+        translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
+        env = dict(os.environ, PYTHONPATH=translator)
+        cache = self.parse_cache or os.path.join(self.out, "pacst-cache")
+        return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env)
+
+    def translate(self):
+        """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
+        # GVL_PAC among the sources: the program names the library's constants (PAC_CMD_PUT_INT_REG...)
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
+        # a TwinCAT .plcproj stands for its objects, a PLCopen XML project for ST files written to `sources`
+        sources = ["--sources", os.path.join(self.out, "plcopen")]
+        ordered = self._pacst("order", "--user", *sources, *files).splitlines()
+        natives = [a for f in project.native_sources() for a in ("--native", f)]
+        self._pacst("build", "--user", "--line-directives", "--out", self.st_out, *natives,
+                    "--gvl", project.gvl_pac(), *ordered)
+        with open(os.path.join(self.st_out, "symbols.json"), encoding="utf-8") as f:
+            return hostgen.Symbols(json.load(f))
+
+    def tests(self, symbols):
+        """The test FBs: the wiring's names, or every FUNCTION_BLOCK whose name starts with the prefix."""
+        if self.wiring.test_names:
+            found = []
+            for i, name in enumerate(self.wiring.test_names):
+                fb = symbols.fbs.get(name.upper())
+                if fb is None:
+                    raise BuildError(f"$.tests.names[{i}]: no FUNCTION_BLOCK {name} in the sources")
+                found.append(fb)
+            return found
+        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep)
+        return [fb for fb in symbols.table["function_blocks"]
+                if not fb.get("standard") and fb["name"].upper().startswith(self.wiring.prefix.upper())
+                and not os.path.abspath(fb.get("file") or "").startswith(theirs)]
+
+    def _flags(self, cxx):
+        flags = ["-g", "-fno-omit-frame-pointer"]
+        if self.pac.sanitize:
+            flags += ["-fsanitize=address,undefined", "-fno-sanitize-recover=undefined"]
+        if cxx:
+            return flags + ["-std=c++17", "-O1", "-Wall", "-Wextra"]
+        # the ST as the library's coverage build compiles it (cmake/PacCoverage.cmake)
+        flags += ["-std=c99", "-fwrapv", "-w"]
+        return flags + (["--coverage", "-O0", "-DPACST_NO_FORCING"] if self.coverage else ["-O1"])
+
+    def _compile(self, source, cxx):
+        compiler = os.environ.get("CXX" if cxx else "CC", "c++" if cxx else "cc")
+        includes = [self.st_out, project.HOST] + self.pac.include_dirs() + [self.pac.library_c]
+        command = [compiler, *self._flags(cxx), *[f"-I{d}" for d in includes], "-c", source]
+        # Every file includes POUS.h, which changes with any interface (an FB's pins move every caller's
+        # struct offsets) while pacst leaves the text of an unchanged caller's C alone: POUS.h is in the key.
+        with open(os.path.join(self.st_out, "POUS.h"), "rb") as f:
+            declarations = f.read()
+        key = hashlib.sha1(" ".join(command).encode() + declarations).hexdigest()[:10]
+        obj = os.path.join(self.obj, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
+        if os.path.exists(obj) and os.path.getmtime(obj) >= os.path.getmtime(source):
+            return obj
+        launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
+        _run(launcher + command + ["-o", obj], f"compiling {os.path.basename(source)}")
+        return obj
+
+    def build(self, symbols, tests):
+        os.makedirs(self.obj, exist_ok=True)
+        generated = os.path.join(self.out, "pactest_project.cpp")
+        text = hostgen.generate(symbols, self.wiring, tests)
+        if not os.path.exists(generated) or open(generated, encoding="utf-8").read() != text:
+            with open(generated, "w", encoding="utf-8") as f:
+                f.write(text)
+        library = self.pac.library_stems()
+        c_files = [os.path.join(self.st_out, n) for n in sorted(os.listdir(self.st_out))
+                   if n.endswith(".c") and os.path.splitext(n)[0] not in library]
+        cxx_files = [generated, os.path.join(project.HOST, "pactest_host.cpp"),
+                     os.path.join(project.HOST, "pactest_natives.cpp")]
+        with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
+            objects = list(pool.map(lambda s: self._compile(s, s.endswith(".cpp")), c_files + cxx_files))
+        # An earlier build's objects (another key) would add their old lines to the coverage counts.
+        keep = {os.path.splitext(o)[0] for o in objects}
+        for name in os.listdir(self.obj):
+            if os.path.splitext(os.path.join(self.obj, name))[0] not in keep:
+                os.remove(os.path.join(self.obj, name))
+        linker = os.environ.get("CXX", "c++")
+        link_flags = (["--coverage"] if self.coverage or self.pac.coverage else []) + \
+            (["-fsanitize=address,undefined"] if self.pac.sanitize else [])
+        _run([linker, *link_flags, "-o", self.exe, *objects, *self.pac.libraries, "-lm"], "linking the host")
+        return self.exe

@@ -1,0 +1,77 @@
+"""Where pac-test finds the project's pieces: the library's ST, the test vocabulary, the translator, and a
+configured build of the project holding the runtime, simulator and rig libraries the host links against."""
+import glob
+import os
+import re
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+VOCABULARY = os.path.join(ROOT, "tools", "pactest", "st")
+HOST = os.path.join(ROOT, "tools", "pactest", "host")
+
+# The static libraries the host links, in link order, and where a build tree keeps them (not below:
+# build/ holds the other presets' trees, build/debug...).
+LIBRARIES = ["pac_scenario_lib", "pac_names", "pac_rig", "pac_st", "pac_sim", "pac_runtime"]
+LIBRARY_DIRS = {"pac_scenario_lib": "scenario", "pac_names": "runtime/names", "pac_rig": "rig", "pac_st": "st",
+                "pac_sim": "sim", "pac_runtime": "runtime"}
+INCLUDES = ["runtime/include", "sim/include", "rig/include", "runtime/names/include", "scenario",
+            "translator/pacst/include"]
+
+
+def library_sources():
+    """The library's ST files: every .st under st/ but the global constant list, which goes in --gvl."""
+    files = sorted(glob.glob(os.path.join(ROOT, "st", "**", "*.st"), recursive=True))
+    return [f for f in files if os.sep + "gvl" + os.sep not in f]
+
+
+def gvl_pac():
+    return os.path.join(ROOT, "st", "gvl", "GVL_PAC.st")
+
+
+def vocabulary_sources():
+    return sorted(glob.glob(os.path.join(VOCABULARY, "*.st")))
+
+
+def native_sources():
+    """The vocabulary's FUNCTIONs, which the host implements (pactest_natives.cpp): every file but the
+    global list and the FBs."""
+    return [f for f in vocabulary_sources() if not os.path.basename(f).startswith(("FB_", "GVL_"))]
+
+
+class PacBuild:
+    """A configured and built tree of the project (cmake --preset default: build/)."""
+
+    def __init__(self, folder):
+        self.folder = os.path.abspath(folder)
+        cache = os.path.join(self.folder, "CMakeCache.txt")
+        if not os.path.exists(cache):
+            raise SystemExit(f"pac-test: {self.folder} is not a build of the PA-CONTROL project "
+                             "(configure and build it first: cmake --preset default && cmake --build build)")
+        with open(cache, encoding="utf-8") as f:
+            self.cache = dict(re.findall(r"^([A-Za-z_0-9]+):[A-Z]+=(.*)$", f.read(), re.M))
+        if self.cache.get("PAC_ST_COMPILER", "pacst") != "pacst":
+            raise SystemExit(f"pac-test: {self.folder} is a MATIEC build: the host links pacst's library "
+                             "(use a pacst build)")
+        # the library's objects carry gcov's counters in a coverage build: the host links with --coverage
+        self.coverage = self.cache.get("PAC_COVERAGE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
+        self.sanitize = self.cache.get("PAC_SANITIZE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
+        self.libraries = []
+        missing = []
+        for name in LIBRARIES:
+            path = os.path.join(self.folder, LIBRARY_DIRS[name], f"lib{name}.a")
+            if os.path.exists(path):
+                self.libraries.append(path)
+            else:
+                missing.append(name)
+        if missing:
+            raise SystemExit(f"pac-test: {self.folder} lacks {', '.join(missing)}: build them first "
+                             f"(cmake --build {self.folder} --target pac_scenario_lib)")
+        self.library_c = os.path.join(self.folder, "st", "pac_st.st-c")
+        if not os.path.exists(os.path.join(self.library_c, "POUS.h")):
+            raise SystemExit(f"pac-test: {self.folder} holds no translated library (pac_st.st-c): is it a pacst build?")
+
+    def library_stems(self):
+        """The stems of the library's C files in libpac_st.a: pac-test links those, not its own copies."""
+        return {os.path.splitext(n)[0] for n in os.listdir(self.library_c) if n.endswith(".c")}
+
+    def include_dirs(self):
+        return [os.path.join(ROOT, d) for d in INCLUDES]

@@ -1,0 +1,382 @@
+"""pac-test's own tests (CTest PacTest.*): the example's run and what a user sees of its deliberate failure;
+pac-test's own fixture project with a failure of every kind; shards; refusals of the wiring file.
+
+Run with the venv of tools/pactest/requirements.txt (lxml, gcovr); PAC_BUILD names the project's build and
+PACTEST_OUT a folder for the runs."""
+import json
+import os
+import re
+import subprocess
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOOL = os.path.dirname(HERE)
+ROOT = os.path.dirname(os.path.dirname(TOOL))
+sys.path.insert(0, TOOL)
+
+from pactest.cli import shard_of  # noqa: E402
+
+PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
+OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
+EXAMPLE_TESTS = ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
+                 "FB_TestShowsAFailure", "FB_TestStopInput"]
+FIXTURE_TESTS = ["FB_TestBusByName", "FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses", "FB_TestWaitFails"]
+FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), scan (?P<scan>\d+), "
+                     r"t=(?P<t>[\d.]+) ms: (?P<msg>.*)$")
+
+
+def pac_test(wiring, out, *args):
+    env = dict(os.environ, PYTHONPATH=TOOL)
+    # one parse cache for every run: each parses the library, and a cold parse costs most of a run
+    cache = os.path.join(OUT, "pacst-cache")
+    return subprocess.run([sys.executable, "-m", "pactest", wiring, "--pac-build", PAC_BUILD, "--out", out,
+                           "--parse-cache", cache, *args],
+                          capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
+
+
+def line_of(path, text):
+    """The 1-based line of `path` holding `text` (once)."""
+    with open(path, encoding="utf-8") as f:
+        lines = [n for n, line in enumerate(f, 1) if text in line]
+    assert len(lines) == 1, f"{text!r} is on {len(lines)} lines of {path}"
+    return lines[0]
+
+
+def failures(stdout):
+    return [m.groupdict() for m in map(FAILURE.match, stdout.splitlines()) if m]
+
+
+def check_junit(case, path, tests, failed, skipped):
+    from lxml import etree
+    schema = etree.XMLSchema(etree.parse(os.path.join(HERE, "junit.xsd")))
+    document = etree.parse(path)
+    case.assertTrue(schema.validate(document), str(schema.error_log))
+    suite = document.getroot()[0]
+    case.assertEqual((int(suite.get("tests")), int(suite.get("failures")), int(suite.get("skipped"))),
+                     (tests, failed, skipped))
+
+
+def check_vcd(case, path):
+    """A VCD as IEEE 1364 writes it: definitions, then value changes at times that only grow."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    case.assertIn("$enddefinitions $end", text)
+    times = [int(t) for t in re.findall(r"^#(\d+)$", text, re.M)]
+    case.assertGreater(len(times), 10)
+    case.assertEqual(times, sorted(set(times)))
+    return text
+
+
+class ExampleTest(unittest.TestCase):
+    """examples/pick_and_place: four tests pass, the deliberate failure fails as expected and shows its
+    file:line, a VCD and a JUnit XML that validates; the coverage table of its ST is printed."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(ROOT, "examples", "pick_and_place")
+        cls.out = os.path.join(OUT, "pick_and_place")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out)
+
+    def test_passes_with_the_deliberate_failure_outside_the_count(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        self.assertIn("5 tests: 4 passed, 0 failed, 1 failed as expected", self.result.stdout)
+
+    def test_the_deliberate_failure_names_the_assert_line_scan_and_time(self):
+        found = [f for f in failures(self.result.stdout) if f["test"] == "FB_TestShowsAFailure"]
+        self.assertEqual(len(found), 1, self.result.stdout)
+        source = [p for p in _files(self.folder) if os.path.basename(p).startswith("FB_TestShowsAFailure.")][0]
+        self.assertEqual(os.path.realpath(os.path.join(self.folder, found[0]["file"])), os.path.realpath(source))
+        self.assertEqual(int(found[0]["line"]), line_of(source, "AssertEquals_UDINT"))
+        self.assertEqual(found[0]["msg"], "parts placed: expected 2, got 1")
+        # the scan's time is the PLC cycle (2 ms) times the scan
+        self.assertAlmostEqual(float(found[0]["t"]), 2.0 * int(found[0]["scan"]))
+
+    def test_the_deliberate_failure_writes_a_vcd(self):
+        text = check_vcd(self, os.path.join(self.out, "vcd", "FB_TestShowsAFailure.vcd"))
+        for signal in ("Cycles", "State", "ToPac", "FromPac", "Position"):
+            self.assertRegex(text, rf"\$var \w+ \d+ \S+ {signal}")
+        self.assertEqual(sorted(os.listdir(os.path.join(self.out, "vcd"))), ["FB_TestShowsAFailure.vcd"])
+
+    def test_junit_xml_validates(self):
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=0, skipped=1)
+
+    def test_coverage_table_of_the_machine_program(self):
+        self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
+        with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        pous = {p["pou"] for p in summary["pous"]}
+        self.assertTrue({"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"} <= pous, pous)
+        self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+
+
+def _files(folder):
+    return [os.path.join(d, n) for d, _, names in os.walk(folder) for n in names]
+
+
+class FixtureTest(unittest.TestCase):
+    """tools/pactest/tests/fixture: a failure of every kind, each at its line."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(HERE, "fixture")
+        cls.out = os.path.join(OUT, "fixture")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out, "--no-coverage")
+        cls.failures = failures(cls.result.stdout)
+
+    def at(self, test, text):
+        return line_of(os.path.join(self.folder, test + ".st"), text)
+
+    def messages(self, test):
+        return {int(f["line"]): f["msg"] for f in self.failures if f["test"] == test}
+
+    def test_exit_code_and_counts(self):
+        self.assertEqual(self.result.returncode, 1, self.result.stdout + self.result.stderr)
+        self.assertIn("5 tests: 2 passed, 3 failed", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=3, skipped=0)
+
+    def test_every_assert_passes_where_it_should(self):
+        self.assertNotIn("FB_TestPasses", {f["test"] for f in self.failures})
+        self.assertRegex(self.result.stdout, r"ok  FB_TestPasses  \(15 asserts")
+
+    def test_failed_asserts_print_expected_and_actual_at_their_lines(self):
+        self.assertEqual(self.messages("FB_TestFails"), {
+            self.at("FB_TestFails", "'DINT differs'"): "DINT differs: expected 11, got 10",
+            self.at("FB_TestFails", "'STRING differs'"): "STRING differs: expected 'other', got 'counter'",
+            self.at("FB_TestFails", "'REAL differs'"): "REAL differs: expected 1 +/- 0.1, got 5",
+            self.at("FB_TestFails", "'WORD differs'"): "WORD differs: expected 16#00FF, got 16#0F00",
+            self.at("FB_TestFails", "'FALSE expected'"): "FALSE expected: expected FALSE, got TRUE"})
+        self.assertEqual({f["scan"] for f in self.failures if f["test"] == "FB_TestFails"}, {"10"})
+
+    def test_a_wait_fails_at_the_line_that_calls_it_when_its_time_runs_out(self):
+        self.assertEqual(self.messages("FB_TestWaitFails"),
+                         {self.at("FB_TestWaitFails", "Wait(Execute"): "a negative count: not within the time limit"})
+        t = [float(f["t"]) for f in self.failures if f["test"] == "FB_TestWaitFails"][0]
+        self.assertTrue(50 <= t <= 54, t)  # T#50MS from the first call (2 ms), one scan to see it
+
+    def test_a_test_that_never_finishes_fails_at_its_time_limit(self):
+        self.assertEqual(self.messages("FB_TestNeverEnds"), {
+            self.at("FB_TestNeverEnds", "FUNCTION_BLOCK FB_TestNeverEnds"):
+                "the time limit of 300 ms ran out before TEST_FINISHED()"})
+
+    def test_a_vcd_for_each_failing_test_only(self):
+        self.assertEqual(sorted(os.listdir(os.path.join(self.out, "vcd"))),
+                         ["FB_TestFails.vcd", "FB_TestNeverEnds.vcd", "FB_TestWaitFails.vcd"])
+
+    def test_shards_split_the_tests_stably(self):
+        names = []
+        for i in range(1, 4):
+            run = pac_test(os.path.join(self.folder, "wiring.json"), self.out, "--no-coverage", "--list",
+                           "--shard", f"{i}/3")
+            self.assertEqual(run.returncode, 0, run.stderr)
+            shard = run.stdout.split()
+            self.assertEqual(shard, [n for n in FIXTURE_TESTS if shard_of(n, 3) == i - 1])
+            names += shard
+        self.assertEqual(sorted(names), FIXTURE_TESTS)
+        # a test's shard is a function of its name alone: the same in any project, for every count
+        self.assertEqual([shard_of("FB_TestPasses", n) for n in (1, 2, 3, 4)],
+                         [int(__import__("hashlib").sha256(b"FB_TESTPASSES").hexdigest()[:8], 16) % n
+                          for n in (1, 2, 3, 4)])
+
+
+COUNTER = """(* SPDX-License-Identifier: MIT *)
+(* Counts its calls. *)
+FUNCTION_BLOCK FB_Counter
+VAR_INPUT
+{extra}  Step : DINT;  (* added per call *)
+END_VAR
+VAR_OUTPUT
+  N : DINT;  (* the sum *)
+END_VAR
+N := N + Step;
+END_FUNCTION_BLOCK
+"""
+COUNTER_TEST = """(* SPDX-License-Identifier: MIT *)
+(* FB_Counter called from another file. *)
+FUNCTION_BLOCK FB_TestCounter
+VAR
+  Count : FB_Counter;
+END_VAR
+Count(Step := 2);
+IF GVL_Plant.Scans = DINT#3 THEN
+  AssertEquals_DINT(Expected := 6, Actual := Count.N, Message := 'three calls of 2');
+  TEST_FINISHED();
+END_IF;
+END_FUNCTION_BLOCK
+"""
+
+
+class RebuildTest(unittest.TestCase):
+    """A second run after an FB's interface changed rebuilds its callers too, whose C text pacst leaves as
+    it was: their objects would read the FB's old layout; and the first build's objects leave no lines in
+    the coverage."""
+
+    def test_an_interface_change_rebuilds_the_callers(self):
+        folder = os.path.join(OUT, "rebuild", "src")
+        os.makedirs(folder, exist_ok=True)
+        for name in ("GVL_Plant.st", "PRG_Count.st", "PRG_Slow.st", "wiring.json"):
+            with open(os.path.join(HERE, "fixture", name), encoding="utf-8") as f, \
+                    open(os.path.join(folder, name), "w", encoding="utf-8") as g:
+                g.write(f.read())
+        with open(os.path.join(folder, "FB_TestCounter.st"), "w", encoding="utf-8") as f:
+            f.write(COUNTER_TEST)
+        body_lines = []
+        for extra in ("", "  Spare1 : DINT;  (* moves Step and N *)\n  Spare2 : LREAL;  (* and more *)\n"):
+            text = COUNTER.format(extra=extra)
+            with open(os.path.join(folder, "FB_Counter.st"), "w", encoding="utf-8") as f:
+                f.write(text)
+            body_lines.append(text.splitlines().index("N := N + Step;") + 1)
+            out = os.path.join(OUT, "rebuild", "out")
+            run = pac_test(os.path.join(folder, "wiring.json"), out)
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertIn("ok  FB_TestCounter  (1 asserts", run.stdout)
+        # the coverage counts the new build's lines only, not the first build's objects' as well
+        with open(os.path.join(out, "coverage", "gcovr.json"), encoding="utf-8") as f:
+            files = {os.path.basename(e["file"]): e for e in json.load(f)["files"]}
+        lines = {line["line_number"] for line in files["FB_Counter.st"]["lines"]}
+        self.assertIn(body_lines[1], lines)
+        self.assertNotIn(body_lines[0], lines)
+
+
+class WiringRefusalTest(unittest.TestCase):
+    """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
+
+    def refused(self, change, listing=True):
+        with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        change(data)
+        path = os.path.join(OUT, "refused", "wiring.json")
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        run = pac_test(path, os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        return run.stderr
+
+    def test_unknown_key(self):
+        self.assertIn("$.taks: unknown key", self.refused(lambda d: d.update(taks=[])))
+
+    def test_unknown_test_task(self):
+        self.assertIn("$.tests.task: no task named \"Medium\"",
+                      self.refused(lambda d: d["tests"].update(task="Medium")))
+
+    def test_controller_settings_are_the_scenario_loaders(self):
+        self.assertIn("$.controller.n_registers[\"2000\"]: out of range",
+                      self.refused(lambda d: d.update(controller={"n_registers": {"2000": 1}}), listing=False))
+
+    def test_a_fault_the_scenario_format_does_not_know(self):
+        self.assertIn("$.tests.faults.FB_TestPasses[1].fault: unknown fault \"melt_down\"",
+                      self.refused(lambda d: d["tests"].update(faults={"FB_TestPasses": [
+                          {"at_ms": 10, "fault": "power_cycle"}, {"at_ms": 5, "fault": "melt_down"}]}), listing=False))
+
+    def test_an_automatic_module_is_its_axis_modules_image(self):
+        self.assertIn("$.bus.automatic[0]: module 1 has one image",
+                      self.refused(lambda d: d.update(bus={"ctrl": {"in": "%IB8", "out": "%QB8"},
+                                                           "axes": [{"in": "%IB16", "out": "%QB16"}],
+                                                           "automatic": [{"in": "%IB40", "out": "%QB40"}]})))
+
+    def test_unknown_program(self):
+        self.assertIn("$.tasks[0].programs[0]: no PROGRAM PRG_Other",
+                      self.refused(lambda d: d["tasks"][0].update(programs=["PRG_Other"])))
+
+    def test_located_image_on_the_wrong_side(self):
+        self.assertIn("$.bus.cmd.in: a located input image starts at %IBn",
+                      self.refused(lambda d: d.update(bus={"cmd": {"in": "%QB0", "out": "%QB0"}})))
+
+    def test_axis_modules_need_the_ctrl_module(self):
+        self.assertIn("$.bus.axes: axis modules need the CTRL module",
+                      self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
+
+
+def outcomes(stdout):
+    """{test: (mark, asserts, [(scan, t, message)...])}: what a run found, without where it found it."""
+    found = {}
+    for line in stdout.splitlines():
+        head = re.match(r"^\s*(ok|FAILED|failed \(expected\)|ERROR)  (\w+)  \((\d+) asserts", line)
+        if head:
+            found[head.group(2)] = (head.group(1), int(head.group(3)), [])
+    for f in failures(stdout):
+        found[f["test"]][2].append((f["scan"], f["t"], f["msg"]))
+    return found
+
+
+class PlcopenRoundTripTest(unittest.TestCase):
+    """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
+    one, and read back by pac-test: the same tests end the same way, with the same failures in the same
+    scans (at the lines of the ST files pac-test extracts from the XML)."""
+
+    def round_trip(self, name, folder, sources, expected):
+        """Exports `sources` ({file name: ST text}), runs the wiring file of `folder` on the XML and on its
+        own sources, and compares."""
+        out = os.path.join(OUT, "roundtrip", name)
+        st = os.path.join(out, "st")
+        os.makedirs(st, exist_ok=True)
+        for file, text in sources.items():
+            with open(os.path.join(st, file), "w", encoding="utf-8") as f:
+                f.write(text)
+        info = os.path.join(out, "library.json")
+        with open(info, "w", encoding="utf-8") as f:
+            json.dump({"name": name, "title": name, "version": "1.0.0", "released": "2026-12-02",
+                       "company": "PA-CONTROL PLC library contributors", "license": "MIT",
+                       "description": "exported for pac-test's round trip"}, f)
+        python = os.path.join(PAC_BUILD, "venv-pacexport", "bin", "python")
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.path.join(ROOT, "tools", "pacexport"),
+                                                            os.path.join(ROOT, "translator")]))
+        export = subprocess.run([python, "-m", "pacexport", "export", "--library", info, "--out",
+                                 os.path.join(out, "export"), *sorted(sources)], cwd=st, env=env,
+                                capture_output=True, text=True)
+        self.assertEqual(export.returncode, 0, export.stderr)
+        with open(os.path.join(folder, "wiring.json"), encoding="utf-8") as f:
+            wiring = json.load(f)
+        wiring["sources"] = [f"export/{name.lower()}.xml"]
+        with open(os.path.join(out, "wiring.json"), "w", encoding="utf-8") as f:
+            json.dump(wiring, f)
+        from_source = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "source"), "--no-coverage")
+        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
+        self.assertEqual(from_xml.returncode, from_source.returncode, from_xml.stdout + from_xml.stderr)
+        found = outcomes(from_source.stdout)
+        self.assertEqual(sorted(found), expected[0], from_source.stdout)
+        self.assertEqual(sum(len(f) for _, _, f in found.values()), expected[1], from_source.stdout)
+        self.assertEqual(outcomes(from_xml.stdout), found)
+
+    def test_the_example_from_its_plcopen_export(self):
+        sys.path.insert(0, os.path.join(ROOT, "translator"))
+        from pacst import twincat  # the TwinCAT files as ST, as a CODESYS project would hold them
+        folder = os.path.join(ROOT, "examples", "pick_and_place")
+        sources = {}
+        for path in twincat.project_files(os.path.join(folder, "PickAndPlace", "PickAndPlace.plcproj")):
+            with open(path, encoding="utf-8-sig") as f:
+                sources[os.path.splitext(os.path.basename(path))[0] + ".st"] = twincat.object_st(f.read(), path)
+        self.round_trip("PickAndPlace", folder, sources, (EXAMPLE_TESTS, 1))
+
+    def test_the_fixture_from_its_plcopen_export(self):
+        folder = os.path.join(HERE, "fixture")
+        sources = {}
+        for file in sorted(n for n in os.listdir(folder) if n.endswith(".st")):
+            with open(os.path.join(folder, file), encoding="utf-8") as f:
+                sources[file] = f.read()
+        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7))
+
+
+class DocsCiJobsTest(unittest.TestCase):
+    """The CI snippets of docs/user_tests.md call pac-test with options it has: each command line, with the
+    CI system's shard variables filled in, lists the example's tests of that shard."""
+
+    def test_every_pac_test_line_of_the_yaml_blocks_runs(self):
+        with open(os.path.join(ROOT, "docs", "user_tests.md"), encoding="utf-8") as f:
+            blocks = re.findall(r"^```yaml\n(.*?)^```", f.read(), re.S | re.M)
+        commands = [line.split("pac-test", 1)[1] for block in blocks for line in block.splitlines()
+                    if re.search(r"bin/pac-test ", line)]
+        self.assertEqual(len(commands), 2, blocks)
+        wiring = os.path.join(ROOT, "examples", "pick_and_place", "wiring.json")
+        for command in commands:
+            args = command.replace("$CI_NODE_INDEX/$CI_NODE_TOTAL", "1/4").replace("${{ matrix.shard }}", "1").split()
+            self.assertEqual(args[0], "wiring.json")
+            run = pac_test(wiring, os.path.join(OUT, "pick_and_place_docs"), *args[1:], "--list", "--no-coverage")
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertEqual(run.stdout.split(), [n for n in EXAMPLE_TESTS if shard_of(n, 4) == 0])
+
+
+if __name__ == "__main__":
+    unittest.main()
