@@ -83,9 +83,9 @@ def _located_copies(symbols, copy_in, copy_out):
             _memcpy(lines, side, f"&{var}", f"{image} + {byte}", f"sizeof {var}")
 
 
-def _signals(symbols, wanted):
-    """The VCD's signals: the globals and the programs' variables of elementary type (or those `wanted`
-    names, globs with *)."""
+def signal_entries(symbols, wanted):
+    """The VCD's signals as (path, C expression, Signal kind): the globals and the programs' variables of
+    elementary type (or those `wanted` names, globs with *)."""
     patterns = [re.compile("^" + re.escape(w).replace("\\*", ".*") + "$", re.I) for w in wanted]
     out = []
 
@@ -98,7 +98,7 @@ def _signals(symbols, wanted):
             return
         if patterns and not any(p.match(path) for p in patterns):
             return
-        out.append(f"        {{\"{path}\", &{expr}, pactest::Signal::Kind::{kind}, static_cast<int>(sizeof {expr})}},")
+        out.append((path, expr, kind))
 
     for g in symbols.table["globals"]:
         if not g.get("constant"):
@@ -108,6 +108,11 @@ def _signals(symbols, wanted):
             if v.get("wrapped", True):
                 add(f"{p['name']}.{v['name']}", f"program_{p['c_type']}.{v['c_name']}.value", v["type"])
     return out
+
+
+def _signals(symbols, wanted):
+    return [f"        {{\"{path}\", &{expr}, pactest::Signal::Kind::{kind}, static_cast<int>(sizeof {expr})}},"
+            for path, expr, kind in signal_entries(symbols, wanted)]
 
 
 def programs_of(symbols, wiring):
