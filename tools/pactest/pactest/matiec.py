@@ -6,9 +6,11 @@ POU, #line directives). The vocabulary's FUNCTIONs stay the host's C (pactest_na
 left out and their headers pass the ST file and line of each call, as pacst's C does. The host binds MATIEC's
 globals (PACCONFIG__NAME) and program instances (PACRESOURCE__INST_NAME); pacst's symbol table still names
 the tests, programs and variables."""
+import concurrent.futures
 import json
 import os
 import re
+import shutil
 
 from . import build, hostgen, project
 
@@ -50,7 +52,7 @@ class MatiecHostBuild(build.HostBuild):
         build._run([iec2c, "-b", "-i", "-O", "p,l", "-I", lib, "-T", self.c_dir, st], "iec2c")
         with open(line_map, encoding="utf-8") as f:
             self._fix_lines(json.load(f))
-        self._natives(symbols)
+        self._natives()
         return symbols
 
     def _fix_lines(self, bodies):
@@ -87,7 +89,7 @@ class MatiecHostBuild(build.HostBuild):
             with open(path, "w", encoding="utf-8") as f:
                 f.write("\n".join(out))
 
-    def _natives(self, symbols):
+    def _natives(self):
         """The vocabulary's FUNCTIONs: their C left out of POUS.c, each call given the file and line."""
         names = {os.path.splitext(os.path.basename(f))[0] for f in project.native_sources()}
         with open(os.path.join(self.c_dir, "POUS.c"), encoding="utf-8") as f:
@@ -106,7 +108,8 @@ class MatiecHostBuild(build.HostBuild):
     def build(self, symbols, tests):
         os.makedirs(self.obj, exist_ok=True)
         glue, project_cpp = generate(symbols, self.wiring, tests, self.c_dir)
-        files = {os.path.join(self.mat, "pactest_glue.c"): glue, os.path.join(self.out, "pactest_project.cpp"): project_cpp}
+        files = {os.path.join(self.mat, "pactest_glue.c"): glue,
+                 os.path.join(self.out, "pactest_project.cpp"): project_cpp}
         for path, text in files.items():
             if not os.path.exists(path) or open(path, encoding="utf-8").read() != text:
                 with open(path, "w", encoding="utf-8") as f:
@@ -115,7 +118,9 @@ class MatiecHostBuild(build.HostBuild):
                    os.path.join(self.mat, "pactest_glue.c")]
         cxx_files = [os.path.join(self.out, "pactest_project.cpp"), os.path.join(project.HOST, "pactest_host.cpp"),
                      os.path.join(project.HOST, "pactest_natives.cpp")]
-        objects = [self._compile_matiec(c) for c in c_files] + [self._compile(c, True) for c in cxx_files]
+        with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
+            objects = list(pool.map(self._compile_matiec, c_files)) + \
+                list(pool.map(lambda c: self._compile(c, True), cxx_files))
         linker = os.environ.get("CXX", "c++")
         sanitize = ["-fsanitize=address,undefined"] if self.pac.sanitize else []
         # not the build's pac_st: the library is MATIEC's C above, compiled with the program
@@ -126,9 +131,12 @@ class MatiecHostBuild(build.HostBuild):
     def _compile_matiec(self, source):
         compiler = os.environ.get("CC", "cc")
         obj = os.path.join(self.obj, os.path.splitext(os.path.basename(source))[0] + ".o")
-        build._run([compiler, *self._flags(False)[:-2], "-std=gnu11", "-I", self.c_dir,
-                    "-I", os.path.join(self.pac.matiec[1], "C"), "-c", source, "-o", obj],
-                   f"compiling MATIEC's {os.path.basename(source)}")
+        sanitize = ["-fsanitize=address,undefined", "-fno-sanitize-recover=undefined"] if self.pac.sanitize else []
+        # MATIEC's C is GNU C (statement expressions); -w: it warns of much that is meant
+        flags = ["-g", "-fno-omit-frame-pointer", *sanitize, "-std=gnu11", "-fwrapv", "-w", "-O1"]
+        launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
+        build._run(launcher + [compiler, *flags, "-I", self.c_dir, "-I", os.path.join(self.pac.matiec[1], "C"),
+                               "-c", source, "-o", obj], f"compiling MATIEC's {os.path.basename(source)}")
         return obj
 
 
@@ -228,8 +236,8 @@ def generate(symbols, wiring, tests, c_dir):
     cpp += [f"        {{\"{t['name']}\", \"{wiring.test_task}\", pactest_test_{t['c_type']}}}," for t in tests]
     cpp += ["    };", "    project.init = pactest_init;", "    project.copyIn = pactest_copy_in;",
             "    project.copyOut = pactest_copy_out;", "    project.signals = {"]
-    cpp += [f"        {{\"{path}\", pactest_signal_data[{i}], pactest::Signal::Kind::{kind}, pactest_signal_bytes[{i}]}},"
-            for i, (path, _, kind) in enumerate(signals, 1)]
+    cpp += [f"        {{\"{path}\", pactest_signal_data[{i}], pactest::Signal::Kind::{kind}, "
+            f"pactest_signal_bytes[{i}]}}," for i, (path, _, kind) in enumerate(signals, 1)]
     cpp += ["    };", "    return pactest::Main(argc, argv, project);", "}", ""]
     return "\n".join(c), "\n".join(cpp)
 

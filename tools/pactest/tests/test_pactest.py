@@ -314,6 +314,27 @@ def outcomes(stdout):
     return found
 
 
+@unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
+class MatiecRefusalTest(unittest.TestCase):
+    """On a MATIEC build, ST that MATIEC refuses stops the run with iec2c's own message (exit code 2): the
+    fixture with a variable named Step, a keyword of SFC to MATIEC (pacst accepts it)."""
+
+    def test_iec2c_refusal(self):
+        import shutil
+        folder = os.path.join(OUT, "matiec-refusal")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        path = os.path.join(folder, "PRG_Count.st")
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(re.sub(r"\bIncrement\b", "Step", text))
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"))
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("iec2c failed", run.stderr)
+        self.assertRegex(run.stderr, r"program\.st:\d+: error: invalid located variable declaration")
+
+
 class PlcopenRoundTripTest(unittest.TestCase):
     """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
