@@ -2,6 +2,8 @@
 // declare, files in any order), TwinCAT and PLCopen inputs, `pacst matiec`, --native only with --user.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -232,6 +234,33 @@ TEST_F(TranslatorUserCli, MatiecSourceHasTheConfigurationTasksAndExternals) {
              "    PROGRAM Inst_PRG_Main WITH Fast : PRG_Main;\n  END_RESOURCE\nEND_CONFIGURATION\n"}) {
         EXPECT_NE(st.find(want), std::string::npos) << "missing:\n" << want << "\nin:\n" << st;
     }
+}
+
+// A native FUNCTION (the host's C, as pac-test's asserts) goes to MATIEC as its interface, a local variable where
+// it has none (MATIEC parses no FUNCTION without a variable block); --line-map says where each body came from.
+TEST_F(TranslatorUserCli, MatiecWritesNativesAsInterfacesAndMapsTheBodies) {
+    auto check = Write("F_Check.st", "FUNCTION F_Check : BOOL\nVAR_INPUT\n  C : BOOL;\nEND_VAR\nF_Check := C;\n"
+                                     "END_FUNCTION\n");
+    auto done = Write("F_Done.st", "FUNCTION F_Done : BOOL\nF_Done := TRUE;\nEND_FUNCTION\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nN := N + 1;\nF_Check(C := N > 2);\n"
+                                     "F_Done();\nEND_PROGRAM\n");
+    auto out = (dir_ / "out" / "user.st").string();
+    auto map = (dir_ / "out" / "lines.json").string();
+    auto result = RunTranslator({"matiec", "--out", out, "--line-map", map, "--native", check, "--native", done, main});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string st = ReadFile(out);
+    for (const char* want : {
+             "FUNCTION F_Check : BOOL\nVAR_INPUT\n  C : BOOL;\nEND_VAR\nF_Check := F_Check;\nEND_FUNCTION",
+             "FUNCTION F_Done : BOOL\nVAR\n  PacUnused : BOOL;\nEND_VAR\nF_Done := F_Done;\nEND_FUNCTION",
+             "N := N + 1;\nF_Check(C := N > 2);\nF_Done();\nEND_PROGRAM"}) {
+        EXPECT_NE(st.find(want), std::string::npos) << "missing:\n" << want << "\nin:\n" << st;
+    }
+    // PRG_Main's body starts at its line 3; the map gives the line of user.st where that line is
+    const auto at = st.find("N := N + 1;");
+    ASSERT_NE(at, std::string::npos) << st;
+    const auto line = 1 + std::count(st.begin(), st.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+    const std::string entry = "[\n" + std::to_string(line) + ",\n\"" + main + "\",\n3\n]";
+    EXPECT_NE(ReadFile(map).find(entry), std::string::npos) << entry << "\nin:\n" << ReadFile(map);
 }
 
 TEST_F(TranslatorUserCli, MatiecRefusesAFunctionThatReadsGlobals) {

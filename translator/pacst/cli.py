@@ -2,6 +2,7 @@
 C++ code of a MATIEC build includes, and the check that MATIEC lays them out the same; `pacst check`
 only checks; `pacst order` prints files in the declaration order the others need."""
 import argparse
+import json
 import os
 import sys
 import tempfile
@@ -157,7 +158,7 @@ def _matiec(args):
     try:
         files = _user_files(args)
         comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native)
-        text = matiec.source(comp, program, matiec.read_tasks(args.tasks))
+        text, lines = matiec.source_and_lines(comp, program, matiec.read_tasks(args.tasks))
     except StError as e:
         print(e, file=sys.stderr)
         return 1
@@ -167,6 +168,9 @@ def _matiec(args):
         return 1
     out_dir = os.path.dirname(os.path.abspath(args.out))
     write_outputs(out_dir, {os.path.basename(args.out): text})
+    if args.line_map:
+        with open(args.line_map, "w", encoding="utf-8") as f:
+            json.dump(lines, f, indent=0)
     return 0
 
 
@@ -239,6 +243,8 @@ def main(argv=None):
     mat.add_argument("--out", required=True, help="the ST file to write")
     mat.add_argument("--tasks", help="JSON: {\"PRG_Name\": {\"task\": \"Fast\", \"interval\": \"T#10MS\", "
                                      "\"priority\": 1}}; a PROGRAM not listed runs in PacTask every 10 ms")
+    mat.add_argument("--line-map", help="JSON file: where each POU's body in the written file came from, "
+                                        "[[line there, ST file, line in it], ...] (for #line directives)")
     _parse_options(mat)
     _user_options(mat)
     mat.add_argument("files", nargs="+")

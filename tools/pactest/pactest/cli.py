@@ -12,7 +12,7 @@ import subprocess
 import sys
 import time
 
-from . import build, coverage, hostgen, junit, project
+from . import build, coverage, hostgen, junit, matiec, project
 from .wiring import Wiring, WiringError, wiring_path
 
 EXIT_PASSED, EXIT_FAILED, EXIT_REFUSED, EXIT_INTERNAL = 0, 1, 2, 3
@@ -138,8 +138,12 @@ def main(argv=None):
     try:
         wiring = Wiring(args.wiring)
         pac = project.PacBuild(args.pac_build)
-        host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs,
-                                     parse_cache=args.parse_cache)
+        if pac.matiec:  # MATIEC's C has no coverage table of the user's ST (docs/user_tests.md, "On MATIEC")
+            args.no_coverage = True
+            host_build = matiec.MatiecHostBuild(wiring, pac, out, jobs=args.jobs, parse_cache=args.parse_cache)
+        else:
+            host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs,
+                                         parse_cache=args.parse_cache)
         symbols = host_build.translate()
         hostgen.programs_of(symbols, wiring)
         tests = host_build.tests(symbols)

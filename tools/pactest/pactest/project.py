@@ -48,9 +48,10 @@ class PacBuild:
                              "(configure and build it first: cmake --preset default && cmake --build build)")
         with open(cache, encoding="utf-8") as f:
             self.cache = dict(re.findall(r"^([A-Za-z_0-9]+):[A-Z]+=(.*)$", f.read(), re.M))
-        if self.cache.get("PAC_ST_COMPILER", "pacst") != "pacst":
-            raise SystemExit(f"pac-test: {self.folder} is a MATIEC build: the host links pacst's library "
-                             "(use a pacst build)")
+        # a MATIEC build: pac-test compiles the library and the user's ST with its iec2c (matiec.py)
+        self.matiec = None
+        if self.cache.get("PAC_ST_COMPILER", "pacst") == "matiec":
+            self.matiec = (self.cache.get("IEC2C", ""), self.cache.get("MATIEC_LIB", ""))
         # the library's objects carry gcov's counters in a coverage build: the host links with --coverage
         self.coverage = self.cache.get("PAC_COVERAGE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
         self.sanitize = self.cache.get("PAC_SANITIZE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
@@ -65,7 +66,8 @@ class PacBuild:
         if missing:
             raise SystemExit(f"pac-test: {self.folder} lacks {', '.join(missing)}: build them first "
                              f"(cmake --build {self.folder} --target pac_scenario_lib)")
-        self.library_c = os.path.join(self.folder, "st", "pac_st.st-c")
+        # pacst's declarations of the library (in a MATIEC build those C++ code includes)
+        self.library_c = os.path.join(self.folder, "st", "pac_st.st-c", *(["decl"] if self.matiec else []))
         if not os.path.exists(os.path.join(self.library_c, "POUS.h")):
             raise SystemExit(f"pac-test: {self.folder} holds no translated library (pac_st.st-c): is it a pacst build?")
 

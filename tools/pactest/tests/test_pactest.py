@@ -18,6 +18,18 @@ sys.path.insert(0, TOOL)
 from pactest.cli import shard_of  # noqa: E402
 
 PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
+
+
+def _matiec_build(folder):
+    """A MATIEC build (the matiec preset): pac-test compiles with iec2c and writes no coverage table."""
+    try:
+        with open(os.path.join(folder, "CMakeCache.txt"), encoding="utf-8") as f:
+            return re.search(r"^PAC_ST_COMPILER:\w+=matiec$", f.read(), re.M) is not None
+    except OSError:
+        return False
+
+
+MATIEC = _matiec_build(PAC_BUILD)
 OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
 EXAMPLE_TESTS = ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
                  "FB_TestShowsAFailure", "FB_TestStopInput"]
@@ -101,6 +113,7 @@ class ExampleTest(unittest.TestCase):
     def test_junit_xml_validates(self):
         check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=0, skipped=1)
 
+    @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
     def test_coverage_table_of_the_machine_program(self):
         self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
         with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
@@ -299,6 +312,27 @@ def outcomes(stdout):
     for f in failures(stdout):
         found[f["test"]][2].append((f["scan"], f["t"], f["msg"]))
     return found
+
+
+@unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
+class MatiecRefusalTest(unittest.TestCase):
+    """On a MATIEC build, ST that MATIEC refuses stops the run with iec2c's own message (exit code 2): the
+    fixture with a variable named Step, a keyword of SFC to MATIEC (pacst accepts it)."""
+
+    def test_iec2c_refusal(self):
+        import shutil
+        folder = os.path.join(OUT, "matiec-refusal")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        path = os.path.join(folder, "PRG_Count.st")
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(re.sub(r"\bIncrement\b", "Step", text))
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"))
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("iec2c failed", run.stderr)
+        self.assertRegex(run.stderr, r"program\.st:\d+: error: invalid located variable declaration")
 
 
 class PlcopenRoundTripTest(unittest.TestCase):
