@@ -59,6 +59,23 @@ TEST_F(TranslatorUserCli, FilesMayComeInAnyOrder) {
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps its declaration order (MATIEC)";
 }
 
+TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
+    // A TwinCAT or CODESYS programmer never types END_FUNCTION_BLOCK or END_PROGRAM: the editor keeps
+    // them out, and so do the .st files such a programmer writes, one POU per file. User mode closes the
+    // file's one POU at its end (as it does for a TwinCAT object); failures keep the file's lines.
+    auto fb = Write("FB_Lamp.st", "// the lamp\nFUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\n"
+                                  "VAR_OUTPUT N : INT; END_VAR\nIF On THEN\n  N := N + 1;\nEND_IF\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : FB_Lamp; END_VAR\nLamp(On := TRUE);\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), fb, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bad = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : FB_Lamp; END_VAR\nLamp(On := TRUE)\nLamp(On := FALSE);\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), fb, bad});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    result = RunTranslator({"build", "--out", Out(), fb, main});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps the IEC end keywords";
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

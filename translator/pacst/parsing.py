@@ -186,7 +186,24 @@ def _read(path, user=False):
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
     if user and twincat.is_object_file(path):
         return twincat.object_st(text, path)
-    return text
+    return _closed_pou(text, path) if user else text
+
+
+_POU_OPENERS = ("FUNCTION_BLOCK", "FUNCTION", "PROGRAM")
+
+
+def _closed_pou(text, path):
+    """A user's .st file of one POU without its END_ keyword (the TwinCAT and CODESYS editors keep it out,
+    and programmers write their files so), closed after its last line as a TwinCAT object is; the lines
+    stay the file's. A file with any END_ keyword of a POU, or with several POUs, is left as it is."""
+    try:
+        words = [t.upper for t in lexcheck.tokenize(text, path, user=True) if t.kind == "ident"]
+    except StError:
+        return text  # the check names what is wrong
+    opened = [w for w in words if w in _POU_OPENERS]
+    if len(opened) != 1 or any(w in ("END_" + k for k in _POU_OPENERS) for w in words):
+        return text
+    return f"{text}\nEND_{opened[0]}\n"
 
 
 def _cached_tree(cache_dir, key):
