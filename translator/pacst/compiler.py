@@ -292,7 +292,9 @@ class Compiler:
             values = []
             for ev in spec.values:
                 if ev.value is not None or ev.type_name is not None:
-                    raise self.err(ev, "enumeration values without explicit numbers (portable subset)")
+                    raise self.err(ev, f"'{_name(ev.name)} := {ev.value}': an enumeration value with an explicit "
+                                       "number is outside the portable subset (user programs too): leave the "
+                                       "numbers out, the values count from 0 in their order")
                 vname = _name(ev.name)
                 if "." in vname:
                     raise self.err(ev, "qualified enumeration value")
