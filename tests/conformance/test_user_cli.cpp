@@ -76,6 +76,27 @@ TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps the IEC end keywords";
 }
 
+TEST_F(TranslatorUserCli, UseOfAGlobalListWithARefusedDeclarationSaysSo) {
+    // One refused line of a global list must not read, further down, as variables the list lacks.
+    auto list = Write("GVL_Hmi.st", "VAR_GLOBAL\n  Speed : NoSuchType;\n  Message : STRING(80);\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Message := 'x';\n"
+                                     "END_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(list + ":2:11: error:"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("has no variable"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Message cannot be used: a declaration of the "
+                                        "global variable list GVL_Hmi was refused (above)"),
+              std::string::npos)
+        << result.output;
+    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nMessage := 'x';\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), list, unqualified});
+    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Message' (or one after a refused "
+                                               "declaration of GVL_Hmi, above)"),
+              std::string::npos)
+        << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

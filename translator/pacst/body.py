@@ -46,7 +46,9 @@ class BodyCompiler:
                 raise self.err(token, f"enumeration value '{name}' cannot be written")
             if up in self.comp.types:
                 raise self.err(token, f"'{name}' is a type, not a variable")
-            raise self.err(token, f"undeclared name '{name}'")
+            refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
+            hint = f" (or one after a refused declaration of {', '.join(refused)}, above)" if refused else ""
+            raise self.err(token, f"undeclared name '{name}'{hint}")
         writable, why = True, ""
         if v.constant:
             writable, why = False, "it is a CONSTANT"
@@ -72,6 +74,9 @@ class BodyCompiler:
         if _cls(first) != "FieldSelector" or _cls(first.field) != "SimpleVariable":
             raise self.err(first, f"{gvl.name} is a global variable list: name one of its variables")
         g = gvl.var(_name(first.field.name))
+        if g is None and gvl.refused:
+            raise self.err(first.field, f"{gvl.name}.{_name(first.field.name)} cannot be used: a declaration of the "
+                                        f"global variable list {gvl.name} was refused (above)")
         if g is None:
             raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
         if all(e is not g for e, _ in self.pou.externals.values()):
