@@ -97,6 +97,29 @@ TEST_F(TranslatorUserCli, UseOfAGlobalListWithARefusedDeclarationSaysSo) {
         << result.output;
 }
 
+TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
+    // TwinCAT's new DUTs are {attribute 'qualified_only'}: programs write E_Step.HOMING, and a value may
+    // have the name of a variable (the library's MC_ReadStatus has an output Homing), which shadows it.
+    auto type = Write("E_Step.st", "{attribute 'qualified_only'}\nTYPE E_Step :\n(\n  IDLE,\n  HOMING,\n  FAULT\n);\n"
+                                   "END_TYPE\n");
+    auto fb = Write("FB_Status.st", "FUNCTION_BLOCK FB_Status\nVAR_OUTPUT Homing : BOOL; END_VAR\n"
+                                    "Homing := NOT Homing;\nEND_FUNCTION_BLOCK\n");
+    auto main = Write("PRG_Main.st",
+                      "PROGRAM PRG_Main\nVAR Step : E_Step := E_Step.IDLE; Status : FB_Status; END_VAR\n"
+                      "Status();\nCASE Step OF\n  E_Step.IDLE: Step := E_Step.HOMING;\n"
+                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := FAULT; END_IF;\n"
+                      "END_CASE;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
+                                      "END_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});
+    EXPECT_NE(result.output.find(wrong + ":3:16: error: E_Step has no value 'RUN'"), std::string::npos)
+        << result.output;
+    result = RunTranslator({"build", "--out", Out(), type, fb, main});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps values unqualified and distinct from names";
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

@@ -264,7 +264,10 @@ class BodyCompiler:
         cls = _cls(node)
         # blark parses a name as a CASE label into an EnumeratedValue (E#A and E.A included).
         label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
-        if cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
+        if cls == "EnumeratedValue" and self.comp.user and node.type_name is None and label.count(".") == 1 \
+                and sel_type.is_enum and label.split(".")[0].upper() == sel_type.name.upper():
+            label = self.comp.enum_value_of(sel_type, label.split(".")[1], node)  # TwinCAT's qualified_only
+        elif cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
             raise self.err(node, "qualified enumeration value: write the value alone (E#A and E.A are not "
                                  "accepted by every tool)")
         if sel_type.is_enum:

@@ -481,7 +481,7 @@ class Compiler:
             raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
         if up in self.types or up in self.pous or up in self.declared_at:
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
-        if up in self.enum_values:
+        if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
@@ -502,6 +502,24 @@ class Compiler:
         return v
 
     # ------------------------------------------------------------------ initial values
+    def qualified_enum_value(self, node):
+        """User mode: (the EnumType, the value's spelling) of `E_Type.VALUE` (TwinCAT's qualified_only
+        enumerations), or None when `node` is no such name; an unknown value of the type is an error."""
+        if not self.user or _cls(node) != "MultiElementVariable" or len(node.elements) != 1:
+            return None
+        t = self.types.get(_name(node.name.name).upper())
+        field = node.elements[0]
+        if t is None or not t.is_enum or _cls(field) != "FieldSelector" or _cls(field.field) != "SimpleVariable":
+            return None
+        return t, self.enum_value_of(t, _name(field.field.name), field.field)
+
+    def enum_value_of(self, t, name, node):
+        """The spelling of the value `name` of the enumeration `t`; an error at `node` when it has none."""
+        value = next((v for v in t.values if v.upper() == name.upper()), None)
+        if value is None:
+            raise self.err(node, f"{t.name} has no value '{name}'")
+        return value
+
     def literal_te(self, node, want):
         """Type an initial value, which must be a literal or an enumeration value."""
         cls = _cls(node)
@@ -511,6 +529,8 @@ class Compiler:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
+                pass
+            elif self.qualified_enum_value(node) is not None:
                 pass
             else:
                 raise self.err(node, "initial value must be a literal (MATIEC, CODESYS and TwinCAT differ on "

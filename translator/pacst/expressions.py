@@ -177,6 +177,12 @@ class ExprCompiler:
             et = self.comp.enum_values[name.upper()]
             value = next(v for v in et.values if v.upper() == name.upper())
             return TE(et, et.cvalue(value))
+        qualified = None
+        if _cls(node) == "MultiElementVariable" and (self.body is None or self.body.lookup(_name(node.name.name)) is None):
+            qualified = self.comp.qualified_enum_value(node)  # a variable of the type's name shadows it
+        if qualified is not None:
+            et, value = qualified
+            return TE(et, et.cvalue(value))
         if self.body is None:
             raise self.err(node, "initial value must be a literal")
         ref = self.body.ref(node)
