@@ -53,6 +53,9 @@ class ExprCompiler:
         if te.type.is_elementary and target.is_elementary and \
                 te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
             hint = f" (write {te.type.name}_TO_{target.name})"
+        elif te.type.is_array and target.is_array and (te.type.low, te.type.high, te.type.elem) == \
+                (target.low, target.high, target.elem):
+            hint = f" (declare it as {target.name}: an array type is matched by its name, not by its bounds)"
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
                              f"implicit conversion{hint}")
 
