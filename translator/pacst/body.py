@@ -5,7 +5,7 @@ from . import literals
 from . import types as T
 from . import user
 from .common import _BIT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
-from .expressions import ExprCompiler
+from .expressions import ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -385,7 +385,8 @@ class BodyCompiler:
                 arg = self.ref(p.value)
                 if arg.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: VAR_IN_OUT {pname} is {fv.type.name}, "
-                                            f"'{arg.var.name}' is {arg.type.name}")
+                                            f"'{arg.var.name}' is {arg.type.name}"
+                                            f"{array_name_hint(arg.type, fv.type)}")
                 if not arg.writable:
                     raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
                 pre.append(f"{ind}{member}.value = {arg.read()};")

@@ -15,6 +15,14 @@ _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
+def array_name_hint(actual, target):
+    """What to write when an array is given where an array type of the same bounds is expected."""
+    if actual.is_array and target.is_array and (actual.low, actual.high, actual.elem) == \
+            (target.low, target.high, target.elem):
+        return f" (declare it as {target.name}: an array type is matched by its name, not by its bounds)"
+    return ""
+
+
 class ExprCompiler:
     """Types and translates expressions inside one POU (or an initial value, with pou None)."""
 
@@ -53,9 +61,8 @@ class ExprCompiler:
         if te.type.is_elementary and target.is_elementary and \
                 te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
             hint = f" (write {te.type.name}_TO_{target.name})"
-        elif te.type.is_array and target.is_array and (te.type.low, te.type.high, te.type.elem) == \
-                (target.low, target.high, target.elem):
-            hint = f" (declare it as {target.name}: an array type is matched by its name, not by its bounds)"
+        else:
+            hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
                              f"implicit conversion{hint}")
 
