@@ -120,6 +120,16 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps values unqualified and distinct from names";
 }
 
+TEST_F(TranslatorUserCli, IntegersAndBoolsConvertToStringForMessages) {
+    // HMI messages: CONCAT('trip ', UDINT_TO_STRING(Trips)); written in decimal by every tool.
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Text : STRING(80); N : INT := -5; Trips : UDINT;\n"
+                                     "Ok : BOOL; W : WORD; END_VAR\n"
+                                     "Text := CONCAT(INT_TO_STRING(N), UDINT_TO_STRING(Trips));\n"
+                                     "Text := CONCAT(BOOL_TO_STRING(Ok), WORD_TO_STRING(W));\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

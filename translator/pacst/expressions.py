@@ -358,6 +358,25 @@ class ExprCompiler:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
 
+    def _string_conversion(self, node, src, dst):
+        """User mode: an integer, bit string or BOOL to STRING, in decimal ('TRUE', 'FALSE'), as CODESYS,
+        TwinCAT and MATIEC write them; the other conversions with STRING are refused with the reason."""
+        name = f"{src}_TO_{dst}"
+        if dst != "STRING":
+            raise self.err(node, f"{name} is outside pacst's user programs: the tools parse a STRING differently")
+        if src in ("REAL", "LREAL"):
+            raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
+                                 f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
+        if src not in _CONVERTIBLE:
+            raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
+                                 "are converted to STRING")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.ELEMENTARY[src]
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if st.is_bool:
+            return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
+        return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
+
     def _string_function(self, node, fn):
         """The standard string functions (user mode): positions count from 1, results keep at most the
         STRING capacity, as MATIEC's library does."""
@@ -399,6 +418,8 @@ class ExprCompiler:
         return [by_name[n] for n in names]
 
     def _conversion(self, node, src, dst):
+        if self.comp.user and "STRING" in (src, dst):
+            return self._string_conversion(node, src, dst)
         for tname in (src, dst):
             if tname in T.OUTSIDE_SUBSET:
                 raise self.err(node, T.OUTSIDE_SUBSET[tname])
