@@ -238,6 +238,27 @@ class RebuildTest(unittest.TestCase):
         self.assertNotIn(body_lines[0], lines)
 
 
+class OutInsideTheProjectTest(unittest.TestCase):
+    """pac-test run in the project's folder writes pac-test-out there (the default --out): the coverage
+    counts the project's ST, not the C that pac-test translated it to inside pac-test-out."""
+
+    def test_coverage_names_only_the_projects_st(self):
+        folder = os.path.join(OUT, "out_inside", "project")
+        os.makedirs(folder, exist_ok=True)
+        for name in os.listdir(os.path.join(HERE, "fixture")):
+            with open(os.path.join(HERE, "fixture", name), encoding="utf-8") as f, \
+                    open(os.path.join(folder, name), "w", encoding="utf-8") as g:
+                g.write(f.read())
+        out = os.path.join(folder, "pac-test-out")
+        run = pac_test(os.path.join(folder, "wiring.json"), out, "--filter", "FB_TestPasses")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        with open(os.path.join(out, "coverage", "gcovr.json"), encoding="utf-8") as f:
+            files = sorted(os.path.relpath(e["file"], folder) if os.path.isabs(e["file"]) else e["file"]
+                           for e in json.load(f)["files"])
+        self.assertTrue(files)
+        self.assertEqual([f for f in files if not f.endswith(".st") or os.sep in f], [], run.stdout)
+
+
 class WiringRefusalTest(unittest.TestCase):
     """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
 
