@@ -137,6 +137,8 @@ def main(argv=None):
         os.makedirs(os.path.join(out, sub))
     try:
         wiring = Wiring(args.wiring)
+        for warning in wiring.warnings():
+            print(f"pac-test: warning: {args.wiring}: {warning}", file=sys.stderr)
         pac = project.PacBuild(args.pac_build)
         host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs,
                                      parse_cache=args.parse_cache)

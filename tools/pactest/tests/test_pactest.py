@@ -322,6 +322,36 @@ def outcomes(stdout):
     return found
 
 
+class WiringWarningTest(unittest.TestCase):
+    """A controller that will never start ONLINE is named before the tests run into their time limit."""
+
+    def run_with(self, controller):
+        with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["bus"]["ctrl"] = {"in": "%IB8", "out": "%QB8"}
+        data["controller"] = controller
+        data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
+        path = os.path.join(OUT, "warned", "wiring.json")
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        run = pac_test(path, os.path.join(OUT, "warned"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        return run.stderr
+
+    def test_no_external_stop_input(self):
+        self.assertIn("pac-test: warning: ", self.run_with({}))
+        self.assertIn("$.controller.system_parameters: system parameter 4 is 0: the PA-CONTROL will "
+                      "not start ONLINE", self.run_with({}))
+
+    def test_the_stop_input_without_power(self):
+        self.assertIn("$.controller.inputs: input 1 (system parameter 4) has no power: the PA-CONTROL "
+                      "will not start ONLINE", self.run_with({"system_parameters": {"4": 1}}))
+
+    def test_a_controller_that_starts(self):
+        self.assertNotIn("warning", self.run_with({"system_parameters": {"4": 1}, "inputs": {"1": True}}))
+
+
 class PlcopenRoundTripTest(unittest.TestCase):
     """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
