@@ -144,6 +144,7 @@ def main(argv=None):
                                      parse_cache=args.parse_cache)
         symbols = host_build.translate()
         hostgen.programs_of(symbols, wiring)
+        hostgen.check_module_images(symbols, wiring)
         tests = host_build.tests(symbols)
         if not tests:
             raise WiringError("$.tests", f"no test: no FUNCTION_BLOCK of the sources starts with {wiring.prefix}")

@@ -352,6 +352,26 @@ class WiringWarningTest(unittest.TestCase):
         self.assertNotIn("warning", self.run_with({"system_parameters": {"4": 1}, "inputs": {"1": True}}))
 
 
+class ModuleImageTest(unittest.TestCase):
+    """A module's address that cuts through a located image (a typing error: %IB17 for an image at %IB16)
+    would hand the program shifted bytes: refused, naming both."""
+
+    def test_a_module_straddling_a_located_image(self):
+        example = os.path.join(ROOT, "examples", "pick_and_place")
+        with open(os.path.join(example, "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["sources"] = [os.path.join(example, "PickAndPlace", "PickAndPlace.plcproj")]
+        data["bus"]["axes"][0]["in"] = "%IB17"
+        path = os.path.join(OUT, "straddle", "wiring.json")
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        run = pac_test(path, os.path.join(OUT, "straddle"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("$.bus.axes[0].in: %IB17..%IB28, the axis module's 12 bytes, cut through GVL_Bus.XIn at "
+                      "%IB16..%IB27", run.stderr)
+
+
 class PlcopenRoundTripTest(unittest.TestCase):
     """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
