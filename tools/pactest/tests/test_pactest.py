@@ -35,6 +35,15 @@ def pac_test(wiring, out, *args):
                           capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
 
 
+def write_wiring(name, data):
+    """`data` as the wiring file OUT/name/wiring.json; its path."""
+    path = os.path.join(OUT, name, "wiring.json")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(data, f)
+    return path
+
+
 def line_of(path, text):
     """The 1-based line of `path` holding `text` (once)."""
     with open(path, encoding="utf-8") as f:
@@ -266,12 +275,8 @@ class WiringRefusalTest(unittest.TestCase):
         with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
             data = json.load(f)
         change(data)
-        path = os.path.join(OUT, "refused", "wiring.json")
-        os.makedirs(os.path.dirname(path), exist_ok=True)
         data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
-        with open(path, "w", encoding="utf-8") as f:
-            json.dump(data, f)
-        run = pac_test(path, os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
+        run = pac_test(write_wiring("refused", data), os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         return run.stderr
 
@@ -331,18 +336,15 @@ class WiringWarningTest(unittest.TestCase):
         data["bus"]["ctrl"] = {"in": "%IB8", "out": "%QB8"}
         data["controller"] = controller
         data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
-        path = os.path.join(OUT, "warned", "wiring.json")
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(path, "w", encoding="utf-8") as f:
-            json.dump(data, f)
-        run = pac_test(path, os.path.join(OUT, "warned"), "--no-coverage", "--list")
+        run = pac_test(write_wiring("warned", data), os.path.join(OUT, "warned"), "--no-coverage", "--list")
         self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
         return run.stderr
 
     def test_no_external_stop_input(self):
-        self.assertIn("pac-test: warning: ", self.run_with({}))
+        stderr = self.run_with({})
+        self.assertIn("pac-test: warning: ", stderr)
         self.assertIn("$.controller.system_parameters: system parameter 4 is 0: the PA-CONTROL will "
-                      "not start ONLINE", self.run_with({}))
+                      "not start ONLINE", stderr)
 
     def test_the_stop_input_without_power(self):
         self.assertIn("$.controller.inputs: input 1 (system parameter 4) has no power: the PA-CONTROL "
@@ -362,11 +364,7 @@ class ModuleImageTest(unittest.TestCase):
             data = json.load(f)
         data["sources"] = [os.path.join(example, "PickAndPlace", "PickAndPlace.plcproj")]
         data["bus"]["axes"][0]["in"] = "%IB17"
-        path = os.path.join(OUT, "straddle", "wiring.json")
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(path, "w", encoding="utf-8") as f:
-            json.dump(data, f)
-        run = pac_test(path, os.path.join(OUT, "straddle"), "--no-coverage", "--list")
+        run = pac_test(write_wiring("straddle", data), os.path.join(OUT, "straddle"), "--no-coverage", "--list")
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         self.assertIn("$.bus.axes[0].in: %IB17..%IB28, the axis module's 12 bytes, cut through GVL_Bus.XIn at "
                       "%IB16..%IB27", run.stderr)
