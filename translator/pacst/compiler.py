@@ -292,7 +292,8 @@ class Compiler:
             values = []
             for ev in spec.values:
                 if ev.value is not None or ev.type_name is not None:
-                    raise self.err(ev, f"'{_name(ev.name)} := {ev.value}': an enumeration value with an explicit "
+                    given = f"{_name(ev.name)} := {ev.value}" if ev.value is not None else _name(ev.name)
+                    raise self.err(ev, f"'{given}': an enumeration value with an explicit "
                                        "number is outside the portable subset (user programs too): leave the "
                                        "numbers out, the values count from 0 in their order")
                 vname = _name(ev.name)
