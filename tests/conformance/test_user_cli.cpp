@@ -130,6 +130,24 @@ TEST_F(TranslatorUserCli, IntegersAndBoolsConvertToStringForMessages) {
     EXPECT_EQ(result.exitCode, 0) << result.output;
 }
 
+TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
+    // qualified_only enumerations of one TwinCAT project often share names (E_Mode.IDLE, E_Step.IDLE).
+    auto mode = Write("E_Mode.st", "TYPE E_Mode :\n(\n  IDLE,\n  MANUAL\n);\nEND_TYPE\n");
+    auto step = Write("E_Step.st", "TYPE E_Step :\n(\n  IDLE,\n  RUN\n);\nEND_TYPE\n");
+    auto main = Write("PRG_Main.st",
+                      "PROGRAM PRG_Main\nVAR Mode : E_Mode := E_Mode.MANUAL; Step : E_Step; END_VAR\n"
+                      "CASE Step OF\n  E_Step.IDLE: Step := E_Step.RUN;\n  E_Step.RUN: Mode := E_Mode.IDLE;\n"
+                      "END_CASE;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), mode, step, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bare = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := IDLE;\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), mode, step, bare});
+    EXPECT_NE(result.output.find(bare + ":3:9: error: 'IDLE' is a value of E_Mode and E_Step: qualify it "
+                                        "(E_Mode.IDLE)"),
+              std::string::npos)
+        << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

@@ -266,11 +266,14 @@ class BodyCompiler:
         label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
         if cls == "EnumeratedValue" and self.comp.user and node.type_name is None and label.count(".") == 1 \
                 and sel_type.is_enum and label.split(".")[0].upper() == sel_type.name.upper():
-            label = self.comp.enum_value_of(sel_type, label.split(".")[1], node)  # TwinCAT's qualified_only
+            value = self.comp.enum_value_of(sel_type, label.split(".")[1], node)  # TwinCAT's qualified_only
+            return sel_type.values.index(value)
         elif cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
             raise self.err(node, "qualified enumeration value: write the value alone (E#A and E.A are not "
                                  "accepted by every tool)")
         if sel_type.is_enum:
+            if label is not None:
+                self.comp.shared_enum_value(label, node)
             if label is None or label.upper() not in self.comp.enum_values:
                 raise self.err(node, f"CASE label must be a value of {sel_type.name}")
             et = self.comp.enum_values[label.upper()]

@@ -60,6 +60,7 @@ class Compiler:
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
+        self.enum_shared = {}  # user mode: upper value -> the EnumTypes that share it (written E.A only)
         self.declared_at = {}  # upper name -> (file, line) for every global name, including later ones
         self.program = Program()
         self.errors = []
@@ -301,12 +302,19 @@ class Compiler:
                     raise self.err(ev, "qualified enumeration value")
                 self._check_ident(ev.name, "enumeration value")
                 up = vname.upper()
-                if up in self.enum_values or up in self.types or up in self.pous:
+                shared = self.user and (up in self.enum_values or up in self.enum_shared)
+                if not shared and (up in self.enum_values or up in self.types or up in self.pous):
                     raise self.err(ev, f"enumeration value '{vname}' is not globally unique: give it a prefix")
                 values.append(vname)
             t = T.EnumType(_name(decl.name), values)
             for v in values:
-                self.enum_values[v.upper()] = t
+                up = v.upper()
+                if up in self.enum_values and self.user or up in self.enum_shared:
+                    # TwinCAT's qualified_only types share names (E_Mode.IDLE, E_Step.IDLE): written E.A only
+                    self.enum_shared.setdefault(up, [self.enum_values.pop(up, None)]).append(t)
+                    self.enum_shared[up] = [e for e in self.enum_shared[up] if e is not None]
+                else:
+                    self.enum_values[up] = t
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
         elif cls == "StringTypeDeclaration":
@@ -514,6 +522,13 @@ class Compiler:
             return None
         return t, self.enum_value_of(t, _name(field.field.name), field.field)
 
+    def shared_enum_value(self, name, node):
+        """User mode: refuses a value two enumerations share written without its type."""
+        types = self.enum_shared.get(name.upper()) if self.user else None
+        if types:
+            names = sorted(t.name for t in types)
+            raise self.err(node, f"'{name}' is a value of {' and '.join(names)}: qualify it ({names[0]}.{name})")
+
     def enum_value_of(self, t, name, node):
         """The spelling of the value `name` of the enumeration `t`; an error at `node` when it has none."""
         value = next((v for v in t.values if v.upper() == name.upper()), None)
@@ -532,6 +547,8 @@ class Compiler:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
                 pass
             elif self.qualified_enum_value(node) is not None:
+                pass
+            elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):
                 pass
             else:
                 raise self.err(node, "initial value must be a literal (MATIEC, CODESYS and TwinCAT differ on "

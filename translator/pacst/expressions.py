@@ -193,6 +193,8 @@ class ExprCompiler:
         if qualified is not None:
             et, value = qualified
             return TE(et, et.cvalue(value))
+        if name is not None and (self.body is None or self.body.lookup(name) is None):
+            self.comp.shared_enum_value(name, node)
         if self.body is None:
             raise self.err(node, "initial value must be a literal")
         ref = self.body.ref(node)
