@@ -61,6 +61,95 @@ TEST_F(TranslatorUserCli, FilesMayComeInAnyOrder) {
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps its declaration order (MATIEC)";
 }
 
+TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
+    // A TwinCAT or CODESYS programmer never types END_FUNCTION_BLOCK or END_PROGRAM: the editor keeps
+    // them out, and so do the .st files such a programmer writes, one POU per file. User mode closes the
+    // file's one POU at its end (as it does for a TwinCAT object); failures keep the file's lines.
+    auto fb = Write("FB_Lamp.st", "// the lamp\nFUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\n"
+                                  "VAR_OUTPUT N : INT; END_VAR\nIF On THEN\n  N := N + 1;\nEND_IF\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : FB_Lamp; END_VAR\nLamp(On := TRUE);\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), fb, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bad = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : FB_Lamp; END_VAR\nLamp(On := TRUE)\nLamp(On := FALSE);\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), fb, bad});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    result = RunTranslator({"build", "--out", Out(), fb, main});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps the IEC end keywords";
+}
+
+TEST_F(TranslatorUserCli, UseOfAGlobalListWithARefusedDeclarationSaysSo) {
+    // One refused line of a global list must not read, further down, as variables the list lacks.
+    auto list = Write("GVL_Hmi.st", "VAR_GLOBAL\n  Speed : NoSuchType;\n  Message : STRING(80);\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Message := 'x';\n"
+                                     "END_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(list + ":2:11: error:"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("has no variable"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Message cannot be used: a declaration of the "
+                                        "global variable list GVL_Hmi was refused (above)"),
+              std::string::npos)
+        << result.output;
+    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nMessage := 'x';\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), list, unqualified});
+    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Message' (or one after a refused "
+                                               "declaration of GVL_Hmi, above)"),
+              std::string::npos)
+        << result.output;
+}
+
+TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
+    // TwinCAT's new DUTs are {attribute 'qualified_only'}: programs write E_Step.HOMING, and a value may
+    // have the name of a variable (the library's MC_ReadStatus has an output Homing), which shadows it.
+    auto type = Write("E_Step.st", "{attribute 'qualified_only'}\nTYPE E_Step :\n(\n  IDLE,\n  HOMING,\n  FAULT\n);\n"
+                                   "END_TYPE\n");
+    auto fb = Write("FB_Status.st", "FUNCTION_BLOCK FB_Status\nVAR_OUTPUT Homing : BOOL; END_VAR\n"
+                                    "Homing := NOT Homing;\nEND_FUNCTION_BLOCK\n");
+    auto main = Write("PRG_Main.st",
+                      "PROGRAM PRG_Main\nVAR Step : E_Step := E_Step.IDLE; Status : FB_Status; END_VAR\n"
+                      "Status();\nCASE Step OF\n  E_Step.IDLE: Step := E_Step.HOMING;\n"
+                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := FAULT; END_IF;\n"
+                      "END_CASE;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
+                                      "END_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});
+    EXPECT_NE(result.output.find(wrong + ":3:16: error: E_Step has no value 'RUN'"), std::string::npos)
+        << result.output;
+    result = RunTranslator({"build", "--out", Out(), type, fb, main});
+    EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps values unqualified and distinct from names";
+}
+
+TEST_F(TranslatorUserCli, IntegersAndBoolsConvertToStringForMessages) {
+    // HMI messages: CONCAT('trip ', UDINT_TO_STRING(Trips)); written in decimal by every tool.
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Text : STRING(80); N : INT := -5; Trips : UDINT;\n"
+                                     "Ok : BOOL; W : WORD; END_VAR\n"
+                                     "Text := CONCAT(INT_TO_STRING(N), UDINT_TO_STRING(Trips));\n"
+                                     "Text := CONCAT(BOOL_TO_STRING(Ok), WORD_TO_STRING(W));\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+}
+
+TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
+    // qualified_only enumerations of one TwinCAT project often share names (E_Mode.IDLE, E_Step.IDLE).
+    auto mode = Write("E_Mode.st", "TYPE E_Mode :\n(\n  IDLE,\n  MANUAL\n);\nEND_TYPE\n");
+    auto step = Write("E_Step.st", "TYPE E_Step :\n(\n  IDLE,\n  RUN\n);\nEND_TYPE\n");
+    auto main = Write("PRG_Main.st",
+                      "PROGRAM PRG_Main\nVAR Mode : E_Mode := E_Mode.MANUAL; Step : E_Step; END_VAR\n"
+                      "CASE Step OF\n  E_Step.IDLE: Step := E_Step.RUN;\n  E_Step.RUN: Mode := E_Mode.IDLE;\n"
+                      "END_CASE;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), mode, step, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bare = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := IDLE;\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), mode, step, bare});
+    EXPECT_NE(result.output.find(bare + ":3:9: error: 'IDLE' is a value of E_Mode and E_Step: qualify it "
+                                        "(E_Mode.IDLE)"),
+              std::string::npos)
+        << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

@@ -5,7 +5,7 @@ from . import literals
 from . import types as T
 from . import user
 from .common import _BIT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
-from .expressions import ExprCompiler
+from .expressions import ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -46,7 +46,9 @@ class BodyCompiler:
                 raise self.err(token, f"enumeration value '{name}' cannot be written")
             if up in self.comp.types:
                 raise self.err(token, f"'{name}' is a type, not a variable")
-            raise self.err(token, f"undeclared name '{name}'")
+            refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
+            hint = f" (or one after a refused declaration of {', '.join(refused)}, above)" if refused else ""
+            raise self.err(token, f"undeclared name '{name}'{hint}")
         writable, why = True, ""
         if v.constant:
             writable, why = False, "it is a CONSTANT"
@@ -72,6 +74,9 @@ class BodyCompiler:
         if _cls(first) != "FieldSelector" or _cls(first.field) != "SimpleVariable":
             raise self.err(first, f"{gvl.name} is a global variable list: name one of its variables")
         g = gvl.var(_name(first.field.name))
+        if g is None and gvl.refused:
+            raise self.err(first.field, f"{gvl.name}.{_name(first.field.name)} cannot be used: a declaration of the "
+                                        f"global variable list {gvl.name} was refused (above)")
         if g is None:
             raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
         if all(e is not g for e, _ in self.pou.externals.values()):
@@ -259,10 +264,16 @@ class BodyCompiler:
         cls = _cls(node)
         # blark parses a name as a CASE label into an EnumeratedValue (E#A and E.A included).
         label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
-        if cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
+        if cls == "EnumeratedValue" and self.comp.user and node.type_name is None and label.count(".") == 1 \
+                and sel_type.is_enum and label.split(".")[0].upper() == sel_type.name.upper():
+            value = self.comp.enum_value_of(sel_type, label.split(".")[1], node)  # TwinCAT's qualified_only
+            return sel_type.values.index(value)
+        elif cls == "EnumeratedValue" and (node.type_name is not None or "." in label):
             raise self.err(node, "qualified enumeration value: write the value alone (E#A and E.A are not "
                                  "accepted by every tool)")
         if sel_type.is_enum:
+            if label is not None:
+                self.comp.shared_enum_value(label, node)
             if label is None or label.upper() not in self.comp.enum_values:
                 raise self.err(node, f"CASE label must be a value of {sel_type.name}")
             et = self.comp.enum_values[label.upper()]
@@ -377,7 +388,8 @@ class BodyCompiler:
                 arg = self.ref(p.value)
                 if arg.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: VAR_IN_OUT {pname} is {fv.type.name}, "
-                                            f"'{arg.var.name}' is {arg.type.name}")
+                                            f"'{arg.var.name}' is {arg.type.name}"
+                                            f"{array_name_hint(arg.type, fv.type)}")
                 if not arg.writable:
                     raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
                 pre.append(f"{ind}{member}.value = {arg.read()};")

@@ -60,6 +60,7 @@ class Compiler:
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
+        self.enum_shared = {}  # user mode: upper value -> the EnumTypes that share it (written E.A only)
         self.declared_at = {}  # upper name -> (file, line) for every global name, including later ones
         self.program = Program()
         self.errors = []
@@ -292,18 +293,28 @@ class Compiler:
             values = []
             for ev in spec.values:
                 if ev.value is not None or ev.type_name is not None:
-                    raise self.err(ev, "enumeration values without explicit numbers (portable subset)")
+                    given = f"{_name(ev.name)} := {ev.value}" if ev.value is not None else _name(ev.name)
+                    raise self.err(ev, f"'{given}': an enumeration value with an explicit "
+                                       "number is outside the portable subset (user programs too): leave the "
+                                       "numbers out, the values count from 0 in their order")
                 vname = _name(ev.name)
                 if "." in vname:
                     raise self.err(ev, "qualified enumeration value")
                 self._check_ident(ev.name, "enumeration value")
                 up = vname.upper()
-                if up in self.enum_values or up in self.types or up in self.pous:
+                shared = self.user and (up in self.enum_values or up in self.enum_shared)
+                if not shared and (up in self.enum_values or up in self.types or up in self.pous):
                     raise self.err(ev, f"enumeration value '{vname}' is not globally unique: give it a prefix")
                 values.append(vname)
             t = T.EnumType(_name(decl.name), values)
             for v in values:
-                self.enum_values[v.upper()] = t
+                up = v.upper()
+                if up in self.enum_values and self.user or up in self.enum_shared:
+                    # TwinCAT's qualified_only types share names (E_Mode.IDLE, E_Step.IDLE): written E.A only
+                    self.enum_shared.setdefault(up, [self.enum_values.pop(up, None)]).append(t)
+                    self.enum_shared[up] = [e for e in self.enum_shared[up] if e is not None]
+                else:
+                    self.enum_values[up] = t
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
         elif cls == "StringTypeDeclaration":
@@ -479,7 +490,7 @@ class Compiler:
             raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
         if up in self.types or up in self.pous or up in self.declared_at:
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
-        if up in self.enum_values:
+        if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
@@ -500,6 +511,31 @@ class Compiler:
         return v
 
     # ------------------------------------------------------------------ initial values
+    def qualified_enum_value(self, node):
+        """User mode: (the EnumType, the value's spelling) of `E_Type.VALUE` (TwinCAT's qualified_only
+        enumerations), or None when `node` is no such name; an unknown value of the type is an error."""
+        if not self.user or _cls(node) != "MultiElementVariable" or len(node.elements) != 1:
+            return None
+        t = self.types.get(_name(node.name.name).upper())
+        field = node.elements[0]
+        if t is None or not t.is_enum or _cls(field) != "FieldSelector" or _cls(field.field) != "SimpleVariable":
+            return None
+        return t, self.enum_value_of(t, _name(field.field.name), field.field)
+
+    def shared_enum_value(self, name, node):
+        """User mode: refuses a value two enumerations share written without its type."""
+        types = self.enum_shared.get(name.upper()) if self.user else None
+        if types:
+            names = sorted(t.name for t in types)
+            raise self.err(node, f"'{name}' is a value of {' and '.join(names)}: qualify it ({names[0]}.{name})")
+
+    def enum_value_of(self, t, name, node):
+        """The spelling of the value `name` of the enumeration `t`; an error at `node` when it has none."""
+        value = next((v for v in t.values if v.upper() == name.upper()), None)
+        if value is None:
+            raise self.err(node, f"{t.name} has no value '{name}'")
+        return value
+
     def literal_te(self, node, want):
         """Type an initial value, which must be a literal or an enumeration value."""
         cls = _cls(node)
@@ -509,6 +545,10 @@ class Compiler:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
+                pass
+            elif self.qualified_enum_value(node) is not None:
+                pass
+            elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):
                 pass
             else:
                 raise self.err(node, "initial value must be a literal (MATIEC, CODESYS and TwinCAT differ on "

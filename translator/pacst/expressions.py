@@ -15,6 +15,14 @@ _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
+def array_name_hint(actual, target):
+    """What to write when an array is given where an array type of the same bounds is expected."""
+    if actual.is_array and target.is_array and (actual.low, actual.high, actual.elem) == \
+            (target.low, target.high, target.elem):
+        return f" (declare it as {target.name}: an array type is matched by its name, not by its bounds)"
+    return ""
+
+
 class ExprCompiler:
     """Types and translates expressions inside one POU (or an initial value, with pou None)."""
 
@@ -53,6 +61,8 @@ class ExprCompiler:
         if te.type.is_elementary and target.is_elementary and \
                 te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
             hint = f" (write {te.type.name}_TO_{target.name})"
+        else:
+            hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
                              f"implicit conversion{hint}")
 
@@ -177,6 +187,14 @@ class ExprCompiler:
             et = self.comp.enum_values[name.upper()]
             value = next(v for v in et.values if v.upper() == name.upper())
             return TE(et, et.cvalue(value))
+        qualified = None
+        if _cls(node) == "MultiElementVariable" and (self.body is None or self.body.lookup(_name(node.name.name)) is None):
+            qualified = self.comp.qualified_enum_value(node)  # a variable of the type's name shadows it
+        if qualified is not None:
+            et, value = qualified
+            return TE(et, et.cvalue(value))
+        if name is not None and (self.body is None or self.body.lookup(name) is None):
+            self.comp.shared_enum_value(name, node)
         if self.body is None:
             raise self.err(node, "initial value must be a literal")
         ref = self.body.ref(node)
@@ -342,6 +360,25 @@ class ExprCompiler:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
 
+    def _string_conversion(self, node, src, dst):
+        """User mode: an integer, bit string or BOOL to STRING, in decimal ('TRUE', 'FALSE'), as CODESYS,
+        TwinCAT and MATIEC write them; the other conversions with STRING are refused with the reason."""
+        name = f"{src}_TO_{dst}"
+        if dst != "STRING":
+            raise self.err(node, f"{name} is outside pacst's user programs: the tools parse a STRING differently")
+        if src in ("REAL", "LREAL"):
+            raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
+                                 f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
+        if src not in _CONVERTIBLE:
+            raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
+                                 "are converted to STRING")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.ELEMENTARY[src]
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if st.is_bool:
+            return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
+        return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
+
     def _string_function(self, node, fn):
         """The standard string functions (user mode): positions count from 1, results keep at most the
         STRING capacity, as MATIEC's library does."""
@@ -383,6 +420,8 @@ class ExprCompiler:
         return [by_name[n] for n in names]
 
     def _conversion(self, node, src, dst):
+        if self.comp.user and "STRING" in (src, dst):
+            return self._string_conversion(node, src, dst)
         for tname in (src, dst):
             if tname in T.OUTSIDE_SUBSET:
                 raise self.err(node, T.OUTSIDE_SUBSET[tname])

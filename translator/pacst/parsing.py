@@ -166,7 +166,28 @@ def _syntax_error(exc, file, text=""):
         m = re.compile(r"[A-Za-z_][A-Za-z0-9_]*").match(text, at) if at is not None else None
         char = m.group(0) if m else getattr(exc, "char", None)
         found = f" at '{char}'" if char else ""
-    return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}")
+    return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}{_semicolon_hint(text, line, col)}")
+
+
+_NO_STATEMENT_END = re.compile(r"(?i)(?:\b(?:THEN|ELSE|DO|OF|REPEAT|AND|OR|XOR|NOT|MOD|STRUCT|END_VAR|VAR\w*)|"
+                               r"[,(:=+\-*/<>&;])\s*$")
+_NO_STATEMENT_LINE = re.compile(r"(?i)^\s*(?:PROGRAM|FUNCTION_BLOCK|FUNCTION|TYPE|VAR\w*|\{)")
+
+
+def _semicolon_hint(text, line, col):
+    """When the error is at the first word of a line and the line of code before it ends like a statement
+    without its ';' (the error CODESYS names "expected ';'"), the question which line lacks it."""
+    lines = text.split("\n")
+    if not 1 < line <= len(lines) or lines[line - 1][:col - 1].strip():
+        return ""
+    for n in range(line - 1, 0, -1):
+        code = re.sub(r"\(\*.*?\*\)|//.*$", "", lines[n - 1]).rstrip()
+        if not code.strip():
+            continue
+        if _NO_STATEMENT_END.search(code) or _NO_STATEMENT_LINE.match(code) or "(*" in code or "*)" in code:
+            return ""
+        return f" (is the ';' at the end of line {n} missing?)"
+    return ""
 
 
 class SourceFile:
@@ -186,7 +207,24 @@ def _read(path, user=False):
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
     if user and twincat.is_object_file(path):
         return twincat.object_st(text, path)
-    return text
+    return _closed_pou(text, path) if user else text
+
+
+_POU_OPENERS = ("FUNCTION_BLOCK", "FUNCTION", "PROGRAM")
+
+
+def _closed_pou(text, path):
+    """A user's .st file of one POU without its END_ keyword (the TwinCAT and CODESYS editors keep it out,
+    and programmers write their files so), closed after its last line as a TwinCAT object is; the lines
+    stay the file's. A file with any END_ keyword of a POU, or with several POUs, is left as it is."""
+    try:
+        words = [t.upper for t in lexcheck.tokenize(text, path, user=True) if t.kind == "ident"]
+    except StError:
+        return text  # the check names what is wrong
+    opened = [w for w in words if w in _POU_OPENERS]
+    if len(opened) != 1 or any(w in ("END_" + k for k in _POU_OPENERS) for w in words):
+        return text
+    return f"{text}\nEND_{opened[0]}\n"
 
 
 def _cached_tree(cache_dir, key):

@@ -11,6 +11,7 @@ import os
 
 from . import types as T
 from .common import _cls, _name, pos
+from .errors import StError
 from .names import reserved_reason
 
 # The largest STRING pacst and MATIEC hold (STR_MAX_LEN of pacst_iec.h and of MATIEC's headers).
@@ -38,6 +39,7 @@ class GlobalList:
         self.file = file
         self.line = line
         self.vars = []
+        self.refused = False  # a declaration was refused: a name it lacks may be one of those after it
 
     def var(self, name):
         return T.find_var(self.vars, name)
@@ -169,6 +171,14 @@ def global_list(comp, block, src):
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
+    try:
+        _global_items(comp, gvl, block, constant)
+    except StError:
+        gvl.refused = True
+        raise
+
+
+def _global_items(comp, gvl, block, constant):
     for item in block.items:
         spec = item.spec
         vtype, strlen = var_type(comp, item.init, allow_fb=False)

@@ -137,6 +137,8 @@ def main(argv=None):
         os.makedirs(os.path.join(out, sub))
     try:
         wiring = Wiring(args.wiring)
+        for warning in wiring.warnings():
+            print(f"pac-test: warning: {args.wiring}: {warning}", file=sys.stderr)
         pac = project.PacBuild(args.pac_build)
         if pac.matiec:  # MATIEC's C has no coverage table of the user's ST (docs/user_tests.md, "On MATIEC")
             args.no_coverage = True
@@ -146,6 +148,7 @@ def main(argv=None):
                                          parse_cache=args.parse_cache)
         symbols = host_build.translate()
         hostgen.programs_of(symbols, wiring)
+        hostgen.check_module_images(symbols, wiring)
         tests = host_build.tests(symbols)
         if not tests:
             raise WiringError("$.tests", f"no test: no FUNCTION_BLOCK of the sources starts with {wiring.prefix}")

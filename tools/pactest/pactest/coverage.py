@@ -2,6 +2,7 @@
 name the ST lines, read by gcovr and tabled per POU file as the library's report does (cmake/st_coverage.py)."""
 import importlib.util
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -34,8 +35,11 @@ def report(objects, folder, out):
     st = _st_coverage()
     os.makedirs(out, exist_ok=True)
     detail = os.path.join(out, "gcovr.json")
+    # The host's build (OUT/st-c, the C of the ST) lies under the project's folder when OUT does (the
+    # default pac-test-out, run in the project): its files are no ST of the project.
+    built = os.path.join(os.path.abspath(os.path.dirname(objects.rstrip(os.sep))), "")
     subprocess.run([gcovr, "--root", folder, "--filter", os.path.join(os.path.abspath(folder), ""),
-                    "--json", detail, "--html-details", os.path.join(out, "index.html"),
+                    "--exclude", re.escape(built) + ".*", "--json", detail, "--html-details", os.path.join(out, "index.html"),
                     "--html-title", "pac-test: coverage of the machine program", objects],
                    check=True, stdout=subprocess.DEVNULL)
     import json

@@ -56,6 +56,37 @@ def _copy_module(lines_in, lines_out, symbols, module):
             _memcpy(lines, side, f"&{g['c_name']}.value", bus, size)
 
 
+def _bytes_of(vtype):
+    """The bytes of a located variable's type, where the symbol table gives them (elementary types and
+    their arrays), else None."""
+    if vtype.get("kind") == "array" and "element_size" in vtype:
+        return (vtype["high"] - vtype["low"] + 1) * vtype["element_size"]
+    return vtype.get("size")
+
+
+def check_module_images(symbols, wiring):
+    """Refuses a module at a located address that cuts through a located image of the program: the program
+    would read and write the module's bytes shifted."""
+    for module in wiring.modules:
+        for side in ("in", "out"):
+            target = module.image_in if side == "in" else module.image_out
+            if not target.startswith("%"):
+                continue
+            area, start = target[1], int(target[3:])
+            end = start + module.size - 1
+            for g in symbols.located(area):
+                first, size = _location_byte(g), _bytes_of(g["type"])
+                if first is None or size is None or g["location"]["size"] != "B":
+                    continue
+                last = first + size - 1
+                inside = first <= start and end <= last or start <= first and last <= end
+                if not inside and start <= last and first <= end:
+                    raise WiringError(f"{module.where}.{side}",
+                                      f"%{area}B{start}..%{area}B{end}, the {module.kind} module's {module.size} "
+                                      f"bytes, cut through {g['path']} at %{area}B{first}..%{area}B{last}: start "
+                                      f"the module where the image starts")
+
+
 def located_copies(symbols, copy_in, copy_out):
     """Every located variable to and from the host's image of %I and %Q (little-endian, as the PLCs the
     project runs on: TwinCAT and CODESYS on x86 and ARM)."""

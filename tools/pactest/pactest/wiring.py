@@ -156,6 +156,24 @@ class Wiring:
             modules.append(Module("axis", k, axis if axis is not None else auto, where))
         return modules
 
+    def warnings(self):
+        """What makes the simulated controller ignore a start of ONLINE (manual 5.2.1.3), so that a program
+        waits for it until its tests' time limit: as pac_scenario warns of it."""
+        if not any(m.kind == "ctrl" for m in self.modules) or not isinstance(self.controller, dict):
+            return []
+        params = self.controller.get("system_parameters", {})
+        inputs = self.controller.get("inputs", {})
+        stop = params.get("4", 0) if isinstance(params, dict) else 0
+        if stop == 0:
+            return ["$.controller.system_parameters: system parameter 4 is 0: the PA-CONTROL will not start "
+                    "ONLINE without an external stop input (manual 5.2.1.3); set it, e.g. "
+                    "\"system_parameters\": {\"4\": 1}, \"inputs\": {\"1\": true}"]
+        if isinstance(inputs, dict) and inputs.get(str(stop)) is not True:
+            return [f"$.controller.inputs: input {stop} (system parameter 4) has no power: the PA-CONTROL will "
+                    f"not start ONLINE while the external stop is open (manual 5.2.1.3); set "
+                    f"\"inputs\": {{\"{stop}\": true}} (a test opens it with a set_input fault)"]
+        return []
+
     def _fault(self, item, path):
         _object(item, path, FAULT_KEYS)
         at = _int(item.get("at_ms"), f"{path}.at_ms", 0, 3600000)

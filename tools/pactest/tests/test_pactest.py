@@ -47,6 +47,15 @@ def pac_test(wiring, out, *args):
                           capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
 
 
+def write_wiring(name, data):
+    """`data` as the wiring file OUT/name/wiring.json; its path."""
+    path = os.path.join(OUT, name, "wiring.json")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump(data, f)
+    return path
+
+
 def line_of(path, text):
     """The 1-based line of `path` holding `text` (once)."""
     with open(path, encoding="utf-8") as f:
@@ -251,6 +260,27 @@ class RebuildTest(unittest.TestCase):
         self.assertNotIn(body_lines[0], lines)
 
 
+class OutInsideTheProjectTest(unittest.TestCase):
+    """pac-test run in the project's folder writes pac-test-out there (the default --out): the coverage
+    counts the project's ST, not the C that pac-test translated it to inside pac-test-out."""
+
+    def test_coverage_names_only_the_projects_st(self):
+        folder = os.path.join(OUT, "out_inside", "project")
+        os.makedirs(folder, exist_ok=True)
+        for name in os.listdir(os.path.join(HERE, "fixture")):
+            with open(os.path.join(HERE, "fixture", name), encoding="utf-8") as f, \
+                    open(os.path.join(folder, name), "w", encoding="utf-8") as g:
+                g.write(f.read())
+        out = os.path.join(folder, "pac-test-out")
+        run = pac_test(os.path.join(folder, "wiring.json"), out, "--filter", "FB_TestPasses")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        with open(os.path.join(out, "coverage", "gcovr.json"), encoding="utf-8") as f:
+            files = sorted(os.path.relpath(e["file"], folder) if os.path.isabs(e["file"]) else e["file"]
+                           for e in json.load(f)["files"])
+        self.assertTrue(files)
+        self.assertEqual([f for f in files if not f.endswith(".st") or os.sep in f], [], run.stdout)
+
+
 class WiringRefusalTest(unittest.TestCase):
     """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
 
@@ -258,12 +288,8 @@ class WiringRefusalTest(unittest.TestCase):
         with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
             data = json.load(f)
         change(data)
-        path = os.path.join(OUT, "refused", "wiring.json")
-        os.makedirs(os.path.dirname(path), exist_ok=True)
         data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
-        with open(path, "w", encoding="utf-8") as f:
-            json.dump(data, f)
-        run = pac_test(path, os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
+        run = pac_test(write_wiring("refused", data), os.path.join(OUT, "refused"), "--no-coverage", *(["--list"] if listing else []))
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         return run.stderr
 
@@ -333,6 +359,49 @@ class MatiecRefusalTest(unittest.TestCase):
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         self.assertIn("iec2c failed", run.stderr)
         self.assertRegex(run.stderr, r"program\.st:\d+: error: invalid located variable declaration")
+
+
+class WiringWarningTest(unittest.TestCase):
+    """A controller that will never start ONLINE is named before the tests run into their time limit."""
+
+    def run_with(self, controller):
+        with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["bus"]["ctrl"] = {"in": "%IB8", "out": "%QB8"}
+        data["controller"] = controller
+        data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
+        run = pac_test(write_wiring("warned", data), os.path.join(OUT, "warned"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        return run.stderr
+
+    def test_no_external_stop_input(self):
+        stderr = self.run_with({})
+        self.assertIn("pac-test: warning: ", stderr)
+        self.assertIn("$.controller.system_parameters: system parameter 4 is 0: the PA-CONTROL will "
+                      "not start ONLINE", stderr)
+
+    def test_the_stop_input_without_power(self):
+        self.assertIn("$.controller.inputs: input 1 (system parameter 4) has no power: the PA-CONTROL "
+                      "will not start ONLINE", self.run_with({"system_parameters": {"4": 1}}))
+
+    def test_a_controller_that_starts(self):
+        self.assertNotIn("warning", self.run_with({"system_parameters": {"4": 1}, "inputs": {"1": True}}))
+
+
+class ModuleImageTest(unittest.TestCase):
+    """A module's address that cuts through a located image (a typing error: %IB17 for an image at %IB16)
+    would hand the program shifted bytes: refused, naming both."""
+
+    def test_a_module_straddling_a_located_image(self):
+        example = os.path.join(ROOT, "examples", "pick_and_place")
+        with open(os.path.join(example, "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["sources"] = [os.path.join(example, "PickAndPlace", "PickAndPlace.plcproj")]
+        data["bus"]["axes"][0]["in"] = "%IB17"
+        run = pac_test(write_wiring("straddle", data), os.path.join(OUT, "straddle"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("$.bus.axes[0].in: %IB17..%IB28, the axis module's 12 bytes, cut through GVL_Bus.XIn at "
+                      "%IB16..%IB27", run.stderr)
 
 
 class PlcopenRoundTripTest(unittest.TestCase):
