@@ -190,6 +190,36 @@ TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
     ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
 }
 
+// A stop that fails keeps the axis in Stopping while its Execute stays TRUE (PLCopen MC_Stop: the axis stays in
+// Stopping as long as Execute is TRUE; MC4 of docs/verification.md): an axis still braking after StopTimeout
+// ends MC_Stop with 16#8022, and a move edged then is refused, not run on the braking axis. Once Execute
+// falls the axis is not left locked: Standstill once it stands, and a move is accepted.
+TEST_P(McSim, AStopThatFailsHoldsStoppingWhileExecuteAndReleasesAfterIt) {
+    McBench bench(GetParam(), 1);
+    bench.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
+    bench.PowerUp();
+    McBlocks& b = bench.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
+    ASSERT_TRUE(bench.WaitFor([&] { return bench.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+    Execute(bench, b.stop);
+    ASSERT_TRUE(bench.WaitFor([&] { return b.stop->ERROR.value; }, 100, "Stop Error"));
+    EXPECT_EQ(b.stop->ERRORID.value, kStopTimeout);
+    ASSERT_TRUE(bench.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
+    bench.Scan();
+    EXPECT_EQ(bench.State(1), kStopping) << "a failed stop holds Stopping while its Execute is TRUE";
+    SetMove(b.moveB, 10.0f);
+    Execute(bench, b.moveB);
+    EXPECT_EQ(b.moveB->ERRORID.value, kMcStopping) << "no move on an axis whose stop failed";
+    Release(bench, b.moveB);
+    EXPECT_TRUE(b.stop->ERROR.value) << "the stop's Error holds while its Execute is TRUE";
+    Release(bench, b.stop);
+    ASSERT_TRUE(bench.WaitFor([&] { return !bench.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+    bench.Scan();
+    EXPECT_EQ(bench.State(1), kStandstill) << "not left locked once Execute is FALSE";
+    Execute(bench, b.moveB);
+    ASSERT_TRUE(EndsDone(bench, b.moveB, 20000, "MoveAbsolute B"));
+}
+
 TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
     McBench bench(GetParam(), 1);
     bench.PowerUp();
