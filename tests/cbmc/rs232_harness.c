@@ -2,9 +2,9 @@
  * docs/fb/FB_PAC_Rs232Cmd.md), on the C that pacst generates from st/, for K scans (docs/verification.md).
  * Free in every scan: each byte the controller sends (any value, 0..BYTES_PER_SCAN of them, at most
  * REPLY_BYTES after each request), the free space of TxBuffer (the driver sent any number of bytes, or none),
- * both buffers' Blocked, and the programmer's Execute, Code (one code of each class the FB tells apart), Param,
- * Data and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms), Retries (0 or 1) and
- * where TxBuffer's ring stands. Properties "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL). */
+ * both buffers' Blocked, and the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
+ * QuietTime (1..TMAX ms) and Retries (0 or 1); the command (Code, Param, Data) a constant of the run. Properties
+ * "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
 #ifndef K

@@ -172,15 +172,20 @@ TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
     EXPECT_EQ(bench.Position(1), 10.0f);
 }
 
-// An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever: from
-// 1000 units/s at the axis parameter's 10000 units/s2 the axis brakes for 100 ms, StopTimeout is 20 ms.
-TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
-    McBench bench(GetParam(), 1);
+// The axis at full speed: from 1000 units/s at the axis parameter's 10000 units/s2 it brakes for 100 ms, and
+// StopTimeout is 20 ms.
+void StartMoveThatBrakesLongerThanStopTimeout(McBench& bench) {
     bench.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
     bench.PowerUp();
-    McBlocks& b = bench.Blocks(1);
     ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
     ASSERT_TRUE(bench.WaitFor([&] { return bench.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+}
+
+// An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever.
+TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
+    McBench bench(GetParam(), 1);
+    McBlocks& b = bench.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartMoveThatBrakesLongerThanStopTimeout(bench));
     Execute(bench, b.halt);
     ASSERT_TRUE(bench.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
     EXPECT_TRUE(b.halt->ERROR.value);
@@ -196,11 +201,8 @@ TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
 // falls the axis is not left locked: Standstill once it stands, and a move is accepted.
 TEST_P(McSim, AStopThatFailsHoldsStoppingWhileExecuteAndReleasesAfterIt) {
     McBench bench(GetParam(), 1);
-    bench.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
-    bench.PowerUp();
     McBlocks& b = bench.Blocks(1);
-    ASSERT_NO_FATAL_FAILURE(StartLongMove(bench));
-    ASSERT_TRUE(bench.WaitFor([&] { return bench.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+    ASSERT_NO_FATAL_FAILURE(StartMoveThatBrakesLongerThanStopTimeout(bench));
     Execute(bench, b.stop);
     ASSERT_TRUE(bench.WaitFor([&] { return b.stop->ERROR.value; }, 100, "Stop Error"));
     EXPECT_EQ(b.stop->ERRORID.value, kStopTimeout);
