@@ -42,7 +42,11 @@ int main(void) {
     axis.POSITION.value = nondet_bool() ? 10.5f : 0.0f;
     axis.INTEGERMODE.value = nondet_bool();
     axis.DYNAMICSCHANGEABLE.value = nondet_bool();
-    watch.bound = 1000; /* the axis FB's Busy bound is not checked yet (docs/verification.md) */
+    watch.bound = 1000; /* a move takes as long as the axis moves: no Busy bound of its own (A4, A5 instead) */
+    int abortScans = 0;        /* Busy scans since Abort rose during a job, Abort TRUE since */
+    int waitScans = 0;         /* Busy scans of the job without ACTIVE since its edge (before the take-over) */
+    BOOL takenOver = FALSE;    /* the job saw ACTIVE */
+    int reachAbortEnded = 0;
 
     for (int n = 1; n <= K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
@@ -70,6 +74,7 @@ int main(void) {
         /* A job starts with an Execute edge or a jog button's edge. */
         const BOOL edge = (axis.EXECUTE.value && !before) || (axis.JOGPOSITIVE.value && !jogPos)
                           || (axis.JOGNEGATIVE.value && !jogNeg);
+        const BOOL wasBusy = axis.BUSY.value;
         BYTE module[12];
         for (int i = 0; i < 12; ++i) module[i] = axis.TOPAC.value.table[i];
         FB_PAC_AXIS_body__(&axis);
@@ -99,6 +104,28 @@ int main(void) {
         const unsigned word = ((unsigned)out[0] << 24) | ((unsigned)out[1] << 16) | ((unsigned)out[2] << 8) | out[3];
         const unsigned traverse = word & TRAVERSE_BITS;
         __CPROVER_assert((traverse & (traverse - 1u)) == 0, "A2 at most one traverse bit on the wire");
+        /* A3: a stop is never lost: while Abort is TRUE no traverse bit is on the wire (the axis brakes,
+         * 2.7.3), and the FB is not left locked: every Execute edge the FB sees while not Busy is taken (Busy,
+         * or a final output in that scan). */
+        __CPROVER_assert(!axis.ABORT.value || !Owns(lastStatus) || traverse == 0,
+                         "A3 no traverse bit while Abort is TRUE");
+        __CPROVER_assert(!(axis.EXECUTE.value && !before) || wasBusy || axis.BUSY.value || axis.DONE.value
+                             || axis.ERROR.value || axis.COMMANDABORTED.value,
+                         "A3 an Execute edge is never left without an output");
+        /* A4: a stop ends: Busy lasts at most StopTimeout + 1 scans once Abort is TRUE (16#8022 after
+         * StopTimeout, FB_PAC_Axis.md, "A stop ends when ACTIVE has fallen"). */
+        abortScans = (axis.ABORT.value && axis.BUSY.value) ? abortScans + 1 : 0;
+        __CPROVER_assert(abortScans <= (int)st + 1, "A4 Busy within StopTimeout + 1 scan once Abort is TRUE");
+        if (wasBusy && !axis.BUSY.value && axis.ABORT.value) reachAbortEnded = 1;
+        /* A5: before the take-over a job waits Timeout at most for the axis to be free (16#8006) and Timeout
+         * for ACTIVE (16#8001): Busy without ACTIVE since the edge at most 2 x Timeout + 2 scans. */
+        if (edge || !axis.BUSY.value) {
+            waitScans = 0;
+            takenOver = FALSE;
+        }
+        takenOver = takenOver || axis.ACTIVE.value;
+        waitScans = (axis.BUSY.value && !takenOver) ? waitScans + 1 : 0;
+        __CPROVER_assert(waitScans <= 2 * (int)t + 2, "A5 Busy before the take-over within 2 x Timeout + 2 scans");
 
         if (axis.DONE.value) reachDone = 1;
         if (axis.ERROR.value && axis.ERRORID.value >= 0x8000) reachLibError = 1;
@@ -109,5 +136,6 @@ int main(void) {
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with the controller's CMD error number");
     __CPROVER_assert(!reachAborted, "reach: CommandAborted");
+    __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
     return 0;
 }

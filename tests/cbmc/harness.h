@@ -13,6 +13,8 @@ BOOL __DEBUG;
 
 _Bool nondet_bool(void);
 unsigned char nondet_uchar(void);
+unsigned short nondet_ushort(void);
+unsigned int nondet_uint(void);
 
 #define CYCLE_NS 1000000L /* the PLC cycle: 1 ms, the fastest timing of the library suites */
 

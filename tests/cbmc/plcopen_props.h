@@ -8,6 +8,7 @@ typedef struct {
     BOOL replaced; /* a running job ended by a new edge in the scan before: that final output is shown once */
     int busyScans;
     int bound;  /* the longest Busy in scans the FB's documentation allows */
+    BOOL edgeRestarts; /* an edge while Busy starts a new job (the MC blocks): Busy counts from the last edge */
 } PlcOpenWatch;
 
 /* Checks one scan's outputs; edge: Execute rose in this scan; aborted: CommandAborted (FALSE for an FB
@@ -34,7 +35,7 @@ static BOOL CheckPlcOpen(PlcOpenWatch *w, BOOL execute, BOOL edge, BOOL busy, BO
     __CPROVER_assert(!w->busy || now, "P4 a job that ends shows its final output");
     const BOOL took = edge && now && !w->busy;
     w->replaced = w->busy && edge && final;
-    w->busyScans = busy ? w->busyScans + 1 : 0;
+    w->busyScans = !busy ? 0 : (w->edgeRestarts && edge) ? 1 : w->busyScans + 1;
     __CPROVER_assert(w->busyScans <= w->bound, "P8 Busy within the bound its timeouts set");
     w->execute = execute;
     w->busy = busy;

@@ -25,6 +25,7 @@ int pac_cbmc_ctrl_main(void);
 int pac_cbmc_axis_main(void);
 int pac_cbmc_automatic_main(void);
 int pac_cbmc_mc_main(void);
+int pac_cbmc_rs232_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -73,6 +74,7 @@ void Replay(const Counterexample& c) {
         {"Axis", pac_cbmc_axis_main},
         {"AutomaticModule", pac_cbmc_automatic_main},
         {"Mc", pac_cbmc_mc_main},
+        {"Rs232Cmd", pac_cbmc_rs232_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);

@@ -172,15 +172,20 @@ TEST_P(McSim, AHaltCanBeAbortedByAMoveAndAHaltAtStandstillIsDone) {
     EXPECT_EQ(rig.Position(1), 10.0f);
 }
 
-// An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever: from
-// 1000 units/s at the axis parameter's 10000 units/s2 the axis brakes for 100 ms, StopTimeout is 20 ms.
-TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
-    McRig rig(GetParam(), 1);
+// The axis at full speed: from 1000 units/s at the axis parameter's 10000 units/s2 it brakes for 100 ms, and
+// StopTimeout is 20 ms.
+void StartMoveThatBrakesLongerThanStopTimeout(McRig& rig) {
     rig.Cyclic(1)->STOPTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(20));
     rig.PowerUp();
-    McBlocks& b = rig.Blocks(1);
     ASSERT_NO_FATAL_FAILURE(StartLongMove(rig));
     ASSERT_TRUE(rig.WaitFor([&] { return rig.Pac().Axes().Motion(1).ActualSpeed() >= 900.0; }, 500, "speed"));
+}
+
+// An axis that brakes longer than StopTimeout ends MC_Halt with its own error, never Busy for ever.
+TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
+    McRig rig(GetParam(), 1);
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartMoveThatBrakesLongerThanStopTimeout(rig));
     Execute(rig, b.halt);
     ASSERT_TRUE(rig.WaitFor([&] { return Final(b.halt); }, 100, "Halt final"));
     EXPECT_TRUE(b.halt->ERROR.value);
@@ -188,6 +193,33 @@ TEST_P(McSim, AHaltLongerThanStopTimeoutEndsWithItsOwnError) {
     EXPECT_TRUE(rig.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
     Release(rig, b.halt);
     ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+}
+
+// A stop that fails keeps the axis in Stopping while its Execute stays TRUE (PLCopen MC_Stop: the axis stays in
+// Stopping as long as Execute is TRUE; MC4 of docs/verification.md): an axis still braking after StopTimeout
+// ends MC_Stop with 16#8022, and a move edged then is refused, not run on the braking axis. Once Execute
+// falls the axis is not left locked: Standstill once it stands, and a move is accepted.
+TEST_P(McSim, AStopThatFailsHoldsStoppingWhileExecuteAndReleasesAfterIt) {
+    McRig rig(GetParam(), 1);
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartMoveThatBrakesLongerThanStopTimeout(rig));
+    Execute(rig, b.stop);
+    ASSERT_TRUE(rig.WaitFor([&] { return b.stop->ERROR.value; }, 100, "Stop Error"));
+    EXPECT_EQ(b.stop->ERRORID.value, kStopTimeout);
+    ASSERT_TRUE(rig.Pac().Axes().Motion(1).Moving()) << "the axis still brakes";
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStopping) << "a failed stop holds Stopping while its Execute is TRUE";
+    SetMove(b.moveB, 10.0f);
+    Execute(rig, b.moveB);
+    EXPECT_EQ(b.moveB->ERRORID.value, kMcStopping) << "no move on an axis whose stop failed";
+    Release(rig, b.moveB);
+    EXPECT_TRUE(b.stop->ERROR.value) << "the stop's Error holds while its Execute is TRUE";
+    Release(rig, b.stop);
+    ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+    rig.Scan();
+    EXPECT_EQ(rig.State(1), kStandstill) << "not left locked once Execute is FALSE";
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
 }
 
 TEST_P(McSim, StopHoldsStoppingWhileExecuteAndRefusesEveryMotion) {
