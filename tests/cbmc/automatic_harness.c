@@ -7,8 +7,8 @@
  * (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
-#ifndef K
-#define K 3
+#ifndef CBMC__K
+#define CBMC__K 3
 #endif
 
 /* RealRegister's values and the R field each must give, IEEE REAL and DINT x 1000 (manual 2.5.3); 0 where
@@ -53,7 +53,7 @@ int main(void) {
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_AUTOMATICMODULE_init__(&fb, FALSE);
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         const BYTE status = nondet_uchar();
         fb.OPSTATUS.value = status;

@@ -2,17 +2,17 @@
  * generates from st/, for K scans (docs/verification.md). Free in every scan: the operating status OpStatus,
  * the controller's status word and error numbers (module bytes 0..7; the position bytes 8..11 stay 0, which
  * keeps floating point out of the proof), ModeChange, and the programmer's Enable, Execute, Command (the jog
- * buttons only with -DJOGS), Abort, ResetError, DisableDrive, DisableLimitSwitches, ChangeDynamics, Velocity and Acceleration
+ * buttons only with -DCBMC__JOGS), Abort, ResetError, DisableDrive, DisableLimitSwitches, ChangeDynamics, Velocity and Acceleration
  * (a few values each, in and out of range); per run Position (two values), IntegerMode,
  * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Properties "P<n>"/"A<n>", reachability checks
  * "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
-#ifndef K
-#define K 6
+#ifndef CBMC__K
+#define CBMC__K 6
 #endif
-#ifndef TMAX
-#define TMAX 2
+#ifndef CBMC__TMAX
+#define CBMC__TMAX 2
 #endif
 
 /* The traverse bits of the control word (2.7.1): 3..7 and 12..15 the jobs, 10 and 11 the jogs. */
@@ -36,7 +36,7 @@ int main(void) {
 
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_AXIS_init__(&axis, FALSE);
-    const unsigned t = 1 + nondet_uchar() % TMAX, st = 1 + nondet_uchar() % TMAX;
+    const unsigned t = 1 + nondet_uchar() % CBMC__TMAX, st = 1 + nondet_uchar() % CBMC__TMAX;
     axis.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
     axis.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
     axis.POSITION.value = nondet_bool() ? 10.5f : 0.0f;
@@ -48,7 +48,7 @@ int main(void) {
     BOOL takenOver = FALSE;    /* the job saw ACTIVE */
     int reachAbortEnded = 0;
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         for (int i = 0; i < 8; ++i) axis.FROMPAC.value.table[i] = nondet_uchar();
         for (int i = 8; i < 12; ++i) axis.FROMPAC.value.table[i] = 0;
@@ -60,7 +60,7 @@ int main(void) {
         axis.EXECUTE.value = nondet_bool();
         const unsigned char command = nondet_uchar() % 10;
         axis.COMMAND.value = (E_PAC_AXISCOMMAND)command;
-#ifdef JOGS /* the jogs are jobs without Execute: P3/P4 for them are not stated yet (docs/verification.md) */
+#ifdef CBMC__JOGS /* the jogs are jobs without Execute: P3/P4 for them are not stated yet (docs/verification.md) */
         axis.JOGPOSITIVE.value = nondet_bool();
         axis.JOGNEGATIVE.value = nondet_bool();
 #endif

@@ -10,27 +10,27 @@
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
 
-#ifndef K
-#define K 10
+#ifndef CBMC__K
+#define CBMC__K 10
 #endif
-#ifndef CALLERS
-#define CALLERS 1
+#ifndef CBMC__CALLERS
+#define CBMC__CALLERS 1
 #endif
-#ifndef LAG
-#define LAG 1
+#ifndef CBMC__LAG
+#define CBMC__LAG 1
 #endif
-#ifndef TMAX
-#define TMAX 2 /* Timeout TMIN .. TMIN + TMAX - 1 ms, EndTimeout 1 .. TMAX ms */
+#ifndef CBMC__TMAX
+#define CBMC__TMAX 2 /* Timeout TMIN .. TMIN + TMAX - 1 ms, EndTimeout 1 .. TMAX ms */
 #endif
-#ifndef TMIN
-#define TMIN (LAG + 2) /* the round trip: the module out, LAG scans old at most, the reply back */
+#ifndef CBMC__TMIN
+#define CBMC__TMIN (CBMC__LAG + 2) /* the round trip: the module out, LAG scans old at most, the reply back */
 #endif
 
 #define PARKED_CODE 0x190B
 #define SUPERSEDED 0x8007
 
 /* The modules as the PLC left them after the last LAG + 2 scans: recent[j] after scan n - 1 - j. */
-static BYTE recent[LAG + 2][8];
+static BYTE recent[CBMC__LAG + 2][8];
 
 /* The timeline of a counterexample (paccbmc prints it scan by scan): assigned at the end of every scan,
  * tl_scan last. A caller's pins are tl_a_* and tl_b_*. */
@@ -38,7 +38,7 @@ static unsigned long long tl_from_pac, tl_to_pac;
 static int tl_ctrl_read, tl_ctrl_took;
 static BOOL tl_a_execute, tl_a_busy, tl_a_done, tl_a_error;
 static WORD tl_a_code, tl_a_errorid;
-#if CALLERS > 1
+#if CBMC__CALLERS > 1
 static BOOL tl_b_execute, tl_b_busy, tl_b_done, tl_b_error;
 static WORD tl_b_code, tl_b_errorid;
 #endif
@@ -71,7 +71,7 @@ static BOOL IsLong(WORD code) {
 /* One controller cycle before scan n: read a module (latency), take a command, write the reply.
  * A restart shows status 0 and RECEIVE 0 for at least RESTART scans, and the controller then reads no module
  * written before the PLC parked it (a real restart lasts far longer than a bus round trip). */
-#define RESTART (LAG + 2)
+#define RESTART (CBMC__LAG + 2)
 static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
     if (c->downSince == 0 && nondet_bool()) {
         c->downSince = n;
@@ -86,13 +86,13 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         /* It reads no module the PLC wrote before it could see the restart and park the module (the data in
          * the scan after the first status 0, the flag a scan later with TwoStepWrite), and under either reading
          * it starts from its RECEIVE: a SEND equal to it is no new command. */
-        c->seen = n - 1 - LAG - 1;
+        c->seen = n - 1 - CBMC__LAG - 1;
         if (c->seen < c->downSince + 1) c->seen = c->downSince + 1;
         c->lastSend = c->receive;
         c->downSince = 0;
     }
     /* The module it reads: 0..LAG scans old, never older than the last one it read. */
-    const int lag = (int)(nondet_uchar() % (LAG + 1));
+    const int lag = (int)(nondet_uchar() % (CBMC__LAG + 1));
     if (n - 1 - lag > c->seen) {
         BYTE module[8];
         /* Without module consistency the data may still be those of the module before the flag's. */
@@ -175,38 +175,38 @@ static void CallCmd(FB_PAC_CMD *fb, FB_PAC_CMDINTERFACE *iface) {
 
 int main(void) {
     static FB_PAC_CMDINTERFACE iface;
-    static FB_PAC_CMD cmd[CALLERS];
-    static Watch watch[CALLERS];
+    static FB_PAC_CMD cmd[CBMC__CALLERS];
+    static Watch watch[CBMC__CALLERS];
     Controller ctrl = {0};
     BYTE reply[8] = {0, 0, 0, 0, 0, 1, 0x20, 0}; /* home position, nothing outstanding */
     const BOOL twoStep = nondet_bool();
-    const BOOL reversed = CALLERS > 1 && nondet_bool();
+    const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
 
     ctrl.bySendChange = nondet_bool();
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_CMDINTERFACE_init__(&iface, FALSE);
     iface.TWOSTEPWRITE.value = twoStep;
-    for (int i = 0; i < CALLERS; ++i) {
+    for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
         FB_PAC_CMD_init__(&cmd[i], FALSE);
         /* Timeout at least the bus round trip (TMIN); a shorter one (D1, docs/verification.md) is checked
-         * with -DTMIN=1. */
-        const unsigned t = TMIN + nondet_uchar() % TMAX, e = 1 + nondet_uchar() % TMAX;
+         * with -DCBMC__TMIN=1. */
+        const unsigned t = CBMC__TMIN + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX;
         cmd[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
         cmd[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
         watch[i].plcopen.bound = (int)(t + 1 + t + e); /* Timeout + two-step + Timeout + EndTimeout */
     }
-    for (int j = 0; j < LAG + 2; ++j) {
+    for (int j = 0; j < CBMC__LAG + 2; ++j) {
         for (int i = 0; i < 8; ++i) recent[j][i] = 0;
     }
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         if (n > 1) ControllerStep(&ctrl, n, twoStep, reply);
-        BOOL edge[CALLERS];
-        for (int i = 0; i < CALLERS; ++i) {
+        BOOL edge[CBMC__CALLERS];
+        for (int i = 0; i < CBMC__CALLERS; ++i) {
             const BOOL before = cmd[i].EXECUTE.value;
             SetPins(&cmd[i], i);
             edge[i] = cmd[i].EXECUTE.value && !before;
@@ -215,16 +215,16 @@ int main(void) {
         FB_PAC_CMDINTERFACE_body__(&iface);
         /* Each call with a constant index: a pointer to cmd[symbolic] would split every access in the body. */
         if (reversed) {
-            for (int i = CALLERS - 1; i >= 0; --i) CallCmd(&cmd[i], &iface);
+            for (int i = CBMC__CALLERS - 1; i >= 0; --i) CallCmd(&cmd[i], &iface);
         } else {
-            for (int i = 0; i < CALLERS; ++i) CallCmd(&cmd[i], &iface);
+            for (int i = 0; i < CBMC__CALLERS; ++i) CallCmd(&cmd[i], &iface);
         }
-        for (int j = LAG + 1; j > 0; --j) {
+        for (int j = CBMC__LAG + 1; j > 0; --j) {
             for (int i = 0; i < 8; ++i) recent[j][i] = recent[j - 1][i];
         }
         for (int i = 0; i < 8; ++i) recent[0][i] = iface.CHANNEL.value.TOPAC.table[i];
         int edges = 0;
-        for (int i = 0; i < CALLERS; ++i) {
+        for (int i = 0; i < CBMC__CALLERS; ++i) {
             if (cmd[i].DONE.value) reachDone = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
@@ -239,7 +239,7 @@ int main(void) {
         tl_a_done = cmd[0].DONE.value;
         tl_a_error = cmd[0].ERROR.value;
         tl_a_errorid = cmd[0].ERRORID.value;
-#if CALLERS > 1
+#if CBMC__CALLERS > 1
         tl_b_execute = cmd[1].EXECUTE.value;
         tl_b_code = cmd[1].CODE.value;
         tl_b_busy = cmd[1].BUSY.value;
@@ -249,7 +249,7 @@ int main(void) {
 #endif
         tl_to_pac = Bytes8(recent[0]);
         tl_scan = n;
-        for (int i = 0; i < CALLERS; ++i) {
+        for (int i = 0; i < CBMC__CALLERS; ++i) {
             Check(&cmd[i], &watch[i], &ctrl, n, edge[i]);
             edges += watch[i].edges;
         }
@@ -260,7 +260,7 @@ int main(void) {
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with a controller code");
     __CPROVER_assert(iface.RESYNCS.value == 0, "reach: a resynchronisation");
-#if CALLERS > 1
+#if CBMC__CALLERS > 1
     __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
 #else
     (void)reachSuperseded;

@@ -6,11 +6,11 @@
  * "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
-#ifndef K
-#define K 6
+#ifndef CBMC__K
+#define CBMC__K 6
 #endif
-#ifndef TMAX
-#define TMAX 3
+#ifndef CBMC__TMAX
+#define CBMC__TMAX 3
 #endif
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
@@ -26,11 +26,11 @@ int main(void) {
 
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_CTRL_init__(&ctrl, FALSE);
-    const unsigned t = 1 + nondet_uchar() % TMAX;
+    const unsigned t = 1 + nondet_uchar() % CBMC__TMAX;
     ctrl.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
     watch.bound = (int)t; /* FB_PAC_Ctrl: Timeout from the edge scan (plcopen_checker.hpp, RequestBusyBound) */
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         for (int i = 0; i < 8; ++i) ctrl.FROMPAC.value.table[i] = nondet_uchar();
         const BOOL before = ctrl.EXECUTE.value;

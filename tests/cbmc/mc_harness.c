@@ -9,11 +9,11 @@
  * cmd_harness.c. */
 #include "harness.h"
 
-#ifndef K
-#define K 4
+#ifndef CBMC__K
+#define CBMC__K 4
 #endif
-#ifndef TMAX
-#define TMAX 2
+#ifndef CBMC__TMAX
+#define CBMC__TMAX 2
 #endif
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
@@ -69,7 +69,7 @@ int main(void) {
     MC_HALT_init__(&halt, FALSE);
     MC_RESET_init__(&reset, FALSE);
     FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
-    const unsigned t = 1 + nondet_uchar() % TMAX, st = 1 + nondet_uchar() % TMAX;
+    const unsigned t = 1 + nondet_uchar() % CBMC__TMAX, st = 1 + nondet_uchar() % CBMC__TMAX;
     /* P8, the Busy bounds of MC_blocks.md: a halt or stop ends by StopTimeout after the scan FB_PAC_McAxis took
      * it (the scan of the edge here, the blocks called before it), shown one call later; MC_Reset by
      * 2 x Timeout after its edge scan. A move has no bound: it takes as long as the axis moves. */
@@ -86,7 +86,7 @@ int main(void) {
     move.POSITION.value = 10.5f;
     move.VELOCITY.value = 50.0f;
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         for (int i = 0; i < 8; ++i) mcAxis.FROMPAC.value.table[i] = nondet_uchar();
         for (int i = 8; i < 12; ++i) mcAxis.FROMPAC.value.table[i] = 0;

@@ -7,30 +7,30 @@
  * "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
-#ifndef K
-#define K 4
+#ifndef CBMC__K
+#define CBMC__K 4
 #endif
-#ifndef TMAX
-#define TMAX 2
+#ifndef CBMC__TMAX
+#define CBMC__TMAX 2
 #endif
-#ifndef BYTES_PER_SCAN /* bytes the controller's side puts into RxBuffer per scan at most */
-#define BYTES_PER_SCAN 8
+#ifndef CBMC__BYTES_PER_SCAN /* bytes the controller's side puts into RxBuffer per scan at most */
+#define CBMC__BYTES_PER_SCAN 8
 #endif
-#ifndef REPLY_BYTES /* bytes it sends after each request at most: an acknowledgement of up to 12 text bytes */
-#define REPLY_BYTES 16
+#ifndef CBMC__REPLY_BYTES /* bytes it sends after each request at most: an acknowledgement of up to 12 text bytes */
+#define CBMC__REPLY_BYTES 16
 #endif
 
 /* The command, one per run: a constant, so that its text (the REAL's decimals above all) is computed once
  * rather than bit-blasted (the text functions have their own tests, docs/verification.md). By default an
  * absolute move of axis 1 to 12.5 (0A87: a REAL, a long command polled with EOT, not repeated blindly). */
-#ifndef CMD_CODE
-#define CMD_CODE 0x0A87
+#ifndef CBMC__CMD_CODE
+#define CBMC__CMD_CODE 0x0A87
 #endif
-#ifndef CMD_PARAM
-#define CMD_PARAM 1
+#ifndef CBMC__CMD_PARAM
+#define CBMC__CMD_PARAM 1
 #endif
-#ifndef CMD_DATA
-#define CMD_DATA 0x41480000u /* 12.5 */
+#ifndef CBMC__CMD_DATA
+#define CBMC__CMD_DATA 0x41480000u /* 12.5 */
 #endif
 
 #define RING 300 /* T_PAC_ComBuffer: 300 bytes in Buffer[0..299] */
@@ -104,10 +104,10 @@ int main(void) {
 
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_RS232CMD_init__(&cmd, FALSE);
-    const int t = 1 + nondet_uchar() % TMAX, e = 1 + nondet_uchar() % TMAX, q = 1 + nondet_uchar() % TMAX;
+    const int t = 1 + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX, q = 1 + nondet_uchar() % CBMC__TMAX;
     cmd.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
     cmd.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
-    cmd.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % TMAX) * CYCLE_NS);
+    cmd.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % CBMC__TMAX) * CYCLE_NS);
     cmd.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
     cmd.RETRIES.value = nondet_bool();
     /* Busy: per request at most Timeout for a quiet line, Timeout for room in TxBuffer and Timeout for the
@@ -117,7 +117,7 @@ int main(void) {
     T_PAC_COMBUFFER *tx = &cmd.TXBUFFER.value, *rx = &cmd.RXBUFFER.value;
     tx->WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
 
-    for (int n = 1; n <= K; ++n) {
+    for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. */
         const int held = nondet_ushort() % (RING + 1);
@@ -127,10 +127,10 @@ int main(void) {
         tx->BLOCKED = nondet_bool();
         /* RxBuffer: the controller's bytes, any values. */
         rx->BLOCKED = nondet_bool();
-        int received = nondet_uchar() % (BYTES_PER_SCAN + 1);
-        if (received > REPLY_BYTES - sinceRequest) received = REPLY_BYTES - sinceRequest;
+        int received = nondet_uchar() % (CBMC__BYTES_PER_SCAN + 1);
+        if (received > CBMC__REPLY_BYTES - sinceRequest) received = CBMC__REPLY_BYTES - sinceRequest;
         unsigned long long fromPac = 0;
-        for (int i = 0; i < BYTES_PER_SCAN && i < received; ++i) {
+        for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
             const unsigned char byte = nondet_uchar();
             if (i < 8) fromPac |= (unsigned long long)byte << (8 * (7 - i));
             Receive(&frames, byte, rule);
@@ -148,9 +148,9 @@ int main(void) {
         const BOOL before = cmd.EXECUTE.value;
         cmd.EXECUTE.value = nondet_bool();
         const BOOL edge = cmd.EXECUTE.value && !before;
-        cmd.CODE.value = CMD_CODE;
-        cmd.PARAM.value = CMD_PARAM;
-        cmd.DATA.value = CMD_DATA;
+        cmd.CODE.value = CBMC__CMD_CODE;
+        cmd.PARAM.value = CBMC__CMD_PARAM;
+        cmd.DATA.value = CBMC__CMD_DATA;
         cmd.CHECKRULE.value = (E_PAC_RS232CHECK)(nondet_uchar() % 4);
         if (edge && !cmd.BUSY.value) rule = cmd.CHECKRULE.value;
         const BOOL doneBefore = cmd.DONE.value;
