@@ -468,7 +468,7 @@ class Compiler:
                 # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
                 linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
                 if not (pou.program or linked) or section != "var" or constant:
-                    # At the name: an `AT %I*` has no position of its own once read back from the parse cache.
+                    # At the name: blark reads `AT %I*` as an enumeration value, which has no position.
                     raise self.err(dv, "located variables (AT %...) are declared in a global list or "
                                        "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
                 location = user.parse_location(self, dv.location, vtype)
