@@ -23,6 +23,18 @@ def _run(command, what, env=None):
     return result.stdout
 
 
+def compile_to(command, obj, what):
+    """Runs the compiler `command` writing `obj`, through ccache where it is installed."""
+    launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
+    _run(launcher + command + ["-o", obj], what)
+
+
+def link(exe, objects, libraries, sanitize, coverage=False):
+    """Links the host `exe` as the project's build was compiled (its sanitizers, the coverage counters)."""
+    flags = (["--coverage"] if coverage else []) + (["-fsanitize=address,undefined"] if sanitize else [])
+    _run([os.environ.get("CXX", "c++"), *flags, "-o", exe, *objects, *libraries, "-lm"], "linking the host")
+
+
 class HostBuild:
     def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
         self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
@@ -90,8 +102,7 @@ class HostBuild:
         obj = os.path.join(self.obj, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
         if os.path.exists(obj) and os.path.getmtime(obj) >= os.path.getmtime(source):
             return obj
-        launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
-        _run(launcher + command + ["-o", obj], f"compiling {os.path.basename(source)}")
+        compile_to(command, obj, f"compiling {os.path.basename(source)}")
         return obj
 
     def build(self, symbols, tests):
@@ -113,8 +124,5 @@ class HostBuild:
         for name in os.listdir(self.obj):
             if os.path.splitext(os.path.join(self.obj, name))[0] not in keep:
                 os.remove(os.path.join(self.obj, name))
-        linker = os.environ.get("CXX", "c++")
-        link_flags = (["--coverage"] if self.coverage or self.pac.coverage else []) + \
-            (["-fsanitize=address,undefined"] if self.pac.sanitize else [])
-        _run([linker, *link_flags, "-o", self.exe, *objects, *self.pac.libraries, "-lm"], "linking the host")
+        link(self.exe, objects, self.pac.libraries, self.pac.sanitize, self.coverage or self.pac.coverage)
         return self.exe

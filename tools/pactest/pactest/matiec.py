@@ -10,7 +10,6 @@ import concurrent.futures
 import json
 import os
 import re
-import shutil
 
 from . import build, hostgen, project
 
@@ -121,11 +120,9 @@ class MatiecHostBuild(build.HostBuild):
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             objects = list(pool.map(self._compile_matiec, c_files)) + \
                 list(pool.map(lambda c: self._compile(c, True), cxx_files))
-        linker = os.environ.get("CXX", "c++")
-        sanitize = ["-fsanitize=address,undefined"] if self.pac.sanitize else []
         # not the build's pac_st: the library is MATIEC's C above, compiled with the program
         libraries = [lib for lib in self.pac.libraries if not lib.endswith("libpac_st.a")]
-        build._run([linker, *sanitize, "-o", self.exe, *objects, *libraries, "-lm"], "linking the host")
+        build.link(self.exe, objects, libraries, self.pac.sanitize)
         return self.exe
 
     def _compile_matiec(self, source):
@@ -134,9 +131,9 @@ class MatiecHostBuild(build.HostBuild):
         sanitize = ["-fsanitize=address,undefined", "-fno-sanitize-recover=undefined"] if self.pac.sanitize else []
         # MATIEC's C is GNU C (statement expressions); -w: it warns of much that is meant
         flags = ["-g", "-fno-omit-frame-pointer", *sanitize, "-std=gnu11", "-fwrapv", "-w", "-O1"]
-        launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
-        build._run(launcher + [compiler, *flags, "-I", self.c_dir, "-I", os.path.join(self.pac.matiec[1], "C"),
-                               "-c", source, "-o", obj], f"compiling MATIEC's {os.path.basename(source)}")
+        includes = ["-I", self.c_dir, "-I", os.path.join(self.pac.matiec[1], "C")]
+        what = f"compiling MATIEC's {os.path.basename(source)}"
+        build.compile_to([compiler, *flags, *includes, "-c", source], obj, what)
         return obj
 
 
