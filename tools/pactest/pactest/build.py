@@ -52,16 +52,19 @@ class HostBuild:
         cache = self.parse_cache or os.path.join(self.out, "pacst-cache")
         return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env)
 
+    def user_inputs(self):
+        """pacst's arguments for the whole program, in any order (pacst --user finds the declaration order): the
+        library, GVL_PAC (the program names its constants, PAC_CMD_PUT_INT_REG...), the vocabulary (its FUNCTIONs
+        the host's) and the user's sources; a TwinCAT .plcproj stands for its objects, a PLCopen XML project for
+        ST files written to OUT/plcopen."""
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
+        natives = [a for f in project.native_sources() for a in ("--native", f)]
+        return ["--user", "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
+
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
-        # GVL_PAC among the sources: the program names the library's constants (PAC_CMD_PUT_INT_REG...)
-        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
-        # a TwinCAT .plcproj stands for its objects, a PLCopen XML project for ST files written to `sources`
-        sources = ["--sources", os.path.join(self.out, "plcopen")]
-        ordered = self._pacst("order", "--user", *sources, *files).splitlines()
-        natives = [a for f in project.native_sources() for a in ("--native", f)]
-        self._pacst("build", "--user", "--line-directives", "--out", self.st_out, *natives,
-                    "--gvl", project.gvl_pac(), *ordered)
+        self._pacst("build", *self.user_inputs(), "--line-directives", "--out", self.st_out,
+                    "--gvl", project.gvl_pac())
         with open(os.path.join(self.st_out, "symbols.json"), encoding="utf-8") as f:
             return hostgen.Symbols(json.load(f))
 

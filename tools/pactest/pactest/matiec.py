@@ -40,11 +40,7 @@ class MatiecHostBuild(build.HostBuild):
         tasks, st, line_map = (os.path.join(self.mat, n) for n in ("tasks.json", "program.st", "lines.json"))
         with open(tasks, "w", encoding="utf-8") as f:
             json.dump(self.tasks(), f, indent=1)
-        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
-        sources = ["--sources", os.path.join(self.out, "plcopen")]
-        ordered = self._pacst("order", "--user", *sources, *files).splitlines()
-        natives = [a for f in project.native_sources() for a in ("--native", f)]
-        self._pacst("matiec", "--out", st, "--tasks", tasks, "--line-map", line_map, *natives, *ordered)
+        self._pacst("matiec", *self.user_inputs(), "--out", st, "--tasks", tasks, "--line-map", line_map)
         for name in os.listdir(self.c_dir):
             os.remove(os.path.join(self.c_dir, name))
         iec2c, lib = self.pac.matiec
