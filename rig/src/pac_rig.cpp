@@ -56,6 +56,15 @@ void PacRig::CopyChannelToModule() {
     for (std::size_t i = 0; i < 8; ++i) toPac_[pac::sim::ModuleLayout::kCmdOffset + i] = channel.TOPAC.table[i];
 }
 
+void PacRig::CallCmdProgram(std::function<void(ST_PAC_CMDCHANNEL& channel)> program) {
+    if (!program) throw std::invalid_argument("PacRig::CallCmdProgram: empty program");
+    RegisterCmdInterface();
+    task_.AddProgram([this, program] {
+        program(CmdInterface()->CHANNEL.value);
+        CopyChannelToModule();
+    });
+}
+
 void PacRig::CallRaw8(std::size_t offset,
                            std::function<void(const pac::sim::Image8& fromPac, pac::sim::Image8& toPac)> program) {
     if (!program) throw std::invalid_argument("PacRig::CallRaw8: empty program");

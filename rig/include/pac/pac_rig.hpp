@@ -53,6 +53,11 @@ public:
         CallOnCmd(fb, std::move(before), 0);
     }
 
+    // A program that calls the command FBs itself, as a PLC program with CASE steps and IF branches does:
+    // any of them, in any order, or none in a scan. It gets the channel after FB_PAC_CmdInterface ran and
+    // passes it to each FB it calls (FB_PAC_Cmd's VAR_IN_OUT); the module follows the channel.
+    void CallCmdProgram(std::function<void(ST_PAC_CMDCHANNEL& channel)> program);
+
     // The FB_PAC_CmdInterface the command FBs' channel runs on (registered with the first of them).
     pac::FbInstance<FB_PAC_CMDINTERFACE>& CmdInterface();
     // The channel as the last program of the scan left it.
