@@ -1,5 +1,5 @@
 // FB_PAC_CmdInterface keeps the queue of a shared CMD interface moving past command FBs that gave up or that
-// the program no longer calls, and frees the interface of a command whose FB is gone; FB_PAC_Cmd refuses to
+// the program no longer calls, and follows a command whose FB is away to its end; FB_PAC_Cmd refuses to
 // run without it. Hand-written replies, scan by scan, three FBs on one channel called in a fixed order.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ protected:
             ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
             channel.FROMPAC.table[0] = channel.FROMPAC.table[1] = channel.FROMPAC.table[2] = 0;
             channel.FROMPAC.table[3] = channel.FROMPAC.table[4] = 0;
-            channel.FROMPAC.table[5] = 1;  // operating status: ready
+            channel.FROMPAC.table[5] = status_;  // operating status
             channel.FROMPAC.table[6] = static_cast<std::uint8_t>((rf_ ? 0x80 : 0) | (bf_ ? 0x20 : 0));
             channel.FROMPAC.table[7] = 0;
             if (callInterface_) interface_();
@@ -74,6 +74,7 @@ protected:
     bool callInterface_ = true;
     bool rf_ = false;
     bool bf_ = true;
+    std::uint8_t status_ = 1;  // ready (HOME POSITION)
 };
 
 // Without FB_PAC_CmdInterface nobody keeps the module in step or the queue moving: a command FB whose channel
@@ -138,15 +139,29 @@ TEST_F(CmdChannelQueue, ATicketWhoseFbIsNoLongerCalledIsPassedOverAfterAScan) {
     }
     ASSERT_TRUE(sentB) << "B's command goes once A's ticket is passed over";
     EXPECT_GE(freeScansWithNothingSent, 1) << "A's turn is held for a whole free scan before it is passed over";
+    // Called again, A queues anew behind B (its Timeout still counting from its edge) and goes after B's end.
+    Acknowledge(true);
+    called_[0] = true;
+    bool sentA = false;
+    for (int scan = 0; scan < 6 && !sentA; ++scan) {
+        Cycle(1);
+        sentA = ModuleCode() == 0x1906 && ModuleParam() == 1;
+    }
+    ASSERT_TRUE(sentA) << "A's command goes once it is called again";
+    EXPECT_TRUE(Done(1));
+    Acknowledge(true);
+    Cycle(1);
+    EXPECT_TRUE(Done(0)) << "A: " << OutputsOf(fbs_[0]);
     EXPECT_EQ(interface_->WAITING.value, 1) << "B, counted by the interface before it took its turn";
     Cycle(1);
     EXPECT_EQ(interface_->WAITING.value, 0);
 }
 
-// A's move is acknowledged and runs; then the program stops calling A. After a whole scan without it the
-// interface frees the command and parks the module, but B still waits: the reply shows the move processing
-// (END OF PROCESSING 0), and only its end makes the interface free.
-TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledFreesTheInterfaceAtTheEndOfProcessing) {
+// A's move is acknowledged and runs; then the program stops calling A (a CASE step left). The interface follows
+// the move to its end in A's absence: the module keeps the move, B waits while the reply shows it processing,
+// B goes in the scan that shows its end, and A, called again after B's command ended too, finds its own outcome
+// (Done, the end position) by its handshake number, not B's answer (issue 32, item 1).
+TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledIsFollowedToItsEndOfProcessing) {
     Request(0, 0x0A87, 1);
     Cycle(1);
     ASSERT_EQ(ModuleCode(), 0x0A87);
@@ -155,22 +170,21 @@ TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledFreesTheInterfaceAtTheEnd
     ASSERT_TRUE(fbs_[0]->ACKNOWLEDGED.value);
     Request(1, 0x1906, 2);
     called_[0] = false;
-    Cycle(1);
-    EXPECT_TRUE(interface_->INFLIGHT.value) << "one scan without A: still A's";
-    Cycle(1);
-    EXPECT_FALSE(interface_->INFLIGHT.value) << "two: freed";
-    EXPECT_EQ(ModuleCode(), kGetStat) << "and parked, the SEND flag unchanged";
-    EXPECT_EQ(SendFlag(), rf_);
-    Cycle(5);
-    EXPECT_EQ(ModuleCode(), kGetStat) << "B waits while the move runs";
-    EXPECT_TRUE(Busy(1));
+    Cycle(7);
+    EXPECT_TRUE(interface_->INFLIGHT.value) << "still A's move, A away or not";
+    EXPECT_EQ(ModuleCode(), 0x0A87) << "the module keeps the move";
+    EXPECT_TRUE(Busy(1)) << "B waits while the move runs";
     bf_ = true;  // the move ends
     Cycle(1);
-    EXPECT_EQ(ModuleCode(), 0x1906);
+    EXPECT_EQ(ModuleCode(), 0x1906) << "B goes in the scan that shows the move's end";
     EXPECT_EQ(ModuleParam(), 2);
     Acknowledge(true);
     Cycle(1);
     EXPECT_TRUE(Done(1));
+    called_[0] = true;
+    Cycle(1);
+    EXPECT_TRUE(Done(0)) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_TRUE(fbs_[0]->ACKNOWLEDGED.value);
 }
 
 // A controller whose PLC cycle equals its own, with no bus latency: in the reply of the next scan it takes
@@ -211,19 +225,21 @@ TEST_F(CmdChannelOvertaking, AStopOvertakingAMoveBeforeItsToggleLeavesTheMoveNev
     EXPECT_TRUE(Done(1)) << "B: " << OutputsOf(fbs_[1]);
 }
 
-// The same with B called first and its edge one scan after A's: B overtakes A in the scan A toggles, A must
-// not write its toggle over the stop's data (the stop would be lost and A would take its answer).
-TEST_F(CmdChannelOvertaking, AStopCalledFirstOvertakingAMoveBeforeItsToggleIsNeverLost) {
+// The same with B called first and its edge one scan after A's: FB_PAC_CmdInterface toggles A's move at the
+// start of that scan, so B finds the move on its way and waits for its acknowledgement, then stops it. The stop
+// is never lost, the controller takes each command once, and A ends with the stop's verdict over its move
+// (16#8007), never Done with the stop's answer.
+TEST_F(CmdChannelOvertaking, AStopCalledFirstAfterAMovesDataStopsTheMoveAndIsNeverLost) {
     interface_->TWOSTEPWRITE.value = TRUE;
     ControllerCycle(2);
     Request(1, 0x0A87, 1);
     ControllerCycle(1);
     Request(0, 0x0A93, 1);
-    ControllerCycle(10);
-    EXPECT_EQ(taken_, std::vector<std::uint16_t>{0x0A93}) << "the controller took the stop alone";
+    ControllerCycle(12);
+    EXPECT_EQ(taken_, (std::vector<std::uint16_t>{0x0A87, 0x0A93})) << "the move, then its stop";
     EXPECT_TRUE(Done(0)) << "B: " << OutputsOf(fbs_[0]);
     ASSERT_TRUE(OutputsOf(fbs_[1]).error) << "A: " << OutputsOf(fbs_[1]);
-    EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]);
+    EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]);
 }
 
 // A stop is sent, and before its acknowledgement the program stops calling its FB. The interface does not
@@ -247,6 +263,35 @@ TEST_F(CmdChannelQueue, AStopWhoseFbIsNoLongerCalledIsNeverWithdrawn) {
     Cycle(1);
     EXPECT_EQ(ModuleCode(), 0x1906) << "B goes in the scan that shows the stop's end";
     EXPECT_EQ(ModuleParam(), 2);
+}
+
+// Issue 32, item 7: a stop goes out, and the next reply shows operating status 0 for one scan, before the
+// controller read the stop. The stop's FB ends 16#8004 (whether the controller took it is unknown), but the
+// stop stays in the module under its SEND flag: a controller that was only briefly not ready takes it when it
+// reads the module, and nothing is parked over it meanwhile.
+TEST_F(CmdChannelQueue, AStatusZeroBlipNeverWithdrawsAStop) {
+    Request(0, 0x0A87, 1);
+    Cycle(1);
+    Acknowledge(false);
+    Cycle(1);
+    Request(1, 0x0A93, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x0A93);
+    const bool stopSend = SendFlag();
+    ASSERT_NE(stopSend, rf_);
+    status_ = 0;
+    Cycle(1);
+    status_ = 1;
+    EXPECT_TRUE(OutputsOf(fbs_[1]).error) << "B: " << OutputsOf(fbs_[1]);
+    EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_CONNECTION_LOST"]);
+    for (int scan = 0; scan < 5; ++scan) {
+        Cycle(1);
+        EXPECT_EQ(ModuleCode(), 0x0A93) << "scan " << scan << ": the stop is never withdrawn";
+        EXPECT_EQ(SendFlag(), stopSend);
+    }
+    Acknowledge(true);  // the controller reads the module: it takes the stop
+    Cycle(2);
+    EXPECT_EQ(ModuleCode(), kGetStat) << "parked once the stop is taken and ended";
 }
 
 // Issue 24, item 4: A's reference run processes, B's stop of the axis overtakes it and no acknowledgement

@@ -35,11 +35,11 @@ std::vector<std::uint32_t> ManualErrorNumbers() {
     return numbers;
 }
 
-// The library's own codes, one per line of the FBs' error tables (docs/fb/*.md): 16#8001..16#8016, and from
+// The library's own codes, one per line of the FBs' error tables (docs/fb/*.md): 16#8001..16#8017, and from
 // 16#8020 those of the modules and operating modes, from 16#8030 those of the MC_ blocks.
 std::vector<std::uint32_t> LibraryErrorCodes() {
     std::vector<std::uint32_t> codes;
-    for (std::uint32_t code = 0x8001; code <= 0x8016; ++code) codes.push_back(code);
+    for (std::uint32_t code = 0x8001; code <= 0x8017; ++code) codes.push_back(code);
     for (std::uint32_t code = 0x8020; code <= 0x8024; ++code) codes.push_back(code);
     for (std::uint32_t code = 0x8030; code <= 0x8039; ++code) codes.push_back(code);  // the MC_ blocks
     return codes;

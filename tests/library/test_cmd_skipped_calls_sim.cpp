@@ -1,0 +1,265 @@
+// The calling contract of FB_PAC_Cmd (docs/fb/FB_PAC_Cmd.md, "The calling contract"), scan by scan against the
+// simulated PA-CONTROL: a command FB that the program leaves uncalled for 1 to 6 scans, at every point of its
+// handshake (before its turn, between the data and the toggle of a two-step write, waiting for the
+// acknowledgement, waiting for END OF PROCESSING, after the end), while a second FB sends its own command as soon
+// as the interface is free. Each FB ends Done for its own command only, with its own answer, and the controller
+// took each command once. And a stop edged in the scan of another command's data (two-step write), called after
+// it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
+// commands are on their way at once (issue 32, items 1 and 2).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bus_timing.hpp"
+#include "controller_readings.hpp"
+#include "gvl_constants.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
+#include "pac/pac_rig.hpp"
+#include "pac/sim/cmd_frame.hpp"
+#include "pac/sim/command_table.hpp"
+#include "real_bits.hpp"
+#include "rig_timing.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+namespace code = pac::sim::code;
+
+const pac::test::GvlConstants kGvl;
+
+struct SkipCase {
+    pac::test::SharingCase sharing;
+    bool twoStepWrite = false;
+};
+
+std::string SkipCaseName(const ::testing::TestParamInfo<SkipCase>& info) {
+    const ::testing::TestParamInfo<pac::test::SharingCase> sharing(info.param.sharing, info.index);
+    return pac::test::SharingCaseName(sharing) + (info.param.twoStepWrite ? "_TwoStep" : "_OneStep");
+}
+
+void PrintTo(const SkipCase& c, std::ostream* out) {
+    pac::test::PrintTo(c.sharing, out);
+    *out << (c.twoStepWrite ? "; two-step write" : "; one-step write");
+}
+
+struct Command {
+    std::uint16_t code = 0;
+    std::uint16_t param = 0;
+    std::uint32_t data = 0;
+};
+
+// Two FB_PAC_Cmd on one channel; the test decides in every scan whether each is called, and in which order.
+class TwoCallerPlc {
+public:
+    explicit TwoCallerPlc(const SkipCase& c) : case_(c), rig_(pac::test::RigTimingOf(c.sharing.timing, 0ns), Config(c)) {
+        rig_.CmdInterface()->TWOSTEPWRITE.value = c.twoStepWrite ? TRUE : FALSE;
+        rig_.CallCmdProgram([this](ST_PAC_CMDCHANNEL& channel) {
+            for (int i : order_) {
+                if (!called_[i]) continue;
+                fbs_[i]->CHANNEL.value = channel;
+                fbs_[i]();
+                channel = fbs_[i]->CHANNEL.value;
+            }
+        });
+        rig_.Start();
+    }
+
+    void Boot() {
+        for (int i = 0; i < 100000 && !rig_.Controller().Booted(); ++i) rig_.Scan();
+        const auto& t = case_.sharing.timing;
+        rig_.Scan(3 + 2 * t.latency + t.jitterUs / 1000 / t.plcMs);
+    }
+
+    // ONLINE as a program gets there (5.2.1.3): system parameter 4 names the stop input 7, which has power.
+    bool GoOnline() {
+        if (!RunAlone(0, {0x0700, 4, 7})) return false;
+        rig_.Controller().Io().inputs.Set(7, true);
+        if (!RunAlone(0, {code::kStartOnline, 0, 0})) return false;
+        rig_.Scan(2 * (case_.sharing.timing.latency + 1));
+        return rig_.Controller().OperatingStatus() == 31;
+    }
+
+    // One command on FB `i`, called every scan: Done?
+    bool RunAlone(int i, const Command& command) {
+        Set(i, command);
+        Fb(i)->EXECUTE.value = TRUE;
+        for (int n = 0; n < 20000 && !Final(i); ++n) rig_.Scan();
+        const bool done = Fb(i)->DONE.value != 0;
+        Fb(i)->EXECUTE.value = FALSE;
+        rig_.Scan();
+        return done;
+    }
+
+    void Set(int i, const Command& c) {
+        Fb(i)->CODE.value = c.code;
+        Fb(i)->PARAM.value = c.param;
+        Fb(i)->DATA.value = c.data;
+    }
+    bool Final(int i) { return Fb(i)->DONE.value || Fb(i)->ERROR.value; }
+    pac::FbInstance<FB_PAC_CMD>& Fb(int i) { return fbs_[i]; }
+    void Call(int i, bool called) { called_[i] = called; }
+    void Order(int first, int second) { order_ = {first, second}; }
+    void Scan() { rig_.Scan(); }
+    pac::PacRig& Rig() { return rig_; }
+
+    // The commands the controller took since the last call, oldest first.
+    std::vector<Command> Taken() {
+        std::vector<Command> taken;
+        const auto& records = rig_.Controller().Log().Records();
+        for (; logRead_ < records.size(); ++logRead_) {
+            if (!records[logRead_].newCommand) continue;
+            const auto f = pac::sim::CommandFrame::Decode(records[logRead_].toPac.Cmd());
+            if (f.code != code::kGetState) taken.push_back({f.code, f.parameter, f.data});  // the parked read aside
+        }
+        return taken;
+    }
+
+private:
+    static pac::sim::PaControlConfig Config(const SkipCase& c) {
+        pac::sim::PaControlConfig config = c.sharing.Config();
+        config.logCapacity = 10000000;
+        return config;
+    }
+
+    SkipCase case_;
+    pac::PacRig rig_;
+    pac::FbInstance<FB_PAC_CMD> fbs_[2] = {PAC_FB(FB_PAC_CMD), PAC_FB(FB_PAC_CMD)};
+    bool called_[2] = {true, true};
+    std::vector<int> order_ = {0, 1};
+    std::size_t logRead_ = 0;
+};
+
+int Count(const std::vector<Command>& taken, const Command& c) {
+    int n = 0;
+    for (const Command& t : taken) n += t.code == c.code && t.param == c.param && t.data == c.data ? 1 : 0;
+    return n;
+}
+
+class CmdSkippedCalls : public ::testing::TestWithParam<SkipCase> {};
+
+// FB 0 sends a write of N1 or a move of axis 2; the program leaves it uncalled for `skip` scans from `offset`
+// scans after its edge. FB 1, called every scan, edges a read of N7 in the scan FB 0 is first left out, so that
+// it goes out as soon as the interface is free and its acknowledgement can meet FB 0's return.
+TEST_P(CmdSkippedCalls, EachFbEndsDoneForItsOwnCommandWhateverScansItMisses) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    plc.Rig().Controller().Io().intRegisters.SetInt(7, 4242);
+    std::uint32_t serial = 1;
+    int skippedWhileBusy = 0;
+    for (const bool move : {false, true}) {
+        for (int skip = 1; skip <= 6; ++skip) {
+            for (int offset = 0; offset <= 12; ++offset) {
+                SCOPED_TRACE((move ? "move, " : "write, ") + std::to_string(skip) + " scans skipped from scan " +
+                             std::to_string(offset) + " after the edge");
+                const Command own = move ? Command{code::kPosAxisAbsolute, 2, pac::test::BitsOf(serial % 2 ? 2.5F : 0.5F)}
+                                         : Command{code::kPutIntReg, 1, serial};
+                const Command other{code::kGetIntReg, 7, 0};
+                ++serial;
+                plc.Taken();
+                plc.Set(0, own);
+                plc.Set(1, other);
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                bool otherEdged = false;
+                int n = 0;
+                for (; n < 30000 && !(plc.Final(0) && (!otherEdged || plc.Final(1))); ++n) {
+                    const bool away = n >= offset && n < offset + skip;
+                    plc.Call(0, !away);
+                    if (away && !otherEdged) {
+                        plc.Fb(1)->EXECUTE.value = TRUE;
+                        otherEdged = true;
+                    }
+                    plc.Scan();
+                }
+                plc.Call(0, true);
+                ASSERT_TRUE(plc.Final(0) && (!otherEdged || plc.Final(1))) << "Busy after " << n << " scans";
+                const auto taken = plc.Taken();
+                EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
+                EXPECT_EQ(Count(taken, own), 1) << "the controller took FB 0's command once";
+                if (otherEdged) {
+                    EXPECT_TRUE(plc.Fb(1)->DONE.value) << "ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
+                    EXPECT_EQ(Count(taken, other), 1) << "and FB 1's";
+                    EXPECT_EQ(plc.Fb(1)->ACKDATA.value, 4242u) << "FB 1's own answer";
+                    ++skippedWhileBusy;
+                }
+                if (move) {
+                    EXPECT_EQ(plc.Fb(0)->ACKDATA.value, own.data) << "the end position";
+                }
+                plc.Fb(0)->EXECUTE.value = FALSE;
+                plc.Fb(1)->EXECUTE.value = FALSE;
+                plc.Scan();
+                plc.Scan();
+                if (HasFailure()) return;
+            }
+        }
+    }
+    EXPECT_GE(skippedWhileBusy, 2 * 6 * 2) << "each skip met each command at two points of its handshake at least";
+}
+
+// Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
+// matter here) edged `lag` scans apart, in either call order. The
+// stop may take the interface between FB 0's data and its toggle; then FB 0's command never went out and FB 0
+// ends with 16#8016 within a few scans, not after its Timeout; otherwise it went out and ends Done. Never are
+// two commands in flight by the FBs' own account: while FB 0 is Busy after its command was sent, the controller
+// took no other command but the stop.
+TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandAtOnce) {
+    if (!GetParam().twoStepWrite) GTEST_SKIP() << "only a two-step write has a scan between data and toggle";
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const std::uint32_t overtaken = kGvl["PAC_LIB_ERR_OVERTAKEN"];
+    std::uint32_t serial = 100;
+    int overtakenRuns = 0;
+    for (const bool stopFirst : {false, true}) {
+        for (int lag = 0; lag <= 2; ++lag) {
+            SCOPED_TRACE(std::string(stopFirst ? "the stop's FB called first" : "the stop's FB called second") +
+                         ", the stop edged " + std::to_string(lag) + " scans after the command");
+            plc.Order(stopFirst ? 1 : 0, stopFirst ? 0 : 1);
+            const Command own{code::kPutIntReg, 2, serial++};
+            plc.Taken();
+            plc.Set(0, own);
+            plc.Set(1, {code::kStop, 0, 0});
+            plc.Fb(0)->TIMEOUT.value = pac::ToIecTime(1s);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            int n = 0;
+            for (; n < 5000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                if (n == lag) plc.Fb(1)->EXECUTE.value = TRUE;
+                plc.Scan();
+            }
+            ASSERT_TRUE(plc.Final(0) && plc.Final(1)) << "Busy after " << n << " scans";
+            const auto taken = plc.Taken();
+            if (Count(taken, own) == 0) {
+                ++overtakenRuns;
+                EXPECT_EQ(plc.Fb(0)->ERRORID.value, overtaken) << "never went out";
+                EXPECT_LT(n, 1000 / GetParam().sharing.timing.plcMs / 2) << "ended at once, not after its Timeout";
+            } else {
+                EXPECT_EQ(Count(taken, own), 1);
+                EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
+            }
+            EXPECT_EQ(Count(taken, {code::kStop, 0, 0}), 1) << "the stop went out, once";
+            plc.Fb(0)->EXECUTE.value = FALSE;
+            plc.Fb(1)->EXECUTE.value = FALSE;
+            plc.Scan();
+            plc.Scan();
+        }
+    }
+    EXPECT_GT(overtakenRuns, 0) << "the stop never took the interface between data and toggle";
+}
+
+std::vector<SkipCase> SkipCases() {
+    std::vector<SkipCase> cases;
+    const std::vector<pac::test::BusTiming> timings = {{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2},
+                                                       {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}};
+    for (const auto& sharing : pac::test::OnEveryReading(timings)) {
+        for (bool twoStep : {false, true}) cases.push_back({sharing, twoStep});
+    }
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Readings, CmdSkippedCalls, ::testing::ValuesIn(SkipCases()), SkipCaseName);
+
+}  // namespace
