@@ -15,6 +15,7 @@ from datetime import datetime, timezone
 
 from .cut import ReleaseError
 from .docs import render_page
+from .resolve import resolve
 
 # What a PLC programmer gets besides the exports and the docs.
 TOP_FILES = ("CHANGELOG.md", "LICENSE")
@@ -116,11 +117,12 @@ def tar_gz_bytes(folder, files, date):
     return out.getvalue()
 
 
-def write_release(repo, commit, out, python, cache=None):
-    """Writes <out>/<name>-<version>/ and its .zip and .tar.gz; returns the folder's path."""
+def write_release(repo, name, out, python, cache=None):
+    """Writes <out>/<name>-<version>/ and its .zip and .tar.gz of the commit, tag or version `name`
+    (resolve.py); returns the folder's path."""
     with tempfile.TemporaryDirectory() as work:
         src = os.path.join(work, "src")
-        _extract(repo, commit, src)
+        _extract(repo, resolve(repo, name), src)
         with open(os.path.join(src, "st", "library.json"), encoding="utf-8") as f:
             info = json.load(f)
         folder = f"{info['name'].lower()}-{info['version']}"
