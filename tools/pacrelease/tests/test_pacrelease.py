@@ -6,6 +6,7 @@ PACRELEASE_CACHE pacst's parse cache (set by CMake). A missing one is an error, 
 import io
 import json
 import os
+import re
 import subprocess
 import tarfile
 import tempfile
@@ -229,6 +230,17 @@ class Release(unittest.TestCase):
         self.assertIn(f'version="{self.version}"', _read(first, *plcopen.split("/")))
         self.assertEqual(os.path.isdir(os.path.join(self.clone, "examples")),
                          any(r.startswith("examples/") for r in rel))
+        # every library the example's TwinCAT project refers to is in the archive, but Beckhoff's own
+        for path in sorted(r for r in rel if r.startswith("examples/") and r.endswith(".plcproj")):
+            project = _read(first, *path.split("/"))
+            for name, resolution in re.findall(r'<PlaceholderReference Include="([^"]+)">\s*'
+                                               r'<DefaultResolution>([^<]*)</DefaultResolution>', project):
+                if "(Beckhoff Automation GmbH)" not in resolution:
+                    with self.subTest(path=path, library=name):
+                        self.assertTrue(any(r.endswith(f"twincat/{name}.plcproj") for r in rel),
+                                        f"{path} refers to {name}, which the archive does not hold")
+        self.assertTrue("pactest/twincat/PacTest.plcproj" in rel, "no PacTest library in the archive")
+        self.assertIn('version="' + self.version + '"', _read(first, "pactest", "plcopen", "pactest.xml"))
 
     def test_the_version_resolves_to_its_commit_with_and_without_the_tag(self):
         release = git(self.clone, "rev-parse", "HEAD").strip()
