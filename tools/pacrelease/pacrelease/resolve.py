@@ -53,10 +53,11 @@ def _released(objects, commit, version):
 
 
 def release_commit(repo, version):
-    """The commit that released `version` (major.minor.patch), found in the history of every ref and HEAD
-    without tags: released as `version` while none of its parents is. ReleaseError when none is (a version
+    """The commit that released `version` (major.minor.patch), found in the history of the branches, the
+    remote branches and HEAD: released as `version` while none of its parents is. ReleaseError when none is (a version
     never released, or a shallow clone cut before it) or when several are."""
-    changed = git(repo, "log", "--full-history", "--format=%H %P", "--all", "HEAD", "--", *_FILES).split("\n")
+    changed = git(repo, "log", "--full-history", "--format=%H %P", "--branches", "--remotes", "--tags", "HEAD", "--",
+                  *_FILES).split("\n")  # not --all: a stash is no release
     shallow = _shallow_commits(repo)
     objects = _Objects(repo)
     try:
