@@ -1,6 +1,7 @@
 """`pacrelease cut VERSION`: the release commit and its annotated tag. CHANGELOG.md's Unreleased entries go
 under `## [VERSION] - DATE`, st/library.json gets the version and the date (the exports carry both), the
-Python packages' pyproject.toml the version; the files are committed and the commit is tagged `vVERSION` with the section as the tag's message."""
+Python packages' pyproject.toml the version; the files are committed and the commit is tagged `vVERSION`
+with the section as the tag's message."""
 import json
 import os
 import re

@@ -54,10 +54,11 @@ def _released(objects, commit, version):
 
 def release_commit(repo, version):
     """The commit that released `version` (major.minor.patch), found in the history of the branches, the
-    remote branches and HEAD: released as `version` while none of its parents is. ReleaseError when none is (a version
-    never released, or a shallow clone cut before it) or when several are."""
-    changed = git(repo, "log", "--full-history", "--format=%H %P", "--branches", "--remotes", "--tags", "HEAD", "--",
-                  *_FILES).split("\n")  # not --all: a stash is no release
+    remote branches and HEAD: released as `version` while none of its parents is. ReleaseError when none
+    is (a version never released, or a shallow clone cut before it) or when several are."""
+    # not --all: a stash is no release
+    changed = git(repo, "log", "--full-history", "--format=%H %P", "--branches", "--remotes", "--tags", "HEAD",
+                  "--", *_FILES).split("\n")
     shallow = _shallow_commits(repo)
     objects = _Objects(repo)
     try:
