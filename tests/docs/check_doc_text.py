@@ -15,7 +15,8 @@ import sys
 
 FIGURE = re.compile(r"<!-- figure: ([a-z-]+) -->(.*?)<!-- /figure -->")
 # Figures that drift with the tree: counts of files, lines and tests, coverage totals.
-DRIFTING = re.compile(r"(?<![\w.=/-])(?<!TwinCAT )\d[\d,]* (?:files|lines|tests)\b|\b\d+ of \d+ \(\d|\b\d+/\d+ (?:lines|branches)\b")
+DRIFTING = re.compile(r"(?<![\w.=/-])(?<!TwinCAT )\d[\d,]* (?:files|lines|tests)\b"
+                      r"|\b\d+ of \d+ \(\d|\b\d+/\d+ (?:lines|branches)\b")
 # A heading of a measurements log names its day: "2 December", "1 to 2 December", "2026-12-02".
 MONTHS = "January|February|March|April|May|June|July|August|September|October|November|December"
 DATED = re.compile(rf"\b\d{{1,2}} (?:{MONTHS})\b|(?:{MONTHS}) \d{{1,2}}\b|\b\d{{4}}-\d{{2}}-\d{{2}}\b")
@@ -23,7 +24,8 @@ MEASUREMENTS = "docs/measurements/"
 
 WORK_WORDS = [
     # (an ONLINE session of the PA-CONTROL is the manual's word, and stays)
-    ("another session of the work", re.compile(r"\b(?:other|helper|working|work) sessions?\b|\bthe session's last\b", re.I)),
+    ("another session of the work",
+     re.compile(r"\b(?:other|helper|working|work) sessions?\b|\bthe session's last\b", re.I)),
     ("a brief", re.compile(r"\bbriefs?\b", re.I)),
     ("a merged tree", re.compile(r"\bmerged tree\b|\bmerges? of branch", re.I)),
     ("a branch by name", re.compile(r"\bbranch(?:es)? [`'\"]|\bbranch names?\b|\b(?:this|the) branch's\b", re.I)),
