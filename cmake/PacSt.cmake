@@ -16,9 +16,11 @@
 # prints it).
 
 set(PACST_SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../translator" CACHE INTERNAL "")
-# One venv for every build tree (default, debug, ...), like the parse cache below: the packages are the
-# same pinned versions, and installing them again per preset cost most of a configure.
-get_filename_component(PAC_SHARED_BUILD_DIR "${CMAKE_CURRENT_LIST_DIR}/../build" ABSOLUTE)
+# One venv for every preset's build tree (default, debug, ...), like the parse cache below: the packages
+# are the same pinned versions, and installing them again per preset cost most of a configure. A build
+# tree outside <source>/build keeps its own (PacSharedBuildDir.cmake).
+include("${CMAKE_CURRENT_LIST_DIR}/PacSharedBuildDir.cmake")
+pac_shared_build_dir(PAC_SHARED_BUILD_DIR "${CMAKE_CURRENT_LIST_DIR}/.." "${CMAKE_BINARY_DIR}")
 set(PACST_VENV "${PAC_SHARED_BUILD_DIR}/venv" CACHE INTERNAL "")
 set(PACST_PYTHON "${PACST_VENV}/bin/python" CACHE INTERNAL "")
 # Parses are keyed by file content and blark's version, so every build tree (default, debug...) can

@@ -28,6 +28,10 @@ LIBRARY_MANAGER = "Library Manager"
 STANDARD_LIBRARY = {"Name": "#Standard", "Namespace": "Standard", "HideWhenReferencedAsDependency": "false",
                     "PublishSymbolsInContainer": "false", "SystemLibrary": "false", "LinkAllContent": "false",
                     "DefaultResolution": "Standard, * (System)"}
+# The project information as CODESYS keeps it, property by property in name order: what a library's checklist
+# asks for, so the namespace does not depend on the name a user gives the project, and qualified access a
+# property of the library rather than a tick on each reference (LanguageModelAttribute).
+QUALIFIED_ACCESS_ONLY = "qualified-access-only"
 # One enumeration value and the comment on its line: PAC_X := 2,  (* why *)
 _ENUM_VALUE_LINE = re.compile(r"^\s*([A-Za-z_]\w*)\s*(?::=\s*[^,(]*?)?\s*,?\s*\(\*(.*?)\*\)\s*$")
 
@@ -97,7 +101,7 @@ def _project(library):
     coordinates = _el(header, "coordinateInfo")
     for language in ("fbd", "ld", "sfc"):
         _el(_el(coordinates, language), "scaling", x="1", y="1")
-    _add_data(header, [(PROJECT_INFORMATION, lambda data: _el(data, "ProjectInformation"))])
+    _add_data(header, [(PROJECT_INFORMATION, lambda data: _project_information(data, info))])
     types = _el(root, "types")
     data_types = _el(types, "dataTypes")
     for data_type in library.data_types:
@@ -111,6 +115,20 @@ def _project(library):
                  (PROJECT_STRUCTURE, lambda data: _project_structure(data, library))])
     _documentation(root, f"{info.title} {info.version} ({info.released}). {info.description} {info.license_line}")
     return root
+
+
+def project_information(info):
+    """[(name, type, value)] of the library's project information, in the order CODESYS writes them."""
+    return sorted([("Author", "string", info.company), ("Company", "string", info.company),
+                   ("DefaultNamespace", "string", info.name), ("Description", "string", info.description),
+                   ("LanguageModelAttribute", "string", QUALIFIED_ACCESS_ONLY), ("Title", "string", info.name),
+                   ("Version", "version", info.ide_version)])
+
+
+def _project_information(data, info):
+    holder = _el(data, "ProjectInformation")
+    for name, kind, value in project_information(info):
+        _el(holder, "property", name=name, type=kind).text = value
 
 
 def _libraries(data, name):

@@ -21,6 +21,21 @@ class Version(unittest.TestCase):
         self.assertEqual((header.get("name"), header.get("version")), (self.info.name, self.info.version))
         self.assertEqual(root.find(q("fileHeader")).get("creationDateTime"), f"{self.info.released}T00:00:00")
 
+    def test_the_plcopen_project_information_names_the_library_and_asks_for_qualified_access(self):
+        # CODESYS's project information: the namespace, title, version and company a library carries, and
+        # qualified access as a property of the library (LanguageModelAttribute), so that an import needs
+        # no tick and MC_Power cannot clash with SM3_Basic's.
+        root = etree.fromstring(support.plcopen_data())
+        holder = root.find(f"{q('contentHeader')}/{q('addData')}/{q('data')}/{q('ProjectInformation')}")
+        self.assertIsNotNone(holder)
+        properties = {p.get("name"): (p.get("type"), p.text) for p in holder.iter(q("property"))}
+        self.assertEqual(properties, {
+            "Author": ("string", self.info.company), "Company": ("string", self.info.company),
+            "DefaultNamespace": ("string", self.info.name), "Description": ("string", self.info.description),
+            "LanguageModelAttribute": ("string", "qualified-access-only"), "Title": ("string", self.info.name),
+            "Version": ("version", self.info.version + ".0")})
+        self.assertEqual(list(properties), sorted(properties))
+
     def test_the_twincat_project_has_the_ide_version(self):
         path = os.path.join(support.twincat_dir(), f"{self.info.name}.plcproj")
         root = etree.parse(path).getroot()

@@ -15,11 +15,16 @@ from datetime import datetime, timezone
 
 from .cut import ReleaseError
 from .docs import render_page
+from .resolve import resolve
 
 # What a PLC programmer gets besides the exports and the docs.
 TOP_FILES = ("CHANGELOG.md", "LICENSE")
 # The example machine program (examples/), shipped when the commit has it.
 EXAMPLES = "examples"
+# pac-test's test vocabulary, which the example's tests call: shipped as the library PacTest (its
+# library.json names it; the version, date, company and licence are the library's), when the commit has it.
+VOCABULARY = "tools/pactest/st"
+VOCABULARY_FOLDER = "pactest"
 
 
 def _run(command, env_path, what):
@@ -51,17 +56,18 @@ def _read(root, rel):
         return f.read()
 
 
-def _export(src, python, cache, out):
-    """The commit's pacexport on the commit's library, in the order the commit's pacst derives."""
-    st = os.path.join(src, "st")
-    files = [os.path.join(src, p) for p in _tree_files(src, "st") if p.endswith(".st")]
-    lists = [p for p in files if "/gvl/" in p.replace(os.sep, "/")]
+def _export(src, python, cache, out, folder="st", library_json=None):
+    """The commit's pacexport on the ST of `folder` (the library, default), in the order the commit's pacst
+    derives; a global list is a file named GVL_*.st."""
+    files = [os.path.join(src, p) for p in _tree_files(src, folder) if p.endswith(".st")]
+    lists = [p for p in files if os.path.basename(p).startswith("GVL_")]
     library = [p for p in files if p not in lists]
     cache_args = ["--cache", cache] if cache else []
     translator = os.path.join(src, "translator")
     order = _run([python, "-m", "pacst", "order", *cache_args, *library], [translator], "pacst order").split()
     gvl_args = [arg for path in lists for arg in ("--gvl", path)]
-    _run([python, "-m", "pacexport", "export", "--library", os.path.join(st, "library.json"), "--out", out,
+    library_json = library_json or os.path.join(src, folder, "library.json")
+    _run([python, "-m", "pacexport", "export", "--library", library_json, "--out", out,
           *cache_args, *gvl_args, *order], [os.path.join(src, "tools", "pacexport"), translator], "pacexport export")
 
 
@@ -81,7 +87,26 @@ def release_files(src, python, cache, work):
     if os.path.isdir(os.path.join(src, EXAMPLES)):
         for rel in _tree_files(src, EXAMPLES):
             files[rel] = _read(src, rel)
+    files.update(_vocabulary_files(src, python, cache, work))
     return files
+
+
+def _vocabulary_files(src, python, cache, work):
+    """{path: bytes} of the vocabulary's library under pactest/, as the library's exports are laid out."""
+    own = os.path.join(src, VOCABULARY, "library.json")
+    if not os.path.exists(own):
+        return {}
+    with open(os.path.join(src, "st", "library.json"), encoding="utf-8") as f:
+        info = json.load(f)
+    with open(own, encoding="utf-8") as f:
+        info.update(json.load(f))
+    merged = os.path.join(work, "vocabulary-library.json")
+    with open(merged, "w", encoding="utf-8") as f:
+        json.dump(info, f)
+    export = os.path.join(work, "vocabulary-export")
+    _export(src, python, cache, export, VOCABULARY, merged)
+    return {f"{VOCABULARY_FOLDER}/{rel if '/' in rel else 'plcopen/' + rel}": _read(export, rel)
+            for rel in _tree_files(export, ".")}
 
 
 def _epoch(date):
@@ -116,11 +141,12 @@ def tar_gz_bytes(folder, files, date):
     return out.getvalue()
 
 
-def write_release(repo, commit, out, python, cache=None):
-    """Writes <out>/<name>-<version>/ and its .zip and .tar.gz; returns the folder's path."""
+def write_release(repo, name, out, python, cache=None):
+    """Writes <out>/<name>-<version>/ and its .zip and .tar.gz of the commit, tag or version `name`
+    (resolve.py); returns the folder's path."""
     with tempfile.TemporaryDirectory() as work:
         src = os.path.join(work, "src")
-        _extract(repo, commit, src)
+        _extract(repo, resolve(repo, name), src)
         with open(os.path.join(src, "st", "library.json"), encoding="utf-8") as f:
             info = json.load(f)
         folder = f"{info['name'].lower()}-{info['version']}"

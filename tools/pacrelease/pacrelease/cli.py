@@ -23,7 +23,9 @@ def main(argv=None):
     cut.add_argument("--date", default=datetime.datetime.now(datetime.timezone.utc).date().isoformat(),
                      help="the release date, YYYY-MM-DD (default: today, UTC)")
     arc = commands.add_parser("archive", help="write the release folder and archives of a commit")
-    arc.add_argument("commit", nargs="?", default="HEAD", help="a commit or tag (default: HEAD)")
+    arc.add_argument("commit", nargs="?", default="HEAD",
+                     help="a commit, a tag or a released version, 1.0.0 or v1.0.0, found without its tag too "
+                          "(default: HEAD)")
     arc.add_argument("--out", required=True, help="folder for <name>-<version>/, .zip and .tar.gz")
     arc.add_argument("--python", help="the Python of pacexport's venv (default: build/venv-pacexport)")
     arc.add_argument("--cache", help="pacst's parse cache (a faster export, the same bytes)")

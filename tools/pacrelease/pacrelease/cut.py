@@ -1,8 +1,10 @@
 """`pacrelease cut VERSION`: the release commit and its annotated tag. CHANGELOG.md's Unreleased entries go
 under `## [VERSION] - DATE`, st/library.json gets the version and the date (the exports carry both), the
-two files are committed and the commit is tagged `vVERSION` with the section as the tag's message."""
+Python packages' pyproject.toml the version; the files are committed and the commit is tagged `vVERSION`
+with the section as the tag's message."""
 import json
 import os
+import re
 import subprocess
 
 from . import changelog
@@ -37,6 +39,27 @@ def library_json_text(data):
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
+# The Python packages' `version = "..."` in their pyproject.toml, the library's version as
+# st/library.json holds it: the release writes it, Release.Units holds them equal.
+_PACKAGE_VERSION = re.compile(r'^version = "[^"]*"$', re.MULTILINE)
+
+
+def python_packages(repo):
+    """The tracked pyproject.toml files of the repository (translator/, tools/*/), sorted."""
+    return sorted(git(repo, "ls-files", "--", "pyproject.toml", "*/pyproject.toml").split())
+
+
+def package_version(text):
+    """The `version` of a pyproject.toml's text, or None."""
+    m = _PACKAGE_VERSION.search(text)
+    return m.group(0).split('"')[1] if m else None
+
+
+def with_package_version(text, version):
+    """A pyproject.toml's text with its `version` set."""
+    return _PACKAGE_VERSION.sub(f'version = "{version}"', text, count=1)
+
+
 def tag_name(version):
     return f"v{version}"
 
@@ -56,11 +79,15 @@ def cut_release(repo, version, date):
         raise ReleaseError(str(exc)) from None
     info = json.loads(read(repo, LIBRARY_JSON))
     info["version"], info["released"] = version, date
+    packages = python_packages(repo)
     write(repo, CHANGELOG, text)
     write(repo, LIBRARY_JSON, library_json_text(info))
-    git(repo, "add", CHANGELOG, LIBRARY_JSON)
+    for name in packages:
+        write(repo, name, with_package_version(read(repo, name), version))
+    git(repo, "add", CHANGELOG, LIBRARY_JSON, *packages)
     git(repo, "commit", "--quiet", "-m", f"Release {version} ({date}): CHANGELOG.md's Unreleased section "
-                                         f"under [{version}], the version and date in st/library.json")
+                                         f"under [{version}], the version and date in st/library.json, "
+                                         "the version in the Python packages")
     message = f"{info['name']} {version} ({date})\n\n{changelog.section(text, version)}"
     _annotated_tag(repo, tag, message)
     return tag

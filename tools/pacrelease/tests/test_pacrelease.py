@@ -6,6 +6,7 @@ PACRELEASE_CACHE pacst's parse cache (set by CMake). A missing one is an error, 
 import io
 import json
 import os
+import re
 import subprocess
 import tarfile
 import tempfile
@@ -14,7 +15,8 @@ import zipfile
 
 from pacrelease import changelog
 from pacrelease.archive import write_release
-from pacrelease.cut import ReleaseError, cut_release, git
+from pacrelease.cut import ReleaseError, cut_release, git, package_version, python_packages
+from pacrelease.resolve import resolve
 
 REPO = os.environ["PACRELEASE_REPO"]
 EXPORT_PYTHON = os.environ["PACRELEASE_EXPORT_PYTHON"]
@@ -73,6 +75,66 @@ class Version(unittest.TestCase):
         self.assertIsNone(changelog.version_disagreement(_read(REPO, "CHANGELOG.md"), info["version"],
                                                          info["released"]))
 
+    def test_every_python_package_has_the_library_version(self):
+        version = json.loads(_read(REPO, "st", "library.json"))["version"]
+        packages = python_packages(REPO)
+        self.assertIn("translator/pyproject.toml", packages)
+        self.assertIn("tools/pacrelease/pyproject.toml", packages)
+        for name in packages:
+            with self.subTest(name):
+                self.assertEqual(package_version(_read(REPO, name)), version)
+
+
+def _show(repo, name):
+    """A file of a commit, None where the commit has no such file."""
+    result = subprocess.run(["git", "-C", repo, "show", name], capture_output=True, text=True)
+    return result.stdout if result.returncode == 0 else None
+
+
+def _released_versions(text):
+    return [line.split("[")[1].split("]")[0] for line in text.splitlines()
+            if line.startswith("## [") and not line.startswith(changelog.UNRELEASED)]
+
+
+class RepositoryReleases(unittest.TestCase):
+    """Every release of CHANGELOG.md resolves in a clone that has no tags, to a commit whose files say it."""
+
+    def test_each_released_version_resolves_without_tags(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            clone = os.path.join(tmp, "clone")
+            subprocess.run(["git", "clone", "--quiet", "--shared", "--no-tags", "--no-checkout", REPO, clone],
+                           check=True)
+            git(clone, "checkout", "--quiet", git(REPO, "rev-parse", "HEAD").strip())
+            self.assertEqual(git(clone, "tag", "--list").strip(), "")
+            versions = _released_versions(_read(REPO, "CHANGELOG.md"))
+            self.assertIn("1.0.0", versions)
+            for version in versions:
+                with self.subTest(version):
+                    commit = resolve(clone, version)
+                    self.assertEqual(resolve(clone, f"v{version}"), commit)
+                    info = json.loads(git(clone, "show", f"{commit}:st/library.json"))
+                    self.assertEqual(info["version"], version)
+                    self.assertEqual(changelog.latest_release(git(clone, "show", f"{commit}:CHANGELOG.md")),
+                                     (version, info["released"]))
+                    # the first commit whose two files say so: its parent's do not both
+                    parent = json.loads(_show(clone, f"{commit}~1:st/library.json") or "{}")
+                    log = _show(clone, f"{commit}~1:CHANGELOG.md") or ""
+                    self.assertFalse(parent.get("version") == version
+                                     and changelog.latest_release(log) == (version, info["released"]))
+
+    def test_a_version_never_released_and_a_cut_history_are_named(self):
+        with self.assertRaisesRegex(ReleaseError, "no commit released 99.0.0"):
+            resolve(REPO, "99.0.0")
+        with self.assertRaisesRegex(ReleaseError, "neither a commit"):
+            resolve(REPO, "not-a-version")
+        with tempfile.TemporaryDirectory() as tmp:
+            shallow = os.path.join(tmp, "shallow")
+            subprocess.run(["git", "clone", "--quiet", "--depth", "1", "--no-tags", f"file://{REPO}", shallow],
+                           check=True, capture_output=True)
+            version = json.loads(_read(shallow, "st", "library.json"))["version"]
+            with self.assertRaisesRegex(ReleaseError, "git fetch --unshallow"):
+                resolve(shallow, version)
+
 
 def _clone(into):
     subprocess.run(["git", "clone", "--quiet", "--shared", "--no-checkout", REPO, into], check=True)
@@ -110,7 +172,9 @@ class Release(unittest.TestCase):
 
     def test_the_cut_commits_changelog_and_library_json(self):
         changed = git(self.clone, "show", "--name-only", "--format=", "HEAD").split()
-        self.assertEqual(sorted(changed), ["CHANGELOG.md", "st/library.json"])
+        self.assertEqual(sorted(changed), sorted(["CHANGELOG.md", "st/library.json", *python_packages(self.clone)]))
+        for name in python_packages(self.clone):
+            self.assertEqual(package_version(_read(self.clone, name)), self.version, name)
         info = json.loads(_read(self.clone, "st", "library.json"))
         self.assertEqual((info["version"], info["released"]), (self.version, self.date))
         self.assertEqual({k: v for k, v in info.items() if k not in ("version", "released")},
@@ -166,9 +230,37 @@ class Release(unittest.TestCase):
         self.assertIn(f'version="{self.version}"', _read(first, *plcopen.split("/")))
         self.assertEqual(os.path.isdir(os.path.join(self.clone, "examples")),
                          any(r.startswith("examples/") for r in rel))
+        # every library the example's TwinCAT project refers to is in the archive, but Beckhoff's own
+        for path in sorted(r for r in rel if r.startswith("examples/") and r.endswith(".plcproj")):
+            project = _read(first, *path.split("/"))
+            for name, resolution in re.findall(r'<PlaceholderReference Include="([^"]+)">\s*'
+                                               r'<DefaultResolution>([^<]*)</DefaultResolution>', project):
+                if "(Beckhoff Automation GmbH)" not in resolution:
+                    with self.subTest(path=path, library=name):
+                        self.assertTrue(any(r.endswith(f"twincat/{name}.plcproj") for r in rel),
+                                        f"{path} refers to {name}, which the archive does not hold")
+        self.assertTrue("pactest/twincat/PacTest.plcproj" in rel, "no PacTest library in the archive")
+        self.assertIn('version="' + self.version + '"', _read(first, "pactest", "plcopen", "pactest.xml"))
+
+    def test_the_version_resolves_to_its_commit_with_and_without_the_tag(self):
+        release = git(self.clone, "rev-parse", "HEAD").strip()
+        self.assertEqual(resolve(self.clone, self.version), release)
+        self.assertEqual(resolve(self.clone, self.tag), release)
+        tagless = os.path.join(self.tmp.name, "tagless")
+        subprocess.run(["git", "clone", "--quiet", "--no-tags", self.clone, tagless], check=True)
+        self.assertEqual(git(tagless, "tag", "--list").strip(), "")
+        git(tagless, "config", "user.name", "Release test")
+        git(tagless, "config", "user.email", "release-test@example.invalid")
+        git(tagless, "commit", "--quiet", "--allow-empty", "-m", "a commit after the release")
+        self.assertEqual(resolve(tagless, self.version), release)
+        self.assertEqual(resolve(tagless, self.tag), release)
 
     def test_rendered_pages_link_to_rendered_pages(self):
-        first = write_release(self.clone, self.tag, os.path.join(self.tmp.name, "c"), EXPORT_PYTHON, CACHE)
+        # the release of a clone without tags, named by its version as docs/release.md writes it
+        tagless = os.path.join(self.tmp.name, "tagless-pages")
+        subprocess.run(["git", "clone", "--quiet", "--no-tags", self.clone, tagless], check=True)
+        first = write_release(tagless, self.tag, os.path.join(self.tmp.name, "c"), EXPORT_PYTHON, CACHE)
+        self.assertEqual(os.path.basename(first), f"{self.info['name'].lower()}-{self.version}")
         page = _read(first, "docs", "import.html")
         self.assertIn('href="../CHANGELOG.html"', page)
         self.assertNotRegex(page, r'href="[^":]*\.md[#"]')

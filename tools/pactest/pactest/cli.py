@@ -67,7 +67,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     scenario = os.path.join(out, "scenarios", name + ".json")
     with open(scenario, "w", encoding="utf-8") as f:
         json.dump(wiring.scenario(name), f, indent=1)
-    step_paths = wiring.step_paths
+    step_paths = wiring.step_paths(name)
     result_file = os.path.join(out, "results", name + ".json")
     vcd = os.path.join(vcd_dir, name + ".vcd")
     for stale in (result_file, vcd):
@@ -116,7 +116,8 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="pac-test", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="pac-test", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("wiring", help="the wiring file (JSON, docs/user_tests.md#the-wiring-file)")
     parser.add_argument("--pac-build", default=os.environ.get("PAC_BUILD", os.path.join(project.ROOT, "build")),
                         help="a build of the PA-CONTROL project (default: $PAC_BUILD, else build/ of this checkout)")
@@ -190,7 +191,7 @@ def main(argv=None):
     junit_path = args.junit or os.path.join(out, "junit.xml")
     junit.write(junit_path, wiring.name, results, ran - built)
     if not args.no_coverage:
-        coverage.report(host_build.obj, wiring.folder, _where(os.path.join(out, "coverage")))
+        coverage.report(host_build.obj, wiring.sources, _where(os.path.join(out, "coverage")))
     bad = [r for r in results if r.outcome in ("failed", "error", "passed unexpectedly")]
     expected = sum(1 for r in results if r.outcome == "failed as expected")
     shard = f", shard {index}/{count}" if count > 1 else ""

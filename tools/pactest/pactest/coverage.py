@@ -26,8 +26,16 @@ def reset(objects):
     _st_coverage().reset(objects)
 
 
-def report(objects, folder, out):
-    """Prints the table of the ST files under `folder`; returns False when gcovr is missing."""
+def source_folders(sources):
+    """The folders of the wiring file's sources (a .plcproj's folder holds its objects), without one inside
+    another: what the coverage counts, wherever the wiring file lies."""
+    folders = sorted({os.path.dirname(os.path.abspath(s)) for s in sources})
+    return [f for f in folders if not any(f.startswith(os.path.join(o, "")) for o in folders if o != f)]
+
+
+def report(objects, sources, out):
+    """Prints the table of the ST files in the folders of `sources`; returns False when there is none (gcovr
+    missing, or no line of those files measured)."""
     gcovr = gcovr_command()
     if gcovr is None:
         print("pac-test: no coverage table: gcovr is not installed (pip install gcovr)")
@@ -35,16 +43,24 @@ def report(objects, folder, out):
     st = _st_coverage()
     os.makedirs(out, exist_ok=True)
     detail = os.path.join(out, "gcovr.json")
+    folders = source_folders(sources)
     # The host's build (OUT/st-c, the C of the ST) lies under the project's folder when OUT does (the
     # default pac-test-out, run in the project): its files are no ST of the project.
     built = os.path.join(os.path.abspath(os.path.dirname(objects.rstrip(os.sep))), "")
-    subprocess.run([gcovr, "--root", folder, "--filter", os.path.join(os.path.abspath(folder), ""),
-                    "--exclude", re.escape(built) + ".*", "--json", detail, "--html-details", os.path.join(out, "index.html"),
-                    "--html-title", "pac-test: coverage of the machine program", objects],
-                   check=True, stdout=subprocess.DEVNULL)
+    filters = [arg for folder in folders for arg in ("--filter", re.escape(os.path.join(folder, "")))]
+    run = subprocess.run([gcovr, "--root", os.path.commonpath(folders), *filters,
+                          "--exclude", re.escape(built) + ".*", "--json", detail,
+                          "--html-details", os.path.join(out, "index.html"),
+                          "--html-title", "pac-test: coverage of the machine program", objects],
+                         check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     import json
     with open(detail, encoding="utf-8") as f:
         files = sorted((st.FileCoverage(e) for e in json.load(f)["files"]), key=lambda c: c.path)
+    if not any(c.lines for c in files):  # 0 of 0 lines is no coverage, not 100 %
+        print(f"pac-test: no coverage table: no line of the sources was measured (in {', '.join(folders)})",
+              file=sys.stderr)
+        return False
+    sys.stderr.write(run.stderr)
     print("coverage of the machine program's ST (lines executed, branches taken):")
     st.report(files, out)
     return True

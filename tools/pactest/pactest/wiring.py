@@ -183,23 +183,31 @@ class Wiring:
     def axes(self):
         return sum(1 for m in self.modules if m.kind == "axis")
 
-    def scenario(self, test):
-        """The scenario file the host reads for `test`: the simulated PLC and controller, and the test's
-        faults as wait and fault steps (the scenario loader checks them)."""
-        timing = dict(self.timing, plc_cycle_ms=self.base_cycle_ms)
-        steps, now = [], 0
-        self.step_paths = {}  # the scenario's step index -> the fault's JSONPath in the wiring file
+    def _steps(self, test):
+        """The scenario's steps for `test` and {step index: the fault's JSONPath in the wiring file}. Kept
+        off the object: the tests run in a thread pool, each with its own."""
+        steps, paths, now = [], {}, 0
         faults = self.faults.get(test.upper(), [])
         for i, (at, step) in sorted(enumerate(faults), key=lambda f: f[1][0]):
             if at > now:
                 steps.append({"wait_ms": at - now})
                 now = at
-            self.step_paths[len(steps)] = f"$.tests.faults.{test}[{i}]"
+            paths[len(steps)] = f"$.tests.faults.{test}[{i}]"
             steps.append(step)
         steps.append({"wait_ms": 1})  # the format needs a step; the host ignores a last wait
+        return steps, paths
+
+    def scenario(self, test):
+        """The scenario file the host reads for `test`: the simulated PLC and controller, and the test's
+        faults as wait and fault steps (the scenario loader checks them)."""
+        timing = dict(self.timing, plc_cycle_ms=self.base_cycle_ms)
         return {"name": test, "timing": timing, "controller": self.controller,
                 "modules": {"ctrl": any(m.kind == "ctrl" for m in self.modules), "axes": self.axes()},
-                "steps": steps}
+                "steps": self._steps(test)[0]}
+
+    def step_paths(self, test):
+        """{the scenario's step index: the JSONPath of the fault in the wiring file} of `test`."""
+        return self._steps(test)[1]
 
 
 def wiring_path(message, step_paths):

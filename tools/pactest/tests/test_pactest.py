@@ -281,6 +281,66 @@ class OutInsideTheProjectTest(unittest.TestCase):
         self.assertEqual([f for f in files if not f.endswith(".st") or os.sep in f], [], run.stdout)
 
 
+class WiringOutsideTheSourcesTest(unittest.TestCase):
+    """A wiring file in a folder of its own (ci/wiring.json naming ../src/*.st): the coverage counts the
+    sources' ST, not the wiring file's folder, where it found nothing and printed 0/0 as 100 %."""
+
+    def test_coverage_counts_the_sources_folder(self):
+        base = os.path.join(OUT, "wiring_outside")
+        src = os.path.join(base, "src")
+        os.makedirs(src, exist_ok=True)
+        for name in os.listdir(os.path.join(HERE, "fixture")):
+            if name.endswith(".st"):
+                with open(os.path.join(HERE, "fixture", name), encoding="utf-8") as f, \
+                        open(os.path.join(src, name), "w", encoding="utf-8") as g:
+                    g.write(f.read())
+        with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["sources"] = ["../src/*.st"]
+        wiring = write_wiring(os.path.join("wiring_outside", "ci"), data)
+        out = os.path.join(base, "out")
+        run = pac_test(wiring, out, "--filter", "FB_TestPasses")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertNotIn("filtered out", run.stdout + run.stderr)
+        with open(os.path.join(out, "coverage", "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        self.assertGreater(summary["lines"], 0, run.stdout)
+        self.assertGreater(summary["lines_executed"], 0, run.stdout)
+        self.assertIn("PRG_Count", {row["pou"] for row in summary["pous"]}, run.stdout)
+
+
+class CliTest(unittest.TestCase):
+    """pac-test's command line and wiring object, without a build."""
+
+    def test_help_says_the_whole_description(self):
+        run = subprocess.run([sys.executable, "-m", "pactest", "--help"], capture_output=True, text=True,
+                             env=dict(os.environ, PYTHONPATH=TOOL))
+        self.assertEqual(run.returncode, 0, run.stderr)
+        text = " ".join(run.stdout.split())
+        self.assertIn("runs each of its ST tests against the simulated PA-CONTROL (docs/user_tests.md).", text)
+        self.assertIn("a VCD of each failing test and the coverage of the program's ST.", text)
+
+    def test_each_test_has_its_own_step_paths(self):
+        # The tests run in a thread pool: one test's scenario must not change the paths another test's
+        # refusal is named by.
+        from pactest.wiring import Wiring, wiring_path
+        with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
+            data = json.load(f)
+        data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
+        data["tests"]["faults"] = {"FB_TestPasses": [{"at_ms": 0, "fault": "a"}],
+                                   "FB_TestFails": [{"at_ms": 5, "fault": "b"}, {"at_ms": 9, "fault": "c"}]}
+        wiring = Wiring(write_wiring("step_paths", data))
+        passes = wiring.step_paths("FB_TestPasses")
+        wiring.scenario("FB_TestFails")
+        self.assertEqual(wiring_path("$.steps[0].fault: unknown", passes),
+                         "$.tests.faults.FB_TestPasses[0].fault: unknown")
+        fails = wiring.step_paths("FB_TestFails")
+        self.assertEqual(wiring_path("$.steps[3].fault: unknown", fails),
+                         "$.tests.faults.FB_TestFails[1].fault: unknown")
+        self.assertEqual([s.get("fault") for s in wiring.scenario("FB_TestFails")["steps"]],
+                         [None, "b", None, "c", None])
+
+
 class WiringRefusalTest(unittest.TestCase):
     """A wiring file pac-test cannot use is refused with the JSONPath and the reason, exit code 2."""
 
