@@ -7,6 +7,10 @@
 
 int main(int argc, char** argv) {
     // Before any thread starts, so every thread inherits the mask and the run takes the signals in one place.
+    // The default action, even where the parent ignores them (a shell's background job): a signal ignored at
+    // generation never reaches the wait for it.
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
     sigset_t stop;
     sigemptyset(&stop);
     sigaddset(&stop, SIGINT);

@@ -10,9 +10,6 @@ public:
     std::chrono::nanoseconds Now() const {
         return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_);
     }
-    std::chrono::steady_clock::time_point At(std::chrono::nanoseconds time) const {
-        return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(time);
-    }
 
 private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
