@@ -13,6 +13,7 @@
 #include "modbus_gateway.hpp"
 #include "register_map.hpp"
 #include "scenario_error.hpp"
+#include "serial_bridge.hpp"
 #include "sim_config.hpp"
 #include "simulated_controller.hpp"
 #include "wall_clock.hpp"
@@ -73,13 +74,26 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
     for (const ControllerSpec& spec : config.controllers) controllers.push_back(std::make_unique<SimulatedController>(spec));
     const WallClock clock;  // time 0: every controller powers on now
     ModbusGateway gateway(controllers, clock, options.address);
+    std::vector<std::unique_ptr<SerialBridge>> bridges(controllers.size());
+    for (std::size_t i = 0; i < controllers.size(); ++i) {
+        if (const auto& rs232 = controllers[i]->Spec().rs232) {
+            bridges[i] = std::make_unique<SerialBridge>(*controllers[i], clock, options.address, rs232->port);
+        }
+    }
     gateway.Start();
+    for (auto& bridge : bridges) {
+        if (bridge) bridge->Start();
+    }
     for (std::size_t i = 0; i < controllers.size(); ++i) {
         const ControllerSpec& spec = controllers[i]->Spec();
         const RegisterMap& map = controllers[i]->Map();
         out << spec.name << ": Modbus TCP " << gateway.Address() << ":" << gateway.PortOf(i) << " unit id " << spec.unitId
             << ": " << Modules(map) << " (registers 0.." << map.Registers() - 1 << ", from PAC also holding registers "
             << kFromPacHoldingBase << ".." << kFromPacHoldingBase + map.Registers() - 1 << ")\n";
+        if (bridges[i]) {
+            out << spec.name << ": RS232 (COM1) raw TCP " << gateway.Address() << ":" << bridges[i]->Port() << ", "
+                << spec.rs232->baud << " baud\n";
+        }
     }
     out << kProgram << ": running; Ctrl-C stops" << std::endl;
 
@@ -100,6 +114,9 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
         signal = sigtimedwait(&stop, nullptr, &timeout);
     }
     gateway.Stop();
+    for (auto& bridge : bridges) {
+        if (bridge) bridge->Stop();
+    }
     const GatewayCounters counters = gateway.Counters();
     out << kProgram << ": stopped" << (signal > 0 ? " by a signal" : "") << " after " << clock.Now().count() / 1000000
         << " ms: " << counters.connections << " connections (" << counters.connectionsRefused << " refused, "

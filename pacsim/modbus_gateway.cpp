@@ -1,15 +1,10 @@
 #include "modbus_gateway.hpp"
 
 #include <algorithm>
-#include <arpa/inet.h>
 #include <cerrno>
-#include <cstring>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <optional>
 #include <poll.h>
 #include <stdexcept>
-#include <sys/eventfd.h>
 #include <sys/socket.h>
 #include <unistd.h>
 #include <utility>
@@ -31,8 +26,6 @@ constexpr std::size_t kQueryBytes = 512;
 constexpr int kMbapLengthAt = 4;
 constexpr int kMbapPrefix = 6;  // the bytes before those the length counts
 
-[[noreturn]] void Fail(const std::string& what) { throw std::runtime_error(what + ": " + std::strerror(errno)); }
-
 // Reads and drops `count` bytes that belong to the frame libmodbus stopped reading early (a function code it
 // does not know has no length of its own for libmodbus); false if they do not come in time.
 bool Drain(int fd, std::size_t count) {
@@ -51,8 +44,7 @@ bool Drain(int fd, std::size_t count) {
 
 struct ModbusGateway::Listener {
     int requestedPort = 0;
-    int port = 0;
-    int fd = -1;
+    std::unique_ptr<TcpListener> socket;
     std::vector<std::pair<int, std::size_t>> routes;  // unit id -> controller
 
     // The controller `unit` reaches; on a port of one controller also unit ids 0 and 255, the ones Modbus TCP
@@ -81,7 +73,7 @@ public:
             const int registers = controller->Map().Registers();
             modbus_mapping_t* table =
                 modbus_mapping_new_start_address(0, 0, 0, 0, 0, kFromPacHoldingBase + registers, 0, registers);
-            if (table == nullptr) Fail("pac-sim: cannot allocate a register table");
+            if (table == nullptr) throw std::runtime_error("pac-sim: cannot allocate a register table");
             tables_.push_back(table);
         }
     }
@@ -100,10 +92,6 @@ private:
 ModbusGateway::ModbusGateway(std::vector<std::unique_ptr<SimulatedController>>& controllers, const WallClock& clock,
                              std::string address)
     : controllers_(controllers), clock_(clock), address_(std::move(address)), tables_(std::make_unique<Tables>(controllers)) {
-    in_addr ip{};
-    if (inet_pton(AF_INET, address_.c_str(), &ip) != 1) {
-        throw std::runtime_error("pac-sim: " + address_ + " is not an IPv4 address");
-    }
     for (std::size_t i = 0; i < controllers_.size(); ++i) {
         const int port = controllers_[i]->Spec().port;
         Listener* listener = nullptr;
@@ -114,45 +102,18 @@ ModbusGateway::ModbusGateway(std::vector<std::unique_ptr<SimulatedController>>& 
             listeners_.push_back(std::make_unique<Listener>());
             listener = listeners_.back().get();
             listener->requestedPort = port;
+            listener->socket = std::make_unique<TcpListener>(address_, port);
         }
         listener->routes.emplace_back(controllers_[i]->Spec().unitId, i);
     }
-    for (auto& listener : listeners_) {
-        const std::string where = address_ + ":" + std::to_string(listener->requestedPort);
-        listener->fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-        if (listener->fd < 0) Fail("pac-sim: cannot open a socket for " + where);
-        const int on = 1;
-        setsockopt(listener->fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-        sockaddr_in socketAddress{};
-        socketAddress.sin_family = AF_INET;
-        socketAddress.sin_addr = ip;
-        socketAddress.sin_port = htons(static_cast<std::uint16_t>(listener->requestedPort));
-        if (bind(listener->fd, reinterpret_cast<sockaddr*>(&socketAddress), sizeof socketAddress) != 0 ||
-            listen(listener->fd, 16) != 0) {
-            Fail("pac-sim: cannot listen on " + where);
-        }
-        socklen_t length = sizeof socketAddress;
-        if (getsockname(listener->fd, reinterpret_cast<sockaddr*>(&socketAddress), &length) != 0) {
-            Fail("pac-sim: cannot read the port of " + where);
-        }
-        listener->port = ntohs(socketAddress.sin_port);
-    }
-    wake_ = eventfd(0, EFD_CLOEXEC);
-    if (wake_ < 0) Fail("pac-sim: cannot make an eventfd");
 }
 
-ModbusGateway::~ModbusGateway() {
-    Stop();
-    for (auto& listener : listeners_) {
-        if (listener->fd >= 0) close(listener->fd);
-    }
-    if (wake_ >= 0) close(wake_);
-}
+ModbusGateway::~ModbusGateway() { Stop(); }
 
 int ModbusGateway::PortOf(std::size_t index) const {
     for (const auto& listener : listeners_) {
         for (const auto& route : listener->routes) {
-            if (route.second == index) return listener->port;
+            if (route.second == index) return listener->socket->Port();
         }
     }
     throw std::out_of_range("ModbusGateway: no controller " + std::to_string(index));
@@ -162,10 +123,7 @@ void ModbusGateway::Start() { acceptor_ = std::thread([this] { AcceptLoop(); });
 
 void ModbusGateway::Stop() {
     if (stopping_.exchange(true)) return;
-    const std::uint64_t one = 1;
-    if (write(wake_, &one, sizeof one) != sizeof one) {
-        // The eventfd cannot be full after one write; the shutdowns below wake the clients anyway.
-    }
+    wake_.Wake();
     if (acceptor_.joinable()) acceptor_.join();
     {
         const std::lock_guard<std::mutex> lock(clientsMutex_);
@@ -182,8 +140,8 @@ GatewayCounters ModbusGateway::Counters() const {
 
 void ModbusGateway::AcceptLoop() {
     std::vector<pollfd> fds;
-    for (const auto& listener : listeners_) fds.push_back({listener->fd, POLLIN, 0});
-    fds.push_back({wake_, POLLIN, 0});
+    for (const auto& listener : listeners_) fds.push_back({listener->socket->Fd(), POLLIN, 0});
+    fds.push_back({wake_.Fd(), POLLIN, 0});
     while (!stopping_) {
         for (pollfd& p : fds) p.revents = 0;
         if (poll(fds.data(), fds.size(), -1) < 0) {
@@ -198,7 +156,7 @@ void ModbusGateway::AcceptLoop() {
 }
 
 void ModbusGateway::Accept(Listener& listener) {
-    const int fd = accept4(listener.fd, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
+    const int fd = listener.socket->Accept();
     if (fd < 0) return;  // gone before it was accepted, or out of descriptors: the next one may fare better
     Reap(false);
     const std::lock_guard<std::mutex> lock(clientsMutex_);
@@ -207,8 +165,6 @@ void ModbusGateway::Accept(Listener& listener) {
         ++refused_;
         return;
     }
-    const int on = 1;
-    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
     auto client = std::make_unique<Client>();
     client->listener = &listener;
     client->fd = fd;
@@ -247,7 +203,7 @@ void ModbusGateway::Serve(Client& client) {
     const int header = open ? modbus_get_header_length(ctx) : 0;
     std::uint8_t query[kQueryBytes];
     while (open && !stopping_) {
-        pollfd fds[2] = {{fd, POLLIN, 0}, {wake_, POLLIN, 0}};
+        pollfd fds[2] = {{fd, POLLIN, 0}, {wake_.Fd(), POLLIN, 0}};
         if (poll(fds, 2, -1) < 0) {
             if (errno == EINTR) continue;
             break;

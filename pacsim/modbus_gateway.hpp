@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "simulated_controller.hpp"
+#include "tcp_listener.hpp"
 #include "wall_clock.hpp"
 
 namespace pac::pacsim {
@@ -63,7 +64,7 @@ private:
     std::string address_;
     std::vector<std::unique_ptr<Listener>> listeners_;
     std::unique_ptr<Tables> tables_;
-    int wake_ = -1;  // eventfd: Stop() wakes every poll
+    WakeEvent wake_;  // Stop() wakes every poll
     std::thread acceptor_;
     std::mutex clientsMutex_;
     std::vector<std::unique_ptr<Client>> clients_;

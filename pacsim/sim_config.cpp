@@ -19,7 +19,8 @@ using json::Json;
 using pac::scenario::ScenarioError;
 
 const std::vector<std::string> kTopKeys = {"$schema", "name", "description", "port", "controllers"};
-const std::vector<std::string> kControllerKeys = {"name", "port", "unit_id", "timing", "modules", "controller"};
+const std::vector<std::string> kControllerKeys = {"name", "port", "unit_id", "rs232", "timing", "modules", "controller"};
+const std::vector<std::string> kRs232Keys = {"port", "baud"};
 // The keys of a controller entry that are a scenario's own, read by the scenario loader.
 const std::vector<std::string> kScenarioParts = {"timing", "modules", "controller"};
 
@@ -52,6 +53,15 @@ ControllerSpec ReadController(const Json& value, const std::string& path, std::s
     spec.unitId = entry.Find("unit_id")
                       ? static_cast<int>(json::Integer(entry.Get("unit_id"), entry.PathOf("unit_id"), 1, 247))
                       : static_cast<int>(index) + 1;
+    if (const Json* rs232 = entry.Find("rs232")) {
+        const json::Object line(*rs232, entry.PathOf("rs232"), kRs232Keys, "the RS232 port");
+        Rs232Spec serial;
+        serial.port = static_cast<int>(json::Integer(line.Get("port"), line.PathOf("port"), 0, 65535));
+        if (const Json* baud = line.Find("baud")) {
+            serial.baud = static_cast<int>(json::Integer(*baud, line.PathOf("baud"), 300, 115200));
+        }
+        spec.rs232 = serial;
+    }
     ReadScenarioParts(value, index, spec);
     return spec;
 }
@@ -79,6 +89,7 @@ SimConfig SimConfigLoader::FromText(const std::string& jsonText, int portOverrid
     if (!controllers.is_array()) json::RefuseType(listPath, "an array of controllers", controllers);
     if (controllers.empty()) json::Refuse(listPath, "out of range: pac-sim needs at least one controller");
     std::set<std::pair<int, int>> addresses;
+    std::set<int> serialPorts;
     std::set<std::string> names;
     for (std::size_t i = 0; i < controllers.size(); ++i) {
         const std::string path = json::Element(listPath, i);
@@ -86,6 +97,11 @@ SimConfig SimConfigLoader::FromText(const std::string& jsonText, int portOverrid
         if (!addresses.insert({spec.port, spec.unitId}).second) {
             json::Refuse(path, "contradiction: another controller has port " + std::to_string(spec.port) + " and unit id " +
                                    std::to_string(spec.unitId) + " (each needs a port or a unit id of its own)");
+        }
+        if (spec.rs232 && spec.rs232->port != 0 &&
+            (spec.rs232->port == spec.port || !serialPorts.insert(spec.rs232->port).second)) {
+            json::Refuse(path + ".rs232.port", "contradiction: port " + std::to_string(spec.rs232->port) +
+                                                   " is taken by Modbus or another RS232 port");
         }
         if (!names.insert(spec.name).second) json::Refuse(path, "contradiction: another controller is named " + json::Quoted(spec.name));
         config.controllers.push_back(std::move(spec));

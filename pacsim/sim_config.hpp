@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,12 @@
 
 namespace pac::pacsim {
 
+// COM1 (manual chapter 3) as the raw byte stream of a TCP port, as ser2net carries a serial line.
+struct Rs232Spec {
+    int port = 0;     // 0: a free port chosen at start
+    int baud = 9600;  // the line's speed: the bytes take their time on the simulated wire
+};
+
 struct ControllerSpec {
     std::string name;  // printed at start; default "pac1", "pac2", ...
     int port = 0;      // the TCP port it is served on (0: any free port, shared by every controller with 0)
@@ -20,6 +27,7 @@ struct ControllerSpec {
     pac::scenario::Timing timing;
     pac::scenario::Modules modules;
     pac::scenario::ControllerSetup controller;
+    std::optional<Rs232Spec> rs232;
 };
 
 struct SimConfig {

@@ -1,5 +1,7 @@
 #include "simulated_controller.hpp"
 
+#include <stdexcept>
+
 #include "controller_setup.hpp"
 
 namespace pac::pacsim {
@@ -38,6 +40,22 @@ SimulatedController::SimulatedController(const ControllerSpec& spec)
       toPac_(bus_.Layout().Bytes()),
       fromPac_(bus_.Layout().Bytes()) {
     pac::scenario::ApplyControllerSetup(pac_, spec.controller);
+    if (spec.rs232) {
+        pac::sim::SerialFormat format;
+        format.baud = spec.rs232->baud;
+        serialLine_ = std::make_unique<pac::sim::SerialLine>(format);
+        pac_.AttachSerial(*serialLine_);  // the port's defaults: pac_sim --serial's (docs/sim_serial.md)
+    }
+}
+
+void SimulatedController::SendSerial(std::chrono::nanoseconds now, const std::vector<std::uint8_t>& bytes) {
+    if (!serialLine_) throw std::logic_error("SimulatedController: no RS232 port configured");
+    serialLine_->toPac.Send(now, bytes);
+}
+
+std::vector<std::uint8_t> SimulatedController::ReceiveSerial(std::chrono::nanoseconds now) {
+    if (!serialLine_) throw std::logic_error("SimulatedController: no RS232 port configured");
+    return serialLine_->fromPac.Receive(now);
 }
 
 void SimulatedController::CatchUp(std::chrono::nanoseconds now) {

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "pac/sim/pa_control.hpp"
 #include "pac/sim/pac_runner.hpp"
 #include "pac/sim/process_image.hpp"
+#include "pac/sim/serial_line.hpp"
 #include "register_map.hpp"
 #include "sim_config.hpp"
 
@@ -42,6 +44,11 @@ public:
     // (every module written by one request arrives together).
     void WriteToPac(std::chrono::nanoseconds now, int first, const std::vector<std::uint16_t>& values);
 
+    // COM1 (manual chapter 3), with the spec's "rs232": bytes from the client onto the line at `now`, and the
+    // controller's bytes that have come off the line by `now` (std::logic_error without "rs232").
+    void SendSerial(std::chrono::nanoseconds now, const std::vector<std::uint8_t>& bytes);
+    std::vector<std::uint8_t> ReceiveSerial(std::chrono::nanoseconds now);
+
     pac::sim::PaControl& Controller() { return pac_; }
     pac::sim::Bus& Bus() { return bus_; }
 
@@ -50,6 +57,7 @@ private:
     ControllerSpec spec_;
     RegisterMap map_;
     pac::sim::Bus bus_;
+    std::unique_ptr<pac::sim::SerialLine> serialLine_;  // before pac_: the controller's port refers to it
     pac::sim::PaControl pac_;
     pac::sim::PacRunner runner_;
     pac::sim::ProcessImage toPac_;

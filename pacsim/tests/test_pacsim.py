@@ -8,6 +8,8 @@ programmer reads. Environment: PACSIM (the pac-sim binary), PAC_SOURCE_DIR (the 
   RobustnessTest      exceptions for bad function codes, addresses, quantities and unit ids, the connection
                       still served after each; a client gone or stalled mid-frame, two clients writing at once,
                       seeded random bytes (the seed is printed): nothing lost, the server answers throughout
+  SerialTest          RS232 over TCP: the manual's 3.4.2 frames byte for byte, a frame sent a byte at a time,
+                      one client at a time
   CommandLineTest     --help, --version, refusals with the JSONPath, SIGINT and SIGTERM stop it cleanly
   DocsAndSchemaTest   the docs' map table is pac-sim --print-map's; every configuration file of pacsim/examples
                       is valid under pacsim/pacsim.schema.json and passes --check; damaged, both refuse it"""
@@ -89,13 +91,17 @@ def wait_for(predicate, seconds, what):
 
 
 class PacSim:
-    """pac-sim on a free loopback port: the controllers it prints ({name: (port, unit id)}), stopped by a signal."""
+    """pac-sim on a free loopback port: the controllers it prints ({name: (port, unit id)}) and their RS232 ports
+    ({name: port}), stopped by a signal."""
 
     def __init__(self, config=TWO_AXES, args=()):
         self.process = subprocess.Popen([PACSIM, "--port", "0", "--address", LOOPBACK, *args, config],
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        self.controllers = {}
+        self.controllers, self.serial_ports = {}, {}
         for line in self.process.stdout:
+            serial = re.match(r"(\S+): RS232 \(COM1\) raw TCP 127\.0\.0\.1:(\d+), ", line)
+            if serial:
+                self.serial_ports[serial.group(1)] = int(serial.group(2))
             found = re.match(r"(\S+): Modbus TCP 127\.0\.0\.1:(\d+) unit id (\d+): ", line)
             if found:
                 self.controllers[found.group(1)] = (int(found.group(2)), int(found.group(3)))
@@ -351,6 +357,71 @@ class RobustnessTest(ModbusTestCase):
         self.assert_still_served()
 
 
+def frame(text):
+    """Manual 3.1: SOH STX text ETX CHECK EOT, CHECK the XOR of the text in decimal (the master frames' rule)."""
+    check = 0
+    for c in text.encode("ascii"):
+        check ^= c
+    return b"\x01\x02" + text.encode("ascii") + b"\x03" + str(check).encode("ascii") + b"\x04"
+
+
+class SerialTest(unittest.TestCase):
+    """The example with COM1 on a TCP port of its own (any free one)."""
+
+    @classmethod
+    def setUpClass(cls):
+        with open(TWO_AXES, encoding="utf-8") as f:
+            config = json.load(f)
+        config["controllers"][0]["rs232"] = {"port": 0, "baud": 9600}
+        config["controllers"][0]["controller"]["inputs"]["5"] = True  # the setup of manual 3.4.2
+        cls.config = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"pacsim-serial-{os.getpid()}.json")
+        with open(cls.config, "w", encoding="utf-8") as f:
+            json.dump(config, f)
+        cls.sim = PacSim(cls.config)
+        time.sleep(0.1)  # the boot: 50 ms without an answer
+
+    @classmethod
+    def tearDownClass(cls):
+        code, out = cls.sim.stop()
+        os.remove(cls.config)
+        assert code == 0, out
+
+    def connect(self):
+        line = socket.create_connection((LOOPBACK, self.sim.serial_ports["pac1"]))
+        line.settimeout(3)
+        return line
+
+    def read_reply(self, line):
+        reply = b""
+        while not reply.endswith(b"\x04"):
+            chunk = line.recv(64)
+            self.assertTrue(chunk, f"the line closed after {reply!r}")
+            reply += chunk
+        return reply
+
+    def test_the_manuals_frames(self):
+        with self.connect() as line:
+            # 3.4.2: 1900 (status) and 1907 R1 = 640.0 as the manual prints the replies (docs/manual_errata.md:
+            # the reply's CHECK is the XOR with ETX).
+            line.sendall(frame("1900;5;0;0"))
+            self.assertEqual(self.read_reply(line), bytes.fromhex("01 02 30 3B 31 3B 31 3B 30 3B 30 3B 31 03 35 37 04"))
+            started = time.monotonic()
+            request = frame("1907;1;1;0")
+            for byte in request:  # a byte at a time, as a terminal program sends
+                line.sendall(bytes([byte]))
+                time.sleep(0.002)
+            self.assertEqual(self.read_reply(line), bytes.fromhex(
+                "01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04"))
+            # 9600 baud, 10 bits a character: the request and the reply take their time on the line.
+            self.assertGreater(time.monotonic() - started, (len(request) + 24) * 10 / 9600)
+
+    def test_one_client_at_a_time(self):
+        with self.connect() as line, self.connect() as second:
+            self.assertEqual(second.recv(16), b"", "a second client is closed at once")
+            line.sendall(frame("1900;5;0;0"))
+            self.assertTrue(self.read_reply(line).startswith(b"\x01\x02"))
+
+
 class CommandLineTest(unittest.TestCase):
     def run_pacsim(self, *args):
         return subprocess.run([PACSIM, *args], capture_output=True, text=True, timeout=30)
@@ -479,12 +550,15 @@ class DocsAndSchemaTest(unittest.TestCase):
             {"controllers": [{"timing": {"pac_cycle_ms": 0}}]},
             {"controllers": [{"modules": {"axes": 9, "ctrl": True}}]},
             {"controllers": [{"controller": {"inputs": {"1": 1}}}]},
+            {"controllers": [{"rs232": {}}]}, {"controllers": [{"rs232": {"port": 1, "baud": 299}}]},
+            {"controllers": [{"rs232": {"port": 1, "parity": True}}]},
         ]
         for document in damages:
             self.assertFalse(validator.is_valid(document), document)
             self.assertFalse(self.check(document), document)
         accepted = [{"controllers": [{}]}, {"port": 0, "controllers": [{"unit_id": 247, "port": 65535}]},
-                    {"controllers": [{"timing": {"pac_cycle_ms": 1}, "modules": {"ctrl": True, "axes": 8}}]}]
+                    {"controllers": [{"timing": {"pac_cycle_ms": 1}, "modules": {"ctrl": True, "axes": 8}}]},
+                    {"controllers": [{"rs232": {"port": 0, "baud": 115200}}]}]
         for document in accepted:
             self.assertTrue(validator.is_valid(document), document)
             self.assertTrue(self.check(document), document)

@@ -1,0 +1,78 @@
+#include "serial_bridge.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+#include <vector>
+
+namespace pac::pacsim {
+
+namespace {
+
+// How often the bridge looks at the line while a client is connected: a byte at 115200 baud takes 87 us,
+// a reply of the manual's length a few ms at 9600 baud.
+constexpr int kRelayPeriodMs = 1;
+
+}  // namespace
+
+SerialBridge::SerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address,
+                           int port)
+    : controller_(controller), clock_(clock), listener_(address, port) {}
+
+SerialBridge::~SerialBridge() { Stop(); }
+
+void SerialBridge::Start() { thread_ = std::thread([this] { Run(); }); }
+
+void SerialBridge::Stop() {
+    if (stopping_.exchange(true)) return;
+    wake_.Wake();
+    if (thread_.joinable()) thread_.join();
+}
+
+void SerialBridge::Run() {
+    int client = -1;
+    while (!stopping_) {
+        pollfd fds[3] = {{listener_.Fd(), POLLIN, 0}, {wake_.Fd(), POLLIN, 0}, {client, POLLIN, 0}};
+        const int ready = poll(fds, client >= 0 ? 3 : 2, client >= 0 ? kRelayPeriodMs : -1);
+        if (ready < 0 && errno != EINTR) break;
+        if (fds[1].revents != 0) break;
+        if (fds[0].revents & POLLIN) {
+            const int next = listener_.Accept();
+            if (client < 0) {
+                client = next;
+            } else if (next >= 0) {
+                close(next);  // the line has its peer
+            }
+        }
+        if (client >= 0 && !Relay(client, (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) != 0)) {
+            close(client);
+            client = -1;
+        }
+    }
+    if (client >= 0) close(client);
+}
+
+bool SerialBridge::Relay(int client, bool readable) {
+    std::vector<std::uint8_t> received;
+    if (readable) {
+        std::uint8_t buffer[4096];
+        const ssize_t got = recv(client, buffer, sizeof buffer, 0);
+        if (got == 0 || (got < 0 && errno != EAGAIN && errno != EINTR)) return false;
+        if (got > 0) received.assign(buffer, buffer + got);
+    }
+    std::vector<std::uint8_t> reply;
+    {
+        const auto lock = controller_.Lock();
+        const auto now = clock_.Now();
+        controller_.CatchUp(now);
+        if (!received.empty()) controller_.SendSerial(now, received);
+        reply = controller_.ReceiveSerial(now);
+    }
+    // A client that does not take what the line sends it is disconnected, as a buffer that overflows.
+    return reply.empty() ||
+           send(client, reply.data(), reply.size(), MSG_NOSIGNAL | MSG_DONTWAIT) == static_cast<ssize_t>(reply.size());
+}
+
+}  // namespace pac::pacsim
