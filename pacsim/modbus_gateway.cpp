@@ -192,6 +192,40 @@ void ModbusGateway::Reap(bool all) {
     }
 }
 
+bool ModbusGateway::Answer(modbus_t* ctx, const std::uint8_t* query, int length, const Listener& listener) {
+    const int header = modbus_get_header_length(ctx);
+    const std::optional<std::size_t> index = listener.Route(query[header - 1]);
+    RequestCheck check;
+    if (!index) {
+        check.exception = kGatewayPathUnavailable;
+    } else {
+        check = CheckRequest(query + header, static_cast<std::size_t>(length - header),
+                             controllers_[*index]->Map().Registers());
+    }
+    if (check.exception != 0) {
+        ++exceptions_;
+        return modbus_reply_exception(ctx, query, static_cast<unsigned>(check.exception)) >= 0;
+    }
+    SimulatedController& controller = *controllers_[*index];
+    modbus_mapping_t* table = tables_->Of(*index);
+    const auto lock = controller.Lock();
+    const auto now = clock_.Now();
+    controller.CatchUp(now);
+    const std::vector<std::uint16_t> toPac = controller.ToPacRegisters();
+    const std::vector<std::uint16_t> fromPac = controller.FromPacRegisters();
+    std::copy(toPac.begin(), toPac.end(), table->tab_registers);
+    std::copy(fromPac.begin(), fromPac.end(), table->tab_registers + kFromPacHoldingBase);
+    std::copy(fromPac.begin(), fromPac.end(), table->tab_input_registers);
+    // A non-blocking socket: a client that does not take its replies is dropped, it never holds the lock.
+    const int sent = modbus_reply(ctx, query, length, table);
+    if (check.writeCount > 0) {
+        // Applied even when the reply could not go out: the request arrived whole.
+        const std::uint16_t* written = table->tab_registers + check.writeFirst;
+        controller.WriteToPac(now, check.writeFirst, std::vector<std::uint16_t>(written, written + check.writeCount));
+    }
+    return sent >= 0;
+}
+
 void ModbusGateway::Serve(Client& client) {
     modbus_t* ctx = modbus_new_tcp(nullptr, 0);  // a context for libmodbus's TCP framing; the socket is ours
     const int fd = client.fd;
@@ -200,7 +234,6 @@ void ModbusGateway::Serve(Client& client) {
         modbus_set_byte_timeout(ctx, 0, kFrameTimeoutMs * 1000);
         modbus_set_indication_timeout(ctx, 0, kFrameTimeoutMs * 1000);
     }
-    const int header = open ? modbus_get_header_length(ctx) : 0;
     std::uint8_t query[kQueryBytes];
     while (open && !stopping_) {
         pollfd fds[2] = {{fd, POLLIN, 0}, {wake_.Fd(), POLLIN, 0}};
@@ -224,39 +257,7 @@ void ModbusGateway::Serve(Client& client) {
             ++dropped_;
             break;
         }
-        const std::optional<std::size_t> index = client.listener->Route(query[header - 1]);
-        RequestCheck check;
-        if (!index) {
-            check.exception = kGatewayPathUnavailable;
-        } else {
-            check = CheckRequest(query + header, static_cast<std::size_t>(length - header),
-                                 controllers_[*index]->Map().Registers());
-        }
-        if (check.exception != 0) {
-            ++exceptions_;
-            if (modbus_reply_exception(ctx, query, static_cast<unsigned>(check.exception)) < 0) {
-                ++dropped_;
-                break;
-            }
-            continue;
-        }
-        SimulatedController& controller = *controllers_[*index];
-        modbus_mapping_t* table = tables_->Of(*index);
-        const auto lock = controller.Lock();
-        const auto now = clock_.Now();
-        controller.CatchUp(now);
-        const std::vector<std::uint16_t> toPac = controller.ToPacRegisters();
-        const std::vector<std::uint16_t> fromPac = controller.FromPacRegisters();
-        std::copy(toPac.begin(), toPac.end(), table->tab_registers);
-        std::copy(fromPac.begin(), fromPac.end(), table->tab_registers + kFromPacHoldingBase);
-        std::copy(fromPac.begin(), fromPac.end(), table->tab_input_registers);
-        // A non-blocking socket: a client that does not take its replies is dropped, it never holds the lock.
-        const int sent = modbus_reply(ctx, query, length, table);
-        if (check.writeCount > 0) {
-            const std::uint16_t* written = table->tab_registers + check.writeFirst;
-            controller.WriteToPac(now, check.writeFirst, std::vector<std::uint16_t>(written, written + check.writeCount));
-        }
-        if (sent < 0) {
+        if (!Answer(ctx, query, length, *client.listener)) {
             ++dropped_;
             break;
         }

@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include <modbus/modbus.h>
+
 #include "simulated_controller.hpp"
 #include "tcp_listener.hpp"
 #include "wall_clock.hpp"
@@ -57,6 +59,9 @@ private:
     void AcceptLoop();
     void Accept(Listener& listener);
     void Serve(Client& client);
+    // Answers one request libmodbus has read (an exception, or the reply from the controller's registers and
+    // the write applied); false when the reply could not be sent.
+    bool Answer(modbus_t* ctx, const std::uint8_t* query, int length, const Listener& listener);
     void Reap(bool all);
 
     std::vector<std::unique_ptr<SimulatedController>>& controllers_;
