@@ -1,5 +1,7 @@
 #include "cli.hpp"
 
+#include <arpa/inet.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -163,7 +165,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             char* rest = nullptr;
             const double number = v ? std::strtod(v->c_str(), &rest) : 0.0;
             const bool isNumber = v && !v->empty() && *rest == '\0';
-            if (arg == "--address" && v) {
+            in_addr ip{};
+            if (arg == "--address" && v && inet_pton(AF_INET, v->c_str(), &ip) == 1) {
                 options.address = *v;
             } else if (arg == "--port" && isNumber && number >= 0 && number <= 65535 && number == static_cast<int>(number)) {
                 options.port = static_cast<int>(number);

@@ -455,7 +455,8 @@ class CommandLineTest(unittest.TestCase):
                 self.assertIn(message, run.stderr, document)
         finally:
             os.remove(work)
-        for args in (["--port", "x", TWO_AXES], ["--bogus", TWO_AXES], [], ["a.json", "b.json"]):
+        for args in (["--port", "x", TWO_AXES], ["--port", "65536", TWO_AXES], ["--seconds", "0", TWO_AXES],
+                     ["--address", "localhost", TWO_AXES], ["--bogus", TWO_AXES], [], ["a.json", "b.json"]):
             self.assertEqual(self.run_pacsim(*args).returncode, 2, args)
 
     def test_a_signal_stops_it_cleanly(self):
@@ -467,6 +468,18 @@ class CommandLineTest(unittest.TestCase):
             client.close()
             self.assertEqual(code, 0, out)
             self.assertRegex(out, r"pac-sim: stopped by a signal after \d+ ms: 1 connections")
+
+    def test_seconds_and_stats(self):
+        started = time.monotonic()
+        run = self.run_pacsim("--port", "0", "--seconds", "0.5", "--stats", TWO_AXES)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertGreaterEqual(time.monotonic() - started, 0.5)
+        self.assertIn("pac-sim: stopped after", run.stdout)
+        # 5 ms controller cycles for 0.5 s: about 100 cycles, each counted once (a late one with those it caught up).
+        found = re.search(r"pac-sim: cycles (\d+), lateness p50 \d+ us, p99 \d+ us, max \d+ us; CPU \d+ % of one core",
+                          run.stdout)
+        self.assertTrue(found, run.stdout)
+        self.assertTrue(10 <= int(found.group(1)) <= 101, found.group(0))
 
     def test_a_port_in_use_is_refused(self):
         with socket.socket() as taken:
