@@ -77,6 +77,28 @@ std::chrono::nanoseconds CatchUp(std::vector<std::unique_ptr<SimulatedController
     return next;
 }
 
+// Runs the controllers' cycles on time until SIGINT or SIGTERM (its number) or `seconds` (0; 0: no limit).
+int RunUntilStopped(std::vector<std::unique_ptr<SimulatedController>>& controllers, const WallClock& clock,
+                    double seconds, CycleStats& stats) {
+    sigset_t stop;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    const auto end = seconds > 0.0 ? std::chrono::nanoseconds(static_cast<std::int64_t>(seconds * 1e9))
+                                   : std::chrono::nanoseconds::max();
+    while (true) {
+        const auto next = CatchUp(controllers, clock, stats);
+        const auto now = clock.Now();
+        if (now >= end) return 0;
+        const auto wait = std::clamp(std::min(next, end) - now, std::chrono::nanoseconds(0),
+                                     std::chrono::nanoseconds(kMaxSleep));
+        const timespec timeout{static_cast<std::time_t>(wait.count() / 1000000000),
+                               static_cast<long>(wait.count() % 1000000000)};
+        const int signal = sigtimedwait(&stop, nullptr, &timeout);
+        if (signal > 0) return signal;
+    }
+}
+
 int Run(const Options& options, const SimConfig& config, std::ostream& out) {
     std::vector<std::unique_ptr<SimulatedController>> controllers;
     for (const ControllerSpec& spec : config.controllers) controllers.push_back(std::make_unique<SimulatedController>(spec));
@@ -105,23 +127,8 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
     }
     out << kProgram << ": running; Ctrl-C stops" << std::endl;
 
-    sigset_t stop;
-    sigemptyset(&stop);
-    sigaddset(&stop, SIGINT);
-    sigaddset(&stop, SIGTERM);
-    const auto end = options.seconds > 0.0 ? std::chrono::nanoseconds(static_cast<std::int64_t>(options.seconds * 1e9))
-                                           : std::chrono::nanoseconds::max();
-    int signal = 0;
     auto stats = std::make_unique<CycleStats>();  // 800 kB of buckets: not on the stack
-    while (signal <= 0) {
-        const auto next = CatchUp(controllers, clock, *stats);
-        const auto now = clock.Now();
-        if (now >= end) break;
-        const auto wait = std::clamp(std::min(next, end) - now, std::chrono::nanoseconds(0),
-                                     std::chrono::nanoseconds(kMaxSleep));
-        const timespec timeout{static_cast<std::time_t>(wait.count() / 1000000000), static_cast<long>(wait.count() % 1000000000)};
-        signal = sigtimedwait(&stop, nullptr, &timeout);
-    }
+    const int signal = RunUntilStopped(controllers, clock, options.seconds, *stats);
     gateway.Stop();
     for (auto& bridge : bridges) {
         if (bridge) bridge->Stop();
