@@ -15,6 +15,15 @@ namespace {
 // a reply of the manual's length a few ms at 9600 baud.
 constexpr int kRelayPeriodMs = 1;
 
+// Whether the peer of `fd` has closed its end (its bytes still unread do not count).
+bool Gone(int fd) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 0) <= 0) return false;
+    if (p.revents & (POLLHUP | POLLERR)) return true;
+    std::uint8_t byte;
+    return recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0;
+}
+
 }  // namespace
 
 SerialBridge::SerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address,
@@ -38,17 +47,22 @@ void SerialBridge::Run() {
         const int ready = poll(fds, client >= 0 ? 3 : 2, client >= 0 ? kRelayPeriodMs : -1);
         if (ready < 0 && errno != EINTR) break;
         if (fds[1].revents != 0) break;
+        // The client first: one that has just gone makes room for the one that connects after it.
+        if (client >= 0 && !Relay(client, (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) != 0)) {
+            close(client);
+            client = -1;
+        }
         if (fds[0].revents & POLLIN) {
             const int next = listener_.Accept();
+            if (client >= 0 && next >= 0 && Gone(client)) {
+                close(client);
+                client = -1;
+            }
             if (client < 0) {
                 client = next;
             } else if (next >= 0) {
                 close(next);  // the line has its peer
             }
-        }
-        if (client >= 0 && !Relay(client, (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) != 0)) {
-            close(client);
-            client = -1;
         }
     }
     if (client >= 0) close(client);
