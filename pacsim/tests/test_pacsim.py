@@ -475,11 +475,12 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(run.returncode, 0, run.stderr)
         self.assertGreaterEqual(time.monotonic() - started, 0.5)
         self.assertIn("pac-sim: stopped after", run.stdout)
-        # 5 ms controller cycles for 0.5 s: about 100 cycles, each counted once (a late one with those it caught up).
+        # 5 ms controller cycles for 0.5 s: about 100 cycles, a late one counted with those it caught up; the last
+        # look at the clock may run one or two past 0.5 s.
         found = re.search(r"pac-sim: cycles (\d+), lateness p50 \d+ us, p99 \d+ us, max \d+ us; CPU \d+ % of one core",
                           run.stdout)
         self.assertTrue(found, run.stdout)
-        self.assertTrue(10 <= int(found.group(1)) <= 101, found.group(0))
+        self.assertTrue(10 <= int(found.group(1)) <= 103, found.group(0))
 
     def test_a_port_in_use_is_refused(self):
         with socket.socket() as taken:
