@@ -7,7 +7,8 @@ programmer reads. Environment: PACSIM (the pac-sim binary), PAC_SOURCE_DIR (the 
                       an axis switched on and moved through its axis module, its position read three ways
   RobustnessTest      exceptions for bad function codes, addresses, quantities and unit ids, the connection
                       still served after each; a client gone or stalled mid-frame, two clients writing at once,
-                      seeded random bytes (the seed is printed): nothing lost, the server answers throughout
+                      seeded random bytes (the seed is printed), clients beyond the limit: nothing lost, the
+                      server answers throughout
   SerialTest          RS232 over TCP: the manual's 3.4.2 frames byte for byte, a frame sent a byte at a time,
                       one client at a time
   CommandLineTest     --help, --version, refusals with the JSONPath, SIGINT and SIGTERM stop it cleanly
@@ -329,6 +330,43 @@ class RobustnessTest(ModbusTestCase):
         second.close()
         self.assertEqual(failures, [])
         self.assertEqual(self.modbus.read_holding_registers(first + 2, count=2, device_id=1).registers, [300, 1300])
+
+    def test_clients_beyond_the_limit_are_closed_and_room_comes_back(self):
+        read = self.raw_frame(9, 4, struct.pack(">HH", 0, 4))
+        held = []
+        try:
+            def connect_served():
+                raw = socket.create_connection((LOOPBACK, self.sim.port()))
+                raw.settimeout(3)
+                try:
+                    raw.sendall(read)
+                    if raw.recv(64)[7:8] == b"\x04":
+                        return raw
+                except OSError:
+                    pass
+                raw.close()  # refused: a client of an earlier test the server has not seen leave yet
+                return None
+
+            for _ in range(31):  # with this test's own client: 32, the limit (docs: "at most 32 clients at once")
+                held.append(wait_for(connect_served, 5, "a client served below the limit"))
+            with socket.create_connection((LOOPBACK, self.sim.port())) as extra:
+                extra.settimeout(3)
+                self.assertEqual(extra.recv(16), b"", "the 33rd client is closed at once")
+            self.assert_still_served()
+        finally:
+            for raw in held:
+                raw.close()
+
+        def served():
+            try:
+                with socket.create_connection((LOOPBACK, self.sim.port())) as again:
+                    again.settimeout(1)
+                    again.sendall(read)
+                    return again.recv(64)[7:8] == b"\x04"
+            except (OSError, IndexError):
+                return False
+
+        wait_for(served, 5, "a new client served once the others have gone")
 
     def test_random_bytes(self):
         seed = int(os.environ.get("PACSIM_SEED", random.SystemRandom().randrange(1 << 32)))
