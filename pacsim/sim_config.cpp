@@ -26,13 +26,12 @@ const std::vector<std::string> kScenarioParts = {"timing", "modules", "controlle
 
 // The scenario loader reads the parts as a scenario of one wait step; its paths ($.controller...) are
 // rewritten to the entry's ($.controllers[2].controller...).
-void ReadScenarioParts(const Json& entry, std::size_t index, ControllerSpec& spec) {
+void ReadScenarioParts(const Json& entry, std::size_t index, const pac::scenario::GvlNames& names, ControllerSpec& spec) {
     Json scenario = Json::object();
     for (const std::string& key : kScenarioParts) {
         if (entry.contains(key)) scenario[key] = entry.at(key);
     }
     scenario["steps"] = Json::array({Json{{"wait_ms", 1}}});
-    static const pac::scenario::GvlNames names;
     try {
         const pac::scenario::Scenario parsed = pac::scenario::ScenarioLoader(names).FromText(scenario.dump());
         spec.timing = parsed.timing;
@@ -43,7 +42,8 @@ void ReadScenarioParts(const Json& entry, std::size_t index, ControllerSpec& spe
     }
 }
 
-ControllerSpec ReadController(const Json& value, const std::string& path, std::size_t index, int defaultPort) {
+ControllerSpec ReadController(const Json& value, const std::string& path, std::size_t index, int defaultPort,
+                              const pac::scenario::GvlNames& names) {
     const json::Object entry(value, path, kControllerKeys, "a controller");
     ControllerSpec spec;
     spec.name = entry.Find("name") ? json::String(entry.Get("name"), entry.PathOf("name")) : "pac" + std::to_string(index + 1);
@@ -62,7 +62,7 @@ ControllerSpec ReadController(const Json& value, const std::string& path, std::s
         }
         spec.rs232 = serial;
     }
-    ReadScenarioParts(value, index, spec);
+    ReadScenarioParts(value, index, names, spec);
     return spec;
 }
 
@@ -88,12 +88,13 @@ SimConfig SimConfigLoader::FromText(const std::string& jsonText, int portOverrid
     const std::string listPath = top.PathOf("controllers");
     if (!controllers.is_array()) json::RefuseType(listPath, "an array of controllers", controllers);
     if (controllers.empty()) json::Refuse(listPath, "out of range: pac-sim needs at least one controller");
+    const pac::scenario::GvlNames gvl;  // the PAC_STATUS_ names a controller's operating status may use
     std::set<std::pair<int, int>> addresses;
     std::set<int> serialPorts;
     std::set<std::string> names;
     for (std::size_t i = 0; i < controllers.size(); ++i) {
         const std::string path = json::Element(listPath, i);
-        ControllerSpec spec = ReadController(controllers[i], path, i, port);
+        ControllerSpec spec = ReadController(controllers[i], path, i, port, gvl);
         if (!addresses.insert({spec.port, spec.unitId}).second) {
             json::Refuse(path, "contradiction: another controller has port " + std::to_string(spec.port) + " and unit id " +
                                    std::to_string(spec.unitId) + " (each needs a port or a unit id of its own)");
@@ -103,7 +104,9 @@ SimConfig SimConfigLoader::FromText(const std::string& jsonText, int portOverrid
             json::Refuse(path + ".rs232.port", "contradiction: port " + std::to_string(spec.rs232->port) +
                                                    " is taken by Modbus or another RS232 port");
         }
-        if (!names.insert(spec.name).second) json::Refuse(path, "contradiction: another controller is named " + json::Quoted(spec.name));
+        if (!names.insert(spec.name).second) {
+            json::Refuse(path, "contradiction: another controller is named " + json::Quoted(spec.name));
+        }
         config.controllers.push_back(std::move(spec));
     }
     return config;

@@ -1,8 +1,8 @@
 // One simulated PA-CONTROL of pac-sim in real time: its bus and controller, run at the controller's own
 // cycle (PacRunner) on the wall clock's time since pac-sim started, and the PLC's side of the bus as
-// registers (RegisterMap). Every member is used under Lock(): the simulation loop and each Modbus client
-// thread lock the controller, take the time inside the lock (so the controller sees time run forward), run
-// the cycles due and then read or write the images.
+// registers (RegisterMap). Its state is used under Lock() (Spec() and Map() never change): the simulation loop,
+// each Modbus client thread and the RS232 bridge lock the controller, take the time inside the lock (so the
+// controller sees its time run forward), run the cycles due and then read or write the images.
 #pragma once
 
 #include <chrono>
