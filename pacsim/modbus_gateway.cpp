@@ -250,10 +250,13 @@ void ModbusGateway::Serve(Client& client) {
         }
         ++requests_;
         // The MBAP length counts the unit id and the PDU: the rest of a frame libmodbus read no further than its
-        // function code is dropped; a frame that is not Modbus (protocol id) or shorter than read ends the link.
+        // function code is dropped. A frame that is not a Modbus request ends the link: a protocol id other than
+        // 0, a length shorter than what was read, or a function code of 128 or more (those are exception
+        // responses; libmodbus would answer one with function code 127, which a client takes for a reply).
         const std::size_t framed = static_cast<std::size_t>(query[kMbapLengthAt] << 8 | query[kMbapLengthAt + 1]);
         const std::size_t read = static_cast<std::size_t>(length - kMbapPrefix);
-        if (query[2] != 0 || query[3] != 0 || framed < read || (framed > read && !Drain(fd, framed - read))) {
+        const bool request = query[2] == 0 && query[3] == 0 && framed >= read && query[kMbapPrefix + 1] < 0x80;
+        if (!request || (framed > read && !Drain(fd, framed - read))) {
             ++dropped_;
             break;
         }
