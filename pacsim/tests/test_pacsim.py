@@ -239,6 +239,13 @@ class RobustnessTest(ModbusTestCase):
         # Encapsulated interface (43): a frame libmodbus reads only to its function code; the rest is dropped.
         self.assert_exception(self.modbus.read_device_information(device_id=1), 1)
         self.assert_still_served()
+        # 128..255 are exception responses, never requests: not Modbus, the connection ends without an answer.
+        for function in (0x80, 0x83, 0xFF):
+            with socket.create_connection((LOOPBACK, self.sim.port())) as raw:
+                raw.settimeout(3)
+                raw.sendall(self.raw_frame(1, function, struct.pack(">HH", 0, 1)))
+                self.assertEqual(raw.recv(16), b"", f"function code {function:#04x}")
+        self.assert_still_served()
 
     def test_registers_outside_the_map_get_exception_2(self):
         end = self.registers()  # the first register after the last module (20 for the example)
