@@ -244,7 +244,11 @@ class RobustnessTest(ModbusTestCase):
             with socket.create_connection((LOOPBACK, self.sim.port())) as raw:
                 raw.settimeout(3)
                 raw.sendall(self.raw_frame(1, function, struct.pack(">HH", 0, 1)))
-                self.assertEqual(raw.recv(16), b"", f"function code {function:#04x}")
+                try:
+                    answer = raw.recv(16)
+                except ConnectionResetError:  # closed with the rest of the frame unread: a reset, not a FIN
+                    answer = b""
+                self.assertEqual(answer, b"", f"function code {function:#04x}")
         self.assert_still_served()
 
     def test_registers_outside_the_map_get_exception_2(self):
