@@ -16,7 +16,9 @@
 #include "modbus_gateway.hpp"
 #include "register_map.hpp"
 #include "scenario_error.hpp"
-#include "serial_bridge.hpp"
+#include "pty_serial_bridge.hpp"
+#include "serial_endpoint.hpp"
+#include "tcp_serial_bridge.hpp"
 #include "sim_config.hpp"
 #include "simulated_controller.hpp"
 #include "wall_clock.hpp"
@@ -104,10 +106,14 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
     for (const ControllerSpec& spec : config.controllers) controllers.push_back(std::make_unique<SimulatedController>(spec));
     const WallClock clock;  // time 0: every controller powers on now
     ModbusGateway gateway(controllers, clock, options.address);
-    std::vector<std::unique_ptr<SerialBridge>> bridges(controllers.size());
+    std::vector<std::unique_ptr<SerialEndpoint>> bridges(controllers.size());
     for (std::size_t i = 0; i < controllers.size(); ++i) {
         if (const auto& rs232 = controllers[i]->Spec().rs232) {
-            bridges[i] = std::make_unique<SerialBridge>(*controllers[i], clock, options.address, rs232->port);
+            if (rs232->pty) {
+                bridges[i] = std::make_unique<PtySerialBridge>(*controllers[i], clock, rs232->link);
+            } else {
+                bridges[i] = std::make_unique<TcpSerialBridge>(*controllers[i], clock, options.address, rs232->port);
+            }
         }
     }
     gateway.Start();
@@ -121,8 +127,7 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
             << ": " << Modules(map) << " (registers 0.." << map.Registers() - 1 << ", from PAC also holding registers "
             << kFromPacHoldingBase << ".." << kFromPacHoldingBase + map.Registers() - 1 << ")\n";
         if (bridges[i]) {
-            out << spec.name << ": RS232 (COM1) raw TCP " << gateway.Address() << ":" << bridges[i]->Port() << ", "
-                << spec.rs232->baud << " baud\n";
+            out << spec.name << ": RS232 (COM1) " << bridges[i]->Where() << ", " << spec.rs232->baud << " baud\n";
         }
     }
     out << kProgram << ": running; Ctrl-C stops" << std::endl;

@@ -20,7 +20,7 @@ using pac::scenario::ScenarioError;
 
 const std::vector<std::string> kTopKeys = {"$schema", "name", "description", "port", "controllers"};
 const std::vector<std::string> kControllerKeys = {"name", "port", "unit_id", "rs232", "timing", "modules", "controller"};
-const std::vector<std::string> kRs232Keys = {"port", "baud"};
+const std::vector<std::string> kRs232Keys = {"port", "pty", "link", "baud"};
 // The keys of a controller entry that are a scenario's own, read by the scenario loader.
 const std::vector<std::string> kScenarioParts = {"timing", "modules", "controller"};
 
@@ -56,7 +56,15 @@ ControllerSpec ReadController(const Json& value, const std::string& path, std::s
     if (const Json* rs232 = entry.Find("rs232")) {
         const json::Object line(*rs232, entry.PathOf("rs232"), kRs232Keys, "the RS232 port");
         Rs232Spec serial;
-        serial.port = static_cast<int>(json::Integer(line.Get("port"), line.PathOf("port"), 0, 65535));
+        if (const Json* pty = line.Find("pty")) {
+            serial.pty = json::Bool(*pty, line.PathOf("pty"));
+            if (!serial.pty) json::Refuse(line.PathOf("pty"), "out of range: leave \"pty\" out for a TCP port");
+            if (line.Has("port")) json::Refuse(line.Path(), "contradiction: a TCP \"port\" or a \"pty\", not both");
+            if (const Json* link = line.Find("link")) serial.link = json::String(*link, line.PathOf("link"));
+        } else {
+            if (line.Has("link")) json::Refuse(line.PathOf("link"), "contradiction: a link names a pseudo-terminal: set \"pty\"");
+            serial.port = static_cast<int>(json::Integer(line.Get("port"), line.PathOf("port"), 0, 65535));
+        }
         if (const Json* baud = line.Find("baud")) {
             serial.baud = static_cast<int>(json::Integer(*baud, line.PathOf("baud"), 300, 115200));
         }
@@ -99,7 +107,7 @@ SimConfig SimConfigLoader::FromText(const std::string& jsonText, int portOverrid
             json::Refuse(path, "contradiction: another controller has port " + std::to_string(spec.port) + " and unit id " +
                                    std::to_string(spec.unitId) + " (each needs a port or a unit id of its own)");
         }
-        if (spec.rs232 && spec.rs232->port != 0 &&
+        if (spec.rs232 && !spec.rs232->pty && spec.rs232->port != 0 &&
             (spec.rs232->port == spec.port || !serialPorts.insert(spec.rs232->port).second)) {
             json::Refuse(path + ".rs232.port", "contradiction: port " + std::to_string(spec.rs232->port) +
                                                    " is taken by Modbus or another RS232 port");

@@ -14,10 +14,13 @@
 
 namespace pac::pacsim {
 
-// COM1 (manual chapter 3) as the raw byte stream of a TCP port, as ser2net carries a serial line.
+// COM1 (manual chapter 3) as the raw byte stream of a TCP port, as ser2net carries a serial line, or on a
+// pseudo-terminal, as pac_sim --serial has it.
 struct Rs232Spec {
-    int port = 0;     // 0: a free port chosen at start
-    int baud = 9600;  // the line's speed: the bytes take their time on the simulated wire
+    bool pty = false;  // a pseudo-terminal instead of a TCP port
+    int port = 0;      // the TCP port; 0: a free port chosen at start
+    std::string link;  // pty: a symbolic link to the terminal's path to make, or empty
+    int baud = 9600;   // the line's speed: the bytes take their time on the simulated wire
 };
 
 struct ControllerSpec {

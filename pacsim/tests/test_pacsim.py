@@ -11,6 +11,7 @@ programmer reads. Environment: PACSIM (the pac-sim binary), PAC_SOURCE_DIR (the 
                       server answers throughout
   SerialTest          RS232 over TCP: the manual's 3.4.2 frames byte for byte, a frame sent a byte at a time,
                       one client at a time
+  PseudoTerminalTest  RS232 on a pseudo-terminal: a frame of 3.4.2
   CommandLineTest     --help, --version, refusals with the JSONPath, SIGINT and SIGTERM stop it cleanly
   DocsAndSchemaTest   the docs' map table is pac-sim --print-map's; every configuration file of pacsim/examples
                       is valid under pacsim/pacsim.schema.json and passes --check; damaged, both refuse it"""
@@ -18,6 +19,7 @@ import json
 import os
 import random
 import re
+import select
 import signal
 import socket
 import struct
@@ -100,9 +102,9 @@ class PacSim:
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         self.controllers, self.serial_ports = {}, {}
         for line in self.process.stdout:
-            serial = re.match(r"(\S+): RS232 \(COM1\) raw TCP 127\.0\.0\.1:(\d+), ", line)
+            serial = re.match(r"(\S+): RS232 \(COM1\) (?:raw TCP 127\.0\.0\.1:(\d+)|pseudo-terminal (\S+)), ", line)
             if serial:
-                self.serial_ports[serial.group(1)] = int(serial.group(2))
+                self.serial_ports[serial.group(1)] = int(serial.group(2)) if serial.group(2) else serial.group(3)
             found = re.match(r"(\S+): Modbus TCP 127\.0\.0\.1:(\d+) unit id (\d+): ", line)
             if found:
                 self.controllers[found.group(1)] = (int(found.group(2)), int(found.group(3)))
@@ -471,6 +473,33 @@ class SerialTest(unittest.TestCase):
             self.assertTrue(self.read_reply(line).startswith(b"\x01\x02"))
 
 
+class PseudoTerminalTest(unittest.TestCase):
+    """The example with COM1 on a pseudo-terminal, opened as a serial port is (raw mode is pac-sim's doing)."""
+
+    def test_the_manuals_frame_on_a_pseudo_terminal(self):
+        with open(TWO_AXES, encoding="utf-8") as f:
+            config = json.load(f)
+        config["controllers"][0]["rs232"] = {"pty": True}
+        path = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"pacsim-pty-{os.getpid()}.json")
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(config, f)
+        sim = PacSim(path)
+        try:
+            terminal = os.open(sim.serial_ports["pac1"], os.O_RDWR | os.O_NOCTTY)
+            time.sleep(0.1)  # the boot
+            os.write(terminal, frame("1907;1;1;0"))
+            reply = b""
+            end = time.monotonic() + 5
+            while not reply.endswith(b"\x04") and time.monotonic() < end:
+                if select.select([terminal], [], [], 0.1)[0]:
+                    reply += os.read(terminal, 64)
+            os.close(terminal)
+            self.assertEqual(reply, bytes.fromhex("01 02 30 3B 31 3B 31 3B 30 3B 31 3B 36 34 30 2E 30 30 30 30 03 32 31 04"))
+        finally:
+            os.remove(path)
+            self.assertEqual(sim.stop()[0], 0)
+
+
 class CommandLineTest(unittest.TestCase):
     def run_pacsim(self, *args):
         return subprocess.run([PACSIM, *args], capture_output=True, text=True, timeout=30)
@@ -615,13 +644,16 @@ class DocsAndSchemaTest(unittest.TestCase):
             {"controllers": [{"controller": {"inputs": {"1": 1}}}]},
             {"controllers": [{"rs232": {}}]}, {"controllers": [{"rs232": {"port": 1, "baud": 299}}]},
             {"controllers": [{"rs232": {"port": 1, "parity": True}}]},
+            {"controllers": [{"rs232": {"port": 1, "pty": True}}]}, {"controllers": [{"rs232": {"pty": False}}]},
+            {"controllers": [{"rs232": {"port": 1, "link": "/tmp/x"}}]},
         ]
         for document in damages:
             self.assertFalse(validator.is_valid(document), document)
             self.assertFalse(self.check(document), document)
         accepted = [{"controllers": [{}]}, {"port": 0, "controllers": [{"unit_id": 247, "port": 65535}]},
                     {"controllers": [{"timing": {"pac_cycle_ms": 1}, "modules": {"ctrl": True, "axes": 8}}]},
-                    {"controllers": [{"rs232": {"port": 0, "baud": 115200}}]}]
+                    {"controllers": [{"rs232": {"port": 0, "baud": 115200}}]},
+                    {"controllers": [{"rs232": {"pty": True, "link": "/tmp/pacsim-link"}}]}]
         for document in accepted:
             self.assertTrue(validator.is_valid(document), document)
             self.assertTrue(self.check(document), document)

@@ -8,23 +8,25 @@
 #include <string>
 #include <thread>
 
+#include "serial_endpoint.hpp"
 #include "simulated_controller.hpp"
 #include "tcp_listener.hpp"
 #include "wall_clock.hpp"
 
 namespace pac::pacsim {
 
-class SerialBridge {
+class TcpSerialBridge final : public SerialEndpoint {
 public:
     // Listens on `address`:`port` (0: a free port); std::runtime_error naming them when it cannot.
-    SerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address, int port);
-    ~SerialBridge();
-    SerialBridge(const SerialBridge&) = delete;
-    SerialBridge& operator=(const SerialBridge&) = delete;
+    TcpSerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address, int port);
+    ~TcpSerialBridge() override;
+    TcpSerialBridge(const TcpSerialBridge&) = delete;
+    TcpSerialBridge& operator=(const TcpSerialBridge&) = delete;
 
     int Port() const { return listener_.Port(); }
-    void Start();
-    void Stop();
+    void Start() override;
+    void Stop() override;
+    std::string Where() const override;
 
 private:
     void Run();
@@ -33,6 +35,7 @@ private:
 
     SimulatedController& controller_;
     const WallClock& clock_;
+    std::string address_;
     TcpListener listener_;
     WakeEvent wake_;
     std::atomic<bool> stopping_{false};

@@ -1,4 +1,4 @@
-#include "serial_bridge.hpp"
+#include "tcp_serial_bridge.hpp"
 
 #include <cerrno>
 #include <cstdint>
@@ -26,21 +26,23 @@ bool Gone(int fd) {
 
 }  // namespace
 
-SerialBridge::SerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address,
+TcpSerialBridge::TcpSerialBridge(SimulatedController& controller, const WallClock& clock, const std::string& address,
                            int port)
-    : controller_(controller), clock_(clock), listener_(address, port) {}
+    : controller_(controller), clock_(clock), address_(address), listener_(address, port) {}
 
-SerialBridge::~SerialBridge() { Stop(); }
+std::string TcpSerialBridge::Where() const { return "raw TCP " + address_ + ":" + std::to_string(Port()); }
 
-void SerialBridge::Start() { thread_ = std::thread([this] { Run(); }); }
+TcpSerialBridge::~TcpSerialBridge() { Stop(); }
 
-void SerialBridge::Stop() {
+void TcpSerialBridge::Start() { thread_ = std::thread([this] { Run(); }); }
+
+void TcpSerialBridge::Stop() {
     if (stopping_.exchange(true)) return;
     wake_.Wake();
     if (thread_.joinable()) thread_.join();
 }
 
-void SerialBridge::Run() {
+void TcpSerialBridge::Run() {
     int client = -1;
     while (!stopping_) {
         pollfd fds[3] = {{listener_.Fd(), POLLIN, 0}, {wake_.Fd(), POLLIN, 0}, {client, POLLIN, 0}};
@@ -68,7 +70,7 @@ void SerialBridge::Run() {
     if (client >= 0) close(client);
 }
 
-bool SerialBridge::Relay(int client, bool readable) {
+bool TcpSerialBridge::Relay(int client, bool readable) {
     std::vector<std::uint8_t> received;
     if (readable) {
         std::uint8_t buffer[4096];
@@ -76,14 +78,7 @@ bool SerialBridge::Relay(int client, bool readable) {
         if (got == 0 || (got < 0 && errno != EAGAIN && errno != EINTR)) return false;
         if (got > 0) received.assign(buffer, buffer + got);
     }
-    std::vector<std::uint8_t> reply;
-    {
-        const auto lock = controller_.Lock();
-        const auto now = clock_.Now();
-        controller_.CatchUp(now);
-        if (!received.empty()) controller_.SendSerial(now, received);
-        reply = controller_.ReceiveSerial(now);
-    }
+    const std::vector<std::uint8_t> reply = RelaySerial(controller_, clock_, received);
     // A client that does not take what the line sends it is disconnected, as a buffer that overflows.
     return reply.empty() ||
            send(client, reply.data(), reply.size(), MSG_NOSIGNAL | MSG_DONTWAIT) == static_cast<ssize_t>(reply.size());
