@@ -645,7 +645,7 @@ class DocsAndSchemaTest(unittest.TestCase):
             {"controllers": [{"rs232": {}}]}, {"controllers": [{"rs232": {"port": 1, "baud": 299}}]},
             {"controllers": [{"rs232": {"port": 1, "parity": True}}]},
             {"controllers": [{"rs232": {"port": 1, "pty": True}}]}, {"controllers": [{"rs232": {"pty": False}}]},
-            {"controllers": [{"rs232": {"port": 1, "link": "/tmp/x"}}]},
+            {"controllers": [{"rs232": {"port": 1, "link": "x"}}]},
         ]
         for document in damages:
             self.assertFalse(validator.is_valid(document), document)
@@ -653,7 +653,7 @@ class DocsAndSchemaTest(unittest.TestCase):
         accepted = [{"controllers": [{}]}, {"port": 0, "controllers": [{"unit_id": 247, "port": 65535}]},
                     {"controllers": [{"timing": {"pac_cycle_ms": 1}, "modules": {"ctrl": True, "axes": 8}}]},
                     {"controllers": [{"rs232": {"port": 0, "baud": 115200}}]},
-                    {"controllers": [{"rs232": {"pty": True, "link": "/tmp/pacsim-link"}}]}]
+                    {"controllers": [{"rs232": {"pty": True, "link": "pacsim-link"}}]}]
         for document in accepted:
             self.assertTrue(validator.is_valid(document), document)
             self.assertTrue(self.check(document), document)
