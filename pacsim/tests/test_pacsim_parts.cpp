@@ -1,0 +1,181 @@
+// pac-sim's parts without a socket: which Modbus requests CheckRequest lets through and where (at every edge of
+// the protocol's quantities and of the map), the register layout of the images, and a controller whose
+// registers written at one time reach the simulated PA-CONTROL as one bus image.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "modbus_request.hpp"
+#include "pac/sim/image8.hpp"
+#include "register_map.hpp"
+#include "sim_config.hpp"
+#include "simulated_controller.hpp"
+
+namespace {
+
+using pac::pacsim::CheckRequest;
+using pac::pacsim::kFromPacHoldingBase;
+using pac::pacsim::RegisterMap;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr int kRegisters = 20;  // CMD, CTRL, two axis modules
+
+void Put(Bytes& pdu, int word) {
+    pdu.push_back(static_cast<std::uint8_t>(word >> 8));
+    pdu.push_back(static_cast<std::uint8_t>(word));
+}
+
+Bytes Read(int function, int address, int count) {
+    Bytes pdu{static_cast<std::uint8_t>(function)};
+    Put(pdu, address);
+    Put(pdu, count);
+    return pdu;
+}
+
+Bytes WriteMultiple(int address, int count) {
+    Bytes pdu = Read(16, address, count);
+    pdu.push_back(static_cast<std::uint8_t>(2 * count));
+    pdu.resize(pdu.size() + 2 * static_cast<std::size_t>(count));
+    return pdu;
+}
+
+Bytes ReadWrite(int readAddress, int readCount, int writeAddress, int writeCount) {
+    Bytes pdu = Read(23, readAddress, readCount);
+    Put(pdu, writeAddress);
+    Put(pdu, writeCount);
+    pdu.push_back(static_cast<std::uint8_t>(2 * writeCount));
+    pdu.resize(pdu.size() + 2 * static_cast<std::size_t>(writeCount));
+    return pdu;
+}
+
+int Exception(const Bytes& pdu) { return CheckRequest(pdu.data(), pdu.size(), kRegisters).exception; }
+
+TEST(CheckRequest, ServesTheFiveFunctionCodesAndNoOther) {
+    EXPECT_EQ(Exception(Read(3, 0, 1)), 0);
+    EXPECT_EQ(Exception(Read(4, 0, 1)), 0);
+    EXPECT_EQ(Exception(Read(6, 0, 0)), 0);
+    EXPECT_EQ(Exception(WriteMultiple(0, 1)), 0);
+    EXPECT_EQ(Exception(ReadWrite(0, 1, 0, 1)), 0);
+    for (int function : {0, 1, 2, 5, 7, 8, 15, 17, 22, 24, 43, 127, 128, 255}) {
+        EXPECT_EQ(Exception(Read(function, 0, 1)), pac::pacsim::kIllegalFunction) << function;
+    }
+    EXPECT_EQ(CheckRequest(nullptr, 0, kRegisters).exception, pac::pacsim::kIllegalFunction);
+}
+
+TEST(CheckRequest, ReadsReachToPacAndFromPacAndNothingBetween) {
+    EXPECT_EQ(Exception(Read(3, 0, kRegisters)), 0);
+    EXPECT_EQ(Exception(Read(3, 0, kRegisters + 1)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(3, kRegisters, 1)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(3, kFromPacHoldingBase - 1, 1)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(3, kFromPacHoldingBase, kRegisters)), 0);
+    EXPECT_EQ(Exception(Read(3, kFromPacHoldingBase + kRegisters - 1, 2)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(3, 0xFFFF, 125)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(4, kRegisters - 1, 1)), 0);
+    EXPECT_EQ(Exception(Read(4, kRegisters - 1, 2)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(4, kFromPacHoldingBase, 1)), pac::pacsim::kIllegalDataAddress);
+}
+
+TEST(CheckRequest, WritesReachToPacOnly) {
+    const auto single = CheckRequest(Read(6, kRegisters - 1, 7).data(), 5, kRegisters);
+    EXPECT_EQ(single.exception, 0);
+    EXPECT_EQ(single.writeFirst, kRegisters - 1);
+    EXPECT_EQ(single.writeCount, 1);
+    EXPECT_EQ(Exception(Read(6, kRegisters, 7)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(Read(6, kFromPacHoldingBase, 7)), pac::pacsim::kIllegalDataAddress);
+    const Bytes whole = WriteMultiple(4, 16);
+    const auto multiple = CheckRequest(whole.data(), whole.size(), kRegisters);
+    EXPECT_EQ(multiple.exception, 0);
+    EXPECT_EQ(multiple.writeFirst, 4);
+    EXPECT_EQ(multiple.writeCount, 16);
+    EXPECT_EQ(Exception(WriteMultiple(4, 17)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(WriteMultiple(kFromPacHoldingBase, 1)), pac::pacsim::kIllegalDataAddress);
+    const Bytes both = ReadWrite(kFromPacHoldingBase, kRegisters, 8, 6);
+    const auto readWrite = CheckRequest(both.data(), both.size(), kRegisters);
+    EXPECT_EQ(readWrite.exception, 0);
+    EXPECT_EQ(readWrite.writeFirst, 8);
+    EXPECT_EQ(readWrite.writeCount, 6);
+    EXPECT_EQ(Exception(ReadWrite(0, 1, kFromPacHoldingBase, 1)), pac::pacsim::kIllegalDataAddress);
+    EXPECT_EQ(Exception(ReadWrite(kRegisters, 1, 0, 1)), pac::pacsim::kIllegalDataAddress);
+}
+
+TEST(CheckRequest, QuantitiesAtTheProtocolsEdges) {
+    const int wide = 1024 + 200;  // a map wide enough that only the quantity decides
+    auto exception = [wide](const Bytes& pdu) { return CheckRequest(pdu.data(), pdu.size(), wide).exception; };
+    EXPECT_EQ(exception(Read(3, 0, 125)), 0);
+    EXPECT_EQ(exception(Read(3, 0, 126)), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(Read(4, 0, 0)), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(WriteMultiple(0, 123)), 0);
+    EXPECT_EQ(exception(WriteMultiple(0, 124)), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(WriteMultiple(0, 0)), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(ReadWrite(0, 125, 0, 121)), 0);
+    EXPECT_EQ(exception(ReadWrite(0, 126, 0, 1)), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(ReadWrite(0, 1, 0, 122)), pac::pacsim::kIllegalDataValue);
+    // A byte count that does not match the quantity, and a frame shorter than its own fields.
+    Bytes mismatch = WriteMultiple(0, 2);
+    mismatch[5] = 3;
+    EXPECT_EQ(exception(mismatch), pac::pacsim::kIllegalDataValue);
+    Bytes shortValues = WriteMultiple(0, 2);
+    shortValues.pop_back();
+    EXPECT_EQ(exception(shortValues), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(Bytes{3, 0, 0, 0}), pac::pacsim::kIllegalDataValue);
+    EXPECT_EQ(exception(Bytes{23, 0, 0, 0, 1, 0, 0, 0, 1}), pac::pacsim::kIllegalDataValue);
+}
+
+TEST(RegisterMap, ModulesStartAtHalfTheirByteOffset) {
+    const RegisterMap map(pac::sim::ModuleLayout{true, 8});
+    ASSERT_EQ(map.Modules().size(), 10U);
+    EXPECT_EQ(map.Registers(), 56);
+    EXPECT_EQ(map.Modules()[1].name, "CTRL");
+    EXPECT_EQ(map.Modules()[1].firstRegister, 4);
+    EXPECT_EQ(map.Modules()[9].name, "AXIS 8");
+    EXPECT_EQ(map.Modules()[9].firstRegister, 50);
+    EXPECT_EQ(RegisterMap(pac::sim::ModuleLayout{}).Registers(), 4);
+}
+
+TEST(RegisterMap, ByteTwoNIsTheHighByteOfRegisterN) {
+    pac::sim::ProcessImage image(16);
+    RegisterMap::WriteRegisters(image, 1, {0x1234, 0xABCD});
+    EXPECT_EQ(image[2], 0x12);
+    EXPECT_EQ(image[3], 0x34);
+    EXPECT_EQ(image[4], 0xAB);
+    EXPECT_EQ(image[5], 0xCD);
+    const auto registers = RegisterMap::ToRegisters(image);
+    ASSERT_EQ(registers.size(), 8U);
+    EXPECT_EQ(registers[1], 0x1234);
+    EXPECT_EQ(registers[2], 0xABCD);
+    EXPECT_THROW(RegisterMap::WriteRegisters(image, 7, {1, 2}), std::out_of_range);
+}
+
+TEST(SimulatedController, RegistersWrittenTogetherArriveAsOneImage) {
+    const auto config = pac::pacsim::SimConfigLoader::FromText(
+        R"({"controllers": [{"timing": {"pac_cycle_ms": 5, "boot_ms": 50}, "modules": {"ctrl": true, "axes": 1}}]})");
+    pac::pacsim::SimulatedController controller(config.controllers.at(0));
+    using std::chrono::milliseconds;
+    controller.CatchUp(milliseconds(60));
+    // Write N3 := 333 (0906, manual 5.2.4) as the four registers of the CMD module in one write, SEND toggled.
+    controller.WriteToPac(milliseconds(60), 0, {0, 333, 3, 0x8000 | 0x0906});
+    controller.CatchUp(milliseconds(80));
+    EXPECT_EQ(controller.Controller().Io().intRegisters.GetInt(3), 333);
+    const auto reply = controller.FromPacRegisters();
+    EXPECT_EQ(reply[3] & 0xA000, 0xA000) << "RF = SEND, BF";
+    EXPECT_EQ(reply[1], 333);
+    EXPECT_EQ(controller.ToPacRegisters()[3], 0x8906);
+}
+
+TEST(SimConfigLoader, DefaultsAndThePortOverride) {
+    const auto config = pac::pacsim::SimConfigLoader::FromText(R"({"controllers": [{}, {"port": 7000}]})", 0);
+    ASSERT_EQ(config.controllers.size(), 2U);
+    EXPECT_EQ(config.controllers[0].name, "pac1");
+    EXPECT_EQ(config.controllers[0].port, 0);
+    EXPECT_EQ(config.controllers[0].unitId, 1);
+    EXPECT_EQ(config.controllers[1].name, "pac2");
+    EXPECT_EQ(config.controllers[1].port, 7000);
+    EXPECT_EQ(config.controllers[1].unitId, 2);
+    EXPECT_FALSE(config.controllers[0].rs232);
+    EXPECT_EQ(pac::pacsim::SimConfigLoader::FromText(R"({"controllers": [{}]})").controllers[0].port,
+              pac::pacsim::kDefaultPort);
+}
+
+}  // namespace
