@@ -1,11 +1,13 @@
 /* Bounded model-checking harness of the CMD interface (manual 2.4): FB_PAC_CmdInterface with CALLERS
  * FB_PAC_Cmd on one channel, on the C that pacst generates from st/, for K scans (docs/verification.md).
  * Free: every byte the controller sends except the RECEIVE flag, which follows the protocol (below); the
- * programmer's Execute, Code, Param and Data in every scan (SetPins); each FB's Timeout and EndTimeout (a few ms);
- * TwoStepWrite; the call order of the callers; the bus latency (the controller reads a module 0..LAG scans
- * old, skipping any); the controller's reading of the handshake (a new command is SEND <> RECEIVE, or a
- * SEND changed since the last module it read) and its restart (RECEIVE back to 0 or to the last SEND).
- * With CALLERS = 2 the second FB sends only stops (0600, 0A93, 0A9A), which may overtake.
+ * programmer's Execute, Code, Param and Data in every scan the FB is called (SetPins); whether each FB is called
+ * in a scan (a CASE step or an IF branch leaves it out: the calling contract of docs/fb/FB_PAC_Cmd.md); each
+ * FB's Timeout and EndTimeout (a few ms); TwoStepWrite; the call order of the callers, anew in every scan; the
+ * bus latency (the controller reads a module 0..LAG scans old, skipping any); the controller's reading of the
+ * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
+ * (RECEIVE back to 0 or to the last SEND). With CALLERS = 2 the second FB sends any command too. The controller
+ * keeps a ledger of the commands it took; P5 matches every Done with an entry of its own.
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
@@ -52,9 +54,12 @@ typedef struct {
     BOOL lastSend;        /* the SEND flag of that module */
     BOOL bySendChange;    /* its reading: a new command is a changed SEND (else SEND <> RECEIVE) */
     int takenScan;        /* the scan it took its last command in (0: none) */
-    WORD takenCode, takenParam;
-    DWORD takenData;
     int taken;            /* commands taken that were not the parked read */
+    int ledger;           /* entries in the ledger below: every command it took, the parked read too */
+    int ledgerScan[CBMC__K + 1];
+    WORD ledgerCode[CBMC__K + 1], ledgerParam[CBMC__K + 1];
+    DWORD ledgerData[CBMC__K + 1];
+    BOOL ledgerClaimed[CBMC__K + 1]; /* an FB ended Done for it */
     BOOL processingLong;  /* it acknowledged a long command and has not ended it */
     int downSince;        /* restarting since this scan (0: running) */
 } Controller;
@@ -111,9 +116,14 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
                              "P6 only a stop or the parked read while a command is processing");
             c->receive = send;
             c->takenScan = n;
-            c->takenCode = code;
-            c->takenParam = Word(module, 4);
-            c->takenData = Dword(module);
+            if (c->ledger <= CBMC__K) {
+                c->ledgerScan[c->ledger] = n;
+                c->ledgerCode[c->ledger] = code;
+                c->ledgerParam[c->ledger] = Word(module, 4);
+                c->ledgerData[c->ledger] = Dword(module);
+                c->ledgerClaimed[c->ledger] = FALSE;
+                c->ledger++;
+            }
             if (!parked) c->taken++;
             c->processingLong = IsLong(code);
         }
@@ -137,19 +147,19 @@ typedef struct {
     DWORD data;
 } Watch;
 
-/* The programmer's pins, every scan. Code comes from one representative of each class the FBs tell apart
- * (a short command, the parked read's own code, a long move, each stop, a code with bit 15 set); the second
- * caller sends only stops. Param and Data take two values each: enough to tell two commands apart. */
+/* The programmer's pins, in every scan the FB is called. Code comes from one representative of each class the
+ * FBs tell apart (a short command, the parked read's own code, a long move, each stop, a code with bit 15 set),
+ * for either caller. Param and Data take two values each: enough to tell two commands apart. */
 static const WORD codes[] = {0x1906, 0x190B, 0x0A87, 0x0600, 0x0A93, 0x0A9A, 0x9906};
-static void SetPins(FB_PAC_CMD *fb, int who) {
+static void SetPins(FB_PAC_CMD *fb) {
     fb->EXECUTE.value = nondet_bool();
     const unsigned char pick = nondet_uchar();
-    fb->CODE.value = who == 1 ? codes[3 + pick % 3] : codes[pick % (sizeof codes / sizeof codes[0])];
+    fb->CODE.value = codes[pick % (sizeof codes / sizeof codes[0])];
     fb->PARAM.value = nondet_bool();
     fb->DATA.value = nondet_bool();
 }
 
-static void Check(const FB_PAC_CMD *fb, Watch *w, const Controller *c, int n, BOOL edge) {
+static void Check(const FB_PAC_CMD *fb, Watch *w, Controller *c, int n, BOOL edge) {
     const BOOL wasDone = w->plcopen.done;
     if (CheckPlcOpen(&w->plcopen, fb->EXECUTE.value, edge, fb->BUSY.value, fb->DONE.value, fb->ERROR.value, FALSE,
                      fb->ERRORID.value)) {
@@ -160,9 +170,17 @@ static void Check(const FB_PAC_CMD *fb, Watch *w, const Controller *c, int n, BO
         w->data = fb->DATA.value;
     }
     if (fb->DONE.value && !wasDone) {
-        __CPROVER_assert(c->takenScan >= w->edgeScan && c->takenCode == w->code && c->takenParam == w->param
-                             && c->takenData == w->data,
-                         "P5 Done only for a command the controller took, with its own answer");
+        /* An entry of the ledger taken after the edge, with the command's code, parameter and data, that no
+         * other Done claimed. */
+        int match = -1;
+        for (int k = 0; k <= CBMC__K; ++k) {
+            if (match < 0 && k < c->ledger && !c->ledgerClaimed[k] && c->ledgerScan[k] > w->edgeScan
+                && c->ledgerCode[k] == w->code && c->ledgerParam[k] == w->param && c->ledgerData[k] == w->data) {
+                match = k;
+            }
+        }
+        __CPROVER_assert(match >= 0, "P5 Done only for a command the controller took after the edge, once");
+        if (match >= 0) c->ledgerClaimed[match] = TRUE;
     }
 }
 
@@ -180,8 +198,9 @@ int main(void) {
     Controller ctrl = {0};
     BYTE reply[8] = {0, 0, 0, 0, 0, 1, 0x20, 0}; /* home position, nothing outstanding */
     const BOOL twoStep = nondet_bool();
-    const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
+    int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0;
+    BOOL skippedWhileBusy[CBMC__CALLERS];
 
     ctrl.bySendChange = nondet_bool();
     __CURRENT_TIME = __time_make(0, 0);
@@ -190,6 +209,7 @@ int main(void) {
     for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
+        skippedWhileBusy[i] = FALSE;
         FB_PAC_CMD_init__(&cmd[i], FALSE);
         /* Timeout at least the bus round trip (TMIN); a shorter one (D1, docs/verification.md) is checked
          * with -DCBMC__TMIN=1. */
@@ -205,19 +225,32 @@ int main(void) {
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         if (n > 1) ControllerStep(&ctrl, n, twoStep, reply);
-        BOOL edge[CBMC__CALLERS];
+        BOOL edge[CBMC__CALLERS], called[CBMC__CALLERS];
         for (int i = 0; i < CBMC__CALLERS; ++i) {
+            /* A caller left out of a scan keeps its pins: a program assigns them in the call it does not make. */
+            called[i] = nondet_bool();
             const BOOL before = cmd[i].EXECUTE.value;
-            SetPins(&cmd[i], i);
+            if (called[i]) SetPins(&cmd[i]);
             edge[i] = cmd[i].EXECUTE.value && !before;
+            if (!called[i] && cmd[i].BUSY.value) {
+                skippedWhileBusy[i] = TRUE;
+                reachSkippedBusy = 1;
+            }
         }
         for (int i = 0; i < 8; ++i) iface.CHANNEL.value.FROMPAC.table[i] = reply[i];
         FB_PAC_CMDINTERFACE_body__(&iface);
-        /* Each call with a constant index: a pointer to cmd[symbolic] would split every access in the body. */
+        /* The call order anew in every scan. Each call with a constant index: a pointer to cmd[symbolic] would
+         * split every access in the body. */
+        const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
         if (reversed) {
-            for (int i = CBMC__CALLERS - 1; i >= 0; --i) CallCmd(&cmd[i], &iface);
+            reachReversed = 1;
+            for (int i = CBMC__CALLERS - 1; i >= 0; --i) {
+                if (called[i]) CallCmd(&cmd[i], &iface);
+            }
         } else {
-            for (int i = 0; i < CBMC__CALLERS; ++i) CallCmd(&cmd[i], &iface);
+            for (int i = 0; i < CBMC__CALLERS; ++i) {
+                if (called[i]) CallCmd(&cmd[i], &iface);
+            }
         }
         for (int j = CBMC__LAG + 1; j > 0; --j) {
             for (int i = 0; i < 8; ++i) recent[j][i] = recent[j - 1][i];
@@ -226,6 +259,8 @@ int main(void) {
         int edges = 0;
         for (int i = 0; i < CBMC__CALLERS; ++i) {
             if (cmd[i].DONE.value) reachDone = 1;
+            if (cmd[i].DONE.value && skippedWhileBusy[i]) reachDoneAfterSkip = 1;
+            if (i == 1 && cmd[i].DONE.value && !IsStop(cmd[i].CODE.value)) reachSecondDone = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value == SUPERSEDED) reachSuperseded = 1;
@@ -250,7 +285,7 @@ int main(void) {
         tl_to_pac = Bytes8(recent[0]);
         tl_scan = n;
         for (int i = 0; i < CBMC__CALLERS; ++i) {
-            Check(&cmd[i], &watch[i], &ctrl, n, edge[i]);
+            if (called[i]) Check(&cmd[i], &watch[i], &ctrl, n, edge[i]);
             edges += watch[i].edges;
         }
         /* P7: a toggle is one new command; the parked read aside, none goes out without an edge. */
@@ -260,10 +295,16 @@ int main(void) {
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with a controller code");
     __CPROVER_assert(iface.RESYNCS.value == 0, "reach: a resynchronisation");
+    __CPROVER_assert(!reachSkippedBusy, "reach: a caller left out of a scan while Busy");
+    __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
 #if CBMC__CALLERS > 1
     __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
+    __CPROVER_assert(!reachReversed, "reach: the second caller called first");
+    __CPROVER_assert(!reachSecondDone, "reach: the second caller Done with a command other than a stop");
 #else
     (void)reachSuperseded;
+    (void)reachReversed;
+    (void)reachSecondDone;
 #endif
     return 0;
 }
