@@ -3,7 +3,7 @@
 #include <iostream>
 #include <pthread.h>
 
-#include "cli.hpp"
+#include "server_cli.hpp"
 
 int main(int argc, char** argv) {
     // Before any thread starts, so every thread inherits the mask and the run takes the signals in one place.
