@@ -778,6 +778,31 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
     EXPECT_FALSE(rig.moveRel->COMMANDABORTED.value);
 }
 
+// cmd_abort_online 0A81 (5.2.6.1): "positioning is stopped", ONLINE ends. Like the other stops it overtakes a
+// running move (F_PAC_IsStopCommand, F_PAC_IsStopOver): it goes out while the move processes, not after
+// Timeout with 16#8006, the axis stops short of its target and the move FB is aborted, not Done.
+TEST(ParameterAxisFbsOverSim, AbortOnlineOvertakesARunningMove) {
+    AxisRig rig({1, 3, 1});
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 3000.0F;
+    rig.Start(rig.moveAbs);
+    int guard = 0;
+    while (!rig.moveAbs->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(rig.Motion(1).Moving());
+    rig.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
+    rig.cmd->PARAM.value = 0;
+    rig.cmd->DATA.value = 0;
+    rig.cmd->TIMEOUT.value = pac::ToIecTime(200ms);
+    const FinalOutcome aborted = rig.Run(rig.cmd);
+    EXPECT_TRUE(aborted.Done()) << aborted;
+    EXPECT_EQ(rig.Controller().OperatingStatus(), 1) << "HOME POSITION";
+    rig.Settle(200);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    EXPECT_LT(rig.Motion(1).Position(), 3000.0);
+    EXPECT_FALSE(rig.moveAbs->DONE.value) << "the move never reached its target";
+}
+
 // A move and the stop of its axis edged in one scan, the move's FB called first, with the two-step write:
 // the stop takes the interface between the move's data and its toggle, the move never goes out, and its
 // FB shows CommandAborted (16#8016 inside), never Done with the stop's answer (issue 24, item 1).
