@@ -85,6 +85,13 @@ public:
         moveAbs->POSITION.value = position;
         moveAbs->FREEINTERFACE.value = TRUE;
     }
+    // Axis 2 to `position` by 0A87, which holds the CMD interface to its end (5.2.6.6): other commands queue.
+    void StartInterfaceHoldingMove(float position) {
+        moveAbs->AXIS.value = 2;
+        moveAbs->POSITION.value = position;
+        moveAbs->FREEINTERFACE.value = FALSE;
+        Start(moveAbs);
+    }
     // Axis 1 toward `target` by 0A90, once Traverse rises.
     void AimJog(float target) {
         jog->AXIS.value = 1;
@@ -441,10 +448,7 @@ TEST_P(CommandSetFbs, ManualTraverseReleasedBeforeItsStartWentOutSendsNothing) {
     CommandSetRig rig(GetParam());
     ASSERT_TRUE(rig.GoOnline());
     const double start = rig.Motion(1).Position();
-    rig.moveAbs->AXIS.value = 2;
-    rig.moveAbs->POSITION.value = 300.0F;
-    rig.moveAbs->FREEINTERFACE.value = FALSE;
-    rig.Start(rig.moveAbs);
+    rig.StartInterfaceHoldingMove(300.0F);
     rig.AimJog(5000.0F);
     rig.jog->TRAVERSE.value = TRUE;
     rig.SettleFor(50ms);
@@ -472,10 +476,7 @@ TEST_P(CommandSetFbs, ManualTraverseReleasedWhileAKeepAliveWaitsIsStoppedFirst) 
     rig.ScanWhile([&] { return rig.Count(0x0A92) == 0; });
     const std::uint64_t alive = rig.Count(0x0A92);
     ASSERT_EQ(alive, 1u);
-    rig.moveAbs->AXIS.value = 2;
-    rig.moveAbs->POSITION.value = 400.0F;
-    rig.moveAbs->FREEINTERFACE.value = FALSE;
-    rig.Start(rig.moveAbs);
+    rig.StartInterfaceHoldingMove(400.0F);
     rig.SettleFor(300ms);  // the next keep-alive is due 250 ms after the last one's acknowledgement
     ASSERT_TRUE(rig.moveAbs->BUSY.value) << "0A87 still holds the interface";
     ASSERT_EQ(rig.Count(0x0A92), alive) << "the keep-alive waits behind 0A87";

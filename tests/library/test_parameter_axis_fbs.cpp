@@ -754,6 +754,16 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, ParameterAxisFbs,
                          ::testing::ValuesIn(pac::test::BusTimingGrid({1, 5}, {3, 10}, {0, 2})),
                          pac::test::BusTimingName);
 
+// Starts the move `fb` of `axis` and scans until the controller has taken it over and the axis moves.
+template <class Fb>
+void StartTakenOverMove(AxisRig& rig, pac::FbInstance<Fb>& fb, int axis) {
+    rig.Start(fb);
+    int guard = 0;
+    while (!fb->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(fb->ACTIVE.value);
+    ASSERT_TRUE(rig.Motion(axis).Moving());
+}
+
 // PLCopen's CommandAborted for the long commands other than the absolute move (which the timing grid above
 // covers). A command owns the CMD interface until its end of processing; only a stop of what it runs may
 // overtake it (F_PAC_IsStopOver), and the PA-CONTROL then reports the stop alone: the move FB is aborted.
@@ -762,11 +772,7 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
     ASSERT_TRUE(rig.GoOnline());
     rig.moveRel->AXIS.value = 2;
     rig.moveRel->DISTANCE.value = 300.0F;
-    rig.Start(rig.moveRel);
-    int guard = 0;
-    while (!rig.moveRel->ACTIVE.value && guard++ < 1000) rig.Settle(1);
-    ASSERT_TRUE(rig.moveRel->ACTIVE.value);
-    ASSERT_TRUE(rig.Motion(2).Moving());
+    ASSERT_NO_FATAL_FAILURE(StartTakenOverMove(rig, rig.moveRel, 2));
     rig.stop->AXIS.value = 2;
     ASSERT_TRUE(rig.Run(rig.stop).Done());
     EXPECT_TRUE(rig.moveRel->COMMANDABORTED.value);
@@ -786,10 +792,7 @@ TEST(ParameterAxisFbsOverSim, AbortOnlineOvertakesARunningMove) {
     ASSERT_TRUE(rig.GoOnline());
     rig.moveAbs->AXIS.value = 1;
     rig.moveAbs->POSITION.value = 3000.0F;
-    rig.Start(rig.moveAbs);
-    int guard = 0;
-    while (!rig.moveAbs->ACTIVE.value && guard++ < 1000) rig.Settle(1);
-    ASSERT_TRUE(rig.Motion(1).Moving());
+    ASSERT_NO_FATAL_FAILURE(StartTakenOverMove(rig, rig.moveAbs, 1));
     rig.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
     rig.cmd->PARAM.value = 0;
     rig.cmd->DATA.value = 0;
@@ -800,7 +803,8 @@ TEST(ParameterAxisFbsOverSim, AbortOnlineOvertakesARunningMove) {
     rig.Settle(200);
     EXPECT_FALSE(rig.Motion(1).Moving());
     EXPECT_LT(rig.Motion(1).Position(), 3000.0);
-    EXPECT_FALSE(rig.moveAbs->DONE.value) << "the move never reached its target";
+    EXPECT_TRUE(rig.moveAbs->COMMANDABORTED.value) << "stopped short of its target";
+    EXPECT_FALSE(rig.moveAbs->DONE.value || rig.moveAbs->ERROR.value);
 }
 
 // A move and the stop of its axis edged in one scan, the move's FB called first, with the two-step write:
