@@ -787,8 +787,8 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
 // cmd_abort_online 0A81 (5.2.6.1): "positioning is stopped", ONLINE ends. Like the other stops it overtakes a
 // running move (F_PAC_IsStopCommand, F_PAC_IsStopOver): it goes out while the move processes, not after
 // Timeout with 16#8006, the axis stops short of its target and the move FB is aborted, not Done.
-TEST(ParameterAxisFbsOverSim, AbortOnlineOvertakesARunningMove) {
-    AxisRig rig({1, 3, 1});
+TEST_P(ParameterAxisFbs, AbortOnlineOvertakesARunningMove) {
+    AxisRig rig(Param());
     ASSERT_TRUE(rig.GoOnline());
     rig.moveAbs->AXIS.value = 1;
     rig.moveAbs->POSITION.value = 3000.0F;
