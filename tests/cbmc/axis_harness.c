@@ -47,6 +47,9 @@ int main(void) {
     int waitScans = 0;         /* Busy scans of the job without ACTIVE since its edge (before the take-over) */
     BOOL takenOver = FALSE;    /* the job saw ACTIVE */
     int reachAbortEnded = 0;
+    BOOL activeSinceStart = FALSE; /* ACTIVE seen since Start last rose on the wire */
+    BOOL leftSinceStart = FALSE;   /* a known status other than ONLINE running (31) seen since then */
+    int reachRefusedNotOnline = 0;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
@@ -74,7 +77,7 @@ int main(void) {
         /* A job starts with an Execute edge or a jog button's edge. */
         const BOOL edge = (axis.EXECUTE.value && !before) || (axis.JOGPOSITIVE.value && !jogPos)
                           || (axis.JOGNEGATIVE.value && !jogNeg);
-        const BOOL wasBusy = axis.BUSY.value;
+        const BOOL wasBusy = axis.BUSY.value, doneBefore = axis.DONE.value;
         BYTE module[12];
         for (int i = 0; i < 12; ++i) module[i] = axis.TOPAC.value.table[i];
         FB_PAC_AXIS_body__(&axis);
@@ -100,6 +103,21 @@ int main(void) {
         BOOL same = TRUE;
         for (int i = 0; i < 12; ++i) same = same && out[i] == module[i];
         __CPROVER_assert(Owns(lastStatus) || same, "A1 the axis module written only in HOME POSITION and ONLINE");
+        /* A6: a job only where the controller runs it (2.7: ONLINE): Start rises on the wire only while the last
+         * known operating status is 31, ONLINE running. */
+        const BOOL startBefore = (module[3] & 0x04u) != 0, startNow = (out[3] & 0x04u) != 0;
+        __CPROVER_assert(!(startNow && !startBefore) || lastStatus == 31, "A6 Start rises only in ONLINE running");
+        /* A7: never Done on silence outside ONLINE running: a job that saw no ACTIVE since its Start ends Done
+         * only if no known status but 31 was seen since then. */
+        if (startNow && !startBefore) {
+            activeSinceStart = FALSE;
+            leftSinceStart = FALSE;
+        }
+        activeSinceStart = activeSinceStart || axis.ACTIVE.value;
+        leftSinceStart = leftSinceStart || (axis.OPSTATUS.value != 0 && axis.OPSTATUS.value != 31);
+        __CPROVER_assert(!(axis.DONE.value && !doneBefore) || activeSinceStart || !leftSinceStart,
+                         "A7 Done without ACTIVE only if ONLINE ran since the Start");
+        if (axis.ERROR.value && axis.ERRORID.value == 0x8025) reachRefusedNotOnline = 1;
         /* A2: one job at a time: at most one traverse bit in the control word (bytes 0..3). */
         const unsigned word = ((unsigned)out[0] << 24) | ((unsigned)out[1] << 16) | ((unsigned)out[2] << 8) | out[3];
         const unsigned traverse = word & TRAVERSE_BITS;
@@ -137,5 +155,6 @@ int main(void) {
     __CPROVER_assert(!reachPacError, "reach: Error with the controller's CMD error number");
     __CPROVER_assert(!reachAborted, "reach: CommandAborted");
     __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
+    __CPROVER_assert(!reachRefusedNotOnline, "reach: a job refused outside ONLINE running (16#8025)");
     return 0;
 }

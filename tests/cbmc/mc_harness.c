@@ -58,6 +58,9 @@ static void CallReset(void) {
 int main(void) {
     PlcOpenWatch stopWatch = {0}, moveWatch = {0}, haltWatch = {0}, resetWatch = {0};
     BOOL stopHeld = FALSE; /* the stop's edge was accepted and its Execute has stayed TRUE since */
+    BOOL lastWasStop = FALSE; /* the last request accepted was the stop's */
+    BOOL braking = FALSE;     /* after the last scan: lastWasStop, and the axis showed ACTIVE */
+    int reachBrakingRefused = 0;
     int reachStopDone = 0, reachHeld = 0, reachMoveBusy = 0, reachMoveAborted = 0, reachReleased = 0;
     int reachHaltDone = 0, reachResetDone = 0, reachStopFailedHeld = 0, resetBusySeen = 0;
 
@@ -177,9 +180,21 @@ int main(void) {
                          "MC4 a held stop keeps the axis in Stopping");
         __CPROVER_assert(!heldBefore || (!(moveEdge && move.BUSY.value) && !(haltEdge && halt.BUSY.value)),
                          "MC4 no move accepted while a stop is held");
-        /* MC5: once the stop's Execute is FALSE and the stop is over, the axis is not left in Stopping. */
-        __CPROVER_assert(stop.EXECUTE.value || stop.BUSY.value || state != E_PAC_MCSTATE__PAC_MC_STOPPING,
-                         "MC5 Stopping ends with the stop and its Execute");
+        /* MC5: once the stop's Execute is FALSE, the stop is over and the axis shows no ACTIVE, the axis is not
+         * left in Stopping. */
+        __CPROVER_assert(stop.EXECUTE.value || stop.BUSY.value || ref.STATUS.ACTIVE
+                             || state != E_PAC_MCSTATE__PAC_MC_STOPPING,
+                         "MC5 Stopping ends with the stop, its Execute and ACTIVE");
+        /* MC6: a stop is not undone by letting it go early: after an accepted stop, as long as the axis the blocks
+         * see shows ACTIVE, no move or halt is accepted, whether the stop's Execute is TRUE or not, and the
+         * stop ends with its own outcome, never CommandAborted (there is no other MC_Stop here). */
+        __CPROVER_assert(!braking || (!(moveEdge && move.BUSY.value) && !(haltEdge && halt.BUSY.value)),
+                         "MC6 no move accepted while a stopped axis still shows ACTIVE");
+        __CPROVER_assert(!stop.COMMANDABORTED.value, "MC6 MC_Stop ends with its own outcome");
+        if (braking && moveEdge && move.ERROR.value) reachBrakingRefused = 1;
+        if (stopEdge && (stop.BUSY.value || stop.DONE.value)) lastWasStop = TRUE;
+        if ((moveEdge && move.BUSY.value) || (haltEdge && halt.BUSY.value)) lastWasStop = FALSE;
+        braking = lastWasStop && ref.STATUS.ACTIVE;
 
         if (stop.DONE.value) reachStopDone = 1;
         if (stopHeld && heldBefore) reachHeld = 1;
@@ -198,6 +213,7 @@ int main(void) {
     __CPROVER_assert(!reachMoveAborted, "reach: MC_MoveAbsolute CommandAborted");
     __CPROVER_assert(!reachReleased, "reach: Standstill after the stop is released");
     __CPROVER_assert(!reachStopFailedHeld, "reach: a stop ended with Error held over a scan");
+    __CPROVER_assert(!reachBrakingRefused, "reach: a move refused while a stopped axis shows ACTIVE");
     __CPROVER_assert(!reachHaltDone, "reach: MC_Halt Done");
     __CPROVER_assert(!reachResetDone, "reach: MC_Reset Done after Busy");
     return 0;

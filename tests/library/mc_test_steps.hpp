@@ -32,6 +32,7 @@ inline const std::uint32_t kMcDirection = kGvl["PAC_LIB_ERR_MC_DIRECTION"];
 inline const std::uint32_t kMcHomePosition = kGvl["PAC_LIB_ERR_MC_HOME_POSITION"];
 inline const std::uint32_t kMcRangeEnd = kGvl["PAC_LIB_ERR_MC_RANGE_END"];
 inline const std::uint32_t kStopTimeout = kGvl["PAC_LIB_ERR_STOP_TIMEOUT"];
+inline const std::uint32_t kNotOnline = kGvl["PAC_LIB_ERR_NOT_ONLINE"];
 inline constexpr std::uint16_t kFollowingError = pac::sim::axis_error::kFollowingError;  // the simulator's number
 
 inline constexpr auto kDisabled = E_PAC_MCSTATE__PAC_MC_DISABLED;

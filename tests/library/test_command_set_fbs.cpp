@@ -85,6 +85,13 @@ public:
         moveAbs->POSITION.value = position;
         moveAbs->FREEINTERFACE.value = TRUE;
     }
+    // Axis 2 to `position` by 0A87, which holds the CMD interface to its end (5.2.6.6): other commands queue.
+    void StartInterfaceHoldingMove(float position) {
+        moveAbs->AXIS.value = 2;
+        moveAbs->POSITION.value = position;
+        moveAbs->FREEINTERFACE.value = FALSE;
+        Start(moveAbs);
+    }
     // Axis 1 toward `target` by 0A90, once Traverse rises.
     void AimJog(float target) {
         jog->AXIS.value = 1;
@@ -432,6 +439,62 @@ TEST_P(CommandSetFbs, ManualTraverseEndsAtMaxTimeWithTheLibrarysError) {
     EXPECT_EQ(rig.Count(0x0A9A), 1u);
     rig.SettleFor(300ms);
     EXPECT_FALSE(rig.Motion(2).Moving());
+}
+
+// The jog key pressed and released while another command holds the interface (0A87 of axis 2, to its end): a
+// queued command cannot be withdrawn, so the start waits for an empty queue and is never sent after the release.
+// Nothing goes out, axis 1 never moves, the FB ends Done.
+TEST_P(CommandSetFbs, ManualTraverseReleasedBeforeItsStartWentOutSendsNothing) {
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    const double start = rig.Motion(1).Position();
+    rig.StartInterfaceHoldingMove(300.0F);
+    rig.AimJog(5000.0F);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.SettleFor(50ms);
+    EXPECT_TRUE(rig.jog->BUSY.value);
+    EXPECT_FALSE(rig.jog->ACTIVE.value);
+    rig.jog->TRAVERSE.value = FALSE;
+    ASSERT_TRUE(rig.Wait(rig.moveAbs).Done());
+    rig.Release(rig.moveAbs);
+    rig.SettleFor(300ms);
+    EXPECT_EQ(rig.Count(0x0A90), 0u) << "the start never went out";
+    EXPECT_EQ(rig.Count(0x0A9A), 0u);
+    EXPECT_FALSE(rig.jog->BUSY.value);
+    EXPECT_TRUE(rig.jog->DONE.value);
+    EXPECT_FALSE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.Motion(1).Position(), start);
+}
+
+// The jog key released while the next keep-alive waits behind another command (0A87 of axis 2): the stop takes
+// no ticket and goes out as soon as the interface is free, before the queued keep-alive.
+TEST_P(CommandSetFbs, ManualTraverseReleasedWhileAKeepAliveWaitsIsStoppedFirst) {
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimJog(5000.0F);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.ScanWhile([&] { return rig.Count(0x0A92) == 0; });
+    const std::uint64_t alive = rig.Count(0x0A92);
+    ASSERT_EQ(alive, 1u);
+    rig.StartInterfaceHoldingMove(400.0F);
+    rig.SettleFor(300ms);  // the next keep-alive is due 250 ms after the last one's acknowledgement
+    ASSERT_TRUE(rig.moveAbs->BUSY.value) << "0A87 still holds the interface";
+    ASSERT_EQ(rig.Count(0x0A92), alive) << "the keep-alive waits behind 0A87";
+    rig.jog->TRAVERSE.value = FALSE;
+    bool stopped = false;
+    std::uint64_t aliveAtStop = 0;
+    rig.ScanWhile([&] {
+        if (!stopped && rig.Count(0x0A9A) > 0) {
+            stopped = true;
+            aliveAtStop = rig.Count(0x0A92);
+        }
+        return rig.jog->BUSY.value || rig.moveAbs->BUSY.value;
+    });
+    EXPECT_TRUE(stopped);
+    EXPECT_EQ(aliveAtStop, alive) << "no keep-alive went out after the release before the stop";
+    EXPECT_TRUE(rig.jog->DONE.value);
+    rig.SettleFor(300ms);
+    EXPECT_FALSE(rig.Motion(1).Moving());
 }
 
 // T#0S on KeepAliveInterval and MaxTime means their defaults (250 ms, 60 s): the traverse is kept alive at the

@@ -40,7 +40,7 @@ std::vector<std::uint32_t> ManualErrorNumbers() {
 std::vector<std::uint32_t> LibraryErrorCodes() {
     std::vector<std::uint32_t> codes;
     for (std::uint32_t code = 0x8001; code <= 0x8017; ++code) codes.push_back(code);
-    for (std::uint32_t code = 0x8020; code <= 0x8024; ++code) codes.push_back(code);
+    for (std::uint32_t code = 0x8020; code <= 0x8025; ++code) codes.push_back(code);
     for (std::uint32_t code = 0x8030; code <= 0x8039; ++code) codes.push_back(code);  // the MC_ blocks
     return codes;
 }
@@ -122,7 +122,7 @@ TEST(GvlPac, EveryErrorNumberHasItsOwnText) {
 
 TEST(GvlPac, NumbersOutsideTheTableAreUnknown) {
     for (std::uint32_t n : {1u, 15u, 22u, 25u, 60u, 63u, 66u, 84u, 110u, 249u, 263u, 0x1FFFu, 0x8000u, 0x8019u,
-                            0x801Fu, 0x8025u, 0x802Fu, 0x803Au}) {
+                            0x801Fu, 0x8026u, 0x802Fu, 0x803Au}) {
         EXPECT_EQ(ErrorText(n), "unknown error number") << n;
     }
 }

@@ -50,6 +50,7 @@ const std::uint32_t kErrInvalidVelocity = kGvl["PAC_LIB_ERR_INVALID_VELOCITY"];
 const std::uint32_t kErrInvalidAcceleration = kGvl["PAC_LIB_ERR_INVALID_ACCELERATION"];
 const std::uint32_t kErrInvalidPosition = kGvl["PAC_LIB_ERR_INVALID_POSITION"];
 const std::uint32_t kErrNoCommand = kGvl["PAC_LIB_ERR_NO_COMMAND"];
+const std::uint32_t kErrNotOnline = kGvl["PAC_LIB_ERR_NOT_ONLINE"];
 const std::uint32_t kNoReference = kGvl["PAC_ERR_NO_REFERENCE"];          // 43
 const std::uint32_t kPositionRange = kGvl["PAC_ERR_POSITION_RANGE"];      // 65
 const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];                  // 55
@@ -1315,6 +1316,119 @@ TEST_F(FbPacAxis, ActualPositionFollowsTheFormatWhileTheImageStays) {
     fb_->INTEGERMODE.value = TRUE;
     Cycle(1);
     EXPECT_NEAR(fb_->ACTUALPOSITION.value, 1142947.84, 0.2);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Jobs only where the PA-CONTROL runs them (2.7: "The axes can only be controlled in the ONLINE mode"; 2.7.2
+// notes). The fake axis module answers every Start as an ONLINE controller would, whatever OpStatus says: a
+// job admitted in HOME POSITION or a stopped ONLINE would end Done here, with nothing run on a real one.
+
+// Every status the FB writes the module in, but running ONLINE: the job and the jog are refused in their edge
+// scan with 16#8025, Start never rises, the controller receives no job.
+TEST_F(FbPacAxis, JobsAndJogsOutsideRunningOnlineAreRefusedWithNothingSent) {
+    for (const BYTE opStatus : {BYTE{1}, BYTE{9}, BYTE{30}, BYTE{32}, BYTE{35}, BYTE{37}, BYTE{39}}) {
+        SCOPED_TRACE("operating status " + std::to_string(opStatus));
+        fb_->OPSTATUS.value = opStatus;
+        Settle();
+        const std::size_t jobsBefore = axis_->Jobs().size();
+        SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 100.0f);
+        const Outcome o = Run();
+        EXPECT_TRUE(o.Error()) << o;
+        EXPECT_EQ(o.ErrorId(), kErrNotOnline) << o;
+        EXPECT_EQ(o.Scans(), 0) << "refused in the edge scan";
+        EXPECT_EQ(o.startScan, -1) << "no Start";
+        fb_->JOGPOSITIVE.value = TRUE;
+        Cycle(1);
+        EXPECT_TRUE(Error());
+        EXPECT_EQ(fb_->ERRORID.value, kErrNotOnline);
+        EXPECT_FALSE(StartBit());
+        fb_->JOGPOSITIVE.value = FALSE;
+        Cycle(1);
+        EXPECT_EQ(axis_->Jobs().size(), jobsBefore) << "no job reached the controller";
+    }
+}
+
+// ONLINE ends (STOP ONLINE: 35) while Start is up and the controller has not answered it. A job that may be
+// complete without ACTIVE (G29) would be Done after the take-over bound on silence; outside running ONLINE
+// silence says nothing: the job ends with 16#8025, never Done.
+TEST_F(FbPacAxis, SilenceAfterOnlineEndedIsNoSignThatAJobRan) {
+    Settle();
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 10.0f);
+    ASSERT_TRUE(Run().Done()) << "a first job measures the take-over";
+    Cycle(kPacUpdateScans);
+    axis_->Mute(true);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 100.0f);
+    Execute(true);
+    Cycle(1);
+    ASSERT_TRUE(StartBit());
+    fb_->OPSTATUS.value = 35;
+    ASSERT_TRUE(RunUntil([&] { return Final(); }, 3 * kTimeoutScans, "final output"));
+    EXPECT_FALSE(Done()) << "the controller never answered";
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrNotOnline);
+    EXPECT_FALSE(StartBit());
+}
+
+// A job waiting for the axis (the move it superseded still brakes) when ONLINE ends: its Start never goes out.
+TEST_F(FbPacAxisLongMove, JobWaitingForTheAxisWhenOnlineEndsSendsNothing) {
+    const std::size_t jobsBefore = axis_->Jobs().size();
+    Execute(false);
+    Cycle(1);
+    SetJob(E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION, 100.0f);
+    Execute(true);
+    Cycle(1);
+    ASSERT_TRUE(Aborted()) << "the move it supersedes, for one scan";
+    Cycle(1);
+    ASSERT_TRUE(Busy()) << "waits for the braking axis";
+    ASSERT_TRUE(axis_->IsMoving());
+    fb_->OPSTATUS.value = 35;
+    ASSERT_TRUE(RunUntil([&] { return Final() || StartBit(); }, 3 * kTimeoutScans, "final output"));
+    EXPECT_FALSE(StartBit());
+    EXPECT_TRUE(Error());
+    EXPECT_EQ(fb_->ERRORID.value, kErrNotOnline);
+    Cycle(kTimeoutScans);
+    EXPECT_EQ(axis_->Jobs().size(), jobsBefore);
+}
+
+// ResetError in HOME POSITION: the PA-CONTROL acts on no control word there (2.7.2 notes), and on the AUTOMATIC
+// layout PAC_AUTOLAYOUT_FW2_N4 bit 16 is flag M1. An edge held back in ONLINE (bit 16 was not 0 for the update
+// time yet) never goes out once ONLINE has ended, nor when ONLINE comes back; a pulse running when ONLINE
+// ends stops in that scan.
+TEST_F(FbPacAxis, ResetPulseNeverOnTheWireOutsideOnline) {
+    Settle();
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch));
+    Cycle(3);
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    ASSERT_NE(ControlWord() & ctrl::kResetAxisError, 0u);
+    ASSERT_TRUE(RunUntil([&] { return (ControlWord() & ctrl::kResetAxisError) == 0; }, 10, "pulse over"));
+    fb_->RESETERROR.value = FALSE;
+    Cycle(1);
+    fb_->RESETERROR.value = TRUE;  // within the update time: held back
+    Cycle(1);
+    ASSERT_EQ(ControlWord() & ctrl::kResetAxisError, 0u);
+    fb_->OPSTATUS.value = 1;
+    for (int i = 0; i < 3 * kPacUpdateScans; ++i) {
+        Cycle(1);
+        ASSERT_EQ(ControlWord() & ctrl::kResetAxisError, 0u) << "HOME POSITION, scan " << i;
+    }
+    fb_->OPSTATUS.value = kOnline;
+    for (int i = 0; i < 3 * kPacUpdateScans; ++i) {
+        Cycle(1);
+        ASSERT_EQ(ControlWord() & ctrl::kResetAxisError, 0u) << "the old edge, ONLINE again, scan " << i;
+    }
+    // A pulse that runs (the cause persists) when ONLINE ends.
+    axis_->RaiseAxisError(static_cast<std::uint16_t>(kLimitSwitch), true);
+    fb_->RESETERROR.value = FALSE;
+    Cycle(1);
+    fb_->RESETERROR.value = TRUE;
+    Cycle(1);
+    ASSERT_NE(ControlWord() & ctrl::kResetAxisError, 0u);
+    fb_->OPSTATUS.value = 1;
+    for (int i = 0; i < kTimeoutScans; ++i) {
+        Cycle(1);
+        ASSERT_EQ(ControlWord() & ctrl::kResetAxisError, 0u) << "HOME POSITION, scan " << i;
+    }
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ const std::uint32_t kAxisOff = kGvl["PAC_ERR_AXIS_OFF"];              // 55
 const std::uint32_t kAxisDisplaced = kGvl["PAC_ERR_AXIS_DISPLACED"];  // 56
 const std::uint32_t kLimitSwitch = kGvl["PAC_ERR_LIMIT_SWITCH"];      // 64
 const std::uint32_t kPositionRange = kGvl["PAC_ERR_POSITION_RANGE"];  // 65
-const std::uint32_t kInadmissible = kGvl["PAC_ERR_INADMISSIBLE_COMMAND"];  // 20
+const std::uint32_t kNotOnline = kGvl["PAC_LIB_ERR_NOT_ONLINE"];
 constexpr std::uint16_t kFollowingError = pac::sim::axis_error::kFollowingError;  // 66, the simulator's number
 
 constexpr auto kHome = E_PAC_AXISCOMMAND__PAC_AX_HOME;
@@ -1092,9 +1092,9 @@ TEST_P(AxisSimTiming, StopOnlineMidMoveIsCommandAbortedAndJobsWaitForTheResume) 
     ctrl->EXECUTE.value = FALSE;
     fb->EXECUTE.value = FALSE;
     rig.Scan();
-    // No jobs while ONLINE is stopped: CMD error 20, passed through.
+    // No jobs while ONLINE is stopped (2.7): refused at the edge, nothing sent.
     const Outcome whileStopped = rig.Run(1, {kRelative, 5.0f});
-    EXPECT_EQ(whileStopped.ErrorId(), kInadmissible) << whileStopped;
+    EXPECT_EQ(whileStopped.ErrorId(), kNotOnline) << whileStopped;
     // The resume does not continue the interrupted job; a new one runs.
     ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
     ctrl->EXECUTE.value = TRUE;
@@ -1105,7 +1105,30 @@ TEST_P(AxisSimTiming, StopOnlineMidMoveIsCommandAbortedAndJobsWaitForTheResume) 
     const Outcome next = rig.Run(1, {kRelative, 5.0f});
     EXPECT_TRUE(next.Done()) << next;
     EXPECT_NEAR(rig.Position(1), stoppedAt + 5.0f, 1e-3);
-    rig.ExpectJobsSeen(1, 3);
+    rig.ExpectJobsSeen(1, 2);
+}
+
+// HOME POSITION after the boot: the FB writes the module (Axis ON for the start of ONLINE), but the PA-CONTROL
+// acts on no control word there (2.7.2 notes). A G29 and a reference run are refused in their edge scan with
+// 16#8025 and no Start reaches the controller; once ONLINE, the same G29 runs.
+TEST_P(AxisSimTiming, JobsInHomePositionAreRefusedWithNothingSent) {
+    AxisSimRig rig(Options());
+    ASSERT_GT(rig.ScanUntil([&] { return rig.Ctrl()->READY.value != 0; }, 200), 0) << "Ready";
+    rig.ScanMs(30);
+    ASSERT_EQ(rig.Pac().OperatingStatus(), 1);
+    for (const auto command : {kSetPosition, kHome}) {
+        const Outcome o = rig.Run(1, {command, 100.0f});
+        EXPECT_TRUE(o.Error()) << o;
+        EXPECT_EQ(o.ErrorId(), kNotOnline) << o;
+        EXPECT_EQ(o.Scans(), 0) << "refused in the edge scan";
+    }
+    rig.ScanMs(30);
+    rig.ExpectJobsSeen(1, 0);
+    rig.GoOnline();
+    const Outcome online = rig.Run(1, {kSetPosition, 100.0f});
+    EXPECT_TRUE(online.Done()) << online;
+    EXPECT_NEAR(rig.Position(1), 100.0f, 1e-3);
+    rig.ExpectJobsSeen(1, 1);
 }
 
 // ---- jog -------------------------------------------------------------------------------------------------

@@ -215,9 +215,50 @@ TEST_P(McSim, AStopThatFailsHoldsStoppingWhileExecuteAndReleasesAfterIt) {
     Release(rig, b.moveB);
     EXPECT_TRUE(b.stop->ERROR.value) << "the stop's Error holds while its Execute is TRUE";
     Release(rig, b.stop);
+    if (rig.Ref(1).STATUS.ACTIVE) {
+        EXPECT_EQ(rig.State(1), kStopping) << "Stopping while the axis brakes";
+    }
     ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
-    rig.Scan();
-    EXPECT_EQ(rig.State(1), kStandstill) << "not left locked once Execute is FALSE";
+    // Standstill once the PLC sees ACTIVE fall: a round trip after the axis stands.
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 100, "not left locked once Execute is FALSE"));
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
+}
+
+// MC_Stop whose Execute falls while the axis still brakes (PLCopen: Stopping until the stop is over): a move
+// edged in any scan in which the axis still shows ACTIVE is refused, never run on the braking axis; and the
+// stop ends with its own outcome, here 16#8022 for one scan, not CommandAborted by a move that came after its
+// end. MC_MoveAbsolute B and MC_MoveRelative take turns, so that some block is edged in every scan.
+TEST_P(McSim, AStopReleasedWhileBrakingHoldsStoppingUntilTheAxisStands) {
+    McRig rig(GetParam(), 1);
+    McBlocks& b = rig.Blocks(1);
+    ASSERT_NO_FATAL_FAILURE(StartMoveThatBrakesLongerThanStopTimeout(rig));
+    Execute(rig, b.stop);
+    Release(rig, b.stop);
+    SetMove(b.moveB, 10.0f);
+    b.relative->POSITION.value = 10.0f;
+    b.relative->VELOCITY.value = 500.0f;
+    int stopFinals = 0;
+    for (int i = 0; i < rig.ScansFor(500) && (rig.Ref(1).STATUS.ACTIVE || b.stop->BUSY.value); ++i) {
+        b.moveB->EXECUTE.value = i % 2 == 0;
+        b.relative->EXECUTE.value = i % 2 == 1;
+        rig.Scan();
+        const pac::test::PlcOpenOutputs edged =
+            i % 2 == 0 ? pac::test::OutputsOf(b.moveB) : pac::test::OutputsOf(b.relative);
+        if (rig.Ref(1).STATUS.ACTIVE) {
+            EXPECT_EQ(edged.errorId, kMcStopping) << "a move edged while the stopped axis is ACTIVE, scan " << i;
+        }
+        if (Final(b.stop)) {
+            ++stopFinals;
+            EXPECT_TRUE(b.stop->ERROR.value) << pac::test::OutputsOf(b.stop);
+            EXPECT_EQ(b.stop->ERRORID.value, kStopTimeout);
+        }
+    }
+    EXPECT_EQ(stopFinals, 1) << "the stop's outcome shows for one scan";
+    b.moveB->EXECUTE.value = FALSE;
+    b.relative->EXECUTE.value = FALSE;
+    ASSERT_TRUE(rig.WaitFor([&] { return !rig.Pac().Axes().Motion(1).Moving(); }, 500, "the axis stands"));
+    ASSERT_TRUE(rig.WaitFor([&] { return rig.State(1) == kStandstill; }, 100, "Standstill"));
     Execute(rig, b.moveB);
     ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
 }
@@ -331,6 +372,40 @@ TEST_P(McSim, HomeOnlyFromStandstillAndNothingButStopWhileHoming) {
     EXPECT_TRUE(b.home->COMMANDABORTED.value);
     ASSERT_TRUE(EndsDone(rig, b.stop, 2000, "Stop"));
     EXPECT_GT(rig.Position(1), 0.0f) << "stopped before the cam";
+}
+
+// ONLINE stopped (STOP ONLINE, status 35): the PA-CONTROL runs no axis job (2.7), so MC_Home and a move end
+// with 16#8025, nothing sent, never Done with the axis unreferenced or not moved; after START ONLINE they run.
+TEST_P(McSim, NoJobRunsWhileOnlineIsStopped) {
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    auto& ctrl = rig.Ctrl();
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_STOP;
+    ctrl->EXECUTE.value = TRUE;
+    ASSERT_TRUE(rig.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE stopped"));
+    ctrl->EXECUTE.value = FALSE;
+    rig.Scan();
+    ASSERT_EQ(rig.Pac().OperatingStatus(), 35);
+    ASSERT_EQ(rig.Pac().Module(1).CmdError(), 0u);
+    Execute(rig, b.home);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.home); }, 2000, "Home final"));
+    EXPECT_TRUE(b.home->ERROR.value) << pac::test::OutputsOf(b.home);
+    EXPECT_EQ(b.home->ERRORID.value, kNotOnline);
+    Release(rig, b.home);
+    SetMove(b.moveB, 10.0f);
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(rig.WaitFor([&] { return Final(b.moveB); }, 2000, "MoveAbsolute final"));
+    EXPECT_EQ(b.moveB->ERRORID.value, kNotOnline) << pac::test::OutputsOf(b.moveB);
+    Release(rig, b.moveB);
+    // The simulator answers a Start outside running ONLINE with CMD error 20: none came.
+    EXPECT_EQ(rig.Pac().Module(1).CmdError(), 0u) << "no Start reached the controller";
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+    ctrl->EXECUTE.value = TRUE;
+    ASSERT_TRUE(rig.WaitFor([&] { return ctrl->DONE.value != 0; }, 500, "ONLINE again"));
+    ctrl->EXECUTE.value = FALSE;
+    Execute(rig, b.moveB);
+    ASSERT_TRUE(EndsDone(rig, b.moveB, 20000, "MoveAbsolute B"));
 }
 
 // MC_Stop in the scan after MC_Home: the traverse bit of the reference run may fall in the controller cycle

@@ -754,6 +754,16 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, ParameterAxisFbs,
                          ::testing::ValuesIn(pac::test::BusTimingGrid({1, 5}, {3, 10}, {0, 2})),
                          pac::test::BusTimingName);
 
+// Starts the move `fb` of `axis` and scans until the controller has taken it over and the axis moves.
+template <class Fb>
+void StartTakenOverMove(AxisRig& rig, pac::FbInstance<Fb>& fb, int axis) {
+    rig.Start(fb);
+    int guard = 0;
+    while (!fb->ACTIVE.value && guard++ < 1000) rig.Settle(1);
+    ASSERT_TRUE(fb->ACTIVE.value);
+    ASSERT_TRUE(rig.Motion(axis).Moving());
+}
+
 // PLCopen's CommandAborted for the long commands other than the absolute move (which the timing grid above
 // covers). A command owns the CMD interface until its end of processing; only a stop of what it runs may
 // overtake it (F_PAC_IsStopOver), and the PA-CONTROL then reports the stop alone: the move FB is aborted.
@@ -762,11 +772,7 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
     ASSERT_TRUE(rig.GoOnline());
     rig.moveRel->AXIS.value = 2;
     rig.moveRel->DISTANCE.value = 300.0F;
-    rig.Start(rig.moveRel);
-    int guard = 0;
-    while (!rig.moveRel->ACTIVE.value && guard++ < 1000) rig.Settle(1);
-    ASSERT_TRUE(rig.moveRel->ACTIVE.value);
-    ASSERT_TRUE(rig.Motion(2).Moving());
+    ASSERT_NO_FATAL_FAILURE(StartTakenOverMove(rig, rig.moveRel, 2));
     rig.stop->AXIS.value = 2;
     ASSERT_TRUE(rig.Run(rig.stop).Done());
     EXPECT_TRUE(rig.moveRel->COMMANDABORTED.value);
@@ -776,6 +782,29 @@ TEST(ParameterAxisFbsOverSim, RelativeMoveOvertakenByTheStopOfItsAxisIsCommandAb
     EXPECT_LT(rig.Motion(2).Position(), 300.0);
     rig.Release(rig.moveRel);
     EXPECT_FALSE(rig.moveRel->COMMANDABORTED.value);
+}
+
+// cmd_abort_online 0A81 (5.2.6.1): "positioning is stopped", ONLINE ends. Like the other stops it overtakes a
+// running move (F_PAC_IsStopCommand, F_PAC_IsStopOver): it goes out while the move processes, not after
+// Timeout with 16#8006, the axis stops short of its target and the move FB is aborted, not Done.
+TEST_P(ParameterAxisFbs, AbortOnlineOvertakesARunningMove) {
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.moveAbs->AXIS.value = 1;
+    rig.moveAbs->POSITION.value = 3000.0F;
+    ASSERT_NO_FATAL_FAILURE(StartTakenOverMove(rig, rig.moveAbs, 1));
+    rig.cmd->CODE.value = 0x0A81;  // PAC_CMD_ABORT_ONLINE
+    rig.cmd->PARAM.value = 0;
+    rig.cmd->DATA.value = 0;
+    rig.cmd->TIMEOUT.value = pac::ToIecTime(200ms);
+    const FinalOutcome aborted = rig.Run(rig.cmd);
+    EXPECT_TRUE(aborted.Done()) << aborted;
+    EXPECT_EQ(rig.Controller().OperatingStatus(), 1) << "HOME POSITION";
+    rig.Settle(200);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+    EXPECT_LT(rig.Motion(1).Position(), 3000.0);
+    EXPECT_TRUE(rig.moveAbs->COMMANDABORTED.value) << "stopped short of its target";
+    EXPECT_FALSE(rig.moveAbs->DONE.value || rig.moveAbs->ERROR.value);
 }
 
 // A move and the stop of its axis edged in one scan, the move's FB called first, with the two-step write:
