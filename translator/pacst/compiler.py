@@ -8,14 +8,47 @@ generated C; see docs/translator.md.
 This module holds the driver and the declarations (types, POUs and their variables, initial values);
 expressions.py types and translates expressions, body.py a POU's statements.
 """
+import dataclasses
+import os
+import re
+
 from . import literals
 from . import types as T
 from .body import BodyCompiler
 from .common import _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
-from .names import reserved_reason
+from .names import STANDARD_FUNCTIONS, reserved_reason
 from . import user
+
+
+
+def _array_elements(node):
+    """The elements of an array's initial value in order (blark nests the ones after the first, unbracketed)."""
+    out = []
+    for el in node.elements:
+        if _cls(el.element) == "ArrayInitialization" and not el.element.brackets and el.count is None:
+            out += _array_elements(el.element)
+        else:
+            out.append(el)
+    return out
+
+
+def _struct_elements(node):
+    """(member name, value) of a struct's initial value. blark reads `(X := 1, Y := 2)` as X := [1, Y := 2]
+    (an unbracketed array whose later elements are assignments): those are taken apart again."""
+    out = []
+    for el in node.elements:
+        value = el.value
+        if _cls(value) == "ArrayInitialization" and not value.brackets and all(
+                _cls(e.element) == "BinaryOperation" and str(e.element.op) == ":=" and e.count is None
+                for e in _array_elements(value)[1:]):
+            rest = _array_elements(value)
+            out.append((el.name, rest[0].element))
+            out += [(e.element.left.name, e.element.right) for e in rest[1:]]
+        else:
+            out.append((el.name, value))
+    return out
 
 
 class Pou:
@@ -51,9 +84,11 @@ class Compiler:
     lists, located variables, VAR_EXTERNAL, sized STRINGs, inline arrays and the string functions are
     accepted on top of the library's subset. `native`: files whose FUNCTIONs the host implements."""
 
-    def __init__(self, user=False, native=()):
+    def __init__(self, user=False, native=(), namespaces=None):
         self.user = user
         self.native_files = set(native)
+        # user mode: upper namespace -> (its spelling, the folder whose declarations it holds), `--namespace`
+        self.namespaces = {k.upper(): v for k, v in (namespaces or {}).items()}
         self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
         self.gvls = {}  # upper list name -> GlobalList
         self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
@@ -66,6 +101,13 @@ class Compiler:
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
+        self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
+
+    def dialect(self, node, what):
+        """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
+        refuses each with its place, since MATIEC compiles only the portable subset's user programs."""
+        self.dialect_uses.append(self.err(node, f"{what}: TwinCAT / CODESYS dialect that MATIEC does not compile "
+                                                "(docs/user_dialect.md); run this program on pacst's C"))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
@@ -153,11 +195,22 @@ class Compiler:
 
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
+        if self.user and "." in name:
+            name = self.strip_namespace(name, token)
+            self.dialect(token, f"the namespace in '{_name(token)}'")
         up = name.upper()
         if up in T.ELEMENTARY:
             return T.ELEMENTARY[up]
+        if self.user and up in T.USER_ELEMENTARY:
+            self.dialect(token, f"the 64-bit type {up}")
+            return T.USER_ELEMENTARY[up]
         if up in T.OUTSIDE_SUBSET:
             raise self.err(token, T.OUTSIDE_SUBSET[up])
+        if self.user and up in T.USER_FBS:
+            if not allow_fb:
+                raise self.err(token, f"a function block ({up}) cannot be used here")
+            self.dialect(token, f"{up} with the pin names of CODESYS and TwinCAT (MATIEC names them otherwise)")
+            return T.USER_FBS[up]
         if up in T.NONPORTABLE_FBS:
             raise self.err(token, f"standard FB {up} has different pin names in MATIEC and CODESYS/TwinCAT: "
                                   "write that logic by hand")
@@ -183,6 +236,60 @@ class Compiler:
             raise self.err(token, f"type '{name}' is used before its declaration ({file}:{line}): "
                                   "declare before use (MATIEC)")
         raise self.err(token, f"undeclared type '{name}'")
+
+    # ------------------------------------------------------------------ namespaces (user mode)
+    def namespace(self, name):
+        """'library' for a `--namespace` (PA_CONTROL), 'standard' for the standard library's (Tc2_Standard,
+        Standard), None for any other name."""
+        up = name.upper()
+        if up in self.namespaces:
+            return "library"
+        if up in user.STANDARD_NAMESPACES:
+            return "standard"
+        return None
+
+    def in_namespace(self, namespace, name):
+        """Whether `name` (a type, POU, global list or enumeration value) is declared in the namespace."""
+        up = name.upper()
+        kind = self.namespace(namespace)
+        if kind == "standard":
+            return up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS or up in STANDARD_FUNCTIONS \
+                or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up) is not None
+        folder = os.path.join(os.path.abspath(self.namespaces[namespace.upper()][1]), "")
+        file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
+        if file is None and up in self.enum_values:
+            return True  # an enumeration value of a library type (PA_CONTROL.PAC_AX_HOME)
+        return file is not None and os.path.abspath(file).startswith(folder)
+
+    def strip_namespace(self, dotted, node):
+        """`Namespace.Name` (a type) as the plain name; an error for a name the namespace lacks or a
+        namespace pac-test does not have."""
+        first, _, rest = dotted.partition(".")
+        if self.namespace(first) is None:
+            raise self.err(node, f"'{dotted}': {user.unknown_namespace(first)}")
+        if "." in rest or not self.in_namespace(first, rest):
+            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'")
+        return rest
+
+    def unqualify(self, node, local=None):
+        """User mode: the variable or call name `node` without a namespace before it (PA_CONTROL.GVL_PAC.X is
+        GVL_PAC.X, Tc2_Standard.LEN is LEN); `local(name)` tells whether a name is a variable, which keeps it."""
+        if not self.user or _cls(node) != "MultiElementVariable" or node.name.dereferenced:
+            return node
+        first = _name(node.name.name)
+        if self.namespace(first) is None or (local is not None and local(first)):
+            return node
+        head = node.elements[0]
+        if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
+            raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
+        if not self.in_namespace(first, _name(head.field.name)):
+            raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'")
+        self.dialect(node, f"the namespace {first}.")
+        if len(node.elements) == 1:
+            if not head.dereferenced and not node.dereferenced:
+                return head.field
+            return node  # a pointer: refused where it is read
+        return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
 
     # ------------------------------------------------------------------ types
     def _literal_int(self, node):
@@ -284,15 +391,25 @@ class Compiler:
         elif cls == "EnumeratedTypeDeclaration":
             self._declare_global(decl.name, "type")
             init = decl.init
-            if init.value is not None:
+            if init.value is not None and not self.user:
                 raise self.err(init.value, "a default value for an enumeration type is outside the portable "
                                            "subset: the first value is the default")
             spec = init.spec
-            if _cls(spec) != "EnumeratedSpecification" or spec.type_name is not None:
+            if _cls(spec) != "EnumeratedSpecification" or (spec.type_name is not None and not self.user):
                 raise self.err(decl, "enumerations are plain value lists without base type (portable subset)")
-            values = []
+            base = None
+            if spec.type_name is not None:  # user mode: TwinCAT's and CODESYS's `(A := 1, B) INT`
+                self.dialect(spec.type_name, "an enumeration's base type")
+                base = self._resolve_type(spec.type_name, allow_fb=False)
+                if not (base.is_int or base.is_bit) or base.bits > 32:
+                    raise self.err(spec.type_name, f"an enumeration's base type is an integer type of up to 32 bits, "
+                                                   f"not {base.name}")
+            values, numbers, number = [], [], 0
             for ev in spec.values:
-                if ev.value is not None or ev.type_name is not None:
+                if self.user and ev.type_name is None and ev.value is not None:
+                    number = self._enum_number(ev.value, base)
+                    self.dialect(ev, "an enumeration value with a number")
+                if (ev.value is not None and not self.user) or ev.type_name is not None:
                     given = f"{_name(ev.name)} := {ev.value}" if ev.value is not None else _name(ev.name)
                     raise self.err(ev, f"'{given}': an enumeration value with an explicit "
                                        "number is outside the portable subset (user programs too): leave the "
@@ -305,8 +422,22 @@ class Compiler:
                 shared = self.user and (up in self.enum_values or up in self.enum_shared)
                 if not shared and (up in self.enum_values or up in self.types or up in self.pous):
                     raise self.err(ev, f"enumeration value '{vname}' is not globally unique: give it a prefix")
+                if number in numbers:
+                    twin = values[numbers.index(number)]
+                    raise self.err(ev.value if ev.value is not None else ev,
+                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname})")
                 values.append(vname)
-            t = T.EnumType(_name(decl.name), values)
+                numbers.append(number)
+                number += 1
+            t = T.EnumType(_name(decl.name), values, numbers, base)
+            if init.value is not None:  # user mode: the type's default value instead of the first
+                dv = init.value
+                self.dialect(dv, "an enumeration's default value")
+                label = _name(dv.name) if _cls(dv) == "EnumeratedValue" and dv.type_name is None else ""
+                label = label.split(".", 1)[1] if label.upper().startswith(t.name.upper() + ".") else label
+                if label.upper() not in (v.upper() for v in values):
+                    raise self.err(dv, f"the default of {t.name} is one of its values")
+                t.default = self.enum_value_of(t, label, dv)
             for v in values:
                 up = v.upper()
                 if up in self.enum_values and self.user or up in self.enum_shared:
@@ -327,6 +458,19 @@ class Compiler:
             raise self.err(decl, f"{cls} is outside the portable subset")
         self.types[t.cname] = t
         self.program.items.append(("type", t, self.file))
+
+    def _enum_number(self, node, base):
+        """User mode: the number an enumeration value is given (a literal, negative too), checked against the
+        base type (DINT's range without one)."""
+        negative = _cls(node) == "UnaryOperation" and str(node.op) == "-"
+        inner = node.expr if negative else node
+        if _cls(inner) not in _INT_LITERALS | _BIT_LITERALS:
+            raise self.err(node, "an enumeration value's number is an integer literal")
+        number = -literals.int_value(inner) if negative else literals.int_value(inner)
+        lo, hi = (base or T.DINT).int_range()
+        if not lo <= number <= hi:
+            raise self.err(node, f"{number} does not fit the enumeration's base type {(base or T.DINT).name}")
+        return number
 
     def _decl_var_name(self, dv, what):
         if _cls(dv) != "DeclaredVariable":
@@ -405,6 +549,11 @@ class Compiler:
         section = self._SECTIONS.get(cls)
         if self.user and cls == "ExternalVariableDeclarations" and pou.kind == "fb":
             return user.external(self, pou, block)
+        if self.user and not block.items:  # an empty `VAR END_VAR` (TwinCAT's PROGRAM template)
+            return None
+        if self.user and cls == "StaticDeclarations":
+            raise self.err(block, "VAR_STAT is not supported by pacst's user programs yet: declare the variable "
+                                  "in a global variable list")
         if section is None:
             keyword = {"StaticDeclarations": "VAR_STAT", "MethodInstanceVariableDeclarations": "VAR_INST",
                        "ExternalVariableDeclarations": "VAR_EXTERNAL", "AccessDeclarations": "VAR_ACCESS"}.get(
@@ -421,7 +570,8 @@ class Compiler:
         if section == "temp" and pou.kind == "function":
             raise self.err(block, "a FUNCTION has no VAR_TEMP in the portable subset: use VAR")
         for item in block.items:
-            if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration"):
+            if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration",
+                                            "StructuredVariableInitDeclaration"):
                 self._user_vars(pou, section, constant, item)
                 continue
             if _cls(item) != "VariableOneInitDeclaration":
@@ -460,7 +610,7 @@ class Compiler:
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
-        value = getattr(item.init, "value", None)
+        value = user.initial_value(item.init)
         self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
             location = None
@@ -498,7 +648,9 @@ class Compiler:
         if constant and value is None:
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
-            if vtype.is_fb or vtype.is_array or vtype.is_struct:
+            if self.user and (vtype.is_array or vtype.is_struct):
+                self.dialect(value, "an initial value of an array or a struct")
+            elif vtype.is_fb or vtype.is_array or vtype.is_struct:
                 raise self.err(value, "initial values are only for elementary and enumeration "
                                       "variables: give defaults in the TYPE or in code")
             if section == "inout":
@@ -538,6 +690,7 @@ class Compiler:
 
     def literal_te(self, node, want):
         """Type an initial value, which must be a literal or an enumeration value."""
+        node = self.unqualify(node)
         cls = _cls(node)
         if cls == "UnaryOperation" and str(node.op) == "-":
             inner = _cls(node.expr)
@@ -561,7 +714,7 @@ class Compiler:
         if t.is_time:
             return "__time_make(0L, 0L)"
         if t.is_enum:
-            return t.cvalue(t.values[0])
+            return t.cvalue(t.default)
         if t.is_real:
             return f"(({t.cname})0.0)"
         if t.is_bool:
@@ -574,11 +727,53 @@ class Compiler:
         if t.is_fb:
             return [f"{t.cname}_init__(&{target}, retain);"]
         if t.is_array or t.is_struct:
-            return [f"__pacst_init_{t.cname}(&{target});"]
+            lines = [f"__pacst_init_{t.cname}(&{target});"]
+            if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
+                lines += self._aggregate_init(t, var.init, target)
+            return lines
         if var.init is not None:
             te = self.literal_te(var.init, t)
             return [f"{target} = {ExprCompiler(self, None).coerce(te, t, var.init)};"]
         return [f"{target} = {self.default_c(t)};"]
+
+    def _aggregate_init(self, t, node, target):
+        """User mode: the C assignments of an array's or a struct's initial value, after its defaults."""
+        cls = _cls(node)
+        if t.is_array and cls == "ArrayInitialization":
+            elements = []
+            for el in _array_elements(node):
+                count = literals.int_value(el.count) if el.count is not None else 1
+                elements += [el.element] * count
+            if len(elements) > t.high - t.low + 1:
+                raise self.err(node, f"{len(elements)} initial values for the {t.high - t.low + 1} elements of "
+                                     f"{t.name}")
+            out = []
+            for k, element in enumerate(elements):
+                out += self._element_init(t.elem, element, f"{target}.table[{k}]")
+            return out
+        if t.is_struct and cls == "ParenthesizedExpression" and _cls(node.expr) == "BinaryOperation" \
+                and str(node.expr.op) == ":=":  # blark's reading of a one-member (Y := 6)
+            pairs = [(node.expr.left.name, node.expr.right)]
+        elif t.is_struct and cls in ("StructureInitialization", "InitializedStructure"):
+            pairs = _struct_elements(node.init if cls == "InitializedStructure" else node)
+        else:
+            pairs = None
+        if pairs is not None:
+            out = []
+            for name, value in pairs:
+                m = next((m for m in t.members if m.cname == _name(name).upper()), None)
+                if m is None:
+                    raise self.err(name, f"{t.name} has no member '{_name(name)}'")
+                out += self._element_init(m.type, value, f"{target}.{m.cname}")
+            return out
+        raise self.err(node, f"the initial value of a {t.name} is written "
+                             f"{'[a, b, n(c)]' if t.is_array else '(Member := value, ...)'}")
+
+    def _element_init(self, t, node, target):
+        if t.is_array or t.is_struct:
+            return self._aggregate_init(t, node, target)
+        te = self.literal_te(node, t)
+        return [f"{target} = {ExprCompiler(self, None).coerce(te, t, node)};"]
 
     def init_code(self, var, target):
         return self._init_code(var, target)

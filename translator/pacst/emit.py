@@ -6,10 +6,16 @@ import shutil
 import tempfile
 
 from . import types as T
+from .body import program_instance
 
 _HEADER_NAME = "pacst_iec.h"
 ENUM_NAMES = "pacst_enum_names.h"
 _INCLUDE_DIR = os.path.join(os.path.dirname(__file__), "include")
+
+
+def _global_ctype(v):
+    """The C type of a global: MATIEC's wrapper, or the FB's own struct for an FB instance (user mode)."""
+    return v.type.cname if v.type.is_fb else f"__IEC_{v.type.cname}_t"
 
 
 def _stem(path):
@@ -46,7 +52,8 @@ class Emitter:
     def _type_decl(self, t):
         out = []
         if t.is_enum:
-            values = ",\n".join(f"  {t.cvalue(v)}" for v in t.values)
+            values = ",\n".join(f"  {t.cvalue(v)}" + (f" = {n}" if t.numbered else "")
+                                 for v, n in zip(t.values, t.numbers))
             out.append(f"typedef enum {{\n{values}\n}} {t.cname};")
         elif t.is_array:
             out.append(f"typedef struct {{ {t.elem.cname} table[{t.high - t.low + 1}]; }} {t.cname};")
@@ -56,9 +63,11 @@ class Emitter:
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
-            out.append(f"  *v = {t.cvalue(t.values[0])};")
+            out.append(f"  *v = {t.cvalue(t.default)};")
         elif t.is_array:
             out.append(f"  long i;")
+            if t.elem.is_fb:  # an array of FB instances (user mode): each initialised as the FB's init does
+                out.append("  BOOL retain = FALSE;")
             out.append(f"  for (i = 0; i < {t.high - t.low + 1}; i++) {{")
             out += ["    " + line for line in self.comp.init_code(T.Var("e", "member", t.elem, None, None),
                                                                    "v->table[i]")]
@@ -92,6 +101,8 @@ class Emitter:
             out.append(f"}} {pou.cname};")
             out.append(f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain);")
             out.append(f"void {pou.cname}_body__({pou.cname} *data__);")
+            if pou.program:  # its one instance, which the host runs and other POUs may read (MAIN.x)
+                out.append(f"extern {pou.cname} {program_instance(pou)};")
         else:
             out.append(self._function_signature(pou) + ";")
         return out
@@ -108,14 +119,17 @@ class Emitter:
 
     def _gvl_decl(self, gvl):
         out = [f"/* global variable list {gvl.name} ({gvl.file}) */"]
-        out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in gvl.vars]
+        out += [f"extern {_global_ctype(v)} {v.csym};" for v in gvl.vars]
         out.append(f"void {gvl.cname}__init__(void);")
         return out
 
     def _gvl_code(self, gvl):
-        out = [f"__IEC_{v.type.cname}_t {v.csym};" for v in gvl.vars]
+        out = [f"{_global_ctype(v)} {v.csym};" for v in gvl.vars]
         out += ["", f"void {gvl.cname}__init__(void) {{", "  BOOL retain = FALSE;", "  (void)retain;"]
         for v in gvl.vars:
+            if v.type.is_fb:  # an FB instance (user mode) is no wrapper
+                out += ["  " + line for line in self.comp.init_code(v, v.csym)]
+                continue
             out.append(f"  {v.csym}.flags = 0;")
             out += ["  " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
         return out + ["}", ""]
@@ -146,7 +160,8 @@ class Emitter:
 
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
-        out = [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
+        out = [f"{pou.cname} {program_instance(pou)};", ""] if pou.program else []
+        out += [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
                "  (void)retain;",
                "  data__->EN.value = TRUE;",
                "  data__->ENO.value = TRUE;"]

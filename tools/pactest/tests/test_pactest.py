@@ -361,6 +361,38 @@ class MatiecRefusalTest(unittest.TestCase):
         self.assertRegex(run.stderr, r"program\.st:\d+: error: invalid located variable declaration")
 
 
+class DialectTest(unittest.TestCase):
+    """tools/pactest/tests/dialect: a program in the TwinCAT 3 / CODESYS dialect (docs/user_dialect.md), with the
+    library under its namespace (PA_CONTROL.MC_Power), a located input that a test presses, and tests that read
+    the PROGRAM's variables (MAIN.Presses)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(HERE, "dialect")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), os.path.join(OUT, "dialect"), "--no-coverage")
+
+    def test_every_test_passes(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        tests = sorted(os.path.splitext(n)[0] for n in os.listdir(self.folder) if n.startswith("FB_Test"))
+        self.assertIn(f"{len(tests)} tests: {len(tests)} passed, 0 failed", self.result.stdout)
+        for name in tests:
+            self.assertRegex(self.result.stdout, rf"\bok  {name}\b")
+
+
+@unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
+class MatiecDialectTest(unittest.TestCase):
+    """On a MATIEC build, the dialect project is refused by pacst before iec2c, each construct at its line."""
+
+    def test_each_dialect_construct_is_refused_at_its_line(self):
+        folder = os.path.join(HERE, "dialect")
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(OUT, "dialect-matiec"))
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        main = os.path.join(folder, "MAIN.st")
+        self.assertIn(f"{main}:{line_of(main, 'PA_CONTROL.MC_Power')}:11: error: the namespace in "
+                      "'PA_CONTROL.MC_Power': TwinCAT / CODESYS dialect that MATIEC does not compile", run.stderr)
+        self.assertNotIn("iec2c failed", run.stderr)
+
+
 class WiringWarningTest(unittest.TestCase):
     """A controller that will never start ONLINE is named before the tests run into their time limit."""
 
