@@ -31,7 +31,9 @@ def widens(source, target):
     """Whether a user program converts `source` to `target` implicitly (TwinCAT and CODESYS do, without a
     warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
     an unsigned integer to a bit string as wide or wider (UINT to WORD), any integer to REAL or LREAL, REAL
-    to LREAL."""
+    to LREAL, an enumeration to an integer (its number; TwinCAT's types without {attribute 'strict'})."""
+    if source.is_enum and target.is_int:
+        return target.bits >= 16
     if not (source.is_elementary and target.is_elementary) or source is target:
         return False
     if source.is_int and target.is_int:
