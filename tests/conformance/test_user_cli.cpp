@@ -150,6 +150,45 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
         << result.output;
 }
 
+TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
+    // Four problems, one run: the declarations of a POU, then (when they are all accepted) its statements.
+    auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
+                                       "  C : INT;\nEND_VAR\nC := 1;\nEND_PROGRAM\n");
+    auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
+                                     "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", decls, body});
+    EXPECT_EQ(result.exitCode, 1);
+    for (const auto& expected : {decls + ":3:7: error: undeclared type 'NoSuchType'",
+                                 decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
+                                 body + ":6:6: error: type mismatch: DINT where INT is expected",
+                                 body + ":8:8: error: undeclared name 'Nothing'"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+}
+
+TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
+    // docs/import.md: the library referenced with the namespace PA_CONTROL; --namespace says which files hold it.
+    fs::create_directories(dir_ / "lib");
+    auto lib = Write("lib/FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nVAR_OUTPUT Lit : BOOL; "
+                                       "END_VAR\nLit := On;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("lib/GVL_Lib.st", "VAR_GLOBAL CONSTANT\n  K_ON : BOOL := TRUE;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : PA_CONTROL.FB_Lamp; T : Tc2_Standard.TON; END_VAR\n"
+                                     "Lamp(On := PA_CONTROL.GVL_Lib.K_ON);\nT(IN := Lamp.Lit, PT := T#1S);\nEND_PROGRAM\n");
+    const std::string ns = "PA_CONTROL=" + fs::path(lib).parent_path().string();
+    auto result = RunTranslator({"build", "--user", "--namespace", ns, "--out", Out(), lib, list, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    result = RunTranslator({"build", "--user", "--out", Out(), lib, list, main});
+    EXPECT_EQ(result.exitCode, 1) << "without --namespace, PA_CONTROL is no namespace";
+    EXPECT_NE(result.output.find(main + ":2:12: error: 'PA_CONTROL.FB_Lamp': 'PA_CONTROL' is no library namespace"),
+              std::string::npos) << result.output;
+    auto matiec = Out() + "/program.st";
+    result = RunTranslator({"matiec", "--namespace", ns, "--out", matiec, lib, list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(main + ":2:12: error: the namespace in 'PA_CONTROL.FB_Lamp': TwinCAT / CODESYS "
+                                        "dialect that MATIEC does not compile"),
+              std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);

@@ -6,6 +6,7 @@ from . import literals
 from . import types as T
 from . import user
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
+from .errors import StError, StErrors
 from .expressions import ExprCompiler, array_name_hint
 
 
@@ -17,6 +18,7 @@ class BodyCompiler:
         self.pou = pou
         self.ex = ExprCompiler(comp, self)
         self.loops = []
+        self.errors = []  # user mode: the statements refused so far
         self.counter = 0
         self.result_assigned = False
 
@@ -198,6 +200,8 @@ class BodyCompiler:
         if not statements:
             raise self.err(pou.node, f"{pou.name} has an empty body: MATIEC needs at least one statement")
         lines = self.block(statements, 1, pou.node)
+        if self.errors:
+            raise StErrors(self.errors)
         if pou.kind == "function" and not self.result_assigned:
             raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
         return lines
@@ -210,7 +214,15 @@ class BodyCompiler:
             raise self.err(owner, "empty branch: MATIEC needs at least one statement")
         out = []
         for st in statements:
-            out.extend(self.stmt(st, depth))
+            if not self.comp.user:
+                out.extend(self.stmt(st, depth))
+                continue
+            try:  # user mode: every refused statement is reported, not only the first
+                out.extend(self.stmt(st, depth))
+            except StError as e:
+                self.errors.append(e)
+            except StErrors as e:
+                self.errors.extend(e.errors)
         return out
 
     @staticmethod
@@ -378,7 +390,7 @@ class BodyCompiler:
         if len(parts) > 1 and self.comp.namespace(parts[0]) is not None and self.lookup(parts[0]) is None:
             if not self.comp.in_namespace(parts[0], parts[1]):
                 raise self.err(node, f"the library {parts[0]} has no declaration '{parts[1]}'")
-            self.comp.dialect(node, f"the namespace {parts[0]}.")
+            self.comp.dialect(node, f"the namespace in '{parts[0]}.{parts[1]}'")
             parts = parts[1:]
         text = ".".join(parts)
         if sel_type.is_enum:

@@ -112,6 +112,9 @@ class Compiler:
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
         line, col = pos(node) if node is not None else (1, 1)
+        if self.user:  # the library's subset is not what a user program is held to: docs/user_dialect.md is
+            message = message.replace("outside the portable subset", "outside pacst's user programs "
+                                      "(docs/user_dialect.md)")
         return StError(self.file, line, col, message)
 
     # ------------------------------------------------------------------ driver
@@ -128,8 +131,8 @@ class Compiler:
             self.file = src.path
             try:
                 self._item(item, src)
-            except StError as e:
-                self.errors.append(e)
+            except (StError, StErrors) as e:
+                self.errors += e.errors if isinstance(e, StErrors) else [e]
                 name = self._item_name(item)
                 if name is not None:
                     self.refused.add(name.upper())
@@ -284,7 +287,7 @@ class Compiler:
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
         if not self.in_namespace(first, _name(head.field.name)):
             raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'")
-        self.dialect(node, f"the namespace {first}.")
+        self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
         if len(node.elements) == 1:
             if not head.dereferenced and not node.dereferenced:
                 return head.field
@@ -515,6 +518,7 @@ class Compiler:
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
                 else self._resolve_type(node.return_type, allow_fb=False)
         constant_block = None
+        refused = []
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
@@ -524,12 +528,20 @@ class Compiler:
                                       "for constants too; put VAR CONSTANT last")
             if is_constant:
                 constant_block = block
-            self._var_block(pou, block)
+            if not self.user:
+                self._var_block(pou, block)
+                continue
+            try:  # user mode: every refused declaration is reported, not only the first
+                self._var_block(pou, block)
+            except (StError, StErrors) as e:
+                refused += e.errors if isinstance(e, StErrors) else [e]
             if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
                                       "return the struct alone or use a FUNCTION_BLOCK")
+        if refused:
+            raise StErrors(refused)
         if kind == "fb":
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
@@ -539,7 +551,7 @@ class Compiler:
             return
         try:
             pou.body_c = BodyCompiler(self, pou).compile()
-        except StError:
+        except (StError, StErrors):
             del self.pous[pou.cname]
             raise
         self.program.items.append(("pou", pou, self.file))
@@ -569,10 +581,14 @@ class Compiler:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
             raise self.err(block, "a FUNCTION has no VAR_TEMP in the portable subset: use VAR")
+        refused = []
         for item in block.items:
             if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration",
                                             "StructuredVariableInitDeclaration"):
-                self._user_vars(pou, section, constant, item)
+                try:  # every refused line is reported
+                    self._user_vars(pou, section, constant, item)
+                except StError as e:
+                    refused.append(e)
                 continue
             if _cls(item) != "VariableOneInitDeclaration":
                 if _cls(item) == "ArrayVariableInitDeclaration":
@@ -597,6 +613,8 @@ class Compiler:
             self._check_section(pou, section, constant, vtype, item)
             for dv in item.variables:
                 self._declare_var(pou, section, constant, vtype, init.value, dv)
+        if refused:
+            raise StErrors(refused)
 
     def _check_section(self, pou, section, constant, vtype, item):
         """Whether a variable of type `vtype` may stand in this block of `pou`."""
