@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "translator_runner.hpp"
 #include "translator_scratch.hpp"
@@ -187,6 +188,39 @@ TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
     EXPECT_NE(result.output.find(main + ":2:12: error: the namespace in 'PA_CONTROL.FB_Lamp': TwinCAT / CODESYS "
                                         "dialect that MATIEC does not compile"),
               std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
+    // A PLCopen object pacst cannot read is one line naming the XML file and the object's line, not a traceback.
+    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+                                    "<types><pous>\n<pou name=\"PLC_PRG\" pouType=\"program\"><body><LD/></body></pou>\n"
+                                    "</pous></types></project>\n");
+    for (const char* command : {"check", "build", "order"}) {
+        std::vector<std::string> args = {command, "--user"};
+        if (std::string(command) == "build") args.insert(args.end(), {"--out", Out()});
+        args.push_back(xml);
+        auto result = RunTranslator(args);
+        EXPECT_EQ(result.exitCode, 1) << command;
+        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG: no ST body"),
+                  std::string::npos) << command << ": " << result.output;
+        EXPECT_EQ(result.output.find("Traceback"), std::string::npos) << command << ": " << result.output;
+    }
+}
+
+TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
+    // CODESYS exports an application's PROGRAMs and lists into the resource's addData: they are read too.
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
+        "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
+        "</variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
+        "</xhtml></ST></body></pou>\n</data>\n</addData></resource></configuration></configurations></instances>\n"
+        "</project>\n");
+    auto sources = Out() + "/plcopen";
+    auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(sources + "/PLC_PRG.st")) << "the application's PROGRAM";
 }
 
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {

@@ -273,4 +273,8 @@ def main(argv=None):
     order.add_argument("files", nargs="+")
     order.set_defaults(run=_order)
     args = parser.parse_args(argv)
-    return args.run(args)
+    try:
+        return args.run(args)
+    except StError as e:  # a project file that cannot be read (.plcproj, PLCopen XML): no traceback
+        print(e, file=sys.stderr)
+        return 1

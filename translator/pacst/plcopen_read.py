@@ -29,7 +29,17 @@ _ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", 
 
 
 class PlcopenReadError(Exception):
-    pass
+    lineno = None  # the line of the XML element refused, where known
+
+
+def _at(read, element):
+    """`read(element)`, a refusal given the element's line in the XML file."""
+    try:
+        return read(element)
+    except PlcopenReadError as exc:
+        if exc.lineno is None:
+            exc.lineno = element.sourceline
+        raise
 
 
 @dataclass(frozen=True)
@@ -52,11 +62,19 @@ def read_plcopen(data):
     root = etree.fromstring(data)
     if root.tag != q("project"):
         raise PlcopenReadError(f"root element is {root.tag}, not a TC6 project in {NS}")
-    objects = [_data_type(e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
-    objects += [_pou(e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
-    for data in root.iterfind(f"{q('addData')}/{q('data')}"):
+    objects = [_at(_data_type, e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
+    objects += [_at(_pou, e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
+    # A CODESYS export of an application keeps its objects (PLC_PRG, its global lists) in the addData of the
+    # configuration's resource, the project's own lists in the project's addData: all of them are read.
+    objects += [_at(_pou, e) for e in root.iter(q("pou"))
+                if not (e.getparent().tag == q("pous") and e.getparent().getparent() is not None
+                        and e.getparent().getparent().tag == q("types"))]
+    for data in root.iter(q("data")):
         if data.get("name") == GLOBAL_VARS:
             objects += [_global_list(e) for e in data.iterfind(q("globalVars"))]
+    for holder in root.iterfind(f"{q('instances')}/{q('configurations')}/{q('configuration')}"):
+        lists = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
+        objects += [_global_list(e) for e in lists if e.get("name")]
     return objects
 
 

@@ -159,6 +159,7 @@ def main(argv=None):
         tests = sorted(tests, key=lambda t: t["name"].upper())
         selected = [t for t in tests if shard_of(t["name"], count) == index - 1 and args.filter in t["name"]]
         if args.list:
+            hostgen.generate(symbols, wiring, tests)  # the bus images' variables and addresses, as a run checks them
             print("\n".join(t["name"] for t in selected))
             return EXIT_PASSED
         host = host_build.build(symbols, tests)

@@ -323,6 +323,11 @@ class WiringRefusalTest(unittest.TestCase):
         self.assertIn("$.bus.cmd.in: a located input image starts at %IBn",
                       self.refused(lambda d: d.update(bus={"cmd": {"in": "%QB0", "out": "%QB0"}})))
 
+    def test_unknown_bus_variable(self):
+        # --list exits as the run would
+        self.assertIn("$.bus.cmd.in: no global variable GVL_Plant.CmdInn",
+                      self.refused(lambda d: d["bus"]["cmd"].update({"in": "GVL_Plant.CmdInn"})))
+
     def test_axis_modules_need_the_ctrl_module(self):
         self.assertIn("$.bus.axes: axis modules need the CTRL module",
                       self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
