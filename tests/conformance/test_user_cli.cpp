@@ -320,15 +320,33 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     EXPECT_NE(ReadFile(dir_ / "out" / "POUS.h").find("} ST_POINT;"), std::string::npos) << "the .TcDUT's STRUCT";
 }
 
-TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
+TEST_F(TranslatorUserCli, TwinCatMethodsAreReadAtTheirLines) {
+    // A .TcPOU's <Method> and <Action> elements: translated, their errors at the line in the TwinCAT file.
+    auto fb = Write("FB_A.TcPOU",
+                    "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
+                    "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\nVAR N : INT; END_VAR\n]]></Declaration>\n"
+                    "    <Implementation><ST><![CDATA[Reset();]]></ST></Implementation>\n"
+                    "    <Method Name=\"Reset\">\n      <Declaration><![CDATA[METHOD Reset\n]]></Declaration>\n"
+                    "      <Implementation>\n        <ST><![CDATA[N := 0;\nCount();]]></ST>\n      </Implementation>\n"
+                    "    </Method>\n    <Action Name=\"Count\">\n      <Implementation>\n"
+                    "        <ST><![CDATA[N := N + 1;]]></ST>\n      </Implementation>\n    </Action>\n"
+                    "  </POU>\n</TcPlcObject>\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), fb});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bad = Write("FB_A.TcPOU", ReadFile(fb).replace(ReadFile(fb).find("Count();"), 8, "Cont(); "));
+    result = RunTranslator({"check", "--user", bad});
+    EXPECT_NE(result.output.find(bad + ":13:1: error: undeclared function, METHOD, ACTION or function block instance 'Cont'"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, TwinCatPropertiesAndOtherLanguagesAreRefused) {
     auto method = Write("FB_A.TcPOU",
                         "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
                         "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n]]></Declaration>\n"
                         "    <Implementation><ST><![CDATA[;]]></ST></Implementation>\n"
-                        "    <Method Name=\"Reset\">\n    </Method>\n  </POU>\n</TcPlcObject>\n");
+                        "    <Property Name=\"Speed\">\n    </Property>\n  </POU>\n</TcPlcObject>\n");
     auto result = RunTranslator({"check", "--user", method});
     EXPECT_EQ(result.exitCode, 1);
-    EXPECT_NE(result.output.find(method + ":7:1: error: METHOD Reset of FB_A is outside pacst's user programs"),
+    EXPECT_NE(result.output.find(method + ":7:1: error: PROPERTY Speed of FB_A is outside pacst's user programs"),
               std::string::npos)
         << result.output;
     auto ladder = Write("FB_B.TcPOU",

@@ -26,7 +26,86 @@ class BodyCompiler:
         return self.comp.err(node, message)
 
     def lookup(self, name):
-        return self.pou.var(name)
+        v = self.pou.var(name)
+        if v is None and self.pou.owner is not None:  # a METHOD or ACTION reads its FB's variables
+            v = self.pou.owner.var(name)
+        return v
+
+    def _fb_of_body(self):
+        """The FUNCTION_BLOCK or PROGRAM whose variables `data__` points at here, or None (a FUNCTION)."""
+        if self.pou.owner is not None:
+            return self.pou.owner
+        return self.pou if self.pou.kind == "fb" else None
+
+    def this(self, node):
+        """`THIS^.x` as `x` (user mode: inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION); other nodes as
+        they are."""
+        if _cls(node) != "MultiElementVariable" or not self.comp.user or _cls(node.name) != "SimpleVariable" \
+                or not node.name.dereferenced or _name(node.name.name).upper() != "THIS":
+            return node
+        if self._fb_of_body() is None:
+            raise self.err(node, "THIS^ is used inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION")
+        self.comp.dialect(node, "THIS^")
+        head = node.elements[0]
+        if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
+            raise self.err(head, "THIS^ names a variable or a method: THIS^.Name")
+        if len(node.elements) == 1:
+            return head.field
+        return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
+
+    def _super(self, node):
+        """`SUPER^()` and `SUPER^.M()` in a FUNCTION_BLOCK that EXTENDS another (or one of its METHODs):
+        ("data__", the base's body or METHOD compiled for this FB), or None for any other name."""
+        root = node.name if _cls(node) == "MultiElementVariable" else node
+        if _cls(root) != "SimpleVariable" or not root.dereferenced or _name(root.name).upper() != "SUPER":
+            return None
+        fb = self._fb_of_body()
+        if fb is None or fb.base is None:
+            raise self.err(node, "SUPER^ is used in a FUNCTION_BLOCK that EXTENDS another")
+        if self.pou.inherited_from is not None:
+            raise self.err(node, "SUPER^ in a METHOD inherited through two EXTENDS is not translated yet")
+        self.comp.dialect(node, "SUPER^")
+        if root is node:
+            return "data__", fb.methods["SUPER__BODY"]
+        if len(node.elements) != 1 or _cls(node.elements[0]) != "FieldSelector":
+            raise self.err(node, "SUPER^ names a METHOD of the base: SUPER^.Name()")
+        name = _name(node.elements[0].field.name)
+        m = fb.methods.get("SUPER__" + name.upper())
+        if m is None:
+            raise self.err(node.elements[0], f"{fb.base.name} has no METHOD or ACTION '{name}'")
+        return "data__", m
+
+    def method_target(self, name_node):
+        """(the C pointer to the instance, the METHOD or ACTION) a call's name `name_node` names, or None:
+        `Move` inside the FB (or one of its methods), `THIS^.Move`, `Axis.Move`, `Axes[i].Move`."""
+        if not self.comp.user:
+            return None
+        sup = self._super(name_node)
+        if sup is not None:
+            return sup
+        name_node = self.this(name_node)
+        if _cls(name_node) == "SimpleVariable":
+            fb = self._fb_of_body()
+            m = fb.methods.get(_name(name_node.name).upper()) if fb is not None else None
+            if m is None or self.pou.var(_name(name_node.name)) is not None:
+                return None
+            return "data__", m
+        if _cls(name_node) != "MultiElementVariable" or not name_node.elements:
+            return None
+        last = name_node.elements[-1]
+        if _cls(last) != "FieldSelector" or _cls(last.field) != "SimpleVariable":
+            return None
+        prefix = name_node.name if len(name_node.elements) == 1 else \
+            dataclasses.replace(name_node, elements=name_node.elements[:-1])
+        try:
+            r = self.ref(prefix)
+        except StError:
+            return None
+        pou = getattr(r.type, "pou", None) if r.type.is_fb else None
+        m = pou.methods.get(_name(last.field.name).upper()) if pou is not None else None
+        if m is None:
+            return None
+        return f"&({r.read()})", m
 
     # ------------------------------------------------------------------ variable access
     def _root(self, token):
@@ -36,6 +115,10 @@ class BodyCompiler:
         if pou.kind == "function" and up == pou.cname:
             return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
         v = pou.var(name)
+        if v is None and pou.owner is not None and pou.owner.var(name) is not None:
+            ov = pou.owner.var(name)  # a METHOD's or ACTION's access to its FB's variables
+            why = "it is a CONSTANT" if ov.constant else ""
+            return Ref(f"data__->{ov.cname}", not ov.type.is_fb, ov.type, ov, writable=not why, why_not=why)
         if v is None and up in pou.externals:
             g, constant = pou.externals[up]
             return self._global_ref(g, constant)
@@ -120,7 +203,7 @@ class BodyCompiler:
         return BitRef(r, n)
 
     def ref(self, node):
-        node = self.comp.unqualify(node, self.lookup)
+        node = self.this(self.comp.unqualify(node, self.lookup))
         cls = _cls(node)
         if cls == "SimpleVariable":
             if node.dereferenced:
@@ -194,7 +277,7 @@ class BodyCompiler:
     def compile(self):
         pou = self.pou
         statements = pou.node.body.statements if pou.node.body is not None else []
-        if not statements and self.comp.user and pou.kind == "fb":
+        if not statements and self.comp.user and (pou.kind == "fb" or pou.owner is not None and pou.ret is None):
             self.comp.dialect(pou.node, f"{pou.name} with an empty body")
             return []
         if not statements:
@@ -202,7 +285,7 @@ class BodyCompiler:
         lines = self.block(statements, 1, pou.node)
         if self.errors:
             raise StErrors(self.errors)
-        if pou.kind == "function" and not self.result_assigned:
+        if pou.kind == "function" and pou.ret is not None and not self.result_assigned:
             raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
         return lines
 
@@ -515,9 +598,20 @@ class BodyCompiler:
 
     def _s_FunctionCallStatement(self, node, ind, d):
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.lookup))
+        target = self.method_target(node.name)
+        if target is not None:  # user mode: Axis.Move(...), THIS^.Move(...), Move(...) inside the FB
+            if target[1] is self.pou:
+                raise self.err(node, "recursion is outside pacst's user programs")
+            return [ind + "(void)" + self.ex._user_call(node, target[1], this=target[0]).code + ";"]
+        node = dataclasses.replace(node, name=self.this(node.name))
         if self.comp.user and (_cls(node.name) != "SimpleVariable" or (
                 self.pou.var(_name(node.name.name)) is None and _name(node.name.name).upper() not in self.comp.pous)):
             # User mode: an instance in an array, a struct, a global list (Axes[i](...), GVL_Io.Timer(...))
+            if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
+                    and _name(node.name.name).upper() not in self.pou.externals \
+                    and user.lookup_global(self.comp, node.name.name) is None:
+                raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
+                                     f"'{_name(node.name.name)}'")
             r = self.ref(node.name)
             if not r.type.is_fb:
                 raise self.err(node, f"'{r.var.name}' is a {r.type.name}, not a function block instance")

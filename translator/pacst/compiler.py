@@ -55,12 +55,19 @@ class Pou:
     def __init__(self, kind, name, file, node):
         self.kind = kind  # "fb" or "function" (a user PROGRAM is an "fb" with `program` set)
         self.program = False
+        self.action = False  # user mode: an ACTION (a method without interface)
+        self.base = None  # user mode: the FUNCTION_BLOCK this one EXTENDS
+        self.super_body = False  # user mode: the base's body as SUPER^() of a derived FB
+        self.inherited_from = None  # user mode: the base FB whose METHOD, ACTION or body this is a copy of
         self.native = False  # a FUNCTION the host implements (user mode, --native)
         self.externals = {}  # upper name -> (GlobalVar, constant), from VAR_EXTERNAL (user mode)
         self.globals_used = {}  # C name -> GlobalVar the body names without VAR_EXTERNAL (user mode)
         self.qualifiers = []  # (start, end, GlobalVar): the offsets of each `List.` before a global in the body
         self.name = name
         self.cname = name.upper()
+        self.cfunc = self.cname  # the C function of a FUNCTION (a method's is <FB>__<METHOD>)
+        self.owner = None  # user mode: the FUNCTION_BLOCK or PROGRAM of a METHOD or ACTION
+        self.methods = {}  # user mode: upper name -> the METHODs and ACTIONs of a FUNCTION_BLOCK or PROGRAM
         self.file = file
         self.node = node
         self.vars = []
@@ -124,10 +131,22 @@ class Compiler:
         for src in sources:
             self.file = src.path
             for item in src.tree.items:
-                name = self._item_name(item)
+                name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
+        self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
+        attached = set()
+        for src in sources if self.user else []:
+            owner = None
+            for item in src.tree.items:
+                if _cls(item) in ("FunctionBlock", "Program", "Interface"):
+                    owner = item
+                elif _cls(item) in ("Method", "Action") and owner is not None:
+                    self.members.setdefault(id(owner), []).append(item)
+                    attached.add(id(item))
         for src, item in self._in_order(sources):
+            if id(item) in attached:
+                continue  # declared with its FUNCTION_BLOCK or PROGRAM
             self.file = src.path
             try:
                 self._item(item, src)
@@ -177,6 +196,12 @@ class Compiler:
                 return user.global_list(self, item, src)
             raise self.err(item, "VAR_GLOBAL is outside the subset: MATIEC allows globals only inside a "
                                  "CONFIGURATION (see docs/translator.md for library constants)")
+        elif cls == "Interface" and self.user:
+            self._interface(item)
+        elif cls in ("Method", "Action") and self.user:
+            raise self.err(item, f"{cls.upper()} {_name(item.name)} follows no FUNCTION_BLOCK or PROGRAM in its file")
+        elif self.user:
+            raise self.err(item, f"{cls.upper()} is not translated in user programs yet (docs/user_dialect.md)")
         else:
             raise self.err(item, f"{cls} is outside the portable subset (no METHOD, PROPERTY, ACTION, INTERFACE)")
 
@@ -222,6 +247,9 @@ class Compiler:
                 raise self.err(token, f"a function block ({up}) cannot be used here")
             return T.STANDARD_FBS[up]
         if up in self.types:
+            if self.types[up].kind == "interface":
+                raise self.err(token, f"a variable of the INTERFACE {name} (a reference to an instance) is not "
+                                      "translated yet: declare the FUNCTION_BLOCK's instance")
             return self.types[up]
         if up in self.pous:
             pou = self.pous[up]
@@ -500,13 +528,15 @@ class Compiler:
         kind = "fb" if program else kind
         if getattr(node, "access", None) is not None:
             raise self.err(node, "access specifiers are outside the portable subset")
-        if kind == "fb" and not program and (node.extends is not None or node.implements is not None):
+        if kind == "fb" and not program and (node.extends is not None or node.implements is not None) \
+                and not self.user:
             raise self.err(node, "EXTENDS and IMPLEMENTS are outside the portable subset")
         self._declare_global(node.name, what)
         if self.user and _name(node.name).upper() in self.globals:
             raise self.err(node.name, f"{what} '{_name(node.name)}' has the name of a global variable")
         pou = Pou(kind, _name(node.name), self.file, node)
         pou.program = program
+        base = self._extends(pou, node) if kind == "fb" and getattr(node, "extends", None) is not None else None
         pou.native = kind == "function" and self.file in self.native_files
         if kind == "fb":
             pou.fbtype = T.FbType(pou.name)
@@ -549,12 +579,124 @@ class Compiler:
         if pou.native:  # the host implements it: its ST body (if any) is for the other tools
             self.program.items.append(("pou", pou, self.file))
             return
+        members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
+        if base is not None:
+            members += self._inherit(pou, base)
+        if kind == "fb" and getattr(node, "implements", None) is not None:
+            self._implements(pou, node.implements)
         try:
             pou.body_c = BodyCompiler(self, pou).compile()
+            errors = []
+            for m in members:
+                try:
+                    m.body_c = BodyCompiler(self, m).compile()
+                except (StError, StErrors) as e:
+                    errors += e.errors if isinstance(e, StErrors) else [e]
+            if errors:
+                raise StErrors(errors)
         except (StError, StErrors):
             del self.pous[pou.cname]
             raise
         self.program.items.append(("pou", pou, self.file))
+        self.program.items += [("pou", m, self.file) for m in members]
+
+    def _implements(self, pou, implements):
+        """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
+        for token in implements.interfaces:
+            t = self.types.get(_name(token).upper())
+            if t is None or t.kind != "interface":
+                if user.namespace_like(_name(token).split(".")[0]):
+                    raise self.err(token, f"'{_name(token)}': {user.unknown_namespace(_name(token).split('.')[0])}")
+                raise self.err(token, f"IMPLEMENTS {_name(token)}: no INTERFACE of that name")
+            self.dialect(token, f"IMPLEMENTS {t.name}")
+            missing = [m for m in t.methods if m.upper() not in pou.methods]
+            if missing:
+                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
+
+    def _interface(self, node):
+        """User mode: an INTERFACE: the names of its METHODs, which an FB that IMPLEMENTS it must have. Variables
+        of an interface type (references to an instance) are not translated."""
+        self._declare_global(node.name, "interface")
+        self.dialect(node, f"INTERFACE {_name(node.name)}")
+        if node.extends is not None or node.declarations:
+            raise self.err(node, "an INTERFACE that EXTENDS another or declares PROPERTYs is not translated yet")
+        t = T.InterfaceType(_name(node.name))
+        t.methods = [_name(m.name) for m in self.members.get(id(node), [])]
+        self.types[t.cname] = t
+
+    def _extends(self, pou, node):
+        """User mode: FUNCTION_BLOCK ... EXTENDS Base: the base's variables first, then its own; the base's
+        METHODs and ACTIONs translated again for this FB unless it overrides them; SUPER^() is the base's
+        body and SUPER^.M() the base's M, both on this instance."""
+        token = node.extends.interfaces[0]
+        base = self.pous.get(_name(token).upper())
+        if base is None or base.kind != "fb" or base.program:
+            if _name(token).upper() in self.declared_at and _name(token).upper() not in self.pous:
+                raise self.err(token, f"{_name(token)} cannot be extended: its declaration was refused or comes later")
+            raise self.err(token, f"{_name(token)} is no FUNCTION_BLOCK to extend")
+        self.dialect(node.extends, f"EXTENDS {base.name}")
+        pou.base = base
+        pou.vars = list(base.vars)
+        return base
+
+    def _inherit(self, pou, base):
+        """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
+        for this FB's instance (from the base's text: their errors name the base's lines)."""
+        own = set(pou.methods)
+        members = []
+        saved = self.file
+        try:
+            self.file = base.file
+            for node in self.members.get(id(base.node), []):
+                if _name(node.name).upper() not in own:
+                    members.append(self._member(pou, node, inherited=True))
+            for node in self.members.get(id(base.node), []):
+                members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
+            body = Pou("function", "SUPER__BODY", base.file, base.node)
+            body.owner = pou
+            body.cfunc = f"{pou.cname}__SUPER__BODY"
+            body.super_body = True
+            pou.methods["SUPER__BODY"] = body
+            members.append(body)
+        finally:
+            self.file = saved
+        for m in members:
+            m.inherited_from = base
+        return members
+
+    def _member(self, owner, node, inherited=False, prefix=""):
+        """User mode: a METHOD or ACTION of `owner` (a FUNCTION_BLOCK or PROGRAM), declared before the owner's
+        body (which may call it): a C function `<OWNER>__<NAME>(OWNER *data__, ...)` whose body reads and
+        writes the owner's variables (docs/user_dialect.md)."""
+        is_action = _cls(node) == "Action"
+        name = _name(node.name)
+        what = "ACTION" if is_action else "METHOD"
+        self.dialect(node, f"{what} {name}")
+        if "." in name:
+            raise self.err(node.name, f"{what} {name}: write it after its FUNCTION_BLOCK, named without it")
+        why = reserved_reason(name, True)
+        if why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
+            raise self.err(node.name, f"{what} {why}")
+        if not inherited and (owner.var(name) is not None or name.upper() in owner.methods):
+            raise self.err(node.name, f"{what} {name}: {owner.name} already has a variable or member of that name")
+        m = Pou("function", name, self.file, node)
+        m.owner = owner
+        m.cfunc = f"{owner.cname}__{prefix}{name.upper()}"
+        m.action = is_action
+        if not is_action and node.return_type is not None:
+            rt = node.return_type
+            m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+                self._resolve_type(rt, allow_fb=False)
+        for block in ([] if is_action else node.declarations):
+            if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
+                for item in block.items:
+                    vtype = self._spec_type(item.init.spec, allow_fb=False)
+                    for dv in item.variables:
+                        self._declare_var(m, "var", False, vtype, item.init.value, dv)
+                continue
+            self._var_block(m, block)
+        owner.methods[prefix + name.upper()] = m
+        return m
 
     def _var_block(self, pou, block):
         cls = _cls(block)

@@ -110,12 +110,14 @@ class Emitter:
     def _function_signature(self, pou):
         # A native FUNCTION is given the ST file and line of each call (docs/translator.md, "User programs").
         params = (["const char *file__", "int line__"] if pou.native else []) + ["BOOL EN", "BOOL *__ENO"]
+        if pou.owner is not None:  # a METHOD or ACTION (user mode) works on its FB's instance
+            params.insert(0, f"{pou.owner.cname} *data__")
         for v in pou.vars:
             if v.section == "input":
                 params.append(f"{v.type.cname} {v.cname}")
             elif v.section in ("output", "inout"):
                 params.append(f"{v.type.cname} *{v.cname}")
-        return f"{pou.ret.cname if pou.ret is not None else 'void'} {pou.cname}({', '.join(params)})"
+        return f"{pou.ret.cname if pou.ret is not None else 'void'} {pou.cfunc}({', '.join(params)})"
 
     def _gvl_decl(self, gvl):
         out = [f"/* global variable list {gvl.name} ({gvl.file}) */"]
@@ -184,6 +186,8 @@ class Emitter:
         return out
 
     def _function_code(self, pou):
+        if pou.ret is None:  # a METHOD or ACTION without a result (user mode)
+            return self._procedure_code(pou)
         out = [self._function_signature(pou) + " {",
                "  BOOL ENO = TRUE;",
                f"  {pou.ret.cname} {pou.cname};"]
@@ -204,6 +208,21 @@ class Emitter:
         out += self._body(pou)
         out += ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", f"  return {pou.cname};", "}", ""]
         return out
+
+    def _procedure_code(self, pou):
+        out = [self._function_signature(pou) + " {", "  BOOL ENO = TRUE;"]
+        for v in pou.vars:
+            if v.section == "var":
+                out.append(f"  {v.type.cname} {v.cname};")
+        for v in pou.vars:
+            if v.section == "var":
+                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+        out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", "    return;", "  }"]
+        for v in pou.vars:
+            if v.section == "output":
+                out += ["  " + line for line in self.comp.init_code(v, f"(*{v.cname})")]
+        out += self._body(pou)
+        return out + ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", "}", ""]
 
     def _body(self, pou):
         """The body's lines; with line directives, each preceded by `#line` where the ST line does not simply

@@ -395,6 +395,13 @@ class ExprCompiler:
     # ------------------------------------------------------------------ calls
     def _e_FunctionCall(self, node, want):
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.body.lookup if self.body else None))
+        target = self.body.method_target(node.name) if self.body is not None else None
+        if target is not None:  # user mode: a METHOD's result (Ok := Axis.Move(...))
+            if target[1].ret is None:
+                raise self.err(node, f"{target[1].owner.name}.{target[1].name} returns nothing: call it as a statement")
+            if target[1] is self.body.pou:
+                raise self.err(node, "recursion is outside pacst's user programs")
+            return self._user_call(node, target[1], this=target[0])
         if _cls(node.name) != "SimpleVariable":
             raise self.err(node, "only plain function names can be called")
         name = _name(node.name.name)
@@ -644,7 +651,7 @@ class ExprCompiler:
             raise self.err(p, f"'{pname}' is an output: use =>")
         return v
 
-    def _user_call(self, node, pou):
+    def _user_call(self, node, pou, this=None):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
         inputs = [v for v in interface if v.section == "input"]
@@ -691,4 +698,5 @@ class ExprCompiler:
         # A native FUNCTION (user mode) is given the call's position: with #line directives,
         # __FILE__ and __LINE__ are the ST file and line of the call (docs/translator.md).
         where = "__FILE__, __LINE__, " if pou.native else ""
-        return TE(pou.ret, f"{pou.cname}({where}TRUE, NULL{''.join(', ' + a for a in args)})")
+        first = f"{this}, " if this is not None else ""
+        return TE(pou.ret, f"{pou.cfunc}({first}{where}TRUE, NULL{''.join(', ' + a for a in args)})")

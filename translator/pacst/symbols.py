@@ -86,7 +86,7 @@ def symbols(comp, program):
             table["programs"].append(_pou(comp, obj))
         elif kind == "pou" and obj.kind == "fb":
             table["function_blocks"].append(_pou(comp, obj))
-        elif kind == "pou":
+        elif kind == "pou" and obj.owner is None:  # a METHOD or ACTION is its FB's
             table["functions"].append({
                 "name": obj.name, "c_name": obj.cname, "native": obj.native, "file": obj.file,
                 "returns": type_json(obj.ret) if obj.ret is not None else None,

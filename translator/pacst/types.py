@@ -185,6 +185,16 @@ def find_var(variables, name):
     return next((v for v in variables if v.cname == up), None)
 
 
+class InterfaceType(Type):
+    """A user INTERFACE: the names of its METHODs (user mode; no variable has this type)."""
+
+    kind = "interface"
+
+    def __init__(self, name):
+        super().__init__(name)
+        self.methods = []
+
+
 class FbType(Type):
     """A function block type: a user FUNCTION_BLOCK or one of the standard FBs."""
 
