@@ -18,6 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using pac::test::RunTranslator;
 
+std::string ReadFile(const fs::path& path);
+
 class TranslatorUserCli : public pac::test::TranslatorScratch {
 protected:
     TranslatorUserCli() : TranslatorScratch("user_") {}
@@ -181,6 +183,12 @@ TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
     result = RunTranslator({"build", "--user", "--out", Out(), lib, list, main});
     EXPECT_EQ(result.exitCode, 1) << "without --namespace, PA_CONTROL is no namespace";
     EXPECT_NE(result.output.find(main + ":2:12: error: 'PA_CONTROL.FB_Lamp': 'PA_CONTROL' is no library namespace"),
+              std::string::npos) << result.output;
+    // A CODESYS export "into an application" carries the library's objects: said so at the copy.
+    auto copy = Write("FB_Lamp.st", ReadFile(lib));
+    result = RunTranslator({"check", "--user", "--namespace", ns, lib, list, copy, main});
+    EXPECT_NE(result.output.find(copy + ":1:1: error: function block 'FB_Lamp' is declared by the library PA_CONTROL "
+                                        "too: leave the library's objects out of your sources"),
               std::string::npos) << result.output;
     auto matiec = Out() + "/program.st";
     result = RunTranslator({"matiec", "--namespace", ns, "--out", matiec, lib, list, main});

@@ -217,6 +217,16 @@ class Compiler:
         self._check_ident(token, what)
         up = name.upper()
         if up in self.types or up in self.pous:
+            library = next((ns for ns, (_, folder) in self.namespaces.items() if self._under(self.file, folder) or
+                            self._under(self.declared_at.get(up, ("",))[0], folder)), None)
+            if library is not None:  # a CODESYS export "into an application" carries the library's objects
+                why = (f"{what} '{name}' is declared by the library {self.namespaces[library][0]} too: leave the "
+                       "library's objects out of your sources (pac-test adds the library; export your application "
+                       "without it)")
+                other = self.declared_at.get(up)
+                if other is not None and other[0] != self.file and not self._under(other[0], self.namespaces[library][1]):
+                    raise StError(other[0], other[1], 1, why)  # at the user's copy, not at the library's file
+                raise self.err(token, why)
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
         if up in self.enum_values:
             raise self.err(token, f"{what} '{name}' has the name of an enumeration value")
@@ -291,6 +301,10 @@ class Compiler:
         if file is None and up in self.enum_values:
             return True  # an enumeration value of a library type (PA_CONTROL.PAC_AX_HOME)
         return file is not None and os.path.abspath(file).startswith(folder)
+
+    @staticmethod
+    def _under(path, folder):
+        return bool(path) and os.path.abspath(path).startswith(os.path.join(os.path.abspath(folder), ""))
 
     def strip_namespace(self, dotted, node):
         """`Namespace.Name` (a type) as the plain name; an error for a name the namespace lacks or a
