@@ -253,25 +253,31 @@ class BodyCompiler:
             elif ecls == "SubscriptList":
                 if not r.type.is_array:
                     raise self.err(el, f"{r.type.name} is not an array")
-                if len(el.subscripts) != 1:
+                if len(el.subscripts) != 1 and not self.comp.user:
                     raise self.err(el, "multi-dimensional index is outside the portable subset")
-                idx_node = el.subscripts[0]
-                te = self.ex.expr(idx_node, T.DINT)
-                at = r.type
-                if te.type is T.ANY_INT:
-                    if not at.low <= te.value <= at.high:
-                        raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
-                    idx = f"{te.value - at.low}"
-                else:
-                    if not te.type.is_int:
-                        raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
-                    line, col = pos(idx_node)
-                    where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
-                    idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
-                r = Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
+                for idx_node in el.subscripts:  # [i, j] is [i][j] (user mode)
+                    if not r.type.is_array:
+                        raise self.err(idx_node, f"{r.type.name} is not an array: one index too many")
+                    r = self._index(r, idx_node)
             else:
                 raise self.err(el, f"{ecls} is outside the portable subset")
         return r
+
+    def _index(self, r, idx_node):
+        """The element `idx_node` of the array `r`: checked against the bounds at run time, or now."""
+        te = self.ex.expr(idx_node, T.DINT)
+        at = r.type
+        if te.type is T.ANY_INT:
+            if not at.low <= te.value <= at.high:
+                raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
+            idx = f"{te.value - at.low}"
+        else:
+            if not te.type.is_int:
+                raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
+            line, col = pos(idx_node)
+            where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+            idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
+        return Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
 
     # ------------------------------------------------------------------ POU
     def compile(self):

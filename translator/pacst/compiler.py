@@ -211,6 +211,8 @@ class Compiler:
         why = reserved_reason(name, self.user)
         if why:
             raise self.err(token, f"{what} {why}")
+        if self.user and ("__" in name or name.endswith("_")):
+            self.dialect(token, f"the name '{name}' (MATIEC refuses '__' in names and a '_' at their end)")
 
     def _declare_global(self, token, what):
         name = _name(token)
@@ -343,7 +345,41 @@ class Compiler:
             return -self._literal_int(node.expr)
         if _cls(node) in _INT_LITERALS and node.type_name is None:
             return literals.int_value(node)
+        if self.user:
+            value = self.constant_int(node)
+            if value is not None:
+                self.dialect(node, "an array bound that is a named constant")
+                return value
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
+
+    def constant_int(self, node):
+        """User mode: the value of an integer constant expression of literals and named constants (a POU's
+        VAR CONSTANT, a global constant, List.Name) with + - *, or None when `node` is none."""
+        cls = _cls(node)
+        if cls in _INT_LITERALS | _BIT_LITERALS:
+            return literals.int_value(node)
+        if cls == "ParenthesizedExpression":
+            return self.constant_int(node.expr)
+        if cls == "UnaryOperation" and str(node.op) == "-":
+            inner = self.constant_int(node.expr)
+            return -inner if inner is not None else None
+        if cls == "BinaryOperation" and str(node.op) in ("+", "-", "*"):
+            a, b = self.constant_int(node.left), self.constant_int(node.right)
+            if a is None or b is None:
+                return None
+            return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        var = None
+        if cls == "SimpleVariable":
+            pou = getattr(self, "current_pou", None)
+            var = pou.var(_name(node.name)) if pou is not None else None
+            if var is None and _name(node.name).upper() in self.globals:
+                var = user.lookup_global(self, node.name)
+        elif cls == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
+                and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
+            var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+        if var is None or not var.constant or var.init is None:
+            return None
+        return self.constant_int(var.init)
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -550,6 +586,7 @@ class Compiler:
             raise self.err(node.name, f"{what} '{_name(node.name)}' has the name of a global variable")
         pou = Pou(kind, _name(node.name), self.file, node)
         pou.program = program
+        self.current_pou = pou  # its constants may give array bounds (user mode)
         base = self._extends(pou, node) if kind == "fb" and getattr(node, "extends", None) is not None else None
         pou.native = kind == "function" and self.file in self.native_files
         if kind == "fb":

@@ -411,6 +411,16 @@ class ExprCompiler:
             return self._conversion(node, m.group(1), m.group(2))
         if self.comp.user and up in _MATH and up not in self.comp.pous:
             return self._math(node, up, want)
+        m = re.fullmatch(r"TO_([A-Z]+)", up)
+        if m and self.comp.user and up not in self.comp.pous:  # TO_DINT(x): from the argument's type
+            (arg,) = self._positional(node, 1, ["IN"])
+            te = self.expr(arg, None)
+            src = self.default_type(te, None).name if te.type.kind in ("anyint", "anyreal") else te.type.name
+            if te.type.is_enum:
+                src = "DINT"
+            self.comp.dialect(node, f"the generic conversion {up}")
+            return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
+                TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
             return self._shift(node, up, want)
         if up in ("ABS", "MIN", "MAX", "LIMIT", "SEL"):

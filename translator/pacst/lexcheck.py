@@ -153,9 +153,10 @@ def tokenize(text, file, comments=None, user=False):
                 tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
-            if "__" in word:
-                raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves")
-            if word.endswith("_"):
+            if "__" in word and (not user or word.startswith("__")):
+                raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"
+                              if not user else f"identifier '{word}' starts with '__', which C reserves")
+            if word.endswith("_") and not user:
                 raise StError(file, line, col, f"identifier '{word}' ends with '_', which MATIEC refuses")
             tokens.append(Token("ident", word, line, col, i))
             advance(m.end())

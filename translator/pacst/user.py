@@ -123,17 +123,32 @@ def string_length(comp, spec):
 def inline_array(comp, spec, file):
     """The type of an inline `ARRAY [lo..hi] OF T`: one per bounds and element type, named as MATIEC
     names it (`__ARRAY_OF_BYTE_8`; arrays of equal length share the C type)."""
-    if len(spec.subranges) != 1 or _cls(spec.subranges[0]) != "PartialSubrange":
-        raise comp.err(spec, "an inline ARRAY has one dimension with literal bounds")
+    if any(_cls(sub) != "PartialSubrange" for sub in spec.subranges):
+        raise comp.err(spec, "ARRAY [*] is not translated: give the bounds")
+    elem = comp._spec_type(spec.type, allow_fb=True)
+    if len(spec.subranges) > 1:  # ARRAY [0..2, 0..3] OF T: an array of rows, indexed [i, j] or [i][j]
+        comp.dialect(spec, "a multi-dimensional array")
+        for sub in reversed(spec.subranges[1:]):
+            elem = _dimension(comp, sub, elem, file)
     sub = spec.subranges[0]
     low, high = comp._literal_int(sub.start), comp._literal_int(sub.stop)
     if low > high:
         raise comp.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
-    elem = comp._spec_type(spec.type, allow_fb=True)
     if elem.is_fb:
         comp.dialect(spec.type, f"an array of function block instances ({elem.name})")
-    if elem.is_array:
+    if elem.is_array and len(spec.subranges) == 1:
         raise comp.err(spec.type, "array of arrays: use an array of a STRUCT that holds the row")
+    return _array_type(comp, low, high, elem, file)
+
+
+def _dimension(comp, sub, elem, file):
+    low, high = comp._literal_int(sub.start), comp._literal_int(sub.stop)
+    if low > high:
+        raise comp.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
+    return _array_type(comp, low, high, elem, file)
+
+
+def _array_type(comp, low, high, elem, file):
     key = (low, high, elem.cname)
     t = comp.inline_arrays.get(key)
     if t is None:
