@@ -7,7 +7,7 @@ from . import types as T
 from . import user
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
 from .errors import StError, StErrors
-from .expressions import ExprCompiler, array_name_hint
+from .expressions import STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -202,16 +202,35 @@ class BodyCompiler:
         self.comp.dialect(el, f"bit access (.{n})")
         return BitRef(r, n)
 
-    def ref(self, node):
+    def _deref(self, r, node):
+        """`p^` (user mode), and a REFERENCE read or written through: the variable the pointer points at; a
+        null pointer stops the run with the ST file and line."""
+        if not (self.comp.user and r.type.is_pointer):
+            if self.comp.user:
+                raise self.err(node, f"'^' on {r.type.name}: only a POINTER is dereferenced")
+            raise self.err(node, "pointers are outside the portable subset")
+        t = r.type.target
+        line, col = pos(node)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        return Ref(f"(*({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))", False, t, r.var)
+
+    def _through(self, r, node, raw):
+        """`r`, read through when it is a REFERENCE (unless `raw`: REF= and __ISVALIDREF want the reference)."""
+        if r.type.is_pointer and r.type.reference and not raw:
+            return self._deref(r, node)
+        return r
+
+    def ref(self, node, raw=False):
         node = self.this(self.comp.unqualify(node, self.lookup))
         cls = _cls(node)
         if cls == "SimpleVariable":
-            if node.dereferenced:
+            if node.dereferenced and not self.comp.user:
                 raise self.err(node, "pointers are outside the portable subset")
-            return self._root(node.name)
+            r = self._root(node.name)
+            return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
         if cls != "MultiElementVariable":
             raise self.err(node, "a variable is expected here")
-        if node.dereferenced or node.name.dereferenced:
+        if (node.dereferenced or node.name.dereferenced) and not self.comp.user:
             raise self.err(node, "pointers are outside the portable subset")
         root = _name(node.name.name).upper()
         if self.pou.var(root) is None and root in self.comp.types and self.comp.types[root].is_enum:
@@ -219,10 +238,17 @@ class BodyCompiler:
                                  "accepted by every tool)")
         qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
-        for el in elements:
+        if qualified is None and node.name.dereferenced:
+            r = self._deref(r, node.name)
+        elif elements:
+            r = self._through(r, node.name, False)
+        for k, el in enumerate(elements):
+            last = k == len(elements) - 1
+            if k > 0:
+                r = self._through(r, el, False)
             ecls = _cls(el)
             if ecls == "FieldSelector":
-                if el.dereferenced:
+                if el.dereferenced and not self.comp.user:
                     raise self.err(el, "pointers are outside the portable subset")
                 field = el.field
                 if _cls(field) != "SimpleVariable" and self.comp.user and (r.type.is_bit or r.type.is_int):
@@ -261,7 +287,11 @@ class BodyCompiler:
                     r = self._index(r, idx_node)
             else:
                 raise self.err(el, f"{ecls} is outside the portable subset")
-        return r
+            if getattr(el, "dereferenced", False):  # a.p^, a[i]^
+                r = self._deref(r, el)
+        if node.dereferenced:
+            r = self._deref(r, node)
+        return self._through(r, node, raw)
 
     def _index(self, r, idx_node):
         """The element `idx_node` of the array `r`: checked against the bounds at run time, or now."""
@@ -341,6 +371,24 @@ class BodyCompiler:
             raise self.err(target, "function block instances cannot be assigned")
         te = self.ex.expr(node.expression, r.type)
         return [ind + r.write(_limited(r.var, self.ex.coerce(te, r.type, node.expression), r.suffix))]
+
+    def _s_ReferenceAssignmentStatement(self, node, ind, d):
+        """User mode: `R REF= X`: the REFERENCE R now stands for X (REF= 0: for nothing)."""
+        target = self.ref(node.variable, raw=True)
+        if not (target.type.is_pointer and target.type.reference):
+            raise self.err(node.variable, f"REF= sets a REFERENCE, not {target.type.name}")
+        self.comp.dialect(node, "REF=")
+        expr = node.expression
+        if _cls(expr) in ("Integer",) and literals.int_value(expr) == 0:
+            return [ind + target.write("NULL")]
+        src = self.ref(expr, raw=True)
+        if src.type.is_pointer and src.type.reference:
+            value = src.read()
+        else:
+            if src.type is not target.type.target or isinstance(src, BitRef):
+                raise self.err(expr, f"REF= of a {src.type.name} to a {target.type.name}")
+            value = f"&({src.read()})"
+        return [ind + target.write(f"({target.type.cname})({value})")]
 
     def _s_IfStatement(self, node, ind, d):
         out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
@@ -612,6 +660,10 @@ class BodyCompiler:
         node = dataclasses.replace(node, name=self.this(node.name))
         if self.comp.user and (_cls(node.name) != "SimpleVariable" or (
                 self.pou.var(_name(node.name.name)) is None and _name(node.name.name).upper() not in self.comp.pous)):
+            # User mode: MEMCPY(...) and the other functions the translator provides, as statements
+            if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
+                    and _name(node.name.name).upper() in STATEMENT_FUNCTIONS:
+                return [ind + "(void)(" + self.ex._e_FunctionCall(node, None).code + ");"]
             # User mode: an instance in an array, a struct, a global list (Axes[i](...), GVL_Io.Timer(...))
             if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
                     and _name(node.name.name).upper() not in self.pou.externals \

@@ -99,6 +99,7 @@ class Compiler:
         self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
         self.gvls = {}  # upper list name -> GlobalList
         self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
+        self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -339,6 +340,22 @@ class Compiler:
         return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
 
     # ------------------------------------------------------------------ types
+    def pointer_type(self, node, target, indirection):
+        """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
+        reference = bool(indirection.reference)
+        if (0 if reference else 1) != indirection.pointer_depth or target.is_pointer:
+            raise self.err(node, "a POINTER TO POINTER and a REFERENCE TO a POINTER are not translated")
+        self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        return self.pointer_to(target, reference)
+
+    def pointer_to(self, target, reference=False):
+        key = (target.cname, reference)
+        t = self.pointer_types.get(key)
+        if t is None:
+            t = self.pointer_types[key] = T.PointerType(target, reference)
+            self.program.items.append(("type", t, self.file))
+        return t
+
     def _literal_int(self, node):
         """An array bound: a decimal literal, possibly negative."""
         if _cls(node) == "UnaryOperation" and str(node.op) == "-":
@@ -405,6 +422,8 @@ class Compiler:
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
+            if self.user and spec.indirection is not None and spec.init_parameters is None:
+                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if spec.indirection is not None or spec.init_parameters is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._spec_type(spec.type, allow_fb)
@@ -920,6 +939,8 @@ class Compiler:
         return ExprCompiler(self, None).expr(node, want)
 
     def default_c(self, t):
+        if t.is_pointer:
+            return "NULL"
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:

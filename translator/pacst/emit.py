@@ -60,10 +60,14 @@ class Emitter:
         elif t.is_struct:
             members = "\n".join(f"  {m.type.cname} {m.cname};" for m in t.members)
             out.append(f"typedef struct {{\n{members}\n}} {t.cname};")
+        elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
+            out.append(f"typedef {t.target.cname} *{t.cname};")
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
             out.append(f"  *v = {t.cvalue(t.default)};")
+        elif t.is_pointer:
+            out.append("  *v = NULL;")
         elif t.is_array:
             out.append(f"  long i;")
             if t.elem.is_fb:  # an array of FB instances (user mode): each initialised as the FB's init does

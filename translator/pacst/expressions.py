@@ -16,6 +16,10 @@ _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"
 # The numeric standard functions of user programs and their C functions (the float ones take an f).
 _MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin", "COS": "cos", "TAN": "tan",
          "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXPT": "pow", "TRUNC": "", "TRUNC_INT": "", "MOVE": ""}
+# Pointers and memory (user mode): TwinCAT's operators and Tc2_System's functions, CODESYS's the same.
+_MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF"}
+# Functions a user program may call as a statement, its result unused.
+STATEMENT_FUNCTIONS = {"MEMCPY", "MEMMOVE", "MEMSET"}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
@@ -65,6 +69,10 @@ class ExprCompiler:
         widening ones TwinCAT and CODESYS make, widens())."""
         if te.type is target:
             return te.code
+        if te.type is T.ANY_INT and target.is_pointer and te.value == 0:
+            return "NULL"  # user mode: p := 0, p <> 0
+        if te.type.is_pointer and target.is_pointer and self.comp.user:
+            return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
             if target.is_int or target.is_bit:
                 lo, hi = target.int_range()
@@ -296,6 +304,9 @@ class ExprCompiler:
         b = self.expr(node.right, want)
         if a.type is T.ANY_INT and b.type is T.ANY_INT:
             return TE(T.ANY_INT, value=self._fold(node, op, a.value, b.value))
+        if self.comp.user and op in ("+", "-") and a.type.is_pointer and (b.type is T.ANY_INT or b.type.is_int):
+            n = b.code if b.code is not None else f"{b.value}LL"
+            return TE(a.type, f"(({a.type.cname})((char *)({a.code}) {op} ({n})))")  # bytes, as TwinCAT counts
         if self.comp.user and op in ("*", "/") and (a.type.is_time or b.type.is_time) \
                 and not (a.type.is_time and b.type.is_time) and (op == "*" or a.type.is_time):
             return self._time_scale(node, op, a, b)
@@ -363,6 +374,8 @@ class ExprCompiler:
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
             raise self.err(node.op, f"{t.name} values cannot be compared")
+        if t.is_pointer and op not in ("=", "<>"):
+            raise self.err(node.op, f"{op} on pointers: only = and <>")
         if op not in ("=", "<>") and t.is_enum and self.comp.user:
             self.comp.dialect(node.op, f"{op} on enumeration values")  # TwinCAT and CODESYS compare the numbers
         elif op not in ("=", "<>") and (t.is_bool or t.is_enum):
@@ -411,6 +424,8 @@ class ExprCompiler:
             return self._conversion(node, m.group(1), m.group(2))
         if self.comp.user and up in _MATH and up not in self.comp.pous:
             return self._math(node, up, want)
+        if self.comp.user and up in _MEMORY and up not in self.comp.pous and self.body is not None:
+            return self._memory(node, up)
         m = re.fullmatch(r"TO_([A-Z]+)", up)
         if m and self.comp.user and up not in self.comp.pous:  # TO_DINT(x): from the argument's type
             (arg,) = self._positional(node, 1, ["IN"])
@@ -469,6 +484,51 @@ class ExprCompiler:
         t, code = self._real_arg(arg, want)
         c = _MATH[fn] + ("f" if t is T.ELEMENTARY["REAL"] else "")
         return TE(t, f"(({t.cname}){c}({code}))")
+
+    def _memory(self, node, fn):
+        """User mode: ADR(x) (a POINTER TO x's type), SIZEOF(x or a type) in bytes as the C layout has them (a
+        STRING is 127 bytes here), MEMCPY / MEMMOVE / MEMSET (destAddr, srcAddr or fillByte, n: UDINT, the bytes
+        done), MEMCMP (pBuf1, pBuf2, n: DINT, -1, 0 or 1), __ISVALIDREF(r)."""
+        self.comp.dialect(node, fn)
+        if fn in ("ADR", "__ISVALIDREF"):
+            (arg,) = self._positional(node, 1, ["IN"] if fn == "ADR" else ["REF"])
+            r = self.body.ref(arg, raw=fn == "__ISVALIDREF")
+            if fn == "__ISVALIDREF":
+                if not (r.type.is_pointer and r.type.reference):
+                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE")
+                return TE(T.BOOL, f"(({r.read()}) != NULL)")
+            if getattr(r, "whole", None) is not None:
+                raise self.err(arg, "ADR of a bit: a bit has no address")
+            t = self.comp.pointer_to(r.type)
+            return TE(t, f"(({t.cname})&({r.read()}))")
+        if fn == "SIZEOF":
+            (arg,) = self._positional(node, 1, ["IN"])
+            name = _name(arg.name) if _cls(arg) == "SimpleVariable" else None
+            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None:
+                t = self.comp._resolve_type(arg.name, allow_fb=True)
+                return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
+            r = self.body.ref(arg)
+            return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({r.read()}))")
+        names = {"MEMSET": ["DESTADDR", "FILLBYTE", "N"], "MEMCMP": ["PBUF1", "PBUF2", "N"]}.get(
+            fn, ["DESTADDR", "SRCADDR", "N"])
+        args = self._positional(node, 3, names)
+        codes = []
+        for name, arg in zip(names, args):
+            te = self.expr(arg, T.ELEMENTARY["UDINT"] if name in ("N", "FILLBYTE") else None)
+            if name in ("N", "FILLBYTE"):
+                if te.type is not T.ANY_INT and not (te.type.is_int or te.type.is_bit):
+                    raise self.err(arg, f"{fn}'s {name.lower()} is a number, not {te.type.name}")
+                codes.append(f"(size_t)({te.code if te.code is not None else te.value})")
+            else:
+                if not te.type.is_pointer:
+                    raise self.err(arg, f"{fn}'s {name} is an address (ADR(x) or a POINTER), not {te.type.name}")
+                codes.append(f"(void *)({te.code})")
+        if fn == "MEMCMP":
+            return TE(T.DINT, f"__pacst_memcmp({', '.join(codes)})")
+        c = {"MEMCPY": "memcpy", "MEMMOVE": "memmove", "MEMSET": "memset"}[fn]
+        first = codes[1] if fn == "MEMSET" else codes[1]
+        return TE(T.ELEMENTARY["UDINT"], f"((UDINT)(({c}({codes[0]}, {'(int)' if fn == 'MEMSET' else ''}{first}, "
+                                         f"{codes[2]}), {codes[2]})))")
 
     def _real_arg(self, arg, want):
         """(REAL or LREAL, C code) of a numeric standard function's argument: a REAL stays REAL, an integer or an

@@ -153,7 +153,7 @@ def tokenize(text, file, comments=None, user=False):
                 tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
-            if "__" in word and (not user or word.startswith("__")):
+            if "__" in word and (not user or word.startswith("__") and word.upper() != "__ISVALIDREF"):
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"
                               if not user else f"identifier '{word}' starts with '__', which C reserves")
             if word.endswith("_") and not user:

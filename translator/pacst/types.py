@@ -16,6 +16,7 @@ class Type:
     # Classification used by the type rules.
     is_bool = is_int = is_signed = is_bit = is_real = is_time = is_string = False
     is_enum = is_array = is_struct = is_fb = False
+    is_pointer = False  # user mode: POINTER TO and REFERENCE TO
     bits = 0
 
     @property
@@ -183,6 +184,20 @@ def find_var(variables, name):
     """The variable called `name` (case-insensitive), or None."""
     up = name.upper()
     return next((v for v in variables if v.cname == up), None)
+
+
+class PointerType(Type):
+    """User mode: POINTER TO T (`reference` False) or REFERENCE TO T, a C pointer `T *`; a REFERENCE is read
+    and written through without `^`."""
+
+    kind = "pointer"
+    is_pointer = True
+
+    def __init__(self, target, reference=False):
+        super().__init__(f"{'REFERENCE' if reference else 'POINTER'} TO {target.name}")
+        self.target = target
+        self.reference = reference
+        self.cname = f"__{'REF' if reference else 'PTR'}_{target.cname}"
 
 
 class InterfaceType(Type):

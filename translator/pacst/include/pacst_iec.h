@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -413,6 +414,15 @@ static inline void TP_body__(TP *d) {
 /* User programs (pacst --user): TIME as milliseconds (TIME_TO_DINT, DINT_TO_TIME, as CODESYS and
  * TwinCAT count it), TIME * and / a number, TRUNC, and the counters and bistables with the pin names of
  * CODESYS's Standard and TwinCAT's Tc2_Standard. */
+/* A pointer or reference read or written through (user mode): a null one stops the run at its ST line. */
+static inline void *__pacst_ptr(void *p, const char *where) {
+    if (p == NULL) __pacst_fault(where, "a null POINTER or an unset REFERENCE read or written through", 0);
+    return p;
+}
+static inline DINT __pacst_memcmp(const void *a, const void *b, size_t n) {
+    int c = memcmp(a, b, n);
+    return c < 0 ? -1 : c > 0;
+}
 static inline int64_t __time_to_ms(TIME t) {
     return (int64_t)t.tv_sec * 1000 + (int64_t)(t.tv_nsec / 1000000);
 }
