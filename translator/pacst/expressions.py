@@ -31,6 +31,16 @@ def array_name_hint(actual, target):
     return ""
 
 
+def _converted(st, dt, code):
+    """`code` of the elementary type `st` converted to `dt`: REAL to integers rounded half to even."""
+    if dt.is_bool:
+        return TE(dt, f"(({code}) != 0)")
+    if st.is_real and not dt.is_real:
+        helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
+        return TE(dt, f"(({dt.cname}){helper}({code}))")
+    return TE(dt, f"(({dt.cname})({code}))")
+
+
 def widens(source, target):
     """Whether a user program converts `source` to `target` implicitly (TwinCAT and CODESYS do, without a
     warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
@@ -620,13 +630,7 @@ class ExprCompiler:
         (arg,) = self._positional(node, 1, ["IN"])
         st, dt = T.ELEMENTARY[src], T.ELEMENTARY[dst]
         te = self.expr(arg, st)
-        code = self.coerce(te, st, arg, "argument")
-        if dt.is_bool:
-            return TE(dt, f"(({code}) != 0)")
-        if st.is_real and not dt.is_real:
-            helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
-            return TE(dt, f"(({dt.cname}){helper}({code}))")
-        return TE(dt, f"(({dt.cname})({code}))")
+        return _converted(st, dt, self.coerce(te, st, arg, "argument"))
 
     def _user_conversion(self, node, src, dst):
         """User mode: TIME to and from a number of milliseconds (TIME_TO_DINT, UDINT_TO_TIME: CODESYS and TwinCAT
@@ -643,19 +647,11 @@ class ExprCompiler:
         st, dt = types[src], types[dst]
         code = self.coerce(self.expr(arg, st), st, arg, "argument")
         if st.is_time:
-            if dt.is_real:
-                return TE(dt, f"(({dt.cname})__time_to_ms({code}))")
-            return TE(dt, f"(({dt.cname})__time_to_ms({code}))" if not dt.is_bool else f"(__time_to_ms({code}) != 0)")
+            return TE(dt, f"(__time_to_ms({code}) != 0)" if dt.is_bool else f"(({dt.cname})__time_to_ms({code}))")
         if dt.is_time:
-            if st.is_real:
-                return TE(dt, f"__time_from_ms(__real_to_i64({code}))")
-            return TE(dt, f"__time_from_ms((int64_t)({code}))")
-        if dt.is_bool:
-            return TE(dt, f"(({code}) != 0)")
-        if st.is_real and not dt.is_real:
-            helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
-            return TE(dt, f"(({dt.cname}){helper}({code}))")
-        return TE(dt, f"(({dt.cname})({code}))")
+            ms = f"__real_to_i64({code})" if st.is_real else f"(int64_t)({code})"
+            return TE(dt, f"__time_from_ms({ms})")
+        return _converted(st, dt, code)
 
     def _shift(self, node, fn, want):
         value, count = self._positional(node, 2, ["IN", "N"])
