@@ -29,6 +29,8 @@ class BodyCompiler:
         v = self.pou.var(name)
         if v is None and self.pou.owner is not None:  # a METHOD or ACTION reads its FB's variables
             v = self.pou.owner.var(name)
+        if v is None:
+            v = T.find_var((self.pou.owner or self.pou).statics, name)
         return v
 
     def _fb_of_body(self):
@@ -115,6 +117,9 @@ class BodyCompiler:
         if pou.kind == "function" and up == pou.cname:
             return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
         v = pou.var(name)
+        static = T.find_var((pou.owner or pou).statics, name) if v is None else None
+        if static is not None:  # VAR_STAT (user mode): one C variable for every instance
+            return Ref(static.csym, True, static.type, static)
         if v is None and pou.owner is not None and pou.owner.var(name) is not None:
             ov = pou.owner.var(name)  # a METHOD's or ACTION's access to its FB's variables
             why = "it is a CONSTANT" if ov.constant else ""

@@ -68,6 +68,7 @@ class Pou:
         self.cfunc = self.cname  # the C function of a FUNCTION (a method's is <FB>__<METHOD>)
         self.owner = None  # user mode: the FUNCTION_BLOCK or PROGRAM of a METHOD or ACTION
         self.methods = {}  # user mode: upper name -> the METHODs and ACTIONs of a FUNCTION_BLOCK or PROGRAM
+        self.statics = []  # user mode: VAR_STAT, shared by every instance
         self.file = file
         self.node = node
         self.vars = []
@@ -776,8 +777,7 @@ class Compiler:
         if self.user and not block.items:  # an empty `VAR END_VAR` (TwinCAT's PROGRAM template)
             return None
         if self.user and cls == "StaticDeclarations":
-            raise self.err(block, "VAR_STAT is not supported by pacst's user programs yet: declare the variable "
-                                  "in a global variable list")
+            return self._statics(pou, block)
         if section is None:
             keyword = {"StaticDeclarations": "VAR_STAT", "MethodInstanceVariableDeclarations": "VAR_INST",
                        "ExternalVariableDeclarations": "VAR_EXTERNAL", "AccessDeclarations": "VAR_ACCESS"}.get(
@@ -827,6 +827,28 @@ class Compiler:
                 self._declare_var(pou, section, constant, vtype, init.value, dv)
         if refused:
             raise StErrors(refused)
+
+    def _statics(self, pou, block):
+        """User mode: VAR_STAT, variables every instance of the FUNCTION_BLOCK shares: each a C variable
+        `<FB>__STAT__<NAME>` beside the FB's code, given its initial value when an instance is initialised
+        (before the first scan, so a second instance finds it as the first left it only then)."""
+        if pou.kind != "fb" and pou.owner is None:
+            raise self.err(block, "VAR_STAT belongs to a FUNCTION_BLOCK or PROGRAM")
+        holder = pou.owner or pou
+        self.dialect(block, "VAR_STAT")
+        for item in block.items:
+            vtype, strlen = user.var_type(self, item.init, allow_fb=False)
+            for dv in item.variables:
+                self._check_ident(dv.variable.name, "variable")
+                name = _name(dv.variable.name)
+                if pou.var(name) is not None or T.find_var(holder.statics, name) is not None:
+                    raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
+                v = T.Var(name, "stat", vtype, user.initial_value(item.init), dv)
+                v.strlen = strlen
+                v.csym = f"{holder.cname}__STAT__{name.upper()}"
+                if v.init is not None:
+                    self._init_code(v, "x")  # checks the initial value now
+                holder.statics.append(v)
 
     def _check_section(self, pou, section, constant, vtype, item):
         """Whether a variable of type `vtype` may stand in this block of `pou`."""

@@ -107,6 +107,7 @@ class Emitter:
             out.append(f"void {pou.cname}_body__({pou.cname} *data__);")
             if pou.program:  # its one instance, which the host runs and other POUs may read (MAIN.x)
                 out.append(f"extern {pou.cname} {program_instance(pou)};")
+            out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]  # VAR_STAT
         else:
             out.append(self._function_signature(pou) + ";")
         return out
@@ -167,10 +168,13 @@ class Emitter:
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
         out = [f"{pou.cname} {program_instance(pou)};", ""] if pou.program else []
+        out += [f"__IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]
         out += [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
                "  (void)retain;",
                "  data__->EN.value = TRUE;",
                "  data__->ENO.value = TRUE;"]
+        for v in pou.statics:
+            out += ["  " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
         for v in pou.vars:
             target = f"data__->{v.cname}" if v.type.is_fb else f"data__->{v.cname}.value"
             out += ["  " + line for line in self.comp.init_code(v, target)]
