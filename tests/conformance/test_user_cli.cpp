@@ -346,15 +346,15 @@ TEST_F(TranslatorUserCli, TwinCatMethodsAreReadAtTheirLines) {
     EXPECT_NE(result.output.find(bad + ":13:1: error: undeclared function, METHOD, ACTION or function block instance 'Cont'"), std::string::npos) << result.output;
 }
 
-TEST_F(TranslatorUserCli, TwinCatPropertiesAndOtherLanguagesAreRefused) {
+TEST_F(TranslatorUserCli, TwinCatTransitionsAndOtherLanguagesAreRefused) {
     auto method = Write("FB_A.TcPOU",
                         "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
                         "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n]]></Declaration>\n"
                         "    <Implementation><ST><![CDATA[;]]></ST></Implementation>\n"
-                        "    <Property Name=\"Speed\">\n    </Property>\n  </POU>\n</TcPlcObject>\n");
+                        "    <Transition Name=\"Ready\">\n    </Transition>\n  </POU>\n</TcPlcObject>\n");
     auto result = RunTranslator({"check", "--user", method});
     EXPECT_EQ(result.exitCode, 1);
-    EXPECT_NE(result.output.find(method + ":7:1: error: PROPERTY Speed of FB_A is outside pacst's user programs"),
+    EXPECT_NE(result.output.find(method + ":7:1: error: TRANSITION Ready of FB_A is outside pacst's user programs"),
               std::string::npos)
         << result.output;
     auto ladder = Write("FB_B.TcPOU",

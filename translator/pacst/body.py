@@ -77,6 +77,16 @@ class BodyCompiler:
             raise self.err(node.elements[0], f"{fb.base.name} has no METHOD or ACTION '{name}'")
         return "data__", m
 
+    def property_target(self, node):
+        """(the C pointer to the instance, the PROPERTY's {"name", "type", "get", "set"}) that the variable `node`
+        names (`Velocity` inside the FB, `THIS^.Velocity`, `Axis.Velocity`), or None."""
+        if not self.comp.user or _cls(node) not in ("SimpleVariable", "MultiElementVariable"):
+            return None
+        if _cls(node) == "SimpleVariable" and self.pou.accessor is not None and \
+                _name(node.name).upper() == self.pou.cname:
+            return None  # inside its own Get or Set the name is the value
+        return self._member_target(node, "properties")
+
     def method_target(self, name_node):
         """(the C pointer to the instance, the METHOD or ACTION) a call's name `name_node` names, or None:
         `Move` inside the FB (or one of its methods), `THIS^.Move`, `Axis.Move`, `Axes[i].Move`."""
@@ -85,10 +95,13 @@ class BodyCompiler:
         sup = self._super(name_node)
         if sup is not None:
             return sup
+        return self._member_target(name_node, "methods")
+
+    def _member_target(self, name_node, table):
         name_node = self.this(name_node)
         if _cls(name_node) == "SimpleVariable":
             fb = self._fb_of_body()
-            m = fb.methods.get(_name(name_node.name).upper()) if fb is not None else None
+            m = getattr(fb, table).get(_name(name_node.name).upper()) if fb is not None else None
             if m is None or self.pou.var(_name(name_node.name)) is not None:
                 return None
             return "data__", m
@@ -104,7 +117,7 @@ class BodyCompiler:
         except StError:
             return None
         pou = getattr(r.type, "pou", None) if r.type.is_fb else None
-        m = pou.methods.get(_name(last.field.name).upper()) if pou is not None else None
+        m = getattr(pou, table).get(_name(last.field.name).upper()) if pou is not None else None
         if m is None:
             return None
         return f"&({r.read()})", m
@@ -114,7 +127,7 @@ class BodyCompiler:
         name = _name(token)
         up = name.upper()
         pou = self.pou
-        if pou.kind == "function" and up == pou.cname:
+        if pou.kind == "function" and up == pou.cname and pou.ret is not None:
             return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
         v = pou.var(name)
         static = T.find_var((pou.owner or pou).statics, name) if v is None else None
@@ -367,6 +380,14 @@ class BodyCompiler:
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")
         target = node.variables[0]
+        prop = self.property_target(target)
+        if prop is not None:  # user mode: Axis.Velocity := v calls its Set
+            this, p = prop
+            if p["set"] is None:
+                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only")
+            te = self.ex.expr(node.expression, p["type"])
+            value = self.ex.coerce(te, p["type"], node.expression)
+            return [f"{ind}{p['set'].cfunc}({this}, TRUE, NULL, {value});"]
         r = self.ref(target)
         if r.var.section == "result":
             self.result_assigned = True

@@ -69,6 +69,8 @@ class Pou:
         self.owner = None  # user mode: the FUNCTION_BLOCK or PROGRAM of a METHOD or ACTION
         self.methods = {}  # user mode: upper name -> the METHODs and ACTIONs of a FUNCTION_BLOCK or PROGRAM
         self.statics = []  # user mode: VAR_STAT, shared by every instance
+        self.properties = {}  # user mode: upper name -> {"name", "type", "get": Pou, "set": Pou} of a FUNCTION_BLOCK
+        self.accessor = None  # user mode: "get" or "set" for a PROPERTY's accessor
         self.file = file
         self.node = node
         self.vars = []
@@ -143,7 +145,7 @@ class Compiler:
             for item in src.tree.items:
                 if _cls(item) in ("FunctionBlock", "Program", "Interface"):
                     owner = item
-                elif _cls(item) in ("Method", "Action") and owner is not None:
+                elif _cls(item) in ("Method", "Action", "Property") and owner is not None:
                     self.members.setdefault(id(owner), []).append(item)
                     attached.add(id(item))
         for src, item in self._in_order(sources):
@@ -651,6 +653,7 @@ class Compiler:
             self.program.items.append(("pou", pou, self.file))
             return
         members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
+        members = [m for m in members if m is not None]  # a PROPERTY's declaration is no code of its own
         if base is not None:
             members += self._inherit(pou, base)
         if kind == "fb" and getattr(node, "implements", None) is not None:
@@ -719,10 +722,13 @@ class Compiler:
         try:
             self.file = base.file
             for node in self.members.get(id(base.node), []):
-                if _name(node.name).upper() not in own:
+                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in pou.properties \
+                        or _cls(node) != "Property" and _name(node.name).upper() not in own:
                     members.append(self._member(pou, node, inherited=True))
             for node in self.members.get(id(base.node), []):
-                members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
+                if _cls(node) != "Property":
+                    members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
+            members = [m for m in members if m is not None]
             body = Pou("function", "SUPER__BODY", base.file, base.node)
             body.owner = pou
             body.cfunc = f"{pou.cname}__SUPER__BODY"
@@ -735,7 +741,49 @@ class Compiler:
             m.inherited_from = base
         return members
 
+    def _property(self, owner, node, inherited):
+        """User mode: a PROPERTY: `X` declares it (TwinCAT's <Property>), `X.Get` and `X.Set` are its accessors
+        (a body of `X` alone is its Get): C functions `<FB>__<X>__GET(FB *, EN, ENO)` returning the value and
+        `<FB>__<X>__SET(FB *, EN, ENO, X)`; `inst.X` reads through the one and `inst.X := v` writes through the
+        other."""
+        name, _, part = _name(node.name).partition(".")
+        self.dialect(node, f"PROPERTY {name}")
+        rt = node.return_type
+        if rt is None:
+            raise self.err(node, f"PROPERTY {name} needs its type")
+        t = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+        up = name.upper()
+        known = owner.properties.get(up)
+        if known is None:
+            if owner.var(name) is not None or up in owner.methods:
+                raise self.err(node.name, f"PROPERTY {name}: {owner.name} already has a variable or member of that name")
+            known = owner.properties[up] = {"name": name, "type": t, "get": None, "set": None}
+        elif known["type"] is not t:
+            raise self.err(rt, f"PROPERTY {name} is a {known['type'].name}, not a {t.name}")
+        kind = {"": "get" if node.body is not None else None, "GET": "get", "SET": "set"}.get(part.upper(), "?")
+        if kind == "?":
+            raise self.err(node.name, f"PROPERTY {_name(node.name)}: the parts of a PROPERTY are Get and Set")
+        if kind is None:
+            return None
+        if known[kind] is not None and not inherited:
+            raise self.err(node.name, f"PROPERTY {name} has two {kind.capitalize()}s")
+        m = Pou("function", name, self.file, node)
+        m.owner = owner
+        m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
+        m.accessor = kind
+        if kind == "get":
+            m.ret = t
+        else:
+            m.vars.append(T.Var(name, "input", t, None, node.name))
+        for block in node.declarations:
+            self._var_block(m, block)
+        known[kind] = m
+        return m
+
     def _member(self, owner, node, inherited=False, prefix=""):
+        if _cls(node) == "Property":
+            return self._property(owner, node, inherited)
         """User mode: a METHOD or ACTION of `owner` (a FUNCTION_BLOCK or PROGRAM), declared before the owner's
         body (which may call it): a C function `<OWNER>__<NAME>(OWNER *data__, ...)` whose body reads and
         writes the owner's variables (docs/user_dialect.md)."""

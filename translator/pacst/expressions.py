@@ -262,6 +262,12 @@ class ExprCompiler:
             self.comp.shared_enum_value(name, node)
         if self.body is None:
             raise self.err(node, "initial value must be a literal")
+        prop = self.body.property_target(node)
+        if prop is not None:  # user mode: Axis.Velocity calls its Get
+            this, p = prop
+            if p["get"] is None:
+                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
+            return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
         ref = self.body.ref(node)
         if ref.type.is_fb:
             raise self.err(node, f"function block instance '{ref.var.name}' used as a value")

@@ -15,8 +15,10 @@ _CDATA = re.compile(r"<!\[CDATA\[(.*?)\]\]>", re.S)
 _COMMENTS = re.compile(r"\(\*.*?\*\)|//[^\n]*|\{[^}]*\}", re.S)
 _POU_KEYWORD = re.compile(r"\b(FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.I)
 # Parts of a TwinCAT object that pacst does not translate (METHODs and ACTIONs it does: _members).
-_REFUSED = {"Property": "PROPERTY", "Transition": "TRANSITION"}
-_MEMBERS = {"Method": "METHOD", "Action": "ACTION"}
+_REFUSED = {"Transition": "TRANSITION"}
+_MEMBERS = {"Method": "METHOD", "Action": "ACTION", "Property": "PROPERTY"}
+_PROPERTY = re.compile(r"PROPERTY\s+(?:(?:PUBLIC|PRIVATE|PROTECTED|INTERNAL|FINAL|ABSTRACT)\s+)*(\w+)\s*:\s*"
+                       r"([^\r\n;]*?)\s*;?\s*$", re.I | re.M)
 _OBJECTS = {"POU", "GVL", "DUT"}
 
 
@@ -56,8 +58,10 @@ def object_st(text, path):
         if isinstance(element.tag, str) and element.tag in _REFUSED:
             raise StError(path, element.sourceline, 1, f"{_REFUSED[element.tag]} {element.get('Name')} of "
                                                        f"{obj.get('Name')} is outside pacst's user programs "
-                                                       "(docs/user_dialect.md): write a METHOD")
-    for holder in [obj] + [e for e in obj if isinstance(e.tag, str) and e.tag in _MEMBERS]:
+                                                       "(docs/user_dialect.md)")
+    parts = [e for e in obj if isinstance(e.tag, str) and e.tag in _MEMBERS]
+    parts += [g for e in parts if e.tag == "Property" for g in e if isinstance(g.tag, str) and g.tag in ("Get", "Set")]
+    for holder in [obj] + parts:
         implementation = holder.find("Implementation")
         if implementation is not None:
             languages = [e for e in implementation if isinstance(e.tag, str)]
@@ -85,10 +89,13 @@ def _members(text, st, end, path):
     <Implementation>): the END_ keywords TwinCAT leaves out, and an ACTION's heading, written into blank
     space between the CDATA sections, so that every line keeps its place."""
     chars = list(st)
-    members = list(re.finditer(r"<(Method|Action)\b[^>]*>", text))
+    members = list(re.finditer(r"<(Method|Action|Property)\b[^>]*>", text))
     _write(chars, _last_cdata_end(text, members[0].start()), members[0].end(), end, path, members[0].start())
     for i, m in enumerate(members):
         close = text.find(f"</{m.group(1)}>", m.end())
+        if m.group(1) == "Property":
+            _property(text, chars, m, close, path)
+            continue
         if m.group(1) == "Action":
             name = re.search(r'\bName="([^"]*)"', m.group(0))
             _write(chars, m.start(), _next_cdata_start(text, m.end()), f"ACTION {name.group(1) if name else ''} :",
@@ -96,6 +103,26 @@ def _members(text, st, end, path):
         _write(chars, _last_cdata_end(text, close), close + len(m.group(1)) + 3, f"END_{_MEMBERS[m.group(1)]}",
                path, close)
     return "".join(chars)
+
+
+def _property(text, chars, m, close, path):
+    """A <Property>: its declaration closed with END_PROPERTY, and each <Get> and <Set> written as
+    `PROPERTY Name.Get : T ... END_PROPERTY` (pacst's form of the accessors, docs/user_dialect.md)."""
+    declaration = _CDATA.search(text, m.end(), close)
+    found = _PROPERTY.search(declaration.group(1)) if declaration else None
+    if found is None:
+        line = text.count("\n", 0, m.start()) + 1
+        raise StError(path, line, 1, "a PROPERTY's declaration is `PROPERTY Name : Type`")
+    name, type_text = found.group(1), found.group(2)
+    accessors = list(re.finditer(r"<(Get|Set)\b[^>]*>", text[:close]))
+    accessors = [a for a in accessors if a.start() > m.end()]
+    first = accessors[0].end() if accessors else close + len("</Property>")
+    _write(chars, declaration.end(), first, "END_PROPERTY", path, declaration.end())
+    for a in accessors:
+        a_close = text.find(f"</{a.group(1)}>", a.end())
+        _write(chars, a.start(), _next_cdata_start(text, a.end()), f"PROPERTY {name}.{a.group(1)} : {type_text}",
+               path, a.start())
+        _write(chars, _last_cdata_end(text, a_close), a_close + len(a.group(1)) + 3, "END_PROPERTY", path, a_close)
 
 
 def _last_cdata_end(text, before):
