@@ -695,7 +695,7 @@ class Compiler:
         if node.extends is not None or node.declarations:
             raise self.err(node, "an INTERFACE that EXTENDS another or declares PROPERTYs is not translated yet")
         t = T.InterfaceType(_name(node.name))
-        t.methods = [_name(m.name) for m in self.members.get(id(node), [])]
+        t.methods = [_name(m.name) for m in self.members.get(id(node), []) if _cls(m) == "Method"]
         self.types[t.cname] = t
 
     def _extends(self, pou, node):

@@ -470,6 +470,8 @@ class ExprCompiler:
         if self.body is not None and self.body.lookup(name) is not None:
             raise self.err(node, f"function block instance '{name}' called inside an expression: call it as a "
                                  "statement and read its outputs")
+        if up in self.comp.refused:
+            raise self.err(node, f"FUNCTION {name} cannot be called: its declaration was refused (above)")
         if up in self.comp.declared_at:
             file, line = self.comp.declared_at[up]
             raise self.err(node, f"'{name}' is called before its declaration ({file}:{line}): declare before use")

@@ -10,7 +10,7 @@ from lxml import etree
 
 from .errors import StError
 
-OBJECT_EXTENSIONS = (".tcpou", ".tcgvl", ".tcdut")
+OBJECT_EXTENSIONS = (".tcpou", ".tcgvl", ".tcdut", ".tcio")
 _CDATA = re.compile(r"<!\[CDATA\[(.*?)\]\]>", re.S)
 _COMMENTS = re.compile(r"\(\*.*?\*\)|//[^\n]*|\{[^}]*\}", re.S)
 _POU_KEYWORD = re.compile(r"\b(FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.I)
@@ -19,7 +19,7 @@ _REFUSED = {"Transition": "TRANSITION"}
 _MEMBERS = {"Method": "METHOD", "Action": "ACTION", "Property": "PROPERTY"}
 _PROPERTY = re.compile(r"PROPERTY\s+(?:(?:PUBLIC|PRIVATE|PROTECTED|INTERNAL|FINAL|ABSTRACT)\s+)*(\w+)\s*:\s*"
                        r"([^\r\n;]*?)\s*;?\s*$", re.I | re.M)
-_OBJECTS = {"POU", "GVL", "DUT"}
+_OBJECTS = {"POU", "GVL", "DUT", "Itf"}
 
 
 def is_object_file(path):
@@ -52,7 +52,7 @@ def object_st(text, path):
     objects = [e for e in root if isinstance(e.tag, str) and e.tag in _OBJECTS]
     if root.tag != "TcPlcObject" or len(objects) != 1:
         raise StError(path, root.sourceline or 1, 1, "not a TwinCAT object file: a TcPlcObject with one POU, "
-                                                     "GVL or DUT is expected")
+                                                     "GVL, DUT or Itf is expected")
     obj = objects[0]
     for element in obj.iter():
         if isinstance(element.tag, str) and element.tag in _REFUSED:
@@ -70,6 +70,10 @@ def object_st(text, path):
                 raise StError(path, at.sourceline, 1, f"{holder.get('Name')} is implemented in "
                                                       f"{at.tag if languages else 'nothing'}: pacst reads ST only")
     st = _blank_outside_cdata(text)
+    if obj.tag == "Itf":  # a .TcIO: the INTERFACE, then its METHODs' and PROPERTYs' declarations
+        if any(isinstance(e.tag, str) and e.tag in _MEMBERS for e in obj):
+            return _members(text, st, "END_INTERFACE", path)
+        return st + "\nEND_INTERFACE\n"
     if obj.tag == "POU":
         declaration = obj.findtext("Declaration") or ""
         m = _POU_KEYWORD.search(_COMMENTS.sub(" ", declaration))
