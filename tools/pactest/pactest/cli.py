@@ -166,7 +166,7 @@ def main(argv=None):
     except WiringError as e:
         print(f"pac-test: invalid wiring file {args.wiring}: {e}", file=sys.stderr)
         return EXIT_REFUSED
-    except build.BuildError as e:
+    except (build.BuildError, hostgen.ProgramError) as e:
         print(f"pac-test: {e}", file=sys.stderr)
         return EXIT_REFUSED
     built = time.monotonic()

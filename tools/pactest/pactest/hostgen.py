@@ -10,6 +10,10 @@ _ELEMENTARY_KINDS = {"BOOL": "kBool", "BYTE": "kUnsigned", "WORD": "kUnsigned", 
                      "INT": "kSigned", "DINT": "kSigned", "REAL": "kReal", "LREAL": "kLreal", "TIME": "kTime"}
 
 
+class ProgramError(Exception):
+    """What pac-test cannot run in the user's program (not in the wiring file), with its file and line."""
+
+
 class Symbols:
     def __init__(self, table):
         self.table = table
@@ -130,8 +134,10 @@ def located_copies(symbols, copy_in, copy_out, wiring=None):
             if loc["size"] != "B":
                 # CODESYS numbers %IW and %ID by word and double word, TwinCAT by byte: rather than guess
                 # which the program was written for, pac-test asks for byte addresses.
-                raise WiringError(g["path"], f"located at {loc['address']}: pac-test copies byte (%IB, %QB) and "
-                                             "bit (%IX, %QX) addresses only; declare the image as bytes")
+                files = {gl["name"]: gl["file"] for gl in symbols.table["global_lists"]}
+                where = f"{files.get(g.get('list'), g['path'])}:{g.get('line') or 1}"
+                raise ProgramError(f"{where}: {g['path']} located at {loc['address']}: pac-test copies byte (%IB, %QB) "
+                                   "and bit (%IX, %QX) addresses only; declare the image as bytes")
             lines.append(f"    static_assert({byte} + sizeof {var} <= 256, \"{g['path']} beyond %{area}B255\");")
             _memcpy(lines, side, f"&{var}", f"{image} + {byte}", f"sizeof {var}")
 

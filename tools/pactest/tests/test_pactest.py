@@ -333,6 +333,23 @@ class WiringRefusalTest(unittest.TestCase):
                       self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
 
 
+class ProgramRefusalTest(unittest.TestCase):
+    """What pac-test cannot run in the program itself is named at its file and line, not as the wiring file's."""
+
+    def test_a_word_address(self):
+        import shutil
+        folder = os.path.join(OUT, "word-address")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        path = os.path.join(folder, "GVL_Word.st")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n")
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn(f"{path}:2: GVL_Word.Speed located at %IW64: pac-test copies byte", run.stderr)
+        self.assertNotIn("invalid wiring file", run.stderr)
+
+
 def outcomes(stdout):
     """{test: (mark, asserts, [(scan, t, message)...])}: what a run found, without where it found it."""
     found = {}
