@@ -302,11 +302,10 @@ class Compiler:
         if kind == "standard":
             return up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS or up in STANDARD_FUNCTIONS \
                 or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up) is not None
-        folder = os.path.join(os.path.abspath(self.namespaces[namespace.upper()][1]), "")
+        if up in self.enum_values and up not in self.declared_at:  # PA_CONTROL.PAC_AX_HOME: its type's
+            up = self.enum_values[up].cname
         file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
-        if file is None and up in self.enum_values:
-            return True  # an enumeration value of a library type (PA_CONTROL.PAC_AX_HOME)
-        return file is not None and os.path.abspath(file).startswith(folder)
+        return self._under(file, self.namespaces[namespace.upper()][1])
 
     @staticmethod
     def _under(path, folder):
