@@ -191,7 +191,8 @@ def main(argv=None):
     junit_path = args.junit or os.path.join(out, "junit.xml")
     junit.write(junit_path, wiring.name, results, ran - built)
     if not args.no_coverage:
-        coverage.report(host_build.obj, wiring.folder, _where(os.path.join(out, "coverage")))
+        coverage.report(host_build.obj, wiring.folder, _where(os.path.join(out, "coverage")),
+                        extracted=os.path.join(out, "plcopen"))
     bad = [r for r in results if r.outcome in ("failed", "error", "passed unexpectedly")]
     expected = sum(1 for r in results if r.outcome == "failed as expected")
     shard = f", shard {index}/{count}" if count > 1 else ""

@@ -26,8 +26,9 @@ def reset(objects):
     _st_coverage().reset(objects)
 
 
-def report(objects, folder, out):
-    """Prints the table of the ST files under `folder`; returns False when gcovr is missing."""
+def report(objects, folder, out, extracted=None):
+    """Prints the table of the ST files under `folder` and of those extracted from a PLCopen XML project into
+    `extracted` (under OUT); returns False when gcovr is missing."""
     gcovr = gcovr_command()
     if gcovr is None:
         print("pac-test: no coverage table: gcovr is not installed (pip install gcovr)")
@@ -38,8 +39,15 @@ def report(objects, folder, out):
     # The host's build (OUT/st-c, the C of the ST) lies under the project's folder when OUT does (the
     # default pac-test-out, run in the project): its files are no ST of the project.
     built = os.path.join(os.path.abspath(os.path.dirname(objects.rstrip(os.sep))), "")
-    subprocess.run([gcovr, "--root", folder, "--filter", os.path.join(os.path.abspath(folder), ""),
-                    "--exclude", re.escape(built) + ".*", "--json", detail, "--html-details", os.path.join(out, "index.html"),
+    keep = ""
+    filters = ["--filter", os.path.join(os.path.abspath(folder), "")]
+    if extracted is not None and os.path.isdir(extracted):  # the ST of a PLCopen XML project lies under OUT
+        extracted = os.path.join(os.path.abspath(extracted), "")
+        filters += ["--filter", re.escape(extracted)]
+        if extracted.startswith(built):
+            keep = f"(?!{re.escape(extracted[len(built):])})"
+    subprocess.run([gcovr, "--root", folder, *filters,
+                    "--exclude", re.escape(built) + keep + ".*", "--json", detail, "--html-details", os.path.join(out, "index.html"),
                     "--html-title", "pac-test: coverage of the machine program", objects],
                    check=True, stdout=subprocess.DEVNULL)
     import json

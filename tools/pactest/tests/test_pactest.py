@@ -463,9 +463,9 @@ class PlcopenRoundTripTest(unittest.TestCase):
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
     scans (at the lines of the ST files pac-test extracts from the XML)."""
 
-    def round_trip(self, name, folder, sources, expected):
+    def round_trip(self, name, folder, sources, expected, coverage=False):
         """Exports `sources` ({file name: ST text}), runs the wiring file of `folder` on the XML and on its
-        own sources, and compares."""
+        own sources, and compares; with `coverage`, the XML's run tables the coverage of the ST it extracted."""
         out = os.path.join(OUT, "roundtrip", name)
         st = os.path.join(out, "st")
         os.makedirs(st, exist_ok=True)
@@ -490,8 +490,12 @@ class PlcopenRoundTripTest(unittest.TestCase):
         with open(os.path.join(out, "wiring.json"), "w", encoding="utf-8") as f:
             json.dump(wiring, f)
         from_source = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "source"), "--no-coverage")
-        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
+        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"),
+                            *([] if coverage else ["--no-coverage"]))
         self.assertEqual(from_xml.returncode, from_source.returncode, from_xml.stdout + from_xml.stderr)
+        if coverage:  # the ST extracted from the XML lies under OUT, which coverage leaves out otherwise
+            self.assertNotIn("total 0/0", from_xml.stdout)
+            self.assertRegex(from_xml.stdout, r"(?m)^PRG_Count +\d+/\d+")
         found = outcomes(from_source.stdout)
         self.assertEqual(sorted(found), expected[0], from_source.stdout)
         self.assertEqual(sum(len(f) for _, _, f in found.values()), expected[1], from_source.stdout)
@@ -513,7 +517,7 @@ class PlcopenRoundTripTest(unittest.TestCase):
         for file in sorted(n for n in os.listdir(folder) if n.endswith(".st")):
             with open(os.path.join(folder, file), encoding="utf-8") as f:
                 sources[file] = f.read()
-        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7))
+        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7), coverage=True)
 
 
 class DocsCiJobsTest(unittest.TestCase):
