@@ -61,7 +61,7 @@ def _caller_location(failure):
     return (path, int(line)) if line.isdigit() and path and path != "??" else None
 
 
-def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
+def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
     name = fb["name"]
     result = Result(name, name.upper() in wiring.expected_to_fail)
     scenario = os.path.join(out, "scenarios", name + ".json")
@@ -75,7 +75,8 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
             os.remove(stale)
     start = time.monotonic()
     run = subprocess.run([host, "--scenario", scenario, "--test", name, "--result", result_file, "--vcd", vcd,
-                          "--time-limit-ms", str(time_limit_ms)], capture_output=True, text=True)
+                          "--vcd-when", "always" if vcd_all else "failed", "--time-limit-ms", str(time_limit_ms)],
+                         capture_output=True, text=True)
     result.seconds = time.monotonic() - start
     result.host_exit, result.host_error = run.returncode, wiring_path(run.stderr.strip(), step_paths)
     if run.returncode not in (0, 1) or not os.path.exists(result_file):
@@ -104,7 +105,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
                             f"t={data['time_ms']:g} ms: the time limit of {time_limit_ms} ms ran out before "
                             "TEST_FINISHED()")
     failed = bool(result.lines)
-    if failed and os.path.exists(vcd):
+    if (failed or vcd_all) and os.path.exists(vcd):
         result.vcd = _where(vcd)
     if result.expected_to_fail:
         result.outcome = "failed as expected" if failed else "passed unexpectedly"
@@ -127,6 +128,8 @@ def main(argv=None):
     parser.add_argument("--filter", default="", help="run only the tests whose name contains this text")
     parser.add_argument("--no-coverage", action="store_true", help="no instrumentation, no coverage table")
     parser.add_argument("--list", action="store_true", help="print the tests of this shard and stop")
+    parser.add_argument("--vcd-all", action="store_true",
+                        help="write the VCD of every test, passing ones too (OUT/vcd/NAME.vcd)")
     parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache)")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
     args = parser.parse_args(argv)
@@ -174,7 +177,8 @@ def main(argv=None):
         coverage.reset(host_build.obj)
     vcd_dir = os.path.join(out, "vcd")
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms), selected))
+        results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms,
+                                                    args.vcd_all), selected))
     ran = time.monotonic()
     refused = [r for r in results if r.host_exit == 2]
     if refused:  # the scenario loader refused the wiring file's timing, controller or faults

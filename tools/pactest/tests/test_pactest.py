@@ -391,7 +391,8 @@ class DialectTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.folder = os.path.join(HERE, "dialect")
-        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), os.path.join(OUT, "dialect"), "--no-coverage")
+        cls.out = os.path.join(OUT, "dialect")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out, "--no-coverage", "--vcd-all")
 
     def test_every_test_passes(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -399,6 +400,12 @@ class DialectTest(unittest.TestCase):
         self.assertIn(f"{len(tests)} tests: {len(tests)} passed, 0 failed", self.result.stdout)
         for name in tests:
             self.assertRegex(self.result.stdout, rf"\bok  {name}\b")
+
+    def test_vcd_all_writes_the_vcd_of_passing_tests(self):
+        vcd = os.path.join(self.out, "vcd", "FB_TestStartButton.vcd")
+        self.assertTrue(os.path.exists(vcd), self.result.stdout)
+        with open(vcd, encoding="utf-8") as f:
+            self.assertIn("GVL_Io.StartButton", f.read())
 
 
 @unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
