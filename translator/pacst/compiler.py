@@ -632,11 +632,11 @@ class Compiler:
                 constant_block = block
             if not self.user:
                 self._var_block(pou, block)
-                continue
-            try:  # user mode: every refused declaration is reported, not only the first
-                self._var_block(pou, block)
-            except (StError, StErrors) as e:
-                refused += e.errors if isinstance(e, StErrors) else [e]
+            else:
+                try:  # user mode: every refused declaration is reported, not only the first
+                    self._var_block(pou, block)
+                except (StError, StErrors) as e:
+                    refused += e.errors if isinstance(e, StErrors) else [e]
             if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
