@@ -405,7 +405,7 @@ class DialectTest(unittest.TestCase):
         vcd = os.path.join(self.out, "vcd", "FB_TestStartButton.vcd")
         self.assertTrue(os.path.exists(vcd), self.result.stdout)
         with open(vcd, encoding="utf-8") as f:
-            self.assertIn("GVL_Io.StartButton", f.read())
+            self.assertRegex(f.read(), r"\$scope module GVL_Io \$end\n\$var wire 1 \S+ StartButton \$end")
 
 
 @unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
