@@ -544,9 +544,8 @@ class ExprCompiler:
         if fn == "MEMCMP":
             return TE(T.DINT, f"__pacst_memcmp({', '.join(codes)})")
         c = {"MEMCPY": "memcpy", "MEMMOVE": "memmove", "MEMSET": "memset"}[fn]
-        first = codes[1] if fn == "MEMSET" else codes[1]
-        return TE(T.ELEMENTARY["UDINT"], f"((UDINT)(({c}({codes[0]}, {'(int)' if fn == 'MEMSET' else ''}{first}, "
-                                         f"{codes[2]}), {codes[2]})))")
+        second = f"(int){codes[1]}" if fn == "MEMSET" else codes[1]
+        return TE(T.ELEMENTARY["UDINT"], f"((UDINT)(({c}({codes[0]}, {second}, {codes[2]}), {codes[2]})))")
 
     def _real_arg(self, arg, want):
         """(REAL or LREAL, C code) of a numeric standard function's argument: a REAL stays REAL, an integer or an
