@@ -38,6 +38,7 @@ class Result:
         self.name, self.expected_to_fail = name, expected_to_fail
         self.outcome, self.lines, self.vcd, self.asserts, self.seconds = "error", [], None, 0, 0.0
         self.host_exit, self.host_error = None, ""
+        self.end_ms = None  # the simulated time the test ended at
 
 
 def _where(path):
@@ -85,6 +86,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
     with open(result_file, encoding="utf-8") as f:
         data = json.load(f)
     result.asserts = data["asserts"]
+    result.end_ms = data["time_ms"]
     seen = {}
     for failure in data["failures"]:
         caller = _caller_location(failure)
@@ -184,6 +186,11 @@ def main(argv=None):
     if refused:  # the scenario loader refused the wiring file's timing, controller or faults
         print(f"pac-test: invalid wiring file {args.wiring}: {refused[0].host_error}", file=sys.stderr)
         return EXIT_REFUSED
+    for r in results:
+        late = [at for at, _ in wiring.faults.get(r.name.upper(), []) if r.end_ms is not None and at > r.end_ms]
+        if late:  # a fault the test never saw: the test ended before it (its time in the wiring file is off)
+            print(f"pac-test: warning: {args.wiring}: $.tests.faults.{r.name}: the fault at {min(late)} ms comes after "
+                  f"the test ended at {r.end_ms:g} ms; it never happened", file=sys.stderr)
     for r in results:
         mark = {"passed": "ok", "failed": "FAILED", "error": "ERROR", "failed as expected": "failed (expected)",
                 "passed unexpectedly": "FAILED (expected to fail)"}[r.outcome]

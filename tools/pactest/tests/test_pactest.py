@@ -401,6 +401,10 @@ class DialectTest(unittest.TestCase):
         for name in tests:
             self.assertRegex(self.result.stdout, rf"\bok  {name}\b")
 
+    def test_a_fault_after_the_end_of_its_test_is_warned_about(self):
+        self.assertRegex(self.result.stderr, r"warning: .*wiring\.json: \$\.tests\.faults\.FB_TestStartButton: the fault at "
+                                             r"150 ms comes after the test ended at \d+ ms; it never happened")
+
     def test_vcd_all_writes_the_vcd_of_passing_tests(self):
         vcd = os.path.join(self.out, "vcd", "FB_TestStartButton.vcd")
         self.assertTrue(os.path.exists(vcd), self.result.stdout)
