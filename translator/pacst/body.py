@@ -1,4 +1,5 @@
 """Translates one POU's body: variable access, statements, CASE and function block calls."""
+import copy
 import dataclasses
 import re
 
@@ -116,6 +117,15 @@ class BodyCompiler:
             r = self.ref(prefix)
         except StError:
             return None
+        if r.type.kind == "interface" and table == "methods":  # a call through the instance's table
+            proto = r.type.protos.get(_name(last.field.name).upper())
+            if proto is None:
+                raise self.err(last, f"INTERFACE {r.type.name} has no METHOD '{_name(last.field.name)}'")
+            line, col = pos(last)
+            where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+            call = copy.copy(proto)
+            call.cfunc = f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, \"{where}\"))->{proto.cname}"
+            return f"({r.read()}).inst", call
         pou = getattr(r.type, "pou", None) if r.type.is_fb else None
         m = getattr(pou, table).get(_name(last.field.name).upper()) if pou is not None else None
         if m is None:

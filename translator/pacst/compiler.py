@@ -23,6 +23,11 @@ from . import user
 
 
 
+def _signature(pou):
+    """What an INTERFACE's METHOD and its implementation must share: the result and the pins."""
+    return pou.ret, [(v.section, v.type) for v in pou.vars if v.section in ("input", "output", "inout")]
+
+
 def _array_elements(node):
     """The elements of an array's initial value in order (blark nests the ones after the first, unbracketed)."""
     out = []
@@ -71,6 +76,7 @@ class Pou:
         self.statics = []  # user mode: VAR_STAT, shared by every instance
         self.properties = {}  # user mode: upper name -> {"name", "type", "get": Pou, "set": Pou} of a FUNCTION_BLOCK
         self.accessor = None  # user mode: "get" or "set" for a PROPERTY's accessor
+        self.interfaces = []  # user mode: the INTERFACEs a FUNCTION_BLOCK IMPLEMENTS (its base's too)
         self.file = file
         self.node = node
         self.vars = []
@@ -264,8 +270,7 @@ class Compiler:
             return T.STANDARD_FBS[up]
         if up in self.types:
             if self.types[up].kind == "interface":
-                raise self.err(token, f"a variable of the INTERFACE {name} (a reference to an instance) is not "
-                                      "translated yet: declare the FUNCTION_BLOCK's instance")
+                self.dialect(token, f"a variable of the INTERFACE {name}")
             return self.types[up]
         if up in self.pous:
             pou = self.pous[up]
@@ -685,17 +690,36 @@ class Compiler:
             missing = [m for m in t.methods if m.upper() not in pou.methods]
             if missing:
                 raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
+            for up, proto in t.protos.items():
+                if _signature(pou.methods[up]) != _signature(proto):
+                    raise self.err(token, f"{pou.name}.{proto.name} differs from {t.name}.{proto.name} in its result "
+                                          "or its inputs, outputs and in-outs")
+            if t not in pou.interfaces:
+                pou.interfaces.append(t)
 
     def _interface(self, node):
-        """User mode: an INTERFACE: the names of its METHODs, which an FB that IMPLEMENTS it must have. Variables
-        of an interface type (references to an instance) are not translated."""
+        """User mode: an INTERFACE: its METHODs' prototypes, which an FB that IMPLEMENTS it must have with the
+        same pins. A variable of the interface type refers to such an FB's instance: in C a struct of the
+        instance's address and a table of its METHODs (`<FB>__<ITF>__VT`), through which a call goes."""
         self._declare_global(node.name, "interface")
         self.dialect(node, f"INTERFACE {_name(node.name)}")
         if node.extends is not None or node.declarations:
             raise self.err(node, "an INTERFACE that EXTENDS another or declares PROPERTYs is not translated yet")
         t = T.InterfaceType(_name(node.name))
-        t.methods = [_name(m.name) for m in self.members.get(id(node), []) if _cls(m) == "Method"]
+        for m in self.members.get(id(node), []):
+            if _cls(m) != "Method":
+                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE is not translated yet: declare METHODs")
+            proto = Pou("function", _name(m.name), self.file, m)
+            if m.return_type is not None:
+                rt = m.return_type
+                proto.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+                    self._resolve_type(rt, allow_fb=False)
+            for block in m.declarations:
+                self._var_block(proto, block)
+            t.methods.append(proto.name)
+            t.protos[proto.cname] = proto
         self.types[t.cname] = t
+        self.program.items.append(("type", t, self.file))
 
     def _extends(self, pou, node):
         """User mode: FUNCTION_BLOCK ... EXTENDS Base: the base's variables first, then its own; the base's
@@ -710,6 +734,7 @@ class Compiler:
         self.dialect(node.extends, f"EXTENDS {base.name}")
         pou.base = base
         pou.vars = list(base.vars)
+        pou.interfaces = list(base.interfaces)  # its METHODs' table is built from this FB's own
         return base
 
     def _inherit(self, pou, base):
@@ -1010,6 +1035,8 @@ class Compiler:
     def default_c(self, t):
         if t.is_pointer:
             return "NULL"
+        if t.kind == "interface":
+            return f"(({t.cname}){{NULL, NULL}})"
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:

@@ -13,6 +13,16 @@ ENUM_NAMES = "pacst_enum_names.h"
 _INCLUDE_DIR = os.path.join(os.path.dirname(__file__), "include")
 
 
+def _ret(pou):
+    return pou.ret.cname if pou.ret is not None else "void"
+
+
+def _last_member(program, owner):
+    """The last METHOD, ACTION or PROPERTY accessor of `owner` in the program (its table follows it)."""
+    members = [obj for kind, obj, _ in program.items if kind == "pou" and obj.owner is owner]
+    return members[-1] if members else None
+
+
 def _global_ctype(v):
     """The C type of a global: MATIEC's wrapper, or the FB's own struct for an FB instance (user mode)."""
     return v.type.cname if v.type.is_fb else f"__IEC_{v.type.cname}_t"
@@ -62,12 +72,22 @@ class Emitter:
             out.append(f"typedef struct {{\n{members}\n}} {t.cname};")
         elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
             out.append(f"typedef {t.target.cname} *{t.cname};")
+        elif t.kind == "interface":  # user mode: an FB instance's address and the table of its METHODs
+            out.append(f"struct {t.cname}__VT;")
+            out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
+            slots = [f"  {_ret(p)} (*{p.cname})({', '.join(['void *data__'] + self._params(p))});"
+                     for p in t.protos.values()]
+            out.append(f"typedef struct {t.cname}__VT {{\n" + "\n".join(slots or ["  char none;"]) +
+                       f"\n}} {t.cname}__VT;")
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
             out.append(f"  *v = {t.cvalue(t.default)};")
         elif t.is_pointer:
             out.append("  *v = NULL;")
+        elif t.kind == "interface":
+            out.append("  v->inst = NULL;")
+            out.append("  v->vt = NULL;")
         elif t.is_array:
             out.append(f"  long i;")
             if t.elem.is_fb:  # an array of FB instances (user mode): each initialised as the FB's init does
@@ -107,22 +127,46 @@ class Emitter:
             out.append(f"void {pou.cname}_body__({pou.cname} *data__);")
             if pou.program:  # its one instance, which the host runs and other POUs may read (MAIN.x)
                 out.append(f"extern {pou.cname} {program_instance(pou)};")
+            out += [f"extern const {t.cname}__VT {t.vtable(pou.cname)};" for t in pou.interfaces]
             out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]  # VAR_STAT
         else:
             out.append(self._function_signature(pou) + ";")
         return out
 
-    def _function_signature(self, pou):
-        # A native FUNCTION is given the ST file and line of each call (docs/translator.md, "User programs").
-        params = (["const char *file__", "int line__"] if pou.native else []) + ["BOOL EN", "BOOL *__ENO"]
-        if pou.owner is not None:  # a METHOD or ACTION (user mode) works on its FB's instance
-            params.insert(0, f"{pou.owner.cname} *data__")
+    @staticmethod
+    def _params(pou):
+        """EN, ENO and the pins of a FUNCTION or METHOD as C parameters."""
+        params = ["BOOL EN", "BOOL *__ENO"]
         for v in pou.vars:
             if v.section == "input":
                 params.append(f"{v.type.cname} {v.cname}")
             elif v.section in ("output", "inout"):
                 params.append(f"{v.type.cname} *{v.cname}")
-        return f"{pou.ret.cname if pou.ret is not None else 'void'} {pou.cfunc}({', '.join(params)})"
+        return params
+
+    def _function_signature(self, pou):
+        # A native FUNCTION is given the ST file and line of each call (docs/translator.md, "User programs").
+        params = (["const char *file__", "int line__"] if pou.native else []) + self._params(pou)
+        if pou.owner is not None:  # a METHOD or ACTION (user mode) works on its FB's instance
+            params.insert(0, f"{pou.owner.cname} *data__")
+        return f"{_ret(pou)} {pou.cfunc}({', '.join(params)})"
+
+    def _vtables(self, pou):
+        """Each INTERFACE's table of this FB's METHODs (user mode), through a function per METHOD that takes
+        the instance as `void *`."""
+        out = []
+        for t in pou.interfaces:
+            names = []
+            for p in t.protos.values():
+                m = pou.methods[p.cname]
+                thunk = f"{pou.cname}__{t.cname}__{p.cname}"
+                pins = [v.cname for v in m.vars if v.section in ("input", "output", "inout")]
+                call = f"{m.cfunc}(({pou.cname} *)data__, {', '.join(['EN', '__ENO'] + pins)})"
+                out += [f"static {_ret(m)} {thunk}({', '.join(['void *data__'] + self._params(m))}) {{",
+                        f"  {'return ' if m.ret is not None else ''}{call};", "}"]
+                names.append(thunk)
+            out += [f"const {t.cname}__VT {t.vtable(pou.cname)} = {{{', '.join(names) or '0'}}};", ""]
+        return out
 
     def _gvl_decl(self, gvl):
         out = [f"/* global variable list {gvl.name} ({gvl.file}) */"]
@@ -254,6 +298,10 @@ class Emitter:
                 out += self._gvl_code(obj)
             elif kind == "pou" and file == path and not obj.native:
                 out += self._fb_code(obj) if obj.kind == "fb" else self._function_code(obj)
+                if obj.owner is not None and obj is _last_member(self.program, obj.owner):
+                    out += self._vtables(obj.owner)  # after the FB's METHODs
+                elif obj.kind == "fb" and obj.interfaces and not obj.methods:
+                    out += self._vtables(obj)
         if self.line_directives_dir is not None:
             c_file = _c_string(os.path.abspath(os.path.join(self.line_directives_dir, _stem(path) + ".c")))
             # The directive is on line i + 1, so the line after it is line i + 2 of the file.

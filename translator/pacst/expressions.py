@@ -81,6 +81,13 @@ class ExprCompiler:
             return te.code
         if te.type is T.ANY_INT and target.is_pointer and te.value == 0:
             return "NULL"  # user mode: p := 0, p <> 0
+        if te.type is T.ANY_INT and target.kind == "interface" and te.value == 0:
+            return self.comp.default_c(target)  # user mode: itf := 0, itf <> 0
+        if te.type.is_fb and target.kind == "interface" and self.comp.user:
+            pou = te.type.pou
+            if pou is None or target not in pou.interfaces:
+                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
+            return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
         if te.type.is_pointer and target.is_pointer and self.comp.user:
             return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
@@ -269,6 +276,8 @@ class ExprCompiler:
                 raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
             return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
         ref = self.body.ref(node)
+        if ref.type.is_fb and self.comp.user:  # its address: an INTERFACE variable may take it (coerce)
+            return TE(ref.type, f"&({ref.read()})")
         if ref.type.is_fb:
             raise self.err(node, f"function block instance '{ref.var.name}' used as a value")
         return TE(ref.type, ref.read())
@@ -392,6 +401,10 @@ class ExprCompiler:
             raise self.err(node.op, f"{t.name} values cannot be compared")
         if t.is_pointer and op not in ("=", "<>"):
             raise self.err(node.op, f"{op} on pointers: only = and <>")
+        if t.kind == "interface":  # user mode: the same instance, or none (itf = 0)
+            if op not in ("=", "<>"):
+                raise self.err(node.op, f"{op} on INTERFACE variables: only = and <>")
+            return TE(T.BOOL, f"(({ca}).inst {_CMP_C[op]} ({cb}).inst)")
         if op not in ("=", "<>") and t.is_enum and self.comp.user:
             self.comp.dialect(node.op, f"{op} on enumeration values")  # TwinCAT and CODESYS compare the numbers
         elif op not in ("=", "<>") and (t.is_bool or t.is_enum):

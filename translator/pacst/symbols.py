@@ -29,6 +29,8 @@ def type_json(t):
         return {"kind": "function_block", "name": t.name, "c_type": t.cname}
     if t.is_pointer:
         return {"kind": "pointer", "name": t.name, "c_type": t.cname, "target": type_json(t.target)}
+    if t.kind == "interface":
+        return {"kind": "interface", "name": t.name, "c_type": t.cname}
     return {"kind": "elementary", "name": t.name, "c_type": t.cname, "size": _C_SIZES[t.cname]}
 
 

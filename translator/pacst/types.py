@@ -207,7 +207,12 @@ class InterfaceType(Type):
 
     def __init__(self, name):
         super().__init__(name)
-        self.methods = []
+        self.methods = []  # the METHODs' names, in order
+        self.protos = {}  # upper name -> the METHOD's prototype (a Pou without body)
+
+    def vtable(self, fb_cname):
+        """The C name of the table of `fb_cname`'s METHODs for this interface."""
+        return f"{fb_cname}__{self.cname}__VT"
 
 
 class FbType(Type):
