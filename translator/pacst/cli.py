@@ -170,8 +170,9 @@ def _matiec(args):
     try:
         files = _user_files(args)
         comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native, _namespaces(args))
-        if comp.dialect_uses:
-            raise StErrors(comp.dialect_uses)
+        if comp.dialect_uses:  # each once, in source order (a construct may be looked at twice)
+            unique = {str(e): e for e in comp.dialect_uses}
+            raise StErrors(sorted(unique.values(), key=lambda e: (e.file, e.line, e.col)))
         text, lines = matiec.source_and_lines(comp, program, matiec.read_tasks(args.tasks))
     except StError as e:
         print(e, file=sys.stderr)
