@@ -215,6 +215,28 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
     }
 }
 
+TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
+    // CODESYS keeps a POU's METHODs in its addData, PLCopen its ACTIONs in <actions>: both are translated.
+    auto xml = Write("Fb.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous>\n"
+        "<pou name=\"FB_Axis\" pouType=\"functionBlock\"><interface><localVars><variable name=\"Pos\"><type><REAL/>"
+        "</type></variable></localVars></interface>\n"
+        "<actions><action name=\"Home\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Pos := 0.0;</xhtml>"
+        "</ST></body></action></actions>\n"
+        "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Pos := Pos;</xhtml></ST></body>\n<addData>"
+        "<data name=\"http://www.3s-software.com/plcopenxml/method\" handleUnknown=\"implementation\">\n"
+        "<Method name=\"Move\"><interface><returnType><BOOL/></returnType><inputVars><variable name=\"Target\">"
+        "<type><REAL/></type></variable></inputVars></interface>\n<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
+        "Pos := Target;\nMove := TRUE;</xhtml></ST></body></Method>\n</data></addData></pou>\n"
+        "<pou name=\"PRG_Main\" pouType=\"program\"><interface><localVars><variable name=\"Axis\"><type>"
+        "<derived name=\"FB_Axis\"/></type></variable><variable name=\"Ok\"><type><BOOL/></type></variable>"
+        "</localVars></interface>\n<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Ok := Axis.Move(Target := 2.0);\n"
+        "Axis.Home();</xhtml></ST></body></pou>\n</pous></types></project>\n");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(ReadFile(Out() + "/plcopen/FB_Axis.st").find("METHOD Move : BOOL"), std::string::npos);
+}
+
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     // CODESYS exports an application's PROGRAMs and lists into the resource's addData: they are read too.
     auto xml = Write("App.xml",

@@ -48,13 +48,14 @@ class StObject:
     name: str
     declaration: str
     body: Optional[str]
+    members: str = ""  # its METHODs and ACTIONs as ST, after it (user programs)
 
     def st(self):
         """The object as the text of one ST file."""
         if self.body is None:
             return self.declaration
         keyword = POU_KEYWORDS[self.kind]
-        return f"{self.declaration}{self.body.rstrip()}\nEND_{keyword}\n"
+        return f"{self.declaration}{self.body.rstrip()}\nEND_{keyword}\n{self.members}"
 
 
 def read_plcopen(data):
@@ -164,14 +165,37 @@ def _var_list(element, keyword):
 
 def _pou(element):
     name, kind = element.get("name"), element.get("pouType")
-    if element.find(f"{q('actions')}/{q('action')}") is not None or \
-            element.find(f"{q('transitions')}/{q('transition')}") is not None:
-        raise PlcopenReadError(f"{name}: ACTIONs and TRANSITIONs have no place in the portable subset")
+    if element.find(f"{q('transitions')}/{q('transition')}") is not None:
+        raise PlcopenReadError(f"{name}: TRANSITIONs are not read")
+    members = []
+    for action in element.iterfind(f"{q('actions')}/{q('action')}"):  # a user program's ACTIONs
+        members.append(_at(lambda a: f"ACTION {a.get('name')} :\n{_st_body(a, name)}\nEND_ACTION\n", action))
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
-        if data.get("name") in _POU_EXTENSIONS:
-            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s have no place in the portable "
-                                   "subset: write a FUNCTION_BLOCK or FUNCTION")
-    header = f"{POU_KEYWORDS[kind]} {name}"
+        if data.get("name") == CODESYS + "method":  # CODESYS keeps a POU's METHODs in its addData
+            members += [_at(_method, m) for m in data if isinstance(m.tag, str)]
+        elif data.get("name") in _POU_EXTENSIONS:
+            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
+                                   "yet: write a METHOD")
+    header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
+    return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members))
+
+
+def _method(element):
+    """A METHOD of CODESYS's export (its own interface and ST body) as ST."""
+    name = element.get("name") or element.get("Name")
+    header, blocks = _interface_text(element, f"METHOD {name}", name)
+    return f"{header}\n{''.join(blocks)}{_st_body(element, name).rstrip()}\nEND_METHOD\n"
+
+
+def _st_body(element, name):
+    st = element.find(f"{q('body')}/{q('ST')}")
+    if st is None:
+        raise PlcopenReadError(f"{name}: no ST body")
+    return _xhtml_text(st)
+
+
+def _interface_text(element, header, name):
+    """(the heading with the result type, the variable blocks) of a POU's or METHOD's interface."""
     interface = element.find(q("interface"))
     blocks = []
     for child in interface if interface is not None else []:
@@ -182,10 +206,7 @@ def _pou(element):
             blocks.append(_var_list(child, SECTION_KEYWORDS[tag]))
         elif tag not in ("addData", "documentation"):
             raise PlcopenReadError(f"{name}: interface element <{tag}> is not read")
-    st = element.find(f"{q('body')}/{q('ST')}")
-    if st is None:
-        raise PlcopenReadError(f"{name}: no ST body")
-    return StObject(kind, name, header + "\n" + "".join(blocks), _xhtml_text(st))
+    return header, blocks
 
 
 def _data_type(element):
