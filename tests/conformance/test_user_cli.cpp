@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "translator_runner.hpp"
 #include "translator_scratch.hpp"
@@ -16,6 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using pac::test::RunTranslator;
+
+std::string ReadFile(const fs::path& path);
 
 class TranslatorUserCli : public pac::test::TranslatorScratch {
 protected:
@@ -150,6 +153,106 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
         << result.output;
 }
 
+TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
+    // Four problems, one run: the declarations of a POU, then (when they are all accepted) its statements.
+    auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
+                                       "  C : INT;\nEND_VAR\nC := 1;\nEND_PROGRAM\n");
+    auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
+                                     "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", decls, body});
+    EXPECT_EQ(result.exitCode, 1);
+    for (const auto& expected : {decls + ":3:7: error: undeclared type 'NoSuchType'",
+                                 decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
+                                 body + ":6:6: error: type mismatch: DINT where INT is expected",
+                                 body + ":8:8: error: undeclared name 'Nothing'"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+}
+
+TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
+    // docs/import.md: the library referenced with the namespace PA_CONTROL; --namespace says which files hold it.
+    fs::create_directories(dir_ / "lib");
+    auto lib = Write("lib/FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nVAR_OUTPUT Lit : BOOL; "
+                                       "END_VAR\nLit := On;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("lib/GVL_Lib.st", "VAR_GLOBAL CONSTANT\n  K_ON : BOOL := TRUE;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Lamp : PA_CONTROL.FB_Lamp; T : Tc2_Standard.TON; END_VAR\n"
+                                     "Lamp(On := PA_CONTROL.GVL_Lib.K_ON);\nT(IN := Lamp.Lit, PT := T#1S);\nEND_PROGRAM\n");
+    const std::string ns = "PA_CONTROL=" + fs::path(lib).parent_path().string();
+    auto result = RunTranslator({"build", "--user", "--namespace", ns, "--out", Out(), lib, list, main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    result = RunTranslator({"build", "--user", "--out", Out(), lib, list, main});
+    EXPECT_EQ(result.exitCode, 1) << "without --namespace, PA_CONTROL is no namespace";
+    EXPECT_NE(result.output.find(main + ":2:12: error: 'PA_CONTROL.FB_Lamp': 'PA_CONTROL' is no library namespace"),
+              std::string::npos) << result.output;
+    // A CODESYS export "into an application" carries the library's objects: said so at the copy.
+    auto copy = Write("FB_Lamp.st", ReadFile(lib));
+    result = RunTranslator({"check", "--user", "--namespace", ns, lib, list, copy, main});
+    EXPECT_NE(result.output.find(copy + ":1:1: error: function block 'FB_Lamp' is declared by the library PA_CONTROL "
+                                        "too: leave the library's objects out of your sources"),
+              std::string::npos) << result.output;
+    auto matiec = Out() + "/program.st";
+    result = RunTranslator({"matiec", "--namespace", ns, "--out", matiec, lib, list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(main + ":2:12: error: the namespace in 'PA_CONTROL.FB_Lamp': TwinCAT / CODESYS "
+                                        "dialect that MATIEC does not compile"),
+              std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
+    // A PLCopen object pacst cannot read is one line naming the XML file and the object's line, not a traceback.
+    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+                                    "<types><pous>\n<pou name=\"PLC_PRG\" pouType=\"program\"><body><LD/></body></pou>\n"
+                                    "</pous></types></project>\n");
+    for (const char* command : {"check", "build", "order"}) {
+        std::vector<std::string> args = {command, "--user"};
+        if (std::string(command) == "build") args.insert(args.end(), {"--out", Out()});
+        args.push_back(xml);
+        auto result = RunTranslator(args);
+        EXPECT_EQ(result.exitCode, 1) << command;
+        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG: no ST body"),
+                  std::string::npos) << command << ": " << result.output;
+        EXPECT_EQ(result.output.find("Traceback"), std::string::npos) << command << ": " << result.output;
+    }
+}
+
+TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
+    // CODESYS keeps a POU's METHODs in its addData, PLCopen its ACTIONs in <actions>: both are translated.
+    auto xml = Write("Fb.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous>\n"
+        "<pou name=\"FB_Axis\" pouType=\"functionBlock\"><interface><localVars><variable name=\"Pos\"><type><REAL/>"
+        "</type></variable></localVars></interface>\n"
+        "<actions><action name=\"Home\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Pos := 0.0;</xhtml>"
+        "</ST></body></action></actions>\n"
+        "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Pos := Pos;</xhtml></ST></body>\n<addData>"
+        "<data name=\"http://www.3s-software.com/plcopenxml/method\" handleUnknown=\"implementation\">\n"
+        "<Method name=\"Move\"><interface><returnType><BOOL/></returnType><inputVars><variable name=\"Target\">"
+        "<type><REAL/></type></variable></inputVars></interface>\n<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
+        "Pos := Target;\nMove := TRUE;</xhtml></ST></body></Method>\n</data></addData></pou>\n"
+        "<pou name=\"PRG_Main\" pouType=\"program\"><interface><localVars><variable name=\"Axis\"><type>"
+        "<derived name=\"FB_Axis\"/></type></variable><variable name=\"Ok\"><type><BOOL/></type></variable>"
+        "</localVars></interface>\n<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Ok := Axis.Move(Target := 2.0);\n"
+        "Axis.Home();</xhtml></ST></body></pou>\n</pous></types></project>\n");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(ReadFile(Out() + "/plcopen/FB_Axis.st").find("METHOD Move : BOOL"), std::string::npos);
+}
+
+TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
+    // CODESYS exports an application's PROGRAMs and lists into the resource's addData: they are read too.
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
+        "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
+        "</variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
+        "</xhtml></ST></body></pou>\n</data>\n</addData></resource></configuration></configurations></instances>\n"
+        "</project>\n");
+    auto sources = Out() + "/plcopen";
+    auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(sources + "/PLC_PRG.st")) << "the application's PROGRAM";
+}
+
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
     auto list = Write("GVL_A.st", "VAR_GLOBAL\n  Count : INT;\nEND_VAR\n");
     auto main = Write("PRG_Main.st", kMain);
@@ -247,15 +350,33 @@ TEST_F(TranslatorUserCli, TwinCatFilesAreReadWithTheirOwnLinesAndColumns) {
     EXPECT_NE(ReadFile(dir_ / "out" / "POUS.h").find("} ST_POINT;"), std::string::npos) << "the .TcDUT's STRUCT";
 }
 
-TEST_F(TranslatorUserCli, TwinCatMethodsAndOtherLanguagesAreRefused) {
+TEST_F(TranslatorUserCli, TwinCatMethodsAreReadAtTheirLines) {
+    // A .TcPOU's <Method> and <Action> elements: translated, their errors at the line in the TwinCAT file.
+    auto fb = Write("FB_A.TcPOU",
+                    "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
+                    "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\nVAR N : INT; END_VAR\n]]></Declaration>\n"
+                    "    <Implementation><ST><![CDATA[Reset();]]></ST></Implementation>\n"
+                    "    <Method Name=\"Reset\">\n      <Declaration><![CDATA[METHOD Reset\n]]></Declaration>\n"
+                    "      <Implementation>\n        <ST><![CDATA[N := 0;\nCount();]]></ST>\n      </Implementation>\n"
+                    "    </Method>\n    <Action Name=\"Count\">\n      <Implementation>\n"
+                    "        <ST><![CDATA[N := N + 1;]]></ST>\n      </Implementation>\n    </Action>\n"
+                    "  </POU>\n</TcPlcObject>\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), fb});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bad = Write("FB_A.TcPOU", ReadFile(fb).replace(ReadFile(fb).find("Count();"), 8, "Cont(); "));
+    result = RunTranslator({"check", "--user", bad});
+    EXPECT_NE(result.output.find(bad + ":13:1: error: undeclared function, METHOD, ACTION or function block instance 'Cont'"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, TwinCatTransitionsAndOtherLanguagesAreRefused) {
     auto method = Write("FB_A.TcPOU",
                         "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_A\">\n"
                         "    <Declaration><![CDATA[FUNCTION_BLOCK FB_A\n]]></Declaration>\n"
                         "    <Implementation><ST><![CDATA[;]]></ST></Implementation>\n"
-                        "    <Method Name=\"Reset\">\n    </Method>\n  </POU>\n</TcPlcObject>\n");
+                        "    <Transition Name=\"Ready\">\n    </Transition>\n  </POU>\n</TcPlcObject>\n");
     auto result = RunTranslator({"check", "--user", method});
     EXPECT_EQ(result.exitCode, 1);
-    EXPECT_NE(result.output.find(method + ":7:1: error: METHOD Reset of FB_A is outside pacst's user programs"),
+    EXPECT_NE(result.output.find(method + ":7:1: error: TRANSITION Ready of FB_A is outside pacst's user programs"),
               std::string::npos)
         << result.output;
     auto ladder = Write("FB_B.TcPOU",

@@ -24,6 +24,9 @@ CORPORA = {
     "user programs": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "user", "**", "*.st"),
                                       recursive=True)),
     "user refusals": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse_user", "*.st"))),
+    # The TwinCAT / CODESYS dialect of user programs (docs/user_dialect.md): empty branches, FOR, methods...
+    "user dialect": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "dialect", "*.st"))
+                           + glob.glob(os.path.join(REPO, "tools", "pactest", "tests", "dialect", "*.st"))),
 }
 
 _ORACLE = None

@@ -1,11 +1,14 @@
 """Translates one POU's body: variable access, statements, CASE and function block calls."""
+import copy
+import dataclasses
 import re
 
 from . import literals
 from . import types as T
 from . import user
-from .common import _BIT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
-from .expressions import ExprCompiler, array_name_hint
+from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
+from .errors import StError, StErrors
+from .expressions import STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -16,6 +19,7 @@ class BodyCompiler:
         self.pou = pou
         self.ex = ExprCompiler(comp, self)
         self.loops = []
+        self.errors = []  # user mode: the statements refused so far
         self.counter = 0
         self.result_assigned = False
 
@@ -23,16 +27,126 @@ class BodyCompiler:
         return self.comp.err(node, message)
 
     def lookup(self, name):
-        return self.pou.var(name)
+        v = self.pou.var(name)
+        if v is None and self.pou.owner is not None:  # a METHOD or ACTION reads its FB's variables
+            v = self.pou.owner.var(name)
+        if v is None:
+            v = T.find_var((self.pou.owner or self.pou).statics, name)
+        return v
+
+    def _fb_of_body(self):
+        """The FUNCTION_BLOCK or PROGRAM whose variables `data__` points at here, or None (a FUNCTION)."""
+        if self.pou.owner is not None:
+            return self.pou.owner
+        return self.pou if self.pou.kind == "fb" else None
+
+    def this(self, node):
+        """`THIS^.x` as `x` (user mode: inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION); other nodes as
+        they are."""
+        if _cls(node) != "MultiElementVariable" or not self.comp.user or _cls(node.name) != "SimpleVariable" \
+                or not node.name.dereferenced or _name(node.name.name).upper() != "THIS":
+            return node
+        if self._fb_of_body() is None:
+            raise self.err(node, "THIS^ is used inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION")
+        self.comp.dialect(node, "THIS^")
+        head = node.elements[0]
+        if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
+            raise self.err(head, "THIS^ names a variable or a method: THIS^.Name")
+        if len(node.elements) == 1:
+            return head.field
+        return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
+
+    def _super(self, node):
+        """`SUPER^()` and `SUPER^.M()` in a FUNCTION_BLOCK that EXTENDS another (or one of its METHODs):
+        ("data__", the base's body or METHOD compiled for this FB), or None for any other name."""
+        root = node.name if _cls(node) == "MultiElementVariable" else node
+        if _cls(root) != "SimpleVariable" or not root.dereferenced or _name(root.name).upper() != "SUPER":
+            return None
+        fb = self._fb_of_body()
+        if fb is None or fb.base is None:
+            raise self.err(node, "SUPER^ is used in a FUNCTION_BLOCK that EXTENDS another")
+        if self.pou.inherited_from is not None:
+            raise self.err(node, "SUPER^ in a METHOD inherited through two EXTENDS is not translated yet")
+        self.comp.dialect(node, "SUPER^")
+        if root is node:
+            return "data__", fb.methods["SUPER__BODY"]
+        if len(node.elements) != 1 or _cls(node.elements[0]) != "FieldSelector":
+            raise self.err(node, "SUPER^ names a METHOD of the base: SUPER^.Name()")
+        name = _name(node.elements[0].field.name)
+        m = fb.methods.get("SUPER__" + name.upper())
+        if m is None:
+            raise self.err(node.elements[0], f"{fb.base.name} has no METHOD or ACTION '{name}'")
+        return "data__", m
+
+    def property_target(self, node):
+        """(the C pointer to the instance, the PROPERTY's {"name", "type", "get", "set"}) that the variable `node`
+        names (`Velocity` inside the FB, `THIS^.Velocity`, `Axis.Velocity`), or None."""
+        if not self.comp.user or _cls(node) not in ("SimpleVariable", "MultiElementVariable"):
+            return None
+        if _cls(node) == "SimpleVariable" and self.pou.accessor is not None and \
+                _name(node.name).upper() == self.pou.cname:
+            return None  # inside its own Get or Set the name is the value
+        return self._member_target(node, "properties")
+
+    def method_target(self, name_node):
+        """(the C pointer to the instance, the METHOD or ACTION) a call's name `name_node` names, or None:
+        `Move` inside the FB (or one of its methods), `THIS^.Move`, `Axis.Move`, `Axes[i].Move`."""
+        if not self.comp.user:
+            return None
+        sup = self._super(name_node)
+        if sup is not None:
+            return sup
+        return self._member_target(name_node, "methods")
+
+    def _member_target(self, name_node, table):
+        name_node = self.this(name_node)
+        if _cls(name_node) == "SimpleVariable":
+            fb = self._fb_of_body()
+            m = getattr(fb, table).get(_name(name_node.name).upper()) if fb is not None else None
+            if m is None or self.pou.var(_name(name_node.name)) is not None:
+                return None
+            return "data__", m
+        if _cls(name_node) != "MultiElementVariable" or not name_node.elements:
+            return None
+        last = name_node.elements[-1]
+        if _cls(last) != "FieldSelector" or _cls(last.field) != "SimpleVariable":
+            return None
+        prefix = name_node.name if len(name_node.elements) == 1 else \
+            dataclasses.replace(name_node, elements=name_node.elements[:-1])
+        try:
+            r = self.ref(prefix)
+        except StError:
+            return None
+        if r.type.kind == "interface" and table == "methods":  # a call through the instance's table
+            proto = r.type.protos.get(_name(last.field.name).upper())
+            if proto is None:
+                raise self.err(last, f"INTERFACE {r.type.name} has no METHOD '{_name(last.field.name)}'")
+            line, col = pos(last)
+            where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+            call = copy.copy(proto)
+            call.cfunc = f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, \"{where}\"))->{proto.cname}"
+            return f"({r.read()}).inst", call
+        pou = getattr(r.type, "pou", None) if r.type.is_fb else None
+        m = getattr(pou, table).get(_name(last.field.name).upper()) if pou is not None else None
+        if m is None:
+            return None
+        return f"&({r.read()})", m
 
     # ------------------------------------------------------------------ variable access
     def _root(self, token):
         name = _name(token)
         up = name.upper()
         pou = self.pou
-        if pou.kind == "function" and up == pou.cname:
+        if pou.kind == "function" and up == pou.cname and pou.ret is not None:
             return Ref(pou.cname, False, pou.ret, T.Var(name, "result", pou.ret, None, token))
         v = pou.var(name)
+        static = T.find_var((pou.owner or pou).statics, name) if v is None else None
+        if static is not None:  # VAR_STAT (user mode): one C variable for every instance
+            return Ref(static.csym, True, static.type, static)
+        if v is None and pou.owner is not None and pou.owner.var(name) is not None:
+            ov = pou.owner.var(name)  # a METHOD's or ACTION's access to its FB's variables
+            why = "it is a CONSTANT" if ov.constant else ""
+            return Ref(f"data__->{ov.cname}", not ov.type.is_fb, ov.type, ov, writable=not why, why_not=why)
         if v is None and up in pou.externals:
             g, constant = pou.externals[up]
             return self._global_ref(g, constant)
@@ -46,6 +160,8 @@ class BodyCompiler:
                 raise self.err(token, f"enumeration value '{name}' cannot be written")
             if up in self.comp.types:
                 raise self.err(token, f"'{name}' is a type, not a variable")
+            if self.comp.user and self.comp.namespace(name) is None and user.namespace_like(name):
+                raise self.err(token, f"'{name}': {user.unknown_namespace(name)}")
             refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
             hint = f" (or one after a refused declaration of {', '.join(refused)}, above)" if refused else ""
             raise self.err(token, f"undeclared name '{name}'{hint}")
@@ -61,7 +177,7 @@ class BodyCompiler:
     @staticmethod
     def _global_ref(g, constant):
         why = "it is a CONSTANT" if g.constant or constant else ""
-        return Ref(g.csym, True, g.type, g, writable=not why, why_not=why)
+        return Ref(g.csym, not g.type.is_fb, g.type, g, writable=not why, why_not=why)
 
     def _qualified_global(self, node):
         """`List.Name...` in user mode: (the Ref of the global, the elements after its name), or None."""
@@ -84,28 +200,88 @@ class BodyCompiler:
         self.pou.qualifiers.append((node.name.name.start_pos, first.field.name.start_pos, g))
         return self._global_ref(g, False), node.elements[1:]
 
-    def ref(self, node):
+    def _program_variable(self, node):
+        """`MAIN.x` in user mode: (the Ref of a PROGRAM's variable, the elements after it), or None. TwinCAT and
+        CODESYS let any POU read and write a PROGRAM's variables (a test reads the machine's state so)."""
+        root = _name(node.name.name).upper()
+        prog = self.comp.pous.get(root)
+        if not self.comp.user or self.pou.var(root) is not None or root in self.pou.externals \
+                or prog is None or not prog.program:
+            return None
+        first = node.elements[0]
+        if _cls(first) != "FieldSelector" or _cls(first.field) != "SimpleVariable":
+            raise self.err(first, f"{prog.name} is a PROGRAM: name one of its variables")
+        v = prog.var(_name(first.field.name))
+        if v is None:
+            raise self.err(first.field, f"PROGRAM {prog.name} has no variable '{_name(first.field.name)}'")
+        self.comp.dialect(node, f"a PROGRAM's variable read from another POU ({prog.name}.{v.name})")
+        why = "it is a CONSTANT" if v.constant else ""
+        return Ref(f"{program_instance(prog)}.{v.cname}", not v.type.is_fb, v.type, v, writable=not why,
+                   why_not=why), node.elements[1:]
+
+    def _bit(self, r, el, field):
+        """User mode: bit n of an integer or bit string (`w.3`), read and written as a BOOL."""
+        text = str(getattr(field, "value", field))
+        if not text.isdigit():
+            raise self.err(field, "a bit number is a decimal literal (w.3)")
+        n = int(text)
+        if n >= r.type.bits:
+            raise self.err(field, f"bit {n} of a {r.type.bits}-bit {r.type.name}: 0..{r.type.bits - 1}")
+        self.comp.dialect(el, f"bit access (.{n})")
+        return BitRef(r, n)
+
+    def _deref(self, r, node):
+        """`p^` (user mode), and a REFERENCE read or written through: the variable the pointer points at; a
+        null pointer stops the run with the ST file and line."""
+        if not (self.comp.user and r.type.is_pointer):
+            if self.comp.user:
+                raise self.err(node, f"'^' on {r.type.name}: only a POINTER is dereferenced")
+            raise self.err(node, "pointers are outside the portable subset")
+        t = r.type.target
+        line, col = pos(node)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        return Ref(f"(*({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))", False, t, r.var)
+
+    def _through(self, r, node, raw):
+        """`r`, read through when it is a REFERENCE (unless `raw`: REF= and __ISVALIDREF want the reference)."""
+        if r.type.is_pointer and r.type.reference and not raw:
+            return self._deref(r, node)
+        return r
+
+    def ref(self, node, raw=False):
+        node = self.this(self.comp.unqualify(node, self.lookup))
         cls = _cls(node)
         if cls == "SimpleVariable":
-            if node.dereferenced:
+            if node.dereferenced and not self.comp.user:
                 raise self.err(node, "pointers are outside the portable subset")
-            return self._root(node.name)
+            r = self._root(node.name)
+            return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
         if cls != "MultiElementVariable":
             raise self.err(node, "a variable is expected here")
-        if node.dereferenced or node.name.dereferenced:
+        if (node.dereferenced or node.name.dereferenced) and not self.comp.user:
             raise self.err(node, "pointers are outside the portable subset")
         root = _name(node.name.name).upper()
         if self.pou.var(root) is None and root in self.comp.types and self.comp.types[root].is_enum:
             raise self.err(node, "qualified enumeration value: write the value alone (E.A and E#A are not "
                                  "accepted by every tool)")
-        qualified = self._qualified_global(node)
+        qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
-        for el in elements:
+        if qualified is None and node.name.dereferenced:
+            r = self._deref(r, node.name)
+        elif elements:
+            r = self._through(r, node.name, False)
+        for k, el in enumerate(elements):
+            last = k == len(elements) - 1
+            if k > 0:
+                r = self._through(r, el, False)
             ecls = _cls(el)
             if ecls == "FieldSelector":
-                if el.dereferenced:
+                if el.dereferenced and not self.comp.user:
                     raise self.err(el, "pointers are outside the portable subset")
                 field = el.field
+                if _cls(field) != "SimpleVariable" and self.comp.user and (r.type.is_bit or r.type.is_int):
+                    r = self._bit(r, el, field)
+                    continue
                 if _cls(field) != "SimpleVariable":
                     raise self.err(el, "bit access (w.15) is outside the portable subset: use "
                                        "(w AND WORD#16#8000) <> WORD#0")
@@ -124,50 +300,76 @@ class BodyCompiler:
                         raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
                                               "another FB's private variables")
                     writable = fv.section == "input"
-                    r = Ref(f"{r.base}{r.suffix}.{fv.cname}", True, fv.type, r.var, "", writable,
+                    r = Ref(f"{r.read()}.{fv.cname}", True, fv.type, r.var, "", writable,
                             "an FB's outputs are written only by the FB itself")
                 else:
                     raise self.err(field, f"'{fname}': {r.type.name} has no members")
             elif ecls == "SubscriptList":
                 if not r.type.is_array:
                     raise self.err(el, f"{r.type.name} is not an array")
-                if len(el.subscripts) != 1:
+                if len(el.subscripts) != 1 and not self.comp.user:
                     raise self.err(el, "multi-dimensional index is outside the portable subset")
-                idx_node = el.subscripts[0]
-                te = self.ex.expr(idx_node, T.DINT)
-                at = r.type
-                if te.type is T.ANY_INT:
-                    if not at.low <= te.value <= at.high:
-                        raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
-                    idx = f"{te.value - at.low}"
-                else:
-                    if not te.type.is_int:
-                        raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
-                    line, col = pos(idx_node)
-                    where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
-                    idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
-                r = Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
+                for idx_node in el.subscripts:  # [i, j] is [i][j] (user mode)
+                    if not r.type.is_array:
+                        raise self.err(idx_node, f"{r.type.name} is not an array: one index too many")
+                    r = self._index(r, idx_node)
             else:
                 raise self.err(el, f"{ecls} is outside the portable subset")
-        return r
+            if getattr(el, "dereferenced", False):  # a.p^, a[i]^
+                r = self._deref(r, el)
+        if node.dereferenced:
+            r = self._deref(r, node)
+        return self._through(r, node, raw)
+
+    def _index(self, r, idx_node):
+        """The element `idx_node` of the array `r`: checked against the bounds at run time, or now."""
+        te = self.ex.expr(idx_node, T.DINT)
+        at = r.type
+        if te.type is T.ANY_INT:
+            if not at.low <= te.value <= at.high:
+                raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
+            idx = f"{te.value - at.low}"
+        else:
+            if not te.type.is_int:
+                raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
+            line, col = pos(idx_node)
+            where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+            idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
+        return Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
 
     # ------------------------------------------------------------------ POU
     def compile(self):
         pou = self.pou
         statements = pou.node.body.statements if pou.node.body is not None else []
+        if not statements and self.comp.user and (pou.kind == "fb" or pou.owner is not None and pou.ret is None):
+            self.comp.dialect(pou.node, f"{pou.name} with an empty body")
+            return []
         if not statements:
             raise self.err(pou.node, f"{pou.name} has an empty body: MATIEC needs at least one statement")
         lines = self.block(statements, 1, pou.node)
-        if pou.kind == "function" and not self.result_assigned:
+        if self.errors:
+            raise StErrors(self.errors)
+        if pou.kind == "function" and pou.ret is not None and not self.result_assigned:
             raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
         return lines
 
     def block(self, statements, depth, owner, allow_empty=False):
+        if not statements and self.comp.user:
+            self.comp.dialect(owner, "an empty branch or loop body")
+            return []
         if not statements and not allow_empty:
             raise self.err(owner, "empty branch: MATIEC needs at least one statement")
         out = []
         for st in statements:
-            out.extend(self.stmt(st, depth))
+            if not self.comp.user:
+                out.extend(self.stmt(st, depth))
+                continue
+            try:  # user mode: every refused statement is reported, not only the first
+                out.extend(self.stmt(st, depth))
+            except StError as e:
+                self.errors.append(e)
+            except StErrors as e:
+                self.errors.extend(e.errors)
         return out
 
     @staticmethod
@@ -188,6 +390,14 @@ class BodyCompiler:
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")
         target = node.variables[0]
+        prop = self.property_target(target)
+        if prop is not None:  # user mode: Axis.Velocity := v calls its Set
+            this, p = prop
+            if p["set"] is None:
+                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only")
+            te = self.ex.expr(node.expression, p["type"])
+            value = self.ex.coerce(te, p["type"], node.expression)
+            return [f"{ind}{p['set'].cfunc}({this}, TRUE, NULL, {value});"]
         r = self.ref(target)
         if r.var.section == "result":
             self.result_assigned = True
@@ -197,6 +407,24 @@ class BodyCompiler:
             raise self.err(target, "function block instances cannot be assigned")
         te = self.ex.expr(node.expression, r.type)
         return [ind + r.write(_limited(r.var, self.ex.coerce(te, r.type, node.expression), r.suffix))]
+
+    def _s_ReferenceAssignmentStatement(self, node, ind, d):
+        """User mode: `R REF= X`: the REFERENCE R now stands for X (REF= 0: for nothing)."""
+        target = self.ref(node.variable, raw=True)
+        if not (target.type.is_pointer and target.type.reference):
+            raise self.err(node.variable, f"REF= sets a REFERENCE, not {target.type.name}")
+        self.comp.dialect(node, "REF=")
+        expr = node.expression
+        if _cls(expr) in ("Integer",) and literals.int_value(expr) == 0:
+            return [ind + target.write("NULL")]
+        src = self.ref(expr, raw=True)
+        if src.type.is_pointer and src.type.reference:
+            value = src.read()
+        else:
+            if src.type is not target.type.target or isinstance(src, BitRef):
+                raise self.err(expr, f"REF= of a {src.type.name} to a {target.type.name}")
+            value = f"&({src.read()})"
+        return [ind + target.write(f"({target.type.cname})({value})")]
 
     def _s_IfStatement(self, node, ind, d):
         out = [f"{ind}if ({self.cond(node.if_expression)}) {{"]
@@ -227,8 +455,42 @@ class BodyCompiler:
         return lines
 
     def _s_ForStatement(self, node, ind, d):
+        if self.comp.user:
+            return self._user_for(node, ind, d)
         raise self.err(node, "MATIEC miscompiles FOR (FOR I := 5 TO 5 runs zero times there, and the variable "
                              "ends at the last value instead of last + step): write a WHILE loop")
+
+    def _user_for(self, node, ind, d):
+        """User mode: FOR as TwinCAT and CODESYS run it: the start assigned once, the end and the step read
+        before each pass, the body run while the variable has not passed the end (a step of 0 or one that
+        does not reach the end runs forever, as there); after the loop the variable holds last + step."""
+        self.comp.dialect(node, "FOR (MATIEC runs FOR I := 5 TO 5 zero times)")
+        r = self.ref(node.control)
+        if not r.type.is_int:
+            raise self.err(node.control, f"a FOR variable is an integer, not {r.type.name}")
+        if not r.writable:
+            raise self.err(node.control, f"'{r.var.name}' cannot be written: {r.why_not}")
+        start = self.ex.coerce(self.ex.expr(node.from_, r.type), r.type, node.from_)
+        end = self.ex.coerce(self.ex.expr(node.to, r.type), r.type, node.to)
+        step = "1"
+        if node.step is not None:
+            st = self.ex.expr(node.step, r.type)
+            if st.type is T.ANY_INT and st.value == 0:
+                raise self.err(node.step, "FOR ... BY 0 never ends")
+            step = self.ex.coerce(st, r.type, node.step)
+        self.counter += 1
+        k = self.counter
+        wide = "long long" if r.type.is_signed or r.type.bits < 64 else "unsigned long long"
+        var = r.read()
+        out = [f"{ind}{r.write(start)}",
+               f"{ind}for (;;) {{",
+               f"{ind}  {wide} __for_end{k} = ({wide})({end}), __for_step{k} = ({wide})({step});",
+               f"{ind}  if (__for_step{k} >= 0 ? ({wide})({var}) > __for_end{k} : ({wide})({var}) < __for_end{k}) break;"]
+        self.loops.append(f"for{k}")  # CONTINUE goes to the step (_s_ContinueStatement)
+        body = self.block(self._stmts(node.statements), d + 1, node, allow_empty=True)
+        self.loops.pop()
+        step_c = f"({r.type.cname})({var} + ({r.type.cname})__for_step{k})"
+        return out + body + [f"{ind}  __for_next{k}: ;", f"{ind}  {r.write(step_c)}", f"{ind}}}"]
 
     def _s_ExitStatement(self, node, ind, d):
         if not self.loops:
@@ -238,6 +500,8 @@ class BodyCompiler:
     def _s_ContinueStatement(self, node, ind, d):
         if not self.loops:
             raise self.err(node, "CONTINUE outside a loop")
+        if self.loops[-1].startswith("for"):
+            return [f"{ind}goto __for_next{self.loops[-1][3:]};"]
         return [f"{ind}continue;"]
 
     def _s_ReturnStatement(self, node, ind, d):
@@ -260,7 +524,81 @@ class BodyCompiler:
         te = self.ex.expr(node, T.BOOL)
         return self.ex.coerce(te, T.BOOL, node, "condition")
 
+    def _user_case_label(self, node, sel_type):
+        """User mode: a CASE label's number: a literal of any base, typed or not, a named constant (local,
+        global, List.Name, PA_CONTROL.GVL_PAC.Name) or an enumeration value (E.A too), as TwinCAT and CODESYS
+        take them."""
+        cls = _cls(node)
+        if cls == "UnaryOperation" and str(node.op) == "-":
+            return -self._user_case_label(node.expr, sel_type)
+        if cls in _INT_LITERALS or cls in _BIT_LITERALS:
+            if cls != "Integer" or node.type_name is not None:
+                self.comp.dialect(node, "a CASE label that is no decimal literal")
+            if sel_type.is_enum:
+                raise self.err(node, f"CASE label must be a value of {sel_type.name}")
+            value = literals.int_value(node)
+        elif cls in ("EnumeratedValue", "SimpleVariable", "MultiElementVariable"):
+            value = self._named_label(node, sel_type)
+        else:
+            raise self.err(node, "a CASE label is a literal, a named constant or an enumeration value")
+        if not sel_type.is_enum:
+            lo, hi = sel_type.int_range()
+            if not lo <= value <= hi:
+                raise self.err(node, f"CASE label {value} outside {sel_type.name}'s range")
+        return value
+
+    def _named_label(self, node, sel_type):
+        if _cls(node) == "EnumeratedValue":
+            if node.type_name is not None:
+                raise self.err(node, "E#A is not read by TwinCAT: write E.A")
+            parts = _name(node.name).split(".")
+        elif _cls(node) == "SimpleVariable":
+            parts = [_name(node.name)]
+        else:
+            node = self.comp.unqualify(node, self.lookup)
+            parts = [_name(node.name.name if _cls(node) != "SimpleVariable" else node.name)]
+            if _cls(node) != "SimpleVariable":
+                parts += [_name(e.field.name) if _cls(e) == "FieldSelector" and _cls(e.field) == "SimpleVariable"
+                          else "?" for e in node.elements]
+        if len(parts) > 1 and self.comp.namespace(parts[0]) is not None and self.lookup(parts[0]) is None:
+            if not self.comp.in_namespace(parts[0], parts[1]):
+                raise self.err(node, f"the library {parts[0]} has no declaration '{parts[1]}'")
+            self.comp.dialect(node, f"the namespace in '{parts[0]}.{parts[1]}'")
+            parts = parts[1:]
+        text = ".".join(parts)
+        if sel_type.is_enum:
+            if len(parts) == 2 and parts[0].upper() == sel_type.name.upper():
+                return sel_type.number(self.comp.enum_value_of(sel_type, parts[1], node))
+            if len(parts) == 1 and self.lookup(parts[0]) is None:
+                self.comp.shared_enum_value(parts[0], node)
+                et = self.comp.enum_values.get(parts[0].upper())
+                if et is sel_type:
+                    return sel_type.number(parts[0])
+                if et is not None:
+                    raise self.err(node, f"'{parts[0]}' is a value of {et.name}, not of {sel_type.name}")
+            raise self.err(node, f"CASE label '{text}' must be a value of {sel_type.name}")
+        var = None
+        if len(parts) == 1:
+            var = self.lookup(parts[0])
+            if var is None and parts[0].upper() in self.pou.externals:
+                var = self.pou.externals[parts[0].upper()][0]
+            if var is None:
+                var = user.lookup_global(self.comp, parts[0])
+        elif len(parts) == 2 and parts[0].upper() in self.comp.gvls:
+            var = self.comp.gvls[parts[0].upper()].var(parts[1])
+        if var is None or not var.constant or var.init is None:
+            raise self.err(node, f"CASE label '{text}' is no literal and no constant with a literal value")
+        self.comp.dialect(node, f"the named constant {text} as a CASE label")
+        init = var.init
+        negative = _cls(init) == "UnaryOperation" and str(init.op) == "-"
+        inner = init.expr if negative else init
+        if _cls(inner) not in _INT_LITERALS | _BIT_LITERALS:
+            raise self.err(node, f"CASE label '{text}': the constant's value is no integer literal")
+        return -literals.int_value(inner) if negative else literals.int_value(inner)
+
     def _case_label(self, node, sel_type):
+        if self.comp.user:
+            return self._user_case_label(node, sel_type)
         cls = _cls(node)
         # blark parses a name as a CASE label into an EnumeratedValue (E#A and E.A included).
         label = _name(node.name) if cls in ("SimpleVariable", "EnumeratedValue") else None
@@ -304,9 +642,12 @@ class BodyCompiler:
         t = te.type
         if t is T.ANY_INT:
             raise self.err(node.expression, "CASE on a literal")
-        if t.is_bit:
+        if t.is_bit and not self.comp.user:
             raise self.err(node.expression, f"CASE on {t.name}: MATIEC selects only on integers and "
                                             "enumerations; convert to INT or DINT")
+        if t.is_bit:
+            self.comp.dialect(node.expression, f"CASE on {t.name}")
+            t = T.Elementary(t.name, "int", t.bits)  # user mode: its labels are numbers in its range
         if not (t.is_int or t.is_enum):
             raise self.err(node.expression, f"CASE on {t.name}")
         self.counter += 1
@@ -318,7 +659,7 @@ class BodyCompiler:
             conds = []
             for m in el.matches:
                 if _cls(m) == "PartialSubrange":
-                    if t.is_enum:
+                    if t.is_enum and not self.comp.user:
                         raise self.err(m, "ranges of enumeration values are outside the portable subset")
                     lo, hi = self._case_label(m.start, t), self._case_label(m.stop, t)
                     if lo > hi:
@@ -326,7 +667,7 @@ class BodyCompiler:
                     conds.append(f"({sel} >= {lo} && {sel} <= {hi})")
                 else:
                     lo = hi = self._case_label(m, t)
-                    conds.append(f"{sel} == {t.cvalue(t.values[lo]) if t.is_enum else lo}")
+                    conds.append(f"{sel} == {t.cvalue(t.values[lo]) if t.is_enum and not self.comp.user else lo}")
                 for slo, shi in seen:
                     if lo <= shi and slo <= hi:
                         raise self.err(m, "CASE label used twice")
@@ -346,6 +687,31 @@ class BodyCompiler:
         return out
 
     def _s_FunctionCallStatement(self, node, ind, d):
+        node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.lookup))
+        target = self.method_target(node.name)
+        if target is not None:  # user mode: Axis.Move(...), THIS^.Move(...), Move(...) inside the FB
+            if target[1] is self.pou:
+                raise self.err(node, "recursion is outside pacst's user programs")
+            return [ind + "(void)" + self.ex._user_call(node, target[1], this=target[0]).code + ";"]
+        node = dataclasses.replace(node, name=self.this(node.name))
+        if self.comp.user and (_cls(node.name) != "SimpleVariable" or (
+                self.pou.var(_name(node.name.name)) is None and _name(node.name.name).upper() not in self.comp.pous)):
+            # User mode: MEMCPY(...) and the other functions the translator provides, as statements
+            if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
+                    and _name(node.name.name).upper() in STATEMENT_FUNCTIONS:
+                return [ind + "(void)(" + self.ex._e_FunctionCall(node, None).code + ");"]
+            # User mode: an instance in an array, a struct, a global list (Axes[i](...), GVL_Io.Timer(...))
+            if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
+                    and _name(node.name.name).upper() not in self.pou.externals \
+                    and user.lookup_global(self.comp, node.name.name) is None:
+                raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
+                                     f"'{_name(node.name.name)}'")
+            r = self.ref(node.name)
+            if not r.type.is_fb:
+                raise self.err(node, f"'{r.var.name}' is a {r.type.name}, not a function block instance")
+            if _cls(node.name) != "SimpleVariable":
+                self.comp.dialect(node.name, "a call of an FB instance in an array, a struct or a global list")
+            return self._fb_call(node, r.read(), r.type, ind)
         if _cls(node.name) != "SimpleVariable":
             raise self.err(node, "only a function block instance declared in VAR can be called")
         name = _name(node.name.name)
@@ -354,6 +720,11 @@ class BodyCompiler:
         if v is None and up in self.comp.pous and self.comp.pous[up].native:
             # A native FUNCTION (an assert) may be called as a statement: the host implements it.
             return [ind + self.ex._user_call(node, self.comp.pous[up]).code + ";"]
+        if v is None and self.comp.user and up in self.comp.pous and self.comp.pous[up].kind == "function":
+            self.comp.dialect(node, f"FUNCTION {name} called as a statement")
+            if self.comp.pous[up] is self.pou:
+                raise self.err(node, "recursion is outside pacst's user programs")
+            return [ind + "(void)" + self.ex._user_call(node, self.comp.pous[up]).code + ";"]
         if v is None:
             if up in self.comp.pous and self.comp.pous[up].kind == "function" or up in ("SHL", "SHR", "ABS") \
                     or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up):
@@ -361,8 +732,10 @@ class BodyCompiler:
             raise self.err(node, f"undeclared function block instance '{name}'")
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
-        fbt = v.type
-        inst = f"data__->{v.cname}"
+        return self._fb_call(node, f"data__->{v.cname}", v.type, ind)
+
+    def _fb_call(self, node, inst, fbt, ind):
+        """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`."""
         pre, post = [], []
         given = set()
         for p in node.parameters:
@@ -398,6 +771,28 @@ class BodyCompiler:
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
         return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
+
+
+class BitRef(Ref):
+    """Bit n of an integer or bit-string variable (user mode): a BOOL; a write keeps the other bits."""
+
+    def __init__(self, whole, n):
+        super().__init__(whole.base, whole.wrapped, T.BOOL, whole.var, whole.suffix, whole.writable, whole.why_not,
+                         whole.subscripted)
+        self.whole, self.n = whole, n
+
+    def read(self):
+        return f"((BOOL)(((unsigned long long)({self.whole.read()}) >> {self.n}) & 1u))"
+
+    def write(self, value):
+        t = self.whole.type.cname
+        mask = f"(({t})1 << {self.n})"
+        return self.whole.write(f"(({t})(({value}) ? ({self.whole.read()} | {mask}) : ({self.whole.read()} & ({t})~{mask})))")
+
+
+def program_instance(pou):
+    """The C variable of a PROGRAM's one instance (user mode), which the host runs and other POUs read."""
+    return f"{pou.cname}__INSTANCE"
 
 
 def _limited(var, value, suffix=""):

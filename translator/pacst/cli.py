@@ -26,15 +26,15 @@ def _parsed(results):
     return results
 
 
-def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=()):
+def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=(), namespaces=None):
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
     against them; returns (compiler, program, {gvl file: constants}) or raises StErrors. `user`: the
     user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements."""
     results = parse_files(list(files) + list(gvl_files), cache_dir, jobs, user)
-    return _translate_parsed(results[:len(files)], results[len(files):], user, native)
+    return _translate_parsed(results[:len(files)], results[len(files):], user, native, namespaces)
 
 
-def _translate_parsed(file_results, list_results, user=False, native=()):
+def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None):
     # A fault in a POU file is reported before any in a global list.
     sources = _parsed(file_results)
     lists = _parsed(list_results)
@@ -42,7 +42,7 @@ def _translate_parsed(file_results, list_results, user=False, native=()):
         # A PLC programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
         by_path = {src.path: src for src in sources}
         sources = [by_path[path] for path in declaration_order(sources)]
-    comp = Compiler(user, native)
+    comp = Compiler(user, native, namespaces)
     program = comp.compile(sources)
     constants = {}
     errors = []
@@ -65,8 +65,8 @@ def _user_files(args):
     """The files to compile: the native interfaces first (the user's POUs call them); in user mode a
     TwinCAT `.plcproj` stands for the object files it lists, a PLCopen XML project for the ST files of
     its objects (written to the `--sources` folder, or a temporary one)."""
-    if (args.native or args.sources_dir) and not args.user:
-        raise SystemExit("pacst: --native and --sources need --user")
+    if (args.native or args.sources_dir or args.namespace) and not args.user:
+        raise SystemExit("pacst: --native, --namespace and --sources need --user")
     files = []
     for path in args.files:
         if args.user and path.lower().endswith(".plcproj"):
@@ -76,6 +76,17 @@ def _user_files(args):
         else:
             files.append(path)
     return list(args.native) + [f for f in files if f not in args.native]
+
+
+def _namespaces(args):
+    """--namespace NAME=DIR: {NAME: (NAME, DIR)}."""
+    found = {}
+    for item in args.namespace:
+        name, sep, folder = item.partition("=")
+        if not sep or not name or not folder:
+            raise SystemExit(f"pacst: --namespace {item}: write NAME=FOLDER")
+        found[name] = (name, folder)
+    return found
 
 
 def _sources_dir(args):
@@ -89,7 +100,8 @@ def _build(args):
     names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, SYMBOLS] + [_stem(f) + ".c" for f in files] + \
         [_stem(f) + ".h" for f in args.gvl]
     try:
-        comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native)
+        comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native,
+                                             _namespaces(args))
     except StErrors as e:
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
@@ -145,7 +157,7 @@ def _check(args):
     failed = False
     for group in groups:
         try:
-            _translate_parsed(group, list_results, args.user, args.native)
+            _translate_parsed(group, list_results, args.user, args.native, _namespaces(args))
         except StErrors as e:
             failed = True
             for err in e.errors:
@@ -157,7 +169,10 @@ def _matiec(args):
     args.user = True
     try:
         files = _user_files(args)
-        comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native)
+        comp, program, _ = translate(files, args.cache, (), args.jobs, True, args.native, _namespaces(args))
+        if comp.dialect_uses:  # each once, in source order (a construct may be looked at twice)
+            unique = {str(e): e for e in comp.dialect_uses}
+            raise StErrors(sorted(unique.values(), key=lambda e: (e.file, e.line, e.col)))
         text, lines = matiec.source_and_lines(comp, program, matiec.read_tasks(args.tasks))
     except StError as e:
         print(e, file=sys.stderr)
@@ -202,6 +217,9 @@ def _user_options(parser):
     parser.add_argument("--native", action="append", default=[], metavar="FILE",
                         help="(--user) an ST file whose FUNCTIONs the host implements in C; each call passes "
                              "the ST file and line of the call")
+    parser.add_argument("--namespace", action="append", default=[], metavar="NAME=DIR",
+                        help="(--user) the declarations of the files under DIR may be written NAME.Decl (a library "
+                             "referenced with its namespace: PA_CONTROL=st)")
     parser.add_argument("--sources", dest="sources_dir", metavar="DIR",
                         help="(--user) folder for the ST files of a PLCopen XML project (default: a temporary one)")
 
@@ -256,4 +274,8 @@ def main(argv=None):
     order.add_argument("files", nargs="+")
     order.set_defaults(run=_order)
     args = parser.parse_args(argv)
-    return args.run(args)
+    try:
+        return args.run(args)
+    except StError as e:  # a project file that cannot be read (.plcproj, PLCopen XML): no traceback
+        print(e, file=sys.stderr)
+        return 1

@@ -8,26 +8,75 @@ generated C; see docs/translator.md.
 This module holds the driver and the declarations (types, POUs and their variables, initial values);
 expressions.py types and translates expressions, body.py a POU's statements.
 """
+import dataclasses
+import os
+import re
+
 from . import literals
 from . import types as T
 from .body import BodyCompiler
 from .common import _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
-from .names import reserved_reason
+from .names import STANDARD_FUNCTIONS, reserved_reason
 from . import user
+
+
+
+def _signature(pou):
+    """What an INTERFACE's METHOD and its implementation must share: the result and the pins."""
+    return pou.ret, [(v.section, v.type) for v in pou.vars if v.section in ("input", "output", "inout")]
+
+
+def _array_elements(node):
+    """The elements of an array's initial value in order (blark nests the ones after the first, unbracketed)."""
+    out = []
+    for el in node.elements:
+        if _cls(el.element) == "ArrayInitialization" and not el.element.brackets and el.count is None:
+            out += _array_elements(el.element)
+        else:
+            out.append(el)
+    return out
+
+
+def _struct_elements(node):
+    """(member name, value) of a struct's initial value. blark reads `(X := 1, Y := 2)` as X := [1, Y := 2]
+    (an unbracketed array whose later elements are assignments): those are taken apart again."""
+    out = []
+    for el in node.elements:
+        value = el.value
+        if _cls(value) == "ArrayInitialization" and not value.brackets and all(
+                _cls(e.element) == "BinaryOperation" and str(e.element.op) == ":=" and e.count is None
+                for e in _array_elements(value)[1:]):
+            rest = _array_elements(value)
+            out.append((el.name, rest[0].element))
+            out += [(e.element.left.name, e.element.right) for e in rest[1:]]
+        else:
+            out.append((el.name, value))
+    return out
 
 
 class Pou:
     def __init__(self, kind, name, file, node):
         self.kind = kind  # "fb" or "function" (a user PROGRAM is an "fb" with `program` set)
         self.program = False
+        self.action = False  # user mode: an ACTION (a method without interface)
+        self.base = None  # user mode: the FUNCTION_BLOCK this one EXTENDS
+        self.super_body = False  # user mode: the base's body as SUPER^() of a derived FB
+        self.inherited_from = None  # user mode: the base FB whose METHOD, ACTION or body this is a copy of
         self.native = False  # a FUNCTION the host implements (user mode, --native)
         self.externals = {}  # upper name -> (GlobalVar, constant), from VAR_EXTERNAL (user mode)
         self.globals_used = {}  # C name -> GlobalVar the body names without VAR_EXTERNAL (user mode)
         self.qualifiers = []  # (start, end, GlobalVar): the offsets of each `List.` before a global in the body
         self.name = name
         self.cname = name.upper()
+        self.cfunc = self.cname  # the C function of a FUNCTION (a method's is <FB>__<METHOD>)
+        self.owner = None  # user mode: the FUNCTION_BLOCK or PROGRAM of a METHOD or ACTION
+        self.methods = {}  # user mode: upper name -> the METHODs and ACTIONs of a FUNCTION_BLOCK or PROGRAM
+        self.statics = []  # user mode: VAR_STAT, shared by every instance
+        self.properties = {}  # user mode: upper name -> {"name", "type", "get": Pou, "set": Pou} of a FUNCTION_BLOCK
+        self.accessor = None  # user mode: "get" or "set" for a PROPERTY's accessor
+        self.interfaces = []  # user mode: the INTERFACEs a FUNCTION_BLOCK IMPLEMENTS (its base's too)
         self.file = file
         self.node = node
         self.vars = []
@@ -51,12 +100,15 @@ class Compiler:
     lists, located variables, VAR_EXTERNAL, sized STRINGs, inline arrays and the string functions are
     accepted on top of the library's subset. `native`: files whose FUNCTIONs the host implements."""
 
-    def __init__(self, user=False, native=()):
+    def __init__(self, user=False, native=(), namespaces=None):
         self.user = user
         self.native_files = set(native)
+        # user mode: upper namespace -> (its spelling, the folder whose declarations it holds), `--namespace`
+        self.namespaces = {k.upper(): v for k, v in (namespaces or {}).items()}
         self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
         self.gvls = {}  # upper list name -> GlobalList
         self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
+        self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -66,10 +118,20 @@ class Compiler:
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
+        self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
+
+    def dialect(self, node, what):
+        """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
+        refuses each with its place, since MATIEC compiles only the portable subset's user programs."""
+        self.dialect_uses.append(self.err(node, f"{what}: TwinCAT / CODESYS dialect that MATIEC does not compile "
+                                                "(docs/user_dialect.md); run this program on pacst's C"))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
         line, col = pos(node) if node is not None else (1, 1)
+        if self.user:  # the library's subset is not what a user program is held to: docs/user_dialect.md is
+            message = message.replace("outside the portable subset", "outside pacst's user programs "
+                                      "(docs/user_dialect.md)")
         return StError(self.file, line, col, message)
 
     # ------------------------------------------------------------------ driver
@@ -79,15 +141,27 @@ class Compiler:
         for src in sources:
             self.file = src.path
             for item in src.tree.items:
-                name = self._item_name(item)
+                name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
+        self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
+        attached = set()
+        for src in sources if self.user else []:
+            owner = None
+            for item in src.tree.items:
+                if _cls(item) in ("FunctionBlock", "Program", "Interface"):
+                    owner = item
+                elif _cls(item) in ("Method", "Action", "Property") and owner is not None:
+                    self.members.setdefault(id(owner), []).append(item)
+                    attached.add(id(item))
         for src, item in self._in_order(sources):
+            if id(item) in attached:
+                continue  # declared with its FUNCTION_BLOCK or PROGRAM
             self.file = src.path
             try:
                 self._item(item, src)
-            except StError as e:
-                self.errors.append(e)
+            except (StError, StErrors) as e:
+                self.errors += e.errors if isinstance(e, StErrors) else [e]
                 name = self._item_name(item)
                 if name is not None:
                     self.refused.add(name.upper())
@@ -132,6 +206,12 @@ class Compiler:
                 return user.global_list(self, item, src)
             raise self.err(item, "VAR_GLOBAL is outside the subset: MATIEC allows globals only inside a "
                                  "CONFIGURATION (see docs/translator.md for library constants)")
+        elif cls == "Interface" and self.user:
+            self._interface(item)
+        elif cls in ("Method", "Action") and self.user:
+            raise self.err(item, f"{cls.upper()} {_name(item.name)} follows no FUNCTION_BLOCK or PROGRAM in its file")
+        elif self.user:
+            raise self.err(item, f"{cls.upper()} is not translated in user programs yet (docs/user_dialect.md)")
         else:
             raise self.err(item, f"{cls} is outside the portable subset (no METHOD, PROPERTY, ACTION, INTERFACE)")
 
@@ -141,23 +221,46 @@ class Compiler:
         why = reserved_reason(name, self.user)
         if why:
             raise self.err(token, f"{what} {why}")
+        if self.user and ("__" in name or name.endswith("_")):
+            self.dialect(token, f"the name '{name}' (MATIEC refuses '__' in names and a '_' at their end)")
 
     def _declare_global(self, token, what):
         name = _name(token)
         self._check_ident(token, what)
         up = name.upper()
         if up in self.types or up in self.pous:
+            library = next((ns for ns, (_, folder) in self.namespaces.items() if self._under(self.file, folder) or
+                            self._under(self.declared_at.get(up, ("",))[0], folder)), None)
+            if library is not None:  # a CODESYS export "into an application" carries the library's objects
+                why = (f"{what} '{name}' is declared by the library {self.namespaces[library][0]} too: leave the "
+                       "library's objects out of your sources (pac-test adds the library; export your application "
+                       "without it)")
+                other = self.declared_at.get(up)
+                if other is not None and other[0] != self.file and not self._under(other[0], self.namespaces[library][1]):
+                    raise StError(other[0], other[1], 1, why)  # at the user's copy, not at the library's file
+                raise self.err(token, why)
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
         if up in self.enum_values:
             raise self.err(token, f"{what} '{name}' has the name of an enumeration value")
 
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
+        if self.user and "." in name:
+            name = self.strip_namespace(name, token)
+            self.dialect(token, f"the namespace in '{_name(token)}'")
         up = name.upper()
         if up in T.ELEMENTARY:
             return T.ELEMENTARY[up]
+        if self.user and up in T.USER_ELEMENTARY:
+            self.dialect(token, f"the 64-bit type {up}")
+            return T.USER_ELEMENTARY[up]
         if up in T.OUTSIDE_SUBSET:
             raise self.err(token, T.OUTSIDE_SUBSET[up])
+        if self.user and up in T.USER_FBS:
+            if not allow_fb:
+                raise self.err(token, f"a function block ({up}) cannot be used here")
+            self.dialect(token, f"{up} with the pin names of CODESYS and TwinCAT (MATIEC names them otherwise)")
+            return T.USER_FBS[up]
         if up in T.NONPORTABLE_FBS:
             raise self.err(token, f"standard FB {up} has different pin names in MATIEC and CODESYS/TwinCAT: "
                                   "write that logic by hand")
@@ -166,6 +269,8 @@ class Compiler:
                 raise self.err(token, f"a function block ({up}) cannot be used here")
             return T.STANDARD_FBS[up]
         if up in self.types:
+            if self.types[up].kind == "interface":
+                self.dialect(token, f"a variable of the INTERFACE {name}")
             return self.types[up]
         if up in self.pous:
             pou = self.pous[up]
@@ -184,14 +289,121 @@ class Compiler:
                                   "declare before use (MATIEC)")
         raise self.err(token, f"undeclared type '{name}'")
 
+    # ------------------------------------------------------------------ namespaces (user mode)
+    def namespace(self, name):
+        """'library' for a `--namespace` (PA_CONTROL), 'standard' for the standard library's (Tc2_Standard,
+        Standard), None for any other name."""
+        up = name.upper()
+        if up in self.namespaces:
+            return "library"
+        if up in user.STANDARD_NAMESPACES:
+            return "standard"
+        return None
+
+    def in_namespace(self, namespace, name):
+        """Whether `name` (a type, POU, global list or enumeration value) is declared in the namespace."""
+        up = name.upper()
+        kind = self.namespace(namespace)
+        if kind == "standard":
+            return up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS or up in STANDARD_FUNCTIONS \
+                or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up) is not None
+        if up in self.enum_values and up not in self.declared_at:  # PA_CONTROL.PAC_AX_HOME: its type's
+            up = self.enum_values[up].cname
+        file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
+        return self._under(file, self.namespaces[namespace.upper()][1])
+
+    @staticmethod
+    def _under(path, folder):
+        return bool(path) and os.path.abspath(path).startswith(os.path.join(os.path.abspath(folder), ""))
+
+    def strip_namespace(self, dotted, node):
+        """`Namespace.Name` (a type) as the plain name; an error for a name the namespace lacks or a
+        namespace pac-test does not have."""
+        first, _, rest = dotted.partition(".")
+        if self.namespace(first) is None:
+            raise self.err(node, f"'{dotted}': {user.unknown_namespace(first)}")
+        if "." in rest or not self.in_namespace(first, rest):
+            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'")
+        return rest
+
+    def unqualify(self, node, local=None):
+        """User mode: the variable or call name `node` without a namespace before it (PA_CONTROL.GVL_PAC.X is
+        GVL_PAC.X, Tc2_Standard.LEN is LEN); `local(name)` tells whether a name is a variable, which keeps it."""
+        if not self.user or _cls(node) != "MultiElementVariable" or node.name.dereferenced:
+            return node
+        first = _name(node.name.name)
+        if self.namespace(first) is None or (local is not None and local(first)):
+            return node
+        head = node.elements[0]
+        if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
+            raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
+        if not self.in_namespace(first, _name(head.field.name)):
+            raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'")
+        self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
+        if len(node.elements) == 1:
+            if not head.dereferenced and not node.dereferenced:
+                return head.field
+            return node  # a pointer: refused where it is read
+        return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
+
     # ------------------------------------------------------------------ types
+    def pointer_type(self, node, target, indirection):
+        """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
+        reference = bool(indirection.reference)
+        if (0 if reference else 1) != indirection.pointer_depth or target.is_pointer:
+            raise self.err(node, "a POINTER TO POINTER and a REFERENCE TO a POINTER are not translated")
+        self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        return self.pointer_to(target, reference)
+
+    def pointer_to(self, target, reference=False):
+        key = (target.cname, reference)
+        t = self.pointer_types.get(key)
+        if t is None:
+            t = self.pointer_types[key] = T.PointerType(target, reference)
+            self.program.items.append(("type", t, self.file))
+        return t
+
     def _literal_int(self, node):
         """An array bound: a decimal literal, possibly negative."""
         if _cls(node) == "UnaryOperation" and str(node.op) == "-":
             return -self._literal_int(node.expr)
         if _cls(node) in _INT_LITERALS and node.type_name is None:
             return literals.int_value(node)
+        if self.user:
+            value = self.constant_int(node)
+            if value is not None:
+                self.dialect(node, "an array bound that is a named constant")
+                return value
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
+
+    def constant_int(self, node):
+        """User mode: the value of an integer constant expression of literals and named constants (a POU's
+        VAR CONSTANT, a global constant, List.Name) with + - *, or None when `node` is none."""
+        cls = _cls(node)
+        if cls in _INT_LITERALS | _BIT_LITERALS:
+            return literals.int_value(node)
+        if cls == "ParenthesizedExpression":
+            return self.constant_int(node.expr)
+        if cls == "UnaryOperation" and str(node.op) == "-":
+            inner = self.constant_int(node.expr)
+            return -inner if inner is not None else None
+        if cls == "BinaryOperation" and str(node.op) in ("+", "-", "*"):
+            a, b = self.constant_int(node.left), self.constant_int(node.right)
+            if a is None or b is None:
+                return None
+            return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        var = None
+        if cls == "SimpleVariable":
+            pou = getattr(self, "current_pou", None)
+            var = pou.var(_name(node.name)) if pou is not None else None
+            if var is None and _name(node.name).upper() in self.globals:
+                var = user.lookup_global(self, node.name)
+        elif cls == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
+                and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
+            var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+        if var is None or not var.constant or var.init is None:
+            return None
+        return self.constant_int(var.init)
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -217,6 +429,8 @@ class Compiler:
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
+            if self.user and spec.indirection is not None and spec.init_parameters is None:
+                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if spec.indirection is not None or spec.init_parameters is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._spec_type(spec.type, allow_fb)
@@ -284,15 +498,25 @@ class Compiler:
         elif cls == "EnumeratedTypeDeclaration":
             self._declare_global(decl.name, "type")
             init = decl.init
-            if init.value is not None:
+            if init.value is not None and not self.user:
                 raise self.err(init.value, "a default value for an enumeration type is outside the portable "
                                            "subset: the first value is the default")
             spec = init.spec
-            if _cls(spec) != "EnumeratedSpecification" or spec.type_name is not None:
+            if _cls(spec) != "EnumeratedSpecification" or (spec.type_name is not None and not self.user):
                 raise self.err(decl, "enumerations are plain value lists without base type (portable subset)")
-            values = []
+            base = None
+            if spec.type_name is not None:  # user mode: TwinCAT's and CODESYS's `(A := 1, B) INT`
+                self.dialect(spec.type_name, "an enumeration's base type")
+                base = self._resolve_type(spec.type_name, allow_fb=False)
+                if not (base.is_int or base.is_bit) or base.bits > 32:
+                    raise self.err(spec.type_name, f"an enumeration's base type is an integer type of up to 32 bits, "
+                                                   f"not {base.name}")
+            values, numbers, number = [], [], 0
             for ev in spec.values:
-                if ev.value is not None or ev.type_name is not None:
+                if self.user and ev.type_name is None and ev.value is not None:
+                    number = self._enum_number(ev.value, base)
+                    self.dialect(ev, "an enumeration value with a number")
+                if (ev.value is not None and not self.user) or ev.type_name is not None:
                     given = f"{_name(ev.name)} := {ev.value}" if ev.value is not None else _name(ev.name)
                     raise self.err(ev, f"'{given}': an enumeration value with an explicit "
                                        "number is outside the portable subset (user programs too): leave the "
@@ -305,8 +529,22 @@ class Compiler:
                 shared = self.user and (up in self.enum_values or up in self.enum_shared)
                 if not shared and (up in self.enum_values or up in self.types or up in self.pous):
                     raise self.err(ev, f"enumeration value '{vname}' is not globally unique: give it a prefix")
+                if number in numbers:
+                    twin = values[numbers.index(number)]
+                    raise self.err(ev.value if ev.value is not None else ev,
+                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname})")
                 values.append(vname)
-            t = T.EnumType(_name(decl.name), values)
+                numbers.append(number)
+                number += 1
+            t = T.EnumType(_name(decl.name), values, numbers, base)
+            if init.value is not None:  # user mode: the type's default value instead of the first
+                dv = init.value
+                self.dialect(dv, "an enumeration's default value")
+                label = _name(dv.name) if _cls(dv) == "EnumeratedValue" and dv.type_name is None else ""
+                label = label.split(".", 1)[1] if label.upper().startswith(t.name.upper() + ".") else label
+                if label.upper() not in (v.upper() for v in values):
+                    raise self.err(dv, f"the default of {t.name} is one of its values")
+                t.default = self.enum_value_of(t, label, dv)
             for v in values:
                 up = v.upper()
                 if up in self.enum_values and self.user or up in self.enum_shared:
@@ -327,6 +565,19 @@ class Compiler:
             raise self.err(decl, f"{cls} is outside the portable subset")
         self.types[t.cname] = t
         self.program.items.append(("type", t, self.file))
+
+    def _enum_number(self, node, base):
+        """User mode: the number an enumeration value is given (a literal, negative too), checked against the
+        base type (DINT's range without one)."""
+        negative = _cls(node) == "UnaryOperation" and str(node.op) == "-"
+        inner = node.expr if negative else node
+        if _cls(inner) not in _INT_LITERALS | _BIT_LITERALS:
+            raise self.err(node, "an enumeration value's number is an integer literal")
+        number = -literals.int_value(inner) if negative else literals.int_value(inner)
+        lo, hi = (base or T.DINT).int_range()
+        if not lo <= number <= hi:
+            raise self.err(node, f"{number} does not fit the enumeration's base type {(base or T.DINT).name}")
+        return number
 
     def _decl_var_name(self, dv, what):
         if _cls(dv) != "DeclaredVariable":
@@ -353,13 +604,16 @@ class Compiler:
         kind = "fb" if program else kind
         if getattr(node, "access", None) is not None:
             raise self.err(node, "access specifiers are outside the portable subset")
-        if kind == "fb" and not program and (node.extends is not None or node.implements is not None):
+        if kind == "fb" and not program and (node.extends is not None or node.implements is not None) \
+                and not self.user:
             raise self.err(node, "EXTENDS and IMPLEMENTS are outside the portable subset")
         self._declare_global(node.name, what)
         if self.user and _name(node.name).upper() in self.globals:
             raise self.err(node.name, f"{what} '{_name(node.name)}' has the name of a global variable")
         pou = Pou(kind, _name(node.name), self.file, node)
         pou.program = program
+        self.current_pou = pou  # its constants may give array bounds (user mode)
+        base = self._extends(pou, node) if kind == "fb" and getattr(node, "extends", None) is not None else None
         pou.native = kind == "function" and self.file in self.native_files
         if kind == "fb":
             pou.fbtype = T.FbType(pou.name)
@@ -371,6 +625,7 @@ class Compiler:
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
                 else self._resolve_type(node.return_type, allow_fb=False)
         constant_block = None
+        refused = []
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
@@ -380,12 +635,20 @@ class Compiler:
                                       "for constants too; put VAR CONSTANT last")
             if is_constant:
                 constant_block = block
-            self._var_block(pou, block)
+            if not self.user:
+                self._var_block(pou, block)
+            else:
+                try:  # user mode: every refused declaration is reported, not only the first
+                    self._var_block(pou, block)
+                except (StError, StErrors) as e:
+                    refused += e.errors if isinstance(e, StErrors) else [e]
             if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
                                       "return the struct alone or use a FUNCTION_BLOCK")
+        if refused:
+            raise StErrors(refused)
         if kind == "fb":
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
@@ -393,18 +656,200 @@ class Compiler:
         if pou.native:  # the host implements it: its ST body (if any) is for the other tools
             self.program.items.append(("pou", pou, self.file))
             return
+        members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
+        members = [m for m in members if m is not None]  # a PROPERTY's declaration is no code of its own
+        if base is not None:
+            members += self._inherit(pou, base)
+        if kind == "fb" and getattr(node, "implements", None) is not None:
+            self._implements(pou, node.implements)
         try:
             pou.body_c = BodyCompiler(self, pou).compile()
-        except StError:
+            errors = []
+            for m in members:
+                try:
+                    m.body_c = BodyCompiler(self, m).compile()
+                except (StError, StErrors) as e:
+                    errors += e.errors if isinstance(e, StErrors) else [e]
+            if errors:
+                raise StErrors(errors)
+        except (StError, StErrors):
             del self.pous[pou.cname]
             raise
         self.program.items.append(("pou", pou, self.file))
+        self.program.items += [("pou", m, self.file) for m in members]
+
+    def _implements(self, pou, implements):
+        """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
+        for token in implements.interfaces:
+            t = self.types.get(_name(token).upper())
+            if t is None or t.kind != "interface":
+                if user.namespace_like(_name(token).split(".")[0]):
+                    raise self.err(token, f"'{_name(token)}': {user.unknown_namespace(_name(token).split('.')[0])}")
+                raise self.err(token, f"IMPLEMENTS {_name(token)}: no INTERFACE of that name")
+            self.dialect(token, f"IMPLEMENTS {t.name}")
+            missing = [m for m in t.methods if m.upper() not in pou.methods]
+            if missing:
+                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
+            for up, proto in t.protos.items():
+                if _signature(pou.methods[up]) != _signature(proto):
+                    raise self.err(token, f"{pou.name}.{proto.name} differs from {t.name}.{proto.name} in its result "
+                                          "or its inputs, outputs and in-outs")
+            if t not in pou.interfaces:
+                pou.interfaces.append(t)
+
+    def _interface(self, node):
+        """User mode: an INTERFACE: its METHODs' prototypes, which an FB that IMPLEMENTS it must have with the
+        same pins. A variable of the interface type refers to such an FB's instance: in C a struct of the
+        instance's address and a table of its METHODs (`<FB>__<ITF>__VT`), through which a call goes."""
+        self._declare_global(node.name, "interface")
+        self.dialect(node, f"INTERFACE {_name(node.name)}")
+        if node.extends is not None or node.declarations:
+            raise self.err(node, "an INTERFACE that EXTENDS another or declares PROPERTYs is not translated yet")
+        t = T.InterfaceType(_name(node.name))
+        for m in self.members.get(id(node), []):
+            if _cls(m) != "Method":
+                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE is not translated yet: declare METHODs")
+            proto = Pou("function", _name(m.name), self.file, m)
+            if m.return_type is not None:
+                rt = m.return_type
+                proto.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+                    self._resolve_type(rt, allow_fb=False)
+            for block in m.declarations:
+                self._var_block(proto, block)
+            t.methods.append(proto.name)
+            t.protos[proto.cname] = proto
+        self.types[t.cname] = t
+        self.program.items.append(("type", t, self.file))
+
+    def _extends(self, pou, node):
+        """User mode: FUNCTION_BLOCK ... EXTENDS Base: the base's variables first, then its own; the base's
+        METHODs and ACTIONs translated again for this FB unless it overrides them; SUPER^() is the base's
+        body and SUPER^.M() the base's M, both on this instance."""
+        token = node.extends.interfaces[0]
+        base = self.pous.get(_name(token).upper())
+        if base is None or base.kind != "fb" or base.program:
+            if _name(token).upper() in self.declared_at and _name(token).upper() not in self.pous:
+                raise self.err(token, f"{_name(token)} cannot be extended: its declaration was refused or comes later")
+            raise self.err(token, f"{_name(token)} is no FUNCTION_BLOCK to extend")
+        self.dialect(node.extends, f"EXTENDS {base.name}")
+        pou.base = base
+        pou.vars = list(base.vars)
+        pou.interfaces = list(base.interfaces)  # its METHODs' table is built from this FB's own
+        return base
+
+    def _inherit(self, pou, base):
+        """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
+        for this FB's instance (from the base's text: their errors name the base's lines)."""
+        own = set(pou.methods)
+        members = []
+        saved = self.file
+        try:
+            self.file = base.file
+            for node in self.members.get(id(base.node), []):
+                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in pou.properties \
+                        or _cls(node) != "Property" and _name(node.name).upper() not in own:
+                    members.append(self._member(pou, node, inherited=True))
+            for node in self.members.get(id(base.node), []):
+                if _cls(node) != "Property":
+                    members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
+            members = [m for m in members if m is not None]
+            body = Pou("function", "SUPER__BODY", base.file, base.node)
+            body.owner = pou
+            body.cfunc = f"{pou.cname}__SUPER__BODY"
+            body.super_body = True
+            pou.methods["SUPER__BODY"] = body
+            members.append(body)
+        finally:
+            self.file = saved
+        for m in members:
+            m.inherited_from = base
+        return members
+
+    def _property(self, owner, node, inherited):
+        """User mode: a PROPERTY: `X` declares it (TwinCAT's <Property>), `X.Get` and `X.Set` are its accessors
+        (a body of `X` alone is its Get): C functions `<FB>__<X>__GET(FB *, EN, ENO)` returning the value and
+        `<FB>__<X>__SET(FB *, EN, ENO, X)`; `inst.X` reads through the one and `inst.X := v` writes through the
+        other."""
+        name, _, part = _name(node.name).partition(".")
+        self.dialect(node, f"PROPERTY {name}")
+        rt = node.return_type
+        if rt is None:
+            raise self.err(node, f"PROPERTY {name} needs its type")
+        t = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+        up = name.upper()
+        known = owner.properties.get(up)
+        if known is None:
+            if owner.var(name) is not None or up in owner.methods:
+                raise self.err(node.name, f"PROPERTY {name}: {owner.name} already has a variable or member of that name")
+            known = owner.properties[up] = {"name": name, "type": t, "get": None, "set": None}
+        elif known["type"] is not t:
+            raise self.err(rt, f"PROPERTY {name} is a {known['type'].name}, not a {t.name}")
+        kind = {"": "get" if node.body is not None else None, "GET": "get", "SET": "set"}.get(part.upper(), "?")
+        if kind == "?":
+            raise self.err(node.name, f"PROPERTY {_name(node.name)}: the parts of a PROPERTY are Get and Set")
+        if kind is None:
+            return None
+        if known[kind] is not None and not inherited:
+            raise self.err(node.name, f"PROPERTY {name} has two {kind.capitalize()}s")
+        m = Pou("function", name, self.file, node)
+        m.owner = owner
+        m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
+        m.accessor = kind
+        if kind == "get":
+            m.ret = t
+        else:
+            m.vars.append(T.Var(name, "input", t, None, node.name))
+        for block in node.declarations:
+            self._var_block(m, block)
+        known[kind] = m
+        return m
+
+    def _member(self, owner, node, inherited=False, prefix=""):
+        if _cls(node) == "Property":
+            return self._property(owner, node, inherited)
+        """User mode: a METHOD or ACTION of `owner` (a FUNCTION_BLOCK or PROGRAM), declared before the owner's
+        body (which may call it): a C function `<OWNER>__<NAME>(OWNER *data__, ...)` whose body reads and
+        writes the owner's variables (docs/user_dialect.md)."""
+        is_action = _cls(node) == "Action"
+        name = _name(node.name)
+        what = "ACTION" if is_action else "METHOD"
+        self.dialect(node, f"{what} {name}")
+        if "." in name:
+            raise self.err(node.name, f"{what} {name}: write it after its FUNCTION_BLOCK, named without it")
+        why = reserved_reason(name, True)
+        if why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
+            raise self.err(node.name, f"{what} {why}")
+        if not inherited and (owner.var(name) is not None or name.upper() in owner.methods):
+            raise self.err(node.name, f"{what} {name}: {owner.name} already has a variable or member of that name")
+        m = Pou("function", name, self.file, node)
+        m.owner = owner
+        m.cfunc = f"{owner.cname}__{prefix}{name.upper()}"
+        m.action = is_action
+        if not is_action and node.return_type is not None:
+            rt = node.return_type
+            m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+                self._resolve_type(rt, allow_fb=False)
+        for block in ([] if is_action else node.declarations):
+            if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
+                for item in block.items:
+                    vtype = self._spec_type(item.init.spec, allow_fb=False)
+                    for dv in item.variables:
+                        self._declare_var(m, "var", False, vtype, item.init.value, dv)
+                continue
+            self._var_block(m, block)
+        owner.methods[prefix + name.upper()] = m
+        return m
 
     def _var_block(self, pou, block):
         cls = _cls(block)
         section = self._SECTIONS.get(cls)
         if self.user and cls == "ExternalVariableDeclarations" and pou.kind == "fb":
             return user.external(self, pou, block)
+        if self.user and not block.items:  # an empty `VAR END_VAR` (TwinCAT's PROGRAM template)
+            return None
+        if self.user and cls == "StaticDeclarations":
+            return self._statics(pou, block)
         if section is None:
             keyword = {"StaticDeclarations": "VAR_STAT", "MethodInstanceVariableDeclarations": "VAR_INST",
                        "ExternalVariableDeclarations": "VAR_EXTERNAL", "AccessDeclarations": "VAR_ACCESS"}.get(
@@ -420,9 +865,14 @@ class Compiler:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
             raise self.err(block, "a FUNCTION has no VAR_TEMP in the portable subset: use VAR")
+        refused = []
         for item in block.items:
-            if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration"):
-                self._user_vars(pou, section, constant, item)
+            if self.user and _cls(item) in ("VariableOneInitDeclaration", "ArrayVariableInitDeclaration",
+                                            "StructuredVariableInitDeclaration"):
+                try:  # every refused line is reported
+                    self._user_vars(pou, section, constant, item)
+                except StError as e:
+                    refused.append(e)
                 continue
             if _cls(item) != "VariableOneInitDeclaration":
                 if _cls(item) == "ArrayVariableInitDeclaration":
@@ -447,6 +897,30 @@ class Compiler:
             self._check_section(pou, section, constant, vtype, item)
             for dv in item.variables:
                 self._declare_var(pou, section, constant, vtype, init.value, dv)
+        if refused:
+            raise StErrors(refused)
+
+    def _statics(self, pou, block):
+        """User mode: VAR_STAT, variables every instance of the FUNCTION_BLOCK shares: each a C variable
+        `<FB>__STAT__<NAME>` beside the FB's code, given its initial value when an instance is initialised
+        (before the first scan, so a second instance finds it as the first left it only then)."""
+        if pou.kind != "fb" and pou.owner is None:
+            raise self.err(block, "VAR_STAT belongs to a FUNCTION_BLOCK or PROGRAM")
+        holder = pou.owner or pou
+        self.dialect(block, "VAR_STAT")
+        for item in block.items:
+            vtype, strlen = user.var_type(self, item.init, allow_fb=False)
+            for dv in item.variables:
+                self._check_ident(dv.variable.name, "variable")
+                name = _name(dv.variable.name)
+                if pou.var(name) is not None or T.find_var(holder.statics, name) is not None:
+                    raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
+                v = T.Var(name, "stat", vtype, user.initial_value(item.init), dv)
+                v.strlen = strlen
+                v.csym = f"{holder.cname}__STAT__{name.upper()}"
+                if v.init is not None:
+                    self._init_code(v, "x")  # checks the initial value now
+                holder.statics.append(v)
 
     def _check_section(self, pou, section, constant, vtype, item):
         """Whether a variable of type `vtype` may stand in this block of `pou`."""
@@ -460,7 +934,7 @@ class Compiler:
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
-        value = getattr(item.init, "value", None)
+        value = user.initial_value(item.init)
         self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
             location = None
@@ -498,7 +972,9 @@ class Compiler:
         if constant and value is None:
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
-            if vtype.is_fb or vtype.is_array or vtype.is_struct:
+            if self.user and (vtype.is_array or vtype.is_struct):
+                self.dialect(value, "an initial value of an array or a struct")
+            elif vtype.is_fb or vtype.is_array or vtype.is_struct:
                 raise self.err(value, "initial values are only for elementary and enumeration "
                                       "variables: give defaults in the TYPE or in code")
             if section == "inout":
@@ -538,6 +1014,7 @@ class Compiler:
 
     def literal_te(self, node, want):
         """Type an initial value, which must be a literal or an enumeration value."""
+        node = self.unqualify(node)
         cls = _cls(node)
         if cls == "UnaryOperation" and str(node.op) == "-":
             inner = _cls(node.expr)
@@ -556,12 +1033,16 @@ class Compiler:
         return ExprCompiler(self, None).expr(node, want)
 
     def default_c(self, t):
+        if t.is_pointer:
+            return "NULL"
+        if t.kind == "interface":
+            return f"(({t.cname}){{NULL, NULL}})"
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:
             return "__time_make(0L, 0L)"
         if t.is_enum:
-            return t.cvalue(t.values[0])
+            return t.cvalue(t.default)
         if t.is_real:
             return f"(({t.cname})0.0)"
         if t.is_bool:
@@ -574,11 +1055,53 @@ class Compiler:
         if t.is_fb:
             return [f"{t.cname}_init__(&{target}, retain);"]
         if t.is_array or t.is_struct:
-            return [f"__pacst_init_{t.cname}(&{target});"]
+            lines = [f"__pacst_init_{t.cname}(&{target});"]
+            if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
+                lines += self._aggregate_init(t, var.init, target)
+            return lines
         if var.init is not None:
             te = self.literal_te(var.init, t)
             return [f"{target} = {ExprCompiler(self, None).coerce(te, t, var.init)};"]
         return [f"{target} = {self.default_c(t)};"]
+
+    def _aggregate_init(self, t, node, target):
+        """User mode: the C assignments of an array's or a struct's initial value, after its defaults."""
+        cls = _cls(node)
+        if t.is_array and cls == "ArrayInitialization":
+            elements = []
+            for el in _array_elements(node):
+                count = literals.int_value(el.count) if el.count is not None else 1
+                elements += [el.element] * count
+            if len(elements) > t.high - t.low + 1:
+                raise self.err(node, f"{len(elements)} initial values for the {t.high - t.low + 1} elements of "
+                                     f"{t.name}")
+            out = []
+            for k, element in enumerate(elements):
+                out += self._element_init(t.elem, element, f"{target}.table[{k}]")
+            return out
+        if t.is_struct and cls == "ParenthesizedExpression" and _cls(node.expr) == "BinaryOperation" \
+                and str(node.expr.op) == ":=":  # blark's reading of a one-member (Y := 6)
+            pairs = [(node.expr.left.name, node.expr.right)]
+        elif t.is_struct and cls in ("StructureInitialization", "InitializedStructure"):
+            pairs = _struct_elements(node.init if cls == "InitializedStructure" else node)
+        else:
+            pairs = None
+        if pairs is not None:
+            out = []
+            for name, value in pairs:
+                m = next((m for m in t.members if m.cname == _name(name).upper()), None)
+                if m is None:
+                    raise self.err(name, f"{t.name} has no member '{_name(name)}'")
+                out += self._element_init(m.type, value, f"{target}.{m.cname}")
+            return out
+        raise self.err(node, f"the initial value of a {t.name} is written "
+                             f"{'[a, b, n(c)]' if t.is_array else '(Member := value, ...)'}")
+
+    def _element_init(self, t, node, target):
+        if t.is_array or t.is_struct:
+            return self._aggregate_init(t, node, target)
+        te = self.literal_te(node, t)
+        return [f"{target} = {ExprCompiler(self, None).coerce(te, t, node)};"]
 
     def init_code(self, var, target):
         return self._init_code(var, target)

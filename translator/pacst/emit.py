@@ -6,10 +6,26 @@ import shutil
 import tempfile
 
 from . import types as T
+from .body import program_instance
 
 _HEADER_NAME = "pacst_iec.h"
 ENUM_NAMES = "pacst_enum_names.h"
 _INCLUDE_DIR = os.path.join(os.path.dirname(__file__), "include")
+
+
+def _ret(pou):
+    return pou.ret.cname if pou.ret is not None else "void"
+
+
+def _last_member(program, owner):
+    """The last METHOD, ACTION or PROPERTY accessor of `owner` in the program (its table follows it)."""
+    members = [obj for kind, obj, _ in program.items if kind == "pou" and obj.owner is owner]
+    return members[-1] if members else None
+
+
+def _global_ctype(v):
+    """The C type of a global: MATIEC's wrapper, or the FB's own struct for an FB instance (user mode)."""
+    return v.type.cname if v.type.is_fb else f"__IEC_{v.type.cname}_t"
 
 
 def _stem(path):
@@ -46,19 +62,36 @@ class Emitter:
     def _type_decl(self, t):
         out = []
         if t.is_enum:
-            values = ",\n".join(f"  {t.cvalue(v)}" for v in t.values)
+            values = ",\n".join(f"  {t.cvalue(v)}" + (f" = {n}" if t.numbered else "")
+                                 for v, n in zip(t.values, t.numbers))
             out.append(f"typedef enum {{\n{values}\n}} {t.cname};")
         elif t.is_array:
             out.append(f"typedef struct {{ {t.elem.cname} table[{t.high - t.low + 1}]; }} {t.cname};")
         elif t.is_struct:
             members = "\n".join(f"  {m.type.cname} {m.cname};" for m in t.members)
             out.append(f"typedef struct {{\n{members}\n}} {t.cname};")
+        elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
+            out.append(f"typedef {t.target.cname} *{t.cname};")
+        elif t.kind == "interface":  # user mode: an FB instance's address and the table of its METHODs
+            out.append(f"struct {t.cname}__VT;")
+            out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
+            slots = [f"  {_ret(p)} (*{p.cname})({', '.join(['void *data__'] + self._params(p))});"
+                     for p in t.protos.values()]
+            out.append(f"typedef struct {t.cname}__VT {{\n" + "\n".join(slots or ["  char none;"]) +
+                       f"\n}} {t.cname}__VT;")
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
-            out.append(f"  *v = {t.cvalue(t.values[0])};")
+            out.append(f"  *v = {t.cvalue(t.default)};")
+        elif t.is_pointer:
+            out.append("  *v = NULL;")
+        elif t.kind == "interface":
+            out.append("  v->inst = NULL;")
+            out.append("  v->vt = NULL;")
         elif t.is_array:
             out.append(f"  long i;")
+            if t.elem.is_fb:  # an array of FB instances (user mode): each initialised as the FB's init does
+                out.append("  BOOL retain = FALSE;")
             out.append(f"  for (i = 0; i < {t.high - t.low + 1}; i++) {{")
             out += ["    " + line for line in self.comp.init_code(T.Var("e", "member", t.elem, None, None),
                                                                    "v->table[i]")]
@@ -92,30 +125,62 @@ class Emitter:
             out.append(f"}} {pou.cname};")
             out.append(f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain);")
             out.append(f"void {pou.cname}_body__({pou.cname} *data__);")
+            if pou.program:  # its one instance, which the host runs and other POUs may read (MAIN.x)
+                out.append(f"extern {pou.cname} {program_instance(pou)};")
+            out += [f"extern const {t.cname}__VT {t.vtable(pou.cname)};" for t in pou.interfaces]
+            out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]  # VAR_STAT
         else:
             out.append(self._function_signature(pou) + ";")
         return out
 
-    def _function_signature(self, pou):
-        # A native FUNCTION is given the ST file and line of each call (docs/translator.md, "User programs").
-        params = (["const char *file__", "int line__"] if pou.native else []) + ["BOOL EN", "BOOL *__ENO"]
+    @staticmethod
+    def _params(pou):
+        """EN, ENO and the pins of a FUNCTION or METHOD as C parameters."""
+        params = ["BOOL EN", "BOOL *__ENO"]
         for v in pou.vars:
             if v.section == "input":
                 params.append(f"{v.type.cname} {v.cname}")
             elif v.section in ("output", "inout"):
                 params.append(f"{v.type.cname} *{v.cname}")
-        return f"{pou.ret.cname if pou.ret is not None else 'void'} {pou.cname}({', '.join(params)})"
+        return params
+
+    def _function_signature(self, pou):
+        # A native FUNCTION is given the ST file and line of each call (docs/translator.md, "User programs").
+        params = (["const char *file__", "int line__"] if pou.native else []) + self._params(pou)
+        if pou.owner is not None:  # a METHOD or ACTION (user mode) works on its FB's instance
+            params.insert(0, f"{pou.owner.cname} *data__")
+        return f"{_ret(pou)} {pou.cfunc}({', '.join(params)})"
+
+    def _vtables(self, pou):
+        """Each INTERFACE's table of this FB's METHODs (user mode), through a function per METHOD that takes
+        the instance as `void *`."""
+        out = []
+        for t in pou.interfaces:
+            names = []
+            for p in t.protos.values():
+                m = pou.methods[p.cname]
+                thunk = f"{pou.cname}__{t.cname}__{p.cname}"
+                pins = [v.cname for v in m.vars if v.section in ("input", "output", "inout")]
+                call = f"{m.cfunc}(({pou.cname} *)data__, {', '.join(['EN', '__ENO'] + pins)})"
+                out += [f"static {_ret(m)} {thunk}({', '.join(['void *data__'] + self._params(m))}) {{",
+                        f"  {'return ' if m.ret is not None else ''}{call};", "}"]
+                names.append(thunk)
+            out += [f"const {t.cname}__VT {t.vtable(pou.cname)} = {{{', '.join(names) or '0'}}};", ""]
+        return out
 
     def _gvl_decl(self, gvl):
         out = [f"/* global variable list {gvl.name} ({gvl.file}) */"]
-        out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in gvl.vars]
+        out += [f"extern {_global_ctype(v)} {v.csym};" for v in gvl.vars]
         out.append(f"void {gvl.cname}__init__(void);")
         return out
 
     def _gvl_code(self, gvl):
-        out = [f"__IEC_{v.type.cname}_t {v.csym};" for v in gvl.vars]
+        out = [f"{_global_ctype(v)} {v.csym};" for v in gvl.vars]
         out += ["", f"void {gvl.cname}__init__(void) {{", "  BOOL retain = FALSE;", "  (void)retain;"]
         for v in gvl.vars:
+            if v.type.is_fb:  # an FB instance (user mode) is no wrapper
+                out += ["  " + line for line in self.comp.init_code(v, v.csym)]
+                continue
             out.append(f"  {v.csym}.flags = 0;")
             out += ["  " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
         return out + ["}", ""]
@@ -146,10 +211,14 @@ class Emitter:
 
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
-        out = [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
+        out = [f"{pou.cname} {program_instance(pou)};", ""] if pou.program else []
+        out += [f"__IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]
+        out += [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
                "  (void)retain;",
                "  data__->EN.value = TRUE;",
                "  data__->ENO.value = TRUE;"]
+        for v in pou.statics:
+            out += ["  " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
         for v in pou.vars:
             target = f"data__->{v.cname}" if v.type.is_fb else f"data__->{v.cname}.value"
             out += ["  " + line for line in self.comp.init_code(v, target)]
@@ -169,6 +238,8 @@ class Emitter:
         return out
 
     def _function_code(self, pou):
+        if pou.ret is None:  # a METHOD or ACTION without a result (user mode)
+            return self._procedure_code(pou)
         out = [self._function_signature(pou) + " {",
                "  BOOL ENO = TRUE;",
                f"  {pou.ret.cname} {pou.cname};"]
@@ -189,6 +260,21 @@ class Emitter:
         out += self._body(pou)
         out += ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", f"  return {pou.cname};", "}", ""]
         return out
+
+    def _procedure_code(self, pou):
+        out = [self._function_signature(pou) + " {", "  BOOL ENO = TRUE;"]
+        for v in pou.vars:
+            if v.section == "var":
+                out.append(f"  {v.type.cname} {v.cname};")
+        for v in pou.vars:
+            if v.section == "var":
+                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+        out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", "    return;", "  }"]
+        for v in pou.vars:
+            if v.section == "output":
+                out += ["  " + line for line in self.comp.init_code(v, f"(*{v.cname})")]
+        out += self._body(pou)
+        return out + ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", "}", ""]
 
     def _body(self, pou):
         """The body's lines; with line directives, each preceded by `#line` where the ST line does not simply
@@ -212,6 +298,10 @@ class Emitter:
                 out += self._gvl_code(obj)
             elif kind == "pou" and file == path and not obj.native:
                 out += self._fb_code(obj) if obj.kind == "fb" else self._function_code(obj)
+                if obj.owner is not None and obj is _last_member(self.program, obj.owner):
+                    out += self._vtables(obj.owner)  # after the FB's METHODs
+                elif obj.kind == "fb" and obj.interfaces and not obj.methods:
+                    out += self._vtables(obj)
         if self.line_directives_dir is not None:
             c_file = _c_string(os.path.abspath(os.path.join(self.line_directives_dir, _stem(path) + ".c")))
             # The directive is on line i + 1, so the line after it is line i + 2 of the file.

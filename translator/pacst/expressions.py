@@ -1,4 +1,5 @@
 """Types and translates expressions: literals, operators, conversions and calls of functions."""
+import dataclasses
 import re
 
 from . import literals
@@ -12,6 +13,13 @@ _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE",
 _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"], "RIGHT": ["IN", "L"],
                      "MID": ["IN", "L", "P"], "FIND": ["IN1", "IN2"], "INSERT": ["IN1", "IN2", "P"],
                      "DELETE": ["IN", "L", "P"], "REPLACE": ["IN1", "IN2", "L", "P"]}
+# The numeric standard functions of user programs and their C functions (the float ones take an f).
+_MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin", "COS": "cos", "TAN": "tan",
+         "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXPT": "pow", "TRUNC": "", "TRUNC_INT": "", "MOVE": ""}
+# Pointers and memory (user mode): TwinCAT's operators and Tc2_System's functions, CODESYS's the same.
+_MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF"}
+# Functions a user program may call as a statement, its result unused.
+STATEMENT_FUNCTIONS = {"MEMCPY", "MEMMOVE", "MEMSET"}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
@@ -21,6 +29,38 @@ def array_name_hint(actual, target):
             (target.low, target.high, target.elem):
         return f" (declare it as {target.name}: an array type is matched by its name, not by its bounds)"
     return ""
+
+
+def _converted(st, dt, code):
+    """`code` of the elementary type `st` converted to `dt`: REAL to integers rounded half to even."""
+    if dt.is_bool:
+        return TE(dt, f"(({code}) != 0)")
+    if st.is_real and not dt.is_real:
+        helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
+        return TE(dt, f"(({dt.cname}){helper}({code}))")
+    return TE(dt, f"(({dt.cname})({code}))")
+
+
+def widens(source, target):
+    """Whether a user program converts `source` to `target` implicitly (TwinCAT and CODESYS do, without a
+    warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
+    an unsigned integer to a bit string as wide or wider (UINT to WORD), any integer to REAL or LREAL, REAL
+    to LREAL, an enumeration to an integer (its number; TwinCAT's types without {attribute 'strict'})."""
+    if source.is_enum and target.is_int:
+        return target.bits >= 16
+    if not (source.is_elementary and target.is_elementary) or source is target:
+        return False
+    if source.is_int and target.is_int:
+        if source.is_signed and not target.is_signed:
+            return False
+        return target.bits > source.bits or (target.bits == source.bits and source.is_signed == target.is_signed)
+    if source.is_bit and target.is_bit:
+        return target.bits >= source.bits
+    if source.is_int and target.is_bit:
+        return not source.is_signed and target.bits >= source.bits
+    if source.is_int and target.is_real:
+        return True
+    return source.is_real and target.is_real and target.bits > source.bits
 
 
 class ExprCompiler:
@@ -35,15 +75,36 @@ class ExprCompiler:
 
     # ------------------------------------------------------------------ coercion
     def coerce(self, te, target, node, what="value"):
-        """C code of `te` as type `target`; ST has no implicit conversion, so types must match."""
+        """C code of `te` as type `target`; ST has no implicit conversion, so types must match (user mode: the
+        widening ones TwinCAT and CODESYS make, widens())."""
         if te.type is target:
             return te.code
+        if te.type is T.ANY_INT and target.is_pointer and te.value == 0:
+            return "NULL"  # user mode: p := 0, p <> 0
+        if te.type is T.ANY_INT and target.kind == "interface" and te.value == 0:
+            return self.comp.default_c(target)  # user mode: itf := 0, itf <> 0
+        if te.type.is_fb and target.kind == "interface" and self.comp.user:
+            pou = te.type.pou
+            if pou is None or target not in pou.interfaces:
+                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
+            return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
+        if te.type.is_pointer and target.is_pointer and self.comp.user:
+            return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
             if target.is_int or target.is_bit:
                 lo, hi = target.int_range()
                 if not lo <= te.value <= hi:
                     raise self.err(node, f"{te.value} does not fit {target.name} ({lo}..{hi})")
-                return f"(({target.cname}){te.value}LL)"
+                return f"(({target.cname}){te.value}{'ULL' if te.value > 0x7FFFFFFFFFFFFFFF else 'LL'})"
+            if target.is_real and self.comp.user:
+                self.comp.dialect(node, f"the integer literal {te.value} where {target.name} is expected")
+                code = literals.real_c(te.value, target.cname)
+                if code is None:
+                    raise self.err(node, f"{te.value} does not fit {target.name}")
+                return code
+            if target.is_bool and self.comp.user and te.value in (0, 1):
+                self.comp.dialect(node, f"the integer literal {te.value} where BOOL is expected")
+                return "TRUE" if te.value else "FALSE"
             if target.is_real:
                 raise self.err(node, f"integer literal {te.value} where {target.name} is expected: write "
                                      f"{te.value}.0 (an integer literal never becomes REAL)")
@@ -57,6 +118,9 @@ class ExprCompiler:
             raise self.err(node, f"REAL literal where {target.name} is expected")
         if te.type.is_fb:
             raise self.err(node, f"function block instance used as a {what}")
+        if self.comp.user and widens(te.type, target):
+            self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
+            return f"(({target.cname})({te.code}))"
         hint = ""
         if te.type.is_elementary and target.is_elementary and \
                 te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
@@ -78,12 +142,19 @@ class ExprCompiler:
         return te.type
 
     def unify(self, a, b, want, node):
-        """The common type of two operands and both their C codes."""
+        """The common type of two operands and both their C codes (user mode: the wider of two types one of
+        which widens to the other, as TwinCAT and CODESYS compute INT + DINT)."""
         if a.type.kind in ("anyint", "anyreal") and b.type.kind in ("anyint", "anyreal"):
-            if a.type is not b.type:
+            if a.type is not b.type and not self.comp.user:
                 raise self.err(node, "integer and REAL literals mixed: write the integer as REAL (3.0)")
+            if a.type is not b.type:  # user mode: 2 * 1.5
+                a, b = [TE(T.ANY_REAL, value=x.value) for x in (a, b)]
             t = self.default_type(a, want)
+        elif self.comp.user and T.ANY_REAL in (a.type, b.type) and (a.type.is_int or b.type.is_int):
+            t = want if want is not None and want.is_real else T.LREAL  # user mode: Raw * 0.5 is a REAL
         elif a.type.kind in ("anyint", "anyreal"):
+            t = b.type
+        elif self.comp.user and b.type is not a.type and widens(a.type, b.type):
             t = b.type
         else:
             t = a.type
@@ -181,6 +252,7 @@ class ExprCompiler:
         return self._value_of(node)
 
     def _value_of(self, node):
+        node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
         name = _name(node.name) if _cls(node) == "SimpleVariable" else None
         if name is not None and (self.body is None or self.body.lookup(name) is None) \
                 and name.upper() in self.comp.enum_values:
@@ -197,7 +269,15 @@ class ExprCompiler:
             self.comp.shared_enum_value(name, node)
         if self.body is None:
             raise self.err(node, "initial value must be a literal")
+        prop = self.body.property_target(node)
+        if prop is not None:  # user mode: Axis.Velocity calls its Get
+            this, p = prop
+            if p["get"] is None:
+                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
+            return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
         ref = self.body.ref(node)
+        if ref.type.is_fb and self.comp.user:  # its address: an INTERFACE variable may take it (coerce)
+            return TE(ref.type, f"&({ref.read()})")
         if ref.type.is_fb:
             raise self.err(node, f"function block instance '{ref.var.name}' used as a value")
         return TE(ref.type, ref.read())
@@ -249,6 +329,12 @@ class ExprCompiler:
         b = self.expr(node.right, want)
         if a.type is T.ANY_INT and b.type is T.ANY_INT:
             return TE(T.ANY_INT, value=self._fold(node, op, a.value, b.value))
+        if self.comp.user and op in ("+", "-") and a.type.is_pointer and (b.type is T.ANY_INT or b.type.is_int):
+            n = b.code if b.code is not None else f"{b.value}LL"
+            return TE(a.type, f"(({a.type.cname})((char *)({a.code}) {op} ({n})))")  # bytes, as TwinCAT counts
+        if self.comp.user and op in ("*", "/") and (a.type.is_time or b.type.is_time) \
+                and not (a.type.is_time and b.type.is_time) and (op == "*" or a.type.is_time):
+            return self._time_scale(node, op, a, b)
         # The operator's own rules come before the operands' types must agree (W + I is refused for the
         # WORD, T * N for the TIME), and are reported at the operator.
         for te in (a, b):
@@ -275,6 +361,22 @@ class ExprCompiler:
             return TE(t, f"__mod_{t.cname}({ca}, {cb})")
         return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32)
 
+    def _time_scale(self, node, op, a, b):
+        """User mode: TIME * number, number * TIME, TIME / number, rounded toward zero to the nanosecond."""
+        t, n = (a, b) if a.type.is_time else (b, a)
+        if n.type.kind in ("anyint", "anyreal"):
+            if op == "/" and n.value == 0:
+                raise self.err(node, "TIME divided by zero")
+            factor = f"{float(n.value)!r}"
+        elif n.type.is_int or n.type.is_real:
+            factor = f"(double)({n.code})"
+        else:
+            raise self.err(node.op, f"TIME {op} {n.type.name}: a TIME is scaled by a number")
+        self.comp.dialect(node.op, f"TIME {op} a number")
+        if op == "/":
+            return TE(T.TIME, f"(({factor}) == 0.0 ? __time_make(0L, 0L) : __time_scale({t.code}, 1.0 / ({factor})))")
+        return TE(T.TIME, f"__time_scale({t.code}, {factor})")
+
     def _fold(self, node, op, a, b):
         if op == "+":
             return a + b
@@ -297,7 +399,15 @@ class ExprCompiler:
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
             raise self.err(node.op, f"{t.name} values cannot be compared")
-        if op not in ("=", "<>") and (t.is_bool or t.is_enum):
+        if t.is_pointer and op not in ("=", "<>"):
+            raise self.err(node.op, f"{op} on pointers: only = and <>")
+        if t.kind == "interface":  # user mode: the same instance, or none (itf = 0)
+            if op not in ("=", "<>"):
+                raise self.err(node.op, f"{op} on INTERFACE variables: only = and <>")
+            return TE(T.BOOL, f"(({ca}).inst {_CMP_C[op]} ({cb}).inst)")
+        if op not in ("=", "<>") and t.is_enum and self.comp.user:
+            self.comp.dialect(node.op, f"{op} on enumeration values")  # TwinCAT and CODESYS compare the numbers
+        elif op not in ("=", "<>") and (t.is_bool or t.is_enum):
             raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
         if t.is_string:
             if op not in ("=", "<>"):
@@ -326,13 +436,35 @@ class ExprCompiler:
 
     # ------------------------------------------------------------------ calls
     def _e_FunctionCall(self, node, want):
+        node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.body.lookup if self.body else None))
+        target = self.body.method_target(node.name) if self.body is not None else None
+        if target is not None:  # user mode: a METHOD's result (Ok := Axis.Move(...))
+            if target[1].ret is None:
+                raise self.err(node, f"{target[1].owner.name}.{target[1].name} returns nothing: call it as a statement")
+            if target[1] is self.body.pou:
+                raise self.err(node, "recursion is outside pacst's user programs")
+            return self._user_call(node, target[1], this=target[0])
         if _cls(node.name) != "SimpleVariable":
             raise self.err(node, "only plain function names can be called")
         name = _name(node.name.name)
         up = name.upper()
         m = re.fullmatch(r"([A-Z]+)_TO_([A-Z]+)", up)
-        if m:
+        if m and not (self.comp.user and up in self.comp.pous):  # a user FUNCTION BIN_TO_BYTE is the user's
             return self._conversion(node, m.group(1), m.group(2))
+        if self.comp.user and up in _MATH and up not in self.comp.pous:
+            return self._math(node, up, want)
+        if self.comp.user and up in _MEMORY and up not in self.comp.pous and self.body is not None:
+            return self._memory(node, up)
+        m = re.fullmatch(r"TO_([A-Z]+)", up)
+        if m and self.comp.user and up not in self.comp.pous:  # TO_DINT(x): from the argument's type
+            (arg,) = self._positional(node, 1, ["IN"])
+            te = self.expr(arg, None)
+            src = self.default_type(te, None).name if te.type.kind in ("anyint", "anyreal") else te.type.name
+            if te.type.is_enum:
+                src = "DINT"
+            self.comp.dialect(node, f"the generic conversion {up}")
+            return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
+                TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
             return self._shift(node, up, want)
         if up in ("ABS", "MIN", "MAX", "LIMIT", "SEL"):
@@ -351,6 +483,8 @@ class ExprCompiler:
         if self.body is not None and self.body.lookup(name) is not None:
             raise self.err(node, f"function block instance '{name}' called inside an expression: call it as a "
                                  "statement and read its outputs")
+        if up in self.comp.refused:
+            raise self.err(node, f"FUNCTION {name} cannot be called: its declaration was refused (above)")
         if up in self.comp.declared_at:
             file, line = self.comp.declared_at[up]
             raise self.err(node, f"'{name}' is called before its declaration ({file}:{line}): declare before use")
@@ -359,6 +493,85 @@ class ExprCompiler:
         if up in STANDARD_FUNCTIONS:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
+
+    def _math(self, node, fn, want):
+        """User mode: the numeric standard functions on REAL and LREAL (an integer argument is an LREAL), TRUNC
+        (toward zero, to DINT), MOVE."""
+        self.comp.dialect(node, f"the standard function {fn}")
+        if fn == "EXPT":
+            base, power = self._positional(node, 2, ["IN1", "IN2"])
+            bt = self._real_arg(base, want)
+            pt = self._real_arg(power, T.LREAL)
+            c = "powf" if bt[0] is T.ELEMENTARY["REAL"] else "pow"
+            return TE(bt[0], f"(({bt[0].cname}){c}({bt[1]}, {pt[1]}))")
+        (arg,) = self._positional(node, 1, ["IN"])
+        if fn == "MOVE":
+            te = self.expr(arg, want)
+            return te
+        if fn in ("TRUNC", "TRUNC_INT"):
+            t, code = self._real_arg(arg, T.LREAL)
+            dst = T.DINT if fn == "TRUNC" else T.INT
+            return TE(dst, f"(({dst.cname})__trunc_i64({code}))")
+        t, code = self._real_arg(arg, want)
+        c = _MATH[fn] + ("f" if t is T.ELEMENTARY["REAL"] else "")
+        return TE(t, f"(({t.cname}){c}({code}))")
+
+    def _memory(self, node, fn):
+        """User mode: ADR(x) (a POINTER TO x's type), SIZEOF(x or a type) in bytes as the C layout has them (a
+        STRING is 127 bytes here), MEMCPY / MEMMOVE / MEMSET (destAddr, srcAddr or fillByte, n: UDINT, the bytes
+        done), MEMCMP (pBuf1, pBuf2, n: DINT, -1, 0 or 1), __ISVALIDREF(r)."""
+        self.comp.dialect(node, fn)
+        if fn in ("ADR", "__ISVALIDREF"):
+            (arg,) = self._positional(node, 1, ["IN"] if fn == "ADR" else ["REF"])
+            r = self.body.ref(arg, raw=fn == "__ISVALIDREF")
+            if fn == "__ISVALIDREF":
+                if not (r.type.is_pointer and r.type.reference):
+                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE")
+                return TE(T.BOOL, f"(({r.read()}) != NULL)")
+            if getattr(r, "whole", None) is not None:
+                raise self.err(arg, "ADR of a bit: a bit has no address")
+            t = self.comp.pointer_to(r.type)
+            return TE(t, f"(({t.cname})&({r.read()}))")
+        if fn == "SIZEOF":
+            (arg,) = self._positional(node, 1, ["IN"])
+            name = _name(arg.name) if _cls(arg) == "SimpleVariable" else None
+            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None:
+                t = self.comp._resolve_type(arg.name, allow_fb=True)
+                return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
+            r = self.body.ref(arg)
+            return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({r.read()}))")
+        names = {"MEMSET": ["DESTADDR", "FILLBYTE", "N"], "MEMCMP": ["PBUF1", "PBUF2", "N"]}.get(
+            fn, ["DESTADDR", "SRCADDR", "N"])
+        args = self._positional(node, 3, names)
+        codes = []
+        for name, arg in zip(names, args):
+            te = self.expr(arg, T.ELEMENTARY["UDINT"] if name in ("N", "FILLBYTE") else None)
+            if name in ("N", "FILLBYTE"):
+                if te.type is not T.ANY_INT and not (te.type.is_int or te.type.is_bit):
+                    raise self.err(arg, f"{fn}'s {name.lower()} is a number, not {te.type.name}")
+                codes.append(f"(size_t)({te.code if te.code is not None else te.value})")
+            else:
+                if not te.type.is_pointer:
+                    raise self.err(arg, f"{fn}'s {name} is an address (ADR(x) or a POINTER), not {te.type.name}")
+                codes.append(f"(void *)({te.code})")
+        if fn == "MEMCMP":
+            return TE(T.DINT, f"__pacst_memcmp({', '.join(codes)})")
+        c = {"MEMCPY": "memcpy", "MEMMOVE": "memmove", "MEMSET": "memset"}[fn]
+        second = f"(int){codes[1]}" if fn == "MEMSET" else codes[1]
+        return TE(T.ELEMENTARY["UDINT"], f"((UDINT)(({c}({codes[0]}, {second}, {codes[2]}), {codes[2]})))")
+
+    def _real_arg(self, arg, want):
+        """(REAL or LREAL, C code) of a numeric standard function's argument: a REAL stays REAL, an integer or an
+        untyped literal is an LREAL (a REAL where the context wants one)."""
+        te = self.expr(arg, want if want is not None and want.is_real else None)
+        if te.type.is_real:
+            return te.type, te.code
+        t = want if want is not None and want.is_real and te.type.kind in ("anyint", "anyreal") else T.LREAL
+        if te.type.kind in ("anyint", "anyreal"):
+            return t, literals.real_c(te.value, t.cname) or "0.0"
+        if not te.type.is_int:
+            raise self.err(arg, f"a number is expected here, not {te.type.name}")
+        return T.LREAL, f"((LREAL)({te.code}))"
 
     def _string_conversion(self, node, src, dst):
         """User mode: an integer, bit string or BOOL to STRING, in decimal ('TRUE', 'FALSE'), as CODESYS,
@@ -422,6 +635,8 @@ class ExprCompiler:
     def _conversion(self, node, src, dst):
         if self.comp.user and "STRING" in (src, dst):
             return self._string_conversion(node, src, dst)
+        if self.comp.user and ("TIME" in (src, dst) or {src, dst} & set(T.USER_ELEMENTARY)):
+            return self._user_conversion(node, src, dst)
         for tname in (src, dst):
             if tname in T.OUTSIDE_SUBSET:
                 raise self.err(node, T.OUTSIDE_SUBSET[tname])
@@ -435,13 +650,28 @@ class ExprCompiler:
         (arg,) = self._positional(node, 1, ["IN"])
         st, dt = T.ELEMENTARY[src], T.ELEMENTARY[dst]
         te = self.expr(arg, st)
-        code = self.coerce(te, st, arg, "argument")
-        if dt.is_bool:
-            return TE(dt, f"(({code}) != 0)")
-        if st.is_real and not dt.is_real:
-            helper = "__real_to_i64" if dt.is_int and dt.is_signed else "__real_to_u64"
-            return TE(dt, f"(({dt.cname}){helper}({code}))")
-        return TE(dt, f"(({dt.cname})({code}))")
+        return _converted(st, dt, self.coerce(te, st, arg, "argument"))
+
+    def _user_conversion(self, node, src, dst):
+        """User mode: TIME to and from a number of milliseconds (TIME_TO_DINT, UDINT_TO_TIME: CODESYS and TwinCAT
+        count TIME in ms), and the 64-bit types' conversions."""
+        types = dict(T.ELEMENTARY, **T.USER_ELEMENTARY)
+        for tname in (src, dst):
+            if tname not in types or tname in ("STRING",) or tname != "TIME" and tname not in _CONVERTIBLE \
+                    and tname not in T.USER_ELEMENTARY:
+                raise self.err(node, f"unknown conversion {src}_TO_{dst}")
+        if src == dst:
+            raise self.err(node, f"{src}_TO_{dst} converts nothing")
+        self.comp.dialect(node, f"{src}_TO_{dst}")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st, dt = types[src], types[dst]
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if st.is_time:
+            return TE(dt, f"(__time_to_ms({code}) != 0)" if dt.is_bool else f"(({dt.cname})__time_to_ms({code}))")
+        if dt.is_time:
+            ms = f"__real_to_i64({code})" if st.is_real else f"(int64_t)({code})"
+            return TE(dt, f"__time_from_ms({ms})")
+        return _converted(st, dt, code)
 
     def _shift(self, node, fn, want):
         value, count = self._positional(node, 2, ["IN", "N"])
@@ -507,7 +737,7 @@ class ExprCompiler:
             raise self.err(p, f"'{pname}' is an output: use =>")
         return v
 
-    def _user_call(self, node, pou):
+    def _user_call(self, node, pou, this=None):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
         inputs = [v for v in interface if v.section == "input"]
@@ -554,4 +784,5 @@ class ExprCompiler:
         # A native FUNCTION (user mode) is given the call's position: with #line directives,
         # __FILE__ and __LINE__ are the ST file and line of the call (docs/translator.md).
         where = "__FILE__, __LINE__, " if pou.native else ""
-        return TE(pou.ret, f"{pou.cname}({where}TRUE, NULL{''.join(', ' + a for a in args)})")
+        first = f"{this}, " if this is not None else ""
+        return TE(pou.ret, f"{pou.cfunc}({first}{where}TRUE, NULL{''.join(', ' + a for a in args)})")

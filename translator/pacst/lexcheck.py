@@ -153,9 +153,10 @@ def tokenize(text, file, comments=None, user=False):
                 tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
-            if "__" in word:
-                raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves")
-            if word.endswith("_"):
+            if "__" in word and (not user or word.startswith("__") and word.upper() != "__ISVALIDREF"):
+                raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"
+                              if not user else f"identifier '{word}' starts with '__', which C reserves")
+            if word.endswith("_") and not user:
                 raise StError(file, line, col, f"identifier '{word}' ends with '_', which MATIEC refuses")
             tokens.append(Token("ident", word, line, col, i))
             advance(m.end())
@@ -196,10 +197,10 @@ def check(text, file, user=False):
                                                    "pacst no EXPT): multiply, or write a loop")
         if tok.kind == "punct" and tok.text == "&":
             raise StError(file, tok.line, tok.col, "'&' for AND: pacst's parser (blark) does not read it; write AND")
-        if tok.kind == "punct" and tok.text == ":=" and nxt is not None and nxt.text == "[":
+        if tok.kind == "punct" and tok.text == ":=" and nxt is not None and nxt.text == "[" and not user:
             raise StError(file, nxt.line, nxt.col, "array initial values are outside the portable subset: "
                                                    "initialise in code")
-        if up in _OPENS_BRANCH and nxt is not None and nxt.kind == "ident" and nxt_up in _ENDS_BRANCH:
+        if up in _OPENS_BRANCH and nxt is not None and nxt.kind == "ident" and nxt_up in _ENDS_BRANCH and not user:
             raise StError(file, nxt.line, nxt.col, f"empty {_OPENS_BRANCH[up]}: MATIEC needs at least one "
                                                    f"statement before {nxt_up}")
         if tok.kind == "ident" and up in ("FUNCTION", "FUNCTION_BLOCK", "PROGRAM", "END_FUNCTION",
@@ -217,7 +218,7 @@ def check(text, file, user=False):
         if tok.kind == "punct" and tok.text == ";" and k > 0:
             prev = tokens[k - 1]
             prev_text = prev.upper if prev.kind == "ident" else prev.text
-            if prev_text in _EMPTY_BEFORE:
+            if prev_text in _EMPTY_BEFORE and not user:
                 raise StError(file, tok.line, tok.col, "empty statement: MATIEC refuses ';;' and empty branches")
         if tok.kind == "ident" and up in _NEEDS_SEMICOLON and (nxt is None or nxt.text != ";") and not user:
             raise StError(file, tok.line, tok.col + len(tok.text),
@@ -226,7 +227,7 @@ def check(text, file, user=False):
             in_type, type_depth = True, 0
         elif tok.kind == "ident" and up == "END_TYPE":
             in_type = False
-        elif in_type and tok.text == "(" and k > 0 and tokens[k - 1].text == ":":
+        elif in_type and tok.text == "(" and k > 0 and tokens[k - 1].text == ":" and not user:
             depth, j = 0, k
             while j < len(tokens):
                 if tokens[j].text == "(":

@@ -32,8 +32,8 @@ def declared_names(tree):
                 names.append(_name(decl.name))
             spec = getattr(getattr(decl, "init", None), "spec", None)
             names += [_name(value.name) for value in getattr(spec, "values", None) or []]
-        elif getattr(item, "name", None) is not None:
-            names.append(_name(item.name))
+        elif getattr(item, "name", None) is not None and _cls(item) not in ("Method", "Action", "Property"):
+            names.append(_name(item.name))  # a METHOD's name is its FB's, not global
     return names
 
 

@@ -29,7 +29,17 @@ _ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", 
 
 
 class PlcopenReadError(Exception):
-    pass
+    lineno = None  # the line of the XML element refused, where known
+
+
+def _at(read, element):
+    """`read(element)`, a refusal given the element's line in the XML file."""
+    try:
+        return read(element)
+    except PlcopenReadError as exc:
+        if exc.lineno is None:
+            exc.lineno = element.sourceline
+        raise
 
 
 @dataclass(frozen=True)
@@ -38,13 +48,14 @@ class StObject:
     name: str
     declaration: str
     body: Optional[str]
+    members: str = ""  # its METHODs and ACTIONs as ST, after it (user programs)
 
     def st(self):
         """The object as the text of one ST file."""
         if self.body is None:
             return self.declaration
         keyword = POU_KEYWORDS[self.kind]
-        return f"{self.declaration}{self.body.rstrip()}\nEND_{keyword}\n"
+        return f"{self.declaration}{self.body.rstrip()}\nEND_{keyword}\n{self.members}"
 
 
 def read_plcopen(data):
@@ -52,11 +63,19 @@ def read_plcopen(data):
     root = etree.fromstring(data)
     if root.tag != q("project"):
         raise PlcopenReadError(f"root element is {root.tag}, not a TC6 project in {NS}")
-    objects = [_data_type(e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
-    objects += [_pou(e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
-    for data in root.iterfind(f"{q('addData')}/{q('data')}"):
+    objects = [_at(_data_type, e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
+    objects += [_at(_pou, e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
+    # A CODESYS export of an application keeps its objects (PLC_PRG, its global lists) in the addData of the
+    # configuration's resource, the project's own lists in the project's addData: all of them are read.
+    objects += [_at(_pou, e) for e in root.iter(q("pou"))
+                if not (e.getparent().tag == q("pous") and e.getparent().getparent() is not None
+                        and e.getparent().getparent().tag == q("types"))]
+    for data in root.iter(q("data")):
         if data.get("name") == GLOBAL_VARS:
             objects += [_global_list(e) for e in data.iterfind(q("globalVars"))]
+    for holder in root.iterfind(f"{q('instances')}/{q('configurations')}/{q('configuration')}"):
+        lists = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
+        objects += [_global_list(e) for e in lists if e.get("name")]
     return objects
 
 
@@ -146,14 +165,37 @@ def _var_list(element, keyword):
 
 def _pou(element):
     name, kind = element.get("name"), element.get("pouType")
-    if element.find(f"{q('actions')}/{q('action')}") is not None or \
-            element.find(f"{q('transitions')}/{q('transition')}") is not None:
-        raise PlcopenReadError(f"{name}: ACTIONs and TRANSITIONs have no place in the portable subset")
+    if element.find(f"{q('transitions')}/{q('transition')}") is not None:
+        raise PlcopenReadError(f"{name}: TRANSITIONs are not read")
+    members = []
+    for action in element.iterfind(f"{q('actions')}/{q('action')}"):  # a user program's ACTIONs
+        members.append(_at(lambda a: f"ACTION {a.get('name')} :\n{_st_body(a, name)}\nEND_ACTION\n", action))
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
-        if data.get("name") in _POU_EXTENSIONS:
-            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s have no place in the portable "
-                                   "subset: write a FUNCTION_BLOCK or FUNCTION")
-    header = f"{POU_KEYWORDS[kind]} {name}"
+        if data.get("name") == CODESYS + "method":  # CODESYS keeps a POU's METHODs in its addData
+            members += [_at(_method, m) for m in data if isinstance(m.tag, str)]
+        elif data.get("name") in _POU_EXTENSIONS:
+            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
+                                   "yet: write a METHOD")
+    header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
+    return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members))
+
+
+def _method(element):
+    """A METHOD of CODESYS's export (its own interface and ST body) as ST."""
+    name = element.get("name") or element.get("Name")
+    header, blocks = _interface_text(element, f"METHOD {name}", name)
+    return f"{header}\n{''.join(blocks)}{_st_body(element, name).rstrip()}\nEND_METHOD\n"
+
+
+def _st_body(element, name):
+    st = element.find(f"{q('body')}/{q('ST')}")
+    if st is None:
+        raise PlcopenReadError(f"{name}: no ST body")
+    return _xhtml_text(st)
+
+
+def _interface_text(element, header, name):
+    """(the heading with the result type, the variable blocks) of a POU's or METHOD's interface."""
     interface = element.find(q("interface"))
     blocks = []
     for child in interface if interface is not None else []:
@@ -164,10 +206,7 @@ def _pou(element):
             blocks.append(_var_list(child, SECTION_KEYWORDS[tag]))
         elif tag not in ("addData", "documentation"):
             raise PlcopenReadError(f"{name}: interface element <{tag}> is not read")
-    st = element.find(f"{q('body')}/{q('ST')}")
-    if st is None:
-        raise PlcopenReadError(f"{name}: no ST body")
-    return StObject(kind, name, header + "\n" + "".join(blocks), _xhtml_text(st))
+    return header, blocks
 
 
 def _data_type(element):

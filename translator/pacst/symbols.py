@@ -4,12 +4,14 @@ with its C type, functions and variables; every named type. Written by `pacst bu
 import json
 
 from . import types as T
+from .body import program_instance
 
 FORMAT = 1
 # sizeof of pacst_iec.h's elementary types (STRING: a length byte and STR_MAX_LEN bytes; TIME: two longs on
 # the LP64 hosts the runtime targets).
 _C_SIZES = {"BOOL": 1, "SINT": 1, "INT": 2, "DINT": 4, "USINT": 1, "UINT": 2, "UDINT": 4, "BYTE": 1,
-            "WORD": 2, "DWORD": 4, "REAL": 4, "LREAL": 8, "TIME": 16, "STRING": 127}
+            "WORD": 2, "DWORD": 4, "REAL": 4, "LREAL": 8, "TIME": 16, "STRING": 127,
+            "LINT": 8, "ULINT": 8, "LWORD": 8}
 _DIRECTIONS = {"input": "input", "output": "output", "inout": "in_out", "var": "var", "temp": "temp"}
 
 
@@ -25,6 +27,10 @@ def type_json(t):
         return {"kind": "struct", "name": t.name, "c_type": t.cname}
     if t.is_fb:
         return {"kind": "function_block", "name": t.name, "c_type": t.cname}
+    if t.is_pointer:
+        return {"kind": "pointer", "name": t.name, "c_type": t.cname, "target": type_json(t.target)}
+    if t.kind == "interface":
+        return {"kind": "interface", "name": t.name, "c_type": t.cname}
     return {"kind": "elementary", "name": t.name, "c_type": t.cname, "size": _C_SIZES[t.cname]}
 
 
@@ -52,6 +58,8 @@ def _pou(comp, pou):
              "variables": [_variable(comp, v, f"{pou.name}.{v.name}", v.cname) for v in pou.vars]}
     entry["externals"] = [{"name": g.name, "global": f"{g.gvl.name}.{g.name}", "c_name": g.csym}
                           for g, _ in pou.externals.values()]
+    if pou.program:
+        entry["instance"] = program_instance(pou)
     return entry
 
 
@@ -60,7 +68,7 @@ def _type(t):
     if t.is_struct:
         entry["members"] = [{"name": m.name, "c_name": m.cname, "type": type_json(m.type)} for m in t.members]
     if t.is_enum:
-        entry["values"] = [{"name": v, "c_name": t.cvalue(v), "value": i} for i, v in enumerate(t.values)]
+        entry["values"] = [{"name": v, "c_name": t.cvalue(v), "value": n} for v, n in zip(t.values, t.numbers)]
     return entry
 
 
@@ -82,13 +90,13 @@ def symbols(comp, program):
             table["programs"].append(_pou(comp, obj))
         elif kind == "pou" and obj.kind == "fb":
             table["function_blocks"].append(_pou(comp, obj))
-        elif kind == "pou":
+        elif kind == "pou" and obj.owner is None:  # a METHOD or ACTION is its FB's
             table["functions"].append({
                 "name": obj.name, "c_name": obj.cname, "native": obj.native, "file": obj.file,
                 "returns": type_json(obj.ret) if obj.ret is not None else None,
                 "pins": [_variable(comp, v, f"{obj.name}.{v.name}", v.cname) for v in obj.vars
                          if v.section in ("input", "output", "inout")]})
-    for fb in T.STANDARD_FBS.values():
+    for fb in list(T.STANDARD_FBS.values()) + (list(T.USER_FBS.values()) if comp.user else []):
         table["function_blocks"].append({
             "name": fb.name, "c_type": fb.cname, "init": f"{fb.cname}_init__", "body": f"{fb.cname}_body__",
             "standard": True, "variables": [_variable(comp, v, f"{fb.name}.{v.name}", v.cname) for v in fb.vars]})

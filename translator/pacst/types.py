@@ -16,6 +16,7 @@ class Type:
     # Classification used by the type rules.
     is_bool = is_int = is_signed = is_bit = is_real = is_time = is_string = False
     is_enum = is_array = is_struct = is_fb = False
+    is_pointer = False  # user mode: POINTER TO and REFERENCE TO
     bits = 0
 
     @property
@@ -66,6 +67,9 @@ ELEMENTARY = {
         Elementary("STRING", "string", 0),
     ]
 }
+# The 64-bit types of user programs (pacst --user): TwinCAT and CODESYS have them, MATIEC's C does too.
+USER_ELEMENTARY = {t.name: t for t in [Elementary("LINT", "int", 64, True), Elementary("ULINT", "int", 64),
+                                       Elementary("LWORD", "bit", 64)]}
 BOOL = ELEMENTARY["BOOL"]
 INT = ELEMENTARY["INT"]
 DINT = ELEMENTARY["DINT"]
@@ -121,9 +125,20 @@ class EnumType(Type):
     kind = "enum"
     is_enum = True
 
-    def __init__(self, name, values):
+    def __init__(self, name, values, numbers=None, base=None):
         super().__init__(name)
         self.values = values  # ST spellings, in order
+        self.numbers = numbers if numbers is not None else list(range(len(values)))  # user mode: A := 10
+        self.base = base  # user mode: the base type of `(A, B) INT`, or None
+        self.default = values[0] if values else None
+
+    @property
+    def numbered(self):
+        """Whether a value has a number of its own (user mode): then the C enum spells them out."""
+        return self.numbers != list(range(len(self.values)))
+
+    def number(self, value):
+        return self.numbers[[v.upper() for v in self.values].index(value.upper())]
 
     def cvalue(self, value):
         return f"{self.cname}__{value.upper()}"
@@ -171,6 +186,35 @@ def find_var(variables, name):
     return next((v for v in variables if v.cname == up), None)
 
 
+class PointerType(Type):
+    """User mode: POINTER TO T (`reference` False) or REFERENCE TO T, a C pointer `T *`; a REFERENCE is read
+    and written through without `^`."""
+
+    kind = "pointer"
+    is_pointer = True
+
+    def __init__(self, target, reference=False):
+        super().__init__(f"{'REFERENCE' if reference else 'POINTER'} TO {target.name}")
+        self.target = target
+        self.reference = reference
+        self.cname = f"__{'REF' if reference else 'PTR'}_{target.cname}"
+
+
+class InterfaceType(Type):
+    """A user INTERFACE: the names of its METHODs (user mode; no variable has this type)."""
+
+    kind = "interface"
+
+    def __init__(self, name):
+        super().__init__(name)
+        self.methods = []  # the METHODs' names, in order
+        self.protos = {}  # upper name -> the METHOD's prototype (a Pou without body)
+
+    def vtable(self, fb_cname):
+        """The C name of the table of `fb_cname`'s METHODs for this interface."""
+        return f"{fb_cname}__{self.cname}__VT"
+
+
 class FbType(Type):
     """A function block type: a user FUNCTION_BLOCK or one of the standard FBs."""
 
@@ -205,6 +249,31 @@ def _standard_fbs():
 
 
 STANDARD_FBS = _standard_fbs()
+
+
+def _user_fbs():
+    """The counters and bistables of user programs, with the pin names of CODESYS's Standard and TwinCAT's
+    Tc2_Standard (PV and CV are WORDs there); `M...` members keep the last CU / CD for the edges."""
+    word = ELEMENTARY["WORD"]
+
+    def fb(name, pins):
+        t = FbType(name, standard=True)
+        t.vars = [Var(n, section, typ, None, None) for n, section, typ in pins]
+        return t
+    return {
+        "CTU": fb("CTU", [("CU", "input", BOOL), ("RESET", "input", BOOL), ("PV", "input", word),
+                          ("Q", "output", BOOL), ("CV", "output", word), ("MU", "var", BOOL)]),
+        "CTD": fb("CTD", [("CD", "input", BOOL), ("LOAD", "input", BOOL), ("PV", "input", word),
+                          ("Q", "output", BOOL), ("CV", "output", word), ("MD", "var", BOOL)]),
+        "CTUD": fb("CTUD", [("CU", "input", BOOL), ("CD", "input", BOOL), ("RESET", "input", BOOL),
+                            ("LOAD", "input", BOOL), ("PV", "input", word), ("QU", "output", BOOL),
+                            ("QD", "output", BOOL), ("CV", "output", word), ("MU", "var", BOOL), ("MD", "var", BOOL)]),
+        "SR": fb("SR", [("SET1", "input", BOOL), ("RESET", "input", BOOL), ("Q1", "output", BOOL)]),
+        "RS": fb("RS", [("SET", "input", BOOL), ("RESET1", "input", BOOL), ("Q1", "output", BOOL)]),
+    }
+
+
+USER_FBS = _user_fbs()
 
 # Standard FBs whose pin names differ between MATIEC and CODESYS/TwinCAT: refused with that reason.
 NONPORTABLE_FBS = {"SR", "RS", "CTU", "CTD", "CTUD"}

@@ -8,6 +8,7 @@ in the C file of the list's ST file and declared in POUS.h; each list has an ini
 it before a scan and out of it after (symbols.json gives its address).
 """
 import os
+import re
 
 from . import types as T
 from .common import _cls, _name, pos
@@ -16,6 +17,26 @@ from .names import reserved_reason
 
 # The largest STRING pacst and MATIEC hold (STR_MAX_LEN of pacst_iec.h and of MATIEC's headers).
 STRING_CAPACITY = 126
+# The namespaces of the standard library in TwinCAT (Tc2_Standard) and CODESYS (Standard): the standard FBs
+# and functions may be written Tc2_Standard.TON, Standard.LEN in user programs.
+STANDARD_NAMESPACES = {"TC2_STANDARD", "STANDARD"}
+# Libraries of the vendors that user programs name and pac-test does not provide: named in the refusal.
+_VENDOR_LIBRARY = re.compile(r"(TC[23]_\w+|SM3_\w+|SYS\w+|CAA_?\w+|UTIL|IOSTANDARD|CMPERRORS\w*)$", re.I)
+
+
+def unknown_namespace(name):
+    """The reason a program cannot name `name` as a library namespace."""
+    if _VENDOR_LIBRARY.match(name):
+        return (f"pac-test does not provide the vendor library {name} (it provides PA_CONTROL, and the standard "
+                "FBs and functions as Tc2_Standard or Standard); leave its calls out of the program tested")
+    return f"'{name}' is no library namespace (PA_CONTROL, Tc2_Standard, Standard)"
+
+
+def namespace_like(name):
+    """Whether an undeclared `name` before a dot is a vendor library's namespace."""
+    return _VENDOR_LIBRARY.match(name) is not None
+
+
 _SIZE_BITS = {"X": 1, "B": 8, "W": 16, "D": 32, "L": 64}
 
 
@@ -102,15 +123,32 @@ def string_length(comp, spec):
 def inline_array(comp, spec, file):
     """The type of an inline `ARRAY [lo..hi] OF T`: one per bounds and element type, named as MATIEC
     names it (`__ARRAY_OF_BYTE_8`; arrays of equal length share the C type)."""
-    if len(spec.subranges) != 1 or _cls(spec.subranges[0]) != "PartialSubrange":
-        raise comp.err(spec, "an inline ARRAY has one dimension with literal bounds")
+    if any(_cls(sub) != "PartialSubrange" for sub in spec.subranges):
+        raise comp.err(spec, "ARRAY [*] is not translated: give the bounds")
+    elem = comp._spec_type(spec.type, allow_fb=True)
+    if len(spec.subranges) > 1:  # ARRAY [0..2, 0..3] OF T: an array of rows, indexed [i, j] or [i][j]
+        comp.dialect(spec, "a multi-dimensional array")
+        for sub in reversed(spec.subranges[1:]):
+            elem = _dimension(comp, sub, elem, file)
     sub = spec.subranges[0]
     low, high = comp._literal_int(sub.start), comp._literal_int(sub.stop)
     if low > high:
         raise comp.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
-    elem = comp._spec_type(spec.type, allow_fb=False)
-    if elem.is_array:
+    if elem.is_fb:
+        comp.dialect(spec.type, f"an array of function block instances ({elem.name})")
+    if elem.is_array and len(spec.subranges) == 1:
         raise comp.err(spec.type, "array of arrays: use an array of a STRUCT that holds the row")
+    return _array_type(comp, low, high, elem, file)
+
+
+def _dimension(comp, sub, elem, file):
+    low, high = comp._literal_int(sub.start), comp._literal_int(sub.stop)
+    if low > high:
+        raise comp.err(sub, f"array bounds {low}..{high}: the lower bound exceeds the upper")
+    return _array_type(comp, low, high, elem, file)
+
+
+def _array_type(comp, low, high, elem, file):
     key = (low, high, elem.cname)
     t = comp.inline_arrays.get(key)
     if t is None:
@@ -128,9 +166,9 @@ def var_type(comp, init, allow_fb):
     if cls == "ArrayTypeInitialization":
         if init.indirection is not None:
             raise comp.err(init, "pointers and references are outside pacst's user programs")
-        if init.value is not None:
-            raise comp.err(init.value, "array initial values are outside pacst's user programs: initialise in code")
         return inline_array(comp, init.spec, comp.file), None
+    if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2)
+        return comp._resolve_type(init.name, allow_fb=False), None
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
@@ -140,6 +178,13 @@ def var_type(comp, init, allow_fb):
         if cls == "TypeInitialization":
             return comp._spec_type(spec, allow_fb=allow_fb), None
     raise comp.err(init, f"{cls} is outside pacst's user programs")
+
+
+def initial_value(init):
+    """The initial value node of a declaration's initialisation, or None."""
+    if _cls(init) == "InitializedStructure":
+        return init.init
+    return getattr(init, "value", None)
 
 
 def check_string_init(comp, var):
@@ -181,14 +226,20 @@ def global_list(comp, block, src):
 def _global_items(comp, gvl, block, constant):
     for item in block.items:
         spec = item.spec
-        vtype, strlen = var_type(comp, item.init, allow_fb=False)
-        value = getattr(item.init, "value", None)
+        vtype, strlen = var_type(comp, item.init, allow_fb=True)
+        value = initial_value(item.init)
+        if vtype.is_fb or vtype.is_array and vtype.elem.is_fb:
+            comp.dialect(item, "a function block instance in a global list")
+            if constant or spec.location is not None:
+                raise comp.err(item, "a function block instance in a global list is neither CONSTANT nor located")
         location = parse_location(comp, spec.location, vtype) if spec.location is not None else None
         if constant and value is None:
             raise comp.err(item, "a global constant needs a value")
         if constant and location is not None:
             raise comp.err(spec.location, "a located variable cannot be CONSTANT")
-        if value is not None and not (vtype.is_elementary or vtype.is_enum):
+        if value is not None and (vtype.is_array or vtype.is_struct):
+            comp.dialect(value, "an initial value of an array or a struct")
+        elif value is not None and not (vtype.is_elementary or vtype.is_enum):
             raise comp.err(value, "initial values are only for elementary and enumeration variables")
         for token in spec.variables:
             vname = _name(token)

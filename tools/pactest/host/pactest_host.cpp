@@ -56,6 +56,7 @@ struct Options {
     std::string test;
     std::string result;
     std::string vcd;
+    bool vcdAlways = false;  // --vcd-when always: the VCD of a passing test too (to choose fault times)
     int timeLimitMs = 10000;
 };
 
@@ -69,12 +70,14 @@ Options ParseOptions(int argc, char** argv) {
         else if (arg == "--test") options.test = value;
         else if (arg == "--result") options.result = value;
         else if (arg == "--vcd") options.vcd = value;
+        else if (arg == "--vcd-when" && (value == "failed" || value == "always")) options.vcdAlways = value == "always";
         else if (arg == "--time-limit-ms") options.timeLimitMs = std::stoi(value);
         else throw std::invalid_argument("unknown option " + arg);
     }
     if (options.scenario.empty() || options.test.empty() || options.result.empty()) {
         throw std::invalid_argument(
-            "usage: host --scenario FILE --test NAME --result FILE [--vcd FILE] [--time-limit-ms N]");
+            "usage: host --scenario FILE --test NAME --result FILE [--vcd FILE [--vcd-when failed|always]] "
+            "[--time-limit-ms N]");
     }
     return options;
 }
@@ -230,7 +233,7 @@ int Run(const Options& options, const Project& project) {
     running = nullptr;
     WriteResult(options.result, test->name, record, timedOut, plc.Task().ScanCount(), plc.Now());
     const bool passed = record.finished && record.failures.empty();
-    if (tracing && !passed) {
+    if (tracing && (!passed || options.vcdAlways)) {
         std::ofstream vcd(options.vcd);
         pac::WriteVcd(recorder.Recording(), vcd, {"pactest", "pac-test: " + test->name});
     }

@@ -59,7 +59,9 @@ class HostBuild:
         ST files written to OUT/plcopen."""
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
         natives = [a for f in project.native_sources() for a in ("--native", f)]
-        return ["--user", "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
+        # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power
+        namespace = f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"
+        return ["--user", "--namespace", namespace, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
 
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""

@@ -38,6 +38,7 @@ class Result:
         self.name, self.expected_to_fail = name, expected_to_fail
         self.outcome, self.lines, self.vcd, self.asserts, self.seconds = "error", [], None, 0, 0.0
         self.host_exit, self.host_error = None, ""
+        self.end_ms = None  # the simulated time the test ended at
 
 
 def _where(path):
@@ -61,7 +62,7 @@ def _caller_location(failure):
     return (path, int(line)) if line.isdigit() and path and path != "??" else None
 
 
-def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
+def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
     name = fb["name"]
     result = Result(name, name.upper() in wiring.expected_to_fail)
     scenario = os.path.join(out, "scenarios", name + ".json")
@@ -75,7 +76,8 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
             os.remove(stale)
     start = time.monotonic()
     run = subprocess.run([host, "--scenario", scenario, "--test", name, "--result", result_file, "--vcd", vcd,
-                          "--time-limit-ms", str(time_limit_ms)], capture_output=True, text=True)
+                          "--vcd-when", "always" if vcd_all else "failed", "--time-limit-ms", str(time_limit_ms)],
+                         capture_output=True, text=True)
     result.seconds = time.monotonic() - start
     result.host_exit, result.host_error = run.returncode, wiring_path(run.stderr.strip(), step_paths)
     if run.returncode not in (0, 1) or not os.path.exists(result_file):
@@ -84,6 +86,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
     with open(result_file, encoding="utf-8") as f:
         data = json.load(f)
     result.asserts = data["asserts"]
+    result.end_ms = data["time_ms"]
     seen = {}
     for failure in data["failures"]:
         caller = _caller_location(failure)
@@ -104,7 +107,7 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms):
                             f"t={data['time_ms']:g} ms: the time limit of {time_limit_ms} ms ran out before "
                             "TEST_FINISHED()")
     failed = bool(result.lines)
-    if failed and os.path.exists(vcd):
+    if (failed or vcd_all) and os.path.exists(vcd):
         result.vcd = _where(vcd)
     if result.expected_to_fail:
         result.outcome = "failed as expected" if failed else "passed unexpectedly"
@@ -128,6 +131,8 @@ def main(argv=None):
     parser.add_argument("--filter", default="", help="run only the tests whose name contains this text")
     parser.add_argument("--no-coverage", action="store_true", help="no instrumentation, no coverage table")
     parser.add_argument("--list", action="store_true", help="print the tests of this shard and stop")
+    parser.add_argument("--vcd-all", action="store_true",
+                        help="write the VCD of every test, passing ones too (OUT/vcd/NAME.vcd)")
     parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache)")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
     args = parser.parse_args(argv)
@@ -160,13 +165,14 @@ def main(argv=None):
         tests = sorted(tests, key=lambda t: t["name"].upper())
         selected = [t for t in tests if shard_of(t["name"], count) == index - 1 and args.filter in t["name"]]
         if args.list:
+            hostgen.generate(symbols, wiring, tests)  # the bus images' variables and addresses, as a run checks them
             print("\n".join(t["name"] for t in selected))
             return EXIT_PASSED
         host = host_build.build(symbols, tests)
     except WiringError as e:
         print(f"pac-test: invalid wiring file {args.wiring}: {e}", file=sys.stderr)
         return EXIT_REFUSED
-    except build.BuildError as e:
+    except (build.BuildError, hostgen.ProgramError) as e:
         print(f"pac-test: {e}", file=sys.stderr)
         return EXIT_REFUSED
     built = time.monotonic()
@@ -174,12 +180,18 @@ def main(argv=None):
         coverage.reset(host_build.obj)
     vcd_dir = os.path.join(out, "vcd")
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms), selected))
+        results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms,
+                                                    args.vcd_all), selected))
     ran = time.monotonic()
     refused = [r for r in results if r.host_exit == 2]
     if refused:  # the scenario loader refused the wiring file's timing, controller or faults
         print(f"pac-test: invalid wiring file {args.wiring}: {refused[0].host_error}", file=sys.stderr)
         return EXIT_REFUSED
+    for r in results:
+        late = [at for at, _ in wiring.faults.get(r.name.upper(), []) if r.end_ms is not None and at > r.end_ms]
+        if late:  # a fault the test never saw: the test ended before it (its time in the wiring file is off)
+            print(f"pac-test: warning: {args.wiring}: $.tests.faults.{r.name}: the fault at {min(late)} ms comes after "
+                  f"the test ended at {r.end_ms:g} ms; it never happened", file=sys.stderr)
     for r in results:
         mark = {"passed": "ok", "failed": "FAILED", "error": "ERROR", "failed as expected": "failed (expected)",
                 "passed unexpectedly": "FAILED (expected to fail)"}[r.outcome]
@@ -191,7 +203,8 @@ def main(argv=None):
     junit_path = args.junit or os.path.join(out, "junit.xml")
     junit.write(junit_path, wiring.name, results, ran - built)
     if not args.no_coverage:
-        coverage.report(host_build.obj, wiring.sources, _where(os.path.join(out, "coverage")))
+        coverage.report(host_build.obj, wiring.sources, _where(os.path.join(out, "coverage")),
+                        extracted=os.path.join(out, "plcopen"))
     bad = [r for r in results if r.outcome in ("failed", "error", "passed unexpectedly")]
     expected = sum(1 for r in results if r.outcome == "failed as expected")
     shard = f", shard {index}/{count}" if count > 1 else ""

@@ -33,9 +33,10 @@ def source_folders(sources):
     return [f for f in folders if not any(f.startswith(os.path.join(o, "")) for o in folders if o != f)]
 
 
-def report(objects, sources, out):
-    """Prints the table of the ST files in the folders of `sources`; returns False when there is none (gcovr
-    missing, or no line of those files measured)."""
+def report(objects, sources, out, extracted=None):
+    """Prints the table of the ST files in the folders of `sources` and of those extracted from a PLCopen XML
+    project into `extracted` (under OUT); returns False when there is none (gcovr missing, or no line of those
+    files measured)."""
     gcovr = gcovr_command()
     if gcovr is None:
         print("pac-test: no coverage table: gcovr is not installed (pip install gcovr)")
@@ -47,9 +48,16 @@ def report(objects, sources, out):
     # The host's build (OUT/st-c, the C of the ST) lies under the project's folder when OUT does (the
     # default pac-test-out, run in the project): its files are no ST of the project.
     built = os.path.join(os.path.abspath(os.path.dirname(objects.rstrip(os.sep))), "")
+    keep = ""
     filters = [arg for folder in folders for arg in ("--filter", re.escape(os.path.join(folder, "")))]
+    if extracted is not None and os.path.isdir(extracted):  # the ST of a PLCopen XML project lies under OUT
+        extracted = os.path.join(os.path.abspath(extracted), "")
+        filters += ["--filter", re.escape(extracted)]
+        folders.append(extracted.rstrip(os.sep))
+        if extracted.startswith(built):
+            keep = f"(?!{re.escape(extracted[len(built):])})"
     run = subprocess.run([gcovr, "--root", os.path.commonpath(folders), *filters,
-                          "--exclude", re.escape(built) + ".*", "--json", detail,
+                          "--exclude", re.escape(built) + keep + ".*", "--json", detail,
                           "--html-details", os.path.join(out, "index.html"),
                           "--html-title", "pac-test: coverage of the machine program", objects],
                          check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)

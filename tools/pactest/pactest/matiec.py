@@ -144,6 +144,10 @@ def global_names(symbols):
             for g in symbols.table["globals"]}
 
 
+_BYTES = {"BOOL": 1, "BYTE": 1, "SINT": 1, "USINT": 1, "WORD": 2, "INT": 2, "UINT": 2, "DWORD": 4, "DINT": 4,
+          "UDINT": 4, "REAL": 4}
+
+
 def _located(c_dir):
     with open(os.path.join(c_dir, "LOCATED_VARIABLES.h"), encoding="utf-8") as f:
         return [m.groups() for m in _LOCATED.finditer(f.read())]
@@ -188,11 +192,15 @@ def generate(symbols, wiring, tests, c_dir):
                             f"{names[g['path'].upper()]};")
             pair = (ours, bus) if side == "in" else (bus, ours)
             lines.append(f"  memcpy({pair[0]}, {pair[1]}, {m.size});")
+    bus_bytes = hostgen.bus_input_bytes(wiring)
     for c_type, name, area, size, numbers in located:
         numbers = [int(n) for n in numbers.split(",")]
         image, lines = ("inImage", copy_in) if area == "I" else ("outImage", copy_out) if area == "Q" else (None, None)
         if image is None:
             continue
+        nbytes = 1 if size == "X" else _BYTES.get(c_type)  # an array: copied as before
+        if area == "I" and nbytes and not any(b in bus_bytes for b in range(numbers[0], numbers[0] + nbytes)):
+            continue  # an input the bus does not write is the tests' to set, as on pacst's C
         byte, storage = numbers[0], f"storage{name}"
         if size == "X":
             bit = numbers[1] if len(numbers) > 1 else 0

@@ -5,6 +5,8 @@ import os
 import re
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+# The library's namespace in CODESYS and TwinCAT (docs/import.md): a program writes PA_CONTROL.MC_Power.
+NAMESPACE = "PA_CONTROL"
 VOCABULARY = os.path.join(ROOT, "tools", "pactest", "st")
 HOST = os.path.join(ROOT, "tools", "pactest", "host")
 

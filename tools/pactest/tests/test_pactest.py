@@ -383,9 +383,31 @@ class WiringRefusalTest(unittest.TestCase):
         self.assertIn("$.bus.cmd.in: a located input image starts at %IBn",
                       self.refused(lambda d: d.update(bus={"cmd": {"in": "%QB0", "out": "%QB0"}})))
 
+    def test_unknown_bus_variable(self):
+        # --list exits as the run would
+        self.assertIn("$.bus.cmd.in: no global variable GVL_Plant.CmdInn",
+                      self.refused(lambda d: d["bus"]["cmd"].update({"in": "GVL_Plant.CmdInn"})))
+
     def test_axis_modules_need_the_ctrl_module(self):
         self.assertIn("$.bus.axes: axis modules need the CTRL module",
                       self.refused(lambda d: d.update(bus={"axes": [{"in": "%IB16", "out": "%QB16"}]})))
+
+
+class ProgramRefusalTest(unittest.TestCase):
+    """What pac-test cannot run in the program itself is named at its file and line, not as the wiring file's."""
+
+    def test_a_word_address(self):
+        import shutil
+        folder = os.path.join(OUT, "word-address")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        path = os.path.join(folder, "GVL_Word.st")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n")
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn(f"{path}:2: GVL_Word.Speed located at %IW64: pac-test copies byte", run.stderr)
+        self.assertNotIn("invalid wiring file", run.stderr)
 
 
 def outcomes(stdout):
@@ -419,6 +441,49 @@ class MatiecRefusalTest(unittest.TestCase):
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         self.assertIn("iec2c failed", run.stderr)
         self.assertRegex(run.stderr, r"program\.st:\d+: error: invalid located variable declaration")
+
+
+class DialectTest(unittest.TestCase):
+    """tools/pactest/tests/dialect: a program in the TwinCAT 3 / CODESYS dialect (docs/user_dialect.md), with the
+    library under its namespace (PA_CONTROL.MC_Power), a located input that a test presses, and tests that read
+    the PROGRAM's variables (MAIN.Presses)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(HERE, "dialect")
+        cls.out = os.path.join(OUT, "dialect")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out, "--no-coverage", "--vcd-all")
+
+    def test_every_test_passes(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        tests = sorted(os.path.splitext(n)[0] for n in os.listdir(self.folder) if n.startswith("FB_Test"))
+        self.assertIn(f"{len(tests)} tests: {len(tests)} passed, 0 failed", self.result.stdout)
+        for name in tests:
+            self.assertRegex(self.result.stdout, rf"\bok  {name}\b")
+
+    def test_a_fault_after_the_end_of_its_test_is_warned_about(self):
+        self.assertRegex(self.result.stderr, r"warning: .*wiring\.json: \$\.tests\.faults\.FB_TestStartButton: the fault at "
+                                             r"150 ms comes after the test ended at \d+ ms; it never happened")
+
+    def test_vcd_all_writes_the_vcd_of_passing_tests(self):
+        vcd = os.path.join(self.out, "vcd", "FB_TestStartButton.vcd")
+        self.assertTrue(os.path.exists(vcd), self.result.stdout)
+        with open(vcd, encoding="utf-8") as f:
+            self.assertRegex(f.read(), r"\$scope module GVL_Io \$end\n\$var wire 1 \S+ StartButton \$end")
+
+
+@unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
+class MatiecDialectTest(unittest.TestCase):
+    """On a MATIEC build, the dialect project is refused by pacst before iec2c, each construct at its line."""
+
+    def test_each_dialect_construct_is_refused_at_its_line(self):
+        folder = os.path.join(HERE, "dialect")
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(OUT, "dialect-matiec"))
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        main = os.path.join(folder, "MAIN.st")
+        self.assertIn(f"{main}:{line_of(main, 'PA_CONTROL.MC_Power')}:11: error: the namespace in "
+                      "'PA_CONTROL.MC_Power': TwinCAT / CODESYS dialect that MATIEC does not compile", run.stderr)
+        self.assertNotIn("iec2c failed", run.stderr)
 
 
 class WiringWarningTest(unittest.TestCase):
@@ -469,9 +534,9 @@ class PlcopenRoundTripTest(unittest.TestCase):
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
     scans (at the lines of the ST files pac-test extracts from the XML)."""
 
-    def round_trip(self, name, folder, sources, expected):
+    def round_trip(self, name, folder, sources, expected, coverage=False):
         """Exports `sources` ({file name: ST text}), runs the wiring file of `folder` on the XML and on its
-        own sources, and compares."""
+        own sources, and compares; with `coverage`, the XML's run tables the coverage of the ST it extracted."""
         out = os.path.join(OUT, "roundtrip", name)
         st = os.path.join(out, "st")
         os.makedirs(st, exist_ok=True)
@@ -496,8 +561,12 @@ class PlcopenRoundTripTest(unittest.TestCase):
         with open(os.path.join(out, "wiring.json"), "w", encoding="utf-8") as f:
             json.dump(wiring, f)
         from_source = pac_test(os.path.join(folder, "wiring.json"), os.path.join(out, "source"), "--no-coverage")
-        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"), "--no-coverage")
+        from_xml = pac_test(os.path.join(out, "wiring.json"), os.path.join(out, "xml"),
+                            *([] if coverage else ["--no-coverage"]))
         self.assertEqual(from_xml.returncode, from_source.returncode, from_xml.stdout + from_xml.stderr)
+        if coverage:  # the ST extracted from the XML lies under OUT, which coverage leaves out otherwise
+            self.assertNotIn("total 0/0", from_xml.stdout)
+            self.assertRegex(from_xml.stdout, r"(?m)^PRG_Count +\d+/\d+")
         found = outcomes(from_source.stdout)
         self.assertEqual(sorted(found), expected[0], from_source.stdout)
         self.assertEqual(sum(len(f) for _, _, f in found.values()), expected[1], from_source.stdout)
@@ -519,7 +588,7 @@ class PlcopenRoundTripTest(unittest.TestCase):
         for file in sorted(n for n in os.listdir(folder) if n.endswith(".st")):
             with open(os.path.join(folder, file), encoding="utf-8") as f:
                 sources[file] = f.read()
-        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7))
+        self.round_trip("PacTestFixture", folder, sources, (FIXTURE_TESTS, 7), coverage=True)
 
 
 class DocsCiJobsTest(unittest.TestCase):

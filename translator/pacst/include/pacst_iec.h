@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -231,6 +232,13 @@ __PACST_DIVMOD(UDINT, uint64_t)
 __PACST_DIVMOD(BYTE, uint64_t)
 __PACST_DIVMOD(WORD, uint64_t)
 __PACST_DIVMOD(DWORD, uint64_t)
+__PACST_DIVMOD(ULINT, uint64_t)
+__PACST_DIVMOD(LWORD, uint64_t)
+/* LINT: the most negative value / -1 wraps (a 64-bit C division would trap). */
+static inline LINT __div_LINT(LINT a, LINT b) {
+    return b == 0 ? (LINT)0 : b == -1 ? (LINT)(0u - (uint64_t)a) : a / b;
+}
+static inline LINT __mod_LINT(LINT a, LINT b) { return (b == 0 || b == -1) ? (LINT)0 : a % b; }
 
 /* Shifts and rotations of bit strings; a count outside 0..width-1 shifts every bit out. */
 #define __PACST_SHIFT(T, BITS)                                                                          \
@@ -244,6 +252,7 @@ __PACST_DIVMOD(DWORD, uint64_t)
 __PACST_SHIFT(BYTE, 8)
 __PACST_SHIFT(WORD, 16)
 __PACST_SHIFT(DWORD, 32)
+__PACST_SHIFT(LWORD, 64)
 
 /* ABS for signed types (unsigned ones are their own ABS); MIN, MAX and LIMIT for every numeric and
  * bit-string type. */
@@ -251,6 +260,7 @@ __PACST_SHIFT(DWORD, 32)
 __PACST_ABS(SINT)
 __PACST_ABS(INT)
 __PACST_ABS(DINT)
+__PACST_ABS(LINT)
 __PACST_ABS(REAL)
 __PACST_ABS(LREAL)
 #define __PACST_NUMERIC(T)                                                                   \
@@ -266,6 +276,9 @@ __PACST_NUMERIC(UDINT)
 __PACST_NUMERIC(BYTE)
 __PACST_NUMERIC(WORD)
 __PACST_NUMERIC(DWORD)
+__PACST_NUMERIC(LINT)
+__PACST_NUMERIC(ULINT)
+__PACST_NUMERIC(LWORD)
 __PACST_NUMERIC(REAL)
 __PACST_NUMERIC(LREAL)
 
@@ -396,6 +409,138 @@ static inline void TP_body__(TP *d) {
         __PACST_SET(d->STATE, 0);
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
+}
+
+/* User programs (pacst --user): TIME as milliseconds (TIME_TO_DINT, DINT_TO_TIME, as CODESYS and
+ * TwinCAT count it), TIME * and / a number, TRUNC, and the counters and bistables with the pin names of
+ * CODESYS's Standard and TwinCAT's Tc2_Standard. */
+/* A pointer or reference read or written through (user mode): a null one stops the run at its ST line. */
+static inline void *__pacst_ptr(void *p, const char *where) {
+    if (p == NULL) __pacst_fault(where, "a null POINTER or an unset REFERENCE read or written through", 0);
+    return p;
+}
+static inline DINT __pacst_memcmp(const void *a, const void *b, size_t n) {
+    int c = memcmp(a, b, n);
+    return c < 0 ? -1 : c > 0;
+}
+static inline int64_t __time_to_ms(TIME t) {
+    return (int64_t)t.tv_sec * 1000 + (int64_t)(t.tv_nsec / 1000000);
+}
+static inline TIME __time_from_ms(int64_t ms) {
+    return __time_make((long)(ms / 1000), (long)((ms % 1000) * 1000000));
+}
+static inline TIME __time_scale(TIME t, double factor) {
+    double ns = ((double)t.tv_sec * 1e9 + (double)t.tv_nsec) * factor;
+    int64_t n = (int64_t)ns;
+    return __time_make((long)(n / 1000000000), (long)(n % 1000000000));
+}
+static inline int64_t __trunc_i64(double r) {
+    if (r != r) return 0;
+    if (r >= 9223372036854775807.0) return INT64_MAX;
+    if (r <= -9223372036854775808.0) return INT64_MIN;
+    return (int64_t)r;
+}
+
+typedef struct {
+    __IEC_BOOL_t EN, ENO, CU, RESET;
+    __IEC_WORD_t PV;
+    __IEC_BOOL_t Q;
+    __IEC_WORD_t CV;
+    __IEC_BOOL_t MU;
+} CTU;
+static inline void CTU_init__(CTU *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE;
+    d->CU.value = FALSE; d->RESET.value = FALSE; d->PV.value = 0; d->Q.value = FALSE; d->CV.value = 0;
+    d->MU.value = FALSE;
+}
+static inline void CTU_body__(CTU *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    if (d->RESET.value) {
+        __PACST_SET(d->CV, 0);
+    } else if (d->CU.value && !d->MU.value && d->CV.value < 0xFFFF) {
+        __PACST_SET(d->CV, (WORD)(d->CV.value + 1));
+    }
+    __PACST_SET(d->Q, d->CV.value >= d->PV.value);
+    __PACST_SET(d->MU, d->CU.value);
+}
+typedef struct {
+    __IEC_BOOL_t EN, ENO, CD, LOAD;
+    __IEC_WORD_t PV;
+    __IEC_BOOL_t Q;
+    __IEC_WORD_t CV;
+    __IEC_BOOL_t MD;
+} CTD;
+static inline void CTD_init__(CTD *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE;
+    d->CD.value = FALSE; d->LOAD.value = FALSE; d->PV.value = 0; d->Q.value = FALSE; d->CV.value = 0;
+    d->MD.value = FALSE;
+}
+static inline void CTD_body__(CTD *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    if (d->LOAD.value) {
+        __PACST_SET(d->CV, d->PV.value);
+    } else if (d->CD.value && !d->MD.value && d->CV.value > 0) {
+        __PACST_SET(d->CV, (WORD)(d->CV.value - 1));
+    }
+    __PACST_SET(d->Q, d->CV.value == 0);
+    __PACST_SET(d->MD, d->CD.value);
+}
+typedef struct {
+    __IEC_BOOL_t EN, ENO, CU, CD, RESET, LOAD;
+    __IEC_WORD_t PV;
+    __IEC_BOOL_t QU, QD;
+    __IEC_WORD_t CV;
+    __IEC_BOOL_t MU, MD;
+} CTUD;
+static inline void CTUD_init__(CTUD *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE;
+    d->CU.value = FALSE; d->CD.value = FALSE; d->RESET.value = FALSE; d->LOAD.value = FALSE; d->PV.value = 0;
+    d->QU.value = FALSE; d->QD.value = FALSE; d->CV.value = 0; d->MU.value = FALSE; d->MD.value = FALSE;
+}
+static inline void CTUD_body__(CTUD *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    if (d->RESET.value) {
+        __PACST_SET(d->CV, 0);
+    } else if (d->LOAD.value) {
+        __PACST_SET(d->CV, d->PV.value);
+    } else {
+        if (d->CU.value && !d->MU.value && d->CV.value < 0xFFFF) __PACST_SET(d->CV, (WORD)(d->CV.value + 1));
+        if (d->CD.value && !d->MD.value && d->CV.value > 0) __PACST_SET(d->CV, (WORD)(d->CV.value - 1));
+    }
+    __PACST_SET(d->QU, d->CV.value >= d->PV.value);
+    __PACST_SET(d->QD, d->CV.value == 0);
+    __PACST_SET(d->MU, d->CU.value);
+    __PACST_SET(d->MD, d->CD.value);
+}
+typedef struct {
+    __IEC_BOOL_t EN, ENO, SET1, RESET, Q1;
+} SR;
+static inline void SR_init__(SR *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE; d->SET1.value = FALSE; d->RESET.value = FALSE; d->Q1.value = FALSE;
+}
+static inline void SR_body__(SR *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->Q1, d->SET1.value || (!d->RESET.value && d->Q1.value));
+}
+typedef struct {
+    __IEC_BOOL_t EN, ENO, SET, RESET1, Q1;
+} RS;
+static inline void RS_init__(RS *d, BOOL retain) {
+    (void)retain;
+    d->EN.value = TRUE; d->ENO.value = TRUE; d->SET.value = FALSE; d->RESET1.value = FALSE; d->Q1.value = FALSE;
+}
+static inline void RS_body__(RS *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    __PACST_SET(d->Q1, !d->RESET1.value && (d->SET.value || d->Q1.value));
 }
 
 #ifdef __cplusplus
