@@ -4,8 +4,10 @@
  * keeps floating point out of the proof), ModeChange, and the programmer's Enable, Execute, Command (the jog
  * buttons only with -DCBMC__JOGS), Abort, ResetError, DisableDrive, DisableLimitSwitches, ChangeDynamics, Velocity and Acceleration
  * (a few values each, in and out of range); per run Position (two values), IntegerMode,
- * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Properties "P<n>"/"A<n>", reachability checks
- * "reach: ..." (which must FAIL), as in cmd_harness.c. */
+ * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Free too whether the FB is called in a scan (a CASE
+ * step or an IF branch leaves it out: its pins and images then unchanged, and what it knows of the operating
+ * status is what it saw when called; FB_PAC_Axis.md, "Calling contract"). Properties "P<n>"/"A<n>",
+ * reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
 #ifndef CBMC__K
@@ -49,10 +51,15 @@ int main(void) {
     int reachAbortEnded = 0;
     BOOL activeSinceStart = FALSE; /* ACTIVE seen since Start last rose on the wire */
     BOOL leftSinceStart = FALSE;   /* a known status other than ONLINE running (31) seen since then */
-    int reachRefusedNotOnline = 0;
+    int reachRefusedNotOnline = 0, reachSkippedBusy = 0;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        if (!nondet_bool()) { /* left out of this scan: nothing of it runs, its module stays as it is */
+            if (axis.BUSY.value) reachSkippedBusy = 1;
+            tl_scan = n;
+            continue;
+        }
         for (int i = 0; i < 8; ++i) axis.FROMPAC.value.table[i] = nondet_uchar();
         for (int i = 8; i < 12; ++i) axis.FROMPAC.value.table[i] = 0;
         axis.OPSTATUS.value = nondet_uchar();
@@ -156,5 +163,7 @@ int main(void) {
     __CPROVER_assert(!reachAborted, "reach: CommandAborted");
     __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
     __CPROVER_assert(!reachRefusedNotOnline, "reach: a job refused outside ONLINE running (16#8025)");
+    /* A job ended Done after a scan left out needs more than the CI's K = 4 (edge, Start, ACTIVE, its fall). */
+    __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
     return 0;
 }

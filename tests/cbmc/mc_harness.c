@@ -1,9 +1,11 @@
 /* Bounded model-checking harness of the MC blocks MC_Power, MC_Stop, MC_MoveAbsolute, MC_Halt and MC_Reset on
  * one axis run by FB_PAC_McAxis over FB_PAC_Axis (docs/fb/MC_blocks.md), on the C that pacst generates from st/,
  * for K scans (docs/verification.md). Free in every scan: the operating status, the controller's axis module
- * (bytes 0..7; the position bytes stay 0), ModeChange, MC_Power.Enable, the four blocks' Execute, and the order
- * in which they are called (as listed or the reverse, so every two of them edged in one scan meet in either
- * order; FB_PAC_McAxis last); per run IntegerMode, Timeout and StopTimeout (1..TMAX ms).
+ * (bytes 0..7; the position bytes stay 0), ModeChange, MC_Power.Enable, whether each of the four blocks is
+ * called (a CASE step or an IF branch leaves it out, its Execute then unchanged: the calling contract of
+ * MC_blocks.md), their Execute, and the order in which they are called (as listed or the reverse, so every two
+ * of them edged in one scan meet in either order; FB_PAC_McAxis last); per run IntegerMode, Timeout and
+ * StopTimeout (1..TMAX ms).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -34,22 +36,30 @@ static MC_HALT halt;
 static MC_RESET reset;
 static FB_PAC_MCAXIS mcAxis;
 
+static BOOL stopCalled;
 static void CallStop(void) {
+    if (!stopCalled) return;
     stop.AXIS.value = ref;
     MC_STOP_body__(&stop);
     ref = stop.AXIS.value;
 }
+static BOOL moveCalled;
 static void CallMove(void) {
+    if (!moveCalled) return;
     move.AXIS.value = ref;
     MC_MOVEABSOLUTE_body__(&move);
     ref = move.AXIS.value;
 }
+static BOOL haltCalled;
 static void CallHalt(void) {
+    if (!haltCalled) return;
     halt.AXIS.value = ref;
     MC_HALT_body__(&halt);
     ref = halt.AXIS.value;
 }
+static BOOL resetCalled;
 static void CallReset(void) {
+    if (!resetCalled) return;
     reset.AXIS.value = ref;
     MC_RESET_body__(&reset);
     ref = reset.AXIS.value;
@@ -62,7 +72,7 @@ int main(void) {
     BOOL braking = FALSE;     /* after the last scan: lastWasStop, and the axis showed ACTIVE */
     int reachBrakingRefused = 0;
     int reachStopDone = 0, reachHeld = 0, reachMoveBusy = 0, reachMoveAborted = 0, reachReleased = 0;
-    int reachHaltDone = 0, reachResetDone = 0, reachStopFailedHeld = 0, resetBusySeen = 0;
+    int reachHaltDone = 0, reachResetDone = 0, reachStopFailedHeld = 0, resetBusySeen = 0, reachSkippedBusy = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
     __pacst_init_ST_PAC_AXISREF(&ref);
@@ -98,10 +108,17 @@ int main(void) {
         power.ENABLE.value = nondet_bool();
         const BOOL stopBefore = stop.EXECUTE.value, moveBefore = move.EXECUTE.value;
         const BOOL haltBefore = halt.EXECUTE.value, resetBefore = reset.EXECUTE.value;
-        stop.EXECUTE.value = nondet_bool();
-        move.EXECUTE.value = nondet_bool();
-        halt.EXECUTE.value = nondet_bool();
-        reset.EXECUTE.value = nondet_bool();
+        stopCalled = nondet_bool();
+        moveCalled = nondet_bool();
+        haltCalled = nondet_bool();
+        resetCalled = nondet_bool();
+        if ((!stopCalled && stop.BUSY.value) || (!moveCalled && move.BUSY.value) || (!haltCalled && halt.BUSY.value)
+            || (!resetCalled && reset.BUSY.value))
+            reachSkippedBusy = 1;
+        if (stopCalled) stop.EXECUTE.value = nondet_bool();
+        if (moveCalled) move.EXECUTE.value = nondet_bool();
+        if (haltCalled) halt.EXECUTE.value = nondet_bool();
+        if (resetCalled) reset.EXECUTE.value = nondet_bool();
         const BOOL stopEdge = stop.EXECUTE.value && !stopBefore, moveEdge = move.EXECUTE.value && !moveBefore;
         const BOOL haltEdge = halt.EXECUTE.value && !haltBefore, resetEdge = reset.EXECUTE.value && !resetBefore;
         const BOOL stopFirst = nondet_bool();
@@ -158,14 +175,18 @@ int main(void) {
         /* P1..P4 and P8 for each block (plcopen_props.h): Busy, Done, Error and CommandAborted exclusive, Error
          * with an ErrorID, no output without an edge, the final outputs held while Execute stays TRUE, Busy
          * within its bound. */
-        CheckPlcOpen(&stopWatch, stop.EXECUTE.value, stopEdge, stop.BUSY.value, stop.DONE.value, stop.ERROR.value,
-                     stop.COMMANDABORTED.value, stop.ERRORID.value);
-        CheckPlcOpen(&moveWatch, move.EXECUTE.value, moveEdge, move.BUSY.value, move.DONE.value, move.ERROR.value,
-                     move.COMMANDABORTED.value, move.ERRORID.value);
-        CheckPlcOpen(&haltWatch, halt.EXECUTE.value, haltEdge, halt.BUSY.value, halt.DONE.value, halt.ERROR.value,
-                     halt.COMMANDABORTED.value, halt.ERRORID.value);
-        CheckPlcOpen(&resetWatch, reset.EXECUTE.value, resetEdge, reset.BUSY.value, reset.DONE.value,
-                     reset.ERROR.value, FALSE, reset.ERRORID.value);
+        if (stopCalled)
+            CheckPlcOpen(&stopWatch, stop.EXECUTE.value, stopEdge, stop.BUSY.value, stop.DONE.value,
+                         stop.ERROR.value, stop.COMMANDABORTED.value, stop.ERRORID.value);
+        if (moveCalled)
+            CheckPlcOpen(&moveWatch, move.EXECUTE.value, moveEdge, move.BUSY.value, move.DONE.value,
+                         move.ERROR.value, move.COMMANDABORTED.value, move.ERRORID.value);
+        if (haltCalled)
+            CheckPlcOpen(&haltWatch, halt.EXECUTE.value, haltEdge, halt.BUSY.value, halt.DONE.value,
+                         halt.ERROR.value, halt.COMMANDABORTED.value, halt.ERRORID.value);
+        if (resetCalled)
+            CheckPlcOpen(&resetWatch, reset.EXECUTE.value, resetEdge, reset.BUSY.value, reset.DONE.value,
+                         reset.ERROR.value, FALSE, reset.ERRORID.value);
         __CPROVER_assert(!move.ACTIVE.value || move.BUSY.value, "MC2 Active only with Busy");
         __CPROVER_assert(!halt.ACTIVE.value || halt.BUSY.value, "MC2 MC_Halt's Active only with Busy");
         __CPROVER_assert(!power.ERROR.value || power.ERRORID.value != 0, "MC3 MC_Power's Error implies ErrorID <> 0");
@@ -216,5 +237,6 @@ int main(void) {
     __CPROVER_assert(!reachBrakingRefused, "reach: a move refused while a stopped axis shows ACTIVE");
     __CPROVER_assert(!reachHaltDone, "reach: MC_Halt Done");
     __CPROVER_assert(!reachResetDone, "reach: MC_Reset Done after Busy");
+    __CPROVER_assert(!reachSkippedBusy, "reach: a block left out of a scan while Busy");
     return 0;
 }
