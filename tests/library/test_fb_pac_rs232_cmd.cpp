@@ -122,6 +122,13 @@ protected:
         Cycle(1);
     }
     void SetBytesPerScan(int n) { bytesPerScan_ = perScan_ = n; }
+    // A PLC that has talked to the controller before: a read whose CHECK (55) no spoilt bit turns into "0"
+    // is answered, so AUTO's rule, the XOR of the text, is confirmed and no probe goes before a command.
+    void ConfirmRule() {
+        Start(0x1906, 2000);
+        EXPECT_EQ(HexOf(Sent()), HexOf(Command("1906;2000;0;0")));
+        EndDone(Frame("0;1;1;0;0;0"));
+    }
 
     pac::FbInstance<FB_PAC_RS232CMD> fb_ = PAC_FB(FB_PAC_RS232CMD);
     PlcOpenChecker checker_;
@@ -147,6 +154,7 @@ TEST_F(Rs232Cmd, ManualFramesWhoseCheckIsTheXorOfTheText) {
 }
 
 TEST_F(Rs232Cmd, ManualFramesWithTheErrataApplied) {
+    ConfirmRule();
     struct Case {
         std::uint16_t code, param;
         std::uint32_t data;
@@ -209,6 +217,7 @@ TEST_F(Rs232Cmd, DataWithoutAnAsciiFormIsRefusedUnsent) {
 // ---- the acknowledgements of 3.4, as printed ----
 
 TEST_F(Rs232Cmd, ReadsTheManualsAcknowledgements) {
+    ConfirmRule();
     struct Case {
         const char* bytes;
         std::uint32_t data;
@@ -238,6 +247,7 @@ TEST_F(Rs232Cmd, ReadsTheManualsAcknowledgements) {
 }
 
 TEST_F(Rs232Cmd, FollowsALongCommandWithEotPollsUntilBe1) {  // 3.4.3
+    ConfirmRule();
     fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
     Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
     Sent();
@@ -283,17 +293,17 @@ TEST_F(Rs232Cmd, ACommandErrorEndsWithItsNumber) {
 }
 
 TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheOtherXorInAuto) {
-    Start(0x1906, 5);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0"))));
+    Start(0x1906, 2000);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorText("1906;2000;0;0"))));
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0")))) << "the XOR with ETX in the scan after";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorEtx("1906;2000;0;0")))) << "the XOR with ETX in the scan after";
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0")))) << "then the XOR of the text again";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorText("1906;2000;0;0")))) << "then the XOR of the text again";
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0"))));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorEtx("1906;2000;0;0"))));
     Reply(Frame("0;1;1;0;0;0"));
     Cycle(1);
     EXPECT_TRUE(fb_->DONE.value);
@@ -326,21 +336,46 @@ TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
 }
 
 TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
-    const std::string text = "1906;4;0;0";
-    ASSERT_NE(XorText(text), 0);
-    ASSERT_NE(XorEtx(text), 0);
+    // The XOR of this text is 0: before a rule is confirmed its frame never goes out with the XOR of the text;
+    // the probe (190B, CHECK 113 or 114) goes in its place, and the frame itself only with the XOR with ETX (3).
+    const std::string text = "1906;5;0;0";
+    ASSERT_EQ(XorText(text), 0);
     fb_->RETRIES.value = 5;
-    Start(0x1906, 4);
+    Start(0x1906, 5);
     std::vector<int> checks;
     for (int attempt = 0; attempt < 6; ++attempt) {
-        checks.push_back(CheckOf(Sent()));
+        const Bytes sent = Sent();
+        EXPECT_TRUE(HexOf(sent) == HexOf(Command("190B;0;0;0")) || HexOf(sent) == HexOf(Frame("190B;0;0;0")) ||
+                    HexOf(sent) == HexOf(Frame(text)))
+            << HexOf(sent);
+        checks.push_back(CheckOf(sent));
         Reply(Frame("16;0;1;0;0;0"));
         Cycle(1);
     }
-    for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
+    EXPECT_NE(std::find(checks.begin(), checks.end(), XorText("190B;0;0;0")), checks.end()) << "both XORs tried";
     EXPECT_NE(std::find(checks.begin(), checks.end(), XorEtx(text)), checks.end()) << "both XORs tried";
+    EXPECT_EQ(std::find(checks.begin(), checks.end(), 0), checks.end()) << "never 0";
     EXPECT_TRUE(fb_->ERROR.value);
     EXPECT_EQ(fb_->ERRORID.value, 16u);
+}
+
+// Before a rule is confirmed a command that must not run twice waits for the probe: a controller that ignores
+// the probe's CHECK is never polled with EOT (it would repeat a reply from before), and the command's frame
+// goes out once, with the rule the probe's reply confirmed, in the scan after that reply.
+TEST_F(Rs232Cmd, ACommandThatMustNotRunTwiceWaitsForTheProbe) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
+    Start(0x0603, 0);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Command("190B;0;0;0"))) << "the probe, with the XOR of the text";
+    ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the probe again"));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("190B;0;0;0"))) << "silence: the probe with the XOR with ETX, no EOT";
+    Reply(Frame("0;1;1;0;0;1"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->BUSY.value && !fb_->ACKNOWLEDGED.value) << "the probe's reply is not the command's";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0603;0;0;0"))) << "the command, with the rule confirmed";
+    EndDone(Frame("0;1;31;0;0;0"));
+    EXPECT_EQ(fb_->REPEATS.value, 1);
+    Start(0x0909, 0);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0909;0;0;0"))) << "no probe once a rule is confirmed";
 }
 
 // The case: a short outage while the first command runs. Silence before any acknowledgement may mean
@@ -348,14 +383,14 @@ TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
 // the first acknowledgement confirms is the one kept.
 TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
     fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
-    Start(0x0906, 3, 333);
-    const std::string text = "0906;3;0;333";
+    Start(0x0906, 3, static_cast<std::uint32_t>(-333));
+    const std::string text = "0906;3;0;-333";
     std::vector<int> checks{CheckOf(Sent())};
     for (int outage = 0; outage < 2; ++outage) {
         ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the frame again"));
         checks.push_back(CheckOf(Sent()));
     }
-    EndDone(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
+    EndDone(Frame("0;1;1;0;0;-333"));  // the line is back: the third frame is answered
     for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
     Start(0x1906, 3);
     EXPECT_EQ(CheckOf(Sent()), checks.back() == XorText(text) ? XorText("1906;3;0;0") : XorEtx("1906;3;0;0"))
@@ -426,6 +461,7 @@ TEST_F(Rs232Cmd, ARealIsSentExactlyOrRefused) {
 
 // 5.2.6.13 sends 0A93 with the data 0; 3.3: "if a data field has no function, enter a 0".
 TEST_F(Rs232Cmd, ACommandWithoutDataSendsZero) {
+    ConfirmRule();
     Start(0x0A93, 4);
     EXPECT_EQ(HexOf(Sent()), HexOf(Command("0A93;4;1;0")));
 }
@@ -450,6 +486,7 @@ TEST_F(Rs232Cmd, ADamagedReplyToAReadSendsItAgainOnceTheLineIsQuiet) {
 }
 
 TEST_F(Rs232Cmd, AFrameCutOffByTheNextIsDroppedForIt) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Bytes cut = Frame("0;0;31;0;1;0.000");
@@ -463,6 +500,7 @@ TEST_F(Rs232Cmd, AFrameCutOffByTheNextIsDroppedForIt) {
 }
 
 TEST_F(Rs232Cmd, ALostReplyToARelativeMoveIsAskedForWithEot) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Reply(Hex("01 02 30 3B 30 3B"));  // then nothing
@@ -521,6 +559,7 @@ TEST_F(Rs232Cmd, StaleBytesNeverPassForTheReply) {
 
 // A long command whose end never comes: EndTimeout counts from the first acknowledgement through the polls.
 TEST_F(Rs232Cmd, ALongCommandThatNeverEndsEndsInEndTimeout) {
+    ConfirmRule();
     fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
     fb_->ENDTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(40));
     Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
@@ -576,6 +615,7 @@ TEST_F(Rs232Cmd, AfterAFailedCommandTheNextWaitsForAQuietLine) {
 // A noise burst that looks like the start of a frame spoils the first reply; the controller's reply after it
 // is still taken while the FB waits for the line to fall quiet, and a relative move is not asked for again.
 TEST_F(Rs232Cmd, AReplyAfterANoiseBurstIsTakenWhileTheLineFallsQuiet) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Reply(Hex("02 41 02 42 03 33 41"));  // STX, text, STX again, text, ETX, then a letter among the CHECK digits

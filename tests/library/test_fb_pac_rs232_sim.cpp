@@ -212,16 +212,16 @@ TEST(Rs232Readings, EveryCheckRuleTheControllerMayVerify) {
     }
 }
 
-// The case on the default controller: the first two requests are lost in an outage. AUTO tries the
-// other XOR on the silence, never "0"; so a request spoilt later (5552.0 -> 5553.0) is refused with 16 and
-// sent again, never carried out.
+// The case on the default controller: the first two requests are lost in an outage (the probe: the
+// CHECK of 1906;4 is 1, one spoilt bit from "0"). AUTO tries the other XOR on the silence, never "0"; so a
+// request spoilt later (5552.0 -> 5553.0) is refused with 16 and sent again, never carried out.
 TEST(Rs232Readings, AnOutageAtTheStartNeverLeavesTheLinkUnchecked) {
     SerialCmdPlc plc(SerialTiming{9600, 1, 10});
     plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
     plc.Pac().Io().intRegisters.SetInt(4, 4444);
     pac::sim::SerialWire& toPac = plc.Rig().Line().toPac;
-    const int request = RequestBytes("1906;4;0;0");
-    ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("1906;4;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
+    const int request = RequestBytes("190B;0;0;0");
+    ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("190B;0;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
     for (int i = 0; i < 2 * request; ++i) toPac.DropByte(toPac.BytesSent() + static_cast<std::uint64_t>(i));
     const FinalOutcome read = plc.Run(0x1906, 4);
     ASSERT_TRUE(read.Done()) << read;
