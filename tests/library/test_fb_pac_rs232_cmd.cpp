@@ -161,7 +161,7 @@ TEST_F(Rs232Cmd, ManualFramesWithTheErrataApplied) {
         const char* text;  // the frame's text, corrected
     };
     const Case cases[] = {
-        {0x0906, 5, 12345, "0906;5;0;12345"},                              // 3.4.1 (its CHECK 7 follows no rule)
+        {0x0906, 5, 12345, "0906;05;0;12345"},  // 3.4.1 (its CHECK 7 follows no rule; its XOR is 0: PAR_1 05)
         {0x1906, 2, 0, "1906;2;0;0"},                                      // printed 1960
         {0x1907, 1, 0, "1907;1;1;0"},                                      // printed 1971;3;0
         {0x0603, 0, 0, "0603;0;0;0"},                                      // printed 0A03
@@ -328,6 +328,32 @@ TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
     EXPECT_EQ(fb_->REPEATS.value, 2);
 }
 
+// A frame whose CHECK would be 0 would read as "not checked" to a controller that takes "0": PAR_1 gets a
+// leading zero instead (the same number), under every rule but ZERO.
+TEST_F(Rs232Cmd, AFrameWhoseCheckWouldBeZeroGetsALeadingZero) {
+    ASSERT_EQ(XorText("0906;5;0;12345"), 0);
+    ASSERT_EQ(XorEtx("1906;6;0;0"), 0);
+    struct Case {
+        E_PAC_RS232CHECK rule;
+        std::uint16_t code, param;
+        std::uint32_t data;
+        Bytes frame;
+    };
+    const Case cases[] = {
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT, 0x0906, 5, 12345, Command("0906;05;0;12345")},
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX, 0x1906, 6, 0, Frame("1906;06;0;0")},
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO, 0x0906, 5, 12345, Frame("0906;5;0;12345", 0)},
+    };
+    for (const Case& c : cases) {
+        fb_->CHECKRULE.value = c.rule;
+        Start(c.code, c.param, c.data);
+        const Bytes sent = Sent();
+        EXPECT_EQ(HexOf(sent), HexOf(c.frame));
+        EXPECT_TRUE(c.rule == E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO || CheckOf(sent) == 48 || CheckOf(sent) == 51);
+        EndDone(Frame("0;1;1;0;0;0"));
+    }
+}
+
 // ---- AUTO settles only on a rule a correct acknowledgement confirmed, and never on "0" ----
 
 TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
@@ -336,8 +362,7 @@ TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
 }
 
 TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
-    // The XOR of this text is 0: before a rule is confirmed its frame never goes out with the XOR of the text;
-    // the probe (190B, CHECK 113 or 114) goes in its place, and the frame itself only with the XOR with ETX (3).
+    // The XOR of this text is 0: its frame goes with PAR_1 05 and both XORs of that (48, 51) in turn, never 0.
     const std::string text = "1906;5;0;0";
     ASSERT_EQ(XorText(text), 0);
     fb_->RETRIES.value = 5;
@@ -345,16 +370,14 @@ TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
     std::vector<int> checks;
     for (int attempt = 0; attempt < 6; ++attempt) {
         const Bytes sent = Sent();
-        EXPECT_TRUE(HexOf(sent) == HexOf(Command("190B;0;0;0")) || HexOf(sent) == HexOf(Frame("190B;0;0;0")) ||
-                    HexOf(sent) == HexOf(Frame(text)))
+        EXPECT_TRUE(HexOf(sent) == HexOf(Command("1906;05;0;0")) || HexOf(sent) == HexOf(Frame("1906;05;0;0")))
             << HexOf(sent);
         checks.push_back(CheckOf(sent));
         Reply(Frame("16;0;1;0;0;0"));
         Cycle(1);
     }
-    EXPECT_NE(std::find(checks.begin(), checks.end(), XorText("190B;0;0;0")), checks.end()) << "both XORs tried";
-    EXPECT_NE(std::find(checks.begin(), checks.end(), XorEtx(text)), checks.end()) << "both XORs tried";
-    EXPECT_EQ(std::find(checks.begin(), checks.end(), 0), checks.end()) << "never 0";
+    EXPECT_NE(std::find(checks.begin(), checks.end(), 48), checks.end()) << "both XORs tried";
+    EXPECT_NE(std::find(checks.begin(), checks.end(), 51), checks.end()) << "both XORs tried";
     EXPECT_TRUE(fb_->ERROR.value);
     EXPECT_EQ(fb_->ERRORID.value, 16u);
 }
