@@ -321,6 +321,18 @@ std::vector<CheckReading> CheckReadings() {
     pac::sim::SerialPortConfig none;
     none.verify = CheckVerification::kNone;
     readings.push_back({"no check", none});
+    // The discarding controller with the other readings the suites use: mode replies at once, no answer
+    // to a poll after BE = 1, STX alone.
+    pac::sim::SerialPortConfig discards;
+    discards.verify = CheckVerification::kXorWithEtx;
+    discards.answerBadCheck = false;
+    discards.discardBadCheckFrame = true;
+    discards.holdModeReplies = false;
+    discards.requireSoh = false;
+    readings.push_back({"xor-etx or 0, discards, mode replies at once", discards});
+    discards.holdModeReplies = true;
+    discards.answerPollWhenIdle = false;
+    readings.push_back({"xor-etx or 0, discards, no idle poll reply", discards});
     return readings;
 }
 
