@@ -189,7 +189,7 @@ TEST_F(Rs232Cmd, NumbersInTheirAsciiForm) {
         {0x0907, 1, pac::test::BitsOf(0.0001F), "0907;1;1;0.0001"},
         {0x0907, 1, pac::test::BitsOf(640.0F), "0907;1;1;640.0"},
         {0x0800, 0x0106, pac::test::BitsOf(10000.0F), "0800;262;1;10000.0"},
-        {0x0903, 2, 0xFFFF, "0903;2;0;65535"},
+        {0x0903, 2, 0xFFFF, "0903;02;0;65535"},  // its XOR is 3, 0 under the XOR with ETX: PAR_1 02
         {0x190C, 1, 0, "190C;1;1;0"},
     };
     for (const Case& c : cases) {
@@ -317,9 +317,9 @@ TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheOtherXorInAuto) {
 TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
     fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
     fb_->RETRIES.value = 2;
-    Start(0x1906, 5);
+    Start(0x1906, 2000);
     for (int attempt = 0; attempt < 3; ++attempt) {
-        EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0"))) << attempt;
+        EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0"))) << attempt;
         Reply(Frame("16;0;1;0;0;0"));
         Cycle(1);
     }
