@@ -37,7 +37,8 @@ struct Options {
 constexpr const char* kUsage =
     "usage: pac_sim --serial [--link PATH] [--baud N] [--seconds S] [--example-setup]\n"
     "               [--check xor-etx|xor-text|none] [--no-zero-check] [--reply-check xor-etx|xor-text|zero]\n"
-    "               [--silent-on-bad-check] [--no-idle-poll-reply] [--require-stop-input] [--until-stdin-closes]\n"
+    "               [--silent-on-bad-check] [--discard-bad-check] [--no-idle-poll-reply] [--require-stop-input]\n"
+    "               [--until-stdin-closes]\n"
     "Prints the pseudo-terminal's path, then serves RS232 frames of manual chapter 3 on it in real time.\n"
     "--example-setup: input 5 = 1, N2 = 222, R1 = 640.0 (the setup of manual 3.4.2).\n"
     "Defaults: --check xor-text (the manual's master frames), --reply-check xor-etx (its acknowledgements).\n";
@@ -73,6 +74,9 @@ bool Parse(int argc, char** argv, Options& o) {
             else return false;
         } else if (a == "--silent-on-bad-check") {
             o.port.answerBadCheck = false;
+        } else if (a == "--discard-bad-check") {
+            o.port.answerBadCheck = false;
+            o.port.discardBadCheckFrame = true;
         } else if (a == "--no-idle-poll-reply") {
             o.port.answerPollWhenIdle = false;
         } else if (a == "--until-stdin-closes") {

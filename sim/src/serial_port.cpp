@@ -107,16 +107,20 @@ std::uint16_t SerialPort::Decode(const std::string& text, CommandFrame& command)
 
 void SerialPort::OnFrame(const rs232::Rs232Event& frame, std::chrono::nanoseconds now, CommandHost& host) {
     ++counters_.frames;
-    // Any frame is a new request: the command reported so far is no longer followed (as on the CMD
-    // interface, docs/sim_cmd.md); its axis goes on.
-    pending_ = PendingCommand{};
-    heldReply_ = false;
     if (!CheckAccepted(frame)) {
         ++counters_.checkErrors;
+        // A controller that discards such a frame silently has not seen a request at all.
+        if (!config_.answerBadCheck && config_.discardBadCheckFrame) return;
+        pending_ = PendingCommand{};
+        heldReply_ = false;
         ack_ = Ack{0, kCheckError, false, 0};
         if (config_.answerBadCheck) Send(ack_, now, host);
         return;
     }
+    // Any frame is a new request: the command reported so far is no longer followed (as on the CMD
+    // interface, docs/sim_cmd.md); its axis goes on.
+    pending_ = PendingCommand{};
+    heldReply_ = false;
     CommandFrame command;
     const std::uint16_t refused = Decode(frame.text, command);
     if (refused == kSetUpError) {
@@ -130,6 +134,7 @@ void SerialPort::OnFrame(const rs232::Rs232Event& frame, std::chrono::nanosecond
     }
     ++counters_.commands;
     const CommandResult result = host.RunCommand(command, now, pending_);
+    commands_.push_back(SerialCommand{command.code, command.parameter, command.data, result.error, now});
     ack_ = Ack{command.code, result.error, result.error == 0 && result.finished, result.ackData};
     if (config_.holdModeReplies && pending_.kind == PendingCommand::Kind::kModeChange) {
         heldReply_ = true;

@@ -122,6 +122,13 @@ protected:
         Cycle(1);
     }
     void SetBytesPerScan(int n) { bytesPerScan_ = perScan_ = n; }
+    // A PLC that has talked to the controller before: a read whose CHECK (55) no spoilt bit turns into "0"
+    // is answered, so AUTO's rule, the XOR of the text, is confirmed and no probe goes before a command.
+    void ConfirmRule() {
+        Start(0x1906, 2000);
+        EXPECT_EQ(HexOf(Sent()), HexOf(Command("1906;2000;0;0")));
+        EndDone(Frame("0;1;1;0;0;0"));
+    }
 
     pac::FbInstance<FB_PAC_RS232CMD> fb_ = PAC_FB(FB_PAC_RS232CMD);
     PlcOpenChecker checker_;
@@ -147,13 +154,14 @@ TEST_F(Rs232Cmd, ManualFramesWhoseCheckIsTheXorOfTheText) {
 }
 
 TEST_F(Rs232Cmd, ManualFramesWithTheErrataApplied) {
+    ConfirmRule();
     struct Case {
         std::uint16_t code, param;
         std::uint32_t data;
         const char* text;  // the frame's text, corrected
     };
     const Case cases[] = {
-        {0x0906, 5, 12345, "0906;5;0;12345"},                              // 3.4.1 (its CHECK 7 follows no rule)
+        {0x0906, 5, 12345, "0906;05;0;12345"},  // 3.4.1 (its CHECK 7 follows no rule; its XOR is 0: PAR_1 05)
         {0x1906, 2, 0, "1906;2;0;0"},                                      // printed 1960
         {0x1907, 1, 0, "1907;1;1;0"},                                      // printed 1971;3;0
         {0x0603, 0, 0, "0603;0;0;0"},                                      // printed 0A03
@@ -181,7 +189,7 @@ TEST_F(Rs232Cmd, NumbersInTheirAsciiForm) {
         {0x0907, 1, pac::test::BitsOf(0.0001F), "0907;1;1;0.0001"},
         {0x0907, 1, pac::test::BitsOf(640.0F), "0907;1;1;640.0"},
         {0x0800, 0x0106, pac::test::BitsOf(10000.0F), "0800;262;1;10000.0"},
-        {0x0903, 2, 0xFFFF, "0903;2;0;65535"},
+        {0x0903, 2, 0xFFFF, "0903;02;0;65535"},  // its XOR is 3, 0 under the XOR with ETX: PAR_1 02
         {0x190C, 1, 0, "190C;1;1;0"},
     };
     for (const Case& c : cases) {
@@ -209,6 +217,7 @@ TEST_F(Rs232Cmd, DataWithoutAnAsciiFormIsRefusedUnsent) {
 // ---- the acknowledgements of 3.4, as printed ----
 
 TEST_F(Rs232Cmd, ReadsTheManualsAcknowledgements) {
+    ConfirmRule();
     struct Case {
         const char* bytes;
         std::uint32_t data;
@@ -238,6 +247,7 @@ TEST_F(Rs232Cmd, ReadsTheManualsAcknowledgements) {
 }
 
 TEST_F(Rs232Cmd, FollowsALongCommandWithEotPollsUntilBe1) {  // 3.4.3
+    ConfirmRule();
     fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
     Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
     Sent();
@@ -283,17 +293,17 @@ TEST_F(Rs232Cmd, ACommandErrorEndsWithItsNumber) {
 }
 
 TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheOtherXorInAuto) {
-    Start(0x1906, 5);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0"))));
+    Start(0x1906, 2000);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorText("1906;2000;0;0"))));
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0")))) << "the XOR with ETX in the scan after";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorEtx("1906;2000;0;0")))) << "the XOR with ETX in the scan after";
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorText("1906;5;0;0")))) << "then the XOR of the text again";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorText("1906;2000;0;0")))) << "then the XOR of the text again";
     Reply(Frame("16;0;1;0;0;0"));
     Cycle(1);
-    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0", XorEtx("1906;5;0;0"))));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0", XorEtx("1906;2000;0;0"))));
     Reply(Frame("0;1;1;0;0;0"));
     Cycle(1);
     EXPECT_TRUE(fb_->DONE.value);
@@ -307,15 +317,41 @@ TEST_F(Rs232Cmd, ACheckErrorSendsTheFrameAgainWithTheOtherXorInAuto) {
 TEST_F(Rs232Cmd, AFixedRuleIsNeverChangedAndTheRetriesAreBounded) {
     fb_->CHECKRULE.value = E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
     fb_->RETRIES.value = 2;
-    Start(0x1906, 5);
+    Start(0x1906, 2000);
     for (int attempt = 0; attempt < 3; ++attempt) {
-        EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;5;0;0"))) << attempt;
+        EXPECT_EQ(HexOf(Sent()), HexOf(Frame("1906;2000;0;0"))) << attempt;
         Reply(Frame("16;0;1;0;0;0"));
         Cycle(1);
     }
     EXPECT_TRUE(fb_->ERROR.value);
     EXPECT_EQ(fb_->ERRORID.value, 16u);
     EXPECT_EQ(fb_->REPEATS.value, 2);
+}
+
+// A frame whose CHECK would be 0 would read as "not checked" to a controller that takes "0": PAR_1 gets a
+// leading zero instead (the same number), under every rule but ZERO.
+TEST_F(Rs232Cmd, AFrameWhoseCheckWouldBeZeroGetsALeadingZero) {
+    ASSERT_EQ(XorText("0906;5;0;12345"), 0);
+    ASSERT_EQ(XorEtx("1906;6;0;0"), 0);
+    struct Case {
+        E_PAC_RS232CHECK rule;
+        std::uint16_t code, param;
+        std::uint32_t data;
+        Bytes frame;
+    };
+    const Case cases[] = {
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT, 0x0906, 5, 12345, Command("0906;05;0;12345")},
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX, 0x1906, 6, 0, Frame("1906;06;0;0")},
+        {E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO, 0x0906, 5, 12345, Frame("0906;5;0;12345", 0)},
+    };
+    for (const Case& c : cases) {
+        fb_->CHECKRULE.value = c.rule;
+        Start(c.code, c.param, c.data);
+        const Bytes sent = Sent();
+        EXPECT_EQ(HexOf(sent), HexOf(c.frame));
+        EXPECT_TRUE(c.rule == E_PAC_RS232CHECK__PAC_RS232_CHECK_ZERO || CheckOf(sent) == 48 || CheckOf(sent) == 51);
+        EndDone(Frame("0;1;1;0;0;0"));
+    }
 }
 
 // ---- AUTO settles only on a rule a correct acknowledgement confirmed, and never on "0" ----
@@ -326,21 +362,43 @@ TEST_F(Rs232Cmd, AutoStartsWithTheRuleOfTheManualsFrames) {
 }
 
 TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
-    const std::string text = "1906;4;0;0";
-    ASSERT_NE(XorText(text), 0);
-    ASSERT_NE(XorEtx(text), 0);
+    // The XOR of this text is 0: its frame goes with PAR_1 05 and both XORs of that (48, 51) in turn, never 0.
+    const std::string text = "1906;5;0;0";
+    ASSERT_EQ(XorText(text), 0);
     fb_->RETRIES.value = 5;
-    Start(0x1906, 4);
+    Start(0x1906, 5);
     std::vector<int> checks;
     for (int attempt = 0; attempt < 6; ++attempt) {
-        checks.push_back(CheckOf(Sent()));
+        const Bytes sent = Sent();
+        EXPECT_TRUE(HexOf(sent) == HexOf(Command("1906;05;0;0")) || HexOf(sent) == HexOf(Frame("1906;05;0;0")))
+            << HexOf(sent);
+        checks.push_back(CheckOf(sent));
         Reply(Frame("16;0;1;0;0;0"));
         Cycle(1);
     }
-    for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
-    EXPECT_NE(std::find(checks.begin(), checks.end(), XorEtx(text)), checks.end()) << "both XORs tried";
+    EXPECT_NE(std::find(checks.begin(), checks.end(), 48), checks.end()) << "both XORs tried";
+    EXPECT_NE(std::find(checks.begin(), checks.end(), 51), checks.end()) << "both XORs tried";
     EXPECT_TRUE(fb_->ERROR.value);
     EXPECT_EQ(fb_->ERRORID.value, 16u);
+}
+
+// Before a rule is confirmed a command that must not run twice waits for the probe: a controller that ignores
+// the probe's CHECK is never polled with EOT (it would repeat a reply from before), and the command's frame
+// goes out once, with the rule the probe's reply confirmed, in the scan after that reply.
+TEST_F(Rs232Cmd, ACommandThatMustNotRunTwiceWaitsForTheProbe) {
+    fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
+    Start(0x0603, 0);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Command("190B;0;0;0"))) << "the probe, with the XOR of the text";
+    ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the probe again"));
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("190B;0;0;0"))) << "silence: the probe with the XOR with ETX, no EOT";
+    Reply(Frame("0;1;1;0;0;1"));
+    Cycle(1);
+    EXPECT_TRUE(fb_->BUSY.value && !fb_->ACKNOWLEDGED.value) << "the probe's reply is not the command's";
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0603;0;0;0"))) << "the command, with the rule confirmed";
+    EndDone(Frame("0;1;31;0;0;0"));
+    EXPECT_EQ(fb_->REPEATS.value, 1);
+    Start(0x0909, 0);
+    EXPECT_EQ(HexOf(Sent()), HexOf(Frame("0909;0;0;0"))) << "no probe once a rule is confirmed";
 }
 
 // The case: a short outage while the first command runs. Silence before any acknowledgement may mean
@@ -348,14 +406,14 @@ TEST_F(Rs232Cmd, AutoNeverSendsZeroOnItsOwn) {
 // the first acknowledgement confirms is the one kept.
 TEST_F(Rs232Cmd, AnOutageBeforeTheFirstReplyNeverSettlesOnZero) {
     fb_->TIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(100));
-    Start(0x0906, 3, 333);
-    const std::string text = "0906;3;0;333";
+    Start(0x0906, 3, static_cast<std::uint32_t>(-333));
+    const std::string text = "0906;3;0;-333";
     std::vector<int> checks{CheckOf(Sent())};
     for (int outage = 0; outage < 2; ++outage) {
         ASSERT_TRUE(RunUntil([&] { return !sent_.empty(); }, 400, "the frame again"));
         checks.push_back(CheckOf(Sent()));
     }
-    EndDone(Frame("0;1;1;0;0;333"));  // the line is back: the third frame is answered
+    EndDone(Frame("0;1;1;0;0;-333"));  // the line is back: the third frame is answered
     for (int check : checks) EXPECT_TRUE(check == XorText(text) || check == XorEtx(text)) << "CHECK " << check;
     Start(0x1906, 3);
     EXPECT_EQ(CheckOf(Sent()), checks.back() == XorText(text) ? XorText("1906;3;0;0") : XorEtx("1906;3;0;0"))
@@ -426,6 +484,7 @@ TEST_F(Rs232Cmd, ARealIsSentExactlyOrRefused) {
 
 // 5.2.6.13 sends 0A93 with the data 0; 3.3: "if a data field has no function, enter a 0".
 TEST_F(Rs232Cmd, ACommandWithoutDataSendsZero) {
+    ConfirmRule();
     Start(0x0A93, 4);
     EXPECT_EQ(HexOf(Sent()), HexOf(Command("0A93;4;1;0")));
 }
@@ -450,6 +509,7 @@ TEST_F(Rs232Cmd, ADamagedReplyToAReadSendsItAgainOnceTheLineIsQuiet) {
 }
 
 TEST_F(Rs232Cmd, AFrameCutOffByTheNextIsDroppedForIt) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Bytes cut = Frame("0;0;31;0;1;0.000");
@@ -463,6 +523,7 @@ TEST_F(Rs232Cmd, AFrameCutOffByTheNextIsDroppedForIt) {
 }
 
 TEST_F(Rs232Cmd, ALostReplyToARelativeMoveIsAskedForWithEot) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Reply(Hex("01 02 30 3B 30 3B"));  // then nothing
@@ -521,6 +582,7 @@ TEST_F(Rs232Cmd, StaleBytesNeverPassForTheReply) {
 
 // A long command whose end never comes: EndTimeout counts from the first acknowledgement through the polls.
 TEST_F(Rs232Cmd, ALongCommandThatNeverEndsEndsInEndTimeout) {
+    ConfirmRule();
     fb_->POLLINTERVAL.value = pac::ToIecTime(std::chrono::milliseconds(5));
     fb_->ENDTIMEOUT.value = pac::ToIecTime(std::chrono::milliseconds(40));
     Start(0x0A87, 2, pac::test::BitsOf(5552.0F));
@@ -576,6 +638,7 @@ TEST_F(Rs232Cmd, AfterAFailedCommandTheNextWaitsForAQuietLine) {
 // A noise burst that looks like the start of a frame spoils the first reply; the controller's reply after it
 // is still taken while the FB waits for the line to fall quiet, and a relative move is not asked for again.
 TEST_F(Rs232Cmd, AReplyAfterANoiseBurstIsTakenWhileTheLineFallsQuiet) {
+    ConfirmRule();
     Start(0x0A89, 1, pac::test::BitsOf(10.0F));
     Sent();
     Reply(Hex("02 41 02 42 03 33 41"));  // STX, text, STX again, text, ETX, then a letter among the CHECK digits

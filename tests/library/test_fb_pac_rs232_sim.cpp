@@ -98,6 +98,13 @@ public:
         return (cmd_->RETRIES.value + 1) * request + scans(pac::FromIecTime(cmd_->ENDTIMEOUT.value)) + 2;
     }
 
+    // A PLC restart: a fresh FB (no CHECK rule confirmed, empty buffers) on a controller that keeps its
+    // state and its last reply.
+    void Restart() {
+        cmd_ = PAC_FB(FB_PAC_RS232CMD);
+        checker_.Restart();
+    }
+
     pac::FbInstance<FB_PAC_RS232CMD>& Cmd() { return cmd_; }
     pac::SerialRig& Rig() { return rig_; }
     pac::sim::PaControl& Pac() { return rig_.Controller(); }
@@ -205,16 +212,16 @@ TEST(Rs232Readings, EveryCheckRuleTheControllerMayVerify) {
     }
 }
 
-// The case on the default controller: the first two requests are lost in an outage. AUTO tries the
-// other XOR on the silence, never "0"; so a request spoilt later (5552.0 -> 5553.0) is refused with 16 and
-// sent again, never carried out.
+// The case on the default controller: the first two requests are lost in an outage (the probe: the
+// CHECK of 1906;4 is 1, one spoilt bit from "0"). AUTO tries the other XOR on the silence, never "0"; so a
+// request spoilt later (5552.0 -> 5553.0) is refused with 16 and sent again, never carried out.
 TEST(Rs232Readings, AnOutageAtTheStartNeverLeavesTheLinkUnchecked) {
     SerialCmdPlc plc(SerialTiming{9600, 1, 10});
     plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
     plc.Pac().Io().intRegisters.SetInt(4, 4444);
     pac::sim::SerialWire& toPac = plc.Rig().Line().toPac;
-    const int request = RequestBytes("1906;4;0;0");
-    ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("1906;4;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
+    const int request = RequestBytes("190B;0;0;0");
+    ASSERT_EQ(request, static_cast<int>(pac::sim::rs232::Frame("190B;0;0;0", pac::sim::rs232::CheckRule::kXorWithEtx).size()));
     for (int i = 0; i < 2 * request; ++i) toPac.DropByte(toPac.BytesSent() + static_cast<std::uint64_t>(i));
     const FinalOutcome read = plc.Run(0x1906, 4);
     ASSERT_TRUE(read.Done()) << read;
@@ -282,6 +289,186 @@ TEST(Rs232Readings, ASilentControllerEndsInTimeout) {
     EXPECT_TRUE(outcome.Error());
     EXPECT_EQ(outcome.ErrorId(), kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
     EXPECT_EQ(plc.Pac().Serial().Counters().frames, 4u) << "the frame and Retries = 3 more";
+}
+
+// ---- a command that must not run twice, and the CHECK rule not yet confirmed ----
+
+// Every reading of the CHECK a controller may have (docs/sim_serial.md): which rule it verifies, whether it
+// takes "0", and what it does with a frame whose CHECK it refuses (16; silence with 16 as its last reply;
+// silence as if the frame never came, so an EOT repeats the reply before it).
+struct CheckReading {
+    std::string name;
+    pac::sim::SerialPortConfig port;
+};
+
+std::vector<CheckReading> CheckReadings() {
+    using pac::sim::CheckVerification;
+    std::vector<CheckReading> readings;
+    for (CheckVerification verify : {CheckVerification::kXorText, CheckVerification::kXorWithEtx}) {
+        for (bool zero : {true, false}) {
+            for (int bad = 0; bad < 3; ++bad) {
+                pac::sim::SerialPortConfig port;
+                port.verify = verify;
+                port.acceptZeroCheck = zero;
+                port.answerBadCheck = bad == 0;
+                port.discardBadCheckFrame = bad == 2;
+                readings.push_back({std::string(verify == CheckVerification::kXorText ? "xor-text" : "xor-etx") +
+                                        (zero ? " or 0" : "") + (bad == 0 ? ", 16" : bad == 1 ? ", silent" : ", discards"),
+                                    port});
+            }
+        }
+    }
+    pac::sim::SerialPortConfig none;
+    none.verify = CheckVerification::kNone;
+    readings.push_back({"no check", none});
+    // The discarding controller with the other readings the suites use: mode replies at once, no answer
+    // to a poll after BE = 1, STX alone.
+    pac::sim::SerialPortConfig discards;
+    discards.verify = CheckVerification::kXorWithEtx;
+    discards.answerBadCheck = false;
+    discards.discardBadCheckFrame = true;
+    discards.holdModeReplies = false;
+    discards.requireSoh = false;
+    readings.push_back({"xor-etx or 0, discards, mode replies at once", discards});
+    discards.holdModeReplies = true;
+    discards.answerPollWhenIdle = false;
+    readings.push_back({"xor-etx or 0, discards, no idle poll reply", discards});
+    return readings;
+}
+
+// How often the controller carried out exactly this command (without a command error) since entry `from`
+// of its ledger, and how often anything else that is not a read.
+struct Executions {
+    int exact = 0;
+    int other = 0;
+};
+
+Executions ExecutionsOf(const pac::sim::SerialPort& port, std::size_t from, std::uint16_t code, std::uint16_t param,
+                        std::uint32_t data) {
+    Executions e;
+    const auto& commands = port.Commands();
+    for (std::size_t i = from; i < commands.size(); ++i) {
+        const pac::sim::SerialCommand& c = commands[i];
+        if (c.error != 0) continue;
+        if (c.code == code && c.parameter == param && (c.data == data || !pac::sim::rs232::TakesData(code))) {
+            ++e.exact;
+        } else if (c.code < 0x1000 || c.code > 0x1FFF) {
+            ++e.other;
+        }
+    }
+    return e;
+}
+
+struct OnceCommand {
+    std::uint16_t code;
+    std::uint16_t param;
+    std::uint32_t data;
+};
+
+// After a PLC restart no CHECK rule is confirmed. The controller still holds its last reply (QUIT 0, BE 1). A
+// command that must not run twice (0603, 0909, 0A89) and one that may (0906) are each carried out exactly once
+// and Done on every reading; a controller that discards a frame with the other rule's CHECK and answers the
+// EOT after it with that old reply must not end the new command Done.
+TEST(Rs232Readings, AfterAPlcRestartEachCommandRunsExactlyOnce) {
+    const OnceCommand commands[] = {
+        {0x0603, 0, 0}, {0x0909, 0, 0}, {0x0A89, 1, BitsOf(20.0F)}, {0x0906, 5, 555}};
+    for (const CheckReading& reading : CheckReadings()) {
+        for (const OnceCommand& c : commands) {
+            SCOPED_TRACE(reading.name + ", command " + std::to_string(c.code));
+            SerialCmdPlc plc(SerialTiming{9600, 1, 10}, reading.port);
+            plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+            if (c.code == 0x0A89) {
+                ASSERT_TRUE(plc.Run(0x0603, 0).Done());
+                ASSERT_TRUE(plc.Run(0x0A8D, 1, BitsOf(500.0F)).Done());
+            } else {
+                ASSERT_TRUE(plc.Run(0x1906, 4).Done());
+            }
+            plc.Restart();
+            plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+            const std::size_t before = plc.Pac().Serial().Commands().size();
+            const FinalOutcome outcome = plc.Run(c.code, c.param, c.data);
+            const Executions runs = ExecutionsOf(plc.Pac().Serial(), before, c.code, c.param, c.data);
+            EXPECT_EQ(runs.exact, 1) << outcome;
+            EXPECT_EQ(runs.other, 0);
+            EXPECT_TRUE(outcome.Done()) << outcome;
+            if (c.code == 0x0603) {
+                EXPECT_EQ(plc.Pac().OperatingStatus(), 31);
+            } else if (c.code == 0x0A89) {
+                EXPECT_EQ(plc.Pac().Axes().Motion(1).Position(), 20.0);
+            } else if (c.code == 0x0906) {
+                EXPECT_EQ(plc.AckData(), 555u);
+            }
+        }
+    }
+}
+
+// Every single-bit flip of every byte the FB sends for command `c`, each on a fresh FB (no rule confirmed):
+// the command is never carried out as another command or value, never twice, and it is Done only if it ran
+// exactly once, with its own answer. The next command on the same FB then runs as usual. Returns the flips.
+int FlipEveryBitOfTheRequests(const pac::sim::SerialPortConfig& port, const OnceCommand& c) {
+    // The clean run: the bytes the FB sends, and the command's own answer.
+    std::uint64_t sent = 0;
+    std::uint32_t ack = 0;
+    {
+        SerialCmdPlc plc(SerialTiming{9600, 1, 10}, port);
+        plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+        EXPECT_TRUE(plc.Run(c.code, c.param, c.data).Done());
+        sent = plc.Rig().Line().toPac.BytesSent();
+        ack = plc.AckData();
+    }
+    int flips = 0;
+    for (std::uint64_t byte = 0; byte < sent; ++byte) {
+        for (int bit = 0; bit < 7; ++bit) {
+            SCOPED_TRACE("byte " + std::to_string(byte) + ", bit " + std::to_string(bit));
+            ++flips;
+            SerialCmdPlc plc(SerialTiming{9600, 1, 10}, port);
+            plc.Cmd()->TIMEOUT.value = pac::ToIecTime(100ms);
+            plc.Rig().Line().toPac.CorruptByte(byte, static_cast<std::uint8_t>(1U << bit));
+            const FinalOutcome outcome = plc.Run(c.code, c.param, c.data);
+            EXPECT_TRUE(outcome.Ended()) << outcome;
+            const Executions runs = ExecutionsOf(plc.Pac().Serial(), 0, c.code, c.param, c.data);
+            EXPECT_EQ(runs.other, 0) << outcome;
+            EXPECT_LE(runs.exact, 1) << outcome;
+            if (outcome.Done()) {
+                EXPECT_EQ(runs.exact, 1) << outcome;
+                EXPECT_EQ(plc.AckData(), ack);
+            }
+            const std::size_t before = plc.Pac().Serial().Commands().size();
+            const FinalOutcome next = plc.Run(0x0906, 9, 99);
+            EXPECT_TRUE(next.Done()) << next;
+            EXPECT_EQ(ExecutionsOf(plc.Pac().Serial(), before, 0x0906, 9, 99).exact, 1);
+            if (::testing::Test::HasFailure()) return flips;  // the first flip that breaks it is the one to read
+        }
+    }
+    return flips;
+}
+
+// The flips against a controller that verifies one XOR and also takes "0" as "not checked" (answering 16 to
+// a CHECK it refuses): the XOR with ETX (the FB's first rule is the other one) and the XOR of the text (the
+// simulator's default). Deterministic: the flips are enumerated, no random choice.
+TEST(Rs232BitFlips, NoFlipOfARequestEndsDoneWithoutItsCommandRunOnce) {
+    const OnceCommand commands[] = {
+        {0x0906, 5, 12345},  // its text XORs to 0: under the XOR of the text its CHECK would read "0"
+        {0x0603, 0, 0},
+        {0x0909, 0, 0},
+        {0x0907, 1, BitsOf(5552.0F)},
+        {0x1906, 4, 0},  // CHECK 1 or 2: one flipped bit makes it "0", which the controller takes unchecked
+    };
+    int flips = 0;
+    for (pac::sim::CheckVerification verify :
+         {pac::sim::CheckVerification::kXorWithEtx, pac::sim::CheckVerification::kXorText}) {
+        pac::sim::SerialPortConfig port;
+        port.verify = verify;
+        port.acceptZeroCheck = true;
+        for (const OnceCommand& c : commands) {
+            SCOPED_TRACE(std::string(verify == pac::sim::CheckVerification::kXorText ? "xor-text" : "xor-etx") +
+                         " or 0, command " + std::to_string(c.code));
+            flips += FlipEveryBitOfTheRequests(port, c);
+            ASSERT_FALSE(HasFailure());
+        }
+    }
+    RecordProperty("flips", flips);
+    EXPECT_GT(flips, 2 * 5 * 20 * 7) << "every byte of every request flipped";
 }
 
 // ---- a faulty line ----

@@ -51,6 +51,22 @@ TEST(SerialPort, AnswersABadCheckWithSilenceWhenSetSo) {
     port.answerBadCheck = false;
     SerialRig rig(port);
     EXPECT_TRUE(rig.Exchange(Frame("0906;7;0;5", 99)).empty());
+    EXPECT_EQ(HexOf(rig.Exchange({rs232::kEot})), Ack("16;0;1;0;0;0")) << "16 is the last reply";
+}
+
+// The reading that discards such a frame altogether: an EOT after it repeats the reply before it.
+TEST(SerialPort, DiscardsABadCheckFrameWhenSetSo) {
+    SerialPortConfig port;
+    port.answerBadCheck = false;
+    port.discardBadCheckFrame = true;
+    SerialRig rig(port);
+    EXPECT_EQ(HexOf(rig.Exchange(Frame("0906;7;0;5", CheckRule::kXorText))), Ack("0;1;1;0;0;5"));
+    EXPECT_TRUE(rig.Exchange(Frame("0909;0;0;0", 99)).empty());
+    EXPECT_EQ(HexOf(rig.Exchange({rs232::kEot})), Ack("0;1;1;0;0;5"));
+    EXPECT_EQ(rig.Pac().Serial().Counters().checkErrors, 1u);
+    ASSERT_EQ(rig.Pac().Serial().Commands().size(), 1u) << "0909 was never carried out";
+    EXPECT_EQ(rig.Pac().Serial().Commands()[0].code, 0x0906);
+    EXPECT_EQ(rig.Pac().Serial().Commands()[0].data, 5u);
 }
 
 TEST(SerialPort, RepliesWithTheReplyCheckRule) {

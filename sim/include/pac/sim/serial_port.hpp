@@ -39,6 +39,8 @@ struct SerialPortConfig {
     bool acceptZeroCheck = true;        // 3.1: the XOR sum "can be replaced by the value 0"
     rs232::CheckRule replyCheck = rs232::CheckRule::kXorWithEtx;
     bool answerBadCheck = true;         // 16 "sum of digits error"; false: no answer
+    bool discardBadCheckFrame = false;  // with answerBadCheck false: the frame is dropped as if never sent, so an
+                                        // EOT repeats the reply before it; false: 16 becomes the last reply
     bool answerSequenceErrors = true;   // 17 / 18 "wrong sequence"; false: no answer
     bool requireSoh = true;             // false: STX alone begins a frame
     bool answerPollWhenIdle = true;     // EOT after the master has seen BE = 1: the last reply again; false: none
@@ -48,6 +50,16 @@ struct SerialPortConfig {
     int positionDecimals = 3;           // Q_PAR of an axis position (3.4.3: 1255.000)
     std::chrono::nanoseconds turnaround{0};  // from the end of a request to the first byte of its reply
     bool answers = true;                // false: a port that takes commands but never answers
+};
+
+// A command the port handed to the command processor: what the controller carried out (error 0) or
+// refused with a command error, and when.
+struct SerialCommand {
+    std::uint16_t code = 0;
+    std::uint16_t parameter = 0;
+    std::uint32_t data = 0;
+    std::uint16_t error = 0;
+    std::chrono::nanoseconds at{0};
 };
 
 struct SerialCounters {
@@ -77,6 +89,8 @@ public:
     const SerialCounters& Counters() const { return counters_; }
     // The texts of every reply sent (between STX and ETX), oldest first.
     const std::vector<std::string>& Replies() const { return replies_; }
+    // Every command handed to the command processor, oldest first.
+    const std::vector<SerialCommand>& Commands() const { return commands_; }
 
 private:
     struct Ack {
@@ -104,6 +118,7 @@ private:
     bool endUnreported_ = false;  // the last reply said BE = 0
     SerialCounters counters_;
     std::vector<std::string> replies_;
+    std::vector<SerialCommand> commands_;
 };
 
 }  // namespace pac::sim
