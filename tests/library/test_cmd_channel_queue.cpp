@@ -186,6 +186,50 @@ TEST_F(CmdChannelQueue, ACommandWhoseFbIsNoLongerCalledIsFollowedToItsEndOfProce
     EXPECT_TRUE(fbs_[0]->ACKNOWLEDGED.value);
 }
 
+// The program leaves A out after its move was acknowledged, and the move's END OF PROCESSING never comes: the
+// interface waits no longer than A's EndTimeout, records 16#8002 for A and frees the interface; A, called again,
+// ends with it.
+TEST_F(CmdChannelQueue, AnAbsentFbsCommandIsWaitedForNoLongerThanItsEndTimeout) {
+    fbs_[0]->ENDTIMEOUT.value = TIME{0, 3'000'000};
+    Request(0, 0x0A87, 1);
+    Cycle(1);
+    Acknowledge(false);
+    Cycle(1);
+    ASSERT_TRUE(fbs_[0]->ACKNOWLEDGED.value);
+    called_[0] = false;
+    Cycle(3);
+    EXPECT_TRUE(interface_->INFLIGHT.value) << "within EndTimeout of A's last call";
+    Cycle(5);
+    EXPECT_FALSE(interface_->INFLIGHT.value) << "freed after EndTimeout";
+    called_[0] = true;
+    Cycle(1);
+    ASSERT_TRUE(OutputsOf(fbs_[0]).error) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_END_TIMEOUT"]);
+}
+
+// The program leaves A out after its read went out, and no acknowledgement comes: after A's Timeout the interface
+// records 16#8001 for A and holds the interface as after A's own 16#8001 (the read parked under the same SEND
+// flag), until the reply shows that flag; A, called again, ends with 16#8001.
+TEST_F(CmdChannelQueue, AnAbsentFbsUnacknowledgedCommandIsHeldAfterItsTimeout) {
+    fbs_[0]->TIMEOUT.value = TIME{0, 3'000'000};
+    Request(0, 0x1906, 7);
+    Cycle(1);
+    ASSERT_EQ(ModuleCode(), 0x1906);
+    const bool send = SendFlag();
+    called_[0] = false;
+    Cycle(8);
+    EXPECT_TRUE(interface_->INFLIGHT.value) << "held for the late acknowledgement";
+    EXPECT_EQ(ModuleCode(), kGetStat) << "the read parked over it";
+    EXPECT_EQ(SendFlag(), send) << "under the same SEND flag";
+    called_[0] = true;
+    Cycle(1);
+    ASSERT_TRUE(OutputsOf(fbs_[0]).error) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]);
+    Acknowledge(true);
+    Cycle(1);
+    EXPECT_FALSE(interface_->INFLIGHT.value) << "the acknowledgement frees it";
+}
+
 // A controller whose PLC cycle equals its own, with no bus latency: in the reply of the next scan it takes
 // over a toggled module (RECEIVE := SEND), a move or a stop processes for three scans, anything else ends at
 // once. It records the code of every command it took over.

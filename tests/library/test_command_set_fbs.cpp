@@ -466,6 +466,46 @@ TEST_P(CommandSetFbs, ManualTraverseReleasedBeforeItsStartWentOutSendsNothing) {
     EXPECT_EQ(rig.Motion(1).Position(), start);
 }
 
+// The jog key held while another command keeps the interface longer than the jog's Timeout: the start is never
+// queued (a queued command could not be withdrawn), and the jog ends with 16#8006, nothing sent.
+TEST_P(CommandSetFbs, ManualTraverseWhoseStartFindsNoFreeInterfaceWithinTimeoutSendsNothing) {
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.StartInterfaceHoldingMove(300.0F);
+    rig.AimJog(5000.0F);
+    rig.jog->TIMEOUT.value = pac::ToIecTime(30ms);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.Settle(1);
+    ASSERT_TRUE(rig.jog->BUSY.value);
+    rig.ScanWhile([&] { return rig.jog->BUSY.value; });
+    EXPECT_TRUE(rig.jog->ERROR.value);
+    EXPECT_EQ(rig.jog->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]);
+    EXPECT_TRUE(rig.moveAbs->BUSY.value) << "the move still holds the interface";
+    rig.jog->TRAVERSE.value = FALSE;
+    ASSERT_TRUE(rig.Wait(rig.moveAbs).Done());
+    rig.Release(rig.moveAbs);
+    rig.SettleFor(100ms);
+    EXPECT_EQ(rig.Count(0x0A90), 0u) << "the start never went out";
+}
+
+// The jog key released in the scan after its start went out, before or with the start's acknowledgement: the
+// stop 0A9A follows the start at once, and the axis stands.
+TEST_P(CommandSetFbs, ManualTraverseReleasedWhileItsStartIsOnItsWayIsStoppedAtOnce) {
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.AimJog(5000.0F);
+    rig.jog->TRAVERSE.value = TRUE;
+    rig.Settle(1);
+    ASSERT_TRUE(rig.jog->BUSY.value);
+    rig.jog->TRAVERSE.value = FALSE;
+    rig.ScanWhile([&] { return rig.jog->BUSY.value; });
+    EXPECT_TRUE(rig.jog->DONE.value) << "ErrorID " << std::hex << rig.jog->ERRORID.value;
+    EXPECT_EQ(rig.Count(0x0A90), 1u) << "the start went out";
+    EXPECT_EQ(rig.Count(0x0A9A), 1u) << "and the stop after it";
+    rig.SettleFor(300ms);
+    EXPECT_FALSE(rig.Motion(1).Moving());
+}
+
 // The jog key released while the next keep-alive waits behind another command (0A87 of axis 2): the stop takes
 // no ticket and goes out as soon as the interface is free, before the queued keep-alive.
 TEST_P(CommandSetFbs, ManualTraverseReleasedWhileAKeepAliveWaitsIsStoppedFirst) {
