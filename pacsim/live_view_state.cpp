@@ -10,6 +10,7 @@
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
 #include "pac/sim/operating_status.hpp"
+#include "gvl_names.hpp"
 #include "text_format.hpp"
 
 namespace pac::pacsim {
@@ -68,7 +69,11 @@ std::uint32_t Dword(const pac::sim::ProcessImage& image, std::size_t byte) {
     return static_cast<std::uint32_t>(Word(image, byte)) << 16 | Word(image, byte + 2);
 }
 
+// The library's name of the command (GVL_PAC's PAC_CMD_...), else the simulator's.
 std::string CommandName(std::uint16_t code) {
+    static const pac::scenario::GvlNames names;
+    const std::string gvl = names.CommandName(code);
+    if (!gvl.empty()) return gvl;
     const pac::sim::CommandInfo* info = pac::sim::FindCommand(code);
     return info ? info->name : "unknown command";
 }
