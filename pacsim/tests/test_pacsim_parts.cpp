@@ -243,6 +243,14 @@ TEST(FaultInjector, EachFaultActsAndBadRequestsAreRefused) {
     EXPECT_EQ(controller.Bus().ToPacLink().Fault(), pac::sim::LinkFault::kNone);
     pac::pacsim::InjectFault(controller, milliseconds(100), {"power_cycle", 1, 0});
     EXPECT_FALSE(controller.Controller().Booted());
+    // A restart brings back the configuration's state; a power cycle would keep the battery-buffered registers.
+    pac::pacsim::SimConfig withRegister = pac::pacsim::SimConfigLoader::FromText(
+        R"({"controllers": [{"modules": {"ctrl": true, "axes": 1}, "controller": {"r_registers": {"1": 640.0}}}]})");
+    pac::pacsim::SimulatedController restarted(withRegister.controllers[0]);
+    restarted.Controller().Io().realRegisters.SetReal(1, 5.0F);
+    pac::pacsim::InjectFault(restarted, milliseconds(100), {"restart", 1, 0});
+    EXPECT_EQ(restarted.Controller().Io().realRegisters.GetReal(1), 640.0F);
+    EXPECT_FALSE(restarted.Controller().Booted());
     try {
         pac::pacsim::InjectFault(controller, milliseconds(100), {"meltdown", 1, 0});
         FAIL() << "an unknown fault was taken";
