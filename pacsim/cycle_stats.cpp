@@ -20,7 +20,8 @@ std::chrono::microseconds CycleStats::Quantile(double q) const {
     std::uint64_t seen = 0;
     for (std::size_t i = 0; i < kBuckets; ++i) {
         seen += buckets_[i];
-        if (seen >= rank) return std::chrono::microseconds((static_cast<std::int64_t>(i) + 1) * kBucketUs);
+        // The bucket's upper edge, but never above the largest value seen (which lies in the last bucket).
+        if (seen >= rank) return std::min(std::chrono::microseconds((static_cast<std::int64_t>(i) + 1) * kBucketUs), Max());
     }
     return Max();
 }

@@ -14,7 +14,7 @@ class CycleStats {
 public:
     void Add(std::chrono::nanoseconds lateness);
     std::uint64_t Cycles() const { return count_; }
-    // The upper edge of the bucket that holds the fraction `q` (0..1] of the cycles; 0 without cycles.
+    // The upper edge of the bucket that holds the fraction `q` (0..1] of the cycles, at most Max(); 0 without cycles.
     std::chrono::microseconds Quantile(double q) const;
     std::chrono::microseconds Max() const { return std::chrono::duration_cast<std::chrono::microseconds>(max_); }
 

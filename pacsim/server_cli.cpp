@@ -13,6 +13,7 @@
 
 #include "controller_setup.hpp"
 #include "cycle_stats.hpp"
+#include "live_view_server.hpp"
 #include "modbus_gateway.hpp"
 #include "register_map.hpp"
 #include "scenario_error.hpp"
@@ -32,7 +33,7 @@ constexpr const char* kProgram = "pac-sim";
 constexpr std::chrono::milliseconds kMaxSleep{50};
 
 void Usage(std::ostream& out) {
-    out << "usage: " << kProgram << " [--port N] [--address IPV4] [--seconds S] CONFIG.json\n"
+    out << "usage: " << kProgram << " [--port N] [--http N] [--address IPV4] [--seconds S] [--stats] CONFIG.json\n"
         << "       " << kProgram << " --check CONFIG.json | --print-map CONFIG.json | --version | --help\n"
         << "  Runs the simulated PA-CONTROLs of CONFIG.json in real time, each at its own controller cycle, and\n"
         << "  serves their Profibus modules as Modbus TCP registers, as a Profibus-to-Modbus gateway would\n"
@@ -40,6 +41,7 @@ void Usage(std::ostream& out) {
         << "  --port N        the port of every controller that names none (default: the file's \"port\", else "
         << kDefaultPort << ";\n"
         << "                  0: a free port, printed at start)\n"
+        << "  --http N        serve the live view and the fault endpoint on HTTP port N (0: a free port)\n"
         << "  --address IPV4  the address to listen on (default 127.0.0.1: this machine only)\n"
         << "  --seconds S     stop after S seconds\n"
         << "  --stats         at the stop, also print how late the controllers' cycles ran and the CPU used\n"
@@ -52,6 +54,7 @@ void Usage(std::ostream& out) {
 struct Options {
     std::string config;
     int port = -1;
+    int http = -1;  // the live view's port; -1: none
     std::string address = "127.0.0.1";
     double seconds = 0.0;
     bool check = false;
@@ -116,7 +119,10 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
             }
         }
     }
+    std::unique_ptr<LiveViewServer> view;
+    if (options.http >= 0) view = std::make_unique<LiveViewServer>(controllers, clock, options.address, options.http);
     gateway.Start();
+    if (view) view->Start();
     for (auto& bridge : bridges) {
         if (bridge) bridge->Start();
     }
@@ -130,10 +136,12 @@ int Run(const Options& options, const SimConfig& config, std::ostream& out) {
             out << spec.name << ": RS232 (COM1) " << bridges[i]->Where() << ", " << spec.rs232->baud << " baud\n";
         }
     }
+    if (view) out << kProgram << ": live view http://" << options.address << ":" << view->Port() << "/\n";
     out << kProgram << ": running; Ctrl-C stops" << std::endl;
 
     auto stats = std::make_unique<CycleStats>();  // 800 kB of buckets: not on the stack
     const int signal = RunUntilStopped(controllers, clock, options.seconds, *stats);
+    if (view) view->Stop();
     gateway.Stop();
     for (auto& bridge : bridges) {
         if (bridge) bridge->Stop();
@@ -172,7 +180,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             options.stats = true;
         } else if (arg == "--print-map") {
             options.printMap = true;
-        } else if (arg == "--port" || arg == "--address" || arg == "--seconds") {
+        } else if (arg == "--port" || arg == "--http" || arg == "--address" || arg == "--seconds") {
             const std::string* v = value();
             char* rest = nullptr;
             const double number = v ? std::strtod(v->c_str(), &rest) : 0.0;
@@ -180,13 +188,15 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             in_addr ip{};
             if (arg == "--address" && v && inet_pton(AF_INET, v->c_str(), &ip) == 1) {
                 options.address = *v;
+            } else if (arg == "--http" && isNumber && number >= 0 && number <= 65535 && number == static_cast<int>(number)) {
+                options.http = static_cast<int>(number);
             } else if (arg == "--port" && isNumber && number >= 0 && number <= 65535 && number == static_cast<int>(number)) {
                 options.port = static_cast<int>(number);
             } else if (arg == "--seconds" && isNumber && number > 0) {
                 options.seconds = number;
             } else {
                 const char* needs = arg == "--address" ? "an IPv4 address"
-                                    : arg == "--port"  ? "a port 0..65535"
+                                    : arg == "--port" || arg == "--http" ? "a port 0..65535"
                                                        : "a number of seconds above 0";
                 err << kProgram << ": " << arg << " needs " << needs << "\n";
                 return kExitInvalid;

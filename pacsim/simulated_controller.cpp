@@ -61,6 +61,7 @@ std::vector<std::uint8_t> SimulatedController::ReceiveSerial(std::chrono::nanose
 void SimulatedController::CatchUp(std::chrono::nanoseconds now) {
     runner_.CatchUp(now);
     fromPac_ = bus_.ReadFromPac(now);
+    history_.Follow(now, pac_.LastToPacImage().Cmd(), pac_.LastFromPacImage().Cmd());
 }
 
 void SimulatedController::WriteToPac(std::chrono::nanoseconds now, int first, const std::vector<std::uint16_t>& values) {

@@ -16,6 +16,7 @@
 #include "pac/sim/pac_runner.hpp"
 #include "pac/sim/process_image.hpp"
 #include "pac/sim/serial_line.hpp"
+#include "cmd_history.hpp"
 #include "register_map.hpp"
 #include "sim_config.hpp"
 
@@ -51,6 +52,8 @@ public:
 
     pac::sim::PaControl& Controller() { return pac_; }
     pac::sim::Bus& Bus() { return bus_; }
+    // The CMD handshakes the controller has seen (pac-sim's live view), as of the last CatchUp.
+    const CmdHistory& History() const { return history_; }
 
 private:
     std::mutex mutex_;
@@ -62,6 +65,7 @@ private:
     pac::sim::PacRunner runner_;
     pac::sim::ProcessImage toPac_;
     pac::sim::ProcessImage fromPac_;
+    CmdHistory history_;
 };
 
 }  // namespace pac::pacsim

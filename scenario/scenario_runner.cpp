@@ -38,9 +38,10 @@ Enum Enumerator(const char* const (&names)[N], const std::string& name) {
 // interface and FB_PAC_Axis on each axis module, run step by step.
 class Session {
 public:
-    Session(const Scenario& scenario, RunObserver& observer)
+    Session(const Scenario& scenario, RunObserver& observer, RemoteController* remote)
         : scenario_(scenario),
           observer_(observer),
+          remote_(remote),
           axes_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AXIS)),
           automatic_(static_cast<std::size_t>(scenario.modules.axes), PAC_FB(FB_PAC_AUTOMATICMODULE)),
           plc_(RigTimingOf(scenario.timing), ControllerConfig(scenario.controller), Layout(scenario.modules)) {
@@ -74,6 +75,11 @@ public:
             });
         }
         if (scenario.modules.diagnosis) CallDiagnosis(*scenario.modules.diagnosis);
+        if (remote_) {
+            plc_.ExchangeImagesWith(
+                [this](std::chrono::nanoseconds now, pac::sim::ProcessImage& in) { remote_->ReadFromPac(now, in); },
+                [this](std::chrono::nanoseconds now, const pac::sim::ProcessImage& out) { remote_->WriteToPac(now, out); });
+        }
         plc_.Start();
         ApplyControllerSetup(plc_.Controller(), scenario.controller);
     }
@@ -100,7 +106,11 @@ public:
                 } else if constexpr (std::is_same_v<Action, AutomaticStep>) {
                     report.failures = RunAutomatic(action);
                 } else if constexpr (std::is_same_v<Action, FaultStep>) {
-                    InjectFault(plc_, action);
+                    if (remote_) {
+                        remote_->InjectFault(action);
+                    } else {
+                        InjectFault(plc_, action);
+                    }
                 } else {
                     Wait(action);
                 }
@@ -381,6 +391,7 @@ private:
 
     const Scenario& scenario_;
     RunObserver& observer_;
+    RemoteController* remote_;
     // The FBs come before plc_, whose programs refer to them.
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
@@ -422,7 +433,7 @@ std::vector<std::size_t> RunReport::FailedSteps() const {
 }
 
 RunReport ScenarioRunner::Run(RunObserver& observer) const {
-    Session session(scenario_, observer);  // refuses a controller setup the simulator rejects, before any output
+    Session session(scenario_, observer, remote_);  // refuses a controller setup the simulator rejects, before any output
     observer.OnStart(scenario_);
     RunReport report;
     for (std::size_t i = 0; i < scenario_.steps.size(); ++i) {

@@ -151,9 +151,22 @@ public:
     virtual void OnEnd(const RunReport& /*report*/) {}
 };
 
+// A PA-CONTROL outside the process (pac-sim over Modbus TCP, docs/virtual_commissioning.md): the PLC's process
+// image goes through it at the start and the end of each scan, and the scenario's faults act on it.
+class RemoteController {
+public:
+    virtual ~RemoteController() = default;
+    virtual void ReadFromPac(std::chrono::nanoseconds now, pac::sim::ProcessImage& fromPac) = 0;
+    virtual void WriteToPac(std::chrono::nanoseconds now, const pac::sim::ProcessImage& toPac) = 0;
+    virtual void InjectFault(const FaultStep& fault) = 0;
+};
+
 class ScenarioRunner {
 public:
-    explicit ScenarioRunner(const Scenario& scenario) : scenario_(scenario) {}
+    // With `remote`, the FBs drive that controller instead of the simulated one in the process (whose state,
+    // AxisSample::simPosition, then tells nothing).
+    explicit ScenarioRunner(const Scenario& scenario, RemoteController* remote = nullptr)
+        : scenario_(scenario), remote_(remote) {}
 
     // Each call runs on a fresh PLC and PA-CONTROL, from time 0. A controller setup the simulator
     // rejects (a system parameter it does not have, a value outside its limits) is a ScenarioError,
@@ -163,6 +176,7 @@ public:
 
 private:
     const Scenario& scenario_;
+    RemoteController* remote_;
 };
 
 }  // namespace pac::scenario

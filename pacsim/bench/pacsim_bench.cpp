@@ -2,8 +2,11 @@
 // (and by the target bench): the Modbus TCP round trip on loopback, writing the CMD module (function code 16)
 // and reading the reply (function code 4), against pac-sim and against pymodbus's own server as the anchor, both
 // with one libmodbus client; and how late the cycles of 32 controllers with 8 axis modules each at a 1 ms
-// controller cycle run, with the CPU pac-sim takes (pac-sim --stats).
+// controller cycle run, with the CPU pac-sim takes (pac-sim --stats); and the library over Modbus: the demo
+// scenario's steps through pac-sim-plc at a 10 ms PLC cycle, the scans from each Execute edge to the end against
+// the same steps in the process.
 //   pacsim_bench --pac-sim PATH --config TWO_AXES.json --python VENV_PYTHON --anchor anchor_server.py
+//                --plc PAC_SIM_PLC --demo-config DEMO_CONTROLLER.json --scenario DEMO.json
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -31,6 +34,16 @@ namespace {
 constexpr int kWarmUp = 200;
 constexpr int kRoundTrips = 5000;
 constexpr int kScaleSeconds = 5;
+constexpr int kControllers = 32;
+
+// Manual 2.5.1 / 2.5.2 (CTRL: register 4) and 2.7.1 / 2.7.2 (axis k: registers 8 + 6 (k - 1) ..).
+constexpr std::uint16_t kCtrlNoRequest = 0x0007;
+constexpr std::uint16_t kCtrlStartOnline = 0x0010;
+constexpr std::uint16_t kCtrlOnlineActive = 1U << 10;
+constexpr std::uint16_t kAxisOn = 1U << 0;
+constexpr std::uint16_t kAxisStart = 1U << 2;
+constexpr std::uint16_t kAxisAbsolute = 1U << 6;
+constexpr std::uint16_t kAxisActive = 1U << 7;
 
 // A program of its own with its standard output on a pipe, read line by line; terminated and reaped at the end.
 class Child {
@@ -125,6 +138,68 @@ std::vector<double> RoundTrips(int port) {
     return times;
 }
 
+// Switches every controller on `port` (unit ids 1..kControllers) to ONLINE with its 8 axes on, then moves every
+// axis between 0.0 and 100.0 (absolute, full speed; Start falls once ACTIVE shows the job taken, the next job
+// starts once ACTIVE fell) until pac-sim ends; the moves started.
+long DriveAllAxes(int port) {
+    modbus_t* ctx = modbus_new_tcp("127.0.0.1", port);
+    if (ctx == nullptr || modbus_connect(ctx) != 0) throw std::runtime_error("cannot connect to port " + std::to_string(port));
+    constexpr int kRegisters = 8 + 6 * 8;
+    struct Axis {
+        bool start = false;
+        bool high = false;  // the target: 100.0, else 0.0
+    };
+    std::vector<std::vector<Axis>> axes(kControllers, std::vector<Axis>(8));
+    long moves = 0;
+    std::uint16_t in[kRegisters];
+    std::uint16_t out[kRegisters - 8];
+    const auto writeAxes = [&](int unit) {
+        for (int k = 0; k < 8; ++k) {
+            const Axis& axis = axes[static_cast<std::size_t>(unit - 1)][static_cast<std::size_t>(k)];
+            const std::uint16_t target = axis.high ? 0x42C8 : 0x0000;  // 100.0 or 0.0 as a REAL, high word
+            const std::uint16_t module[6] = {0, static_cast<std::uint16_t>(kAxisOn | kAxisAbsolute | (axis.start ? kAxisStart : 0)),
+                                             1000, 1000, target, 0};
+            std::copy(module, module + 6, out + 6 * k);
+        }
+        return modbus_write_registers(ctx, 8, kRegisters - 8, out) == kRegisters - 8;
+    };
+    for (int unit = 1; unit <= kControllers; ++unit) {
+        modbus_set_slave(ctx, unit);
+        const std::uint16_t online = kCtrlNoRequest | kCtrlStartOnline;
+        std::uint16_t status = 0;
+        for (int tries = 0; tries < 1000 && !(status & kCtrlOnlineActive); ++tries) {
+            if (modbus_write_register(ctx, 4, online) != 1 || modbus_read_input_registers(ctx, 4, 1, &status) != 1) {
+                throw std::runtime_error(std::string("ONLINE: ") + modbus_strerror(errno));
+            }
+        }
+        if (!(status & kCtrlOnlineActive)) throw std::runtime_error("a controller did not start ONLINE");
+        if (modbus_write_register(ctx, 4, kCtrlNoRequest) != 1 || !writeAxes(unit)) {
+            throw std::runtime_error(std::string("Axis ON: ") + modbus_strerror(errno));
+        }
+    }
+    for (bool running = true; running;) {
+        for (int unit = 1; unit <= kControllers && running; ++unit) {
+            modbus_set_slave(ctx, unit);
+            running = modbus_read_input_registers(ctx, 0, kRegisters, in) == kRegisters;
+            for (int k = 0; k < 8 && running; ++k) {
+                Axis& axis = axes[static_cast<std::size_t>(unit - 1)][static_cast<std::size_t>(k)];
+                const bool active = in[8 + 6 * k + 1] & kAxisActive;
+                if (axis.start && active) {
+                    axis.start = false;
+                } else if (!axis.start && !active) {
+                    axis.start = true;
+                    axis.high = !axis.high;
+                    ++moves;
+                }
+            }
+            running = running && writeAxes(unit);
+        }
+    }
+    modbus_close(ctx);
+    modbus_free(ctx);
+    return moves;
+}
+
 double Quantile(const std::vector<double>& sorted, double q) {
     return sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sorted.size())))];
 }
@@ -167,17 +242,41 @@ int main(int argc, char** argv) {
         {
             std::ofstream out(config);
             out << "{\"port\": 0, \"controllers\": [";
-            for (int i = 1; i <= 32; ++i) {
+            for (int i = 1; i <= kControllers; ++i) {
                 out << (i > 1 ? ", " : "") << "{\"unit_id\": " << i
-                    << ", \"timing\": {\"pac_cycle_ms\": 1}, \"modules\": {\"ctrl\": true, \"axes\": 8}}";
+                    << ", \"timing\": {\"pac_cycle_ms\": 1}, \"modules\": {\"ctrl\": true, \"axes\": 8}"
+                    << ", \"controller\": {\"inputs\": {\"1\": true}, \"system_parameters\": {\"4\": 1}}}";
             }
             out << "]}\n";
         }
-        Child scale({pacSim, "--seconds", std::to_string(kScaleSeconds), "--stats", config});
-        const std::string stats = scale.Await(R"(pac-sim: (cycles .*))");
-        std::printf("\n32 controllers with CTRL and 8 axis modules each, 1 ms controller cycle, no client, %d s: %s\n",
-                    kScaleSeconds, stats.substr(0, stats.find_last_not_of('\n') + 1).c_str());
+        for (const bool moving : {false, true}) {
+            Child scale({pacSim, "--seconds", std::to_string(kScaleSeconds), "--stats", config});
+            const int port = std::stoi(scale.Await(R"(Modbus TCP 127\.0\.0\.1:(\d+) )"));
+            scale.Await("running");
+            std::string load = "no client: the axes stand";
+            if (moving) {
+                const auto moves = DriveAllAxes(port);
+                load = "one libmodbus client switches each controller to ONLINE and its 8 axes on, then moves every "
+                       "axis back and forth between 0 and 100 (" + std::to_string(moves) + " moves started), reading "
+                       "and writing each controller's modules in turn";
+            }
+            const std::string stats = scale.Await(R"(pac-sim: (cycles .*))");
+            std::printf("\n%d controllers with CTRL and 8 axis modules each, 1 ms controller cycle, %d s, %s: %s\n",
+                        kControllers, kScaleSeconds, load.c_str(), stats.substr(0, stats.find_last_not_of('\n') + 1).c_str());
+        }
         std::remove(config.c_str());
+
+        std::printf("\nThe library over Modbus TCP: the demo scenario's steps with the library's FBs in pac-sim-plc's "
+                    "real-time scan loop (10 ms PLC cycle) against pac-sim, and in the process on the simulated bus "
+                    "(the same PLC cycle, the scenario's bus latency of 1 cycle each way):\n\n");
+        Child demo({pacSim, "--port", "0", "--http", "0", Option(argc, argv, "--demo-config")});
+        const std::string port = demo.Await(R"(Modbus TCP 127\.0\.0\.1:(\d+) )");
+        const std::string http = demo.Await(R"(live view http://127\.0\.0\.1:(\d+)/)");
+        demo.Await("running");
+        Child plc({Option(argc, argv, "--plc"), "--port", port, "--http", http, "--plc-cycle-ms", "10", "--compare",
+                   Option(argc, argv, "--scenario")});
+        for (std::string line = plc.Line(); !line.empty(); line = plc.Line()) std::printf("%s", line.c_str());
+        demo.Stop(SIGINT);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pacsim_bench: %s\n", e.what());
         return 1;

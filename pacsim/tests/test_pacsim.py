@@ -94,14 +94,17 @@ def wait_for(predicate, seconds, what):
 
 
 class PacSim:
-    """pac-sim on a free loopback port: the controllers it prints ({name: (port, unit id)}) and their RS232 ports
-    ({name: port}), stopped by a signal."""
+    """pac-sim on a free loopback port: the controllers it prints ({name: (port, unit id)}), their RS232 ports
+    ({name: port}) and the live view's port (with --http), stopped by a signal."""
 
     def __init__(self, config=TWO_AXES, args=()):
         self.process = subprocess.Popen([PACSIM, "--port", "0", "--address", LOOPBACK, *args, config],
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        self.controllers, self.serial_ports = {}, {}
+        self.controllers, self.serial_ports, self.http_port = {}, {}, None
         for line in self.process.stdout:
+            view = re.match(r"pac-sim: live view http://127\.0\.0\.1:(\d+)/", line)
+            if view:
+                self.http_port = int(view.group(1))
             serial = re.match(r"(\S+): RS232 \(COM1\) (?:raw TCP 127\.0\.0\.1:(\d+)|pseudo-terminal (\S+)), ", line)
             if serial:
                 self.serial_ports[serial.group(1)] = int(serial.group(2)) if serial.group(2) else serial.group(3)

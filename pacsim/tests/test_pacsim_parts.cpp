@@ -1,13 +1,19 @@
 // pac-sim's parts without a socket: which Modbus requests CheckRequest lets through and where (at every edge of
 // the protocol's quantities and of the map), the register layout of the images, and a controller whose
-// registers written at one time reach the simulated PA-CONTROL as one bus image.
+// registers written at one time reach the simulated PA-CONTROL as one bus image; the live view's handshake history
+// and its fault injection.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "cmd_history.hpp"
+#include "fault_injector.hpp"
 #include "modbus_request.hpp"
+#include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/image8.hpp"
 #include "register_map.hpp"
 #include "sim_config.hpp"
@@ -179,3 +185,78 @@ TEST(SimConfigLoader, DefaultsAndThePortOverride) {
 }
 
 }  // namespace
+
+// The live view's handshake history (pacsim/cmd_history.hpp): a command is a SEND change, answered by the first
+// reply with RF = SEND and BF or KF; an earlier reply with RF still the old SEND does not answer it.
+TEST(CmdHistory, ACommandIsASendChangeAnsweredByRfEqualToSend) {
+    using pac::sim::CommandImage;
+    using pac::sim::ReplyFrame;
+    pac::pacsim::CmdHistory history;
+    const auto reply = [](bool rf, bool bf, bool kf, std::uint32_t ack) {
+        ReplyFrame frame;
+        frame.receiveFlag = rf;
+        frame.endOfProcessing = bf;
+        frame.commandErrorFlag = kf;
+        frame.ackData = ack;
+        frame.operatingStatus = 1;
+        return frame.Encode();
+    };
+    history.Follow(std::chrono::milliseconds(5), CommandImage(0x1907, 1, 0, false), reply(false, true, false, 0));
+    EXPECT_TRUE(history.Handshakes().empty());  // SEND as at power-on: no command
+    history.Follow(std::chrono::milliseconds(10), CommandImage(0x1907, 1, 0, true), reply(false, true, false, 0));
+    ASSERT_EQ(history.Handshakes().size(), 1U);
+    EXPECT_FALSE(history.Handshakes().back().answered);  // RF is still the old SEND
+    history.Follow(std::chrono::milliseconds(15), CommandImage(0x1907, 1, 0, true), reply(true, true, false, 640));
+    EXPECT_TRUE(history.Handshakes().back().answered);
+    EXPECT_EQ(history.Handshakes().back().reply.ackData, 640U);
+    EXPECT_EQ(history.Handshakes().back().command.code, 0x1907);
+    // A refused command: KF answers it; the next one toggles SEND back.
+    history.Follow(std::chrono::milliseconds(20), CommandImage(0x1906, 2000, 0, false), reply(true, true, false, 640));
+    EXPECT_FALSE(history.Handshakes().back().answered);
+    history.Follow(std::chrono::milliseconds(25), CommandImage(0x1906, 2000, 0, false), reply(false, false, true, 0));
+    EXPECT_TRUE(history.Handshakes().back().answered);
+    EXPECT_TRUE(history.Handshakes().back().reply.commandErrorFlag);
+    // The newest 16 are kept; the total counts them all.
+    for (int i = 0; i < 20; ++i) {
+        history.Follow(std::chrono::milliseconds(30 + i), CommandImage(0x1906, static_cast<std::uint16_t>(i), 0, i % 2 == 0),
+                       reply(false, false, false, 0));
+    }
+    EXPECT_EQ(history.Handshakes().size(), pac::pacsim::CmdHistory::kCapacity);
+    EXPECT_EQ(history.Total(), 22U);
+    EXPECT_EQ(history.Handshakes().back().command.parameter, 19);
+}
+
+// Fault injection (pacsim/fault_injector.hpp): each kind acts on the controller; a bad request names what is wrong.
+TEST(FaultInjector, EachFaultActsAndBadRequestsAreRefused) {
+    pac::pacsim::SimConfig config = pac::pacsim::SimConfigLoader::FromText(
+        R"({"controllers": [{"timing": {"pac_cycle_ms": 5, "boot_ms": 50}, "modules": {"ctrl": true, "axes": 2}}]})");
+    pac::pacsim::SimulatedController controller(config.controllers[0]);
+    using std::chrono::milliseconds;
+    controller.CatchUp(milliseconds(100));
+    pac::pacsim::InjectFault(controller, milliseconds(100), {"axis_error", 2, 70});
+    EXPECT_EQ(controller.Controller().Axes().Motion(2).AxisError(), 70);
+    pac::pacsim::InjectFault(controller, milliseconds(100), {"limit_switch", 1, 0});
+    EXPECT_EQ(controller.Controller().Axes().Motion(1).AxisError(), 64);
+    pac::pacsim::InjectFault(controller, milliseconds(100), {"link_loss", 1, 0});
+    EXPECT_EQ(controller.Bus().FromPacLink().Fault(), pac::sim::LinkFault::kDisconnected);
+    pac::pacsim::InjectFault(controller, milliseconds(100), {"link_restore", 1, 0});
+    EXPECT_EQ(controller.Bus().ToPacLink().Fault(), pac::sim::LinkFault::kNone);
+    pac::pacsim::InjectFault(controller, milliseconds(100), {"power_cycle", 1, 0});
+    EXPECT_FALSE(controller.Controller().Booted());
+    // A restart brings back the configuration's state; a power cycle would keep the battery-buffered registers.
+    pac::pacsim::SimConfig withRegister = pac::pacsim::SimConfigLoader::FromText(
+        R"({"controllers": [{"modules": {"ctrl": true, "axes": 1}, "controller": {"r_registers": {"1": 640.0}}}]})");
+    pac::pacsim::SimulatedController restarted(withRegister.controllers[0]);
+    restarted.Controller().Io().realRegisters.SetReal(1, 5.0F);
+    pac::pacsim::InjectFault(restarted, milliseconds(100), {"restart", 1, 0});
+    EXPECT_EQ(restarted.Controller().Io().realRegisters.GetReal(1), 640.0F);
+    EXPECT_FALSE(restarted.Controller().Booted());
+    try {
+        pac::pacsim::InjectFault(controller, milliseconds(100), {"meltdown", 1, 0});
+        FAIL() << "an unknown fault was taken";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("limit_switch"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(pac::pacsim::InjectFault(controller, milliseconds(100), {"axis_error", 3, 0}), std::invalid_argument);
+    EXPECT_THROW(pac::pacsim::InjectFault(controller, milliseconds(100), {"axis_error", 1, 70000}), std::invalid_argument);
+}

@@ -31,7 +31,13 @@ PacRig::PacRig(RigTiming timing, pac::sim::PaControlConfig config, pac::sim::Mod
       toPac_(layout.Bytes()),
       fromPac_(layout.Bytes()) {
     runner_.AttachTo(task_);  // first: the controller's cycle runs before a scan at the same time
-    task_.AddProgram([this] { fromPac_ = bus_.ReadFromPac(clock_.Now()); });
+    task_.AddProgram([this] {
+        if (remoteRead_) {
+            remoteRead_(clock_.Now(), fromPac_);
+        } else {
+            fromPac_ = bus_.ReadFromPac(clock_.Now());
+        }
+    });
 }
 
 pac::FbInstance<FB_PAC_CMDINTERFACE>& PacRig::CmdInterface() {
@@ -82,8 +88,20 @@ void PacRig::CallImage(
     task_.AddProgram([this, program] { program(fromPac_, toPac_); });
 }
 
+void PacRig::ExchangeImagesWith(ImageRead read, ImageWrite write) {
+    if (!read || !write) throw std::invalid_argument("PacRig::ExchangeImagesWith: empty function");
+    remoteRead_ = std::move(read);
+    remoteWrite_ = std::move(write);
+}
+
 void PacRig::Start() {
-    task_.AddProgram([this] { bus_.WriteToPac(clock_.Now(), toPac_); });
+    task_.AddProgram([this] {
+        if (remoteWrite_) {
+            remoteWrite_(clock_.Now(), toPac_);
+        } else {
+            bus_.WriteToPac(clock_.Now(), toPac_);
+        }
+    });
 }
 
 void PacRig::Scan(int n) {

@@ -86,6 +86,14 @@ public:
     // and may rewrite the output image the programs before it left.
     void CallImage(std::function<void(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac)> program);
 
+    // The process image exchanged with a PA-CONTROL outside the process instead of the simulated one (pac-sim
+    // over Modbus TCP, docs/virtual_commissioning.md): `read` fills the input image at the start of each scan,
+    // `write` takes the output image at its end, each with the scan's time. Call before Start(); the simulated
+    // controller then only idles.
+    using ImageRead = std::function<void(std::chrono::nanoseconds now, pac::sim::ProcessImage& fromPac)>;
+    using ImageWrite = std::function<void(std::chrono::nanoseconds now, const pac::sim::ProcessImage& toPac)>;
+    void ExchangeImagesWith(ImageRead read, ImageWrite write);
+
     // After the FBs: the master's image goes out on the bus at the end of each scan.
     void Start();
 
@@ -160,6 +168,8 @@ private:
     std::unique_ptr<pac::FbInstance<FB_PAC_CMDINTERFACE>> cmdInterface_;
     bool cmdInterfaceRegistered_ = false;
     bool cmdInterfaceCalled_ = true;
+    ImageRead remoteRead_;
+    ImageWrite remoteWrite_;
 };
 
 }  // namespace pac
