@@ -30,14 +30,10 @@ set(PACST_CACHE_DIR "${PAC_SHARED_BUILD_DIR}/pacst-cache" CACHE PATH "pacst's pa
 option(PAC_ST_LINE_DIRECTIVES "pacst precedes each statement's C with #line naming its ST line" ON)
 # One C unit per library (CMake's unity build of pacst's C files, as MATIEC's one POUS.c): the compiler then
 # inlines the small FUNCTIONs into their callers, with EN and ENO folded away, and reads POUS.h once
-# instead of once per ST file. Off with the coverage (gcov's counters per file) and where a change should
-# recompile only its file (-DPAC_ST_UNITY=OFF); docs/benchmarks.md has what it saves.
-if(PAC_COVERAGE)
-  set(pac_st_unity_default OFF)
-else()
-  set(pac_st_unity_default ON)
-endif()
-option(PAC_ST_UNITY "Compile each translated ST library as one C unit" ${pac_st_unity_default})
+# instead of once per ST file. Not for the library whose coverage is measured (pac_st_coverage: gcov's
+# counters per file), nor where a change should recompile only its file (-DPAC_ST_UNITY=OFF);
+# docs/benchmarks.md has what it saves.
+option(PAC_ST_UNITY "Compile each translated ST library as one C unit" ON)
 
 include("${CMAKE_CURRENT_LIST_DIR}/PacPythonVenv.cmake")
 # pacst is needed with either compiler: with MATIEC it writes the declarations C++ code includes.
