@@ -26,7 +26,7 @@ function(pac_st_coverage target)
     message(FATAL_ERROR "PAC_COVERAGE needs PAC_ST_COMPILER=pacst: only pacst writes the #line directives")
   endif()
   # -O0 after the build type's flags: optimised code merges and moves lines. One C file per ST file
-  # (PAC_ST_UNITY is off with the coverage): st_coverage.py reads the counters per object file.
+  # (no unity build for this library): st_coverage.py reads the counters per object file.
   target_compile_options(${target} PRIVATE --coverage -O0)
   set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
   target_link_options(${target} INTERFACE --coverage)
