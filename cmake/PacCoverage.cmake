@@ -25,11 +25,10 @@ function(pac_st_coverage target)
   if(NOT PAC_ST_COMPILER STREQUAL "pacst")
     message(FATAL_ERROR "PAC_COVERAGE needs PAC_ST_COMPILER=pacst: only pacst writes the #line directives")
   endif()
-  # -O0 after the build type's flags: optimised code merges and moves lines. PACST_NO_FORCING drops the
-  # force-flag test of every write (pacst_iec.h), a branch of the runtime on every ST assignment that no
-  # test of the library takes; the ST itself compiles to the same statements.
+  # -O0 after the build type's flags: optimised code merges and moves lines. One C file per ST file
+  # (no unity build for this library): st_coverage.py reads the counters per object file.
   target_compile_options(${target} PRIVATE --coverage -O0)
-  target_compile_definitions(${target} PRIVATE PACST_NO_FORCING)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
   target_link_options(${target} INTERFACE --coverage)
 
   set(out "${CMAKE_BINARY_DIR}/coverage")

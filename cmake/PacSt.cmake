@@ -28,6 +28,12 @@ set(PACST_PYTHON "${PACST_VENV}/bin/python" CACHE INTERNAL "")
 set(PACST_CACHE_DIR "${PAC_SHARED_BUILD_DIR}/pacst-cache" CACHE PATH "pacst's parse cache")
 # #line directives: compiler messages, debuggers, sanitizers and gcov name the .st line of a statement.
 option(PAC_ST_LINE_DIRECTIVES "pacst precedes each statement's C with #line naming its ST line" ON)
+# One C unit per library (CMake's unity build of pacst's C files, as MATIEC's one POUS.c): the compiler then
+# inlines the small FUNCTIONs into their callers, with EN and ENO folded away, and reads POUS.h once
+# instead of once per ST file. Not for the library whose coverage is measured (pac_st_coverage: gcov's
+# counters per file), nor where a change should recompile only its file (-DPAC_ST_UNITY=OFF);
+# docs/benchmarks.md has what it saves.
+option(PAC_ST_UNITY "Compile each translated ST library as one C unit" ON)
 
 include("${CMAKE_CURRENT_LIST_DIR}/PacPythonVenv.cmake")
 # pacst is needed with either compiler: with MATIEC it writes the declarations C++ code includes.
@@ -113,6 +119,9 @@ function(pac_st_library target)
     add_custom_target(${target}_translate DEPENDS "${out}/pacst.stamp")
     add_library(${target} STATIC ${c_files})
     add_dependencies(${target} ${target}_translate)
+    if(PAC_ST_UNITY)
+      set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+    endif()
     target_include_directories(${target} PUBLIC "${out}")
   else()
     # MATIEC's object code, pacst's declarations for C++ (MATIEC's POUS.h is not valid C++), and a

@@ -23,10 +23,21 @@ def _run(command, what, env=None):
     return result.stdout
 
 
-def compile_to(command, obj, what):
-    """Runs the compiler `command` writing `obj`, through ccache where it is installed."""
+def compile_to(command, obj, what, whole=False):
+    """Runs the compiler `command` writing `obj`, through ccache where it is installed. `whole`: the object
+    appears whole or not at all, for one that runs against the same build share (HostBuild._compile); not
+    for an object with gcov's counters, whose notes and counters are named after the compiler's output."""
     launcher = [shutil.which("ccache")] if shutil.which("ccache") else []
-    _run(launcher + command + ["-o", obj], what)
+    if not whole:
+        _run(launcher + command + ["-o", obj], what)
+        return
+    partial = f"{obj}.{os.getpid()}.tmp"
+    try:
+        _run(launcher + command + ["-o", partial], what)
+        os.replace(partial, obj)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
 
 
 def link(exe, objects, libraries, sanitize, coverage=False):
@@ -43,6 +54,9 @@ class HostBuild:
         self.pacst_python = pacst_python or (venv_python if os.path.exists(venv_python) else sys.executable)
         self.st_out = os.path.join(out, "st-c")
         self.obj = os.path.join(out, "obj")
+        # pactest_host.cpp sees the library only (the rig, the scenario loader), as the build's libraries do:
+        # compiled once per build of the project and shared by every run against it, not once per program.
+        self.shared_obj = os.path.join(pac_build.folder, "pactest-host")
         self.exe = os.path.join(out, "pactest_host")
 
     def _pacst(self, *args):
@@ -95,19 +109,24 @@ class HostBuild:
         flags += ["-std=c99", "-fwrapv", "-w"]
         return flags + (["--coverage", "-O0", "-DPACST_NO_FORCING"] if self.coverage else ["-O1"])
 
-    def _compile(self, source, cxx):
+    def _compile(self, source, cxx, shared=False):
         compiler = os.environ.get("CXX" if cxx else "CC", "c++" if cxx else "cc")
-        includes = [self.st_out, project.HOST] + self.pac.include_dirs() + [self.pac.library_c]
+        declared = self.pac.library_c if shared else self.st_out
+        includes = ([] if shared else [self.st_out]) + [project.HOST] + self.pac.include_dirs() + [self.pac.library_c]
         command = [compiler, *self._flags(cxx), *[f"-I{d}" for d in includes], "-c", source]
         # Every file includes POUS.h, which changes with any interface (an FB's pins move every caller's
         # struct offsets) while pacst leaves the text of an unchanged caller's C alone: POUS.h is in the key.
-        with open(os.path.join(self.st_out, "POUS.h"), "rb") as f:
+        with open(os.path.join(declared, "POUS.h"), "rb") as f:
             declarations = f.read()
         key = hashlib.sha1(" ".join(command).encode() + declarations).hexdigest()[:10]
-        obj = os.path.join(self.obj, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
-        if os.path.exists(obj) and os.path.getmtime(obj) >= os.path.getmtime(source):
+        folder = self.shared_obj if shared else self.obj
+        os.makedirs(folder, exist_ok=True)
+        obj = os.path.join(folder, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
+        # the shared host object is also older than a rebuilt library (a rig header may have changed) or host header
+        sources = [source] + ([os.path.join(project.HOST, "pactest_host.hpp")] + self.pac.libraries if shared else [])
+        if os.path.exists(obj) and os.path.getmtime(obj) >= max(os.path.getmtime(f) for f in sources):
             return obj
-        compile_to(command, obj, f"compiling {os.path.basename(source)}")
+        compile_to(command, obj, f"compiling {os.path.basename(source)}", whole=shared)
         return obj
 
     def build(self, symbols, tests):
@@ -120,10 +139,12 @@ class HostBuild:
         library = self.pac.library_stems()
         c_files = [os.path.join(self.st_out, n) for n in sorted(os.listdir(self.st_out))
                    if n.endswith(".c") and os.path.splitext(n)[0] not in library]
-        cxx_files = [generated, os.path.join(project.HOST, "pactest_host.cpp"),
-                     os.path.join(project.HOST, "pactest_natives.cpp")]
+        cxx_files = [generated, os.path.join(project.HOST, "pactest_natives.cpp")]
+        host = os.path.join(project.HOST, "pactest_host.cpp")
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
+            shared = pool.submit(self._compile, host, True, True)
             objects = list(pool.map(lambda s: self._compile(s, s.endswith(".cpp")), c_files + cxx_files))
+            objects.append(shared.result())
         # An earlier build's objects (another key) would add their old lines to the coverage counts.
         keep = {os.path.splitext(o)[0] for o in objects}
         for name in os.listdir(self.obj):

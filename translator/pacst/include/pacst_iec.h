@@ -181,14 +181,15 @@ static inline void __pacst_fault(const char *where, const char *what, long value
     abort();
 }
 
-/* Writes `val` to the part `path` (empty, .MEMBER or .table[i]) of a wrapped variable unless the
- * variable is forced. A coverage build of code that no test forces defines PACST_NO_FORCING: the test of
- * the flag would be a branch of every ST assignment (cmake/PacCoverage.cmake). */
-#ifdef PACST_NO_FORCING
-#define __PACST_SETP(var, path, val) do { (var).value path = (val); } while (0)
-#else
+/* Writes `val` to the part `path` (empty, .MEMBER or .table[i]) of a wrapped variable. Only a build that
+ * defines PACST_FORCING skips the write when the variable's flags carry the force bit, as MATIEC's
+ * __SET_VAR does: the test runtime forces nothing, and the flag's test in every ST assignment cost a load
+ * and a branch each (docs/benchmarks.md). PACST_NO_FORCING, the older spelling of the default, wins. */
+#if defined(PACST_FORCING) && !defined(PACST_NO_FORCING)
 #define __PACST_SETP(var, path, val) \
     do { if (!((var).flags & __IEC_FORCE_FLAG)) (var).value path = (val); } while (0)
+#else
+#define __PACST_SETP(var, path, val) do { (var).value path = (val); } while (0)
 #endif
 #define __PACST_SET(var, val) __PACST_SETP(var, , val)
 
