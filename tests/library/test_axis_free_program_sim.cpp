@@ -134,8 +134,20 @@ public:
 
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
+            Blip();
             rig_.Scan();
             ++scans_;
+        }
+    }
+
+    // Now and then, outside the named cases, the operating status reads 0 for one or two scans (a status-0 blip).
+    void Blip() {
+        if (blipLeft_ > 0 && --blipLeft_ == 0) rig_.Controller().SetOperatingStatus(31);
+        if (!free_ || scripted_ || blipLeft_ != 0 || rig_.Controller().OperatingStatus() != 31) return;
+        if (std::uniform_int_distribution<int>(0, 799)(random_) == 0) {
+            rig_.Controller().SetOperatingStatus(0);
+            blipLeft_ = 1 + std::uniform_int_distribution<int>(0, 1)(random_);
+            ++blips_;
         }
     }
 
@@ -287,6 +299,8 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
     bool free_ = false;
+    int blipLeft_ = 0;
+    int blips_ = 0;
     bool scripted_ = false;
     Job scriptedJob_;
     Job job_;

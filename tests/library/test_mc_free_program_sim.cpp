@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -63,11 +64,14 @@ struct Block {
     std::size_t ledgerAtEdge = 0;
     std::chrono::nanoseconds edgeTime{0};
     bool missed = false;  // a scan without the call since the edge
+    std::optional<float> scriptedPosition;  // a named case's command
 };
 
 class FreeMcProgram {
 public:
-    explicit FreeMcProgram(const McFreeCase& c) : case_(c), rig_(c.timing, 1, {}, c.order), random_(c.seed) {
+    // `named`: no random commands, no blips: the named cases script each command.
+    explicit FreeMcProgram(const McFreeCase& c, bool named = false)
+        : case_(c), named_(named), rig_(c.timing, 1, {}, c.order), random_(c.seed) {
         auto& b = rig_.Blocks(1);
         auto absolute = [] { return PAC_FB(MC_MOVEABSOLUTE); };
         Add(Kind::kAbsolute, "MC_MoveAbsolute A", b.moveA, absolute);
@@ -86,10 +90,48 @@ public:
 
     void Scan(int n) {
         for (int i = 0; i < n; ++i) {
+            Blip();
             rig_.Scan();
             ++scans_;
         }
     }
+
+    // Now and then, outside the named cases, the operating status reads 0 for one or two scans (a status-0 blip).
+    void Blip() {
+        if (blipLeft_ > 0 && --blipLeft_ == 0) rig_.Pac().SetOperatingStatus(31);
+        if (!free_ || named_ || blipLeft_ != 0 || rig_.Pac().OperatingStatus() != 31) return;
+        if (std::uniform_int_distribution<int>(0, 799)(random_) == 0) {
+            rig_.Pac().SetOperatingStatus(0);
+            blipLeft_ = 1 + std::uniform_int_distribution<int>(0, 1)(random_);
+            ++blips_;
+        }
+    }
+
+    // A named case for block `i` (in the order of the constructor: 0 MC_MoveAbsolute A ... 5 MC_Stop): its next
+    // command goes to `position`, its calls from `from` to `from + length - 1` scans after the edge left out,
+    // Execute falling in the first of them with `fall`.
+    void Script(int i, float position, int from, int length, bool fall) {
+        Block& b = *blocks_.at(static_cast<std::size_t>(i));
+        b.scriptedPosition = position;
+        b.caller->Script(from, length, fall);
+    }
+    // Scans until every scripted block was called idle again (at most `maxScans`); each one's scripts end.
+    bool RunScripts(int maxScans) {
+        auto over = [this] {
+            for (const auto& b : blocks_) {
+                if (b->scriptedPosition && !b->caller->ScriptOver()) return false;
+            }
+            return true;
+        };
+        for (int n = 0; n < maxScans && !over(); ++n) Scan(1);
+        const bool ok = over();
+        for (auto& b : blocks_) {
+            if (b->scriptedPosition) b->caller->EndScript();
+            b->scriptedPosition.reset();
+        }
+        return ok;
+    }
+    FreeCaller::Ended Ended(int i) const { return blocks_.at(static_cast<std::size_t>(i))->caller->LastEnded(); }
 
     const std::vector<std::string>& Violations() const { return log_.Texts(); }
     int Dones(Kind k) const { return dones_[static_cast<int>(k)]; }
@@ -106,9 +148,9 @@ private:
     template <class Fb, class Make>
     void Add(Kind kind, const std::string& name, pac::FbInstance<Fb>& fb, Make fresh) {
         pac::test::FreeCallerOdds odds;
-        odds.newCommand = kind == Kind::kStop || kind == Kind::kHome ? 800 : (kind == Kind::kHalt ? 400 : 150);
-        odds.earlyFall = 150;
-        odds.abandon = kind == Kind::kAbsolute || kind == Kind::kRelative ? 400 : 0;
+        odds.newCommand = named_ ? 0 : (kind == Kind::kStop || kind == Kind::kHome ? 800 : (kind == Kind::kHalt ? 400 : 150));
+        odds.earlyFall = named_ ? 0 : 150;
+        odds.abandon = !named_ && (kind == Kind::kAbsolute || kind == Kind::kRelative) ? 400 : 0;
         blocks_.push_back(std::make_unique<Block>());
         Block& b = *blocks_.back();
         b.kind = kind;
@@ -168,6 +210,7 @@ private:
         const float unique = static_cast<float>(serial_ % 64) * 0.0625F;
         b.velocity = static_cast<float>(250 + b.caller->Draw(751));  // whole units/s: per mille of 1000 units/s
         if (b.kind == Kind::kAbsolute) b.position = 10.0F + static_cast<float>(b.caller->Draw(60)) + unique;
+        if (b.scriptedPosition) b.position = *b.scriptedPosition;
         if (b.kind == Kind::kRelative) {
             b.position = (b.caller->Draw(2) == 0 ? -1.0F : 1.0F) * (2.0F + static_cast<float>(b.caller->Draw(8)) + unique);
         }
@@ -217,11 +260,14 @@ private:
     }
 
     McFreeCase case_;
+    bool named_;
     McRig rig_;
     std::mt19937_64 random_;
     pac::test::ViolationLog log_;
     std::vector<std::unique_ptr<Block>> blocks_;
     bool free_ = false;
+    int blipLeft_ = 0;
+    int blips_ = 0;
     long scans_ = 0;
     int serial_ = 0;
     std::vector<bool> claimed_;
@@ -246,6 +292,48 @@ TEST_P(McFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
                   program.Dones(Kind::kStop),
               3);
 }
+
+// The named cases. MC_MoveAbsolute: its calls left out for 1 to 6 scans from 1 to 14 scans after its edge, with
+// Execute held or falling in the first scan left out: Done for its own job. MC_Stop edged while it moves, its
+// calls left out likewise: the stop ends Done once the axis stands, the move CommandAborted.
+class McSkippedCalls : public ::testing::TestWithParam<McFreeCase> {};
+
+TEST_P(McSkippedCalls, AMoveAndAStopEndForThemselvesWhateverScansTheyMiss) {
+    FreeMcProgram program(GetParam(), true);
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    constexpr int kMoveA = 0;
+    constexpr int kStop = 5;
+    int serial = 0;
+    const int maxScans = GetParam().timing.ScansFor(3s);
+    for (const bool fall : {false, true}) {
+        for (int length = 1; length <= 6; ++length) {
+            for (int from = 1; from <= 14; ++from) {
+                SCOPED_TRACE(std::to_string(length) + " scans left out from scan " + std::to_string(from) +
+                             " after the edge" + (fall ? ", Execute falling in the first" : ""));
+                ++serial;
+                program.Script(kMoveA, (serial % 2 ? 20.0F : 12.0F) + 0.0625F * static_cast<float>(serial % 32), from,
+                               length, fall);
+                ASSERT_TRUE(program.RunScripts(maxScans));
+                EXPECT_EQ(program.Ended(kMoveA), FreeCaller::Ended::kDone) << "the move";
+                if (from > 6) continue;
+                program.Script(kMoveA, serial % 2 ? 70.0F : 5.0F, 1000000, 0, false);
+                program.Scan(GetParam().timing.ScansFor(20ms));
+                program.Script(kStop, 0.0F, from, length, fall);
+                ASSERT_TRUE(program.RunScripts(maxScans));
+                EXPECT_EQ(program.Ended(kStop), FreeCaller::Ended::kDone) << "the stop";
+                EXPECT_EQ(program.Ended(kMoveA), FreeCaller::Ended::kAborted) << "the move it stopped";
+                if (HasFailure()) break;
+            }
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+}
+
+INSTANTIATE_TEST_SUITE_P(Timings, McSkippedCalls,
+                         ::testing::Values(McFreeCase{{1, 10, 0}}, McFreeCase{{5, 1, 3}, pac::test::McCallOrder::kReversed},
+                                           McFreeCase{{1, 3, 1, 2500, 101}}),
+                         McFreeCaseName);
 
 std::vector<McFreeCase> McFreeCases() {
     std::vector<McFreeCase> cases;

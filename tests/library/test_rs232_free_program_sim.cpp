@@ -25,6 +25,7 @@
 #include "pac/sim/command_table.hpp"
 #include "pac/sim/serial_port.hpp"
 #include "pac/st_program.hpp"
+#include "real_bits.hpp"
 
 namespace {
 
@@ -77,6 +78,18 @@ public:
         free_ = true;
     }
 
+    // A named case: `command`, its calls from `from` to `from + length - 1` scans after the edge left out
+    // (Execute falling in the first of them with `fall`); how it ended, once the FB was called idle again.
+    FreeCaller::Ended RunScripted(const FreeCommand& command, int from, int length, bool fall) {
+        scripted_ = true;
+        scriptedCommand_ = command;
+        caller_.Script(from, length, fall);
+        for (int i = 0; i < 100000 && !caller_.ScriptOver(); ++i) Scan(1);
+        caller_.EndScript();
+        scripted_ = false;
+        return caller_.LastEnded();
+    }
+
     void Scan(int n) {
         for (int i = 0; i < n; ++i) {
             rig_.Scan();
@@ -119,7 +132,7 @@ private:
     bool Before() {
         called_ = !free_ || caller_.Plan(scans_, rig_.Now());
         if (!free_) return true;
-        if (caller_.NewCommand()) command_ = pac::test::NextFreeCommand(random_, serial_);
+        if (caller_.NewCommand()) command_ = scripted_ ? scriptedCommand_ : pac::test::NextFreeCommand(random_, serial_);
         if (!called_) {
             missed_ = true;
             return false;
@@ -187,6 +200,8 @@ private:
     FreeCaller caller_;
     pac::FbInstance<FB_PAC_RS232CMD> cmd_ = PAC_FB(FB_PAC_RS232CMD);
     FreeCommand command_;
+    bool scripted_ = false;
+    FreeCommand scriptedCommand_;
     bool free_ = false;
     bool called_ = true;
     bool missed_ = false;
@@ -213,6 +228,41 @@ TEST_P(Rs232FreeProgram, DoneOnlyForTheCommandTheControllerCarriedOutOnce) {
         EXPECT_GT(program.DoneCodes().count(c) ? program.DoneCodes().at(c) : 0, 0) << "no " << std::hex << c << " ended Done";
     }
 }
+
+// The named cases: a write and a move (a long command, followed by EOT polls), their calls left out for 1 to 6
+// scans from 1 to 40 scans after the edge (the request on its way, the reply arriving, between the polls), with
+// Execute held or falling in the first scan left out. Each ends Done for its own command, carried out once.
+class Rs232SkippedCalls : public ::testing::TestWithParam<Rs232FreeCase> {};
+
+TEST_P(Rs232SkippedCalls, ACommandEndsDoneForItselfWhateverScansItMisses) {
+    FreeRs232Program program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    std::uint32_t serial = 0;
+    for (const bool move : {false, true}) {
+        for (const bool fall : {false, true}) {
+            for (int length = 1; length <= 6; ++length) {
+                for (int from = 1; from <= 40; from += move ? 3 : 1) {
+                    SCOPED_TRACE(std::string(move ? "move, " : "write, ") + std::to_string(length) +
+                                 " scans left out from scan " + std::to_string(from) + " after the edge" +
+                                 (fall ? ", Execute falling in the first" : ""));
+                    ++serial;
+                    const FreeCommand command =
+                        move ? FreeCommand{code::kPosAxisAbsolute, 1, pac::test::BitsOf(1.0F + 0.0078125F * static_cast<float>(serial))}
+                             : FreeCommand{code::kPutIntReg, 3, serial};
+                    EXPECT_EQ(program.RunScripted(command, from, length, fall), FreeCaller::Ended::kDone);
+                    if (HasFailure()) break;
+                }
+            }
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+}
+
+INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkippedCalls,
+                         ::testing::Values(Rs232FreeCase{9600, 1, 10}, Rs232FreeCase{38400, 2, 3},
+                                           Rs232FreeCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false}),
+                         Rs232FreeCaseName);
 
 std::vector<Rs232FreeCase> Rs232FreeCases() {
     std::vector<Rs232FreeCase> cases;
