@@ -7,13 +7,15 @@
 // calls a fresh instance from then on). The ledgers: the commands the simulated PA-CONTROL took on its CMD
 // interface (its exchange log) and the operating status it showed after every scan. The property: an FB ends
 // Done only if the controller took exactly its command (code, parameter, data) after this Execute edge, or for
-// FB_PAC_Ctrl reached the requested status after it; a read ends with its register's own value; Busy ends within
+// FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target; a read
+// ends with its register's own value; Busy ends within
 // the documented bound; the PLCopen rules hold on every call. Every random choice comes from the seed in the
 // test's name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -269,6 +271,14 @@ private:
         for (std::size_t k = b.ledgerAtEdge; k < ledger.size(); ++k) {
             if (claimed_[k] || !(ledger[k] == b.command)) continue;
             claimed_[k] = true;
+            const double at = b.kind == Kind::kMove ? rig_.Controller().Axes().Motion(b.command.param).Position() : 0.0;
+            if (b.kind == Kind::kMove && std::fabs(at - pac::test::FloatOf(b.command.data)) > 0.001) {
+                std::string since;
+                for (std::size_t n = b.ledgerAtEdge; n < ledger.size(); ++n) since += "; " + pac::test::Describe(ledger[n]);
+                log_.Add(scans_, rig_.Now(), "FB_PAC_MoveAxisAbsolute ended Done for " + pac::test::Describe(b.command) +
+                                                 " with the axis at " + std::to_string(at) +
+                                                 "; the controller took since its edge" + since);
+            }
             if (b.kind == Kind::kRead &&
                 static_cast<std::uint32_t>(read_->VALUE.value) != pac::test::FreeReadAnswer(b.command)) {
                 log_.Add(scans_, rig_.Now(), "FB_PAC_ReadIntReg ended Done for " + pac::test::Describe(b.command) +

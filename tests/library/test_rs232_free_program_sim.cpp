@@ -4,13 +4,14 @@
 // between the EOT polls of a long command), edges writes, reads, moves, stops and status reads with values no
 // other command used, and lets Execute fall while the FB is Busy. The controller's serial ledger
 // (SerialPort::Commands) is the record of what it executed. The property: the FB ends Done only if the
-// controller carried out exactly its command (code, parameter, data) once after this Execute edge, a read
-// ends with its register's own value, no command runs twice, and Busy ends within the bound the FB's page
+// controller carried out exactly its command (code, parameter, data) once after this Execute edge, a move
+// only once its axis stands at the target, a read ends with its register's own value, no command runs twice, and Busy ends within the bound the FB's page
 // states; the PLCopen rules hold on every call. On every CHECK the controller may verify, and with or without
 // "0" accepted as no CHECK; every random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <random>
@@ -165,11 +166,20 @@ private:
             log_.Add(scans_, rig_.Now(), "Done for " + pac::test::Describe(command_) + ", which the controller carried out " +
                                              std::to_string(executed) + " times after the Execute edge");
         }
+        if (command_.code == code::kPosAxisAbsolute) CheckArrived(command_);
         if (pac::test::IsFreeRead(command_) && cmd_->ACKDATA.value != pac::test::FreeReadAnswer(command_)) {
             log_.Add(scans_, rig_.Now(), "Done for " + pac::test::Describe(command_) + " with AckData " +
                                              std::to_string(cmd_->ACKDATA.value) + ", another command's answer");
         }
         ++doneCodes_[command_.code];
+    }
+
+    // A move is carried out when the axis has arrived (END OF PROCESSING): Done before that is no Done.
+    void CheckArrived(const FreeCommand& move) {
+        const double at = rig_.Controller().Axes().Motion(move.param).Position();
+        if (std::fabs(at - pac::test::FloatOf(move.data)) > 0.001) {
+            log_.Add(scans_, rig_.Now(), "Done for " + pac::test::Describe(move) + " with the axis at " + std::to_string(at));
+        }
     }
 
     // Writes and moves carry values of their own: the controller never carries one out twice.
