@@ -134,20 +134,9 @@ public:
 
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
-            Blip();
+            blips_.BeforeScan(rig_.Controller(), random_, free_ && !scripted_);  // outside the named cases
             rig_.Scan();
             ++scans_;
-        }
-    }
-
-    // Now and then, outside the named cases, the operating status reads 0 for one or two scans (a status-0 blip).
-    void Blip() {
-        if (blipLeft_ > 0 && --blipLeft_ == 0) rig_.Controller().SetOperatingStatus(31);
-        if (!free_ || scripted_ || blipLeft_ != 0 || rig_.Controller().OperatingStatus() != 31) return;
-        if (std::uniform_int_distribution<int>(0, 799)(random_) == 0) {
-            rig_.Controller().SetOperatingStatus(0);
-            blipLeft_ = 1 + std::uniform_int_distribution<int>(0, 1)(random_);
-            ++blips_;
         }
     }
 
@@ -254,18 +243,14 @@ private:
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
 
     void CheckDone() {
-        const auto& ledger = Ledger();
-        claimed_.resize(ledger.size(), false);
         const std::uint32_t bit = TraverseBit(job_.command);
-        for (std::size_t k = ledgerAtEdge_; k < ledger.size(); ++k) {
-            const auto& taken = ledger[k].command;
-            if (claimed_[k] || (taken.control & pac::axis_control::kTraverseBits) != bit) continue;
-            if (HasPosition(job_.command) && taken.position != pac::test::BitsOf(job_.position)) continue;
-            if (IsMove(job_.command) &&
-                (taken.speedPerMille != job_.velocity || taken.accelerationPerMille != job_.acceleration)) {
-                continue;
-            }
-            claimed_[k] = true;
+        const bool taken = claims_.Claim(Ledger(), ledgerAtEdge_, [&](const pac::sim::AxisModuleCommand& taken) {
+            if ((taken.control & pac::axis_control::kTraverseBits) != bit) return false;
+            if (HasPosition(job_.command) && taken.position != pac::test::BitsOf(job_.position)) return false;
+            return !IsMove(job_.command) ||
+                   (taken.speedPerMille == job_.velocity && taken.accelerationPerMille == job_.acceleration);
+        });
+        if (taken) {
             ++dones_;
             if (job_.command == E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE) {
                 ++doneMoves_;
@@ -299,8 +284,7 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
     bool free_ = false;
-    int blipLeft_ = 0;
-    int blips_ = 0;
+    pac::test::StatusBlips blips_;
     bool scripted_ = false;
     Job scriptedJob_;
     Job job_;
@@ -309,7 +293,7 @@ private:
     bool missed_ = false;  // a scan without the call since the edge
     long scans_ = 0;
     std::size_t ledgerAtEdge_ = 0;
-    std::vector<bool> claimed_;
+    pac::test::AxisJobClaims claims_;
     int dones_ = 0;
     int doneMoves_ = 0;
     int aborts_ = 0;

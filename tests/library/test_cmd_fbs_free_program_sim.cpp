@@ -107,11 +107,7 @@ public:
 
     const std::vector<std::string>& Violations() const { return log_.Texts(); }
     int Dones(Kind k) const { return dones_[static_cast<int>(k)]; }
-    int SkipsWhileBusy() const {
-        int n = 0;
-        for (const auto& b : blocks_) n += b->caller->SkipsWhileBusy();
-        return n;
-    }
+    int SkipsWhileBusy() const { return pac::test::SkipsWhileBusyOf(blocks_); }
     int EndedAfterSkip() const { return endedAfterSkip_; }
 
 private:
@@ -237,17 +233,7 @@ private:
         channel = fb->CHANNEL.value;
     }
 
-    // The commands the controller took (a SEND flag change it recognised), oldest first.
-    const std::vector<FreeCommand>& Ledger() {
-        const auto& records = rig_.Controller().Log().Records();
-        for (; logRead_ < records.size(); ++logRead_) {
-            if (!records[logRead_].newCommand) continue;
-            const auto frame = pac::sim::CommandFrame::Decode(records[logRead_].toPac.Cmd());
-            ledger_.push_back({frame.code, frame.parameter, frame.data});
-            claimed_.push_back(false);
-        }
-        return ledger_;
-    }
+    const std::vector<FreeCommand>& Ledger() { return ledger_.Read(rig_.Controller().Log()); }
 
     void CheckDone(Block& b) {
         ++dones_[static_cast<int>(b.kind)];
@@ -267,17 +253,13 @@ private:
             }
             return;
         }
-        const auto& ledger = Ledger();
-        for (std::size_t k = b.ledgerAtEdge; k < ledger.size(); ++k) {
-            if (claimed_[k] || !(ledger[k] == b.command)) continue;
-            claimed_[k] = true;
+        Ledger();
+        if (ledger_.Claim(b.ledgerAtEdge, b.command)) {
             const double at = b.kind == Kind::kMove ? rig_.Controller().Axes().Motion(b.command.param).Position() : 0.0;
             if (b.kind == Kind::kMove && std::fabs(at - pac::test::FloatOf(b.command.data)) > 0.001) {
-                std::string since;
-                for (std::size_t n = b.ledgerAtEdge; n < ledger.size(); ++n) since += "; " + pac::test::Describe(ledger[n]);
                 log_.Add(scans_, rig_.Now(), "FB_PAC_MoveAxisAbsolute ended Done for " + pac::test::Describe(b.command) +
                                                  " with the axis at " + std::to_string(at) +
-                                                 "; the controller took since its edge" + since);
+                                                 "; the controller took since its edge" + ledger_.DescribeFrom(b.ledgerAtEdge));
             }
             if (b.kind == Kind::kRead &&
                 static_cast<std::uint32_t>(read_->VALUE.value) != pac::test::FreeReadAnswer(b.command)) {
@@ -313,9 +295,7 @@ private:
     bool free_ = false;
     long scans_ = 0;
     int serial_ = 0;
-    std::vector<FreeCommand> ledger_;
-    std::vector<bool> claimed_;
-    std::size_t logRead_ = 0;
+    pac::test::CmdLedger ledger_;
     std::map<std::uint8_t, std::chrono::nanoseconds> statusSeen_;
     int dones_[5] = {0, 0, 0, 0, 0};
     int endedAfterSkip_ = 0;

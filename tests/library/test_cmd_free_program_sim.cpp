@@ -205,39 +205,27 @@ private:
 
     // The commands the controller took (a SEND flag change it recognised), oldest first.
     std::size_t LedgerSize() {
-        const auto& records = rig_.Controller().Log().Records();
-        for (; logRead_ < records.size(); ++logRead_) {
-            if (!records[logRead_].newCommand) continue;
-            const auto frame = pac::sim::CommandFrame::Decode(records[logRead_].toPac.Cmd());
-            ledger_.push_back({frame.code, frame.parameter, frame.data});
-            claimed_.push_back(false);
-            if (frame.code == code::kPutIntReg || frame.code == code::kPosAxisAbsolute) {
-                if (++taken_[std::make_tuple(frame.code, frame.parameter, frame.data)] > 1) {
-                    Violation("the controller took " + pac::test::Describe(ledger_.back()) + " twice");
-                }
+        const std::size_t before = ledger_.Size();
+        const auto& commands = ledger_.Read(rig_.Controller().Log());
+        for (std::size_t k = before; k < commands.size(); ++k) {
+            const Command& t = commands[k];
+            if ((t.code == code::kPutIntReg || t.code == code::kPosAxisAbsolute) &&
+                ++taken_[std::make_tuple(t.code, t.param, t.data)] > 1) {
+                Violation("the controller took " + pac::test::Describe(t) + " twice");
             }
         }
-        return ledger_.size();
+        return commands.size();
     }
 
     void CheckDone(int i) {
         Caller& c = callers_[i];
         const auto& fb = fbs_[i];
-        const std::size_t size = LedgerSize();
-        std::size_t match = size;
-        for (std::size_t k = c.ledgerAtEdge; k < size; ++k) {
-            const Command& t = ledger_[k];
-            if (!claimed_[k] && t.code == c.command.code && t.param == c.command.param && t.data == c.command.data) {
-                match = k;
-                break;
-            }
-        }
-        if (match == size) {
+        LedgerSize();
+        if (!ledger_.Claim(c.ledgerAtEdge, c.command)) {
             Violation("FB " + std::to_string(i) + " ended Done for " + pac::test::Describe(c.command) +
                       ", which the controller did not take after its Execute edge");
             return;
         }
-        claimed_[match] = true;
         ++dones_;
         ++doneCodes_[c.command.code];
         if (pac::test::IsFreeRead(c.command) && fb->ACKDATA.value != pac::test::FreeReadAnswer(c.command)) {
@@ -279,10 +267,8 @@ private:
     int reorders_ = 0;
     std::map<std::uint16_t, int> doneCodes_;
     std::map<std::uint32_t, int> errors_;
-    std::vector<Command> ledger_;
-    std::vector<bool> claimed_;
+    pac::test::CmdLedger ledger_;
     std::map<std::tuple<std::uint16_t, std::uint16_t, std::uint32_t>, int> taken_;
-    std::size_t logRead_ = 0;
     std::vector<std::string> violations_;
 };
 

@@ -90,20 +90,9 @@ public:
 
     void Scan(int n) {
         for (int i = 0; i < n; ++i) {
-            Blip();
+            blips_.BeforeScan(rig_.Pac(), random_, free_ && !named_);  // outside the named cases
             rig_.Scan();
             ++scans_;
-        }
-    }
-
-    // Now and then, outside the named cases, the operating status reads 0 for one or two scans (a status-0 blip).
-    void Blip() {
-        if (blipLeft_ > 0 && --blipLeft_ == 0) rig_.Pac().SetOperatingStatus(31);
-        if (!free_ || named_ || blipLeft_ != 0 || rig_.Pac().OperatingStatus() != 31) return;
-        if (std::uniform_int_distribution<int>(0, 799)(random_) == 0) {
-            rig_.Pac().SetOperatingStatus(0);
-            blipLeft_ = 1 + std::uniform_int_distribution<int>(0, 1)(random_);
-            ++blips_;
         }
     }
 
@@ -135,11 +124,7 @@ public:
 
     const std::vector<std::string>& Violations() const { return log_.Texts(); }
     int Dones(Kind k) const { return dones_[static_cast<int>(k)]; }
-    int SkipsWhileBusy() const {
-        int n = 0;
-        for (const auto& b : blocks_) n += b->caller->SkipsWhileBusy();
-        return n;
-    }
+    int SkipsWhileBusy() const { return pac::test::SkipsWhileBusyOf(blocks_); }
     int EndedAfterSkip() const { return endedAfterSkip_; }
     int Abandons() const { return abandons_; }
 
@@ -227,21 +212,15 @@ private:
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Pac().Module(1).TakenJobs(); }
 
     void CheckJob(const Block& b) {
-        const auto& ledger = Ledger();
-        claimed_.resize(ledger.size(), false);
         namespace bit = pac::axis_control;
         const std::uint32_t traverse =
             b.kind == Kind::kAbsolute ? bit::kMoveAbsolute : (b.kind == Kind::kRelative ? bit::kMoveRelative : bit::kHome);
-        for (std::size_t k = b.ledgerAtEdge; k < ledger.size(); ++k) {
-            const auto& taken = ledger[k].command;
-            if (claimed_[k] || (taken.control & bit::kTraverseBits) != traverse) continue;
-            if (b.kind != Kind::kHome && (taken.position != pac::test::BitsOf(b.position) ||
-                                          taken.speedPerMille != static_cast<std::uint16_t>(b.velocity))) {
-                continue;
-            }
-            claimed_[k] = true;
-            return;
-        }
+        const bool taken = claims_.Claim(Ledger(), b.ledgerAtEdge, [&](const pac::sim::AxisModuleCommand& taken) {
+            if ((taken.control & bit::kTraverseBits) != traverse) return false;
+            return b.kind == Kind::kHome || (taken.position == pac::test::BitsOf(b.position) &&
+                                             taken.speedPerMille == static_cast<std::uint16_t>(b.velocity));
+        });
+        if (taken) return;
         std::ostringstream what;
         what << b.caller->Name() << " ended Done for position " << b.position << " at " << b.velocity
              << " units/s, which the controller did not take over after its Execute edge";
@@ -266,11 +245,10 @@ private:
     pac::test::ViolationLog log_;
     std::vector<std::unique_ptr<Block>> blocks_;
     bool free_ = false;
-    int blipLeft_ = 0;
-    int blips_ = 0;
+    pac::test::StatusBlips blips_;
     long scans_ = 0;
     int serial_ = 0;
-    std::vector<bool> claimed_;
+    pac::test::AxisJobClaims claims_;
     std::chrono::nanoseconds stoodAt_{0};
     int dones_[5] = {0, 0, 0, 0, 0};
     int endedAfterSkip_ = 0;

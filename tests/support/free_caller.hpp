@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "pac/sim/pa_control.hpp"
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"
 
@@ -213,6 +214,53 @@ private:
     Ended lastEnded_ = Ended::kNo;
     PlcOpenChecker checker_;
 };
+
+// Now and then the controller's operating status reads 0 for one or two scans (a status-0 blip), then 31 again.
+class StatusBlips {
+public:
+    // Before a scan: ends a blip, or begins one (1 in `odds`) while `allowed` and the status is 31.
+    void BeforeScan(pac::sim::PaControl& pac, std::mt19937_64& random, bool allowed, int odds = 800) {
+        if (left_ > 0 && --left_ == 0) pac.SetOperatingStatus(31);
+        if (!allowed || left_ != 0 || pac.OperatingStatus() != 31) return;
+        if (std::uniform_int_distribution<int>(0, odds - 1)(random) == 0) {
+            pac.SetOperatingStatus(0);
+            left_ = 1 + std::uniform_int_distribution<int>(0, 1)(random);
+            ++count_;
+        }
+    }
+    int Count() const { return count_; }
+
+private:
+    int left_ = 0;
+    int count_ = 0;
+};
+
+// The jobs an axis module took over on a Start edge (AxisModule::TakenJobs), each claimed by one FB's Done.
+class AxisJobClaims {
+public:
+    // Claims the first unclaimed job from index `from` on that `matches`; false if there is none.
+    bool Claim(const std::vector<pac::sim::TakenAxisJob>& jobs, std::size_t from,
+               const std::function<bool(const pac::sim::AxisModuleCommand&)>& matches) {
+        claimed_.resize(jobs.size(), false);
+        for (std::size_t k = from; k < jobs.size(); ++k) {
+            if (claimed_[k] || !matches(jobs[k].command)) continue;
+            claimed_[k] = true;
+            return true;
+        }
+        return false;
+    }
+
+private:
+    std::vector<bool> claimed_;
+};
+
+// The runs left out while Busy, over the blocks of a program (each with a `caller`).
+template <class Blocks>
+int SkipsWhileBusyOf(const Blocks& blocks) {
+    int n = 0;
+    for (const auto& b : blocks) n += b->caller->SkipsWhileBusy();
+    return n;
+}
 
 // Calls `fb` as the program does in this scan (FreeCaller::Plan said so): the Execute in, the command latched by
 // `latch` (the program's inputs of a new command), the body by `call`, then the rules.

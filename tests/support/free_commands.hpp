@@ -8,8 +8,11 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
+#include "pac/sim/exchange_log.hpp"
 #include "real_bits.hpp"
 
 namespace pac::test {
@@ -59,5 +62,43 @@ inline FreeCommand NextFreeCommand(std::mt19937_64& random, int& serial) {
             return {code::kGetState, 0, 0};
     }
 }
+
+// The commands a controller took on its CMD interface (a SEND flag change it recognised), oldest first, read
+// on from its exchange log (which must keep every record of the test); each may be claimed by one FB's Done.
+class CmdLedger {
+public:
+    // Reads the records added since the last call.
+    const std::vector<FreeCommand>& Read(const pac::sim::ExchangeLog& log) {
+        const auto& records = log.Records();
+        for (; read_ < records.size(); ++read_) {
+            if (!records[read_].newCommand) continue;
+            const auto frame = pac::sim::CommandFrame::Decode(records[read_].toPac.Cmd());
+            commands_.push_back({frame.code, frame.parameter, frame.data});
+            claimed_.push_back(false);
+        }
+        return commands_;
+    }
+    std::size_t Size() const { return commands_.size(); }
+    // Claims the first unclaimed `command` from index `from` on; false if there is none.
+    bool Claim(std::size_t from, const FreeCommand& command) {
+        for (std::size_t k = from; k < commands_.size(); ++k) {
+            if (claimed_[k] || !(commands_[k] == command)) continue;
+            claimed_[k] = true;
+            return true;
+        }
+        return false;
+    }
+    // "; 906 parameter 1 data 5; A87 ...": the commands from index `from` on, for a failure's text.
+    std::string DescribeFrom(std::size_t from) const {
+        std::string text;
+        for (std::size_t k = from; k < commands_.size(); ++k) text += "; " + Describe(commands_[k]);
+        return text;
+    }
+
+private:
+    std::vector<FreeCommand> commands_;
+    std::vector<bool> claimed_;
+    std::size_t read_ = 0;
+};
 
 }  // namespace pac::test
