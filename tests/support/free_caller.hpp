@@ -124,7 +124,6 @@ public:
         if (!execute_ || edgeSeen_ || before.busy || before.Final()) return false;
         edgeSeen_ = true;
         edgeTime_ = now_;
-        ++calls_;
         return true;
     }
 
@@ -201,7 +200,6 @@ private:
     int skip_ = 0;
     int holdAfterFinal_ = 0;
     std::chrono::nanoseconds edgeTime_{0};
-    int calls_ = 0;
     int skips_ = 0;
     int skipsWhileBusy_ = 0;
     int abandons_ = 0;
