@@ -226,6 +226,7 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     if (result != axis_error::kNone) return result;
 
     job_ = traverse;
+    taken_.push_back({command, now});
     interrupted_ = false;
     continued_ = false;
     toContinue_ = false;

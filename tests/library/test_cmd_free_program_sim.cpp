@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -21,13 +20,14 @@
 #include <vector>
 
 #include "bus_timing.hpp"
+#include "channel_case.hpp"
 #include "controller_readings.hpp"
+#include "free_commands.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
-#include "real_bits.hpp"
 #include "rig_timing.hpp"
 
 namespace {
@@ -36,31 +36,9 @@ using namespace std::chrono_literals;
 namespace code = pac::sim::code;
 
 constexpr int kFbs = 3;
-constexpr int kReadRegisters = 100;  // N100..N103 hold kReadBase + n and are never written
-constexpr std::int32_t kReadBase = 70000;
 
-struct FreeCase {
-    pac::test::SharingCase sharing;
-    bool twoStepWrite = false;
-    std::uint64_t seed = 1;
-};
-
-std::string FreeCaseName(const ::testing::TestParamInfo<FreeCase>& info) {
-    const ::testing::TestParamInfo<pac::test::SharingCase> sharing(info.param.sharing, info.index);
-    return pac::test::SharingCaseName(sharing) + (info.param.twoStepWrite ? "_TwoStep" : "_OneStep") + "_Seed" +
-           std::to_string(info.param.seed);
-}
-
-void PrintTo(const FreeCase& c, std::ostream* out) {
-    pac::test::PrintTo(c.sharing, out);
-    *out << (c.twoStepWrite ? "; two-step write" : "; one-step write") << "; seed " << c.seed;
-}
-
-struct Command {
-    std::uint16_t code = 0;
-    std::uint16_t param = 0;
-    std::uint32_t data = 0;
-};
+using FreeCase = pac::test::ChannelCase;
+using Command = pac::test::FreeCommand;
 
 // What the test program does with one FB: the command it asked for and since when.
 struct Caller {
@@ -100,7 +78,7 @@ public:
 
     void Scan() {
         if (blipLeft_ > 0 && --blipLeft_ == 0) rig_.Controller().SetOperatingStatus(31);
-        if (blipLeft_ == 0 && getenv("NOSKIP")==nullptr && Draw(400) == 0 && rig_.Controller().OperatingStatus() == 31) {
+        if (blipLeft_ == 0 && Draw(400) == 0 && rig_.Controller().OperatingStatus() == 31) {
             rig_.Controller().SetOperatingStatus(0);  // the status reads 0 for one or two of its cycles
             blipLeft_ = 1 + static_cast<int>(Draw(2));
         }
@@ -130,7 +108,9 @@ private:
     std::uint32_t Draw(std::uint32_t n) { return std::uniform_int_distribution<std::uint32_t>(0, n - 1)(random_); }
 
     void PresetRegisters() {
-        for (int n = 0; n < 4; ++n) rig_.Controller().Io().intRegisters.SetInt(kReadRegisters + n, kReadBase + n);
+        for (int n = 0; n < 4; ++n) {
+            rig_.Controller().Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
+        }
     }
 
     bool RunFixed(int fb, const Command& command) {
@@ -151,30 +131,8 @@ private:
         return false;
     }
 
-    // A command no other start used: writes and moves carry data of their own, so the ledger tells whose
-    // command the controller took.
-    Command NextCommand() {
-        ++serial_;
-        switch (Draw(8)) {
-            case 0:
-            case 1:
-                return {code::kPutIntReg, static_cast<std::uint16_t>(1 + Draw(4)), static_cast<std::uint32_t>(serial_)};
-            case 2:
-            case 3:
-                return {code::kGetIntReg, static_cast<std::uint16_t>(kReadRegisters + Draw(4)), 0};
-            case 4:
-            case 5:
-                return {code::kPosAxisAbsolute, static_cast<std::uint16_t>(1 + Draw(2)),
-                        pac::test::BitsOf(static_cast<float>(serial_) * 0.125F + 0.0625F)};
-            case 6:
-                return {code::kStopAxis, static_cast<std::uint16_t>(1 + Draw(2)), 0};
-            default:
-                return {code::kGetState, 0, 0};
-        }
-    }
-
     void Program(ST_PAC_CMDCHANNEL& channel) {
-        if (free_ && getenv("NOSKIP")==nullptr && Draw(2) == 0) {
+        if (free_ && Draw(2) == 0) {
             std::shuffle(order_.begin(), order_.end(), random_);
             ++reorders_;
         }
@@ -187,7 +145,7 @@ private:
                     ++skips_;
                     continue;
                 }
-                if (getenv("NOSKIP")==nullptr && Draw(6) == 0) {
+                if (Draw(6) == 0) {
                     c.skip = static_cast<int>(Draw(6));  // this scan and up to five more: 1 to 6 scans
                     ++skips_;
                     continue;
@@ -203,7 +161,7 @@ private:
         if (!c.execute) {
             if (c.lowSeen && Draw(5) == 0) {
                 c = Caller{};
-                c.command = NextCommand();
+                c.command = pac::test::NextFreeCommand(random_, serial_);
                 c.execute = true;
                 c.lowSeen = false;
             }
@@ -247,44 +205,31 @@ private:
 
     // The commands the controller took (a SEND flag change it recognised), oldest first.
     std::size_t LedgerSize() {
-        const auto& records = rig_.Controller().Log().Records();
-        for (; logRead_ < records.size(); ++logRead_) {
-            if (!records[logRead_].newCommand) continue;
-            const auto frame = pac::sim::CommandFrame::Decode(records[logRead_].toPac.Cmd());
-            ledger_.push_back({frame.code, frame.parameter, frame.data});
-            claimed_.push_back(false);
-            if (frame.code == code::kPutIntReg || frame.code == code::kPosAxisAbsolute) {
-                if (++taken_[std::make_tuple(frame.code, frame.parameter, frame.data)] > 1) {
-                    Violation("the controller took " + Describe(ledger_.back()) + " twice");
-                }
+        const std::size_t before = ledger_.Size();
+        const auto& commands = ledger_.Read(rig_.Controller().Log());
+        for (std::size_t k = before; k < commands.size(); ++k) {
+            const Command& t = commands[k];
+            if ((t.code == code::kPutIntReg || t.code == code::kPosAxisAbsolute) &&
+                ++taken_[std::make_tuple(t.code, t.param, t.data)] > 1) {
+                Violation("the controller took " + pac::test::Describe(t) + " twice");
             }
         }
-        return ledger_.size();
+        return commands.size();
     }
 
     void CheckDone(int i) {
         Caller& c = callers_[i];
         const auto& fb = fbs_[i];
-        const std::size_t size = LedgerSize();
-        std::size_t match = size;
-        for (std::size_t k = c.ledgerAtEdge; k < size; ++k) {
-            const Command& t = ledger_[k];
-            if (!claimed_[k] && t.code == c.command.code && t.param == c.command.param && t.data == c.command.data) {
-                match = k;
-                break;
-            }
-        }
-        if (match == size) {
-            Violation("FB " + std::to_string(i) + " ended Done for " + Describe(c.command) +
+        LedgerSize();
+        if (!ledger_.Claim(c.ledgerAtEdge, c.command)) {
+            Violation("FB " + std::to_string(i) + " ended Done for " + pac::test::Describe(c.command) +
                       ", which the controller did not take after its Execute edge");
             return;
         }
-        claimed_[match] = true;
         ++dones_;
         ++doneCodes_[c.command.code];
-        if (c.command.code == code::kGetIntReg &&
-            fb->ACKDATA.value != static_cast<std::uint32_t>(kReadBase + c.command.param - kReadRegisters)) {
-            Violation("FB " + std::to_string(i) + " ended Done for " + Describe(c.command) + " with AckData " +
+        if (pac::test::IsFreeRead(c.command) && fb->ACKDATA.value != pac::test::FreeReadAnswer(c.command)) {
+            Violation("FB " + std::to_string(i) + " ended Done for " + pac::test::Describe(c.command) + " with AckData " +
                       std::to_string(fb->ACKDATA.value) + ", another command's answer");
         }
     }
@@ -295,14 +240,8 @@ private:
     void CheckBusyBound(int i) {
         const auto bound = 1s + 1s + 60s + 6 * case_.sharing.timing.PlcCycle() + 100ms;
         if (fbs_[i]->BUSY.value && rig_.Now() - callers_[i].edgeTime > bound) {
-            Violation("FB " + std::to_string(i) + " still Busy with " + Describe(callers_[i].command));
+            Violation("FB " + std::to_string(i) + " still Busy with " + pac::test::Describe(callers_[i].command));
         }
-    }
-
-    static std::string Describe(const Command& c) {
-        std::ostringstream out;
-        out << std::hex << std::uppercase << c.code << " parameter " << std::dec << c.param << " data " << c.data;
-        return out.str();
     }
 
     void Violation(const std::string& what) {
@@ -328,10 +267,8 @@ private:
     int reorders_ = 0;
     std::map<std::uint16_t, int> doneCodes_;
     std::map<std::uint32_t, int> errors_;
-    std::vector<Command> ledger_;
-    std::vector<bool> claimed_;
+    pac::test::CmdLedger ledger_;
     std::map<std::tuple<std::uint16_t, std::uint16_t, std::uint32_t>, int> taken_;
-    std::size_t logRead_ = 0;
     std::vector<std::string> violations_;
 };
 
@@ -354,16 +291,10 @@ TEST_P(CmdFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
 }
 
 std::vector<FreeCase> FreeCases() {
-    std::vector<FreeCase> cases;
-    std::uint64_t seed = 1;
-    const std::vector<pac::test::BusTiming> timings = {{1, 10, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0},
-                                                       {1, 1, 0}, {2, 3, 1, 1500, 606}};
-    for (const auto& sharing : pac::test::OnEveryReading(timings)) {
-        for (bool twoStep : {false, true}) cases.push_back({sharing, twoStep, seed++});
-    }
-    return cases;
+    return pac::test::ChannelCases({{1, 10, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0}, {1, 1, 0}, {2, 3, 1, 1500, 606}},
+                                   true);
 }
 
-INSTANTIATE_TEST_SUITE_P(Readings, CmdFreeProgram, ::testing::ValuesIn(FreeCases()), FreeCaseName);
+INSTANTIATE_TEST_SUITE_P(Readings, CmdFreeProgram, ::testing::ValuesIn(FreeCases()), pac::test::ChannelCaseName);
 
 }  // namespace

@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "bus_timing.hpp"
+#include "channel_case.hpp"
 #include "controller_readings.hpp"
+#include "free_commands.hpp"
 #include "gvl_constants.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/iec_time.hpp"
@@ -32,26 +34,8 @@ namespace code = pac::sim::code;
 
 const pac::test::GvlConstants kGvl;
 
-struct SkipCase {
-    pac::test::SharingCase sharing;
-    bool twoStepWrite = false;
-};
-
-std::string SkipCaseName(const ::testing::TestParamInfo<SkipCase>& info) {
-    const ::testing::TestParamInfo<pac::test::SharingCase> sharing(info.param.sharing, info.index);
-    return pac::test::SharingCaseName(sharing) + (info.param.twoStepWrite ? "_TwoStep" : "_OneStep");
-}
-
-void PrintTo(const SkipCase& c, std::ostream* out) {
-    pac::test::PrintTo(c.sharing, out);
-    *out << (c.twoStepWrite ? "; two-step write" : "; one-step write");
-}
-
-struct Command {
-    std::uint16_t code = 0;
-    std::uint16_t param = 0;
-    std::uint32_t data = 0;
-};
+using SkipCase = pac::test::ChannelCase;
+using Command = pac::test::FreeCommand;
 
 // Two FB_PAC_Cmd on one channel; the test decides in every scan whether each is called, and in which order.
 class TwoCallerPlc {
@@ -136,7 +120,7 @@ private:
 
 int Count(const std::vector<Command>& taken, const Command& c) {
     int n = 0;
-    for (const Command& t : taken) n += t.code == c.code && t.param == c.param && t.data == c.data ? 1 : 0;
+    for (const Command& t : taken) n += t == c ? 1 : 0;
     return n;
 }
 
@@ -251,15 +235,10 @@ TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandAtOnce) 
 }
 
 std::vector<SkipCase> SkipCases() {
-    std::vector<SkipCase> cases;
-    const std::vector<pac::test::BusTiming> timings = {{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2},
-                                                       {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}};
-    for (const auto& sharing : pac::test::OnEveryReading(timings)) {
-        for (bool twoStep : {false, true}) cases.push_back({sharing, twoStep});
-    }
-    return cases;
+    return pac::test::ChannelCases({{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}},
+                                   false);
 }
 
-INSTANTIATE_TEST_SUITE_P(Readings, CmdSkippedCalls, ::testing::ValuesIn(SkipCases()), SkipCaseName);
+INSTANTIATE_TEST_SUITE_P(Readings, CmdSkippedCalls, ::testing::ValuesIn(SkipCases()), pac::test::ChannelCaseName);
 
 }  // namespace

@@ -89,3 +89,30 @@ TEST_F(HandOver, NothingToClearWhenItNeverWrote) {
 }
 
 }  // namespace
+
+// Left out of the scans in which AUTOMATIC ends (docs/fb/FB_PAC_AutomaticModule.md, "The calling contract"): the
+// module keeps the flags until the FB's next call, whatever statuses passed meanwhile; that call clears it if its
+// status is outside AUTOMATIC (and not 0), writes the flags again if AUTOMATIC is back, and leaves an image an
+// axis FB put there meanwhile.
+TEST_F(HandOver, LeftOutWhenAutomaticEndsItClearsTheModuleInItsNextCall) {
+    for (const std::uint8_t next : {kHome, kOnline}) {
+        SCOPED_TRACE(static_cast<int>(next));
+        ASSERT_EQ(Scan(kAutomaticRunning), kFlags);
+        // Not called while the status goes 11, 0, `next`: nothing changes the module.
+        EXPECT_EQ(Module(), kFlags);
+        EXPECT_EQ(Scan(next), Image12{}) << "its next call";
+        EXPECT_EQ(Scan(next), Image12{});
+        ASSERT_EQ(Scan(kAutomaticRunning), kFlags);
+        // AUTOMATIC ended and came back while it was not called: the flags again, nothing cleared.
+        EXPECT_EQ(Scan(kAutomaticRunning), kFlags);
+        // An axis FB took the module while it was not called.
+        const Image12 axisImage{0, 0, 0, 0x03};
+        Put(axisImage);
+        EXPECT_EQ(Scan(next), axisImage);
+        ASSERT_EQ(Scan(kAutomaticRunning), kFlags);
+        EXPECT_EQ(Scan(next, true), kFlags) << "AxisOwnsModule: the axis FB's equal image";
+        ASSERT_EQ(Scan(kAutomaticRunning), kFlags);
+        EXPECT_EQ(Scan(0), kFlags) << "called again while the link is lost: AUTOMATIC may still run";
+        EXPECT_EQ(Scan(next), Image12{});
+    }
+}

@@ -66,12 +66,24 @@ public:
     // Registers `fb` with its TxBuffer / RxBuffer on the line, after the programs registered before.
     template <class Fb>
     void Call(pac::FbInstance<Fb>& fb, std::function<void()> before = {}) {
-        task_.AddProgram([this, &fb, before] {
+        CallWhen(fb, [before] {
             if (before) before();
+            return true;
+        });
+    }
+    // As Call, for a program that leaves the FB out in some scans (a CASE step, an IF branch): the driver
+    // moves the bytes in every scan, the FB runs when `calls` says so, and `after` sees what a call left.
+    template <class Fb>
+    void CallWhen(pac::FbInstance<Fb>& fb, std::function<bool()> calls, std::function<void()> after = {}) {
+        task_.AddProgram([this, &fb, calls, after] {
+            const bool called = calls();
             for (std::uint8_t byte : line_.fromPac.Receive(clock_.Now())) {
                 if (!com_ring::Put(fb->RXBUFFER.value, byte)) ++overruns_;
             }
-            fb();
+            if (called) {
+                fb();
+                if (after) after();
+            }
             const std::vector<std::uint8_t> out = com_ring::TakeAll(fb->TXBUFFER.value);
             if (!out.empty()) line_.toPac.Send(clock_.Now(), out);
         });

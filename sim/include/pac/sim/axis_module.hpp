@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <vector>
 
 #include "pac/axis_module_bits.hpp"
 #include "pac/sim/elements.hpp"
@@ -106,6 +107,13 @@ struct AxisModuleConfig {
     SpeedChange speedChange = SpeedChange::kNotWhileTraversing;
 };
 
+// A job the module took over on a Start edge (the ledger of what the controller executed): its control word,
+// per-mille values and position bytes as the module carried them, and the controller's time.
+struct TakenAxisJob {
+    AxisModuleCommand command;
+    std::chrono::nanoseconds at{0};
+};
+
 class AxisModule {
 public:
     // CMD error numbers of the module itself (the axis's refusals come from ServoAxis, axis_error::k...).
@@ -136,6 +144,8 @@ public:
     bool JobRunning() const { return job_ != 0 && !jobComplete_; }  // taken over, not yet complete
     std::uint16_t CmdError() const { return cmdError_; }
     bool StoppedByCondition() const { return stoppedByG123_; }
+    // Every job taken over since power-on of the simulation, oldest first (Reset keeps them: a ledger).
+    const std::vector<TakenAxisJob>& TakenJobs() const { return taken_; }
 
     // Back to the power-on state (no job, no CMD error, input 1, no edges remembered).
     void Reset();
@@ -172,6 +182,7 @@ private:
     bool stoppedByG123_ = false;
     std::uint16_t cmdError_ = 0;
     std::uint16_t pendingCmdError_ = 0;  // kOneCycleClear: shown from the next cycle
+    std::vector<TakenAxisJob> taken_;
 };
 
 }  // namespace pac::sim

@@ -1,0 +1,384 @@
+// FB_PAC_Axis in a PLC program freer than the other axis suites' (docs/fb/FB_PAC_Axis.md, "Calling contract"):
+// the program calls the FB or leaves it out in every scan (runs of 1 to 6 scans), at every point of a job
+// (waiting for the axis to be free, Start on the wire waiting for the take-over, the job running, stopping),
+// edges absolute and relative moves, G29 and reference runs with values no other job used, lets Execute fall
+// while the job runs, and aborts for a few scans now and then. The simulated PA-CONTROL's ledger of the jobs
+// its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The
+// property, in a PLC programmer's words: the FB ends Done only if the controller took exactly its job (the
+// traverse bit, the position and the per-mille values) after this Execute edge, an absolute move Done stands at
+// its target, and Busy ends within the bound the FB's page states. The PLCopen rules hold on every call. Every
+// random choice comes from the seed in the test's name.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bus_timing.hpp"
+#include "free_caller.hpp"
+#include "pac/axis_module_bits.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/pac_rig.hpp"
+#include "pac/sim/axis_module.hpp"
+#include "pac/sim/pa_control.hpp"
+#include "real_bits.hpp"
+#include "rig_timing.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using pac::test::FreeCaller;
+
+struct AxisFreeCase {
+    pac::test::BusTiming timing;
+    pac::sim::ActiveForJobs activeFor = pac::sim::ActiveForJobs::kEveryJob;
+    pac::sim::CmdErrorRestart cmdErrorRestart = pac::sim::CmdErrorRestart::kSameCycle;
+    std::uint64_t seed = 1;
+};
+
+std::string AxisFreeCaseName(const ::testing::TestParamInfo<AxisFreeCase>& info) {
+    const ::testing::TestParamInfo<pac::test::BusTiming> timing(info.param.timing, info.index);
+    return pac::test::BusTimingName(timing) +
+           (info.param.activeFor == pac::sim::ActiveForJobs::kEveryJob ? "_ActiveEveryJob" : "_ActiveTraversing") +
+           (info.param.cmdErrorRestart == pac::sim::CmdErrorRestart::kSameCycle ? "_ErrorSameCycle" : "_ErrorNextCycle") +
+           "_Seed" + std::to_string(info.param.seed);
+}
+
+void PrintTo(const AxisFreeCase& c, std::ostream* out) {
+    *out << pac::test::Describe(c.timing) << "; seed " << c.seed;
+}
+
+struct Job {
+    E_PAC_AXISCOMMAND command = E_PAC_AXISCOMMAND__PAC_AX_NONE;
+    float position = 0.0F;
+    unsigned velocity = 1000;
+    unsigned acceleration = 1000;
+};
+
+std::uint32_t TraverseBit(E_PAC_AXISCOMMAND c) {
+    namespace bit = pac::axis_control;
+    switch (c) {
+        case E_PAC_AXISCOMMAND__PAC_AX_HOME: return bit::kHome;
+        case E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE: return bit::kMoveAbsolute;
+        case E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE: return bit::kMoveRelative;
+        case E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION: return bit::kSetPosition;
+        default: return bit::kClearOffset;
+    }
+}
+
+bool IsMove(E_PAC_AXISCOMMAND c) {
+    return c == E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE || c == E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
+}
+
+bool HasPosition(E_PAC_AXISCOMMAND c) { return IsMove(c) || c == E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION; }
+
+class FreeAxisProgram {
+public:
+    explicit FreeAxisProgram(const AxisFreeCase& c)
+        : case_(c),
+          layout_{true, 1},
+          rig_(pac::test::RigTimingOf(c.timing), ConfigOf(c), layout_),
+          random_(c.seed),
+          caller_("FB_PAC_Axis", random_, Odds(), log_) {
+        auto& pac = rig_.Controller();
+        EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
+                  pac::sim::ParameterTable::SetResult::kOk);
+        pac.Io().inputs.Set(kExternalStopInput, true);
+        rig_.CallCtrl(ctrl_);
+        rig_.CallImage([this](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+            Program(fromPac, toPac);
+        });
+        rig_.Start();
+        axis_->ENABLE.value = TRUE;
+    }
+
+    // ONLINE through FB_PAC_Ctrl, the axis FB called in every scan; then its first job, alone.
+    void Prepare() {
+        ASSERT_GT(rig_.ScanUntil([this] { return ctrl_->READY.value != 0; }, 20000), 0) << "Ready";
+        Scan(case_.timing.ScansFor(20ms));
+        ctrl_->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+        ctrl_->EXECUTE.value = TRUE;
+        ASSERT_GT(rig_.ScanUntil([this] { return ctrl_->DONE.value || ctrl_->ERROR.value; }, 20000), 0);
+        ASSERT_TRUE(ctrl_->DONE.value) << "START_ONLINE: ErrorID 16#" << std::hex << ctrl_->ERRORID.value;
+        ctrl_->EXECUTE.value = FALSE;
+        Scan(case_.timing.ScansFor(30ms));
+        ASSERT_EQ(rig_.Controller().OperatingStatus(), 31);
+        free_ = true;
+    }
+
+    // A named case: `job`, its calls from `from` to `from + length - 1` scans after the edge left out (Execute
+    // falling in the first of them with `fall`); how it ended, once the FB was called idle again.
+    FreeCaller::Ended RunScripted(const Job& job, int from, int length, bool fall) {
+        scripted_ = true;
+        scriptedJob_ = job;
+        caller_.Script(from, length, fall);
+        for (int i = 0; i < 100000 && !caller_.ScriptOver(); ++i) Scan();
+        caller_.EndScript();
+        scripted_ = false;
+        return caller_.LastEnded();
+    }
+
+    // The program stops calling the FB `after` scans after the edge of `job`: the job runs to its end on the
+    // controller without it (docs/fb/FB_PAC_Axis.md, "The FB never called again").
+    void Abandon(const Job& job, int after) {
+        scripted_ = true;
+        scriptedJob_ = job;
+        caller_.Script(after, 1000000, false);
+    }
+    pac::sim::PaControl& Controller() { return rig_.Controller(); }
+    std::size_t JobsTaken() { return Ledger().size(); }
+
+    void Scan(int n = 1) {
+        for (int i = 0; i < n; ++i) {
+            blips_.BeforeScan(rig_.Controller(), random_, free_ && !scripted_);  // outside the named cases
+            rig_.Scan();
+            ++scans_;
+        }
+    }
+
+    const std::vector<std::string>& Violations() const { return log_.Texts(); }
+    int Dones() const { return dones_; }
+    int DoneMoves() const { return doneMoves_; }
+    int Aborts() const { return aborts_; }
+    int EndedAfterSkip() const { return endedAfterSkip_; }
+    const FreeCaller& Caller() const { return caller_; }
+
+private:
+    static constexpr int kExternalStopInput = 1;
+    static constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
+
+    static pac::test::FreeCallerOdds Odds() {
+        pac::test::FreeCallerOdds odds;
+        odds.newCommand = 8;
+        odds.earlyFall = 200;
+        return odds;
+    }
+
+    static pac::sim::PaControlConfig ConfigOf(const AxisFreeCase& c) {
+        pac::sim::PaControlConfig config;
+        config.axisModule.activeFor = c.activeFor;
+        config.axisModule.cmdErrorRestart = c.cmdErrorRestart;
+        return config;
+    }
+
+    // A job with values no other job used: the ledger tells whose job the controller took.
+    Job NextJob() {
+        ++serial_;
+        const float unique = static_cast<float>(serial_ % 64) * 0.0625F;
+        Job job;
+        job.velocity = 250 + caller_.Draw(751);
+        job.acceleration = 500 + caller_.Draw(501);
+        switch (caller_.Draw(10)) {
+            case 0: case 1: case 2: case 3:
+                job.command = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
+                job.position = 10.0F + static_cast<float>(caller_.Draw(60)) + unique;
+                break;
+            case 4: case 5:
+                job.command = E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE;
+                job.position = (caller_.Draw(2) == 0 ? -1.0F : 1.0F) * (2.0F + static_cast<float>(caller_.Draw(8)) + unique);
+                break;
+            case 6: case 7:
+                job.command = E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION;
+                job.position = 30.0F + static_cast<float>(caller_.Draw(20)) + unique;
+                break;
+            case 8:
+                job.command = E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET;
+                break;
+            default:
+                job.command = E_PAC_AXISCOMMAND__PAC_AX_HOME;
+                break;
+        }
+        return job;
+    }
+
+    void Program(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+        const bool called = !free_ || caller_.Plan(scans_, rig_.Now());
+        if (free_ && caller_.NewCommand()) job_ = scripted_ ? scriptedJob_ : NextJob();
+        if (free_ && !scripted_) {
+            if (abortLeft_ > 0) {
+                --abortLeft_;
+            } else if (caller_.Draw(400) == 0) {
+                abortLeft_ = 1 + static_cast<int>(caller_.Draw(4));  // Abort held for 1 to 4 scans of the program
+                ++aborts_;
+            }
+        }
+        if (!called) {
+            missed_ = true;
+            return;
+        }
+        const std::size_t offset = layout_.AxisOffset(1);
+        auto call = [&] {
+            axis_->ABORT.value = abortLeft_ > 0 ? TRUE : FALSE;
+            axis_->COMMAND.value = job_.command;
+            axis_->POSITION.value = job_.position;
+            axis_->VELOCITY.value = static_cast<UINT>(job_.velocity);
+            axis_->ACCELERATION.value = static_cast<UINT>(job_.acceleration);
+            axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
+            axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
+            axis_->OPSTATUS.value = fromPac[kOpStatusByte];
+            for (std::size_t i = 0; i < 12; ++i) {
+                axis_->FROMPAC.value.table[i] = fromPac[offset + i];
+                axis_->TOPAC.value.table[i] = toPac[offset + i];
+            }
+            axis_();
+            for (std::size_t i = 0; i < 12; ++i) toPac[offset + i] = axis_->TOPAC.value.table[i];
+        };
+        if (!free_) {
+            call();
+            return;
+        }
+        const auto ended = pac::test::CallFree(caller_, axis_, BusyBound(), call, [this] {
+            ledgerAtEdge_ = Ledger().size();
+            missed_ = false;
+        });
+        if (ended == FreeCaller::Ended::kNo) return;
+        if (missed_) ++endedAfterSkip_;
+        if (ended == FreeCaller::Ended::kDone) CheckDone();
+    }
+
+    const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
+
+    void CheckDone() {
+        const std::uint32_t bit = TraverseBit(job_.command);
+        const bool taken = claims_.Claim(Ledger(), ledgerAtEdge_, [&](const pac::sim::AxisModuleCommand& taken) {
+            if ((taken.control & pac::axis_control::kTraverseBits) != bit) return false;
+            if (HasPosition(job_.command) && taken.position != pac::test::BitsOf(job_.position)) return false;
+            return !IsMove(job_.command) ||
+                   (taken.speedPerMille == job_.velocity && taken.accelerationPerMille == job_.acceleration);
+        });
+        if (taken) {
+            ++dones_;
+            if (job_.command == E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE) {
+                ++doneMoves_;
+                if (std::fabs(axis_->ACTUALPOSITION.value - job_.position) > 0.01F) {
+                    log_.Add(scans_, rig_.Now(), "an absolute move to " + std::to_string(job_.position) +
+                                                     " ended Done at " + std::to_string(axis_->ACTUALPOSITION.value));
+                }
+            }
+            return;
+        }
+        std::ostringstream what;
+        what << "Done for job " << job_.command << " (bit 16#" << std::hex << bit << std::dec << ", position "
+             << job_.position << ", " << job_.velocity << "/" << job_.acceleration
+             << " per mille), which the controller did not take over after the Execute edge";
+        log_.Add(scans_, rig_.Now(), what.str());
+    }
+
+    // docs/fb/FB_PAC_Axis.md: Timeout for the axis to be free, the take-over bound, the job itself (a reference
+    // run or a move of at most 80 units at a quarter of 1000 units/s), StopTimeout for a stop, and the longest
+    // skip plus a round trip.
+    std::chrono::nanoseconds BusyBound() const {
+        return 1s + 1s + 2s + 10s + 7 * case_.timing.PlcCycle() + 2 * case_.timing.PacCycle() + 100ms;
+    }
+
+    AxisFreeCase case_;
+    pac::sim::ModuleLayout layout_;
+    pac::PacRig rig_;
+    std::mt19937_64 random_;
+    pac::test::ViolationLog log_;
+    FreeCaller caller_;
+    pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
+    bool free_ = false;
+    pac::test::StatusBlips blips_;
+    bool scripted_ = false;
+    Job scriptedJob_;
+    Job job_;
+    int serial_ = 0;
+    int abortLeft_ = 0;
+    bool missed_ = false;  // a scan without the call since the edge
+    long scans_ = 0;
+    std::size_t ledgerAtEdge_ = 0;
+    pac::test::AxisJobClaims claims_;
+    int dones_ = 0;
+    int doneMoves_ = 0;
+    int aborts_ = 0;
+    int endedAfterSkip_ = 0;
+};
+
+class AxisFreeProgram : public ::testing::TestWithParam<AxisFreeCase> {};
+
+TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    program.Scan(3000);
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+    // Reachability: skips while a job was on its way, jobs ended after a skip, moves Done, aborts.
+    EXPECT_GT(program.Caller().SkipsWhileBusy(), 10);
+    EXPECT_GT(program.EndedAfterSkip(), 3);
+    EXPECT_GT(program.DoneMoves(), 2) << program.Dones() << " Done";
+    EXPECT_GT(program.Aborts(), 0);
+}
+
+// The named cases: an absolute move, its calls left out for 1 to 6 scans from 1 to 14 scans after its edge
+// (Start on the wire, the take-over, the move, its end), with Execute held or falling in the first scan left out.
+// The move ends Done for its own job (the checks of the free program), for one call only if Execute fell.
+class AxisSkippedCalls : public ::testing::TestWithParam<AxisFreeCase> {};
+
+TEST_P(AxisSkippedCalls, AMoveEndsDoneForItsOwnJobWhateverScansItMisses) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    int serial = 0;
+    for (const bool fall : {false, true}) {
+        for (int length = 1; length <= 6; ++length) {
+            for (int from = 1; from <= 14; ++from) {
+                SCOPED_TRACE(std::to_string(length) + " scans left out from scan " + std::to_string(from) +
+                             " after the edge" + (fall ? ", Execute falling in the first" : ""));
+                ++serial;
+                const Job job{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, (serial % 2 ? 20.0F : 12.0F) + 0.0625F * (serial % 32)};
+                EXPECT_EQ(program.RunScripted(job, from, length, fall), FreeCaller::Ended::kDone);
+                if (HasFailure()) break;
+            }
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+}
+
+// The program stops calling the FB 1 to 6 scans after the edge of a move: the controller takes the job once and
+// the axis arrives at its target.
+TEST_P(AxisSkippedCalls, AMoveWhoseFbIsNeverCalledAgainRunsToItsEnd) {
+    for (int after = 1; after <= 6; ++after) {
+        SCOPED_TRACE("not called from scan " + std::to_string(after) + " after the edge");
+        FreeAxisProgram program(GetParam());
+        program.Prepare();
+        ASSERT_FALSE(HasFatalFailure());
+        const std::size_t before = program.JobsTaken();
+        program.Abandon({E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 33.5F}, after);
+        program.Scan(GetParam().timing.ScansFor(1s));
+        EXPECT_EQ(program.JobsTaken(), before + 1);
+        EXPECT_NEAR(program.Controller().Axes().Motion(1).Position(), 33.5, 0.01);
+        for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Timings, AxisSkippedCalls,
+                         ::testing::Values(AxisFreeCase{{1, 10, 0}}, AxisFreeCase{{2, 3, 1}},
+                                           AxisFreeCase{{5, 1, 3}, pac::sim::ActiveForJobs::kTraversingOnly},
+                                           AxisFreeCase{{2, 1, 1, 1500, 606}, pac::sim::ActiveForJobs::kEveryJob,
+                                                        pac::sim::CmdErrorRestart::kOneCycleClear}),
+                         AxisFreeCaseName);
+
+std::vector<AxisFreeCase> AxisFreeCases() {
+    std::vector<AxisFreeCase> cases;
+    std::uint64_t seed = 1;
+    const std::vector<pac::test::BusTiming> timings = {{1, 10, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3},
+                                                       {10, 3, 0}, {2, 1, 1, 1500, 606}};
+    for (const auto& t : timings) {
+        for (auto active : {pac::sim::ActiveForJobs::kEveryJob, pac::sim::ActiveForJobs::kTraversingOnly}) {
+            for (auto restart : {pac::sim::CmdErrorRestart::kSameCycle, pac::sim::CmdErrorRestart::kOneCycleClear}) {
+                cases.push_back({t, active, restart, seed++});
+            }
+        }
+    }
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Readings, AxisFreeProgram, ::testing::ValuesIn(AxisFreeCases()), AxisFreeCaseName);
+
+}  // namespace

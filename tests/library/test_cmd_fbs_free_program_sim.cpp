@@ -1,0 +1,325 @@
+// The FBs built on FB_PAC_Cmd (the element FBs, the command-set FBs) and FB_PAC_Ctrl in a PLC program as free as
+// real ones (docs/fb/FB_PAC_Cmd.md and FB_PAC_Ctrl.md, "The calling contract"): FB_PAC_WriteIntReg,
+// FB_PAC_ReadIntReg, FB_PAC_MoveAxisAbsolute and FB_PAC_StopAxis (each with FreeInterface drawn per command) on
+// one CMD interface, in a call order drawn anew every scan, and FB_PAC_Ctrl on the CTRL module asking for ONLINE,
+// a stop and a cancel now and then; each FB called or left out independently in every scan (runs of 1 to 6
+// scans), edged when idle, Execute falling while Busy, a command FB now and then given up for good (the program
+// calls a fresh instance from then on). The ledgers: the commands the simulated PA-CONTROL took on its CMD
+// interface (its exchange log) and the operating status it showed after every scan. The property: an FB ends
+// Done only if the controller took exactly its command (code, parameter, data) after this Execute edge, or for
+// FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target; a read
+// ends with its register's own value; Busy ends within
+// the documented bound; the PLCopen rules hold on every call. Every random choice comes from the seed in the
+// test's name.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "channel_case.hpp"
+#include "free_caller.hpp"
+#include "free_commands.hpp"
+#include "pac/fb_instance.hpp"
+#include "pac/pac_rig.hpp"
+#include "pac/sim/cmd_frame.hpp"
+#include "pac/sim/command_table.hpp"
+#include "pac/sim/operating_status.hpp"
+#include "real_bits.hpp"
+#include "rig_timing.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using pac::test::FreeCaller;
+using pac::test::FreeCommand;
+namespace code = pac::sim::code;
+namespace status = pac::sim::status;
+
+enum class Kind { kWrite, kRead, kMove, kStop, kCtrl };
+
+// One FB of the program and what its present command asked for.
+struct Block {
+    Kind kind;
+    std::unique_ptr<FreeCaller> caller;
+    FreeCommand command;     // its CMD command (FreeInterface decides between the two codes of a move / stop)
+    bool freeInterface = false;
+    E_PAC_CTRLREQUEST request = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+    std::size_t ledgerAtEdge = 0;
+    std::chrono::nanoseconds edgeTime{0};
+    bool missed = false;
+};
+
+class FreeCmdFbProgram {
+public:
+    explicit FreeCmdFbProgram(const pac::test::ChannelCase& c)
+        : case_(c), layout_{true, 0}, rig_(pac::test::RigTimingOf(c.sharing.timing), ConfigOf(c), layout_), random_(c.seed) {
+        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl}) {
+            static const char* names[] = {"FB_PAC_WriteIntReg", "FB_PAC_ReadIntReg", "FB_PAC_MoveAxisAbsolute",
+                                          "FB_PAC_StopAxis", "FB_PAC_Ctrl"};
+            pac::test::FreeCallerOdds odds;
+            odds.newCommand = k == Kind::kCtrl ? 400 : (k == Kind::kStop ? 60 : 6);
+            odds.earlyFall = 200;
+            odds.abandon = k == Kind::kCtrl ? 0 : 500;
+            blocks_.push_back(std::make_unique<Block>());
+            blocks_.back()->kind = k;
+            blocks_.back()->caller = std::make_unique<FreeCaller>(names[static_cast<int>(k)], random_, odds, log_);
+        }
+        auto& pac = rig_.Controller();
+        pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput);
+        pac.Io().inputs.Set(kExternalStopInput, true);
+        for (int n = 0; n < 4; ++n) {
+            pac.Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
+        }
+        rig_.CmdInterface()->TWOSTEPWRITE.value = c.twoStepWrite ? TRUE : FALSE;
+        rig_.CallImage([this](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) { CallCtrl(fromPac, toPac); });
+        rig_.CallCmdProgram([this](ST_PAC_CMDCHANNEL& channel) { Program(channel); });
+        rig_.Start();
+        rig_.Task().AddProgram([this] { statusSeen_[rig_.Controller().OperatingStatus()] = rig_.Now(); });
+    }
+
+    // ONLINE through FB_PAC_Ctrl called in every scan, as a program starts.
+    void Prepare() {
+        ASSERT_GT(rig_.ScanUntil([this] { return ctrl_->READY.value != 0; }, 20000), 0) << "Ready";
+        rig_.Scan(case_.sharing.timing.ScansFor(20ms));
+        ctrl_->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+        ctrl_->EXECUTE.value = TRUE;
+        ASSERT_GT(rig_.ScanUntil([this] { return ctrl_->DONE.value || ctrl_->ERROR.value; }, 20000), 0);
+        ASSERT_TRUE(ctrl_->DONE.value) << "START_ONLINE: ErrorID 16#" << std::hex << ctrl_->ERRORID.value;
+        ctrl_->EXECUTE.value = FALSE;
+        rig_.Scan(case_.sharing.timing.ScansFor(30ms));
+        free_ = true;
+    }
+
+    void Scan(int n) {
+        for (int i = 0; i < n; ++i) {
+            rig_.Scan();
+            ++scans_;
+        }
+    }
+
+    const std::vector<std::string>& Violations() const { return log_.Texts(); }
+    int Dones(Kind k) const { return dones_[static_cast<int>(k)]; }
+    int SkipsWhileBusy() const { return pac::test::SkipsWhileBusyOf(blocks_); }
+    int EndedAfterSkip() const { return endedAfterSkip_; }
+
+private:
+    static constexpr int kExternalStopInput = 7;
+
+    static pac::sim::PaControlConfig ConfigOf(const pac::test::ChannelCase& c) {
+        pac::sim::PaControlConfig config = c.sharing.Config();
+        config.logCapacity = 10000000;
+        return config;
+    }
+
+    Block& B(Kind k) { return *blocks_[static_cast<std::size_t>(k)]; }
+
+    void NewCommand(Block& b) {
+        ++serial_;
+        b.freeInterface = b.caller->Draw(2) == 0;
+        const auto axis = static_cast<std::uint16_t>(1 + b.caller->Draw(2));
+        switch (b.kind) {
+            case Kind::kWrite:
+                b.command = {code::kPutIntReg, static_cast<std::uint16_t>(1 + b.caller->Draw(4)), static_cast<std::uint32_t>(serial_)};
+                break;
+            case Kind::kRead:
+                b.command = {code::kGetIntReg, static_cast<std::uint16_t>(pac::test::kFreeReadRegisters + b.caller->Draw(4)), 0};
+                break;
+            case Kind::kMove:
+                b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A94 : code::kPosAxisAbsolute), axis,
+                             pac::test::BitsOf(static_cast<float>(serial_ % 400) * 0.125F + 0.0625F)};
+                break;
+            case Kind::kStop:
+                b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A9A : code::kStopAxis), axis, 0};
+                break;
+            case Kind::kCtrl: {
+                static const E_PAC_CTRLREQUEST requests[] = {E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
+                                                             E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
+                                                             E_PAC_CTRLREQUEST__PAC_REQ_STOP, E_PAC_CTRLREQUEST__PAC_REQ_CANCEL};
+                b.request = requests[b.caller->Draw(4)];
+                break;
+            }
+        }
+    }
+
+    // One FB's place in the program: the plan, its inputs, the call, the checks.
+    template <class Fb>
+    void Place(Block& b, pac::FbInstance<Fb>& fb, const std::function<void()>& setInputs, const std::function<void()>& call,
+               const std::function<pac::FbInstance<Fb>()>& fresh) {
+        const bool called = b.caller->Plan(scans_, rig_.Now());
+        if (b.caller->Abandoned() && b.caller->Draw(30) == 0) {
+            fb = fresh();
+            b.caller->Replace();
+            return;
+        }
+        if (b.caller->NewCommand()) NewCommand(b);
+        if (!called) {
+            b.missed = true;
+            return;
+        }
+        setInputs();
+        const auto ended = pac::test::CallFree(*b.caller, fb, BusyBound(b), call, [&] {
+            b.ledgerAtEdge = Ledger().size();
+            b.edgeTime = rig_.Now();
+            b.missed = false;
+        });
+        if (ended == FreeCaller::Ended::kNo) return;
+        if (b.missed) ++endedAfterSkip_;
+        if (ended == FreeCaller::Ended::kDone) CheckDone(b);
+    }
+
+    void CallCtrl(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+        const std::size_t offset = pac::sim::ModuleLayout::kCtrlOffset;
+        auto call = [&] {
+            for (std::size_t i = 0; i < 8; ++i) {
+                ctrl_->FROMPAC.value.table[i] = fromPac[offset + i];
+                ctrl_->TOPAC.value.table[i] = toPac[offset + i];
+            }
+            ctrl_();
+            for (std::size_t i = 0; i < 8; ++i) toPac[offset + i] = ctrl_->TOPAC.value.table[i];
+        };
+        if (!free_) {
+            call();
+            return;
+        }
+        Block& b = B(Kind::kCtrl);
+        Place<FB_PAC_CTRL>(b, ctrl_, [&] { ctrl_->REQUEST.value = b.request; }, call, [] { return PAC_FB(FB_PAC_CTRL); });
+    }
+
+    void Program(ST_PAC_CMDCHANNEL& channel) {
+        if (!free_) return;
+        std::shuffle(order_.begin(), order_.end(), random_);
+        for (Kind k : order_) {
+            Block& b = B(k);
+            switch (k) {
+                case Kind::kWrite:
+                    Place<FB_PAC_WRITEINTREG>(b, write_, [&] {
+                        write_->NUMBER.value = b.command.param;
+                        write_->VALUE.value = static_cast<DINT>(b.command.data);
+                    }, [&] { CallOn(channel, write_); }, [] { return PAC_FB(FB_PAC_WRITEINTREG); });
+                    break;
+                case Kind::kRead:
+                    Place<FB_PAC_READINTREG>(b, read_, [&] { read_->NUMBER.value = b.command.param; },
+                                             [&] { CallOn(channel, read_); }, [] { return PAC_FB(FB_PAC_READINTREG); });
+                    break;
+                case Kind::kMove:
+                    Place<FB_PAC_MOVEAXISABSOLUTE>(b, move_, [&] {
+                        move_->AXIS.value = static_cast<USINT>(b.command.param);
+                        move_->POSITION.value = pac::test::FloatOf(b.command.data);
+                        move_->FREEINTERFACE.value = b.freeInterface ? TRUE : FALSE;
+                    }, [&] { CallOn(channel, move_); }, [] { return PAC_FB(FB_PAC_MOVEAXISABSOLUTE); });
+                    break;
+                default:
+                    Place<FB_PAC_STOPAXIS>(b, stop_, [&] {
+                        stop_->AXIS.value = static_cast<USINT>(b.command.param);
+                        stop_->FREEINTERFACE.value = b.freeInterface ? TRUE : FALSE;
+                    }, [&] { CallOn(channel, stop_); }, [] { return PAC_FB(FB_PAC_STOPAXIS); });
+                    break;
+            }
+        }
+    }
+
+    template <class Fb>
+    static void CallOn(ST_PAC_CMDCHANNEL& channel, pac::FbInstance<Fb>& fb) {
+        fb->CHANNEL.value = channel;
+        fb();
+        channel = fb->CHANNEL.value;
+    }
+
+    const std::vector<FreeCommand>& Ledger() { return ledger_.Read(rig_.Controller().Log()); }
+
+    void CheckDone(Block& b) {
+        ++dones_[static_cast<int>(b.kind)];
+        if (b.kind == Kind::kCtrl) {
+            statusSeen_[rig_.Controller().OperatingStatus()] = rig_.Now();  // the watch runs at the end of the scan
+            const std::uint8_t wanted = b.request == E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE
+                                            ? status::kOnline
+                                            : (b.request == E_PAC_CTRLREQUEST__PAC_REQ_STOP ? status::kOnlineStopped : status::kHome);
+            const auto seen = statusSeen_.find(wanted);
+            if (seen == statusSeen_.end() || seen->second < b.edgeTime) {
+                log_.Add(scans_, rig_.Now(), "FB_PAC_Ctrl ended Done for request " + std::to_string(b.request) +
+                                                 ", but the controller has not shown status " + std::to_string(wanted) +
+                                                 " since its edge at " + std::to_string(b.edgeTime.count() / 1000) +
+                                                 " us (last seen " +
+                                                 (seen == statusSeen_.end() ? std::string("never") : std::to_string(seen->second.count() / 1000)) +
+                                                 " us, now " + std::to_string(rig_.Controller().OperatingStatus()) + ")");
+            }
+            return;
+        }
+        Ledger();
+        if (ledger_.Claim(b.ledgerAtEdge, b.command)) {
+            const double at = b.kind == Kind::kMove ? rig_.Controller().Axes().Motion(b.command.param).Position() : 0.0;
+            if (b.kind == Kind::kMove && std::fabs(at - pac::test::FloatOf(b.command.data)) > 0.001) {
+                log_.Add(scans_, rig_.Now(), "FB_PAC_MoveAxisAbsolute ended Done for " + pac::test::Describe(b.command) +
+                                                 " with the axis at " + std::to_string(at) +
+                                                 "; the controller took since its edge" + ledger_.DescribeFrom(b.ledgerAtEdge));
+            }
+            if (b.kind == Kind::kRead &&
+                static_cast<std::uint32_t>(read_->VALUE.value) != pac::test::FreeReadAnswer(b.command)) {
+                log_.Add(scans_, rig_.Now(), "FB_PAC_ReadIntReg ended Done for " + pac::test::Describe(b.command) +
+                                                 " with Value " + std::to_string(read_->VALUE.value));
+            }
+            return;
+        }
+        log_.Add(scans_, rig_.Now(), b.caller->Name() + " ended Done for " + pac::test::Describe(b.command) +
+                                         ", which the controller did not take after its Execute edge");
+    }
+
+    // FB_PAC_Cmd.md: the waits for the interface and the acknowledgement (Timeout each), END OF PROCESSING
+    // (EndTimeout; FreeInterface: a status read every PollInterval until in position); FB_PAC_Ctrl.md: its
+    // Timeout. Plus the longest skip and a round trip.
+    std::chrono::nanoseconds BusyBound(const Block& b) const {
+        const auto slack = 7 * case_.sharing.timing.PlcCycle() + 100ms;
+        return (b.kind == Kind::kCtrl ? 10s : 1s + 1s + 60s) + slack;
+    }
+
+    pac::test::ChannelCase case_;
+    pac::sim::ModuleLayout layout_;
+    pac::PacRig rig_;
+    std::mt19937_64 random_;
+    pac::test::ViolationLog log_;
+    std::vector<std::unique_ptr<Block>> blocks_;
+    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop};
+    pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
+    pac::FbInstance<FB_PAC_WRITEINTREG> write_ = PAC_FB(FB_PAC_WRITEINTREG);
+    pac::FbInstance<FB_PAC_READINTREG> read_ = PAC_FB(FB_PAC_READINTREG);
+    pac::FbInstance<FB_PAC_MOVEAXISABSOLUTE> move_ = PAC_FB(FB_PAC_MOVEAXISABSOLUTE);
+    pac::FbInstance<FB_PAC_STOPAXIS> stop_ = PAC_FB(FB_PAC_STOPAXIS);
+    bool free_ = false;
+    long scans_ = 0;
+    int serial_ = 0;
+    pac::test::CmdLedger ledger_;
+    std::map<std::uint8_t, std::chrono::nanoseconds> statusSeen_;
+    int dones_[5] = {0, 0, 0, 0, 0};
+    int endedAfterSkip_ = 0;
+};
+
+class CmdFbsFreeProgram : public ::testing::TestWithParam<pac::test::ChannelCase> {};
+
+TEST_P(CmdFbsFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
+    FreeCmdFbProgram program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    program.Scan(std::max(GetParam().sharing.timing.ScansFor(5s), 3000));
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+    EXPECT_GT(program.SkipsWhileBusy(), 20);
+    EXPECT_GT(program.EndedAfterSkip(), 5);
+    for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl}) {
+        EXPECT_GT(program.Dones(k), 0) << "kind " << static_cast<int>(k);
+    }
+}
+
+std::vector<pac::test::ChannelCase> CmdFbsFreeCases() {
+    return pac::test::ChannelCases({{1, 10, 0}, {2, 3, 1}, {5, 1, 3}, {2, 3, 1, 1500, 606}}, true);
+}
+
+INSTANTIATE_TEST_SUITE_P(Readings, CmdFbsFreeProgram, ::testing::ValuesIn(CmdFbsFreeCases()), pac::test::ChannelCaseName);
+
+}  // namespace
