@@ -132,6 +132,39 @@ class ExampleTest(unittest.TestCase):
         self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
 
 
+class SortingStationTest(unittest.TestCase):
+    """examples/sorting_station, the object-oriented example (METHODs, PROPERTYs, two INTERFACEs in .TcIO files,
+    FOR loops, a REFERENCE and a POINTER, the library under its namespace): its four tests pass, each assert
+    counted, the restart test through the controller's power cycle; the coverage table names its FBs."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(ROOT, "examples", "sorting_station")
+        cls.out = os.path.join(OUT, "sorting_station")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out)
+
+    def test_every_test_passes(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        self.assertIn("4 tests: 4 passed, 0 failed", self.result.stdout)
+        self.assertEqual(failures(self.result.stdout), [])
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=4, failed=0, skipped=0)
+
+    def test_the_asserts_ran(self):
+        # the unit test's 14 asserts in one scan; the recipe's pusher check every scan the carriage travels
+        counts = dict(re.findall(r"ok  (\w+)  \((\d+) asserts", self.result.stdout))
+        self.assertEqual(counts.get("FB_TestLaneTable"), "14", self.result.stdout)
+        self.assertGreater(int(counts.get("FB_TestSortsARecipe", 0)), 7 + 50, self.result.stdout)
+        self.assertEqual(counts.get("FB_TestControllerRestart"), "5", self.result.stdout)
+
+    @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
+    def test_coverage_of_methods_and_properties(self):
+        with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
+            summary = json.load(f)
+        pous = {p["pou"] for p in summary["pous"]}
+        self.assertTrue({"MAIN", "FB_Sorter", "FB_LaneTable", "FB_RecipeFeeder"} <= pous, pous)
+        self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+
+
 def _files(folder):
     return [os.path.join(d, n) for d, _, names in os.walk(folder) for n in names]
 
