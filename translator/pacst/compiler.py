@@ -619,7 +619,7 @@ class Compiler:
             pou.fbtype = T.FbType(pou.name)
             pou.fbtype.pou = pou
         elif node.return_type is None:
-            if not pou.native:
+            if not pou.native and not self.user:  # TwinCAT and CODESYS take a FUNCTION without a result
                 raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
         else:
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \

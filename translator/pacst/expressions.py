@@ -473,7 +473,7 @@ class ExprCompiler:
             return self._string_function(node, up)
         if up in self.comp.pous:
             pou = self.comp.pous[up]
-            if pou.native and pou.ret is None:
+            if pou.ret is None and (pou.native or self.comp.user):
                 raise self.err(node, f"FUNCTION {pou.name} returns nothing: call it as a statement")
             if pou.kind == "fb":
                 raise self.err(node, f"function block type '{name}' called like a function: declare an instance")
