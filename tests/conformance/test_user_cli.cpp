@@ -112,10 +112,16 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
     auto main = Write("PRG_Main.st",
                       "PROGRAM PRG_Main\nVAR Step : E_Step := E_Step.IDLE; Status : FB_Status; END_VAR\n"
                       "Status();\nCASE Step OF\n  E_Step.IDLE: Step := E_Step.HOMING;\n"
-                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := FAULT; END_IF;\n"
+                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := E_Step.FAULT; END_IF;\n"
                       "END_CASE;\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
     EXPECT_EQ(result.exitCode, 0) << result.output;
+    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it
+    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; END_VAR\nStep := FAULT;\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, bare});
+    EXPECT_NE(result.output.find(bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT"), std::string::npos)
+        << result.output;
     auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
                                       "END_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});

@@ -537,6 +537,7 @@ class Compiler:
                 numbers.append(number)
                 number += 1
             t = T.EnumType(_name(decl.name), values, numbers, base)
+            t.qualified_only = self.user and user.qualified_only(self, pos(decl)[0])
             if init.value is not None:  # user mode: the type's default value instead of the first
                 dv = init.value
                 self.dialect(dv, "an enumeration's default value")
@@ -603,7 +604,10 @@ class Compiler:
         program = kind == "program"
         kind = "fb" if program else kind
         if getattr(node, "access", None) is not None:
-            raise self.err(node, "access specifiers are outside the portable subset")
+            if not self.user:
+                raise self.err(node, "access specifiers are outside the portable subset")
+            # FINAL, ABSTRACT, PUBLIC, INTERNAL: what the IDE checks; the translation is the same
+            self.dialect(node, f"the access specifier {str(node.access).upper()}")
         if kind == "fb" and not program and (node.extends is not None or node.implements is not None) \
                 and not self.user:
             raise self.err(node, "EXTENDS and IMPLEMENTS are outside the portable subset")
@@ -726,7 +730,11 @@ class Compiler:
         METHODs and ACTIONs translated again for this FB unless it overrides them; SUPER^() is the base's
         body and SUPER^.M() the base's M, both on this instance."""
         token = node.extends.interfaces[0]
-        base = self.pous.get(_name(token).upper())
+        name = _name(token)
+        first, _, rest = name.partition(".")
+        if rest and self.namespace(first) is not None and self.in_namespace(first, rest):  # TcUnit.FB_TestSuite
+            name = rest
+        base = self.pous.get(name.upper())
         if base is None or base.kind != "fb" or base.program:
             if _name(token).upper() in self.declared_at and _name(token).upper() not in self.pous:
                 raise self.err(token, f"{_name(token)} cannot be extended: its declaration was refused or comes later")
@@ -933,7 +941,9 @@ class Compiler:
 
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
-        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
+        # a METHOD's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its other VAR
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or pou.owner is not None
+                                                                 and section == "var"))
         value = user.initial_value(item.init)
         self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
@@ -1005,6 +1015,13 @@ class Compiler:
             names = sorted(t.name for t in types)
             raise self.err(node, f"'{name}' is a value of {' and '.join(names)}: qualify it ({names[0]}.{name})")
 
+    def bare_enum_value(self, t, name, node):
+        """User mode: an enumeration value written alone, refused where its type has {attribute 'qualified_only'}
+        (TwinCAT's default for a new enumeration), as the IDE refuses it."""
+        if getattr(t, "qualified_only", False):
+            raise self.err(node, f"'{name}' alone: the enumeration {t.name} has {{attribute 'qualified_only'}}, as in "
+                                 f"TwinCAT write {t.name}.{name}")
+
     def enum_value_of(self, t, name, node):
         """The spelling of the value `name` of the enumeration `t`; an error at `node` when it has none."""
         value = next((v for v in t.values if v.upper() == name.upper()), None)
@@ -1022,7 +1039,7 @@ class Compiler:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
-                pass
+                self.bare_enum_value(self.enum_values[_name(node.name).upper()], _name(node.name), node)
             elif self.qualified_enum_value(node) is not None:
                 pass
             elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):

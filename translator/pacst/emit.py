@@ -249,8 +249,8 @@ class Emitter:
         out += ["  " + line for line in self.comp.init_code(T.Var(pou.name, "result", pou.ret, None, None),
                                                              pou.cname)]
         for v in pou.vars:
-            if v.section == "var":
-                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+            if v.section == "var":  # an FB instance of a METHOD's VAR: initialised in every call (user mode)
+                out += ["  " + line.replace(", retain);", ", FALSE);") for line in self.comp.init_code(v, v.cname)]
         out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", f"    return {pou.cname};", "  }"]
         # A FUNCTION's outputs are local to the call (IEC): they start from their initial value in every
         # call, and one left unassigned gives that value to the caller, as MATIEC's copy-out does.
@@ -267,8 +267,8 @@ class Emitter:
             if v.section == "var":
                 out.append(f"  {v.type.cname} {v.cname};")
         for v in pou.vars:
-            if v.section == "var":
-                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+            if v.section == "var":  # an FB instance of a METHOD's VAR: initialised in every call (user mode)
+                out += ["  " + line.replace(", retain);", ", FALSE);") for line in self.comp.init_code(v, v.cname)]
         out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", "    return;", "  }"]
         for v in pou.vars:
             if v.section == "output":

@@ -51,6 +51,10 @@ struct Project {
 // (FB_AssertWithin): pac-test prints the line of the user's test that called it (addr2line).
 void RecordAssert(const char* file, int line, bool passed, const std::string& message, const void* caller = nullptr);
 void RecordFinished();
+// TcUnit's TEST('name'): the asserts and TEST_FINISHED() that follow are that test's (one of a suite's tests)
+void RecordTest(const std::string& name);
+// TcUnit's TEST_FINISHED_NAMED('name')
+void RecordTestFinished(const std::string& name);
 
 // `host --scenario FILE --test NAME --time-limit-ms N --result FILE [--vcd FILE] [--base-cycle-ms N]`
 int Main(int argc, char** argv, const Project& project);

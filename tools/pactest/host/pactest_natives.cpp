@@ -119,6 +119,24 @@ BOOL TEST_FINISHED(const char* file__, int line__, BOOL EN, BOOL* __ENO) {
     return TRUE;
 }
 
+BOOL TEST(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING TESTNAME) {
+    (void)file__;
+    (void)line__;
+    (void)EN;
+    Ok(__ENO);
+    pactest::RecordTest(Text(TESTNAME));
+    return TRUE;
+}
+
+BOOL TEST_FINISHED_NAMED(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING TESTNAME) {
+    (void)file__;
+    (void)line__;
+    (void)EN;
+    Ok(__ENO);
+    pactest::RecordTestFinished(Text(TESTNAME));
+    return TRUE;
+}
+
 BOOL PACTESTRECORD(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL PASSED, STRING MESSAGE) {
     (void)EN;
     Ok(__ENO);

@@ -57,11 +57,16 @@ class HostBuild:
         library, GVL_PAC (the program names its constants, PAC_CMD_PUT_INT_REG...), the vocabulary (its FUNCTIONs
         the host's) and the user's sources; a TwinCAT .plcproj stands for its objects, a PLCopen XML project for
         ST files written to OUT/plcopen."""
-        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
-        natives = [a for f in project.native_sources() for a in ("--native", f)]
+        tcunit = project.uses_tcunit(self.wiring.sources)
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + \
+            (project.tcunit_sources() if tcunit else []) + self.wiring.sources
+        natives = [a for f in project.native_sources() + (project.tcunit_natives() if tcunit else [])
+                   for a in ("--native", f)]
         # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power
-        namespace = f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"
-        return ["--user", "--namespace", namespace, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
+        namespaces = ["--namespace", f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"]
+        if tcunit:  # TcUnit's FB_TestSuite and RUN (docs/user_tests.md#tcunit-suites)
+            namespaces += ["--namespace", f"TcUnit={project.TCUNIT}"]
+        return ["--user", *namespaces, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
 
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
@@ -80,9 +85,11 @@ class HostBuild:
                     raise BuildError(f"$.tests.names[{i}]: no FUNCTION_BLOCK {name} in the sources")
                 found.append(fb)
             return found
-        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep)
+        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep, project.TCUNIT + os.sep)
+        # a TcUnit suite (EXTENDS FB_TestSuite) is a test whatever its name
         return [fb for fb in symbols.table["function_blocks"]
-                if not fb.get("standard") and fb["name"].upper().startswith(self.wiring.prefix.upper())
+                if not fb.get("standard") and (fb["name"].upper().startswith(self.wiring.prefix.upper())
+                                               or "FB_TESTSUITE" in (b.upper() for b in fb.get("extends", [])))
                 and not os.path.abspath(fb.get("file") or "").startswith(theirs)]
 
     def _flags(self, cxx):

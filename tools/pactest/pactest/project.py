@@ -9,6 +9,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..")
 NAMESPACE = "PA_CONTROL"
 VOCABULARY = os.path.join(ROOT, "tools", "pactest", "st")
 HOST = os.path.join(ROOT, "tools", "pactest", "host")
+# TcUnit's FB_TestSuite, RUN and RUN_IN_SEQUENCE, under the namespace TcUnit (docs/user_tests.md)
+TCUNIT = os.path.join(ROOT, "tools", "pactest", "tcunit")
 
 # The static libraries the host links, in link order, and where a build tree keeps them (not below:
 # build/ holds the other presets' trees, build/debug...).
@@ -31,6 +33,38 @@ def gvl_pac():
 
 def vocabulary_sources():
     return sorted(glob.glob(os.path.join(VOCABULARY, "*.st")))
+
+
+def tcunit_sources():
+    return sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
+
+
+def tcunit_natives():
+    """TcUnit's TEST and TEST_FINISHED_NAMED, which the host implements."""
+    return [f for f in tcunit_sources() if os.path.basename(f).startswith("TEST")]
+
+
+_TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)
+
+
+def uses_tcunit(sources):
+    """Whether the user's sources (files, a .plcproj standing for the files below its folder) name TcUnit's
+    suite: only then are TcUnit's names (TEST, RUN...) declared, which a program may use for its own."""
+    files = []
+    for path in sources:
+        if path.lower().endswith(".plcproj"):
+            files += [os.path.join(d, n) for d, _, names in os.walk(os.path.dirname(path)) for n in names
+                      if n.lower().endswith((".tcpou", ".st"))]
+        else:
+            files.append(path)
+    for path in files:
+        try:
+            with open(path, "rb") as f:
+                if _TCUNIT.search(f.read()):
+                    return True
+        except OSError:
+            continue
+    return False
 
 
 def native_sources():

@@ -165,6 +165,70 @@ class SortingStationTest(unittest.TestCase):
         self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
 
 
+class TcUnitTest(unittest.TestCase):
+    """tools/pactest/tests/tcunit: TcUnit suites as TcUnit's users write them (EXTENDS TcUnit.FB_TestSuite, a test
+    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR,
+    PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures name the TcUnit test."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(HERE, "tcunit")
+        cls.out = os.path.join(OUT, "tcunit")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out, "--no-coverage")
+
+    def test_each_suite_is_a_test(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        self.assertIn("2 tests: 1 passed, 0 failed, 1 failed as expected", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=2, failed=0, skipped=1)
+
+    def test_a_finished_test_counts_no_more_asserts_and_the_suite_ends_with_its_last_test(self):
+        # 2 + 2 in the one-scan tests; 10 scans of the third, whose assert after TEST_FINISHED_NAMED is not counted
+        self.assertRegex(self.result.stdout, r"ok  FB_CounterSuite  \(14 asserts")
+
+    def test_a_failure_names_the_tcunit_test_and_its_line(self):
+        found = failures(self.result.stdout)
+        source = os.path.join(self.folder, "FB_ShowsAFailureSuite.TcPOU")
+        self.assertEqual([(f["test"], int(f["line"]), f["msg"]) for f in found],
+                         [("FB_ShowsAFailureSuite", line_of(source, "one edge is not two"),
+                           "FailsOnPurpose: one edge is not two: expected 2, got 1")])
+
+
+class CorpusTest(unittest.TestCase):
+    """pac-test-corpus on a folder of TwinCAT files: each POU accepted, refused for a construct or by the parser,
+    or depending on a refused declaration, and the reasons counted."""
+
+    def test_counts_and_reasons(self):
+        folder = os.path.join(OUT, "corpus", "Project")
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, "Project.plcproj"), "w", encoding="utf-8") as f:
+            f.write("<Project />\n")
+        wrap = ('<?xml version="1.0" encoding="utf-8"?>\n<TcPlcObject Version="1.1.0.1">\n  <POU Name="{0}">\n'
+                '    <Declaration><![CDATA[{1}]]></Declaration>\n'
+                '    <Implementation>\n      <ST><![CDATA[{2}]]></ST>\n    </Implementation>\n  </POU>\n'
+                '</TcPlcObject>\n')
+        pous = {"FB_Good": ("FUNCTION_BLOCK FB_Good\nVAR\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
+                "FB_Loop": ("FUNCTION_BLOCK FB_Loop\nVAR\n  i : INT;\nEND_VAR\n", "FOR i := 1 TO 5 BY 0 DO\n  i := i;\nEND_FOR"),
+                "FB_User": ("FUNCTION_BLOCK FB_User\nVAR\n  Loop : FB_Loop;\nEND_VAR\n", "Loop();"),
+                "FB_Broken": ("FUNCTION_BLOCK FB_Broken\nVAR\n  n : INT;\nEND_VAR\n", "n := := 1;")}
+        for name, (declaration, body) in pous.items():
+            with open(os.path.join(folder, name + ".TcPOU"), "w", encoding="utf-8") as f:
+                f.write(wrap.format(name, declaration, body))
+        report = os.path.join(OUT, "corpus", "report.json")
+        env = dict(os.environ, PYTHONPATH=TOOL)
+        run = subprocess.run([sys.executable, "-m", "pactest.corpus", os.path.dirname(folder), "--json", report,
+                              "--cache", os.path.join(OUT, "pacst-cache")], capture_output=True, text=True, env=env)
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn("total: 4 POUs, 1 accepted (25.0 %), 1 refused by the parser, 1 for a construct, "
+                      "0 needing a vendor library, 1 depending on a refused declaration", run.stdout)
+        with open(report, encoding="utf-8") as f:
+            files = {os.path.basename(k): v for k, v in json.load(f)["projects"][0]["files"].items()}
+        self.assertIsNone(files["FB_Good.TcPOU"])
+        self.assertEqual(files["FB_Loop.TcPOU"][0], "refused construct")
+        self.assertIn("never ends", files["FB_Loop.TcPOU"][1])
+        self.assertEqual(files["FB_User.TcPOU"][0], "depends on a refused declaration")
+        self.assertEqual(files["FB_Broken.TcPOU"][0], "syntax")
+
+
 def _files(folder):
     return [os.path.join(d, n) for d, _, names in os.walk(folder) for n in names]
 
