@@ -215,7 +215,10 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
         args.push_back(xml);
         auto result = RunTranslator(args);
         EXPECT_EQ(result.exitCode, 1) << command;
-        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG: no ST body"),
+        // the body's language named, and what to write instead
+        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG is implemented in "
+                                           "LD: pacst reads ST only; write its body in ST, or leave the POU out of "
+                                           "the program tested"),
                   std::string::npos) << command << ": " << result.output;
         EXPECT_EQ(result.output.find("Traceback"), std::string::npos) << command << ": " << result.output;
     }
@@ -391,6 +394,17 @@ TEST_F(TranslatorUserCli, TwinCatTransitionsAndOtherLanguagesAreRefused) {
                         "    <Implementation>\n      <LD></LD>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
     result = RunTranslator({"check", "--user", ladder});
     EXPECT_NE(result.output.find(ladder + ":7:1: error: FB_B is implemented in LD: pacst reads ST only"),
+              std::string::npos)
+        << result.output;
+    // TwinCAT keeps LD, FBD and IL as a network list: the refusal says which languages, and what to do
+    auto network = Write("FB_C.TcPOU",
+                         "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_C\">\n"
+                         "    <Declaration><![CDATA[FUNCTION_BLOCK FB_C\n]]></Declaration>\n"
+                         "    <Implementation>\n      <NWL></NWL>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
+    result = RunTranslator({"check", "--user", network});
+    EXPECT_NE(result.output.find(network + ":7:1: error: FB_C is implemented in a network list (LD, FBD or IL): "
+                                           "pacst reads ST only; write its body in ST, or leave the POU out of the "
+                                           "program tested"),
               std::string::npos)
         << result.output;
 }

@@ -431,6 +431,13 @@ class Compiler:
         if cls == "IndirectSimpleSpecification":
             if self.user and spec.indirection is not None and spec.init_parameters is None:
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+            if self.user and spec.indirection is None and spec.init_parameters is not None:
+                # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone
+                if any(p is not None for p in spec.init_parameters):
+                    raise self.err(spec, f"FB_init arguments of '{_name(spec.type)}(...)': pac-test does not run "
+                                         "FB_init; declare the instance without them and set what they set in code")
+                self.dialect(spec, "an FB instance declared with ()")
+                return self._spec_type(spec.type, allow_fb)
             if spec.indirection is not None or spec.init_parameters is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._spec_type(spec.type, allow_fb)
@@ -839,6 +846,9 @@ class Compiler:
             m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
                 self._resolve_type(rt, allow_fb=False)
         for block in ([] if is_action else node.declarations):
+            if _cls(block) == "MethodInstanceVariableDeclarations":
+                self._instance_vars(owner, m, block, inherited)
+                continue
             if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
                 for item in block.items:
                     vtype = self._spec_type(item.init.spec, allow_fb=False)
@@ -848,6 +858,22 @@ class Compiler:
             self._var_block(m, block)
         owner.methods[prefix + name.upper()] = m
         return m
+
+    def _instance_vars(self, owner, method, block, inherited):
+        """User mode: a METHOD's VAR_INST, kept from call to call: variables of its FUNCTION_BLOCK (FB instances
+        too), which the METHOD reads by their names; a name the FB has already is refused."""
+        self.dialect(block, "VAR_INST")
+        if owner.kind != "fb" or owner.program:
+            raise self.err(block, "VAR_INST belongs to a METHOD of a FUNCTION_BLOCK")
+        for item in block.items:
+            names = [_name(dv.variable.name) for dv in item.variables]
+            if inherited and all(owner.var(n) is not None for n in names):
+                continue  # the base's METHOD translated again for a derived FB: the variables came with the base's
+            for n in names:
+                if owner.var(n) is not None:
+                    raise self.err(item, f"VAR_INST '{n}' of METHOD {method.name}: {owner.name} has a variable of "
+                                         "that name; rename one (pacst keeps VAR_INST among the FB's variables)")
+            self._user_vars(owner, "var", False, item)
 
     def _var_block(self, pou, block):
         cls = _cls(block)

@@ -28,6 +28,11 @@ _ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", 
                "UDINT", "ULINT", "REAL", "LREAL", "TIME", "DATE", "DT", "TOD"}
 
 
+# The PLCopen XML's and TwinCAT's names of the bodies pacst does not read
+_LANGUAGES = {"NWL": "a network list (LD, FBD or IL)", "LD": "LD", "FBD": "FBD", "IL": "IL", "SFC": "SFC",
+              "CFC": "CFC"}
+
+
 class PlcopenReadError(Exception):
     lineno = None  # the line of the XML element refused, where known
 
@@ -190,7 +195,15 @@ def _method(element):
 def _st_body(element, name):
     st = element.find(f"{q('body')}/{q('ST')}")
     if st is None:
-        raise PlcopenReadError(f"{name}: no ST body")
+        body = element.find(q("body"))
+        found = [e for e in body if isinstance(e.tag, str)] if body is not None else []
+        if not found:
+            raise PlcopenReadError(f"{name}: no ST body")
+        language = found[0].tag.rsplit("}", 1)[-1]
+        exc = PlcopenReadError(f"{name} is implemented in {_LANGUAGES.get(language, language)}: pacst reads ST "
+                               "only; write its body in ST, or leave the POU out of the program tested")
+        exc.lineno = found[0].sourceline
+        raise exc
     return _xhtml_text(st)
 
 

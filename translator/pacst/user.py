@@ -117,7 +117,9 @@ def string_length(comp, spec):
         raise comp.err(spec, "the length of a STRING is an integer literal")
     n = int(str(expr.value).replace("_", ""))
     if not 1 <= n <= STRING_CAPACITY:
-        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters")
+        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters; "
+                             f"declare STRING({STRING_CAPACITY}) or shorter where the program's texts fit (a "
+                             f"T_MaxString, STRING(255), too), or leave the POU out of the program tested")
     return n
 
 

@@ -167,7 +167,7 @@ class SortingStationTest(unittest.TestCase):
 
 class TcUnitTest(unittest.TestCase):
     """tools/pactest/tests/tcunit: TcUnit suites as TcUnit's users write them (EXTENDS TcUnit.FB_TestSuite, a test
-    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR,
+    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR, VAR_INST kept over cycles,
     PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures name the TcUnit test."""
 
     @classmethod
