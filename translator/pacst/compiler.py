@@ -563,6 +563,15 @@ class Compiler:
                     self.enum_values[up] = t
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
+        elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \
+                and decl.value is None:
+            # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
+            self._declare_global(decl.name, "type")
+            if decl.string_type.length is not None:
+                user.string_length(self, decl.string_type)
+            self.dialect(decl, "a STRING type")
+            self.types[_name(decl.name).upper()] = T.STRING
+            return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
         elif cls == "UnionTypeDeclaration":

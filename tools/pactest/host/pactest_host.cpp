@@ -45,6 +45,7 @@ struct TestRecord {
     bool finished = false;
     // A TcUnit suite (an FB that EXTENDS FB_TestSuite) is one test here: its TEST('name')s, in the order first
     // called, and those that called TEST_FINISHED(); the suite ends once every one has finished.
+    nanoseconds now{0};  // the simulated clock in the running scan (F_GetSystemTime)
     std::vector<std::string> tcunitTests;
     std::vector<std::string> tcunitFinished;
     std::string tcunitCurrent;
@@ -199,6 +200,7 @@ int Run(const Options& options, const Project& project) {
     const int base = scenario.timing.plcCycleMs;
     project.init();
     plc.CallImage([&](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+        record.now = plc.Now();
         project.copyIn(fromPac.Data(), fromPac.Size());
         const std::int64_t scan = plc.Task().ScanCount();
         for (const Task& task : project.tasks) {
@@ -283,6 +285,10 @@ void RecordFinished() {
     } else {
         RecordTestFinished(running->tcunitCurrent);
     }
+}
+
+std::chrono::nanoseconds Now() {
+    return running ? running->now : std::chrono::nanoseconds{0};
 }
 
 void RecordTest(const std::string& name) {

@@ -119,6 +119,17 @@ BOOL TEST_FINISHED(const char* file__, int line__, BOOL EN, BOOL* __ENO) {
     return TRUE;
 }
 
+// Tc2_System's F_GetSystemTime: 100 ns since 1 January 1601 (UTC); the simulated clock starts at power-on at
+// 1 January 2026 00:00 UTC (tools/pactest/vendor/Tc2_System/F_GetSystemTime.st).
+ULINT F_GETSYSTEMTIME(const char* file__, int line__, BOOL EN, BOOL* __ENO) {
+    (void)file__;
+    (void)line__;
+    (void)EN;
+    Ok(__ENO);
+    constexpr ULINT k1601To2026 = 134116992000000000ULL;  // (1970 - 1601: 11644473600 s + 2026 - 1970: 1767225600 s) x 10^7
+    return k1601To2026 + static_cast<ULINT>(pactest::Now().count() / 100);
+}
+
 BOOL TEST(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING TESTNAME) {
     (void)file__;
     (void)line__;

@@ -59,11 +59,13 @@ class HostBuild:
         ST files written to OUT/plcopen."""
         tcunit = project.uses_tcunit(self.wiring.sources)
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + \
-            (project.tcunit_sources() if tcunit else []) + self.wiring.sources
-        natives = [a for f in project.native_sources() + (project.tcunit_natives() if tcunit else [])
-                   for a in ("--native", f)]
+            project.vendor_sources() + (project.tcunit_sources() if tcunit else []) + self.wiring.sources
+        natives = [a for f in project.native_sources() + project.vendor_natives() +
+                   (project.tcunit_natives() if tcunit else []) for a in ("--native", f)]
         # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power
         namespaces = ["--namespace", f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"]
+        for name, folder in project.vendor_libraries().items():  # Tc2_System.T_MaxString
+            namespaces += ["--namespace", f"{name}={folder}"]
         if tcunit:  # TcUnit's FB_TestSuite and RUN (docs/user_tests.md#tcunit-suites)
             namespaces += ["--namespace", f"TcUnit={project.TCUNIT}"]
         return ["--user", *namespaces, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
@@ -85,7 +87,8 @@ class HostBuild:
                     raise BuildError(f"$.tests.names[{i}]: no FUNCTION_BLOCK {name} in the sources")
                 found.append(fb)
             return found
-        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep, project.TCUNIT + os.sep)
+        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep, project.TCUNIT + os.sep,
+                  project.VENDOR + os.sep)
         # a TcUnit suite (EXTENDS FB_TestSuite) is a test whatever its name
         return [fb for fb in symbols.table["function_blocks"]
                 if not fb.get("standard") and (fb["name"].upper().startswith(self.wiring.prefix.upper())

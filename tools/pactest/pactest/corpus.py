@@ -57,11 +57,13 @@ def _given(files):
     names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
     if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names
         return [], [], None
+    namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
+    extra = project.vocabulary_sources() + project.vendor_sources()
+    native = project.native_sources() + project.vendor_natives()
     if not project.uses_tcunit(files):
-        return project.vocabulary_sources(), project.native_sources(), None
-    namespaces = {"TCUNIT": ("TcUnit", project.TCUNIT)}
-    return (project.vocabulary_sources() + project.tcunit_sources(),
-            project.native_sources() + project.tcunit_natives(), namespaces)
+        return extra, native, namespaces
+    namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)
+    return extra + project.tcunit_sources(), native + project.tcunit_natives(), namespaces
 
 
 def measure(files, cache, jobs):

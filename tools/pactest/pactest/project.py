@@ -39,6 +39,24 @@ def tcunit_sources():
     return sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
 
 
+VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
+
+
+def vendor_libraries():
+    """{namespace: folder} of the vendor libraries' parts pac-test provides (docs/user_dialect.md): Tc2_System's."""
+    return {name: os.path.join(VENDOR, name) for name in sorted(os.listdir(VENDOR))
+            if os.path.isdir(os.path.join(VENDOR, name))}
+
+
+def vendor_sources():
+    return [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))]
+
+
+def vendor_natives():
+    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock)."""
+    return [f for f in vendor_sources() if os.path.basename(f).startswith("F_")]
+
+
 def tcunit_natives():
     """TcUnit's TEST and TEST_FINISHED_NAMED, which the host implements."""
     return [f for f in tcunit_sources() if os.path.basename(f).startswith("TEST")]
