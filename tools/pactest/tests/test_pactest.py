@@ -89,15 +89,28 @@ def check_vcd(case, path):
     return text
 
 
+def check_coverage(case, out, pous):
+    """The coverage summary of a run in `out` names `pous`, and more than 80 % of the ST's lines ran."""
+    with open(os.path.join(out, "coverage", "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    found = {p["pou"] for p in summary["pous"]}
+    case.assertTrue(pous <= found, found)
+    case.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+
+
+def run_example(name):
+    """pac-test on examples/NAME: (its folder, the output folder, the run)."""
+    folder, out = os.path.join(ROOT, "examples", name), os.path.join(OUT, name)
+    return folder, out, pac_test(os.path.join(folder, "wiring.json"), out)
+
+
 class ExampleTest(unittest.TestCase):
     """examples/pick_and_place: four tests pass, the deliberate failure fails as expected and shows its
     file:line, a VCD and a JUnit XML that validates; the coverage table of its ST is printed."""
 
     @classmethod
     def setUpClass(cls):
-        cls.folder = os.path.join(ROOT, "examples", "pick_and_place")
-        cls.out = os.path.join(OUT, "pick_and_place")
-        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out)
+        cls.folder, cls.out, cls.result = run_example("pick_and_place")
 
     def test_passes_with_the_deliberate_failure_outside_the_count(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -125,11 +138,7 @@ class ExampleTest(unittest.TestCase):
     @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
     def test_coverage_table_of_the_machine_program(self):
         self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
-        with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
-            summary = json.load(f)
-        pous = {p["pou"] for p in summary["pous"]}
-        self.assertTrue({"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"} <= pous, pous)
-        self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+        check_coverage(self, self.out, {"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"})
 
 
 class SortingStationTest(unittest.TestCase):
@@ -139,9 +148,7 @@ class SortingStationTest(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        cls.folder = os.path.join(ROOT, "examples", "sorting_station")
-        cls.out = os.path.join(OUT, "sorting_station")
-        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out)
+        cls.folder, cls.out, cls.result = run_example("sorting_station")
 
     def test_every_test_passes(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -158,17 +165,14 @@ class SortingStationTest(unittest.TestCase):
 
     @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
     def test_coverage_of_methods_and_properties(self):
-        with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
-            summary = json.load(f)
-        pous = {p["pou"] for p in summary["pous"]}
-        self.assertTrue({"MAIN", "FB_Sorter", "FB_LaneTable", "FB_RecipeFeeder"} <= pous, pous)
-        self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+        check_coverage(self, self.out, {"MAIN", "FB_Sorter", "FB_LaneTable", "FB_RecipeFeeder"})
 
 
 class TcUnitTest(unittest.TestCase):
     """tools/pactest/tests/tcunit: TcUnit suites as TcUnit's users write them (EXTENDS TcUnit.FB_TestSuite, a test
-    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR, VAR_INST kept over cycles,
-    PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures name the TcUnit test."""
+    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR,
+    VAR_INST kept over cycles, PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures
+    name the TcUnit test."""
 
     @classmethod
     def setUpClass(cls):
