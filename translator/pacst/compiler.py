@@ -1017,8 +1017,8 @@ class Compiler:
         if constant and value is None:
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
-            if self.user and (vtype.is_array or vtype.is_struct):
-                self.dialect(value, "an initial value of an array or a struct")
+            if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
+                self.dialect(value, "an initial value of an array, a struct or an FB instance's inputs")
             elif vtype.is_fb or vtype.is_array or vtype.is_struct:
                 raise self.err(value, "initial values are only for elementary and enumeration "
                                       "variables: give defaults in the TYPE or in code")
@@ -1105,7 +1105,10 @@ class Compiler:
         """C statements that give `target` (an lvalue of var's type) var's initial value."""
         t = var.type
         if t.is_fb:
-            return [f"{t.cname}_init__(&{target}, retain);"]
+            lines = [f"{t.cname}_init__(&{target}, retain);"]
+            if var.init is not None:  # user mode: Delay : TON := (PT := T#1S), the inputs' initial values
+                lines += self._fb_inputs_init(t, var.init, target)
+            return lines
         if t.is_array or t.is_struct:
             lines = [f"__pacst_init_{t.cname}(&{target});"]
             if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
@@ -1148,6 +1151,20 @@ class Compiler:
             return out
         raise self.err(node, f"the initial value of a {t.name} is written "
                              f"{'[a, b, n(c)]' if t.is_array else '(Member := value, ...)'}")
+
+    def _fb_inputs_init(self, t, node, target):
+        """User mode: the C assignments of an FB instance's `(Input := value, ...)`, after its own init."""
+        cls = _cls(node)
+        if cls not in ("StructureInitialization", "InitializedStructure"):
+            raise self.err(node, f"the initial value of a {t.name} instance is written (Input := value, ...)")
+        self.dialect(node, "initial values of an FB instance's inputs")
+        out = []
+        for name, value in _struct_elements(node.init if cls == "InitializedStructure" else node):
+            v = t.var(_name(name))
+            if v is None or v.section != "input":
+                raise self.err(name, f"{t.name} has no input '{_name(name)}' to give an initial value")
+            out += self._element_init(v.type, value, f"{target}.{v.cname}.value")
+        return out
 
     def _element_init(self, t, node, target):
         if t.is_array or t.is_struct:

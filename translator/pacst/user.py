@@ -170,8 +170,8 @@ def var_type(comp, init, allow_fb):
         if init.indirection is not None:
             raise comp.err(init, "pointers and references are outside pacst's user programs")
         return inline_array(comp, init.spec, comp.file), None
-    if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2)
-        return comp._resolve_type(init.name, allow_fb=False), None
+    if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2); Delay : TON := (PT := T#1S)
+        return comp._resolve_type(init.name, allow_fb=allow_fb), None
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
