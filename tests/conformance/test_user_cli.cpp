@@ -224,6 +224,22 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
     }
 }
 
+TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
+    // A refusal in the ST of a PLCopen object names the XML file and the line CODESYS shows, not the ST file
+    // pacst writes from it; one in its declaration names the object's element.
+    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+                                    "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n"
+                                    "<interface><localVars><variable name=\"n\"><type><INT/></type></variable>"
+                                    "</localVars></interface>\n"
+                                    "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;\n"
+                                    "n := Nope;</xhtml></ST></body>\n</pou>\n</pous></types></project>\n");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":7:6: error: undeclared name 'Nope' (in FB_A)"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("FB_A.st"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
     // CODESYS keeps a POU's METHODs in its addData, PLCopen its ACTIONs in <actions>: both are translated.
     auto xml = Write("Fb.xml",
