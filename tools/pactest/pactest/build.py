@@ -36,6 +36,8 @@ def link(exe, objects, libraries, sanitize, coverage=False):
 
 
 class HostBuild:
+    takes_dialect = True  # pacst's C: the vendor libraries' parts and TcUnit's suite come with the program
+
     def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
         self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
         self.coverage, self.jobs = coverage, jobs or os.cpu_count() or 1
@@ -57,14 +59,17 @@ class HostBuild:
         library, GVL_PAC (the program names its constants, PAC_CMD_PUT_INT_REG...), the vocabulary (its FUNCTIONs
         the host's) and the user's sources; a TwinCAT .plcproj stands for its objects, a PLCopen XML project for
         ST files written to OUT/plcopen."""
-        tcunit = project.uses_tcunit(self.wiring.sources)
-        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + \
-            project.vendor_sources() + (project.tcunit_sources() if tcunit else []) + self.wiring.sources
-        natives = [a for f in project.native_sources() + project.vendor_natives() +
+        # the vendor libraries' parts and TcUnit's suite are dialect: pacst's C only (not MATIEC's)
+        dialect = self.takes_dialect
+        tcunit = dialect and project.uses_tcunit(self.wiring.sources)
+        vendor = project.vendor_sources() if dialect else []
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
+            (project.tcunit_sources() if tcunit else []) + self.wiring.sources
+        natives = [a for f in project.native_sources() + (project.vendor_natives() if dialect else []) +
                    (project.tcunit_natives() if tcunit else []) for a in ("--native", f)]
         # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power
         namespaces = ["--namespace", f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"]
-        for name, folder in project.vendor_libraries().items():  # Tc2_System.T_MaxString
+        for name, folder in project.vendor_libraries().items() if dialect else []:  # Tc2_System.T_MaxString
             namespaces += ["--namespace", f"{name}={folder}"]
         if tcunit:  # TcUnit's FB_TestSuite and RUN (docs/user_tests.md#tcunit-suites)
             namespaces += ["--namespace", f"TcUnit={project.TCUNIT}"]
