@@ -59,9 +59,10 @@ class HostBuild:
         library, GVL_PAC (the program names its constants, PAC_CMD_PUT_INT_REG...), the vocabulary (its FUNCTIONs
         the host's) and the user's sources; a TwinCAT .plcproj stands for its objects, a PLCopen XML project for
         ST files written to OUT/plcopen."""
-        # the vendor libraries' parts and TcUnit's suite are dialect: pacst's C only (not MATIEC's)
-        dialect = self.takes_dialect
-        tcunit = dialect and project.uses_tcunit(self.wiring.sources)
+        # the vendor libraries' parts and TcUnit's suite are dialect: with MATIEC only for a program that names
+        # them (which pacst matiec then refuses at its lines)
+        dialect = self.takes_dialect or project.uses_vendor(self.wiring.sources)
+        tcunit = self.takes_dialect and project.uses_tcunit(self.wiring.sources)
         vendor = project.vendor_sources() if dialect else []
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
             (project.tcunit_sources() if tcunit else []) + self.wiring.sources

@@ -63,11 +63,22 @@ def tcunit_natives():
 
 
 _TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)
+_VENDOR_NAMES = re.compile(rb"\bTc2_System\s*\.|\bT_MaxString\b|\bMAX_STRING_LENGTH\b|\bF_GetSystemTime\b", re.I)
 
 
 def uses_tcunit(sources):
     """Whether the user's sources (files, a .plcproj standing for the files below its folder) name TcUnit's
     suite: only then are TcUnit's names (TEST, RUN...) declared, which a program may use for its own."""
+    return _names(sources, _TCUNIT)
+
+
+def uses_vendor(sources):
+    """Whether the user's sources name what pac-test provides of a vendor library (Tc2_System's)."""
+    return _names(sources, _VENDOR_NAMES)
+
+
+def _names(sources, pattern):
+    """Whether `pattern` occurs in the user's sources."""
     files = []
     for path in sources:
         if path.lower().endswith(".plcproj"):
@@ -78,7 +89,7 @@ def uses_tcunit(sources):
     for path in files:
         try:
             with open(path, "rb") as f:
-                if _TCUNIT.search(f.read()):
+                if pattern.search(f.read()):
                     return True
         except OSError:
             continue
