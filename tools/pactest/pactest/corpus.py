@@ -2,10 +2,10 @@
 
 For each project under the folders given (a folder holding a .plcproj, or a folder of TwinCAT files), every
 .TcPOU, .TcDUT, .TcGVL and .TcIO is parsed and the parsed ones translated together by `pacst --user` with what
-pac-test gives every program: its test vocabulary and TcUnit's FB_TestSuite under the namespace TcUnit (left
-out for a project that declares TcUnit itself). A file is accepted when no
-refusal names it; a refused file is removed and the rest translated again, so that what depends on it is
-counted as such. Prints each project's counts and the refusals by reason (the names in a reason replaced by
+pac-test gives a program: its test vocabulary, the vendor libraries' parts it provides (Tc2_System's) and, for
+sources that name it, TcUnit's FB_TestSuite (all left out for a project that declares TcUnit itself). A file
+is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
+depends on it is counted as such. Prints each project's counts and the refusals by reason (the names in a reason replaced by
 '…'), and with --json writes them."""
 import argparse
 import collections
