@@ -112,10 +112,16 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
     auto main = Write("PRG_Main.st",
                       "PROGRAM PRG_Main\nVAR Step : E_Step := E_Step.IDLE; Status : FB_Status; END_VAR\n"
                       "Status();\nCASE Step OF\n  E_Step.IDLE: Step := E_Step.HOMING;\n"
-                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := FAULT; END_IF;\n"
+                      "  E_Step.HOMING, E_Step.FAULT:\n    IF Step <> E_Step.FAULT THEN Step := E_Step.FAULT; END_IF;\n"
                       "END_CASE;\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
     EXPECT_EQ(result.exitCode, 0) << result.output;
+    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it
+    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; END_VAR\nStep := FAULT;\nEND_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, bare});
+    EXPECT_NE(result.output.find(bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT"), std::string::npos)
+        << result.output;
     auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
                                       "END_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});
@@ -209,10 +215,29 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
         args.push_back(xml);
         auto result = RunTranslator(args);
         EXPECT_EQ(result.exitCode, 1) << command;
-        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG: no ST body"),
+        // the body's language named, and what to write instead
+        EXPECT_NE(result.output.find(xml + ":4:1: error: cannot read the PLCopen project: PLC_PRG is implemented in "
+                                           "LD: pacst reads ST only; write its body in ST, or leave the POU out of "
+                                           "the program tested"),
                   std::string::npos) << command << ": " << result.output;
         EXPECT_EQ(result.output.find("Traceback"), std::string::npos) << command << ": " << result.output;
     }
+}
+
+TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
+    // A refusal in the ST of a PLCopen object names the XML file and the line CODESYS shows, not the ST file
+    // pacst writes from it; one in its declaration names the object's element.
+    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+                                    "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n"
+                                    "<interface><localVars><variable name=\"n\"><type><INT/></type></variable>"
+                                    "</localVars></interface>\n"
+                                    "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;\n"
+                                    "n := Nope;</xhtml></ST></body>\n</pou>\n</pous></types></project>\n");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":7:6: error: undeclared name 'Nope' (in FB_A)"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("FB_A.st"), std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
@@ -385,6 +410,17 @@ TEST_F(TranslatorUserCli, TwinCatTransitionsAndOtherLanguagesAreRefused) {
                         "    <Implementation>\n      <LD></LD>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
     result = RunTranslator({"check", "--user", ladder});
     EXPECT_NE(result.output.find(ladder + ":7:1: error: FB_B is implemented in LD: pacst reads ST only"),
+              std::string::npos)
+        << result.output;
+    // TwinCAT keeps LD, FBD and IL as a network list: the refusal says which languages, and what to do
+    auto network = Write("FB_C.TcPOU",
+                         "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_C\">\n"
+                         "    <Declaration><![CDATA[FUNCTION_BLOCK FB_C\n]]></Declaration>\n"
+                         "    <Implementation>\n      <NWL></NWL>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n");
+    result = RunTranslator({"check", "--user", network});
+    EXPECT_NE(result.output.find(network + ":7:1: error: FB_C is implemented in a network list (LD, FBD or IL): "
+                                           "pacst reads ST only; write its body in ST, or leave the POU out of the "
+                                           "program tested"),
               std::string::npos)
         << result.output;
 }

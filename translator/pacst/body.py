@@ -341,7 +341,7 @@ class BodyCompiler:
     def compile(self):
         pou = self.pou
         statements = pou.node.body.statements if pou.node.body is not None else []
-        if not statements and self.comp.user and (pou.kind == "fb" or pou.owner is not None and pou.ret is None):
+        if not statements and self.comp.user and (pou.kind == "fb" or pou.ret is None):
             self.comp.dialect(pou.node, f"{pou.name} with an empty body")
             return []
         if not statements:
@@ -615,6 +615,7 @@ class BodyCompiler:
             if label is None or label.upper() not in self.comp.enum_values:
                 raise self.err(node, f"CASE label must be a value of {sel_type.name}")
             et = self.comp.enum_values[label.upper()]
+            self.comp.bare_enum_value(et, label, node)
             if et is not sel_type:
                 raise self.err(node, f"'{label}' is a value of {et.name}, not of {sel_type.name}")
             return et.values.index(next(v for v in et.values if v.upper() == label.upper()))
@@ -688,6 +689,7 @@ class BodyCompiler:
 
     def _s_FunctionCallStatement(self, node, ind, d):
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.lookup))
+        node = self.ex.generic_assert(node)
         target = self.method_target(node.name)
         if target is not None:  # user mode: Axis.Move(...), THIS^.Move(...), Move(...) inside the FB
             if target[1] is self.pou:
@@ -732,6 +734,8 @@ class BodyCompiler:
             raise self.err(node, f"undeclared function block instance '{name}'")
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
+        if self.pou.kind == "function" and any(x is v for x in self.pou.vars):  # in a METHOD's VAR (user mode)
+            return self._fb_call(node, v.cname, v.type, ind)
         return self._fb_call(node, f"data__->{v.cname}", v.type, ind)
 
     def _fb_call(self, node, inst, fbt, ind):

@@ -107,7 +107,7 @@ def _build(args):
         if args.stamp and os.path.exists(args.stamp):
             os.remove(args.stamp)
         for err in e.errors:
-            print(err, file=sys.stderr)
+            print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
     outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
     outputs.update(_tables(constants))
@@ -132,7 +132,7 @@ def _declare(args):
         if os.path.exists(check_name):
             os.remove(check_name)
         for err in e.errors:
-            print(err, file=sys.stderr)
+            print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
     outputs = {name: text for name, text in Emitter(comp, program).outputs(args.files).items() if name in names}
     outputs["layout_probe.c"] = layout.probe_source(program, args.files)
@@ -161,7 +161,7 @@ def _check(args):
         except StErrors as e:
             failed = True
             for err in e.errors:
-                print(err, file=sys.stderr)
+                print(plcopen_read.at_source(err), file=sys.stderr)
     return 1 if failed else 0
 
 
@@ -175,11 +175,11 @@ def _matiec(args):
             raise StErrors(sorted(unique.values(), key=lambda e: (e.file, e.line, e.col)))
         text, lines = matiec.source_and_lines(comp, program, matiec.read_tasks(args.tasks))
     except StError as e:
-        print(e, file=sys.stderr)
+        print(plcopen_read.at_source(e), file=sys.stderr)
         return 1
     except StErrors as e:
         for err in e.errors:
-            print(err, file=sys.stderr)
+            print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
     out_dir = os.path.dirname(os.path.abspath(args.out))
     write_outputs(out_dir, {os.path.basename(args.out): text})
@@ -195,7 +195,7 @@ def _order(args):
         order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)))
     except StErrors as e:
         for err in e.errors:
-            print(err, file=sys.stderr)
+            print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
     print("\n".join(order))
     return 0

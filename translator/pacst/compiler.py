@@ -431,6 +431,13 @@ class Compiler:
         if cls == "IndirectSimpleSpecification":
             if self.user and spec.indirection is not None and spec.init_parameters is None:
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+            if self.user and spec.indirection is None and spec.init_parameters is not None:
+                # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone
+                if any(p is not None for p in spec.init_parameters):
+                    raise self.err(spec, f"FB_init arguments of '{_name(spec.type)}(...)': pac-test does not run "
+                                         "FB_init; declare the instance without them and set what they set in code")
+                self.dialect(spec, "an FB instance declared with ()")
+                return self._spec_type(spec.type, allow_fb)
             if spec.indirection is not None or spec.init_parameters is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._spec_type(spec.type, allow_fb)
@@ -537,6 +544,7 @@ class Compiler:
                 numbers.append(number)
                 number += 1
             t = T.EnumType(_name(decl.name), values, numbers, base)
+            t.qualified_only = self.user and user.qualified_only(self, pos(decl)[0])
             if init.value is not None:  # user mode: the type's default value instead of the first
                 dv = init.value
                 self.dialect(dv, "an enumeration's default value")
@@ -555,6 +563,15 @@ class Compiler:
                     self.enum_values[up] = t
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
+        elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \
+                and decl.value is None:
+            # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
+            self._declare_global(decl.name, "type")
+            if decl.string_type.length is not None:
+                user.string_length(self, decl.string_type)
+            self.dialect(decl, "a STRING type")
+            self.types[_name(decl.name).upper()] = T.STRING
+            return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
         elif cls == "UnionTypeDeclaration":
@@ -603,7 +620,10 @@ class Compiler:
         program = kind == "program"
         kind = "fb" if program else kind
         if getattr(node, "access", None) is not None:
-            raise self.err(node, "access specifiers are outside the portable subset")
+            if not self.user:
+                raise self.err(node, "access specifiers are outside the portable subset")
+            # FINAL, ABSTRACT, PUBLIC, INTERNAL: what the IDE checks; the translation is the same
+            self.dialect(node, f"the access specifier {str(node.access).upper()}")
         if kind == "fb" and not program and (node.extends is not None or node.implements is not None) \
                 and not self.user:
             raise self.err(node, "EXTENDS and IMPLEMENTS are outside the portable subset")
@@ -619,7 +639,7 @@ class Compiler:
             pou.fbtype = T.FbType(pou.name)
             pou.fbtype.pou = pou
         elif node.return_type is None:
-            if not pou.native:
+            if not pou.native and not self.user:  # TwinCAT and CODESYS take a FUNCTION without a result
                 raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
         else:
             pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
@@ -726,7 +746,11 @@ class Compiler:
         METHODs and ACTIONs translated again for this FB unless it overrides them; SUPER^() is the base's
         body and SUPER^.M() the base's M, both on this instance."""
         token = node.extends.interfaces[0]
-        base = self.pous.get(_name(token).upper())
+        name = _name(token)
+        first, _, rest = name.partition(".")
+        if rest and self.namespace(first) is not None and self.in_namespace(first, rest):  # TcUnit.FB_TestSuite
+            name = rest
+        base = self.pous.get(name.upper())
         if base is None or base.kind != "fb" or base.program:
             if _name(token).upper() in self.declared_at and _name(token).upper() not in self.pous:
                 raise self.err(token, f"{_name(token)} cannot be extended: its declaration was refused or comes later")
@@ -831,6 +855,9 @@ class Compiler:
             m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
                 self._resolve_type(rt, allow_fb=False)
         for block in ([] if is_action else node.declarations):
+            if _cls(block) == "MethodInstanceVariableDeclarations":
+                self._instance_vars(owner, m, block, inherited)
+                continue
             if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
                 for item in block.items:
                     vtype = self._spec_type(item.init.spec, allow_fb=False)
@@ -840,6 +867,22 @@ class Compiler:
             self._var_block(m, block)
         owner.methods[prefix + name.upper()] = m
         return m
+
+    def _instance_vars(self, owner, method, block, inherited):
+        """User mode: a METHOD's VAR_INST, kept from call to call: variables of its FUNCTION_BLOCK (FB instances
+        too), which the METHOD reads by their names; a name the FB has already is refused."""
+        self.dialect(block, "VAR_INST")
+        if owner.kind != "fb" or owner.program:
+            raise self.err(block, "VAR_INST belongs to a METHOD of a FUNCTION_BLOCK")
+        for item in block.items:
+            names = [_name(dv.variable.name) for dv in item.variables]
+            if inherited and all(owner.var(n) is not None for n in names):
+                continue  # the base's METHOD translated again for a derived FB: the variables came with the base's
+            for n in names:
+                if owner.var(n) is not None:
+                    raise self.err(item, f"VAR_INST '{n}' of METHOD {method.name}: {owner.name} has a variable of "
+                                         "that name; rename one (pacst keeps VAR_INST among the FB's variables)")
+            self._user_vars(owner, "var", False, item)
 
     def _var_block(self, pou, block):
         cls = _cls(block)
@@ -933,7 +976,9 @@ class Compiler:
 
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
-        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb"))
+        # a METHOD's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its other VAR
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or pou.owner is not None
+                                                                 and section == "var"))
         value = user.initial_value(item.init)
         self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
@@ -972,8 +1017,8 @@ class Compiler:
         if constant and value is None:
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
-            if self.user and (vtype.is_array or vtype.is_struct):
-                self.dialect(value, "an initial value of an array or a struct")
+            if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
+                self.dialect(value, "an initial value of an array, a struct or an FB instance's inputs")
             elif vtype.is_fb or vtype.is_array or vtype.is_struct:
                 raise self.err(value, "initial values are only for elementary and enumeration "
                                       "variables: give defaults in the TYPE or in code")
@@ -1005,6 +1050,13 @@ class Compiler:
             names = sorted(t.name for t in types)
             raise self.err(node, f"'{name}' is a value of {' and '.join(names)}: qualify it ({names[0]}.{name})")
 
+    def bare_enum_value(self, t, name, node):
+        """User mode: an enumeration value written alone, refused where its type has {attribute 'qualified_only'}
+        (TwinCAT's default for a new enumeration), as the IDE refuses it."""
+        if getattr(t, "qualified_only", False):
+            raise self.err(node, f"'{name}' alone: the enumeration {t.name} has {{attribute 'qualified_only'}}, as in "
+                                 f"TwinCAT write {t.name}.{name}")
+
     def enum_value_of(self, t, name, node):
         """The spelling of the value `name` of the enumeration `t`; an error at `node` when it has none."""
         value = next((v for v in t.values if v.upper() == name.upper()), None)
@@ -1022,7 +1074,7 @@ class Compiler:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
-                pass
+                self.bare_enum_value(self.enum_values[_name(node.name).upper()], _name(node.name), node)
             elif self.qualified_enum_value(node) is not None:
                 pass
             elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):
@@ -1053,7 +1105,10 @@ class Compiler:
         """C statements that give `target` (an lvalue of var's type) var's initial value."""
         t = var.type
         if t.is_fb:
-            return [f"{t.cname}_init__(&{target}, retain);"]
+            lines = [f"{t.cname}_init__(&{target}, retain);"]
+            if var.init is not None:  # user mode: Delay : TON := (PT := T#1S), the inputs' initial values
+                lines += self._fb_inputs_init(t, var.init, target)
+            return lines
         if t.is_array or t.is_struct:
             lines = [f"__pacst_init_{t.cname}(&{target});"]
             if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
@@ -1096,6 +1151,20 @@ class Compiler:
             return out
         raise self.err(node, f"the initial value of a {t.name} is written "
                              f"{'[a, b, n(c)]' if t.is_array else '(Member := value, ...)'}")
+
+    def _fb_inputs_init(self, t, node, target):
+        """User mode: the C assignments of an FB instance's `(Input := value, ...)`, after its own init."""
+        cls = _cls(node)
+        if cls not in ("StructureInitialization", "InitializedStructure"):
+            raise self.err(node, f"the initial value of a {t.name} instance is written (Input := value, ...)")
+        self.dialect(node, "initial values of an FB instance's inputs")
+        out = []
+        for name, value in _struct_elements(node.init if cls == "InitializedStructure" else node):
+            v = t.var(_name(name))
+            if v is None or v.section != "input":
+                raise self.err(name, f"{t.name} has no input '{_name(name)}' to give an initial value")
+            out += self._element_init(v.type, value, f"{target}.{v.cname}.value")
+        return out
 
     def _element_init(self, t, node, target):
         if t.is_array or t.is_struct:

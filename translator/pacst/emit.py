@@ -245,12 +245,12 @@ class Emitter:
                f"  {pou.ret.cname} {pou.cname};"]
         for v in pou.vars:
             if v.section == "var":
-                out.append(f"  {v.type.cname} {v.cname};")
+                out.append(self._local(v))
         out += ["  " + line for line in self.comp.init_code(T.Var(pou.name, "result", pou.ret, None, None),
                                                              pou.cname)]
         for v in pou.vars:
-            if v.section == "var":
-                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+            if v.section == "var":  # an FB instance of a METHOD's VAR: initialised in every call (user mode)
+                out += ["  " + line.replace(", retain);", ", FALSE);") for line in self.comp.init_code(v, v.cname)]
         out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", f"    return {pou.cname};", "  }"]
         # A FUNCTION's outputs are local to the call (IEC): they start from their initial value in every
         # call, and one left unassigned gives that value to the caller, as MATIEC's copy-out does.
@@ -261,14 +261,20 @@ class Emitter:
         out += ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", f"  return {pou.cname};", "}", ""]
         return out
 
+    def _local(self, v):
+        """The C declaration of a FUNCTION's or METHOD's VAR; in user mode one of a compound type (an FB instance
+        in a METHOD) starts all zero, the flags of its IEC variables (forcing) too, before its init."""
+        compound = v.type.is_fb or v.type.is_struct or v.type.is_array
+        return f"  {v.type.cname} {v.cname}{' = {0}' if self.comp.user and compound else ''};"
+
     def _procedure_code(self, pou):
         out = [self._function_signature(pou) + " {", "  BOOL ENO = TRUE;"]
         for v in pou.vars:
             if v.section == "var":
-                out.append(f"  {v.type.cname} {v.cname};")
+                out.append(self._local(v))
         for v in pou.vars:
-            if v.section == "var":
-                out += ["  " + line for line in self.comp.init_code(v, v.cname)]
+            if v.section == "var":  # an FB instance of a METHOD's VAR: initialised in every call (user mode)
+                out += ["  " + line.replace(", retain);", ", FALSE);") for line in self.comp.init_code(v, v.cname)]
         out += ["  if (!EN) {", "    if (__ENO != NULL) *__ENO = FALSE;", "    return;", "  }"]
         for v in pou.vars:
             if v.section == "output":

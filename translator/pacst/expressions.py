@@ -257,6 +257,7 @@ class ExprCompiler:
         if name is not None and (self.body is None or self.body.lookup(name) is None) \
                 and name.upper() in self.comp.enum_values:
             et = self.comp.enum_values[name.upper()]
+            self.comp.bare_enum_value(et, name, node)
             value = next(v for v in et.values if v.upper() == name.upper())
             return TE(et, et.cvalue(value))
         qualified = None
@@ -435,8 +436,28 @@ class ExprCompiler:
         raise self.err(node.op, f"{op} on {t.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
 
     # ------------------------------------------------------------------ calls
+    def generic_assert(self, node):
+        """User mode: TcUnit's AssertEquals (Expected, Actual : ANY) as pac-test's AssertEquals_<type> of the
+        arguments (Expected's type, or Actual's where Expected is a literal); other calls unchanged."""
+        if not self.comp.user or _cls(node.name) != "SimpleVariable" or _name(node.name.name).upper() != "ASSERTEQUALS" \
+                or "ASSERTEQUALS" in self.comp.pous:
+            return node
+        pins = {str(p.name.name if hasattr(p.name, "name") else p.name).upper(): p.value
+                for p in node.parameters if getattr(p, "name", None) is not None}
+        types = [self.expr(pins[k]).type for k in ("EXPECTED", "ACTUAL") if k in pins]
+        named = [t for t in types if not t.name.startswith("ANY")]
+        if not named:
+            raise self.err(node, "AssertEquals needs Expected := and Actual := with a typed variable")
+        name = "STRING" if named[0].is_string else named[0].name
+        if f"ASSERTEQUALS_{name}" not in self.comp.pous:
+            have = sorted(n[len("ASSERTEQUALS_"):] for n in self.comp.pous if n.startswith("ASSERTEQUALS_"))
+            raise self.err(node, f"AssertEquals on {named[0].name}: pac-test asserts {', '.join(have)}; "
+                                 f"compare and call AssertTrue")
+        return dataclasses.replace(node, name=dataclasses.replace(node.name, name=f"AssertEquals_{name}"))
+
     def _e_FunctionCall(self, node, want):
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.body.lookup if self.body else None))
+        node = self.generic_assert(node)
         target = self.body.method_target(node.name) if self.body is not None else None
         if target is not None:  # user mode: a METHOD's result (Ok := Axis.Move(...))
             if target[1].ret is None:
@@ -473,7 +494,7 @@ class ExprCompiler:
             return self._string_function(node, up)
         if up in self.comp.pous:
             pou = self.comp.pous[up]
-            if pou.native and pou.ret is None:
+            if pou.ret is None and (pou.native or self.comp.user):
                 raise self.err(node, f"FUNCTION {pou.name} returns nothing: call it as a statement")
             if pou.kind == "fb":
                 raise self.err(node, f"function block type '{name}' called like a function: declare an instance")

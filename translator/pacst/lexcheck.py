@@ -52,6 +52,16 @@ class Comment:
         self.end = end
 
 
+# TwinCAT's operators and namespaces of names starting with '__' that user mode does not translate, and why
+_TWINCAT_OPERATORS = {
+    "__NEW": "dynamic memory, which pac-test does not provide; give the program fixed arrays or instances",
+    "__DELETE": "dynamic memory, which pac-test does not provide; give the program fixed arrays or instances",
+    "__SYSTEM": "the runtime's type classes and exception codes are not translated; keep the POU that needs "
+                "them out of the program tested",
+    "__QUERYINTERFACE": "not translated; assign the instance to a variable of the INTERFACE and call through it",
+    "__QUERYPOINTER": "not translated; assign the instance to a variable of the INTERFACE and call through it",
+}
+
 def _check_underscores(digits, file, line, col):
     """No leading, doubled or trailing `_` inside a number (MATIEC's lexer refuses them)."""
     parts = digits.split("#") if "#" in digits else re.split(r"[.eE+-]", digits)
@@ -154,6 +164,8 @@ def tokenize(text, file, comments=None, user=False):
                 advance(end)
                 continue
             if "__" in word and (not user or word.startswith("__") and word.upper() != "__ISVALIDREF"):
+                if user and word.upper() in _TWINCAT_OPERATORS:
+                    raise StError(file, line, col, f"TwinCAT's {word}: {_TWINCAT_OPERATORS[word.upper()]}")
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"
                               if not user else f"identifier '{word}' starts with '__', which C reserves")
             if word.endswith("_") and not user:

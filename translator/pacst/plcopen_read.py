@@ -28,6 +28,11 @@ _ELEMENTARY = {"BOOL", "BYTE", "WORD", "DWORD", "LWORD", "SINT", "INT", "DINT", 
                "UDINT", "ULINT", "REAL", "LREAL", "TIME", "DATE", "DT", "TOD"}
 
 
+# The PLCopen XML's and TwinCAT's names of the bodies pacst does not read
+_LANGUAGES = {"NWL": "a network list (LD, FBD or IL)", "LD": "LD", "FBD": "FBD", "IL": "IL", "SFC": "SFC",
+              "CFC": "CFC"}
+
+
 class PlcopenReadError(Exception):
     lineno = None  # the line of the XML element refused, where known
 
@@ -49,6 +54,8 @@ class StObject:
     declaration: str
     body: Optional[str]
     members: str = ""  # its METHODs and ACTIONs as ST, after it (user programs)
+    xml_line: int = 0  # the object's element in the XML file
+    body_xml_line: int = 0  # the line of the XML file where its ST body starts (0: none)
 
     def st(self):
         """The object as the text of one ST file."""
@@ -79,6 +86,33 @@ def read_plcopen(data):
     return objects
 
 
+# Where each ST file written by extract() came from: {ST path: (XML path, StObject)}
+_ORIGINS = {}
+
+
+def at_source(err):
+    """A refusal in an ST file written from PLCopen XML, given at the XML file's line as CODESYS shows it: the
+    body's line, or the object's element for its declaration and members; other refusals unchanged."""
+    origin = _ORIGINS.get(os.path.abspath(err.file))
+    if origin is None:
+        return err
+    xml, obj = origin
+    first = obj.declaration.count("\n") + 1  # the body's first line in the ST file
+    col = err.col
+    if obj.body is not None and obj.body_xml_line and first <= err.line < first + obj.body.rstrip().count("\n") + 1:
+        line = obj.body_xml_line + err.line - first
+        if err.line == first:  # the body's first line follows <xhtml ...> on its XML line
+            try:
+                with open(xml, encoding="utf-8", errors="replace") as f:
+                    text = f.read().splitlines()[line - 1]
+                col += text.index(">", text.index("<xhtml")) + 1
+            except (OSError, IndexError, ValueError):
+                pass
+    else:
+        line = obj.xml_line or 1
+    return StError(xml, line, col, f"{err.message} (in {obj.name})")
+
+
 def extract(path, out_dir):
     """Write each object of the PLCopen project `path` as `<out_dir>/<name>.st` (a global list's name is its
     file's, as pacst names lists); returns the paths in the project's order. Raises StError."""
@@ -101,6 +135,7 @@ def extract(path, out_dir):
             with open(target, "w", encoding="utf-8") as f:
                 f.write(text)
         paths.append(target)
+        _ORIGINS[os.path.abspath(target)] = (path, obj)
     return paths
 
 
@@ -177,7 +212,9 @@ def _pou(element):
             raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
                                    "yet: write a METHOD")
     header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
-    return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members))
+    xhtml = element.find(f"{q('body')}/{q('ST')}/{{{XHTML}}}xhtml")
+    return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members),
+                    element.sourceline or 0, xhtml.sourceline if xhtml is not None else 0)
 
 
 def _method(element):
@@ -190,7 +227,15 @@ def _method(element):
 def _st_body(element, name):
     st = element.find(f"{q('body')}/{q('ST')}")
     if st is None:
-        raise PlcopenReadError(f"{name}: no ST body")
+        body = element.find(q("body"))
+        found = [e for e in body if isinstance(e.tag, str)] if body is not None else []
+        if not found:
+            raise PlcopenReadError(f"{name}: no ST body")
+        language = found[0].tag.rsplit("}", 1)[-1]
+        exc = PlcopenReadError(f"{name} is implemented in {_LANGUAGES.get(language, language)}: pacst reads ST "
+                               "only; write its body in ST, or leave the POU out of the program tested")
+        exc.lineno = found[0].sourceline
+        raise exc
     return _xhtml_text(st)
 
 

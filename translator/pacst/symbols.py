@@ -60,6 +60,12 @@ def _pou(comp, pou):
                           for g, _ in pou.externals.values()]
     if pou.program:
         entry["instance"] = program_instance(pou)
+    if pou.base is not None:  # user mode: the FBs it EXTENDS, nearest first (pac-test finds TcUnit's suites)
+        entry["extends"] = []
+        base = pou.base
+        while base is not None:
+            entry["extends"].append(base.name)
+            base = base.base
     return entry
 
 

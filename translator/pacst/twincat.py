@@ -16,6 +16,8 @@ _COMMENTS = re.compile(r"\(\*.*?\*\)|//[^\n]*|\{[^}]*\}", re.S)
 _POU_KEYWORD = re.compile(r"\b(FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.I)
 # Parts of a TwinCAT object that pacst does not translate (METHODs and ACTIONs it does: _members).
 _REFUSED = {"Transition": "TRANSITION"}
+# TwinCAT keeps LD, FBD and IL as a network list (NWL)
+_LANGUAGES = {"NWL": "a network list (LD, FBD or IL)", "SFC": "SFC", "CFC": "CFC", "LD": "LD", "FBD": "FBD"}
 _MEMBERS = {"Method": "METHOD", "Action": "ACTION", "Property": "PROPERTY"}
 _PROPERTY = re.compile(r"PROPERTY\s+(?:(?:PUBLIC|PRIVATE|PROTECTED|INTERNAL|FINAL|ABSTRACT)\s+)*(\w+)\s*:\s*"
                        r"([^\r\n;]*?)\s*;?\s*$", re.I | re.M)
@@ -67,8 +69,10 @@ def object_st(text, path):
             languages = [e for e in implementation if isinstance(e.tag, str)]
             if len(languages) != 1 or languages[0].tag != "ST":
                 at = languages[0] if languages else implementation
-                raise StError(path, at.sourceline, 1, f"{holder.get('Name')} is implemented in "
-                                                      f"{at.tag if languages else 'nothing'}: pacst reads ST only")
+                language = _LANGUAGES.get(at.tag, at.tag) if languages else "nothing"
+                raise StError(path, at.sourceline, 1, f"{holder.get('Name')} is implemented in {language}: pacst "
+                                                      "reads ST only; write its body in ST, or leave the POU out of "
+                                                      "the program tested")
     st = _blank_outside_cdata(text)
     if obj.tag == "Itf":  # a .TcIO: the INTERFACE, then its METHODs' and PROPERTYs' declarations
         if any(isinstance(e.tag, str) and e.tag in _MEMBERS for e in obj):

@@ -59,6 +59,7 @@ class GlobalList:
         self.cname = name.upper()
         self.file = file
         self.line = line
+        self.qualified_only = False  # {attribute 'qualified_only'}: its variables written List.Name only
         self.vars = []
         self.refused = False  # a declaration was refused: a name it lacks may be one of those after it
 
@@ -116,7 +117,9 @@ def string_length(comp, spec):
         raise comp.err(spec, "the length of a STRING is an integer literal")
     n = int(str(expr.value).replace("_", ""))
     if not 1 <= n <= STRING_CAPACITY:
-        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters")
+        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters; "
+                             f"declare STRING({STRING_CAPACITY}) or shorter where the program's texts fit (a "
+                             f"T_MaxString, STRING(255), too), or leave the POU out of the program tested")
     return n
 
 
@@ -167,8 +170,8 @@ def var_type(comp, init, allow_fb):
         if init.indirection is not None:
             raise comp.err(init, "pointers and references are outside pacst's user programs")
         return inline_array(comp, init.spec, comp.file), None
-    if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2)
-        return comp._resolve_type(init.name, allow_fb=False), None
+    if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2); Delay : TON := (PT := T#1S)
+        return comp._resolve_type(init.name, allow_fb=allow_fb), None
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
@@ -213,6 +216,7 @@ def global_list(comp, block, src):
         if up in comp.types or up in comp.pous or up in comp.enum_values:
             raise comp.err(block, f"global variable list '{name}' has the name of a type, POU or enumeration value")
         gvl = comp.gvls[up] = GlobalList(name, src.path, pos(block)[0])
+        gvl.qualified_only = qualified_only(comp, pos(block)[0])
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
@@ -258,12 +262,36 @@ def _global_items(comp, gvl, block, constant):
             comp.globals.setdefault(vup, []).append(v)
 
 
+_QUALIFIED_ONLY = re.compile(r"\{\s*attribute\s+'qualified_only'\s*\}", re.I)
+
+
+def qualified_only(comp, line):
+    """Whether TwinCAT's {attribute 'qualified_only'} stands before `line` of the file being compiled, after
+    the declaration before it: its names are then written List.Name or Type.Value only, as the IDE demands."""
+    src = next((s for s in comp.sources if s.path == comp.file), None)
+    if src is None or not line:
+        return False
+    before = src.text.splitlines()[:line - 1]
+    for i in range(len(before) - 1, -1, -1):
+        text = before[i]
+        if re.search(r"\bEND_(?:TYPE|VAR|STRUCT)\b", text, re.I):
+            return False
+        if _QUALIFIED_ONLY.search(text):
+            return True
+    return False
+
+
 def lookup_global(comp, token):
-    """The global an unqualified name means in user mode, or None; several lists declaring it is an error."""
+    """The global an unqualified name means in user mode, or None; several lists declaring it is an error, and
+    so is the name alone of a list under {attribute 'qualified_only'}."""
     found = comp.globals.get(_name(token).upper(), [])
     if len(found) > 1:
         raise comp.err(token, f"'{_name(token)}' is declared in the global lists "
                               f"{', '.join(v.gvl.name for v in found)}: qualify it (List.Name)")
+    if found and found[0].gvl.qualified_only:
+        g = found[0]
+        raise comp.err(token, f"'{_name(token)}' alone: the global list {g.gvl.name} has {{attribute "
+                              f"'qualified_only'}}, as in TwinCAT write {g.gvl.name}.{g.name}")
     return found[0] if found else None
 
 

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -42,6 +43,12 @@ struct Failure {
 struct TestRecord {
     std::uint64_t asserts = 0;
     bool finished = false;
+    // A TcUnit suite (an FB that EXTENDS FB_TestSuite) is one test here: its TEST('name')s, in the order first
+    // called, and those that called TEST_FINISHED(); the suite ends once every one has finished.
+    nanoseconds now{0};  // the simulated clock in the running scan (F_GetSystemTime)
+    std::vector<std::string> tcunitTests;
+    std::vector<std::string> tcunitFinished;
+    std::string tcunitCurrent;
     std::int64_t scan = 0;
     nanoseconds time{0};
     std::vector<Failure> failures;
@@ -193,6 +200,7 @@ int Run(const Options& options, const Project& project) {
     const int base = scenario.timing.plcCycleMs;
     project.init();
     plc.CallImage([&](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+        record.now = plc.Now();
         project.copyIn(fromPac.Data(), fromPac.Size());
         const std::int64_t scan = plc.Task().ScanCount();
         for (const Task& task : project.tasks) {
@@ -202,6 +210,10 @@ int Run(const Options& options, const Project& project) {
                 record.scan = scan;
                 record.time = plc.Now();
                 test->body();
+                record.tcunitCurrent.clear();
+                if (!record.tcunitTests.empty() && record.tcunitFinished.size() == record.tcunitTests.size()) {
+                    record.finished = true;
+                }
             }
         }
         project.copyOut(&toPac[0], toPac.Size());
@@ -242,11 +254,21 @@ int Run(const Options& options, const Project& project) {
 
 }  // namespace
 
+namespace {
+
+bool Contains(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
 void RecordAssert(const char* file, int line, bool passed, const std::string& message, const void* caller) {
     if (!running) return;
+    const std::string& test = running->tcunitCurrent;
+    if (!test.empty() && Contains(running->tcunitFinished, test)) return;  // TcUnit: a finished test's asserts
     ++running->asserts;
     if (passed || running->failures.size() >= kMaxFailures) return;
-    Failure failure{file, line, running->scan, running->time, message, {}, 0};
+    Failure failure{file, line, running->scan, running->time, test.empty() ? message : test + ": " + message, {}, 0};
     Dl_info info{};
     if (caller && dladdr(caller, &info) && info.dli_fname) {
         failure.callerModule = info.dli_fname;
@@ -257,7 +279,28 @@ void RecordAssert(const char* file, int line, bool passed, const std::string& me
 }
 
 void RecordFinished() {
-    if (running) running->finished = true;
+    if (!running) return;
+    if (running->tcunitCurrent.empty()) {
+        running->finished = true;
+    } else {
+        RecordTestFinished(running->tcunitCurrent);
+    }
+}
+
+std::chrono::nanoseconds Now() {
+    return running ? running->now : std::chrono::nanoseconds{0};
+}
+
+void RecordTest(const std::string& name) {
+    if (!running) return;
+    running->tcunitCurrent = name;
+    if (!Contains(running->tcunitTests, name)) running->tcunitTests.push_back(name);
+}
+
+void RecordTestFinished(const std::string& name) {
+    if (running && Contains(running->tcunitTests, name) && !Contains(running->tcunitFinished, name)) {
+        running->tcunitFinished.push_back(name);
+    }
 }
 
 int Main(int argc, char** argv, const Project& project) {

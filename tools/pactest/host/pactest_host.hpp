@@ -4,6 +4,7 @@
 // this core; one process runs one test, so every test starts from a PLC and a controller at power-on.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -51,6 +52,12 @@ struct Project {
 // (FB_AssertWithin): pac-test prints the line of the user's test that called it (addr2line).
 void RecordAssert(const char* file, int line, bool passed, const std::string& message, const void* caller = nullptr);
 void RecordFinished();
+// the simulated clock since power-on in the running scan
+std::chrono::nanoseconds Now();
+// TcUnit's TEST('name'): the asserts and TEST_FINISHED() that follow are that test's (one of a suite's tests)
+void RecordTest(const std::string& name);
+// TcUnit's TEST_FINISHED_NAMED('name')
+void RecordTestFinished(const std::string& name);
 
 // `host --scenario FILE --test NAME --time-limit-ms N --result FILE [--vcd FILE] [--base-cycle-ms N]`
 int Main(int argc, char** argv, const Project& project);

@@ -119,6 +119,27 @@ BOOL TEST_FINISHED(const char* file__, int line__, BOOL EN, BOOL* __ENO) {
     return TRUE;
 }
 
+// Tc2_System's F_GetSystemTime: 100 ns since 1 January 1601 (UTC); the simulated clock starts at power-on at
+// 1 January 2026 00:00 UTC (tools/pactest/vendor/Tc2_System/F_GetSystemTime.st).
+ULINT F_GETSYSTEMTIME(const char*, int, BOOL, BOOL* __ENO) {
+    Ok(__ENO);
+    // 1601 to 1970: 11644473600 s; 1970 to 2026: 1767225600 s; in 100 ns
+    constexpr ULINT k1601To2026 = 134116992000000000ULL;
+    return k1601To2026 + static_cast<ULINT>(pactest::Now().count() / 100);
+}
+
+BOOL TEST(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
+    Ok(__ENO);
+    pactest::RecordTest(Text(TESTNAME));
+    return TRUE;
+}
+
+BOOL TEST_FINISHED_NAMED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
+    Ok(__ENO);
+    pactest::RecordTestFinished(Text(TESTNAME));
+    return TRUE;
+}
+
 BOOL PACTESTRECORD(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL PASSED, STRING MESSAGE) {
     (void)EN;
     Ok(__ENO);

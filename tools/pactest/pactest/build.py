@@ -47,6 +47,8 @@ def link(exe, objects, libraries, sanitize, coverage=False):
 
 
 class HostBuild:
+    takes_dialect = True  # pacst's C: the vendor libraries' parts and TcUnit's suite come with the program
+
     def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
         self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
         self.coverage, self.jobs = coverage, jobs or os.cpu_count() or 1
@@ -71,11 +73,22 @@ class HostBuild:
         library, GVL_PAC (the program names its constants, PAC_CMD_PUT_INT_REG...), the vocabulary (its FUNCTIONs
         the host's) and the user's sources; a TwinCAT .plcproj stands for its objects, a PLCopen XML project for
         ST files written to OUT/plcopen."""
-        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + self.wiring.sources
-        natives = [a for f in project.native_sources() for a in ("--native", f)]
+        # the vendor libraries' parts and TcUnit's suite are dialect: with MATIEC only for a program that names
+        # them (which pacst matiec then refuses at its lines)
+        dialect = self.takes_dialect or project.uses_vendor(self.wiring.sources)
+        tcunit = self.takes_dialect and project.uses_tcunit(self.wiring.sources)
+        vendor = project.vendor_sources() if dialect else []
+        files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
+            (project.tcunit_sources() if tcunit else []) + self.wiring.sources
+        natives = [a for f in project.native_sources() + (project.vendor_natives() if dialect else []) +
+                   (project.tcunit_natives() if tcunit else []) for a in ("--native", f)]
         # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power
-        namespace = f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"
-        return ["--user", "--namespace", namespace, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
+        namespaces = ["--namespace", f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}"]
+        for name, folder in project.vendor_libraries().items() if dialect else []:  # Tc2_System.T_MaxString
+            namespaces += ["--namespace", f"{name}={folder}"]
+        if tcunit:  # TcUnit's FB_TestSuite and RUN (docs/user_tests.md#tcunit-suites)
+            namespaces += ["--namespace", f"TcUnit={project.TCUNIT}"]
+        return ["--user", *namespaces, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
 
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
@@ -94,9 +107,12 @@ class HostBuild:
                     raise BuildError(f"$.tests.names[{i}]: no FUNCTION_BLOCK {name} in the sources")
                 found.append(fb)
             return found
-        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep)
+        theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep, project.TCUNIT + os.sep,
+                  project.VENDOR + os.sep)
+        # a TcUnit suite (EXTENDS FB_TestSuite) is a test whatever its name
         return [fb for fb in symbols.table["function_blocks"]
-                if not fb.get("standard") and fb["name"].upper().startswith(self.wiring.prefix.upper())
+                if not fb.get("standard") and (fb["name"].upper().startswith(self.wiring.prefix.upper())
+                                               or "FB_TESTSUITE" in (b.upper() for b in fb.get("extends", [])))
                 and not os.path.abspath(fb.get("file") or "").startswith(theirs)]
 
     def _flags(self, cxx):

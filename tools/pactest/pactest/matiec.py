@@ -23,6 +23,8 @@ class MatiecHostBuild(build.HostBuild):
     """HostBuild with MATIEC's C: pacst still translates (its symbol table and the vocabulary's declarations for
     the natives' C++), then pacst matiec and iec2c compile what runs."""
 
+    takes_dialect = False  # MATIEC compiles the portable subset: vendor stand-ins only where named, no TcUnit
+
     def __init__(self, wiring, pac_build, out, **kwargs):
         super().__init__(wiring, pac_build, out, coverage=False, **kwargs)
         self.mat = os.path.join(out, "matiec")

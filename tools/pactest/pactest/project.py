@@ -9,6 +9,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..")
 NAMESPACE = "PA_CONTROL"
 VOCABULARY = os.path.join(ROOT, "tools", "pactest", "st")
 HOST = os.path.join(ROOT, "tools", "pactest", "host")
+# TcUnit's FB_TestSuite, RUN and RUN_IN_SEQUENCE, under the namespace TcUnit (docs/user_tests.md)
+TCUNIT = os.path.join(ROOT, "tools", "pactest", "tcunit")
 
 # The static libraries the host links, in link order, and where a build tree keeps them (not below:
 # build/ holds the other presets' trees, build/debug...).
@@ -31,6 +33,67 @@ def gvl_pac():
 
 def vocabulary_sources():
     return sorted(glob.glob(os.path.join(VOCABULARY, "*.st")))
+
+
+def tcunit_sources():
+    return sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
+
+
+VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
+
+
+def vendor_libraries():
+    """{namespace: folder} of the vendor libraries' parts pac-test provides (docs/user_dialect.md): Tc2_System's."""
+    return {name: os.path.join(VENDOR, name) for name in sorted(os.listdir(VENDOR))
+            if os.path.isdir(os.path.join(VENDOR, name))}
+
+
+def vendor_sources():
+    return [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))]
+
+
+def vendor_natives():
+    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock)."""
+    return [f for f in vendor_sources() if os.path.basename(f).startswith("F_")]
+
+
+def tcunit_natives():
+    """TcUnit's TEST and TEST_FINISHED_NAMED, which the host implements."""
+    return [f for f in tcunit_sources() if os.path.basename(f).startswith("TEST")]
+
+
+_TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)
+_VENDOR_NAMES = re.compile(rb"\bTc2_System\s*\.|\bT_MaxString\b|\bMAX_STRING_LENGTH\b|\bF_GetSystemTime\b", re.I)
+
+
+def uses_tcunit(sources):
+    """Whether the user's sources (files, a .plcproj standing for the files below its folder) name TcUnit's
+    suite: only then are TcUnit's names (TEST, RUN...) declared, which a program may use for its own."""
+    return _names(sources, _TCUNIT)
+
+
+def uses_vendor(sources):
+    """Whether the user's sources name what pac-test provides of a vendor library (Tc2_System's)."""
+    return _names(sources, _VENDOR_NAMES)
+
+
+def _names(sources, pattern):
+    """Whether `pattern` occurs in the user's sources."""
+    files = []
+    for path in sources:
+        if path.lower().endswith(".plcproj"):
+            files += [os.path.join(d, n) for d, _, names in os.walk(os.path.dirname(path)) for n in names
+                      if n.lower().endswith((".tcpou", ".st"))]
+        else:
+            files.append(path)
+    for path in files:
+        try:
+            with open(path, "rb") as f:
+                if pattern.search(f.read()):
+                    return True
+        except OSError:
+            continue
+    return False
 
 
 def native_sources():

@@ -89,15 +89,28 @@ def check_vcd(case, path):
     return text
 
 
+def check_coverage(case, out, pous):
+    """The coverage summary of a run in `out` names `pous`, and more than 80 % of the ST's lines ran."""
+    with open(os.path.join(out, "coverage", "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    found = {p["pou"] for p in summary["pous"]}
+    case.assertTrue(pous <= found, found)
+    case.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+
+
+def run_example(name):
+    """pac-test on examples/NAME: (its folder, the output folder, the run)."""
+    folder, out = os.path.join(ROOT, "examples", name), os.path.join(OUT, name)
+    return folder, out, pac_test(os.path.join(folder, "wiring.json"), out)
+
+
 class ExampleTest(unittest.TestCase):
     """examples/pick_and_place: four tests pass, the deliberate failure fails as expected and shows its
     file:line, a VCD and a JUnit XML that validates; the coverage table of its ST is printed."""
 
     @classmethod
     def setUpClass(cls):
-        cls.folder = os.path.join(ROOT, "examples", "pick_and_place")
-        cls.out = os.path.join(OUT, "pick_and_place")
-        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out)
+        cls.folder, cls.out, cls.result = run_example("pick_and_place")
 
     def test_passes_with_the_deliberate_failure_outside_the_count(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -125,11 +138,99 @@ class ExampleTest(unittest.TestCase):
     @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
     def test_coverage_table_of_the_machine_program(self):
         self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
-        with open(os.path.join(self.out, "coverage", "summary.json"), encoding="utf-8") as f:
-            summary = json.load(f)
-        pous = {p["pou"] for p in summary["pous"]}
-        self.assertTrue({"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"} <= pous, pous)
-        self.assertGreater(summary["lines_executed"], 0.8 * summary["lines"])
+        check_coverage(self, self.out, {"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"})
+
+
+class SortingStationTest(unittest.TestCase):
+    """examples/sorting_station, the object-oriented example (METHODs, PROPERTYs, two INTERFACEs in .TcIO files,
+    FOR loops, a REFERENCE and a POINTER, the library under its namespace): its four tests pass, each assert
+    counted, the restart test through the controller's power cycle; the coverage table names its FBs."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder, cls.out, cls.result = run_example("sorting_station")
+
+    def test_every_test_passes(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        self.assertIn("4 tests: 4 passed, 0 failed", self.result.stdout)
+        self.assertEqual(failures(self.result.stdout), [])
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=4, failed=0, skipped=0)
+
+    def test_the_asserts_ran(self):
+        # the unit test's 14 asserts in one scan; the recipe's pusher check every scan the carriage travels
+        counts = dict(re.findall(r"ok  (\w+)  \((\d+) asserts", self.result.stdout))
+        self.assertEqual(counts.get("FB_TestLaneTable"), "14", self.result.stdout)
+        self.assertGreater(int(counts.get("FB_TestSortsARecipe", 0)), 7 + 50, self.result.stdout)
+        self.assertEqual(counts.get("FB_TestControllerRestart"), "5", self.result.stdout)
+
+    @unittest.skipIf(MATIEC, "MATIEC's C: no coverage table of the user's ST")
+    def test_coverage_of_methods_and_properties(self):
+        check_coverage(self, self.out, {"MAIN", "FB_Sorter", "FB_LaneTable", "FB_RecipeFeeder"})
+
+
+class TcUnitTest(unittest.TestCase):
+    """tools/pactest/tests/tcunit: TcUnit suites as TcUnit's users write them (EXTENDS TcUnit.FB_TestSuite, a test
+    per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR,
+    VAR_INST kept over cycles, PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures
+    name the TcUnit test."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = os.path.join(HERE, "tcunit")
+        cls.out = os.path.join(OUT, "tcunit")
+        cls.result = pac_test(os.path.join(cls.folder, "wiring.json"), cls.out, "--no-coverage")
+
+    def test_each_suite_is_a_test(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
+        self.assertIn("2 tests: 1 passed, 0 failed, 1 failed as expected", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=2, failed=0, skipped=1)
+
+    def test_a_finished_test_counts_no_more_asserts_and_the_suite_ends_with_its_last_test(self):
+        # 2 + 2 in the one-scan tests; 10 scans of the third, whose assert after TEST_FINISHED_NAMED is not counted
+        self.assertRegex(self.result.stdout, r"ok  FB_CounterSuite  \(14 asserts")
+
+    def test_a_failure_names_the_tcunit_test_and_its_line(self):
+        found = failures(self.result.stdout)
+        source = os.path.join(self.folder, "FB_ShowsAFailureSuite.TcPOU")
+        self.assertEqual([(f["test"], int(f["line"]), f["msg"]) for f in found],
+                         [("FB_ShowsAFailureSuite", line_of(source, "one edge is not two"),
+                           "FailsOnPurpose: one edge is not two: expected 2, got 1")])
+
+
+class CorpusTest(unittest.TestCase):
+    """pac-test-corpus on a folder of TwinCAT files: each POU accepted, refused for a construct or by the parser,
+    or depending on a refused declaration, and the reasons counted."""
+
+    def test_counts_and_reasons(self):
+        folder = os.path.join(OUT, "corpus", "Project")
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, "Project.plcproj"), "w", encoding="utf-8") as f:
+            f.write("<Project />\n")
+        wrap = ('<?xml version="1.0" encoding="utf-8"?>\n<TcPlcObject Version="1.1.0.1">\n  <POU Name="{0}">\n'
+                '    <Declaration><![CDATA[{1}]]></Declaration>\n'
+                '    <Implementation>\n      <ST><![CDATA[{2}]]></ST>\n    </Implementation>\n  </POU>\n'
+                '</TcPlcObject>\n')
+        pous = {"FB_Good": ("FUNCTION_BLOCK FB_Good\nVAR\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
+                "FB_Loop": ("FUNCTION_BLOCK FB_Loop\nVAR\n  i : INT;\nEND_VAR\n", "FOR i := 1 TO 5 BY 0 DO\n  i := i;\nEND_FOR"),
+                "FB_User": ("FUNCTION_BLOCK FB_User\nVAR\n  Loop : FB_Loop;\nEND_VAR\n", "Loop();"),
+                "FB_Broken": ("FUNCTION_BLOCK FB_Broken\nVAR\n  n : INT;\nEND_VAR\n", "n := := 1;")}
+        for name, (declaration, body) in pous.items():
+            with open(os.path.join(folder, name + ".TcPOU"), "w", encoding="utf-8") as f:
+                f.write(wrap.format(name, declaration, body))
+        report = os.path.join(OUT, "corpus", "report.json")
+        env = dict(os.environ, PYTHONPATH=TOOL)
+        run = subprocess.run([sys.executable, "-m", "pactest.corpus", os.path.dirname(folder), "--json", report,
+                              "--cache", os.path.join(OUT, "pacst-cache")], capture_output=True, text=True, env=env)
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn("total: 4 POUs, 1 accepted (25.0 %), 1 refused by the parser, 1 for a construct, "
+                      "0 needing a vendor library, 1 depending on a refused declaration", run.stdout)
+        with open(report, encoding="utf-8") as f:
+            files = {os.path.basename(k): v for k, v in json.load(f)["projects"][0]["files"].items()}
+        self.assertIsNone(files["FB_Good.TcPOU"])
+        self.assertEqual(files["FB_Loop.TcPOU"][0], "refused construct")
+        self.assertIn("never ends", files["FB_Loop.TcPOU"][1])
+        self.assertEqual(files["FB_User.TcPOU"][0], "depends on a refused declaration")
+        self.assertEqual(files["FB_Broken.TcPOU"][0], "syntax")
 
 
 def _files(folder):

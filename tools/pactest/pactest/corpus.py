@@ -1,0 +1,170 @@
+"""pac-test-corpus: how much of real TwinCAT 3 projects pac-test's translator takes (docs/user_dialect.md).
+
+For each project under the folders given (a folder holding a .plcproj, or a folder of TwinCAT files), every
+.TcPOU, .TcDUT, .TcGVL and .TcIO is parsed and the parsed ones translated together by `pacst --user` with what
+pac-test gives a program: its test vocabulary, the vendor libraries' parts it provides (Tc2_System's) and, for
+sources that name it, TcUnit's FB_TestSuite (all left out for a project that declares TcUnit itself). A file
+is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
+depends on it is counted as such. Prints each project's counts and the refusals by reason (the names in a reason replaced by
+'…'), and with --json writes them."""
+import argparse
+import collections
+import json
+import os
+import re
+import subprocess
+import sys
+
+from . import project
+
+KINDS = {".tcpou": "POU", ".tcdut": "DUT", ".tcgvl": "GVL", ".tcio": "ITF"}
+# a refusal caused by another file's refusal, not by the file's own ST
+_DEPENDS = re.compile(r"declaration was refused|undeclared (type|name)|has no (variable|member|METHOD)|"
+                      r"called before its declaration|cannot be used: its declaration", re.I)
+_VENDOR = re.compile(r"vendor library|\b(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
+
+
+def _translator():
+    sys.path.insert(0, os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator")))
+    from pacst import compiler, errors, order, parsing  # noqa: E402 (the checkout's translator)
+    return compiler, errors, order, parsing
+
+
+def projects(folders):
+    """{project folder: [its TwinCAT files]}: a folder holding a .plcproj is a project with every TwinCAT file
+    below it; TwinCAT files under no .plcproj belong to the folder given."""
+    found = collections.OrderedDict()
+    for top in folders:
+        roots = sorted({d for d, _, names in os.walk(top) if any(n.lower().endswith(".plcproj") for n in names)})
+        for d, _, names in sorted(os.walk(top)):
+            for n in sorted(names):
+                if os.path.splitext(n)[1].lower() not in KINDS:
+                    continue
+                path = os.path.join(d, n)
+                owner = max((r for r in roots if path.startswith(r + os.sep)), key=len, default=top)
+                found.setdefault(owner, []).append(path)
+    return found
+
+
+def reason(message):
+    """A refusal's message without the names it quotes, so that refusals count by construct."""
+    text = re.sub(r"'[^']*'", "'…'", message)
+    return re.sub(r"\b\d+\b", "n", text)
+
+
+def _given(files):
+    """What pac-test translates with a project's `files`: (extra files, native files, namespaces)."""
+    names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
+    if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names
+        return [], [], None
+    namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
+    extra = project.vocabulary_sources() + project.vendor_sources()
+    native = project.native_sources() + project.vendor_natives()
+    if not project.uses_tcunit(files):
+        return extra, native, namespaces
+    namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)
+    return extra + project.tcunit_sources(), native + project.tcunit_natives(), namespaces
+
+
+def measure(files, cache, jobs):
+    """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`."""
+    compiler, errors, order, parsing = _translator()
+    extra, native, namespaces = _given(files)
+    verdict = {}
+    sources = []
+    for path, result in zip(files + extra, parsing.parse_files(files + extra, cache, jobs, user=True)):
+        if isinstance(result, errors.StError):
+            verdict[path] = ("syntax", f"{result.line}: {result.message}")
+        else:
+            sources.append(result)
+    for _ in range(8):
+        if not sources:
+            break
+        try:
+            by_path = {s.path: s for s in sources}
+            ordered = [by_path[p] for p in order.declaration_order(sources)]
+            compiler.Compiler(True, native, namespaces).compile(ordered)
+            break
+        except errors.StErrors as e:
+            refused = collections.OrderedDict()
+            for err in e.errors:
+                refused.setdefault(err.file, []).append(err)
+        except errors.StError as err:
+            refused = {err.file: [err]}
+        if not any(p in refused for p in by_path if p not in extra):  # a refusal of no file: count every file as refused by it
+            for p in by_path:
+                verdict[p] = ("translation", str(next(iter(refused.values()))[0].message))
+            sources = []
+            break
+        for path, errs in refused.items():
+            own = [x for x in errs if not _DEPENDS.search(x.message)]
+            first = (own or errs)[0]
+            kind = ("vendor library" if any(_VENDOR.search(x.message) for x in errs)
+                    else "refused construct" if own else "depends on a refused declaration")
+            verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
+        sources = [s for s in sources if s.path not in refused]
+    for s in sources:
+        verdict.setdefault(s.path, None)
+    return {f: verdict[f] for f in files}
+
+
+def _in_translator_venv(argv):
+    """Runs this command again with the translator's Python (build/venv, which holds blark) when this one
+    lacks it, as pac-test runs pacst; None when this Python will do."""
+    try:
+        import blark  # noqa: F401
+        return None
+    except ImportError:
+        python = os.path.join(project.ROOT, "build", "venv", "bin", "python")
+        if not os.path.exists(python):
+            sys.exit("pac-test-corpus: no translator venv (build/venv): run cmake --preset default first")
+        here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+        env = dict(os.environ, PYTHONPATH=here + os.pathsep + os.environ.get("PYTHONPATH", ""))
+        return subprocess.run([python, "-m", "pactest.corpus", *argv], env=env).returncode
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    code = _in_translator_venv(argv)
+    if code is not None:
+        return code
+    parser = argparse.ArgumentParser(prog="pac-test-corpus", description=__doc__.splitlines()[0])
+    parser.add_argument("folders", nargs="+", help="folders of TwinCAT 3 projects (checked out, never committed)")
+    parser.add_argument("--cache", help="pacst's parse cache (a folder; makes a second run fast)")
+    parser.add_argument("-j", "--jobs", type=int, default=None, help="parallel parses (default: one per core)")
+    parser.add_argument("--json", help="write the counts and every refusal to this file")
+    args = parser.parse_args(argv)
+    totals = collections.Counter()
+    reasons = collections.Counter()
+    report = {"projects": []}
+    for root, files in projects(args.folders).items():
+        verdict = measure(files, args.cache, args.jobs)
+        pous = [f for f in files if f.lower().endswith(".tcpou")]
+        counts = collections.Counter("accepted" if verdict[f] is None else verdict[f][0] for f in pous)
+        totals.update(counts)
+        totals["POUs"] += len(pous)
+        for f in pous:
+            if verdict[f] is not None and verdict[f][0] != "depends on a refused declaration":
+                reasons[(verdict[f][0], reason(verdict[f][1].split(": ", 1)[1]))] += 1
+        print(f"{root}: {len(pous)} POUs, {counts['accepted']} accepted; "
+              + ", ".join(f"{n} {k}" for k, n in sorted(counts.items()) if k != "accepted"))
+        report["projects"].append({"folder": root, "pous": len(pous), "counts": dict(counts),
+                                   "files": {f: verdict[f] for f in files}})
+    share = 100.0 * totals["accepted"] / totals["POUs"] if totals["POUs"] else 0.0
+    print(f"total: {totals['POUs']} POUs, {totals['accepted']} accepted ({share:.1f} %), "
+          f"{totals['syntax']} refused by the parser, {totals['refused construct']} for a construct, "
+          f"{totals['vendor library']} needing a vendor library, "
+          f"{totals['depends on a refused declaration']} depending on a refused declaration")
+    print("refusals by reason (the POU's first):")
+    for (kind, text), n in reasons.most_common():
+        print(f"  {n:4d}  {kind}: {text}")
+    report["totals"] = dict(totals)
+    report["reasons"] = [{"kind": k, "reason": r, "pous": n} for (k, r), n in reasons.most_common()]
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(report, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
