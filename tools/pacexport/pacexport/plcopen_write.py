@@ -219,7 +219,8 @@ def _data_type(parent, data_type):
         if docs:
             entries.append((ENUM_VALUE_DOCUMENTATION, lambda data: _enum_value_documentation(data, docs)))
     name = data_type.source.name
-    _add_data(element, entries + [_plain_text(data_type.declaration), _object_id("DUT", name)])
+    attributes = [_attributes(data_type.attributes)] if data_type.attributes else []
+    _add_data(element, entries + attributes + [_plain_text(data_type.declaration), _object_id("DUT", name)])
 
 
 def enum_value_docs(declaration, names):
@@ -249,6 +250,8 @@ def _pou(parent, pou):
     for block in pou.blocks:
         element_block = _var_list(interface, block)
         _documentation(element_block, block.doc)
+    if pou.attributes:  # a POU's pragmas, where CODESYS writes them: in its interface, after the variables
+        _add_data(interface, [_attributes(pou.attributes)])
     # The header comment: here, where CODESYS writes it, and not once more as the POU's documentation.
     _documentation(interface, source.doc)
     _xhtml(_el(element, "body"), "ST", source.body)
