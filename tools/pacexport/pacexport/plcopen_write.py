@@ -18,6 +18,7 @@ from . import __version__
 from .model import AliasShape, EnumShape, StructShape
 from pacst.plcopen_names import (ATTRIBUTES, BUILD_PROPERTIES, DISCARDED, ENUM_VALUE_DOCUMENTATION, GLOBAL_VARS,
                             LIBRARIES, NS, OBJECT_ID, PLAIN_TEXT, PROJECT_INFORMATION, PROJECT_STRUCTURE, XHTML, q)
+from .splitting import folder_of
 from .twincat import guid
 from .types import ArrayType, Derived, Elementary, StringType
 
@@ -135,11 +136,6 @@ def _libraries(data, name):
     libraries = _el(data, "Libraries")
     _el(libraries, "Library", **STANDARD_LIBRARY)
     _add_data(libraries, [_object_id(LIBRARY_MANAGER, name)])
-
-
-def folder_of(source):
-    """The folder of the POUs view an object goes into: its folder in st/ (cmd, axis, types...)."""
-    return os.path.basename(os.path.dirname(os.path.abspath(source.path)))
 
 
 def _project_structure(data, library):

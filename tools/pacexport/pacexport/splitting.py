@@ -23,6 +23,11 @@ END_OF = {"functionBlock": "END_FUNCTION_BLOCK", "function": "END_FUNCTION", "pr
           "dataType": "END_TYPE"}
 
 
+def folder_of(source):
+    """The object's folder in st/ (cmd, axis, types...): the folder it goes into in both exports."""
+    return os.path.basename(os.path.dirname(os.path.abspath(source.path)))
+
+
 @dataclass(frozen=True)
 class SourceObject:
     path: str

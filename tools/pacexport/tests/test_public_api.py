@@ -90,7 +90,7 @@ class PublicApi(unittest.TestCase):
         twincat = support.twincat_dir()
         for name, obj in self.objects.items():
             with self.subTest(name):
-                with open(os.path.join(twincat, *relative_path(obj.source.kind, name).split("/")),
+                with open(os.path.join(twincat, *relative_path(obj.source).split("/")),
                           encoding="utf-8-sig") as f:
                     root = etree.fromstring(f.read().encode("utf-8"))
                 declaration = root.find(".//Declaration").text
