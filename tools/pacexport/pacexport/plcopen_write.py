@@ -9,7 +9,6 @@ place besides the text, so an importer finds it once), an enumeration value's co
 enumvaluedocumentation, global lists in the project's addData (a library has no configuration), the
 st/ folders as projectstructure, the Standard library as the project's library reference.
 """
-import os
 import re
 
 from lxml import etree
