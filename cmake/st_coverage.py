@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 BRANCH_TARGET = 90.0
-# The POUs: every folder of st/ (the topic folders of the FBs, st/fun) but the types and the global list.
+# The POUs: every folder of st/ (the topic folders, st/fun) but the types and the global list.
 UNCHECKED_FOLDERS = ("st/types/", "st/gvl/")
 
 

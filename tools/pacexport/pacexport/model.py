@@ -17,6 +17,29 @@ SECTION_KEYWORDS = {
 }
 
 
+# The IDEs' marker of an object a library's user does not see: CODESYS and TwinCAT leave a POU or type
+# with {attribute 'hide'} out of the Library Manager's tree, the input assistant and the list components.
+INTERNAL_ATTRIBUTES = ("hide",)
+
+
+def with_pragmas(source, attributes):
+    """The declaration as CODESYS and TwinCAT hold it: the source with the attributes on the lines just
+    before its keyword (FUNCTION_BLOCK, TYPE, VAR_GLOBAL...), after the header comments."""
+    text = source.declaration
+    if not attributes:
+        return text
+    tokens, _ = scan(source.path, text)
+    line_start = text.rfind("\n", 0, tokens[0].start) + 1
+    # The translator's lexer refuses pragmas in the source, so each is written here once.
+    pragmas = "".join(f"{{attribute '{a}'}}\n" for a in attributes)
+    return text[:line_start] + pragmas + text[line_start:]
+
+
+def object_attributes(source):
+    """The pragmas an object of the library gets in the exports."""
+    return INTERNAL_ATTRIBUTES if source.internal else ()
+
+
 @dataclass(frozen=True)
 class Variable:
     name: str
@@ -58,8 +81,12 @@ class DataType:
     initial: Optional[str]
 
     @property
+    def attributes(self):
+        return object_attributes(self.source)
+
+    @property
     def declaration(self):
-        return self.source.declaration
+        return with_pragmas(self.source, self.attributes)
 
 
 @dataclass(frozen=True)
@@ -69,8 +96,12 @@ class Pou:
     blocks: Tuple[VarBlock, ...]
 
     @property
+    def attributes(self):
+        return object_attributes(self.source)
+
+    @property
     def declaration(self):
-        return self.source.declaration
+        return with_pragmas(self.source, self.attributes)
 
 
 @dataclass(frozen=True)
@@ -81,11 +112,4 @@ class GlobalList:
 
     @property
     def declaration(self):
-        """The list as CODESYS and TwinCAT hold it: the source with the attributes on the lines just
-        before VAR_GLOBAL, after the header comment."""
-        text = self.source.declaration
-        tokens, _ = scan(self.source.path, text)
-        line_start = text.rfind("\n", 0, tokens[0].start) + 1
-        # The translator's lexer refuses pragmas in the source, so each is written here once.
-        pragmas = "".join(f"{{attribute '{a}'}}\n" for a in self.attributes)
-        return text[:line_start] + pragmas + text[line_start:]
+        return with_pragmas(self.source, self.attributes)

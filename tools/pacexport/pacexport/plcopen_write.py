@@ -9,7 +9,6 @@ place besides the text, so an importer finds it once), an enumeration value's co
 enumvaluedocumentation, global lists in the project's addData (a library has no configuration), the
 st/ folders as projectstructure, the Standard library as the project's library reference.
 """
-import os
 import re
 
 from lxml import etree
@@ -18,6 +17,7 @@ from . import __version__
 from .model import AliasShape, EnumShape, StructShape
 from pacst.plcopen_names import (ATTRIBUTES, BUILD_PROPERTIES, DISCARDED, ENUM_VALUE_DOCUMENTATION, GLOBAL_VARS,
                             LIBRARIES, NS, OBJECT_ID, PLAIN_TEXT, PROJECT_INFORMATION, PROJECT_STRUCTURE, XHTML, q)
+from .splitting import folder_of
 from .twincat import guid
 from .types import ArrayType, Derived, Elementary, StringType
 
@@ -137,11 +137,6 @@ def _libraries(data, name):
     _add_data(libraries, [_object_id(LIBRARY_MANAGER, name)])
 
 
-def folder_of(source):
-    """The folder of the POUs view an object goes into: its folder in st/ (cmd, axis, types...)."""
-    return os.path.basename(os.path.dirname(os.path.abspath(source.path)))
-
-
 def _project_structure(data, library):
     """The st/ folders with their objects in declaration order, and the Library Manager, sorted by name
     as CODESYS lists them."""
@@ -219,7 +214,8 @@ def _data_type(parent, data_type):
         if docs:
             entries.append((ENUM_VALUE_DOCUMENTATION, lambda data: _enum_value_documentation(data, docs)))
     name = data_type.source.name
-    _add_data(element, entries + [_plain_text(data_type.declaration), _object_id("DUT", name)])
+    attributes = [_attributes(data_type.attributes)] if data_type.attributes else []
+    _add_data(element, entries + attributes + [_plain_text(data_type.declaration), _object_id("DUT", name)])
 
 
 def enum_value_docs(declaration, names):
@@ -249,6 +245,8 @@ def _pou(parent, pou):
     for block in pou.blocks:
         element_block = _var_list(interface, block)
         _documentation(element_block, block.doc)
+    if pou.attributes:  # a POU's pragmas, where CODESYS writes them: in its interface, after the variables
+        _add_data(interface, [_attributes(pou.attributes)])
     # The header comment: here, where CODESYS writes it, and not once more as the POU's documentation.
     _documentation(interface, source.doc)
     _xhtml(_el(element, "body"), "ST", source.body)

@@ -17,8 +17,15 @@ from .errors import ExportError
 VAR_OPENERS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT",
                "VAR_EXTERNAL"}
 POU_KINDS = {"FUNCTION_BLOCK": "functionBlock", "FUNCTION": "function", "PROGRAM": "program"}
+# The header comment that marks an object internal: (* Internal: a part of FB_PAC_Axis; ... *)
+INTERNAL_MARKER = "Internal:"
 END_OF = {"functionBlock": "END_FUNCTION_BLOCK", "function": "END_FUNCTION", "program": "END_PROGRAM",
           "dataType": "END_TYPE"}
+
+
+def folder_of(source):
+    """The object's folder in st/ (cmd, axis, types...): the folder it goes into in both exports."""
+    return os.path.basename(os.path.dirname(os.path.abspath(source.path)))
 
 
 @dataclass(frozen=True)
@@ -29,6 +36,12 @@ class SourceObject:
     doc: Optional[str]  # the header comment's words
     declaration: str  # a POU: up to its last END_VAR; a type or list: all of it
     body: Optional[str]  # a POU's statements, without END_...
+
+    @property
+    def internal(self):
+        """The header says the object is internal (docs/public_api.md): a part of the public blocks that
+        programs neither call nor use."""
+        return any(line.startswith(INTERNAL_MARKER) for line in (self.doc or "").splitlines())
 
 
 def read_source(path):

@@ -11,6 +11,8 @@ GVLs linked always and the project options TwinCAT keeps in ProjectExtensions.
 """
 import os
 import uuid
+
+from .splitting import folder_of
 from xml.sax.saxutils import escape, quoteattr
 
 OBJECT_VERSION = "1.1.0.1"  # the TcPlcObject format of TwinCAT 3.1
@@ -19,13 +21,14 @@ PROGRAM_VERSION = "3.1.4024.0"  # the .plcproj's ProgramVersion: the oldest buil
 BOM = "\ufeff"  # TwinCAT writes its XML files with a UTF-8 byte-order mark
 _NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "urn:pa-control-plc:pacexport")
 
-# Folder and file kind of each object kind; the folders are the ones a new TwinCAT PLC project has.
+# Object tag and file extension of each object kind. The files go into the folders of st/ (cmd, axis, types...),
+# as the PLCopen export's POUs view has them, so that a topic's helpers stay beside its blocks in TwinCAT too.
 FILE_KINDS = {
-    "dataType": ("DUTs", "DUT", ".TcDUT"),
-    "function": ("POUs", "POU", ".TcPOU"),
-    "functionBlock": ("POUs", "POU", ".TcPOU"),
-    "program": ("POUs", "POU", ".TcPOU"),
-    "globalVars": ("GVLs", "GVL", ".TcGVL"),
+    "dataType": ("DUT", ".TcDUT"),
+    "function": ("POU", ".TcPOU"),
+    "functionBlock": ("POU", ".TcPOU"),
+    "program": ("POU", ".TcPOU"),
+    "globalVars": ("GVL", ".TcGVL"),
 }
 # R_TRIG, TON and the other standard function blocks.
 LIBRARY_REFERENCES = ("Tc2_Standard",)
@@ -42,7 +45,7 @@ def cdata(text):
 
 def object_file(kind, name, declaration, body):
     """The text of one TwinCAT object file (LF line ends; write_twincat makes them CRLF)."""
-    _, tag, _ = FILE_KINDS[kind]
+    tag, _ = FILE_KINDS[kind]
     special = ' SpecialFunc="None"' if tag == "POU" else ""
     lines = [BOM + '<?xml version="1.0" encoding="utf-8"?>',
              f'<TcPlcObject Version="{OBJECT_VERSION}" ProductVersion="{PRODUCT_VERSION}">',
@@ -54,9 +57,10 @@ def object_file(kind, name, declaration, body):
     return "\n".join(lines) + "\n"
 
 
-def relative_path(kind, name):
-    folder, _, extension = FILE_KINDS[kind]
-    return f"{folder}/{name}{extension}"
+def relative_path(source):
+    """The object's file in the export: its st/ folder and name."""
+    _, extension = FILE_KINDS[source.kind]
+    return f"{folder_of(source)}/{source.name}{extension}"
 
 
 def project_file(library, paths):
@@ -98,7 +102,7 @@ def project_file(library, paths):
 def compile_item(path):
     """A file's entry in the .plcproj; a global list is linked even where nothing refers to it."""
     lines = [f"    <Compile Include={quoteattr(path.replace('/', chr(92)))}>", "      <SubType>Code</SubType>"]
-    if path.endswith(FILE_KINDS["globalVars"][2]):
+    if path.endswith(FILE_KINDS["globalVars"][1]):
         lines.append("      <LinkAlways>true</LinkAlways>")
     return lines + ["    </Compile>"]
 
@@ -122,7 +126,7 @@ def twincat_files(library):
     files = {}
     for obj in library.objects():
         source = obj.source
-        files[relative_path(source.kind, source.name)] = object_file(source.kind, source.name, obj.declaration,
+        files[relative_path(source)] = object_file(source.kind, source.name, obj.declaration,
                                                                      source.body)
     files[f"{library.info.name}.plcproj"] = project_file(library, list(files))
     return files

@@ -14,7 +14,7 @@ from tests import support
 def _in_st():
     """(kind, name) of every object declared by an ST file under st/."""
     paths = glob.glob(os.path.join(support.config()["st_dir"], "**", "*.st"), recursive=True)
-    return {(s.kind, s.name) for s in map(read_source, paths)}
+    return {(s.kind, s.name, relative_path(s)) for s in map(read_source, paths)}
 
 
 class Coverage(unittest.TestCase):
@@ -23,7 +23,7 @@ class Coverage(unittest.TestCase):
         cls.expected = _in_st()
 
     def test_st_is_not_empty(self):
-        kinds = {kind for kind, _ in self.expected}
+        kinds = {kind for kind, _, _ in self.expected}
         self.assertTrue({"dataType", "function", "functionBlock", "globalVars"} <= kinds, kinds)
 
     def test_every_file_of_st_is_exported(self):
@@ -40,13 +40,13 @@ class Coverage(unittest.TestCase):
         for data in root.iterfind(f"{q('addData')}/{q('data')}"):
             if data.get("name") == GLOBAL_VARS:
                 found |= {("globalVars", e.get("name")) for e in data.iterfind(q("globalVars"))}
-        self.assertEqual(found, self.expected)
+        self.assertEqual(found, {(kind, name) for kind, name, _ in self.expected})
 
     def test_the_twincat_folder_holds_every_object(self):
         root = support.twincat_dir()
         on_disk = {os.path.relpath(os.path.join(folder, n), root).replace(os.sep, "/")
                    for folder, _, names in os.walk(root) for n in names}
-        wanted = {relative_path(kind, name) for kind, name in self.expected}
+        wanted = {path for _, _, path in self.expected}
         self.assertEqual(on_disk, wanted | {f"{support.library().info.name}.plcproj"})
 
 

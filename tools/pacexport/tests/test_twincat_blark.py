@@ -43,7 +43,7 @@ class TwincatBlark(unittest.TestCase):
             name, kind = obj.source.name, obj.source.kind
             with self.subTest(name):
                 read = self.sources[name].contents
-                self.assertEqual(type(read).__name__, "Tc" + FILE_KINDS[kind][1])
+                self.assertEqual(type(read).__name__, "Tc" + FILE_KINDS[kind][0])
                 self.assertEqual(read.name, name)
                 exported = canonical_items(cache, read.to_blark(), str(read.filename))
                 source = canonical_items(cache, source_items(kind, name, obj.source.declaration, obj.source.body),

@@ -14,7 +14,7 @@ from pacst.plcopen_names import ENUM_VALUE_DOCUMENTATION, OBJECT_ID, PLAIN_TEXT,
 from pacst.plcopen_read import read_plcopen
 from pacexport.schema import load_schema, schema_errors
 from pacexport.splitting import split_source
-from pacexport.twincat import cdata, guid
+from pacexport.twincat import cdata, guid, relative_path
 from pacexport.types import ArrayType, Derived, Elementary, StringType, parse_type, type_text
 from tests import support
 
@@ -179,7 +179,8 @@ class UnusedShapes(unittest.TestCase):
         (plain,) = self._data(gvl, PLAIN_TEXT)
         self.assertEqual("".join(plain.itertext()).count("{attribute 'qualified_only'}"), 1)
         self.assertEqual([a.get("Name") for a in gvl.iter(q("Attribute"))], ["qualified_only"])
-        with open(os.path.join(self.out, "twincat", "GVLs", "GVL_Test.TcGVL"), encoding="utf-8-sig") as f:
+        (source,) = [g.source for g in self.library.global_lists]
+        with open(os.path.join(self.out, "twincat", *relative_path(source).split("/")), encoding="utf-8-sig") as f:
             self.assertEqual(f.read().count("{attribute 'qualified_only'}"), 1)
 
     def test_the_project_structure_holds_every_object_once_by_its_id(self):

@@ -91,7 +91,9 @@ class Licence(unittest.TestCase):
         root = etree.parse(os.path.join(support.twincat_dir(), f"{self.info.name}.plcproj")).getroot()
         ns = {"m": "http://schemas.microsoft.com/developer/msbuild/2003"}
         self.assertIn(self.info.license_line, root.findtext("m:PropertyGroup/m:Description", namespaces=ns))
-        for folder in ("DUTs", "POUs", "GVLs"):
+        for folder in sorted(os.listdir(support.twincat_dir())):
+            if folder.endswith(".plcproj"):
+                continue
             for name in os.listdir(os.path.join(support.twincat_dir(), folder)):
                 with self.subTest(name):
                     element = etree.parse(os.path.join(support.twincat_dir(), folder, name)).getroot()
