@@ -2,7 +2,9 @@
  * docs/fb/FB_PAC_Rs232Cmd.md), on the C that pacst generates from st/, for K scans (docs/verification.md).
  * Free in every scan: each byte the controller sends (any value, 0..BYTES_PER_SCAN of them, at most
  * REPLY_BYTES after each request), the free space of TxBuffer (the driver sent any number of bytes, or none),
- * both buffers' Blocked, and the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
+ * both buffers' Blocked, whether the FB is called (a CASE step or an IF branch leaves it out: the driver still
+ * moves bytes, the FB's pins stay), a PLC restart (the FB and its rings back to their cold-start values), and
+ * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
  * QuietTime (1..TMAX ms) and Retries (0 or 1); the command (Code, Param, Data) a constant of the run. Properties
  * "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
@@ -41,6 +43,7 @@ static unsigned long long tl_from_pac, tl_to_pac;
 static BOOL tl_execute, tl_rx_blocked, tl_tx_blocked;
 static WORD tl_code;
 static int tl_rule, tl_received, tl_tx_free, tl_written, tl_state;
+static BOOL tl_called, tl_plc_restart;
 static int tl_scan;
 
 /* The harness's own reading of the bytes received since the last request (manual 3.3.1: STX text ETX CHECK
@@ -94,31 +97,49 @@ static void Receive(Frames *f, unsigned char byte, E_PAC_RS232CHECK rule) {
 }
 
 int main(void) {
-    static FB_PAC_RS232CMD cmd;
+    static FB_PAC_RS232CMD cmd, fresh;
     PlcOpenWatch watch = {0};
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
     int requests = 0, lastRequest = 0, lastByte = -1000, sinceRequest = 0;
     BOOL quietSeen = FALSE; /* the line was quiet for QuietTime at some scan since the last request */
-    int reachDone = 0, reachLibError = 0, reachPacError = 0, reachRepeat = 0;
+    int reachDone = 0, reachLibError = 0, reachPacError = 0, reachRepeat = 0, reachSkippedBusy = 0;
+    int reachPlcRestart = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
-    FB_PAC_RS232CMD_init__(&cmd, FALSE);
+    FB_PAC_RS232CMD_init__(&fresh, FALSE);
     const int t = 1 + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX, q = 1 + nondet_uchar() % CBMC__TMAX;
-    cmd.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-    cmd.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
-    cmd.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % CBMC__TMAX) * CYCLE_NS);
-    cmd.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
-    cmd.RETRIES.value = nondet_bool();
+    fresh.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+    fresh.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
+    fresh.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % CBMC__TMAX) * CYCLE_NS);
+    fresh.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
+    fresh.RETRIES.value = nondet_bool();
     /* Busy: per request at most Timeout for a quiet line, Timeout for room in TxBuffer and Timeout for the
      * reply, Retries + 1 requests before the acknowledgement, then EndTimeout (FB_PAC_Rs232Cmd.md, "A noisy
      * line"). */
-    watch.bound = (cmd.RETRIES.value + 1) * 3 * t + e;
+    watch.bound = (fresh.RETRIES.value + 1) * 3 * t + e;
+    fresh.TXBUFFER.value.WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
+    cmd = fresh;
     T_PAC_COMBUFFER *tx = &cmd.TXBUFFER.value, *rx = &cmd.RXBUFFER.value;
-    tx->WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        /* A PLC cold start: the FB instance and its rings back to their initial values; what the controller
+         * still sends for a request of the instance before goes into the new RxBuffer. The request history of
+         * R2 starts anew (the new instance cannot know of the old request). */
+        const BOOL plcRestart = n > 1 && nondet_bool();
+        if (plcRestart) {
+            cmd = fresh;
+            const PlcOpenWatch none = {0};
+            const int bound = watch.bound;
+            watch = none;
+            watch.bound = bound;
+            rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO;
+            requests = 0;
+            quietSeen = FALSE;
+            frames = (Frames){0};
+            reachPlcRestart = 1;
+        }
         /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. */
         const int held = nondet_ushort() % (RING + 1);
         tx->COUNT = (INT)held;
@@ -145,18 +166,23 @@ int main(void) {
         if (received > 0) lastByte = n;
         if (n - lastByte >= q) quietSeen = TRUE;
 
+        const BOOL called = nondet_bool();
         const BOOL before = cmd.EXECUTE.value;
-        cmd.EXECUTE.value = nondet_bool();
-        const BOOL edge = cmd.EXECUTE.value && !before;
-        cmd.CODE.value = CBMC__CMD_CODE;
-        cmd.PARAM.value = CBMC__CMD_PARAM;
-        cmd.DATA.value = CBMC__CMD_DATA;
-        cmd.CHECKRULE.value = (E_PAC_RS232CHECK)(nondet_uchar() % 4);
+        if (called) {
+            cmd.EXECUTE.value = nondet_bool();
+            cmd.CODE.value = CBMC__CMD_CODE;
+            cmd.PARAM.value = CBMC__CMD_PARAM;
+            cmd.DATA.value = CBMC__CMD_DATA;
+            cmd.CHECKRULE.value = (E_PAC_RS232CHECK)(nondet_uchar() % 4);
+        } else if (cmd.BUSY.value) {
+            reachSkippedBusy = 1;
+        }
+        const BOOL edge = called && cmd.EXECUTE.value && !before;
         if (edge && !cmd.BUSY.value) rule = cmd.CHECKRULE.value;
         const BOOL doneBefore = cmd.DONE.value;
         const int count0 = tx->COUNT, wrIdx0 = tx->WRIDX;
         const BOOL txBlocked = tx->BLOCKED;
-        FB_PAC_RS232CMD_body__(&cmd);
+        if (called) FB_PAC_RS232CMD_body__(&cmd);
 
         const int written = tx->COUNT - count0;
         unsigned long long toPac = 0;
@@ -174,10 +200,14 @@ int main(void) {
         tl_written = written;
         tl_to_pac = toPac;
         tl_state = cmd.STATE.value;
+        tl_called = called;
+        tl_plc_restart = plcRestart;
         tl_scan = n;
 
-        /* P1..P4, P8 (plcopen_props.h). */
-        CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
+        /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
+        if (!called && watch.busy) watch.busyScans++;
+        if (called)
+            CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
                      cmd.ERRORID.value);
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
@@ -215,5 +245,7 @@ int main(void) {
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with the controller's QUIT");
     __CPROVER_assert(!reachRepeat, "reach: a request sent again");
+    __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
     return 0;
 }
