@@ -6,7 +6,7 @@
  * FB's Timeout and EndTimeout (a few ms); TwoStepWrite; the call order of the callers, anew in every scan; the
  * bus latency (the controller reads a module 0..LAG scans old, skipping any); the controller's reading of the
  * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
- * (RECEIVE back to 0 or to the last SEND), and a PLC restart (the interface and the command FBs back to their
+ * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on, and a PLC restart (the interface and the command FBs back to their
  * cold-start values, the program's pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the
  * second FB sends any command too. The controller keeps a ledger of the commands it took; P5 matches every
  * Done with an entry of its own.
@@ -31,6 +31,9 @@
 #endif
 #ifndef CBMC__PLC_RESTARTS /* a PLC restart (every FB instance back to its cold-start values) at any scan */
 #define CBMC__PLC_RESTARTS 1
+#endif
+#ifndef CBMC__BLIPS /* a single all-zero scan while the controller runs on */
+#define CBMC__BLIPS 1
 #endif
 
 #define PARKED_CODE 0x190B
@@ -68,6 +71,7 @@ typedef struct {
     BOOL ledgerClaimed[CBMC__K + 1]; /* an FB ended Done for it */
     BOOL processingLong;  /* it acknowledged a long command and has not ended it */
     int downSince;        /* restarting since this scan (0: running) */
+    BOOL blip;            /* the PLC read an all-zero image in the scan before (a lost telegram) */
 } Controller;
 
 static WORD Word(const BYTE *m, int i) { return (WORD)((m[i] << 8) | m[i + 1]); }
@@ -90,6 +94,7 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->processingLong = FALSE;
     }
     if (c->downSince != 0) {
+        c->blip = FALSE;
         if (n - c->downSince < RESTART || nondet_bool()) {
             for (int i = 0; i < 8; ++i) reply[i] = 0;
             return;
@@ -142,6 +147,11 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
     __CPROVER_assume(reply[5] != 0);
     reply[6] = (BYTE)((c->receive ? 0x80 : 0) | flags | (nondet_uchar() & 0x1F));
     reply[7] = nondet_uchar();
+    /* A single scan of an all-zero image while the controller runs on (a lost telegram: status 0 for one
+     * scan, RECEIVE 0 with it), never two in a row: longer is a restart. */
+    c->blip = CBMC__BLIPS && !c->blip && nondet_bool();
+    if (c->blip)
+        for (int i = 0; i < 8; ++i) reply[i] = 0;
 }
 
 /* What the harness knows of one caller's job, for the properties. */
@@ -206,6 +216,7 @@ int main(void) {
     const BOOL twoStep = nondet_bool();
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
     int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
+    int reachBlipBusy = 0;
     BOOL skippedWhileBusy[CBMC__CALLERS];
 
     ctrl.bySendChange = nondet_bool();
@@ -261,6 +272,8 @@ int main(void) {
             }
         }
         for (int i = 0; i < 8; ++i) iface.CHANNEL.value.FROMPAC.table[i] = reply[i];
+        for (int i = 0; i < CBMC__CALLERS; ++i)
+            if (ctrl.blip && called[i] && cmd[i].BUSY.value) reachBlipBusy = 1;
         FB_PAC_CMDINTERFACE_body__(&iface);
         /* The call order anew in every scan. Each call with a constant index: a pointer to cmd[symbolic] would
          * split every access in the body. */
@@ -321,6 +334,11 @@ int main(void) {
     __CPROVER_assert(iface.RESYNCS.value == 0, "reach: a resynchronisation");
     __CPROVER_assert(!reachSkippedBusy, "reach: a caller left out of a scan while Busy");
     __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
+#if CBMC__BLIPS
+    __CPROVER_assert(!reachBlipBusy, "reach: a single all-zero scan while a caller is Busy");
+#else
+    (void)reachBlipBusy;
+#endif
 #if CBMC__PLC_RESTARTS
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
 #else
