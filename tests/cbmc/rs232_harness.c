@@ -37,6 +37,12 @@
 
 #define RING 300 /* T_PAC_ComBuffer: 300 bytes in Buffer[0..299] */
 
+/* i modulo RING for -RING <= i < 3 x RING, without a division: a % by 300 of a free value is a divider circuit
+ * in the formula, in every scan and for every byte. */
+static int Ring(int i) {
+    return i < 0 ? i + RING : i >= 2 * RING ? i - 2 * RING : i >= RING ? i - RING : i;
+}
+
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. from_pac: the
  * bytes the controller's side put into RxBuffer in this scan; to_pac: the first 8 the FB wrote into TxBuffer. */
 static unsigned long long tl_from_pac, tl_to_pac;
@@ -141,14 +147,16 @@ int main(void) {
             reachPlcRestart = 1;
         }
         /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. */
-        const int held = nondet_ushort() % (RING + 1);
+        const int held = nondet_ushort();
+        __CPROVER_assume(held <= RING);
         tx->COUNT = (INT)held;
         tx->FREEBYTE = (INT)(RING - held);
-        tx->RDIDX = (INT)((tx->WRIDX + RING - held) % RING);
+        tx->RDIDX = (INT)Ring(tx->WRIDX + RING - held);
         tx->BLOCKED = nondet_bool();
         /* RxBuffer: the controller's bytes, any values. */
         rx->BLOCKED = nondet_bool();
-        int received = nondet_uchar() % (CBMC__BYTES_PER_SCAN + 1);
+        int received = nondet_uchar();
+        __CPROVER_assume(received <= CBMC__BYTES_PER_SCAN);
         if (received > CBMC__REPLY_BYTES - sinceRequest) received = CBMC__REPLY_BYTES - sinceRequest;
         unsigned long long fromPac = 0;
         for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
@@ -157,7 +165,7 @@ int main(void) {
             Receive(&frames, byte, rule);
             if (rx->COUNT < RING) {
                 rx->BUFFER.table[rx->WRIDX] = byte;
-                rx->WRIDX = (INT)((rx->WRIDX + 1) % RING);
+                rx->WRIDX = (INT)Ring(rx->WRIDX + 1);
                 ++rx->COUNT;
                 rx->FREEBYTE = (INT)(RING - rx->COUNT);
             }
@@ -187,7 +195,7 @@ int main(void) {
         const int written = tx->COUNT - count0;
         unsigned long long toPac = 0;
         for (int i = 0; i < 8 && i < written; ++i)
-            toPac |= (unsigned long long)tx->BUFFER.table[(wrIdx0 + i) % RING] << (8 * (7 - i));
+            toPac |= (unsigned long long)tx->BUFFER.table[Ring(wrIdx0 + i)] << (8 * (7 - i));
         tl_from_pac = fromPac;
         tl_received = received;
         tl_rx_blocked = rx->BLOCKED;
@@ -211,10 +219,10 @@ int main(void) {
                      cmd.ERRORID.value);
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
-        const unsigned char first = tx->BUFFER.table[wrIdx0 % RING];
-        const unsigned char last = tx->BUFFER.table[(wrIdx0 + RING + written - 1) % RING];
+        const unsigned char first = tx->BUFFER.table[Ring(wrIdx0)];
+        const unsigned char last = tx->BUFFER.table[Ring(wrIdx0 + written - 1)];
         __CPROVER_assert(written >= 0 && written <= RING - count0, "R1 nothing written past TxBuffer's free space");
-        __CPROVER_assert(tx->WRIDX == (wrIdx0 + written) % RING && tx->FREEBYTE == RING - tx->COUNT,
+        __CPROVER_assert(tx->WRIDX == Ring(wrIdx0 + written) && tx->FREEBYTE == RING - tx->COUNT,
                          "R1 TxBuffer's indices follow the bytes written");
         __CPROVER_assert(written == 0 || (!txBlocked && last == 0x04 && (written == 1 || first == 0x01)),
                          "R1 a whole request or nothing, never into a held buffer");
