@@ -121,7 +121,9 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->seen = n - 1 - lag;
         if (isNew) {
             const WORD code = word & 0x7FFF;
-            const BOOL parked = code == PARKED_CODE && Dword(module) == 0 && Word(module, 4) == 0;
+            /* The parked read; read torn, its parameter and data are the module's before (a fresh interface
+             * after a PLC restart parks data and flag in one write): still a read without effect. */
+            const BOOL parked = code == PARKED_CODE && ((Dword(module) == 0 && Word(module, 4) == 0) || torn);
             /* P6: nothing but a stop of what runs reaches a controller that processes a long command. */
             __CPROVER_assert(!c->processingLong || parked || IsStop(code),
                              "P6 only a stop or the parked read while a command is processing");

@@ -17,6 +17,7 @@
 
 extern "C" {
 int pac_cbmc_cmd_one_main(void);
+int pac_cbmc_cmd_one_restarts_main(void);
 int pac_cbmc_cmd_two_main(void);
 int pac_cbmc_cmd_two_no_plc_restart_main(void);
 int pac_cbmc_cmd_one_short_timeout_main(void);
@@ -69,6 +70,7 @@ Counterexample Read(const std::filesystem::path& path) {
 void Replay(const Counterexample& c) {
     static const std::map<std::string, int (*)(void)> harnesses = {
         {"CmdInterface.OneCaller", pac_cbmc_cmd_one_main},
+        {"CmdInterface.OneCallerRestarts", pac_cbmc_cmd_one_restarts_main},
         {"CmdInterface.TwoCallers", pac_cbmc_cmd_two_main},
         {"CmdInterface.TwoCallers.NoPlcRestart", pac_cbmc_cmd_two_no_plc_restart_main},
         {"CmdInterface.OneCallerShortTimeout", pac_cbmc_cmd_one_short_timeout_main},
