@@ -8,8 +8,8 @@
  * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
  * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on (-DCBMC__BLIPS=0 leaves it
  * out), and a PLC restart (the interface and the command FBs back to their cold-start values, the program's
- * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The controller keeps a ledger of the commands it took; P5 matches every
- * Done with an entry of its own.
+ * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
+ * controller keeps a ledger of the commands it took; P5 matches every Done with an entry of its own.
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
