@@ -1040,6 +1040,28 @@ TEST_P(CtrlSim, FreshInstanceAfterAPlcRestartStopsAndCancelsNothing) {
     }
 }
 
+// A start bit the instance before a PLC restart put out can still reach the controller after the new
+// instance's CANCEL edge (the bus latency): the controller takes the start and shows 30 or 10, which show no
+// mode bit like home position. The CANCEL must not be Done before the controller has read its own bit, which
+// cancels any mode started meanwhile: when it is Done, the controller is in home position and stays there.
+TEST_P(CtrlSim, CancelAfterAPlcRestartWhileTheOldStartIsOnItsWayEndsInHomePosition) {
+    for (Request start : {kStartOnline, kStartAutomatic}) {
+        CtrlSimPlc probe(GetParam());
+        const int roundTrip = probe.Window().RoundTripScans();
+        for (int restartAfter = 0; restartAfter <= roundTrip; ++restartAfter) {
+            SCOPED_TRACE(std::string(Name(start)) + ", PLC restart " + std::to_string(restartAfter) + " scans after its edge");
+            CtrlSimPlc plc(GetParam());
+            plc.Settle();
+            plc.Begin(start);
+            plc.Scan(restartAfter);
+            plc.RestartPlcProgram();
+            const FinalOutcome f = plc.Run(kCancel);
+            ASSERT_TRUE(f.Done()) << f;
+            EXPECT_TRUE(plc.SettledAt(1)) << "CANCEL Done, so the controller stays in home position";
+        }
+    }
+}
+
 // Contrast: a new program that leaves the CTRL module at zero (the CMD module carries FB_PAC_Cmd's
 // idle 190B, so the image is not all zero) cancels ONLINE to home position at the first cycle that
 // reads it; one that zeroes the whole image is the emergency stop (39).
