@@ -523,7 +523,7 @@ constexpr Outcome N = Outcome::kNotAllowed;
 constexpr Outcome R = Outcome::kNotReady;
 
 // CANCEL and RESET ERROR where no mode bit shows put their bit out until the controller has read it: no mode
-// bit is also a start's 10 or 30 (FbPacCtrl.CancelInHomePositionIsDoneOnceItsBitWasRead).
+// bit is also a start's 10 or 30 (FbPacCtrl.CancelAndResetErrorInHomePositionAreDoneOnceTheirBitWasRead).
 //                                                                       START_ONL START_AUT STOP CANCEL RESET
 INSTANTIATE_TEST_SUITE_P(
     Statuses, FbPacCtrlState,

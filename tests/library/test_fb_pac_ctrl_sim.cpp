@@ -730,7 +730,7 @@ std::vector<StateCase> States() {
     //                      START_ONL START_AUT STOP CANCEL RESET
     return {
         // CANCEL and RESET ERROR in home position put their bit out until the controller has read it
-        // (CancelAndResetErrorAreDoneOnlyOnceTheControllerHasReadTheirBit).
+        // (DoneOnceRead, CancelAfterAPlcRestartWhileTheOldStartIsOnItsWayEndsInHomePosition).
         {"Home1", {}, run({}), 1, 0, W, W, N, W, W},
         {"Home9Class2", {}, raise({}, 150, false), 9, 150, N, N, N, W, W},
         {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, N, W, N},
