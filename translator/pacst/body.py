@@ -28,11 +28,18 @@ class BodyCompiler:
 
     def lookup(self, name):
         v = self.pou.var(name)
-        if v is None and self.pou.owner is not None:  # a METHOD or ACTION reads its FB's variables
-            v = self.pou.owner.var(name)
+        if v is None:  # a METHOD or ACTION reads its FB's variables
+            v = self._owner_var(name)
         if v is None:
             v = T.find_var((self.pou.owner or self.pou).statics, name)
         return v
+
+    def _owner_var(self, name):
+        """A METHOD's or ACTION's variable of its FB: its own VAR_INST first, kept under another name where the
+        FB has that name too."""
+        if self.pou.owner is None:
+            return None
+        return self.pou.instance_vars.get(name.upper()) or self.pou.owner.var(name)
 
     def _fb_of_body(self):
         """The FUNCTION_BLOCK or PROGRAM whose variables `data__` points at here, or None (a FUNCTION)."""
@@ -52,6 +59,9 @@ class BodyCompiler:
         head = node.elements[0]
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, "THIS^ names a variable or a method: THIS^.Name")
+        if _name(head.field.name).upper() in self.pou.instance_vars:
+            raise self.err(head, f"THIS^.{_name(head.field.name)} in a METHOD whose VAR_INST has that name: pacst "
+                                 "reads the METHOD's variable there; rename the METHOD's")
         if len(node.elements) == 1:
             return head.field
         return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
@@ -143,8 +153,8 @@ class BodyCompiler:
         static = T.find_var((pou.owner or pou).statics, name) if v is None else None
         if static is not None:  # VAR_STAT (user mode): one C variable for every instance
             return Ref(static.csym, True, static.type, static)
-        if v is None and pou.owner is not None and pou.owner.var(name) is not None:
-            ov = pou.owner.var(name)  # a METHOD's or ACTION's access to its FB's variables
+        ov = self._owner_var(name) if v is None and static is None else None
+        if ov is not None:  # a METHOD's or ACTION's access to its FB's variables
             why = "it is a CONSTANT" if ov.constant else ""
             return Ref(f"data__->{ov.cname}", not ov.type.is_fb, ov.type, ov, writable=not why, why_not=why)
         if v is None and up in pou.externals:

@@ -15,7 +15,7 @@ import re
 from . import literals
 from . import types as T
 from .body import BodyCompiler
-from .common import _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
+from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
@@ -74,6 +74,7 @@ class Pou:
         self.owner = None  # user mode: the FUNCTION_BLOCK or PROGRAM of a METHOD or ACTION
         self.methods = {}  # user mode: upper name -> the METHODs and ACTIONs of a FUNCTION_BLOCK or PROGRAM
         self.statics = []  # user mode: VAR_STAT, shared by every instance
+        self.instance_vars = {}  # user mode: a METHOD's VAR_INST kept in its FB under another name (NAME -> Var)
         self.properties = {}  # user mode: upper name -> {"name", "type", "get": Pou, "set": Pou} of a FUNCTION_BLOCK
         self.accessor = None  # user mode: "get" or "set" for a PROPERTY's accessor
         self.interfaces = []  # user mode: the INTERFACEs a FUNCTION_BLOCK IMPLEMENTS (its base's too)
@@ -119,6 +120,7 @@ class Compiler:
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
+        self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
@@ -876,13 +878,32 @@ class Compiler:
             raise self.err(block, "VAR_INST belongs to a METHOD of a FUNCTION_BLOCK")
         for item in block.items:
             names = [_name(dv.variable.name) for dv in item.variables]
-            if inherited and all(owner.var(n) is not None for n in names):
-                continue  # the base's METHOD translated again for a derived FB: the variables came with the base's
-            for n in names:
-                if owner.var(n) is not None:
-                    raise self.err(item, f"VAR_INST '{n}' of METHOD {method.name}: {owner.name} has a variable of "
-                                         "that name; rename one (pacst keeps VAR_INST among the FB's variables)")
-            self._user_vars(owner, "var", False, item)
+            kept = [owner.var(self._instance_name(method, n)) for n in names]
+            if inherited and all(k is not None or owner.var(n) is not None for k, n in zip(kept, names)):
+                # the base's METHOD translated again for a derived FB: the variables came with the base's
+                method.instance_vars.update((n.upper(), k) for k, n in zip(kept, names) if k is not None)
+                continue
+            if not any(owner.var(n) is not None for n in names):
+                self._user_vars(owner, "var", False, item)
+                continue
+            # A name the FB has too (TcUnit's test METHODs keep an instance of the FB they test so): the METHOD's
+            # variable is the FB's under the METHOD's name, which the METHOD reads by its own.
+            before = len(method.vars)
+            self._user_vars(method, "var", False, item)
+            for v in method.vars[before:]:
+                name, cname = v.name, self._instance_name(method, v.name)
+                if owner.var(cname) is not None:
+                    raise self.err(item, f"VAR_INST '{name}' of METHOD {method.name}: {owner.name} has a variable "
+                                         f"'{cname}' already, where pacst keeps it; rename one")
+                v.name, v.cname = f"{method.name}.{name}", cname
+                owner.vars.append(v)
+                method.instance_vars[name.upper()] = v
+            del method.vars[before:]
+
+    @staticmethod
+    def _instance_name(method, name):
+        """The name of a METHOD's VAR_INST among its FB's variables when the FB has its name too."""
+        return f"{method.name}_{name}".upper()
 
     def _var_block(self, pou, block):
         cls = _cls(block)
@@ -1064,10 +1085,26 @@ class Compiler:
             raise self.err(node, f"{t.name} has no value '{name}'")
         return value
 
+    def initial_constant(self, node):
+        """User mode: the value of an initial value that is an integer expression of named constants
+        (`[FLAG_ERROR, FLAG_WARNING]`, `MAX_COUNT * 2`), or None. Kept by node: the initial values are
+        translated again outside their POU, where its own constants are out of reach."""
+        if not self.user or _cls(node) in _INT_LITERALS | _BIT_LITERALS:
+            return None
+        if id(node) not in self.constant_inits:
+            value = self.constant_int(node)
+            if value is None:
+                return None
+            self.dialect(node, "an initial value from named constants")
+            self.constant_inits[id(node)] = value
+        return self.constant_inits[id(node)]
+
     def literal_te(self, node, want):
         """Type an initial value, which must be a literal or an enumeration value."""
         node = self.unqualify(node)
         cls = _cls(node)
+        if self.initial_constant(node) is not None:
+            return TE(T.ANY_INT, value=self.constant_inits[id(node)])
         if cls == "UnaryOperation" and str(node.op) == "-":
             inner = _cls(node.expr)
             if inner not in _INT_LITERALS | {"Real"}:
