@@ -125,8 +125,12 @@ class Compiler:
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
         refuses each with its place, since MATIEC compiles only the portable subset's user programs."""
-        self.dialect_uses.append(self.err(node, f"{what}: TwinCAT / CODESYS dialect that MATIEC does not compile "
-                                                "(docs/user_dialect.md); run this program on pacst's C"))
+        line, col = pos(node) if node is not None else (1, 1)
+        self.dialect_at(self.file, line, col, what)
+
+    def dialect_at(self, file, line, col, what):
+        self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does not "
+                                                          "compile (docs/user_dialect.md); run this program on pacst's C"))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
@@ -142,6 +146,8 @@ class Compiler:
         self.sources = sources
         for src in sources:
             self.file = src.path
+            for line, col, what in getattr(src, "rewrites", ()):  # rewrite.user_text's
+                self.dialect_at(src.path, line, col, what)
             for item in src.tree.items:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:

@@ -30,7 +30,7 @@ import lark
 from blark import transform as tf
 from blark.parse import new_parser, parse_source_code
 
-from . import lexcheck, twincat
+from . import lexcheck, rewrite, twincat
 from .errors import StError
 from .fastparse import Decline, FastParser, grammar_facts
 
@@ -193,10 +193,11 @@ def _semicolon_hint(text, line, col):
 class SourceFile:
     """One parsed file: its path, text and blark SourceCode."""
 
-    def __init__(self, path, text, tree):
+    def __init__(self, path, text, tree, rewrites=()):
         self.path = path
         self.text = text
         self.tree = tree
+        self.rewrites = rewrites  # user mode: (line, column, construct) of each rewrite.user_text made
 
 
 def _read(path, user=False):
@@ -205,9 +206,10 @@ def _read(path, user=False):
             text = f.read()
     except (OSError, UnicodeDecodeError) as exc:
         raise StError(path, 1, 1, f"cannot read the file: {exc}") from None
-    if user and twincat.is_object_file(path):
-        return twincat.object_st(text, path)
-    return _closed_pou(text, path) if user else text
+    if not user:
+        return text, []
+    return rewrite.user_text(twincat.object_st(text, path) if twincat.is_object_file(path) else _closed_pou(text, path),
+                             path)
 
 
 _POU_OPENERS = ("FUNCTION_BLOCK", "FUNCTION", "PROGRAM")
@@ -277,11 +279,11 @@ def _parse_misses(misses, jobs, cache_dir):
         _parser(cache_dir)
     if (jobs <= 1 or len(misses) <= 1 or sum(len(m[2]) for m in misses) < _PARALLEL_MIN_CHARS
             or "fork" not in multiprocessing.get_all_start_methods()):
-        return {i: _parse_pickled(path, text) for i, path, text in misses}
+        return {i: _parse_pickled(path, text) for i, path, text, _ in misses}
     ordered = sorted(misses, key=lambda m: len(m[2]), reverse=True)
     context = multiprocessing.get_context("fork")
     with concurrent.futures.ProcessPoolExecutor(max_workers=min(jobs, len(misses)), mp_context=context) as pool:
-        futures = {i: pool.submit(_parse_pickled, path, text) for i, path, text in ordered}
+        futures = {i: pool.submit(_parse_pickled, path, text) for i, path, text, _ in ordered}
         return {i: future.result() for i, future in futures.items()}
 
 
@@ -292,25 +294,25 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
     results, misses = [], []
     for i, path in enumerate(paths):
         try:
-            text = _read(path, user)
+            text, rewrites = _read(path, user)
             tree = _cached_tree(cache_dir, _cache_key(text, user))
             if tree is None:
                 lexcheck.check(text, path, user)
         except StError as e:
             results.append(e)
             continue
-        results.append(SourceFile(path, text, tree) if tree is not None else None)
+        results.append(SourceFile(path, text, tree, rewrites) if tree is not None else None)
         if tree is None:
-            misses.append((i, path, text))
+            misses.append((i, path, text, rewrites))
     parsed = _parse_misses(misses, default_jobs() if jobs is None else jobs, cache_dir)
-    for i, path, text in misses:
+    for i, path, text, rewrites in misses:
         pickled, error = parsed[i]
         if error is not None:
             results[i] = StError(*error)
             continue
         if cache_dir:
             _store(cache_dir, _cache_key(text, user), pickled)
-        results[i] = SourceFile(path, text, pickle.loads(pickled))
+        results[i] = SourceFile(path, text, pickle.loads(pickled), rewrites)
     return results
 
 

@@ -1,0 +1,97 @@
+"""User mode: forms of the TwinCAT 3 / CODESYS dialect that blark's grammar lacks, rewritten before parsing to
+forms it has (docs/user_dialect.md). Every rewrite keeps each line where it is and every token before it at
+its column, so that errors, `#line` directives and coverage still name the user's line:
+
+- `PROGRAM INTERNAL MAIN` (an access specifier of a PROGRAM): the specifier blanked;
+- `FUNCTION_BLOCK FB_Cnc IMPLEMENTS I_Hmi;` (a `;` after the heading): the `;` blanked;
+- `List : FB_List := ();` (an FB instance with an empty initial value): `:= ()` blanked;
+- `RETURN(Done);` (CODESYS's conditional RETURN): `IF    (Done) THEN RETURN; END_IF;`, `RETURN` written over
+  by `IF` and blanks, the rest of the statement after the `)`; `RETURN(Init := T <= 0);` (an assignment as its
+  condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`.
+"""
+from . import lexcheck
+from .errors import StError
+
+_ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
+
+
+def user_text(text, path):
+    """(`text` with the rewrites above, [(line, column, construct) of each]); `text` as it is when it has none,
+    or when its tokens are refused (the lexical check names what is wrong)."""
+    try:
+        tokens = lexcheck.tokenize(text, path, user=True)
+    except StError:
+        return text, []
+    edits = []  # (start, end, replacement) in the text, in order, not overlapping
+    uses = []
+    for k, tok in enumerate(tokens):
+        up = tok.upper if tok.kind == "ident" else tok.text
+        nxt = tokens[k + 1] if k + 1 < len(tokens) else None
+        if up == "PROGRAM" and nxt is not None and nxt.kind == "ident":
+            j = k + 1
+            while j < len(tokens) and tokens[j].kind == "ident" and tokens[j].upper in _ACCESS:
+                uses.append((tokens[j].line, tokens[j].col, f"PROGRAM {tokens[j].upper}"))
+                edits.append((tokens[j].start, tokens[j].end, ""))
+                j += 1
+        elif up == "FUNCTION_BLOCK":
+            j = k + 1
+            while j < len(tokens) and tokens[j].line == tok.line and (
+                    tokens[j].kind == "ident" or tokens[j].text in (",", ".")):
+                j += 1
+            if j < len(tokens) and tokens[j].text == ";" and tokens[j].line == tok.line \
+                    and all(t.kind != "ident" or t.upper not in _KEYWORDS for t in tokens[k + 1:j]):
+                uses.append((tokens[j].line, tokens[j].col, "a ';' after a FUNCTION_BLOCK's heading"))
+                edits.append((tokens[j].start, tokens[j].end, ""))
+        elif up == ":=" and nxt is not None and nxt.text == "(" and k + 3 < len(tokens) \
+                and tokens[k + 2].text == ")" and tokens[k + 3].text == ";":
+            uses.append((tok.line, tok.col, "an empty initial value ':= ()'"))
+            edits.append((tok.start, tokens[k + 2].end, ""))
+        elif up == "RETURN" and nxt is not None and nxt.text == "(":
+            close = _closing(tokens, k + 1)
+            if close is not None and close + 1 < len(tokens) and tokens[close + 1].text == ";":
+                uses.append((tok.line, tok.col, "RETURN(condition)"))
+                target = _assigned(tokens, k + 1, close)
+                if target is None:
+                    edits.append((tok.start, tok.end, "IF"))
+                    edits.append((tokens[close].end, tokens[close + 1].end, " THEN RETURN; END_IF;"))
+                else:  # RETURN(Init := T <= 0): the assignment, then the RETURN on what it assigned
+                    name = text[tokens[k + 2].start:tokens[target].start].strip()
+                    edits.append((tok.start, nxt.end, ""))
+                    edits.append((tokens[close].start, tokens[close + 1].end, f"; IF {name} THEN RETURN; END_IF;"))
+    if not edits:
+        return text, []
+    out, at = [], 0
+    for start, end, word in edits:
+        out.append(text[at:start])
+        # blanks keep the columns of what follows on the line; a longer replacement only moves the line's rest
+        out.append(word + " " * max(0, end - start - len(word)))
+        at = end
+    out.append(text[at:])
+    return "".join(out), uses
+
+
+# keywords that end a FUNCTION_BLOCK's heading: a `;` after one of them is no heading's
+_KEYWORDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT", "VAR_EXTERNAL",
+             "END_FUNCTION_BLOCK", "RETURN", "IF", "CASE", "FOR", "WHILE", "REPEAT", "EXIT", "CONTINUE"}
+
+
+def _assigned(tokens, k, close):
+    """The index of the `:=` of `(Name := value)` between tokens[k] (the `(`) and tokens[close], when the
+    parentheses hold an assignment to a variable (CODESYS's assignment as an expression), else None."""
+    j = k + 1
+    while j < close and (tokens[j].kind == "ident" or tokens[j].text in (".", "^")):
+        j += 1
+    return j if k + 1 < j < close and tokens[j].text == ":=" else None
+
+
+def _closing(tokens, k):
+    """The index of the `)` that closes the `(` at tokens[k], or None."""
+    depth = 0
+    for j in range(k, len(tokens)):
+        if tokens[j].text == "(":
+            depth += 1
+        elif tokens[j].text == ")":
+            depth -= 1
+            if depth == 0:
+                return j
+    return None
