@@ -5,6 +5,8 @@ its column, so that errors, `#line` directives and coverage still name the user'
 - `PROGRAM INTERNAL MAIN` (an access specifier of a PROGRAM): the specifier blanked;
 - `FUNCTION_BLOCK FB_Cnc IMPLEMENTS I_Hmi;` (a `;` after the heading): the `;` blanked;
 - `List : FB_List := ();` (an FB instance with an empty initial value): `:= ()` blanked;
+- `ARRAY [1..N] OF UINT(1..M)` (an array of a subrange, whose bounds blark's grammar does not read there):
+  the range blanked, as pacst does not check a subrange's range anywhere;
 - `RETURN(Done);` (CODESYS's conditional RETURN): `IF    (Done) THEN RETURN; END_IF;`, `RETURN` written over
   by `IF` and blanks, the rest of the statement after the `)`; `RETURN(Init := T <= 0);` (an assignment as its
   condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`.
@@ -46,6 +48,12 @@ def user_text(text, path):
                 and tokens[k + 2].text == ")" and tokens[k + 3].text == ";":
             uses.append((tok.line, tok.col, "an empty initial value ':= ()'"))
             edits.append((tok.start, tokens[k + 2].end, ""))
+        elif up == "OF" and nxt is not None and nxt.kind == "ident" and nxt.upper in _INTEGERS \
+                and k + 2 < len(tokens) and tokens[k + 2].text == "(":
+            close = _closing(tokens, k + 2)
+            if close is not None and any(t.text == ".." for t in tokens[k + 3:close]):
+                uses.append((nxt.line, nxt.col, "a subrange type"))
+                edits.append((tokens[k + 2].start, tokens[close].end, ""))
         elif up == "RETURN" and nxt is not None and nxt.text == "(":
             close = _closing(tokens, k + 1)
             if close is not None and close + 1 < len(tokens) and tokens[close + 1].text == ";":
@@ -70,6 +78,7 @@ def user_text(text, path):
     return "".join(out), uses
 
 
+_INTEGERS = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD"}
 # keywords that end a FUNCTION_BLOCK's heading: a `;` after one of them is no heading's
 _KEYWORDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT", "VAR_EXTERNAL",
              "END_FUNCTION_BLOCK", "RETURN", "IF", "CASE", "FOR", "WHILE", "REPEAT", "EXIT", "CONTINUE"}

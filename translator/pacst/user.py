@@ -180,6 +180,10 @@ def var_type(comp, init, allow_fb):
             return T.STRING, string_length(comp, tok)
         if cls == "TypeInitialization":
             return comp._spec_type(spec, allow_fb=allow_fb), None
+    if cls == "SubrangeTypeInitialization" and init.indirection is None and init.spec.subrange is not None:
+        # UINT(1..MAX): the base type; its range is not checked, as TwinCAT checks it only with a CheckRange POU
+        comp.dialect(init, "a subrange type")
+        return comp._resolve_type(init.spec.type_name, allow_fb=False), None
     raise comp.err(init, f"{cls} is outside pacst's user programs")
 
 

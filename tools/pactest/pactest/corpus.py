@@ -3,7 +3,7 @@
 For each project under the folders given (a folder holding a .plcproj, or a folder of TwinCAT files), every
 .TcPOU, .TcDUT, .TcGVL and .TcIO is parsed and the parsed ones translated together by `pacst --user` with what
 pac-test gives a program: its test vocabulary, the vendor libraries' parts it provides (Tc2_System's) and, for
-sources that name it, TcUnit's FB_TestSuite (all left out for a project that declares TcUnit itself). A file
+sources that name it, TcUnit's FB_TestSuite (for a project that declares TcUnit itself, the vendor parts only). A file
 is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
 depends on it is counted as such. Prints each project's counts and the refusals by reason (the names in a reason replaced by
 '…'), and with --json writes them."""
@@ -55,9 +55,9 @@ def reason(message):
 def _given(files):
     """What pac-test translates with a project's `files`: (extra files, native files, namespaces)."""
     names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
-    if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names
-        return [], [], None
     namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
+    if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names, Tc2_System's parts
+        return project.vendor_sources(), project.vendor_natives(), namespaces
     extra = project.vocabulary_sources() + project.vendor_sources()
     native = project.native_sources() + project.vendor_natives()
     if not project.uses_tcunit(files):
