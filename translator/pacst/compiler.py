@@ -262,6 +262,9 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
+        if self.user and up == "BIT":  # TwinCAT packs a BIT member into its struct's bits: a BOOL here
+            self.dialect(token, "BIT")
+            return T.ELEMENTARY["BOOL"]
         if up in T.OUTSIDE_SUBSET:
             raise self.err(token, T.OUTSIDE_SUBSET[up])
         if self.user and up in T.USER_FBS:
