@@ -556,6 +556,7 @@ class Compiler:
                 number += 1
             t = T.EnumType(_name(decl.name), values, numbers, base)
             t.qualified_only = self.user and user.qualified_only(self, pos(decl)[0])
+            t.strict = self.user and user.strict(self, pos(decl)[0])
             if init.value is not None:  # user mode: the type's default value instead of the first
                 dv = init.value
                 self.dialect(dv, "an enumeration's default value")

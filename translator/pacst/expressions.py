@@ -102,6 +102,8 @@ class ExprCompiler:
                 if code is None:
                     raise self.err(node, f"{te.value} does not fit {target.name}")
                 return code
+            if self.integer_to_enum(target, node, str(te.value)):
+                return f"(({target.cname}){te.value})"
             if target.is_bool and self.comp.user and te.value in (0, 1):
                 self.comp.dialect(node, f"the integer literal {te.value} where BOOL is expected")
                 return "TRUE" if te.value else "FALSE"
@@ -118,6 +120,8 @@ class ExprCompiler:
             raise self.err(node, f"REAL literal where {target.name} is expected")
         if te.type.is_fb:
             raise self.err(node, f"function block instance used as a {what}")
+        if (te.type.is_int or te.type.is_bit) and self.integer_to_enum(target, node, te.type.name):
+            return f"(({target.cname})({te.code}))"
         if self.comp.user and widens(te.type, target):
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return f"(({target.cname})({te.code}))"
@@ -129,6 +133,14 @@ class ExprCompiler:
             hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
                              f"implicit conversion{hint}")
+
+    def integer_to_enum(self, target, node, what):
+        """User mode: whether an integer may be assigned to the enumeration `target` (TwinCAT's and CODESYS's
+        types without {attribute 'strict'}: the number kept as it is, a value of the type or not)."""
+        if not self.comp.user or not target.is_enum or getattr(target, "strict", False):
+            return False
+        self.comp.dialect(node, f"{what} assigned to the enumeration {target.name}")
+        return True
 
     def default_type(self, te, want):
         if te.type is T.ANY_INT:

@@ -267,11 +267,21 @@ def _global_items(comp, gvl, block, constant):
 
 
 _QUALIFIED_ONLY = re.compile(r"\{\s*attribute\s+'qualified_only'\s*\}", re.I)
+_STRICT = re.compile(r"\{\s*attribute\s+'strict'\s*\}", re.I)
 
 
 def qualified_only(comp, line):
     """Whether TwinCAT's {attribute 'qualified_only'} stands before `line` of the file being compiled, after
     the declaration before it: its names are then written List.Name or Type.Value only, as the IDE demands."""
+    return _attribute_before(comp, line, _QUALIFIED_ONLY)
+
+
+def strict(comp, line):
+    """Whether {attribute 'strict'} stands before the enumeration at `line`: no integer is assigned to it."""
+    return _attribute_before(comp, line, _STRICT)
+
+
+def _attribute_before(comp, line, attribute):
     src = next((s for s in comp.sources if s.path == comp.file), None)
     if src is None or not line:
         return False
@@ -280,7 +290,7 @@ def qualified_only(comp, line):
         text = before[i]
         if re.search(r"\bEND_(?:TYPE|VAR|STRUCT)\b", text, re.I):
             return False
-        if _QUALIFIED_ONLY.search(text):
+        if attribute.search(text):
             return True
     return False
 
