@@ -121,6 +121,7 @@ class Compiler:
         self.file = None
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
+        self.declaring = None  # user mode: the POU whose variable's initial value is being checked
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
@@ -387,24 +388,30 @@ class Compiler:
                 return value
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
 
-    def constant_int(self, node):
+    def constant_int(self, node, earlier=False):
         """User mode: the value of an integer constant expression of literals and named constants (a POU's
-        VAR CONSTANT, a global constant, List.Name) with + - *, or None when `node` is none."""
+        VAR CONSTANT, a global constant, List.Name) with + - *, or None when `node` is none. `earlier`: an
+        initial value, which may name a variable declared before it in its POU too (TwinCAT and CODESYS
+        initialise in the order of declaration: that variable holds its own initial value then)."""
         cls = _cls(node)
         if cls in _INT_LITERALS | _BIT_LITERALS:
             return literals.int_value(node)
         if cls == "ParenthesizedExpression":
-            return self.constant_int(node.expr)
+            return self.constant_int(node.expr, earlier)
         if cls == "UnaryOperation" and str(node.op) == "-":
-            inner = self.constant_int(node.expr)
+            inner = self.constant_int(node.expr, earlier)
             return -inner if inner is not None else None
         if cls == "BinaryOperation" and str(node.op) in ("+", "-", "*"):
-            a, b = self.constant_int(node.left), self.constant_int(node.right)
+            a, b = self.constant_int(node.left, earlier), self.constant_int(node.right, earlier)
             if a is None or b is None:
                 return None
             return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
         var = None
         if cls == "SimpleVariable":
+            declaring = self.declaring if earlier else None
+            var = declaring.var(_name(node.name)) if declaring is not None else None
+            if var is not None and not var.type.is_fb and var.init is not None:
+                return self.constant_int(var.init, earlier)
             pou = getattr(self, "current_pou", None)
             var = pou.var(_name(node.name)) if pou is not None else None
             if var is None and _name(node.name).upper() in self.globals:
@@ -414,7 +421,7 @@ class Compiler:
             var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
         if var is None or not var.constant or var.init is None:
             return None
-        return self.constant_int(var.init)
+        return self.constant_int(var.init, earlier)
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -1058,7 +1065,11 @@ class Compiler:
             if section == "temp":
                 raise self.err(value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
                                            "from zero in every call; assign it in the body")
-            self._init_code(v, "x")
+            self.declaring = pou  # an initial value may name a variable declared before (user mode)
+            try:
+                self._init_code(v, "x")
+            finally:
+                self.declaring = None
         pou.vars.append(v)
         return v
 
@@ -1102,10 +1113,10 @@ class Compiler:
         if not self.user or _cls(node) in _INT_LITERALS | _BIT_LITERALS:
             return None
         if id(node) not in self.constant_inits:
-            value = self.constant_int(node)
+            value = self.constant_int(node, earlier=True)
             if value is None:
                 return None
-            self.dialect(node, "an initial value from named constants")
+            self.dialect(node, "an initial value from named constants or variables declared before")
             self.constant_inits[id(node)] = value
         return self.constant_inits[id(node)]
 
