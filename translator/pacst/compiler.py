@@ -1014,10 +1014,13 @@ class Compiler:
 
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
-        # a METHOD's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its other VAR
-        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or pou.owner is not None
-                                                                 and section == "var"))
+        # a METHOD's or FUNCTION's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its
+        # other VAR
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "var" and (
+            pou.owner is not None or pou.kind == "function")))
         value = user.initial_value(item.init)
+        if vtype.is_fb and pou.kind == "function":
+            self.dialect(item, "an FB instance in a FUNCTION")
         self._check_section(pou, section, constant, vtype, item)
         for dv in item.variables:
             location = None

@@ -13,6 +13,10 @@ _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE",
 _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"], "RIGHT": ["IN", "L"],
                      "MID": ["IN", "L", "P"], "FIND": ["IN1", "IN2"], "INSERT": ["IN1", "IN2", "P"],
                      "DELETE": ["IN", "L", "P"], "REPLACE": ["IN1", "IN2", "L", "P"]}
+# Their input names in TwinCAT's Tc2_Standard and CODESYS's Standard, accepted too.
+_STRING_PINS = {"LEN": ["STR"], "CONCAT": ["STR1", "STR2"], "LEFT": ["STR", "SIZE"], "RIGHT": ["STR", "SIZE"],
+                "MID": ["STR", "LEN", "POS"], "FIND": ["STR1", "STR2"], "INSERT": ["STR1", "STR2", "POS"],
+                "DELETE": ["STR", "LEN", "POS"], "REPLACE": ["STR1", "STR2", "L", "P"]}
 # The numeric standard functions of user programs and their C functions (the float ones take an f).
 _MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin", "COS": "cos", "TAN": "tan",
          "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXPT": "pow", "TRUNC": "", "TRUNC_INT": "", "MOVE": ""}
@@ -631,7 +635,8 @@ class ExprCompiler:
         names = _STRING_FUNCTIONS[fn]
         if fn == "CONCAT" and len(node.parameters) > 2 and all(p.name is None for p in node.parameters):
             names = [f"IN{i + 1}" for i in range(len(node.parameters))]
-        args = self._positional(node, len(names), names)
+        vendor = _STRING_PINS[fn] if len(_STRING_PINS[fn]) == len(names) else None  # not CONCAT of 3 or more
+        args = self._positional(node, len(names), names, vendor)
         codes = []
         for name, arg in zip(names, args):
             if name in ("L", "P"):
@@ -649,8 +654,9 @@ class ExprCompiler:
             return TE(T.STRING, code)
         return TE(T.INT if fn in ("LEN", "FIND") else T.STRING, f"__pacst_str_{fn.lower()}({', '.join(codes)})")
 
-    def _positional(self, node, count, names):
-        """Arguments of a standard function: all positional, or all formal with the IEC pin names."""
+    def _positional(self, node, count, names, vendor_names=None):
+        """Arguments of a standard function: all positional, or all formal with the IEC pin names (or, in
+        user mode, with `vendor_names`, TwinCAT's and CODESYS's)."""
         params = node.parameters
         if len(params) != count:
             raise self.err(node, f"{_name(node.name.name).upper()} takes {count} argument(s), not {len(params)}")
@@ -661,8 +667,12 @@ class ExprCompiler:
             if _cls(p) != "InputParameterAssignment" or p.name is None:
                 raise self.err(p, "mix of formal and positional arguments")
             by_name[_name(p.name.name).upper()] = p.value
+        if vendor_names and self.comp.user and set(by_name) == set(vendor_names):
+            self.comp.dialect(node, f"the input names {', '.join(vendor_names)} of Tc2_Standard and Standard")
+            return [by_name[n] for n in vendor_names]
         if set(by_name) != set(names):
-            raise self.err(node, f"the inputs are {', '.join(names)}")
+            also = f" (or {', '.join(vendor_names)})" if vendor_names and self.comp.user else ""
+            raise self.err(node, f"the inputs are {', '.join(names)}{also}")
         return [by_name[n] for n in names]
 
     def _conversion(self, node, src, dst):

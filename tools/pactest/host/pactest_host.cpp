@@ -48,6 +48,7 @@ struct TestRecord {
     nanoseconds now{0};  // the simulated clock in the running scan (F_GetSystemTime)
     std::vector<std::string> tcunitTests;
     std::vector<std::string> tcunitFinished;
+    std::vector<std::string> tcunitOrdered;  // the TEST_ORDERED('name')s, in the order first called
     std::string tcunitCurrent;
     std::int64_t scan = 0;
     nanoseconds time{0};
@@ -295,6 +296,19 @@ void RecordTest(const std::string& name) {
     if (!running) return;
     running->tcunitCurrent = name;
     if (!Contains(running->tcunitTests, name)) running->tcunitTests.push_back(name);
+}
+
+bool RecordTestOrdered(const std::string& name) {
+    if (!running) return false;
+    if (!Contains(running->tcunitTests, name)) running->tcunitTests.push_back(name);  // the suite waits for it
+    if (!Contains(running->tcunitOrdered, name)) running->tcunitOrdered.push_back(name);
+    for (const std::string& before : running->tcunitOrdered) {
+        if (before == name) break;
+        if (!Contains(running->tcunitFinished, before)) return false;
+    }
+    if (Contains(running->tcunitFinished, name)) return false;
+    running->tcunitCurrent = name;
+    return true;
 }
 
 void RecordTestFinished(const std::string& name) {

@@ -134,6 +134,11 @@ BOOL TEST(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
     return TRUE;
 }
 
+BOOL TEST_ORDERED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
+    Ok(__ENO);
+    return pactest::RecordTestOrdered(Text(TESTNAME)) ? TRUE : FALSE;
+}
+
 BOOL TEST_FINISHED_NAMED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
     Ok(__ENO);
     pactest::RecordTestFinished(Text(TESTNAME));

@@ -171,7 +171,7 @@ class SortingStationTest(unittest.TestCase):
 class TcUnitTest(unittest.TestCase):
     """tools/pactest/tests/tcunit: TcUnit suites as TcUnit's users write them (EXTENDS TcUnit.FB_TestSuite, a test
     per METHOD between TEST('...') and TEST_FINISHED(), the generic AssertEquals, FB instances in a METHOD's VAR,
-    VAR_INST kept over cycles, PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures
+    VAR_INST kept over cycles, TEST_ORDERED, PRG_TEST calling TcUnit.RUN()) run unchanged: each suite is one test, its failures
     name the TcUnit test."""
 
     @classmethod
@@ -182,12 +182,16 @@ class TcUnitTest(unittest.TestCase):
 
     def test_each_suite_is_a_test(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
-        self.assertIn("2 tests: 1 passed, 0 failed, 1 failed as expected", self.result.stdout)
-        check_junit(self, os.path.join(self.out, "junit.xml"), tests=2, failed=0, skipped=1)
+        self.assertIn("3 tests: 2 passed, 0 failed, 1 failed as expected", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=3, failed=0, skipped=1)
 
     def test_a_finished_test_counts_no_more_asserts_and_the_suite_ends_with_its_last_test(self):
         # 2 + 2 in the one-scan tests; 10 scans of the third, whose assert after TEST_FINISHED_NAMED is not counted
         self.assertRegex(self.result.stdout, r"ok  FB_CounterSuite  \(14 asserts")
+
+    def test_an_ordered_test_runs_after_the_one_ordered_before_it(self):
+        # the first test's assert in each of its three cycles, then the second's once, in the first's last cycle
+        self.assertRegex(self.result.stdout, r"ok  FB_OrderedSuite  \(4 asserts")
 
     def test_a_failure_names_the_tcunit_test_and_its_line(self):
         found = failures(self.result.stdout)
