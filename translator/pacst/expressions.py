@@ -464,7 +464,8 @@ class ExprCompiler:
         named = [t for t in types if not t.name.startswith("ANY")]
         if not named:
             raise self.err(node, "AssertEquals needs Expected := and Actual := with a typed variable")
-        name = "STRING" if named[0].is_string else named[0].name
+        # an enumeration by its number (TcUnit compares it as its base type)
+        name = "STRING" if named[0].is_string else "DINT" if named[0].is_enum else named[0].name
         if f"ASSERTEQUALS_{name}" not in self.comp.pous:
             have = sorted(n[len("ASSERTEQUALS_"):] for n in self.comp.pous if n.startswith("ASSERTEQUALS_"))
             raise self.err(node, f"AssertEquals on {named[0].name}: pac-test asserts {', '.join(have)}; "

@@ -99,20 +99,40 @@ def at_source(err):
     if origin is None:
         return err
     xml, obj = origin
-    first = obj.declaration.count("\n") + 1  # the body's first line in the ST file
-    col = err.col
-    if obj.body is not None and obj.body_xml_line and first <= err.line < first + obj.body.rstrip().count("\n") + 1:
-        line = obj.body_xml_line + err.line - first
-        if err.line == first:  # the body's first line follows <xhtml ...> on its XML line
-            try:
-                with open(xml, encoding="utf-8", errors="replace") as f:
-                    text = f.read().splitlines()[line - 1]
-                col += text.index(">", text.index("<xhtml")) + 1
-            except (OSError, IndexError, ValueError):
-                pass
-    else:
-        line = obj.xml_line or 1
+    line, col = xml_position(xml, obj, err.line, err.col)
     return StError(xml, line, col, f"{err.message} (in {obj.name})")
+
+
+def xml_position(xml, obj, st_line, col=1):
+    """(line, column) in the XML file `xml` of line `st_line` of the ST file written from its object `obj`: the
+    body's line, or the object's element for its declaration and members."""
+    first = obj.declaration.count("\n") + 1  # the body's first line in the ST file
+    in_body = obj.body is not None and first <= st_line < first + obj.body.rstrip().count("\n") + 1
+    if not (in_body and obj.body_xml_line):
+        return obj.xml_line or 1, col
+    line = obj.body_xml_line + st_line - first
+    if st_line == first:  # the body's first line follows <xhtml ...> on its XML line
+        try:
+            with open(xml, encoding="utf-8", errors="replace") as f:
+                text = f.read().splitlines()[line - 1]
+            col += text.index(">", text.index("<xhtml")) + 1
+        except (OSError, IndexError, ValueError):
+            pass
+    return line, col
+
+
+def origins(xml_paths):
+    """{name of the ST file extract() writes: (XML path, object)} of the PLCopen projects `xml_paths`, for
+    pointing at the XML what names an extracted file (a test's failure); unreadable projects left out."""
+    found = {}
+    for path in xml_paths:
+        try:
+            with open(path, "rb") as f:
+                objects = read_plcopen(f.read())
+        except (OSError, etree.XMLSyntaxError, PlcopenReadError):
+            continue
+        found.update((obj.name + ".st", (path, obj)) for obj in objects)
+    return found
 
 
 def extract(path, out_dir):

@@ -62,7 +62,32 @@ def _caller_location(failure):
     return (path, int(line)) if line.isdigit() and path and path != "??" else None
 
 
-def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
+class _InXml:
+    """Points what names an ST file pac-test extracted from a PLCopen XML source (OUT/plcopen/Name.st) at the
+    XML file and the line of its object there, as CODESYS shows it (pacst's refusals are given so too)."""
+
+    def __init__(self, sources, out):
+        self.extracted = os.path.join(os.path.abspath(out), "plcopen")
+        xml = [s for s in sources if s.lower().endswith(".xml")]
+        self.origins = {}
+        if xml:
+            sys.path.insert(0, os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator")))
+            from pacst import plcopen_read  # noqa: E402 (the checkout's translator, as pac-test runs it)
+            self.position = plcopen_read.xml_position
+            self.origins = plcopen_read.origins(xml)
+
+    def __call__(self, path, line):
+        """(file, line) to print for `line` of `path`."""
+        if not path or os.path.dirname(os.path.abspath(path)) != self.extracted:
+            return path, line
+        origin = self.origins.get(os.path.basename(path))
+        if origin is None:
+            return path, line
+        xml, obj = origin
+        return xml, self.position(xml, obj, int(line))[0]
+
+
+def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False, in_xml=None):
     name = fb["name"]
     result = Result(name, name.upper() in wiring.expected_to_fail)
     scenario = os.path.join(out, "scenarios", name + ".json")
@@ -92,6 +117,8 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
         caller = _caller_location(failure)
         if caller:
             failure["file"], failure["line"] = caller
+        if in_xml is not None:
+            failure["file"], failure["line"] = in_xml(failure["file"], failure["line"])
         key = (failure["file"], failure["line"])
         if key in seen:
             seen[key][1] += 1
@@ -102,7 +129,10 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False):
         result.lines.append(f"{_where(failure['file'])}:{failure['line']}: test {name}, scan {failure['scan']}, "
                             f"t={failure['time_ms']:g} ms: {failure['message']}{again}")
     if data["timed_out"]:
-        where = f"{_where(fb.get('file') or '?')}:{fb.get('line') or 0}"
+        file, line = fb.get("file"), fb.get("line") or 0
+        if in_xml is not None:
+            file, line = in_xml(file, line)
+        where = f"{_where(file or '?')}:{line}"
         result.lines.append(f"{where}: test {name}, scan {data['scans']}, "
                             f"t={data['time_ms']:g} ms: the time limit of {time_limit_ms} ms ran out before "
                             "TEST_FINISHED()")
@@ -179,9 +209,10 @@ def main(argv=None):
     if not args.no_coverage:
         coverage.reset(host_build.obj)
     vcd_dir = os.path.join(out, "vcd")
+    in_xml = _InXml(wiring.sources, out)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda fb: _run_one(host, wiring, fb, out, vcd_dir, wiring.time_limit_ms,
-                                                    args.vcd_all), selected))
+                                                    args.vcd_all, in_xml), selected))
     ran = time.monotonic()
     refused = [r for r in results if r.host_exit == 2]
     if refused:  # the scenario loader refused the wiring file's timing, controller or faults

@@ -637,7 +637,7 @@ class ModuleImageTest(unittest.TestCase):
 class PlcopenRoundTripTest(unittest.TestCase):
     """A project exported as PLCopen XML by the project's own export (tools/pacexport), as CODESYS exports
     one, and read back by pac-test: the same tests end the same way, with the same failures in the same
-    scans (at the lines of the ST files pac-test extracts from the XML)."""
+    scans, named at the XML file's lines of the asserts."""
 
     def round_trip(self, name, folder, sources, expected, coverage=False):
         """Exports `sources` ({file name: ST text}), runs the wiring file of `folder` on the XML and on its
@@ -676,6 +676,12 @@ class PlcopenRoundTripTest(unittest.TestCase):
         self.assertEqual(sorted(found), expected[0], from_source.stdout)
         self.assertEqual(sum(len(f) for _, _, f in found.values()), expected[1], from_source.stdout)
         self.assertEqual(outcomes(from_xml.stdout), found)
+        for failure in failures(from_xml.stdout):  # at the XML file's line of the assert, as CODESYS shows it
+            self.assertEqual(failure["file"], wiring["sources"][0], from_xml.stdout)
+            with open(os.path.join(out, failure["file"]), encoding="utf-8") as f:
+                text = f.read().splitlines()[int(failure["line"]) - 1]
+            said = failure["msg"].split(": ")[0]  # the assert's Message, before what the assert adds
+            self.assertTrue(f"'{said}'" in text or f'name="{failure["test"]}"' in text, (failure, text))
 
     def test_the_example_from_its_plcopen_export(self):
         sys.path.insert(0, os.path.join(ROOT, "translator"))
