@@ -788,8 +788,19 @@ class ExprCompiler:
         given = {}
         positional = [p for p in node.parameters if _cls(p) == "InputParameterAssignment" and p.name is None]
         if positional and len(positional) != len(node.parameters):
-            raise self.err(node, "mix of formal and positional arguments")
-        if positional:
+            # user mode: TwinCAT's and CODESYS's formal arguments followed by positional ones, which take the
+            # inputs not given yet in the order of declaration (AssertEquals(Expected := a, Actual := b, 'text'))
+            formal = node.parameters[:len(node.parameters) - len(positional)]
+            if not self.comp.user or any(_cls(p) == "InputParameterAssignment" and p.name is None for p in formal):
+                raise self.err(node, "mix of formal and positional arguments")
+            for p in formal:
+                given[self.formal_pin(p, pou, given).cname] = p.value
+            rest = [v for v in inputs if v.cname not in given]
+            if len(positional) > len(rest):
+                raise self.err(positional[len(rest)], f"{pou.name} has no input left for this argument")
+            self.comp.dialect(positional[0], "a positional argument after formal ones")
+            given.update((v.cname, p.value) for v, p in zip(rest, positional))
+        elif positional:
             if len(positional) != len(inputs) or any(v.section == "inout" for v in interface):
                 raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
             for v, p in zip(inputs, positional):

@@ -71,6 +71,8 @@ PACTEST_EQUALS(ASSERTEQUALS_BOOL, BOOL, "%s", [](BOOL b) { return b ? "TRUE" : "
 PACTEST_EQUALS(ASSERTEQUALS_INT, INT, "%d", static_cast<int>)
 PACTEST_EQUALS(ASSERTEQUALS_DINT, DINT, "%ld", static_cast<long>)
 PACTEST_EQUALS(ASSERTEQUALS_UINT, UINT, "%u", static_cast<unsigned>)
+PACTEST_EQUALS(ASSERTEQUALS_SINT, SINT, "%d", static_cast<int>)
+PACTEST_EQUALS(ASSERTEQUALS_USINT, USINT, "%u", static_cast<unsigned>)
 PACTEST_EQUALS(ASSERTEQUALS_UDINT, UDINT, "%lu", static_cast<unsigned long>)
 PACTEST_EQUALS(ASSERTEQUALS_BYTE, BYTE, "16#%02X", static_cast<unsigned>)
 PACTEST_EQUALS(ASSERTEQUALS_WORD, WORD, "16#%04X", static_cast<unsigned>)
