@@ -677,6 +677,12 @@ class ExprCompiler:
         return [by_name[n] for n in names]
 
     def _conversion(self, node, src, dst):
+        if self.comp.user and "BIT" in (src, dst):  # BIT is a BOOL here (BIT_TO_BOOL, BOOL_TO_BIT, BIT_TO_INT)
+            self.comp.dialect(node, f"{src}_TO_{dst}")
+            src, dst = ("BOOL" if src == "BIT" else src), ("BOOL" if dst == "BIT" else dst)
+            if src == dst:
+                (arg,) = self._positional(node, 1, ["IN"])
+                return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
         if self.comp.user and "STRING" in (src, dst):
             return self._string_conversion(node, src, dst)
         if self.comp.user and ("TIME" in (src, dst) or {src, dst} & set(T.USER_ELEMENTARY)):
