@@ -450,6 +450,12 @@ class Compiler:
             if self.user and spec.indirection is not None and spec.init_parameters is None:
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
+                length = [getattr(p, "value", p) for p in spec.init_parameters]
+                if _name(spec.type).upper() == "STRING" and len(length) == 1 and _cls(length[0]) == "Integer":
+                    # a FUNCTION's or METHOD's result STRING(80), which blark reads as a call
+                    user.string_capacity(self, spec, literals.int_value(length[0]))
+                    self.dialect(spec, "a result of type STRING(n)")
+                    return T.STRING
                 # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone
                 if any(p is not None for p in spec.init_parameters):
                     raise self.err(spec, f"FB_init arguments of '{_name(spec.type)}(...)': pac-test does not run "

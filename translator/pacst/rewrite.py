@@ -5,8 +5,9 @@ its column, so that errors, `#line` directives and coverage still name the user'
 - `PROGRAM INTERNAL MAIN` (an access specifier of a PROGRAM): the specifier blanked;
 - `FUNCTION_BLOCK FB_Cnc IMPLEMENTS I_Hmi;` (a `;` after the heading): the `;` blanked;
 - `List : FB_List := ();` (an FB instance with an empty initial value): `:= ()` blanked;
-- `ARRAY [1..N] OF UINT(1..M)` (an array of a subrange, whose bounds blark's grammar does not read there):
-  the range blanked, as pacst does not check a subrange's range anywhere;
+- `ARRAY [1..N] OF UINT(1..M)`, `METHOD GetOrder : UINT(0..M)` (a subrange as an array's element or a
+  result, whose bounds blark's grammar does not read there): the range blanked, as pacst does not check a
+  subrange's range anywhere;
 - `RETURN(Done);` (CODESYS's conditional RETURN): `IF    (Done) THEN RETURN; END_IF;`, `RETURN` written over
   by `IF` and blanks, the rest of the statement after the `)`; `RETURN(Init := T <= 0);` (an assignment as its
   condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`.
@@ -48,8 +49,8 @@ def user_text(text, path):
                 and tokens[k + 2].text == ")" and tokens[k + 3].text == ";":
             uses.append((tok.line, tok.col, "an empty initial value ':= ()'"))
             edits.append((tok.start, tokens[k + 2].end, ""))
-        elif up == "OF" and nxt is not None and nxt.kind == "ident" and nxt.upper in _INTEGERS \
-                and k + 2 < len(tokens) and tokens[k + 2].text == "(":
+        elif (up == "OF" or up == ":" and _in_heading(tokens, k)) and nxt is not None and nxt.kind == "ident" \
+                and nxt.upper in _INTEGERS and k + 2 < len(tokens) and tokens[k + 2].text == "(":
             close = _closing(tokens, k + 2)
             if close is not None and any(t.text == ".." for t in tokens[k + 3:close]):
                 uses.append((nxt.line, nxt.col, "a subrange type"))
@@ -82,6 +83,14 @@ _INTEGERS = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "
 # keywords that end a FUNCTION_BLOCK's heading: a `;` after one of them is no heading's
 _KEYWORDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT", "VAR_EXTERNAL",
              "END_FUNCTION_BLOCK", "RETURN", "IF", "CASE", "FOR", "WHILE", "REPEAT", "EXIT", "CONTINUE"}
+
+
+def _in_heading(tokens, k):
+    """Whether tokens[k] stands in the heading of a FUNCTION, METHOD or PROPERTY (on its line, after it)."""
+    j = k
+    while j > 0 and tokens[j - 1].line == tokens[k].line:
+        j -= 1
+    return tokens[j].kind == "ident" and tokens[j].upper in ("FUNCTION", "METHOD", "PROPERTY")
 
 
 def _assigned(tokens, k, close):

@@ -115,7 +115,11 @@ def string_length(comp, spec):
         expr = expr.expression
     if _cls(expr) != "Integer" or expr.type_name is not None:
         raise comp.err(spec, "the length of a STRING is an integer literal")
-    n = int(str(expr.value).replace("_", ""))
+    return string_capacity(comp, spec, int(str(expr.value).replace("_", "")))
+
+
+def string_capacity(comp, spec, n):
+    """`n`, when a STRING(n) holds it; else the refusal at `spec`."""
     if not 1 <= n <= STRING_CAPACITY:
         raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters; "
                              f"declare STRING({STRING_CAPACITY}) or shorter where the program's texts fit (a "
