@@ -456,12 +456,14 @@ class Compiler:
                     user.string_capacity(self, spec, literals.int_value(length[0]))
                     self.dialect(spec, "a result of type STRING(n)")
                     return T.STRING
-                # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone
-                if any(p is not None for p in spec.init_parameters):
-                    raise self.err(spec, f"FB_init arguments of '{_name(spec.type)}(...)': pac-test does not run "
-                                         "FB_init; declare the instance without them and set what they set in code")
-                self.dialect(spec, "an FB instance declared with ()")
-                return self._spec_type(spec.type, allow_fb)
+                # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone; `List : FB_List(10);`
+                # gives them to the FB's METHOD FB_init (_fb_init)
+                t = self._spec_type(spec.type, allow_fb)
+                if any(p is not None for p in spec.init_parameters) and self._fb_init(t) is None:
+                    raise self.err(spec, f"FB_init arguments of '{_name(spec.type)}(...)': {t.name} has no METHOD "
+                                         "FB_init to take them; declare the instance without them")
+                self.dialect(spec, "FB_init arguments" if self._fb_init(t) else "an FB instance declared with ()")
+                return t
             if spec.indirection is not None or spec.init_parameters is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._spec_type(spec.type, allow_fb)
@@ -1025,6 +1027,8 @@ class Compiler:
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "var" and (
             pou.owner is not None or pou.kind == "function")))
         value = user.initial_value(item.init)
+        spec = getattr(item.init, "spec", None)
+        fb_init_args = getattr(spec, "init_parameters", None) if _cls(spec) == "IndirectSimpleSpecification" else None
         if vtype.is_fb and pou.kind == "function":
             self.dialect(item, "an FB instance in a FUNCTION")
         self._check_section(pou, section, constant, vtype, item)
@@ -1042,6 +1046,13 @@ class Compiler:
             v.location = location
             v.strlen = strlen
             user.check_string_init(self, v)
+            v.fb_init_args = fb_init_args
+            if vtype.is_fb and self._fb_init(vtype) is not None:
+                self.declaring = pou  # checks the FB_init arguments now, as an initial value
+                try:
+                    self._fb_init_call(v, "x")
+                finally:
+                    self.declaring = None
 
     def _declare_var(self, pou, section, constant, vtype, value, dv, may_be_located=False):
         """Check and add one variable of a POU."""
@@ -1168,11 +1179,42 @@ class Compiler:
             return "FALSE"
         return f"(({t.cname})0)"
 
+    @staticmethod
+    def _fb_init(t):
+        """User mode: the METHOD FB_init of the FUNCTION_BLOCK type `t` (its base's too), or None."""
+        pou = getattr(t, "pou", None) if t.is_fb else None
+        return pou.methods.get("FB_INIT") if pou is not None else None
+
+    def _fb_init_call(self, var, target):
+        """User mode: the call of the instance's METHOD FB_init, as TwinCAT and CODESYS make it when the
+        instance is initialised: bInitRetains and bInCopyCode FALSE, then the declaration's arguments
+        (`List : FB_List(10);`), constants and literals, in the order of the METHOD's other inputs."""
+        method = self._fb_init(var.type)
+        inputs = [v for v in method.vars if v.section == "input"]
+        extra = inputs[2:] if len(inputs) >= 2 and all(v.type.is_bool for v in inputs[:2]) else None
+        if extra is None or any(v.section in ("output", "inout") for v in method.vars):
+            raise self.err(var.node, f"the METHOD FB_init of {var.type.name} is not TwinCAT's: it begins with the "
+                                     "inputs bInitRetains and bInCopyCode (BOOL) and has no outputs")
+        given = [getattr(p, "value", p) for p in getattr(var, "fb_init_args", None) or [] if p is not None]
+        if len(given) > len(extra):
+            raise self.err(var.node, f"{len(given)} FB_init arguments for the {len(extra)} inputs of "
+                                     f"{var.type.name}.FB_init after bInitRetains and bInCopyCode")
+        args = ["FALSE", "FALSE"]
+        for v, value in zip(extra, given + [None] * (len(extra) - len(given))):
+            if value is None:
+                args.append(self.default_c(v.type) if v.init is None else
+                            ExprCompiler(self, None).coerce(self.literal_te(v.init, v.type), v.type, v.init))
+            else:
+                args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
+        return f"{method.cfunc}(&{target}, TRUE, NULL, {', '.join(args)});"
+
     def _init_code(self, var, target):
         """C statements that give `target` (an lvalue of var's type) var's initial value."""
         t = var.type
         if t.is_fb:
             lines = [f"{t.cname}_init__(&{target}, retain);"]
+            if self.user and self._fb_init(t) is not None:
+                lines.append(self._fb_init_call(var, target))
             if var.init is not None:  # user mode: Delay : TON := (PT := T#1S), the inputs' initial values
                 lines += self._fb_inputs_init(t, var.init, target)
             return lines
