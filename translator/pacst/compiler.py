@@ -130,8 +130,9 @@ class Compiler:
         self.dialect_at(self.file, line, col, what)
 
     def dialect_at(self, file, line, col, what):
-        self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does not "
-                                                          "compile (docs/user_dialect.md); run this program on pacst's C"))
+        self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does "
+                                                          "not compile (docs/user_dialect.md); run this program on "
+                                                          "pacst's C"))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
@@ -1204,6 +1205,11 @@ class Compiler:
             if value is None:
                 args.append(self.default_c(v.type) if v.init is None else
                             ExprCompiler(self, None).coerce(self.literal_te(v.init, v.type), v.type, v.init))
+            elif self.initial_constant(value) is None and _cls(value) not in _INT_LITERALS | _BIT_LITERALS | {
+                    "Real", "Boolean", "Duration", "String"}:
+                raise self.err(value, f"FB_init argument '{v.name}' of {var.type.name}: pacst passes literals and "
+                                      "constants only: declare the instance without it and set in code what "
+                                      "FB_init sets from it")
             else:
                 args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
         return f"{method.cfunc}(&{target}, TRUE, NULL, {', '.join(args)});"
