@@ -1,6 +1,9 @@
 # pac_python_venv(<venv dir> REQUIREMENTS <file> [NO_DEPS <file>]): creates a Python venv and pip-installs
 # the pinned packages of REQUIREMENTS, then those of NO_DEPS without their dependencies. It runs at
 # configure time, once for each content of the two files.
+# Only the first venv of a configure run gets a pip of its own (ensurepip: about 3.5 s of CPU each, on the
+# configure's serial path); the others are created without one and filled by that first venv's pip through
+# `pip --python` (pip 22.3 or newer). A pip too old for that installs its own into the venv, as before.
 include_guard(GLOBAL)
 
 function(pac_python_venv venv)
@@ -11,16 +14,34 @@ function(pac_python_venv venv)
     string(SHA256 key "${key}${no_deps_hash}")
   endif()
   set(stamp "${venv}/.requirements-${key}")
+  get_property(pip_host GLOBAL PROPERTY PAC_PIP_HOST)
   if(EXISTS "${stamp}")
+    if(NOT pip_host AND EXISTS "${venv}/bin/pip")
+      set_property(GLOBAL PROPERTY PAC_PIP_HOST "${venv}/bin/python")
+    endif()
     return()
   endif()
   find_package(Python3 3.9 REQUIRED COMPONENTS Interpreter)
   message(STATUS "creating ${venv} with ${ARG_REQUIREMENTS} ${ARG_NO_DEPS}")
-  execute_process(COMMAND "${Python3_EXECUTABLE}" -m venv "${venv}" RESULT_VARIABLE rc)
+  set(own_pip "")
+  if(pip_host)
+    set(own_pip --without-pip)
+  endif()
+  execute_process(COMMAND "${Python3_EXECUTABLE}" -m venv ${own_pip} "${venv}" RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "could not create the venv ${venv} (on Debian: apt-get install python3-venv)")
   endif()
   set(pip "${venv}/bin/python" -m pip install --quiet --disable-pip-version-check)
+  if(pip_host)
+    set(pip "${pip_host}" -m pip --python "${venv}/bin/python" install --quiet --disable-pip-version-check)
+    execute_process(COMMAND ${pip} --help OUTPUT_QUIET ERROR_QUIET RESULT_VARIABLE rc)
+    if(NOT rc EQUAL 0)  # a pip without --python
+      execute_process(COMMAND "${venv}/bin/python" -m ensurepip --default-pip OUTPUT_QUIET RESULT_VARIABLE rc)
+      set(pip "${venv}/bin/python" -m pip install --quiet --disable-pip-version-check)
+    endif()
+  else()
+    set_property(GLOBAL PROPERTY PAC_PIP_HOST "${venv}/bin/python")
+  endif()
   execute_process(COMMAND ${pip} -r "${ARG_REQUIREMENTS}" RESULT_VARIABLE rc)
   if(rc EQUAL 0 AND ARG_NO_DEPS)
     execute_process(COMMAND ${pip} --no-deps -r "${ARG_NO_DEPS}" RESULT_VARIABLE rc)

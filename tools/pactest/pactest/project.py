@@ -14,9 +14,9 @@ TCUNIT = os.path.join(ROOT, "tools", "pactest", "tcunit")
 
 # The static libraries the host links, in link order, and where a build tree keeps them (not below:
 # build/ holds the other presets' trees, build/debug...).
-LIBRARIES = ["pac_scenario_lib", "pac_names", "pac_rig", "pac_st", "pac_sim", "pac_runtime"]
-LIBRARY_DIRS = {"pac_scenario_lib": "scenario", "pac_names": "runtime/names", "pac_rig": "rig", "pac_st": "st",
-                "pac_sim": "sim", "pac_runtime": "runtime"}
+LIBRARIES = ["pac_scenario_lib", "pac_scenario_loader", "pac_names", "pac_rig", "pac_st", "pac_sim", "pac_runtime"]
+LIBRARY_DIRS = {"pac_scenario_lib": "scenario", "pac_scenario_loader": "scenario", "pac_names": "runtime/names",
+                "pac_rig": "rig", "pac_st": "st", "pac_sim": "sim", "pac_runtime": "runtime"}
 INCLUDES = ["runtime/include", "sim/include", "rig/include", "runtime/names/include", "scenario",
             "translator/pacst/include"]
 
