@@ -1,12 +1,14 @@
 /* Bounded model-checking harness of FB_PAC_Rs232Cmd on its two ring buffers (manual 3.3, 3.3.1;
- * docs/fb/FB_PAC_Rs232Cmd.md), on the C that pacst generates from st/, for K scans (docs/verification.md).
- * Free in every scan: each byte the controller sends (any value, 0..BYTES_PER_SCAN of them, at most
- * REPLY_BYTES after each request), the free space of TxBuffer (the driver sent any number of bytes, or none),
- * both buffers' Blocked, whether the FB is called (a CASE step or an IF branch leaves it out: the driver still
- * moves bytes, the FB's pins stay), a PLC restart (the FB and its rings back to their cold-start values), and
- * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
- * QuietTime (1..TMAX ms) and Retries (0 or 1); the command (Code, Param, Data) a constant of the run. Properties
- * "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
+ * docs/fb/FB_PAC_Rs232Cmd.md), on the C that pacst generates from st/, for K scans (docs/verification.md),
+ * against a protocol-faithful controller that keeps a ledger of the frames it executed and what it answered.
+ * Free in every scan: the free space of TxBuffer (the driver sent any number of bytes, or none), both buffers'
+ * Blocked, whether the request written in the scan reaches the controller or the line loses it, how many of the
+ * controller's bytes on their way reach RxBuffer (0..BYTES_PER_SCAN) and whether the line drops the rest,
+ * whether the FB is called (a CASE step or an IF branch leaves it out: the driver still moves bytes, the FB's
+ * pins stay), a PLC restart (the FB and its rings back to their cold-start values; the controller runs on), and
+ * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
+ * Retries (0 or 1) and the controller's reading of the CHECK; the command (Code, Param, Data) a constant of the
+ * run. Properties "P<n>"/"R<n>"/"L<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
 #ifndef CBMC__K
@@ -21,11 +23,8 @@
 #ifndef CBMC__SKIPS /* 0: the FB called in every scan (CI: at K = 2 a scan left out leaves one call, at a high cost) */
 #define CBMC__SKIPS 1
 #endif
-#ifndef CBMC__BYTES_PER_SCAN /* bytes the controller's side puts into RxBuffer per scan at most */
-#define CBMC__BYTES_PER_SCAN 8
-#endif
-#ifndef CBMC__REPLY_BYTES /* bytes it sends after each request at most: an acknowledgement of up to 12 text bytes */
-#define CBMC__REPLY_BYTES 16
+#ifndef CBMC__BYTES_PER_SCAN /* bytes of the controller's that reach RxBuffer per scan at most: a whole reply */
+#define CBMC__BYTES_PER_SCAN 18
 #endif
 
 /* The command, one per run: a constant, so that its text (the REAL's decimals above all) is computed once
@@ -41,12 +40,149 @@
 #define CBMC__CMD_DATA 0x41480000u /* 12.5 */
 #endif
 
+/* The frames' texts as manual 3.3 composes them, written out here, independent of the FB's text functions: the
+ * command's, also with PAR_1 in the leading-zero form the FB uses where a text's XOR would make its CHECK 0 or 3
+ * (the same number: the controller executes the same command), and the probe's (the read 190B that goes first
+ * in AUTO until a rule is confirmed, docs/fb/FB_PAC_Rs232Cmd.md). With another CBMC__CMD_CODE, define these. */
+#ifndef CBMC__CMD_TEXT
+#define CBMC__CMD_TEXT "0A87;1;1;12.5"
+#define CBMC__CMD_TEXT_ZERO "0A87;01;1;12.5"
+#define CBMC__CMD_LONG 1 /* acknowledged with BE 0 while it runs (a move), BE 1 on a later poll */
+#endif
+#define PROBE_TEXT "190B;0;0;0"
+#ifndef CBMC__NOISE /* 1: the line may spoil one byte of the controller's per scan (any value) */
+#define CBMC__NOISE 0
+#endif
+
 #define RING 300 /* T_PAC_ComBuffer: 300 bytes in Buffer[0..299] */
+
+enum { REQ_POLL = 1, REQ_COMMAND, REQ_PROBE, REQ_OTHER }; /* a request as the controller reads it */
+enum { TOOK_NOTHING, TOOK_COMMAND, TOOK_PROBE, TOOK_POLL, TOOK_REFUSED, TOOK_CHECK_16, TOOK_IGNORED, TOOK_LOST };
+
+#define OUT_MAX 40   /* the controller's bytes on their way: two replies (more are lost on the line) */
+#define LEDGER CBMC__K /* one request per scan at most (R1, R2) */
+
+/* What the controller executed: which text, in which scan, and what it answered (STATUS, Q_PAR). */
+typedef struct {
+    int kind, scan, status, data;
+} Entry;
+
+/* The controller (manual 3.3, 3.3.1): it executes a frame whose CHECK it accepts and answers it with
+ * SOH STX QUIT;BE;STATUS;ERROR;TYP_QUIT;Q_PAR ETX CHECK EOT; an EOT poll gets its last reply again, with BE 1
+ * once the command ended (3.3.1: "another acknowledgement is requested"); before any reply, a poll gets none.
+ * Its reading of the CHECK is free per run (the manual's examples agree with no single rule,
+ * docs/open_points.md): the XOR of the text with or without ETX, "0" taken as not checked or not, a wrong CHECK
+ * answered with QUIT 16 (6.5) or ignored, and the XOR of its own replies with or without ETX. A frame it
+ * accepts it may refuse with a command error (20, 6.5: not carried out); the probe, a read, it always carries
+ * out. STATUS and Q_PAR are free digits of each execution (the probe's Q_PAR is STATUS, as 190B reads it): two
+ * executions answer differently. */
+typedef struct {
+    BOOL checkEtx, zeroUnchecked, ignoreBad, replyEtx;
+    BOOL answered, running;
+    int quit, be, status, data, entry; /* the last reply; entry: the ledger entry it answers, -1 none */
+    unsigned char out[OUT_MAX];
+    int outLen, outPos;
+    Entry ledger[LEDGER];
+    int entries;
+} Controller;
+
+static int TextXor(const char *text, int length) {
+    int x = 0;
+    for (int i = 0; i < length; ++i) x ^= (unsigned char)text[i];
+    return x;
+}
+
+/* The controller's reply on the line: its last reply, as a frame, after the bytes still on their way. */
+static void Answer(Controller *c) {
+    unsigned char text[12];
+    int length = 0;
+    if (c->quit >= 10) text[length++] = (unsigned char)('0' + c->quit / 10);
+    text[length++] = (unsigned char)('0' + c->quit % 10);
+    text[length++] = ';';
+    text[length++] = (unsigned char)('0' + c->be);
+    text[length++] = ';';
+    text[length++] = (unsigned char)('0' + c->status);
+    text[length++] = ';';
+    text[length++] = '0'; /* ERROR */
+    text[length++] = ';';
+    text[length++] = '0'; /* TYP_QUIT */
+    text[length++] = ';';
+    text[length++] = (unsigned char)('0' + c->data);
+    int check = c->replyEtx ? 0x03 : 0;
+    for (int i = 0; i < 12; ++i)
+        if (i < length) check ^= text[i];
+    unsigned char frame[19];
+    int n = 0;
+    frame[n++] = 0x01;
+    frame[n++] = 0x02;
+    for (int i = 0; i < 12; ++i)
+        if (i < length) frame[n++] = text[i];
+    frame[n++] = 0x03;
+    if (check >= 100) frame[n++] = (unsigned char)('0' + check / 100);
+    if (check >= 10) frame[n++] = (unsigned char)('0' + check / 10 % 10);
+    frame[n++] = (unsigned char)('0' + check % 10);
+    frame[n++] = 0x04;
+    if (c->outPos == c->outLen) c->outPos = c->outLen = 0;
+    for (int i = 0; i < 19; ++i)
+        if (i < n && c->outLen < OUT_MAX) c->out[c->outLen++] = frame[i];
+    c->answered = TRUE;
+}
+
+/* The controller takes a request the line brought it (in the scan the FB wrote it): returns what it did. */
+static int Take(Controller *c, int kind, BOOL zeroForm, int check, int n) {
+    if (kind == REQ_POLL) {
+        if (!c->answered) return TOOK_NOTHING;
+        if (c->running && nondet_bool()) c->running = FALSE; /* the command ended since the last reply */
+        if (c->entry >= 0) c->be = !c->running;
+        Answer(c);
+        return TOOK_POLL;
+    }
+    const int sum = kind == REQ_PROBE ? TextXor(PROBE_TEXT, sizeof PROBE_TEXT - 1)
+                    : zeroForm         ? TextXor(CBMC__CMD_TEXT_ZERO, sizeof CBMC__CMD_TEXT_ZERO - 1)
+                                       : TextXor(CBMC__CMD_TEXT, sizeof CBMC__CMD_TEXT - 1);
+    c->status = nondet_uchar();
+    __CPROVER_assume(c->status < 10);
+    if (!(check == (c->checkEtx ? sum ^ 0x03 : sum) || (check == 0 && c->zeroUnchecked))) {
+        if (c->ignoreBad) return TOOK_IGNORED;
+        c->quit = 16, c->be = 1, c->data = 0, c->entry = -1;
+        Answer(c);
+        return TOOK_CHECK_16;
+    }
+    if (kind == REQ_COMMAND && nondet_bool()) {
+        c->quit = 20, c->be = 1, c->data = 0, c->entry = -1;
+        Answer(c);
+        return TOOK_REFUSED;
+    }
+    c->quit = 0;
+    c->running = kind == REQ_COMMAND && CBMC__CMD_LONG && nondet_bool();
+    c->be = !c->running;
+    c->data = nondet_uchar();
+    __CPROVER_assume(c->data < 10);
+    if (kind == REQ_PROBE) c->data = c->status;
+    c->entry = c->entries;
+    if (c->entries < LEDGER) {
+        c->ledger[c->entries].kind = kind;
+        c->ledger[c->entries].scan = n;
+        c->ledger[c->entries].status = c->status;
+        c->ledger[c->entries].data = c->data;
+        ++c->entries;
+    }
+    Answer(c);
+    return kind == REQ_PROBE ? TOOK_PROBE : TOOK_COMMAND;
+}
 
 /* i modulo RING for -RING <= i < 3 x RING, without a division: a % by 300 of a free value is a divider circuit
  * in the formula, in every scan and for every byte. */
 static int Ring(int i) {
     return i < 0 ? i + RING : i >= 2 * RING ? i - 2 * RING : i >= RING ? i - RING : i;
+}
+
+/* Whether the bytes written at `at` are SOH STX text ETX: the frame of that text. */
+static BOOL FrameOf(const T_PAC_COMBUFFER *tx, int at, int written, const char *text, int length) {
+    if (written < length + 5) return FALSE;
+    BOOL same = tx->BUFFER.table[Ring(at + 1)] == 0x02 && tx->BUFFER.table[Ring(at + 2 + length)] == 0x03;
+    for (int i = 0; i < length; ++i) same = same && tx->BUFFER.table[Ring(at + 2 + i)] == (unsigned char)text[i];
+    return same;
 }
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. from_pac: the
@@ -56,6 +192,7 @@ static BOOL tl_execute, tl_rx_blocked, tl_tx_blocked;
 static WORD tl_code;
 static int tl_rule, tl_received, tl_tx_free, tl_written, tl_state;
 static BOOL tl_called, tl_plc_restart;
+static int tl_ctrl_took, tl_ledger, tl_answer; /* TOOK_*; ledger entries; the last reply: QUIT BE STATUS Q_PAR */
 static int tl_scan;
 
 /* The harness's own reading of the bytes received since the last request (manual 3.3.1: STX text ETX CHECK
@@ -110,14 +247,21 @@ static void Receive(Frames *f, unsigned char byte, E_PAC_RS232CHECK rule) {
 
 int main(void) {
     static FB_PAC_RS232CMD cmd, fresh;
+    Controller ctrl = {0};
     PlcOpenWatch watch = {0};
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
-    int requests = 0, lastRequest = 0, lastByte = -1000, sinceRequest = 0;
+    int requests = 0, lastRequest = 0, lastByte = -1000, edgeScan = 0;
     BOOL quietSeen = FALSE; /* the line was quiet for QuietTime at some scan since the last request */
+    BOOL polled = FALSE;    /* the reply the FB is waiting for answers an EOT poll */
     int reachDone = 0, reachLibError = 0, reachPacError = 0, reachRepeat = 0, reachSkippedBusy = 0;
-    int reachPlcRestart = 0;
+    int reachPlcRestart = 0, reachDoneExecuted = 0, reachDoneAfterPoll = 0;
 
+    ctrl.checkEtx = nondet_bool();
+    ctrl.zeroUnchecked = nondet_bool();
+    ctrl.ignoreBad = nondet_bool();
+    ctrl.replyEtx = nondet_bool();
+    ctrl.entry = -1;
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_RS232CMD_init__(&fresh, FALSE);
     const int t = 1 + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX, q = 1 + nondet_uchar() % CBMC__TMAX;
@@ -159,14 +303,22 @@ int main(void) {
         tx->FREEBYTE = (INT)(RING - held);
         tx->RDIDX = (INT)Ring(tx->WRIDX + RING - held);
         tx->BLOCKED = nondet_bool();
-        /* RxBuffer: the controller's bytes, any values. */
+        /* RxBuffer: the controller's bytes on their way, any number of them in this scan; the line may drop
+         * the rest (a cut-off reply) or, with NOISE, spoil one of them. */
         rx->BLOCKED = nondet_bool();
         int received = nondet_uchar();
         __CPROVER_assume(received <= CBMC__BYTES_PER_SCAN);
-        if (received > CBMC__REPLY_BYTES - sinceRequest) received = CBMC__REPLY_BYTES - sinceRequest;
+        if (received > ctrl.outLen - ctrl.outPos) received = ctrl.outLen - ctrl.outPos;
+#if CBMC__NOISE
+        const int spoilt = nondet_uchar();
+        const unsigned char noise = nondet_uchar();
+#endif
         unsigned long long fromPac = 0;
         for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
-            const unsigned char byte = nondet_uchar();
+            unsigned char byte = ctrl.out[ctrl.outPos + i];
+#if CBMC__NOISE
+            if (i == spoilt) byte = noise;
+#endif
             if (i < 8) fromPac |= (unsigned long long)byte << (8 * (7 - i));
             Receive(&frames, byte, rule);
             if (rx->COUNT < RING) {
@@ -176,7 +328,8 @@ int main(void) {
                 rx->FREEBYTE = (INT)(RING - rx->COUNT);
             }
         }
-        sinceRequest += received;
+        ctrl.outPos += received;
+        if (ctrl.outPos < ctrl.outLen && nondet_bool()) ctrl.outPos = ctrl.outLen;
         if (received > 0) lastByte = n;
         if (n - lastByte >= q) quietSeen = TRUE;
 
@@ -192,7 +345,10 @@ int main(void) {
             reachSkippedBusy = 1;
         }
         const BOOL edge = called && cmd.EXECUTE.value && !before;
-        if (edge && !cmd.BUSY.value) rule = cmd.CHECKRULE.value;
+        if (edge && !cmd.BUSY.value) {
+            rule = cmd.CHECKRULE.value;
+            edgeScan = n; /* the FB takes this edge: L1 counts the executions from this scan on */
+        }
         const BOOL doneBefore = cmd.DONE.value;
         const int count0 = tx->COUNT, wrIdx0 = tx->WRIDX;
         const BOOL txBlocked = tx->BLOCKED;
@@ -202,21 +358,6 @@ int main(void) {
         unsigned long long toPac = 0;
         for (int i = 0; i < 8 && i < written; ++i)
             toPac |= (unsigned long long)tx->BUFFER.table[Ring(wrIdx0 + i)] << (8 * (7 - i));
-        tl_from_pac = fromPac;
-        tl_received = received;
-        tl_rx_blocked = rx->BLOCKED;
-        tl_tx_free = RING - count0;
-        tl_tx_blocked = txBlocked;
-        tl_execute = cmd.EXECUTE.value;
-        tl_code = cmd.CODE.value;
-        tl_rule = cmd.CHECKRULE.value;
-        TimelineOutputs(cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE, cmd.ERRORID.value);
-        tl_written = written;
-        tl_to_pac = toPac;
-        tl_state = cmd.STATE.value;
-        tl_called = called;
-        tl_plc_restart = plcRestart;
-        tl_scan = n;
 
         /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
         if (!called && watch.busy) watch.busyScans++;
@@ -235,20 +376,78 @@ int main(void) {
         /* R2: one request at a time: a request goes out only when the one before it is over: its reply came
          * (a frame with a good CHECK), or it is lost (Timeout since it, or a cut-off frame) and the line has
          * been quiet for QuietTime since it was sent. */
+        int took = TOOK_NOTHING;
         if (written > 0) {
             __CPROVER_assert(requests == 0 || frames.checked
                                  || ((frames.damaged || frames.frame || n - lastRequest >= t) && quietSeen),
                              "R2 no request while the one before it awaits its reply");
             ++requests;
             lastRequest = n;
-            sinceRequest = 0;
             quietSeen = FALSE;
             frames = (Frames){0};
+            /* R4: a frame carries the command's text or the probe's, nothing else (the controller would run it). */
+            const int lengthCmd = sizeof CBMC__CMD_TEXT - 1, lengthZero = sizeof CBMC__CMD_TEXT_ZERO - 1;
+            const int lengthProbe = sizeof PROBE_TEXT - 1;
+            const BOOL zeroForm = FrameOf(tx, wrIdx0, written, CBMC__CMD_TEXT_ZERO, lengthZero);
+            const BOOL command = FrameOf(tx, wrIdx0, written, CBMC__CMD_TEXT, lengthCmd) || zeroForm;
+            const int kind = written == 1 ? REQ_POLL
+                             : command    ? REQ_COMMAND
+                             : FrameOf(tx, wrIdx0, written, PROBE_TEXT, lengthProbe) ? REQ_PROBE
+                                                                                     : REQ_OTHER;
+            __CPROVER_assert(kind != REQ_OTHER, "R4 a frame carries the command's text or the probe's");
+            /* The CHECK digits between ETX and EOT (R1: the last byte is EOT). */
+            const int textLength = kind == REQ_PROBE ? lengthProbe : zeroForm ? lengthZero : lengthCmd;
+            int check = 0;
+            for (int i = 0; i < 3; ++i)
+                if (kind != REQ_POLL && 3 + textLength + i < written - 1)
+                    check = check * 10 + (tx->BUFFER.table[Ring(wrIdx0 + 3 + textLength + i)] - '0');
+            /* The line brings the request to the controller in this scan, or loses it. */
+            polled = kind == REQ_POLL;
+            took = nondet_bool() ? TOOK_LOST : Take(&ctrl, kind, zeroForm, check, n);
         }
         /* R3: Done only after a reply that checks: since the last request a frame came whose CHECK the
          * command's rule accepts; a serial link is never left unchecked. */
         __CPROVER_assert(!cmd.DONE.value || doneBefore || frames.checked,
                          "R3 Done only after an acknowledgement whose CHECK holds");
+        /* L1, L2 (issue: Done means executed): at the rising Done the controller's ledger holds exactly one
+         * execution of the command's text since the FB took its edge, and the FB's outputs are that
+         * execution's answer (STATUS, Q_PAR; ERROR 0, TYP_QUIT 0). */
+        if (cmd.DONE.value && !doneBefore) {
+            int runs = 0;
+            BOOL own = FALSE;
+            for (int i = 0; i < LEDGER; ++i) {
+                const Entry *x = &ctrl.ledger[i];
+                if (i < ctrl.entries && x->kind == REQ_COMMAND && x->scan >= edgeScan) {
+                    ++runs;
+                    own = cmd.ACKDATA.value == (DWORD)x->data && cmd.OPSTATUS.value == (BYTE)x->status
+                          && !cmd.ACKISREAL.value && !cmd.PACERROR.value;
+                }
+            }
+            __CPROVER_assert(runs == 1,
+                             "L1 Done only if the controller executed the command's text once since the edge");
+            __CPROVER_assert(runs != 1 || own, "L2 Done carries the answer of the command's own execution");
+            if (runs == 1 && own) reachDoneExecuted = 1;
+            if (polled) reachDoneAfterPoll = 1;
+        }
+
+        tl_from_pac = fromPac;
+        tl_received = received;
+        tl_rx_blocked = rx->BLOCKED;
+        tl_tx_free = RING - count0;
+        tl_tx_blocked = txBlocked;
+        tl_execute = cmd.EXECUTE.value;
+        tl_code = cmd.CODE.value;
+        tl_rule = cmd.CHECKRULE.value;
+        TimelineOutputs(cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE, cmd.ERRORID.value);
+        tl_written = written;
+        tl_to_pac = toPac;
+        tl_state = cmd.STATE.value;
+        tl_called = called;
+        tl_plc_restart = plcRestart;
+        tl_ctrl_took = took;
+        tl_ledger = ctrl.entries;
+        tl_answer = ctrl.quit * 1000 + ctrl.be * 100 + ctrl.status * 10 + ctrl.data;
+        tl_scan = n;
 
         if (cmd.DONE.value) reachDone = 1;
         if (cmd.ERROR.value && cmd.ERRORID.value >= 0x8000) reachLibError = 1;
@@ -256,9 +455,15 @@ int main(void) {
         if (cmd.REPEATS.value > 0) reachRepeat = 1;
     }
     __CPROVER_assert(!reachDone, "reach: Done");
+    __CPROVER_assert(!reachDoneExecuted, "reach: Done on the command the controller executed, with its answer");
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with the controller's QUIT");
     __CPROVER_assert(!reachRepeat, "reach: a request sent again");
+#if CBMC__K >= 4
+    __CPROVER_assert(!reachDoneAfterPoll, "reach: Done on the answer to an EOT poll");
+#else
+    (void)reachDoneAfterPoll;
+#endif
 #if CBMC__SKIPS
     __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
 #endif

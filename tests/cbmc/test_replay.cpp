@@ -30,6 +30,8 @@ int pac_cbmc_automatic_main(void);
 int pac_cbmc_mc_main(void);
 int pac_cbmc_mc_no_plc_restart_main(void);
 int pac_cbmc_rs232_main(void);
+int pac_cbmc_rs232_restarts_main(void);
+int pac_cbmc_rs232_deep_main(void);
 
 // What the harness's asserts and assumes said during one replay.
 static std::set<std::string> failedProperties;
@@ -83,6 +85,8 @@ void Replay(const Counterexample& c) {
         {"Mc", pac_cbmc_mc_main},
         {"Mc.NoPlcRestart", pac_cbmc_mc_no_plc_restart_main},
         {"Rs232Cmd", pac_cbmc_rs232_main},
+        {"Rs232Cmd.Restarts", pac_cbmc_rs232_restarts_main},
+        {"Rs232Cmd.Deep", pac_cbmc_rs232_deep_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");
     const auto harness = harnesses.find(c.harness);
