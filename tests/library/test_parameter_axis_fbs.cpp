@@ -492,9 +492,11 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     rig.Start(rig.moveRel);
     bool decreasing = true;
     float last = 1000.0F;
+    SentCommand move{};
     FinalOutcome outcome = rig.Wait(rig.moveRel, 5000, [&] {
         const auto& fb = rig.moveRel.Data();
         if (!fb.ACTIVE.value) return;
+        move = Sent(rig.LastCommand());
         if (first < 0.0F) first = fb.ACTUALPOSITION.value;
         if (fb.ACTUALPOSITION.value > last) decreasing = false;
         last = fb.ACTUALPOSITION.value;
@@ -509,8 +511,10 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     }
     EXPECT_TRUE(decreasing);
     EXPECT_EQ(rig.moveRel->ACTUALPOSITION.value, 69.5F);
-    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x0A89);
-    EXPECT_EQ(Sent(rig.LastCommand()).data, Bits(-30.5F));
+    EXPECT_EQ(move.code, 0x0A89);
+    EXPECT_EQ(move.data, Bits(-30.5F));
+    // After END OF PROCESSING the status read (1910) told "in position", then 190C read where the axis stands.
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x190C);
     rig.Release(rig.moveRel);
     EXPECT_EQ(rig.Motion(2).Position(), 69.5);
 }
