@@ -519,6 +519,29 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     EXPECT_EQ(rig.Motion(2).Position(), 69.5);
 }
 
+// A stop of the mode (the external stop input losing its power, 5.2.1.3) ends a 0A89 short: the PA-CONTROL sets
+// END OF PROCESSING at the stop position (5.2.6.7), the axis status reads 2 (stopped): CommandAborted, not Done.
+TEST_P(ParameterAxisFbs, RelativeMoveThatAModeStopCutsShortIsCommandAborted) {
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Motion(2).Place(rig.Now(), 100.0);
+    rig.moveRel->AXIS.value = 2;
+    rig.moveRel->DISTANCE.value = 300.0F;
+    rig.Start(rig.moveRel);
+    bool stopped = false;
+    const FinalOutcome outcome = rig.Wait(rig.moveRel, 20000, [&] {
+        if (!stopped && rig.Motion(2).Position() > 150.0) {
+            rig.Controller().Io().inputs.Set(7, false);
+            stopped = true;
+        }
+    });
+    ASSERT_TRUE(stopped) << "the move never passed 150";
+    EXPECT_TRUE(outcome.Aborted()) << "Done " << outcome.Done() << ", error " << outcome.ErrorId();
+    EXPECT_LT(rig.moveRel->ACTUALPOSITION.value, 399.0F);
+    EXPECT_NEAR(rig.moveRel->ACTUALPOSITION.value, rig.Motion(2).Position(), 0.001);
+    rig.Release(rig.moveRel);
+}
+
 TEST_P(ParameterAxisFbs, MoveErrorsAreTheManualsNumbers) {
     AxisRig rig(Param());
     rig.moveAbs->AXIS.value = 1;
