@@ -365,6 +365,28 @@ TEST_P(AxisSkippedCalls, AMoveEndsDoneForItsOwnJobWhateverScansItMisses) {
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
 }
 
+// A jog released 1 to 8 scans after its edge (the input falling in the first call left out, 1 to 3 calls left
+// out), before or after the controller took it over: Done only for a jog the controller took (the checks of the
+// free program), CommandAborted for one it never ran. On the faster buses every release comes after the take-over;
+// with a PA-CONTROL cycle of 10 ms the first ones come before it.
+TEST_P(AxisSkippedCalls, AJogReleasedEarlyIsDoneOnlyIfTheControllerTookIt) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    for (int length = 1; length <= 3; ++length) {
+        for (int from = 1; from <= 8; ++from) {
+            SCOPED_TRACE("released " + std::to_string(from) + " scans after the edge, " + std::to_string(length) +
+                         " calls left out");
+            Job jog;
+            jog.jog = from % 2 == 0 ? 1 : -1;
+            jog.position = 3.0F + 0.0625F * static_cast<float>(from + 8 * length);
+            const FreeCaller::Ended ended = program.RunScripted(jog, from, length, true);
+            EXPECT_NE(ended, FreeCaller::Ended::kError);
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+}
+
 // The program stops calling the FB 1 to 6 scans after the edge of a move: the controller takes the job once and
 // the axis arrives at its target.
 TEST_P(AxisSkippedCalls, AMoveWhoseFbIsNeverCalledAgainRunsToItsEnd) {
