@@ -1,11 +1,13 @@
 // FB_PAC_Axis in a PLC program freer than the other axis suites' (docs/fb/FB_PAC_Axis.md, "Calling contract"):
 // the program calls the FB or leaves it out in every scan (runs of 1 to 6 scans), at every point of a job
 // (waiting for the axis to be free, Start on the wire waiting for the take-over, the job running, stopping),
-// edges absolute and relative moves, G29 and reference runs with values no other job used, lets Execute fall
-// while the job runs, and aborts for a few scans now and then. The simulated PA-CONTROL's ledger of the jobs
+// edges absolute and relative moves, G29 and reference runs with values no other job used, holds a jog input
+// (JogPositive / JogNegative, its longest distance of its own) as it would hold Execute, lets Execute or the jog
+// input fall while the job runs, aborts for a few scans now and then, and pulses ResetError and ChangeDynamics
+// now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
 // its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The
 // property, in a PLC programmer's words: the FB ends Done only if the controller took exactly its job (the
-// traverse bit, the position and the per-mille values) after this Execute edge, an absolute move Done stands at
+// traverse bit, the position and the per-mille values) after this Execute (or jog input) edge, an absolute move Done stands at
 // its target, and Busy ends within the bound the FB's page states. The PLCopen rules hold on every call. Every
 // random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
@@ -57,11 +59,13 @@ struct Job {
     float position = 0.0F;
     unsigned velocity = 1000;
     unsigned acceleration = 1000;
+    int jog = 0;  // +1 / -1: a jog held by JogPositive / JogNegative instead of Execute; Position its longest distance
 };
 
-std::uint32_t TraverseBit(E_PAC_AXISCOMMAND c) {
+std::uint32_t TraverseBit(const Job& job) {
     namespace bit = pac::axis_control;
-    switch (c) {
+    if (job.jog != 0) return job.jog > 0 ? bit::kJogPositive : bit::kJogNegative;
+    switch (job.command) {
         case E_PAC_AXISCOMMAND__PAC_AX_HOME: return bit::kHome;
         case E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE: return bit::kMoveAbsolute;
         case E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE: return bit::kMoveRelative;
@@ -75,6 +79,9 @@ bool IsMove(E_PAC_AXISCOMMAND c) {
 }
 
 bool HasPosition(E_PAC_AXISCOMMAND c) { return IsMove(c) || c == E_PAC_AXISCOMMAND__PAC_AX_SET_POSITION; }
+
+bool IsMove(const Job& job) { return job.jog != 0 || IsMove(job.command); }
+bool HasPosition(const Job& job) { return job.jog != 0 || HasPosition(job.command); }
 
 class FreeAxisProgram {
 public:
@@ -143,6 +150,7 @@ public:
     const std::vector<std::string>& Violations() const { return log_.Texts(); }
     int Dones() const { return dones_; }
     int DoneMoves() const { return doneMoves_; }
+    int DoneJogs() const { return doneJogs_; }
     int Aborts() const { return aborts_; }
     int EndedAfterSkip() const { return endedAfterSkip_; }
     const FreeCaller& Caller() const { return caller_; }
@@ -172,7 +180,7 @@ private:
         Job job;
         job.velocity = 250 + caller_.Draw(751);
         job.acceleration = 500 + caller_.Draw(501);
-        switch (caller_.Draw(10)) {
+        switch (caller_.Draw(12)) {
             case 0: case 1: case 2: case 3:
                 job.command = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
                 job.position = 10.0F + static_cast<float>(caller_.Draw(60)) + unique;
@@ -187,6 +195,10 @@ private:
                 break;
             case 8:
                 job.command = E_PAC_AXISCOMMAND__PAC_AX_CLEAR_OFFSET;
+                break;
+            case 10: case 11:
+                job.jog = caller_.Draw(2) == 0 ? -1 : 1;
+                job.position = 2.0F + static_cast<float>(caller_.Draw(8)) + unique;
                 break;
             default:
                 job.command = E_PAC_AXISCOMMAND__PAC_AX_HOME;
@@ -210,9 +222,19 @@ private:
             missed_ = true;
             return;
         }
+        // Pulses the program gives in some calls, whatever the job: an axis error reset, new dynamics.
+        const bool resetError = free_ && !scripted_ && caller_.Draw(150) < 3;
+        const bool changeDynamics = free_ && !scripted_ && caller_.Draw(100) < 3;
         const std::size_t offset = layout_.AxisOffset(1);
         auto call = [&] {
             axis_->ABORT.value = abortLeft_ > 0 ? TRUE : FALSE;
+            const bool held = axis_->EXECUTE.value != 0;
+            axis_->EXECUTE.value = held && job_.jog == 0 ? TRUE : FALSE;
+            axis_->JOGPOSITIVE.value = held && job_.jog > 0 ? TRUE : FALSE;
+            axis_->JOGNEGATIVE.value = held && job_.jog < 0 ? TRUE : FALSE;
+            axis_->RESETERROR.value = resetError ? TRUE : FALSE;
+            axis_->CHANGEDYNAMICS.value = changeDynamics ? TRUE : FALSE;
+            axis_->DYNAMICSCHANGEABLE.value = TRUE;
             axis_->COMMAND.value = job_.command;
             axis_->POSITION.value = job_.position;
             axis_->VELOCITY.value = static_cast<UINT>(job_.velocity);
@@ -243,16 +265,17 @@ private:
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
 
     void CheckDone() {
-        const std::uint32_t bit = TraverseBit(job_.command);
+        const std::uint32_t bit = TraverseBit(job_);
         const bool taken = claims_.Claim(Ledger(), ledgerAtEdge_, [&](const pac::sim::AxisModuleCommand& taken) {
             if ((taken.control & pac::axis_control::kTraverseBits) != bit) return false;
-            if (HasPosition(job_.command) && taken.position != pac::test::BitsOf(job_.position)) return false;
-            return !IsMove(job_.command) ||
+            if (HasPosition(job_) && taken.position != pac::test::BitsOf(job_.position)) return false;
+            return !IsMove(job_) ||
                    (taken.speedPerMille == job_.velocity && taken.accelerationPerMille == job_.acceleration);
         });
         if (taken) {
             ++dones_;
-            if (job_.command == E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE) {
+            if (job_.jog != 0) ++doneJogs_;
+            if (job_.jog == 0 && job_.command == E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE) {
                 ++doneMoves_;
                 if (std::fabs(axis_->ACTUALPOSITION.value - job_.position) > 0.01F) {
                     log_.Add(scans_, rig_.Now(), "an absolute move to " + std::to_string(job_.position) +
@@ -262,7 +285,7 @@ private:
             return;
         }
         std::ostringstream what;
-        what << "Done for job " << job_.command << " (bit 16#" << std::hex << bit << std::dec << ", position "
+        what << "Done for job " << job_.command << (job_.jog != 0 ? " (jog)" : "") << " (bit 16#" << std::hex << bit << std::dec << ", position "
              << job_.position << ", " << job_.velocity << "/" << job_.acceleration
              << " per mille), which the controller did not take over after the Execute edge";
         log_.Add(scans_, rig_.Now(), what.str());
@@ -296,6 +319,7 @@ private:
     pac::test::AxisJobClaims claims_;
     int dones_ = 0;
     int doneMoves_ = 0;
+    int doneJogs_ = 0;
     int aborts_ = 0;
     int endedAfterSkip_ = 0;
 };
@@ -312,6 +336,7 @@ TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     EXPECT_GT(program.Caller().SkipsWhileBusy(), 10);
     EXPECT_GT(program.EndedAfterSkip(), 3);
     EXPECT_GT(program.DoneMoves(), 2) << program.Dones() << " Done";
+    EXPECT_GT(program.DoneJogs(), 0) << program.Dones() << " Done";
     EXPECT_GT(program.Aborts(), 0);
 }
 
@@ -335,6 +360,28 @@ TEST_P(AxisSkippedCalls, AMoveEndsDoneForItsOwnJobWhateverScansItMisses) {
                 EXPECT_EQ(program.RunScripted(job, from, length, fall), FreeCaller::Ended::kDone);
                 if (HasFailure()) break;
             }
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+}
+
+// A jog released 1 to 8 scans after its edge (the input falling in the first call left out, 1 to 3 calls left
+// out), before or after the controller took it over: Done only for a jog the controller took (the checks of the
+// free program), CommandAborted for one it never ran. On the faster buses every release comes after the take-over;
+// with a PA-CONTROL cycle of 10 ms the first ones come before it.
+TEST_P(AxisSkippedCalls, AJogReleasedEarlyIsDoneOnlyIfTheControllerTookIt) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    for (int length = 1; length <= 3; ++length) {
+        for (int from = 1; from <= 8; ++from) {
+            SCOPED_TRACE("released " + std::to_string(from) + " scans after the edge, " + std::to_string(length) +
+                         " calls left out");
+            Job jog;
+            jog.jog = from % 2 == 0 ? 1 : -1;
+            jog.position = 3.0F + 0.0625F * static_cast<float>(from + 8 * length);
+            const FreeCaller::Ended ended = program.RunScripted(jog, from, length, true);
+            EXPECT_NE(ended, FreeCaller::Ended::kError);
         }
     }
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;

@@ -1,14 +1,16 @@
 // The FBs built on FB_PAC_Cmd (the element FBs, the command-set FBs) and FB_PAC_Ctrl in a PLC program as free as
 // real ones (docs/fb/FB_PAC_Cmd.md and FB_PAC_Ctrl.md, "The calling contract"): FB_PAC_WriteIntReg,
-// FB_PAC_ReadIntReg, FB_PAC_MoveAxisAbsolute and FB_PAC_StopAxis (each with FreeInterface drawn per command) on
+// FB_PAC_ReadIntReg, FB_PAC_MoveAxisAbsolute, FB_PAC_MoveAxisRelative and FB_PAC_StopAxis (each with
+// FreeInterface drawn per command) on
 // one CMD interface, in a call order drawn anew every scan, and FB_PAC_Ctrl on the CTRL module asking for ONLINE,
 // a stop and a cancel now and then; each FB called or left out independently in every scan (runs of 1 to 6
 // scans), edged when idle, Execute falling while Busy, a command FB now and then given up for good (the program
 // calls a fresh instance from then on). The ledgers: the commands the simulated PA-CONTROL took on its CMD
 // interface (its exchange log) and the operating status it showed after every scan. The property: an FB ends
 // Done only if the controller took exactly its command (code, parameter, data) after this Execute edge, or for
-// FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target; a read
-// ends with its register's own value; Busy ends within
+// FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target (for 0A89:
+// the controller's end report at its own acknowledged start plus the distance); a read ends with its
+// register's own value; Busy ends within
 // the documented bound; the PLCopen rules hold on every call. Every random choice comes from the seed in the
 // test's name.
 #include <gtest/gtest.h>
@@ -43,7 +45,7 @@ using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 namespace status = pac::sim::status;
 
-enum class Kind { kWrite, kRead, kMove, kStop, kCtrl };
+enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel };
 
 // One FB of the program and what its present command asked for.
 struct Block {
@@ -61,9 +63,9 @@ class FreeCmdFbProgram {
 public:
     explicit FreeCmdFbProgram(const pac::test::ChannelCase& c)
         : case_(c), layout_{true, 0}, rig_(pac::test::RigTimingOf(c.sharing.timing), ConfigOf(c), layout_), random_(c.seed) {
-        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl}) {
+        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl, Kind::kMoveRel}) {
             static const char* names[] = {"FB_PAC_WriteIntReg", "FB_PAC_ReadIntReg", "FB_PAC_MoveAxisAbsolute",
-                                          "FB_PAC_StopAxis", "FB_PAC_Ctrl"};
+                                          "FB_PAC_StopAxis", "FB_PAC_Ctrl", "FB_PAC_MoveAxisRelative"};
             pac::test::FreeCallerOdds odds;
             odds.newCommand = k == Kind::kCtrl ? 400 : (k == Kind::kStop ? 60 : 6);
             odds.earlyFall = 200;
@@ -74,6 +76,7 @@ public:
         }
         auto& pac = rig_.Controller();
         pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput);
+        pac.SystemParameters().Set(pac::sim::sysparam::kNumberOfAxes, kRelativeAxis);
         pac.Io().inputs.Set(kExternalStopInput, true);
         for (int n = 0; n < 4; ++n) {
             pac.Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
@@ -112,6 +115,7 @@ public:
 
 private:
     static constexpr int kExternalStopInput = 7;
+    static constexpr std::uint16_t kRelativeAxis = 3;
 
     static pac::sim::PaControlConfig ConfigOf(const pac::test::ChannelCase& c) {
         pac::sim::PaControlConfig config = c.sharing.Config();
@@ -136,8 +140,18 @@ private:
                 b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A94 : code::kPosAxisAbsolute), axis,
                              pac::test::BitsOf(static_cast<float>(serial_ % 400) * 0.125F + 0.0625F)};
                 break;
+            case Kind::kMoveRel: {
+                // Axis 3, which only FB_PAC_StopAxis shares with it (the checks of a Done read the axis), back
+                // towards 25, a distance of its own.
+                const bool down = rig_.Controller().Axes().Motion(kRelativeAxis).Position() > 25.0;
+                const float distance = static_cast<float>(serial_ % 80) * 0.0625F + 0.03125F;
+                b.command = {b.freeInterface ? code::kStartAxisRelative : code::kPosAxisRelative, kRelativeAxis,
+                             pac::test::BitsOf(down ? -distance : distance)};
+                break;
+            }
             case Kind::kStop:
-                b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A9A : code::kStopAxis), axis, 0};
+                b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A9A : code::kStopAxis),
+                             static_cast<std::uint16_t>(1 + b.caller->Draw(3)), 0};
                 break;
             case Kind::kCtrl: {
                 static const E_PAC_CTRLREQUEST requests[] = {E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
@@ -216,6 +230,13 @@ private:
                         move_->FREEINTERFACE.value = b.freeInterface ? TRUE : FALSE;
                     }, [&] { CallOn(channel, move_); }, [] { return PAC_FB(FB_PAC_MOVEAXISABSOLUTE); });
                     break;
+                case Kind::kMoveRel:
+                    Place<FB_PAC_MOVEAXISRELATIVE>(b, moveRel_, [&] {
+                        moveRel_->AXIS.value = static_cast<USINT>(b.command.param);
+                        moveRel_->DISTANCE.value = pac::test::FloatOf(b.command.data);
+                        moveRel_->FREEINTERFACE.value = b.freeInterface ? TRUE : FALSE;
+                    }, [&] { CallOn(channel, moveRel_); }, [] { return PAC_FB(FB_PAC_MOVEAXISRELATIVE); });
+                    break;
                 default:
                     Place<FB_PAC_STOPAXIS>(b, stop_, [&] {
                         stop_->AXIS.value = static_cast<USINT>(b.command.param);
@@ -254,7 +275,9 @@ private:
             return;
         }
         Ledger();
-        if (ledger_.Claim(b.ledgerAtEdge, b.command)) {
+        const long taken = ledger_.ClaimIndex(b.ledgerAtEdge, b.command);
+        if (taken >= 0) {
+            if (b.kind == Kind::kMoveRel && b.command.code == code::kPosAxisRelative) CheckRelativeEnd(b, taken);
             const double at = b.kind == Kind::kMove ? rig_.Controller().Axes().Motion(b.command.param).Position() : 0.0;
             if (b.kind == Kind::kMove && std::fabs(at - pac::test::FloatOf(b.command.data)) > 0.001) {
                 log_.Add(scans_, rig_.Now(), "FB_PAC_MoveAxisAbsolute ended Done for " + pac::test::Describe(b.command) +
@@ -272,6 +295,28 @@ private:
                                          ", which the controller did not take after its Execute edge");
     }
 
+    // 0A89 (5.2.6.7): its acknowledgement carries the start position, its END OF PROCESSING report the position
+    // where the traverse ended; the move was executed only if that is the start plus the distance.
+    void CheckRelativeEnd(const Block& b, long taken) {
+        const auto end = pac::test::MoveReports(rig_.Controller().Log(), ledger_.RecordOf(static_cast<std::size_t>(taken)));
+        const float distance = pac::test::FloatOf(b.command.data);
+        std::string why;
+        if (!end.acknowledged) {
+            why = "no acknowledgement without a command error";
+        } else if (!end.ended) {
+            why = "no END OF PROCESSING before the next command";
+        } else {
+            const float target = end.start + distance;
+            if (std::fabs(end.end - target) > 0.001F + std::fabs(target) * 1.0E-6F) {
+                why = "its end report at " + std::to_string(end.end) + ", started at " + std::to_string(end.start);
+            }
+        }
+        if (!why.empty()) {
+            log_.Add(scans_, rig_.Now(), "FB_PAC_MoveAxisRelative ended Done for " + pac::test::Describe(b.command) +
+                                             " (distance " + std::to_string(distance) + ") with " + why);
+        }
+    }
+
     // FB_PAC_Cmd.md: the waits for the interface and the acknowledgement (Timeout each), END OF PROCESSING
     // (EndTimeout; FreeInterface: a status read every PollInterval until in position); FB_PAC_Ctrl.md: its
     // Timeout. Plus the longest skip and a round trip.
@@ -286,18 +331,19 @@ private:
     std::mt19937_64 random_;
     pac::test::ViolationLog log_;
     std::vector<std::unique_ptr<Block>> blocks_;
-    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop};
+    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kMoveRel};
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_WRITEINTREG> write_ = PAC_FB(FB_PAC_WRITEINTREG);
     pac::FbInstance<FB_PAC_READINTREG> read_ = PAC_FB(FB_PAC_READINTREG);
     pac::FbInstance<FB_PAC_MOVEAXISABSOLUTE> move_ = PAC_FB(FB_PAC_MOVEAXISABSOLUTE);
     pac::FbInstance<FB_PAC_STOPAXIS> stop_ = PAC_FB(FB_PAC_STOPAXIS);
+    pac::FbInstance<FB_PAC_MOVEAXISRELATIVE> moveRel_ = PAC_FB(FB_PAC_MOVEAXISRELATIVE);
     bool free_ = false;
     long scans_ = 0;
     int serial_ = 0;
     pac::test::CmdLedger ledger_;
     std::map<std::uint8_t, std::chrono::nanoseconds> statusSeen_;
-    int dones_[5] = {0, 0, 0, 0, 0};
+    int dones_[6] = {0, 0, 0, 0, 0, 0};
     int endedAfterSkip_ = 0;
 };
 
@@ -311,7 +357,7 @@ TEST_P(CmdFbsFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
     EXPECT_GT(program.SkipsWhileBusy(), 20);
     EXPECT_GT(program.EndedAfterSkip(), 5);
-    for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl}) {
+    for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel}) {
         EXPECT_GT(program.Dones(k), 0) << "kind " << static_cast<int>(k);
     }
 }

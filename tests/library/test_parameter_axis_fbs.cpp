@@ -492,9 +492,11 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     rig.Start(rig.moveRel);
     bool decreasing = true;
     float last = 1000.0F;
+    SentCommand move{};
     FinalOutcome outcome = rig.Wait(rig.moveRel, 5000, [&] {
         const auto& fb = rig.moveRel.Data();
         if (!fb.ACTIVE.value) return;
+        move = Sent(rig.LastCommand());
         if (first < 0.0F) first = fb.ACTUALPOSITION.value;
         if (fb.ACTUALPOSITION.value > last) decreasing = false;
         last = fb.ACTUALPOSITION.value;
@@ -509,10 +511,35 @@ TEST_P(ParameterAxisFbs, RelativeMoveFromTheCurrentPosition) {
     }
     EXPECT_TRUE(decreasing);
     EXPECT_EQ(rig.moveRel->ACTUALPOSITION.value, 69.5F);
-    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x0A89);
-    EXPECT_EQ(Sent(rig.LastCommand()).data, Bits(-30.5F));
+    EXPECT_EQ(move.code, 0x0A89);
+    EXPECT_EQ(move.data, Bits(-30.5F));
+    // After END OF PROCESSING the status read (1910) told "in position", then 190C read where the axis stands.
+    EXPECT_EQ(Sent(rig.LastCommand()).code, 0x190C);
     rig.Release(rig.moveRel);
     EXPECT_EQ(rig.Motion(2).Position(), 69.5);
+}
+
+// A stop of the mode (the external stop input losing its power, 5.2.1.3) ends a 0A89 short: the PA-CONTROL sets
+// END OF PROCESSING at the stop position (5.2.6.7), the axis status reads 2 (stopped): CommandAborted, not Done.
+TEST_P(ParameterAxisFbs, RelativeMoveThatAModeStopCutsShortIsCommandAborted) {
+    AxisRig rig(Param());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.Motion(2).Place(rig.Now(), 100.0);
+    rig.moveRel->AXIS.value = 2;
+    rig.moveRel->DISTANCE.value = 300.0F;
+    rig.Start(rig.moveRel);
+    bool stopped = false;
+    const FinalOutcome outcome = rig.Wait(rig.moveRel, 20000, [&] {
+        if (!stopped && rig.Motion(2).Position() > 150.0) {
+            rig.Controller().Io().inputs.Set(7, false);
+            stopped = true;
+        }
+    });
+    ASSERT_TRUE(stopped) << "the move never passed 150";
+    EXPECT_TRUE(outcome.Aborted()) << "Done " << outcome.Done() << ", error " << outcome.ErrorId();
+    EXPECT_LT(rig.moveRel->ACTUALPOSITION.value, 399.0F);
+    EXPECT_NEAR(rig.moveRel->ACTUALPOSITION.value, rig.Motion(2).Position(), 0.001);
+    rig.Release(rig.moveRel);
 }
 
 TEST_P(ParameterAxisFbs, MoveErrorsAreTheManualsNumbers) {

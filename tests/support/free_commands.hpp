@@ -75,19 +75,24 @@ public:
             const auto frame = pac::sim::CommandFrame::Decode(records[read_].toPac.Cmd());
             commands_.push_back({frame.code, frame.parameter, frame.data});
             claimed_.push_back(false);
+            records_.push_back(read_);
         }
         return commands_;
     }
     std::size_t Size() const { return commands_.size(); }
     // Claims the first unclaimed `command` from index `from` on; false if there is none.
-    bool Claim(std::size_t from, const FreeCommand& command) {
+    bool Claim(std::size_t from, const FreeCommand& command) { return ClaimIndex(from, command) >= 0; }
+    // The same, with the index of the command claimed (-1: none).
+    long ClaimIndex(std::size_t from, const FreeCommand& command) {
         for (std::size_t k = from; k < commands_.size(); ++k) {
             if (claimed_[k] || !(commands_[k] == command)) continue;
             claimed_[k] = true;
-            return true;
+            return static_cast<long>(k);
         }
-        return false;
+        return -1;
     }
+    // The exchange log's record of the cycle that took command `k`.
+    std::size_t RecordOf(std::size_t k) const { return records_[k]; }
     // "; 906 parameter 1 data 5; A87 ...": the commands from index `from` on, for a failure's text.
     std::string DescribeFrom(std::size_t from) const {
         std::string text;
@@ -98,7 +103,39 @@ public:
 private:
     std::vector<FreeCommand> commands_;
     std::vector<bool> claimed_;
+    std::vector<std::size_t> records_;
     std::size_t read_ = 0;
 };
+
+// What the controller reported for a move command (0A87, 0A89) it took in the log's record `taken`: the
+// acknowledgement (RECEIVE = its SEND flag, no command error, still processing) with the start position, and the
+// END OF PROCESSING report with the end position, both before the next command it took.
+struct MoveReport {
+    bool acknowledged = false;
+    bool ended = false;
+    float start = 0.0F;
+    float end = 0.0F;
+};
+
+inline MoveReport MoveReports(const pac::sim::ExchangeLog& log, std::size_t taken) {
+    const auto& records = log.Records();
+    const bool send = pac::sim::CommandFrame::Decode(records[taken].toPac.Cmd()).send;
+    MoveReport report;
+    for (std::size_t r = taken; r < records.size(); ++r) {
+        if (r > taken && records[r].newCommand) break;
+        const auto reply = pac::sim::ReplyFrame::Decode(records[r].fromPac.Cmd());
+        if (reply.receiveFlag != send) continue;
+        if (!report.acknowledged) {
+            if (reply.commandErrorFlag || reply.endOfProcessing) break;
+            report.acknowledged = true;
+            report.start = FloatOf(reply.ackData);
+        } else if (reply.endOfProcessing) {
+            report.ended = true;
+            report.end = FloatOf(reply.ackData);
+            break;
+        }
+    }
+    return report;
+}
 
 }  // namespace pac::test
