@@ -1,6 +1,8 @@
 /* Bounded model-checking harness of FB_PAC_AutomaticModule on one 12-byte module in AUTOMATIC mode (manual
  * 2.6, 6.4), on the C that pacst generates from st/, for K scans (docs/verification.md). Free in every scan:
- * the operating status OpStatus (every value), the controller's 12 module bytes, the programmer's FlagWord
+ * whether the FB is called (a CASE step or an IF branch leaves it out: nothing of it runs), a PLC restart (the
+ * FB and the module back to their cold-start values), the operating status OpStatus (every value: a status 0
+ * for a single scan, a controller restart), the controller's 12 module bytes, the programmer's FlagWord
  * and IntRegister (every value), RealRegister (five values: in range, beyond the integer format, infinite),
  * IntegerMode, Layout (both values), AxisOwnsModule, and another writer (an axis FB called before this one)
  * putting any 12 bytes on the module before the call. Properties "AM<n>", reachability checks "reach: ..."
@@ -43,18 +45,36 @@ static unsigned RealBits(REAL r) { /* compared by its bits: a NaN received equal
 }
 
 int main(void) {
-    static FB_PAC_AUTOMATICMODULE fb;
+    static FB_PAC_AUTOMATICMODULE fb, fresh;
     BOOL holding = FALSE;  /* the FB wrote the module in AUTOMATIC and no status outside it (and 0) came since */
     BYTE written[12] = {0}; /* what the FB wrote last in AUTOMATIC */
     long keptN = 0;         /* the last IntRegister that fitted: N k */
     int keptR = 0;          /* the last RealRegister that fitted (index into reals; the FB starts at 0.0) */
     int reachExchange = 0, reachRange = 0, reachClear = 0, reachLeftAlone = 0;
+    int reachSkipped = 0, reachPlcRestart = 0, reachBlip = 0;
+    BOOL zeroAfterAutomatic = FALSE; /* the last call saw status 0 after one in AUTOMATIC */
 
     __CURRENT_TIME = __time_make(0, 0);
-    FB_PAC_AUTOMATICMODULE_init__(&fb, FALSE);
+    FB_PAC_AUTOMATICMODULE_init__(&fresh, FALSE);
+    fb = fresh;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        /* A PLC cold start: the FB instance and the module image back to their initial values. */
+        if (n > 1 && nondet_bool()) {
+            fb = fresh;
+            holding = FALSE;
+            for (int i = 0; i < 12; ++i) written[i] = 0;
+            keptN = 0;
+            keptR = 0;
+            zeroAfterAutomatic = FALSE;
+            reachPlcRestart = 1;
+        }
+        if (!nondet_bool()) { /* left out of this scan: nothing of it runs, its module stays as it is */
+            if (holding) reachSkipped = 1;
+            tl_scan = n;
+            continue;
+        }
         const BYTE status = nondet_uchar();
         fb.OPSTATUS.value = status;
         for (int i = 0; i < 12; ++i) fb.FROMPAC.value.table[i] = nondet_uchar();
@@ -162,6 +182,9 @@ int main(void) {
         if (fb.ERROR.value) reachRange = 1;
         if (firstAfter && zero && !same) reachClear = 1;
         if (firstAfter && same && !zero) reachLeftAlone = 1;
+        if (zeroAfterAutomatic && Automatic(status) && fb.INEXCHANGE.value) reachBlip = 1;
+        if (status == 0) zeroAfterAutomatic = zeroAfterAutomatic || holding;
+        else zeroAfterAutomatic = FALSE;
 
         /* What the FB holds for the next scan. */
         if (Automatic(status)) {
@@ -175,5 +198,8 @@ int main(void) {
     __CPROVER_assert(!reachRange, "reach: Error for a value out of range");
     __CPROVER_assert(!reachClear, "reach: the module cleared after AUTOMATIC");
     __CPROVER_assert(!reachLeftAlone, "reach: a hand-over after AUTOMATIC left alone");
+    __CPROVER_assert(!reachSkipped, "reach: the FB left out of a scan in AUTOMATIC");
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
+    __CPROVER_assert(!reachBlip, "reach: AUTOMATIC again after a single scan of status 0");
     return 0;
 }

@@ -6,7 +6,8 @@
  * (a few values each, in and out of range); per run Position (two values), IntegerMode,
  * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Free too whether the FB is called in a scan (a CASE
  * step or an IF branch leaves it out: its pins and images then unchanged, and what it knows of the operating
- * status is what it saw when called; FB_PAC_Axis.md, "Calling contract"). Properties "P<n>"/"A<n>",
+ * status is what it saw when called; FB_PAC_Axis.md, "Calling contract"), and a PLC restart (the FB and its
+ * module back to their cold-start values). Properties "P<n>"/"A<n>",
  * reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
 
@@ -15,6 +16,9 @@
 #endif
 #ifndef CBMC__TMAX
 #define CBMC__TMAX 2
+#endif
+#ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
+#define CBMC__PLC_RESTARTS 1
 #endif
 
 /* The traverse bits of the control word (2.7.1): 3..7 and 12..15 the jobs, 10 and 11 the jogs. */
@@ -29,7 +33,7 @@ static int tl_scan;
 static BOOL Owns(BYTE status) { return status == 1 || status == 9 || (status >= 30 && status <= 39); }
 
 int main(void) {
-    static FB_PAC_AXIS axis;
+    static FB_PAC_AXIS axis, fresh;
     PlcOpenWatch watch = {0};
     BYTE lastStatus = 0; /* the last operating status other than 0 */
     int reachDone = 0, reachLibError = 0, reachPacError = 0, reachAborted = 0;
@@ -37,13 +41,14 @@ int main(void) {
     static const WORD accelerations[] = {0, 1000};
 
     __CURRENT_TIME = __time_make(0, 0);
-    FB_PAC_AXIS_init__(&axis, FALSE);
+    FB_PAC_AXIS_init__(&fresh, FALSE);
     const unsigned t = 1 + nondet_uchar() % CBMC__TMAX, st = 1 + nondet_uchar() % CBMC__TMAX;
-    axis.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-    axis.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
-    axis.POSITION.value = nondet_bool() ? 10.5f : 0.0f;
-    axis.INTEGERMODE.value = nondet_bool();
-    axis.DYNAMICSCHANGEABLE.value = nondet_bool();
+    fresh.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+    fresh.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
+    fresh.POSITION.value = nondet_bool() ? 10.5f : 0.0f;
+    fresh.INTEGERMODE.value = nondet_bool();
+    fresh.DYNAMICSCHANGEABLE.value = nondet_bool();
+    axis = fresh;
     watch.bound = 1000; /* a move takes as long as the axis moves: no Busy bound of its own (A4, A5 instead) */
     int abortScans = 0;        /* Busy scans since Abort rose during a job, Abort TRUE since */
     int waitScans = 0;         /* Busy scans of the job without ACTIVE since its edge (before the take-over) */
@@ -51,12 +56,27 @@ int main(void) {
     int reachAbortEnded = 0;
     BOOL activeSinceStart = FALSE; /* ACTIVE seen since Start last rose on the wire */
     BOOL leftSinceStart = FALSE;   /* a known status other than ONLINE running (31) seen since then */
-    int reachRefusedNotOnline = 0, reachSkippedBusy = 0;
+    int reachRefusedNotOnline = 0, reachSkippedBusy = 0, reachPlcRestart = 0, reachDoneAfterSkip = 0;
+    BOOL skippedWhileBusy = FALSE;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        /* A PLC cold start: the FB instance and its module back to their initial values; what the harness knows
+         * of the job starts anew. */
+        if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
+            axis = fresh;
+            const PlcOpenWatch none = {0};
+            watch = none;
+            watch.bound = 1000;
+            lastStatus = 0;
+            abortScans = waitScans = 0;
+            takenOver = activeSinceStart = leftSinceStart = FALSE;
+            skippedWhileBusy = FALSE;
+            reachPlcRestart = 1;
+        }
         if (!nondet_bool()) { /* left out of this scan: nothing of it runs, its module stays as it is */
             if (axis.BUSY.value) reachSkippedBusy = 1;
+            if (axis.BUSY.value) skippedWhileBusy = TRUE;
             tl_scan = n;
             continue;
         }
@@ -153,6 +173,8 @@ int main(void) {
         __CPROVER_assert(waitScans <= 2 * (int)t + 2, "A5 Busy before the take-over within 2 x Timeout + 2 scans");
 
         if (axis.DONE.value) reachDone = 1;
+        if (axis.DONE.value && skippedWhileBusy) reachDoneAfterSkip = 1;
+        if (!axis.BUSY.value) skippedWhileBusy = FALSE;
         if (axis.ERROR.value && axis.ERRORID.value >= 0x8000) reachLibError = 1;
         if (axis.ERROR.value && axis.ERRORID.value < 0x8000) reachPacError = 1;
         if (axis.COMMANDABORTED.value) reachAborted = 1;
@@ -163,7 +185,12 @@ int main(void) {
     __CPROVER_assert(!reachAborted, "reach: CommandAborted");
     __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
     __CPROVER_assert(!reachRefusedNotOnline, "reach: a job refused outside ONLINE running (16#8025)");
-    /* A job ended Done after a scan left out needs more than the CI's K = 4 (edge, Start, ACTIVE, its fall). */
     __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
+#if CBMC__K >= 6 /* edge, Start, ACTIVE, its fall, and a scan left out between */
+    __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
+#else
+    (void)reachDoneAfterSkip;
+#endif
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart"); /* CBMC__PLC_RESTARTS=0 is for the replay only */
     return 0;
 }

@@ -6,8 +6,10 @@
  * FB's Timeout and EndTimeout (a few ms); TwoStepWrite; the call order of the callers, anew in every scan; the
  * bus latency (the controller reads a module 0..LAG scans old, skipping any); the controller's reading of the
  * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
- * (RECEIVE back to 0 or to the last SEND). With CALLERS = 2 the second FB sends any command too. The controller
- * keeps a ledger of the commands it took; P5 matches every Done with an entry of its own.
+ * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on (-DCBMC__BLIPS=0 leaves it
+ * out), and a PLC restart (the interface and the command FBs back to their cold-start values, the program's
+ * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
+ * controller keeps a ledger of the commands it took; P5 matches every Done with an entry of its own.
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
@@ -27,6 +29,12 @@
 #ifndef CBMC__TMIN
 #define CBMC__TMIN (CBMC__LAG + 2) /* the round trip: the module out, LAG scans old at most, the reply back */
 #endif
+#ifndef CBMC__PLC_RESTARTS /* a PLC restart (every FB instance back to its cold-start values) at any scan */
+#define CBMC__PLC_RESTARTS 1
+#endif
+#ifndef CBMC__BLIPS /* a single all-zero scan while the controller runs on */
+#define CBMC__BLIPS 1
+#endif
 
 #define PARKED_CODE 0x190B
 #define SUPERSEDED 0x8007
@@ -38,6 +46,7 @@ static BYTE recent[CBMC__LAG + 2][8];
  * tl_scan last. A caller's pins are tl_a_* and tl_b_*. */
 static unsigned long long tl_from_pac, tl_to_pac;
 static int tl_ctrl_read, tl_ctrl_took;
+static BOOL tl_plc_restart;
 static BOOL tl_a_execute, tl_a_busy, tl_a_done, tl_a_error;
 static WORD tl_a_code, tl_a_errorid;
 #if CBMC__CALLERS > 1
@@ -62,6 +71,7 @@ typedef struct {
     BOOL ledgerClaimed[CBMC__K + 1]; /* an FB ended Done for it */
     BOOL processingLong;  /* it acknowledged a long command and has not ended it */
     int downSince;        /* restarting since this scan (0: running) */
+    BOOL blip;            /* the PLC read an all-zero image in the scan before (a lost telegram) */
 } Controller;
 
 static WORD Word(const BYTE *m, int i) { return (WORD)((m[i] << 8) | m[i + 1]); }
@@ -84,6 +94,7 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->processingLong = FALSE;
     }
     if (c->downSince != 0) {
+        c->blip = FALSE;
         if (n - c->downSince < RESTART || nondet_bool()) {
             for (int i = 0; i < 8; ++i) reply[i] = 0;
             return;
@@ -110,7 +121,9 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->seen = n - 1 - lag;
         if (isNew) {
             const WORD code = word & 0x7FFF;
-            const BOOL parked = code == PARKED_CODE && Dword(module) == 0 && Word(module, 4) == 0;
+            /* The parked read; read torn, its parameter and data are the module's before (a fresh interface
+             * after a PLC restart parks data and flag in one write): still a read without effect. */
+            const BOOL parked = code == PARKED_CODE && ((Dword(module) == 0 && Word(module, 4) == 0) || torn);
             /* P6: nothing but a stop of what runs reaches a controller that processes a long command. */
             __CPROVER_assert(!c->processingLong || parked || IsStop(code),
                              "P6 only a stop or the parked read while a command is processing");
@@ -136,6 +149,11 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
     __CPROVER_assume(reply[5] != 0);
     reply[6] = (BYTE)((c->receive ? 0x80 : 0) | flags | (nondet_uchar() & 0x1F));
     reply[7] = nondet_uchar();
+    /* A single scan of an all-zero image while the controller runs on (a lost telegram: status 0 for one
+     * scan, RECEIVE 0 with it), never two in a row: longer is a restart. */
+    c->blip = CBMC__BLIPS && !c->blip && nondet_bool();
+    if (c->blip)
+        for (int i = 0; i < 8; ++i) reply[i] = 0;
 }
 
 /* What the harness knows of one caller's job, for the properties. */
@@ -192,30 +210,33 @@ static void CallCmd(FB_PAC_CMD *fb, FB_PAC_CMDINTERFACE *iface) {
 }
 
 int main(void) {
-    static FB_PAC_CMDINTERFACE iface;
-    static FB_PAC_CMD cmd[CBMC__CALLERS];
+    static FB_PAC_CMDINTERFACE iface, ifaceFresh;
+    static FB_PAC_CMD cmd[CBMC__CALLERS], cmdFresh[CBMC__CALLERS];
     static Watch watch[CBMC__CALLERS];
     Controller ctrl = {0};
     BYTE reply[8] = {0, 0, 0, 0, 0, 1, 0x20, 0}; /* home position, nothing outstanding */
     const BOOL twoStep = nondet_bool();
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
-    int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0;
+    int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
+    int reachBlipBusy = 0;
     BOOL skippedWhileBusy[CBMC__CALLERS];
 
     ctrl.bySendChange = nondet_bool();
     __CURRENT_TIME = __time_make(0, 0);
-    FB_PAC_CMDINTERFACE_init__(&iface, FALSE);
-    iface.TWOSTEPWRITE.value = twoStep;
+    FB_PAC_CMDINTERFACE_init__(&ifaceFresh, FALSE);
+    ifaceFresh.TWOSTEPWRITE.value = twoStep;
+    iface = ifaceFresh;
     for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
         skippedWhileBusy[i] = FALSE;
-        FB_PAC_CMD_init__(&cmd[i], FALSE);
+        FB_PAC_CMD_init__(&cmdFresh[i], FALSE);
         /* Timeout at least the bus round trip (TMIN); a shorter one (D1, docs/verification.md) is checked
          * with -DCBMC__TMIN=1. */
         const unsigned t = CBMC__TMIN + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX;
-        cmd[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-        cmd[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
+        cmdFresh[i].TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+        cmdFresh[i].ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
+        cmd[i] = cmdFresh[i];
         watch[i].plcopen.bound = (int)(t + 1 + t + e); /* Timeout + two-step + Timeout + EndTimeout */
     }
     for (int j = 0; j < CBMC__LAG + 2; ++j) {
@@ -225,6 +246,21 @@ int main(void) {
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
         if (n > 1) ControllerStep(&ctrl, n, twoStep, reply);
+        /* A PLC cold start: every FB instance and the program's pins back to their initial values. What the
+         * controller took before stays in its ledger (P7 counts the edges of the instances before too). */
+        const BOOL plcRestart = CBMC__PLC_RESTARTS && n > 1 && nondet_bool();
+        if (plcRestart) {
+            iface = ifaceFresh;
+            for (int i = 0; i < CBMC__CALLERS; ++i) {
+                cmd[i] = cmdFresh[i];
+                const int bound = watch[i].plcopen.bound;
+                const PlcOpenWatch none = {0};
+                watch[i].plcopen = none;
+                watch[i].plcopen.bound = bound;
+                skippedWhileBusy[i] = FALSE;
+            }
+            reachPlcRestart = 1;
+        }
         BOOL edge[CBMC__CALLERS], called[CBMC__CALLERS];
         for (int i = 0; i < CBMC__CALLERS; ++i) {
             /* A caller left out of a scan keeps its pins: a program assigns them in the call it does not make. */
@@ -238,6 +274,8 @@ int main(void) {
             }
         }
         for (int i = 0; i < 8; ++i) iface.CHANNEL.value.FROMPAC.table[i] = reply[i];
+        for (int i = 0; i < CBMC__CALLERS; ++i)
+            if (ctrl.blip && called[i] && cmd[i].BUSY.value) reachBlipBusy = 1;
         FB_PAC_CMDINTERFACE_body__(&iface);
         /* The call order anew in every scan. Each call with a constant index: a pointer to cmd[symbolic] would
          * split every access in the body. */
@@ -268,6 +306,7 @@ int main(void) {
         tl_from_pac = Bytes8(reply);
         tl_ctrl_read = ctrl.seen;
         tl_ctrl_took = ctrl.takenScan;
+        tl_plc_restart = plcRestart;
         tl_a_execute = cmd[0].EXECUTE.value;
         tl_a_code = cmd[0].CODE.value;
         tl_a_busy = cmd[0].BUSY.value;
@@ -297,6 +336,16 @@ int main(void) {
     __CPROVER_assert(iface.RESYNCS.value == 0, "reach: a resynchronisation");
     __CPROVER_assert(!reachSkippedBusy, "reach: a caller left out of a scan while Busy");
     __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
+#if CBMC__BLIPS
+    __CPROVER_assert(!reachBlipBusy, "reach: a single all-zero scan while a caller is Busy");
+#else
+    (void)reachBlipBusy;
+#endif
+#if CBMC__PLC_RESTARTS
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
+#else
+    (void)reachPlcRestart;
+#endif
 #if CBMC__CALLERS > 1
     __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
     __CPROVER_assert(!reachReversed, "reach: the second caller called first");

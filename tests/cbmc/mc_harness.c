@@ -5,7 +5,8 @@
  * called (a CASE step or an IF branch leaves it out, its Execute then unchanged: the calling contract of
  * MC_blocks.md), their Execute, and the order in which they are called (as listed or the reverse, so every two
  * of them edged in one scan meet in either order; FB_PAC_McAxis last); per run IntegerMode, Timeout and
- * StopTimeout (1..TMAX ms).
+ * StopTimeout (1..TMAX ms). Free too a PLC restart: every block, FB_PAC_McAxis and the axis reference back to
+ * their cold-start values.
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -16,6 +17,9 @@
 #endif
 #ifndef CBMC__TMAX
 #define CBMC__TMAX 2
+#endif
+#ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
+#define CBMC__PLC_RESTARTS 1
 #endif
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
@@ -35,6 +39,14 @@ static MC_MOVEABSOLUTE move;
 static MC_HALT halt;
 static MC_RESET reset;
 static FB_PAC_MCAXIS mcAxis;
+/* The cold-start values, for a PLC restart. */
+static ST_PAC_AXISREF refFresh;
+static MC_POWER powerFresh;
+static MC_STOP stopFresh;
+static MC_MOVEABSOLUTE moveFresh;
+static MC_HALT haltFresh;
+static MC_RESET resetFresh;
+static FB_PAC_MCAXIS mcAxisFresh;
 
 static BOOL stopCalled;
 static void CallStop(void) {
@@ -73,6 +85,7 @@ int main(void) {
     int reachBrakingRefused = 0;
     int reachStopDone = 0, reachHeld = 0, reachMoveBusy = 0, reachMoveAborted = 0, reachReleased = 0;
     int reachHaltDone = 0, reachResetDone = 0, reachStopFailedHeld = 0, resetBusySeen = 0, reachSkippedBusy = 0;
+    int reachPlcRestart = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
     __pacst_init_ST_PAC_AXISREF(&ref);
@@ -98,9 +111,34 @@ int main(void) {
     mcAxis.MAXACCELERATION.value = 100.0f;
     move.POSITION.value = 10.5f;
     move.VELOCITY.value = 50.0f;
+    refFresh = ref;
+    powerFresh = power;
+    stopFresh = stop;
+    moveFresh = move;
+    haltFresh = halt;
+    resetFresh = reset;
+    mcAxisFresh = mcAxis;
+    const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        /* A PLC cold start: every instance back to its initial values; what the harness knows starts anew. */
+        if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
+            ref = refFresh;
+            power = powerFresh;
+            stop = stopFresh;
+            move = moveFresh;
+            halt = haltFresh;
+            reset = resetFresh;
+            mcAxis = mcAxisFresh;
+            stopWatch = stopWatch0;
+            moveWatch = moveWatch0;
+            haltWatch = haltWatch0;
+            resetWatch = resetWatch0;
+            stopHeld = lastWasStop = braking = FALSE;
+            resetBusySeen = 0;
+            reachPlcRestart = 1;
+        }
         for (int i = 0; i < 8; ++i) mcAxis.FROMPAC.value.table[i] = nondet_uchar();
         for (int i = 8; i < 12; ++i) mcAxis.FROMPAC.value.table[i] = 0;
         mcAxis.OPSTATUS.value = nondet_uchar();
@@ -238,5 +276,6 @@ int main(void) {
     __CPROVER_assert(!reachHaltDone, "reach: MC_Halt Done");
     __CPROVER_assert(!reachResetDone, "reach: MC_Reset Done after Busy");
     __CPROVER_assert(!reachSkippedBusy, "reach: a block left out of a scan while Busy");
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart"); /* CBMC__PLC_RESTARTS=0 is for the replay only */
     return 0;
 }

@@ -2,7 +2,9 @@
  * docs/fb/FB_PAC_Rs232Cmd.md), on the C that pacst generates from st/, for K scans (docs/verification.md).
  * Free in every scan: each byte the controller sends (any value, 0..BYTES_PER_SCAN of them, at most
  * REPLY_BYTES after each request), the free space of TxBuffer (the driver sent any number of bytes, or none),
- * both buffers' Blocked, and the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
+ * both buffers' Blocked, whether the FB is called (a CASE step or an IF branch leaves it out: the driver still
+ * moves bytes, the FB's pins stay), a PLC restart (the FB and its rings back to their cold-start values), and
+ * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval,
  * QuietTime (1..TMAX ms) and Retries (0 or 1); the command (Code, Param, Data) a constant of the run. Properties
  * "P<n>"/"R<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
@@ -12,6 +14,9 @@
 #endif
 #ifndef CBMC__TMAX
 #define CBMC__TMAX 2
+#endif
+#ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (CI: at K = 2 it fits in the second scan only, at a high cost) */
+#define CBMC__PLC_RESTARTS 1
 #endif
 #ifndef CBMC__BYTES_PER_SCAN /* bytes the controller's side puts into RxBuffer per scan at most */
 #define CBMC__BYTES_PER_SCAN 8
@@ -35,12 +40,19 @@
 
 #define RING 300 /* T_PAC_ComBuffer: 300 bytes in Buffer[0..299] */
 
+/* i modulo RING for -RING <= i < 3 x RING, without a division: a % by 300 of a free value is a divider circuit
+ * in the formula, in every scan and for every byte. */
+static int Ring(int i) {
+    return i < 0 ? i + RING : i >= 2 * RING ? i - 2 * RING : i >= RING ? i - RING : i;
+}
+
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. from_pac: the
  * bytes the controller's side put into RxBuffer in this scan; to_pac: the first 8 the FB wrote into TxBuffer. */
 static unsigned long long tl_from_pac, tl_to_pac;
 static BOOL tl_execute, tl_rx_blocked, tl_tx_blocked;
 static WORD tl_code;
 static int tl_rule, tl_received, tl_tx_free, tl_written, tl_state;
+static BOOL tl_called, tl_plc_restart;
 static int tl_scan;
 
 /* The harness's own reading of the bytes received since the last request (manual 3.3.1: STX text ETX CHECK
@@ -94,40 +106,60 @@ static void Receive(Frames *f, unsigned char byte, E_PAC_RS232CHECK rule) {
 }
 
 int main(void) {
-    static FB_PAC_RS232CMD cmd;
+    static FB_PAC_RS232CMD cmd, fresh;
     PlcOpenWatch watch = {0};
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
     int requests = 0, lastRequest = 0, lastByte = -1000, sinceRequest = 0;
     BOOL quietSeen = FALSE; /* the line was quiet for QuietTime at some scan since the last request */
-    int reachDone = 0, reachLibError = 0, reachPacError = 0, reachRepeat = 0;
+    int reachDone = 0, reachLibError = 0, reachPacError = 0, reachRepeat = 0, reachSkippedBusy = 0;
+    int reachPlcRestart = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
-    FB_PAC_RS232CMD_init__(&cmd, FALSE);
+    FB_PAC_RS232CMD_init__(&fresh, FALSE);
     const int t = 1 + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX, q = 1 + nondet_uchar() % CBMC__TMAX;
-    cmd.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-    cmd.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
-    cmd.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % CBMC__TMAX) * CYCLE_NS);
-    cmd.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
-    cmd.RETRIES.value = nondet_bool();
+    fresh.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
+    fresh.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
+    fresh.POLLINTERVAL.value = __time_make(0, (long)(1 + nondet_uchar() % CBMC__TMAX) * CYCLE_NS);
+    fresh.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
+    fresh.RETRIES.value = nondet_bool();
     /* Busy: per request at most Timeout for a quiet line, Timeout for room in TxBuffer and Timeout for the
      * reply, Retries + 1 requests before the acknowledgement, then EndTimeout (FB_PAC_Rs232Cmd.md, "A noisy
      * line"). */
-    watch.bound = (cmd.RETRIES.value + 1) * 3 * t + e;
+    watch.bound = (fresh.RETRIES.value + 1) * 3 * t + e;
+    fresh.TXBUFFER.value.WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
+    cmd = fresh;
     T_PAC_COMBUFFER *tx = &cmd.TXBUFFER.value, *rx = &cmd.RXBUFFER.value;
-    tx->WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        /* A PLC cold start: the FB instance and its rings back to their initial values; what the controller
+         * still sends for a request of the instance before goes into the new RxBuffer. The request history of
+         * R2 starts anew (the new instance cannot know of the old request). */
+        const BOOL plcRestart = CBMC__PLC_RESTARTS && n > 1 && nondet_bool();
+        if (plcRestart) {
+            cmd = fresh;
+            const PlcOpenWatch none = {0};
+            const int bound = watch.bound;
+            watch = none;
+            watch.bound = bound;
+            rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO;
+            requests = 0;
+            quietSeen = FALSE;
+            frames = (Frames){0};
+            reachPlcRestart = 1;
+        }
         /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. */
-        const int held = nondet_ushort() % (RING + 1);
+        const int held = nondet_ushort();
+        __CPROVER_assume(held <= RING);
         tx->COUNT = (INT)held;
         tx->FREEBYTE = (INT)(RING - held);
-        tx->RDIDX = (INT)((tx->WRIDX + RING - held) % RING);
+        tx->RDIDX = (INT)Ring(tx->WRIDX + RING - held);
         tx->BLOCKED = nondet_bool();
         /* RxBuffer: the controller's bytes, any values. */
         rx->BLOCKED = nondet_bool();
-        int received = nondet_uchar() % (CBMC__BYTES_PER_SCAN + 1);
+        int received = nondet_uchar();
+        __CPROVER_assume(received <= CBMC__BYTES_PER_SCAN);
         if (received > CBMC__REPLY_BYTES - sinceRequest) received = CBMC__REPLY_BYTES - sinceRequest;
         unsigned long long fromPac = 0;
         for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
@@ -136,7 +168,7 @@ int main(void) {
             Receive(&frames, byte, rule);
             if (rx->COUNT < RING) {
                 rx->BUFFER.table[rx->WRIDX] = byte;
-                rx->WRIDX = (INT)((rx->WRIDX + 1) % RING);
+                rx->WRIDX = (INT)Ring(rx->WRIDX + 1);
                 ++rx->COUNT;
                 rx->FREEBYTE = (INT)(RING - rx->COUNT);
             }
@@ -145,23 +177,28 @@ int main(void) {
         if (received > 0) lastByte = n;
         if (n - lastByte >= q) quietSeen = TRUE;
 
+        const BOOL called = nondet_bool();
         const BOOL before = cmd.EXECUTE.value;
-        cmd.EXECUTE.value = nondet_bool();
-        const BOOL edge = cmd.EXECUTE.value && !before;
-        cmd.CODE.value = CBMC__CMD_CODE;
-        cmd.PARAM.value = CBMC__CMD_PARAM;
-        cmd.DATA.value = CBMC__CMD_DATA;
-        cmd.CHECKRULE.value = (E_PAC_RS232CHECK)(nondet_uchar() % 4);
+        if (called) {
+            cmd.EXECUTE.value = nondet_bool();
+            cmd.CODE.value = CBMC__CMD_CODE;
+            cmd.PARAM.value = CBMC__CMD_PARAM;
+            cmd.DATA.value = CBMC__CMD_DATA;
+            cmd.CHECKRULE.value = (E_PAC_RS232CHECK)(nondet_uchar() % 4);
+        } else if (cmd.BUSY.value) {
+            reachSkippedBusy = 1;
+        }
+        const BOOL edge = called && cmd.EXECUTE.value && !before;
         if (edge && !cmd.BUSY.value) rule = cmd.CHECKRULE.value;
         const BOOL doneBefore = cmd.DONE.value;
         const int count0 = tx->COUNT, wrIdx0 = tx->WRIDX;
         const BOOL txBlocked = tx->BLOCKED;
-        FB_PAC_RS232CMD_body__(&cmd);
+        if (called) FB_PAC_RS232CMD_body__(&cmd);
 
         const int written = tx->COUNT - count0;
         unsigned long long toPac = 0;
         for (int i = 0; i < 8 && i < written; ++i)
-            toPac |= (unsigned long long)tx->BUFFER.table[(wrIdx0 + i) % RING] << (8 * (7 - i));
+            toPac |= (unsigned long long)tx->BUFFER.table[Ring(wrIdx0 + i)] << (8 * (7 - i));
         tl_from_pac = fromPac;
         tl_received = received;
         tl_rx_blocked = rx->BLOCKED;
@@ -174,17 +211,21 @@ int main(void) {
         tl_written = written;
         tl_to_pac = toPac;
         tl_state = cmd.STATE.value;
+        tl_called = called;
+        tl_plc_restart = plcRestart;
         tl_scan = n;
 
-        /* P1..P4, P8 (plcopen_props.h). */
-        CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
+        /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
+        if (!called && watch.busy) watch.busyScans++;
+        if (called)
+            CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
                      cmd.ERRORID.value);
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
-        const unsigned char first = tx->BUFFER.table[wrIdx0 % RING];
-        const unsigned char last = tx->BUFFER.table[(wrIdx0 + RING + written - 1) % RING];
+        const unsigned char first = tx->BUFFER.table[Ring(wrIdx0)];
+        const unsigned char last = tx->BUFFER.table[Ring(wrIdx0 + written - 1)];
         __CPROVER_assert(written >= 0 && written <= RING - count0, "R1 nothing written past TxBuffer's free space");
-        __CPROVER_assert(tx->WRIDX == (wrIdx0 + written) % RING && tx->FREEBYTE == RING - tx->COUNT,
+        __CPROVER_assert(tx->WRIDX == Ring(wrIdx0 + written) && tx->FREEBYTE == RING - tx->COUNT,
                          "R1 TxBuffer's indices follow the bytes written");
         __CPROVER_assert(written == 0 || (!txBlocked && last == 0x04 && (written == 1 || first == 0x01)),
                          "R1 a whole request or nothing, never into a held buffer");
@@ -215,5 +256,11 @@ int main(void) {
     __CPROVER_assert(!reachLibError, "reach: Error with a library code");
     __CPROVER_assert(!reachPacError, "reach: Error with the controller's QUIT");
     __CPROVER_assert(!reachRepeat, "reach: a request sent again");
+    __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
+#if CBMC__PLC_RESTARTS
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
+#else
+    (void)reachPlcRestart;
+#endif
     return 0;
 }

@@ -17,14 +17,18 @@
 
 extern "C" {
 int pac_cbmc_cmd_one_main(void);
+int pac_cbmc_cmd_one_restarts_main(void);
 int pac_cbmc_cmd_two_main(void);
+int pac_cbmc_cmd_two_no_plc_restart_main(void);
 int pac_cbmc_cmd_one_short_timeout_main(void);
 int pac_cbmc_cmd_one_lag2_main(void);
 int pac_cbmc_cmd_one_short_timeout_lag2_main(void);
 int pac_cbmc_ctrl_main(void);
 int pac_cbmc_axis_main(void);
+int pac_cbmc_axis_no_plc_restart_main(void);
 int pac_cbmc_automatic_main(void);
 int pac_cbmc_mc_main(void);
+int pac_cbmc_mc_no_plc_restart_main(void);
 int pac_cbmc_rs232_main(void);
 
 // What the harness's asserts and assumes said during one replay.
@@ -66,14 +70,18 @@ Counterexample Read(const std::filesystem::path& path) {
 void Replay(const Counterexample& c) {
     static const std::map<std::string, int (*)(void)> harnesses = {
         {"CmdInterface.OneCaller", pac_cbmc_cmd_one_main},
+        {"CmdInterface.OneCallerRestarts", pac_cbmc_cmd_one_restarts_main},
         {"CmdInterface.TwoCallers", pac_cbmc_cmd_two_main},
+        {"CmdInterface.TwoCallers.NoPlcRestart", pac_cbmc_cmd_two_no_plc_restart_main},
         {"CmdInterface.OneCallerShortTimeout", pac_cbmc_cmd_one_short_timeout_main},
         {"CmdInterface.OneCaller.Lag2", pac_cbmc_cmd_one_lag2_main},
         {"CmdInterface.OneCallerShortTimeout.Lag2", pac_cbmc_cmd_one_short_timeout_lag2_main},
         {"Ctrl", pac_cbmc_ctrl_main},
         {"Axis", pac_cbmc_axis_main},
+        {"Axis.NoPlcRestart", pac_cbmc_axis_no_plc_restart_main},
         {"AutomaticModule", pac_cbmc_automatic_main},
         {"Mc", pac_cbmc_mc_main},
+        {"Mc.NoPlcRestart", pac_cbmc_mc_no_plc_restart_main},
         {"Rs232Cmd", pac_cbmc_rs232_main},
     };
     SCOPED_TRACE(c.file + " (" + c.harness + ", " + c.property + ", " + c.status + ")");

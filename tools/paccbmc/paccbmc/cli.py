@@ -9,16 +9,38 @@ from pathlib import Path
 from . import results, timeline
 
 
-def _run(args) -> int:
-    cmd = [args.cbmc, *args.cbmc_args, "--json-ui", "--trace"]
-    start = time.monotonic()
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    seconds = time.monotonic() - start
+SLICE = "--slice-formula"
+
+
+def timeline_rerun_args(cbmc_args, failed):
+    """CBMC's arguments for a second run that gives the failed properties' traces their timeline: --slice-formula
+    drops the harness's tl_* assignments from a trace (the free inputs stay), so the failed properties alone are
+    checked again without it. None when nothing is to be run again."""
+    if SLICE not in cbmc_args or not failed:
+        return None
+    rerun = [a for a in cbmc_args if a != SLICE]
+    for prop in failed:
+        rerun += ["--property", prop.name]
+    return rerun
+
+
+def _cbmc(args, cbmc_args):
+    proc = subprocess.run([args.cbmc, *cbmc_args, "--json-ui", "--trace"], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True)
     try:
-        props = results.parse(proc.stdout)
+        return proc, results.parse(proc.stdout)
     except ValueError as err:
-        print(f"paccbmc: {args.name}: {err}\n{proc.stderr}", file=sys.stderr)
+        raise ValueError(f"{err}\n{proc.stderr}") from err
+
+
+def _run(args) -> int:
+    start = time.monotonic()
+    try:
+        proc, props = _cbmc(args, args.cbmc_args)
+    except ValueError as err:
+        print(f"paccbmc: {args.name}: {err}", file=sys.stderr)
         return 2
+    seconds = time.monotonic() - start
     if not props:
         print(f"paccbmc: {args.name}: CBMC reported no properties (exit {proc.returncode})\n{proc.stderr}"
               f"\n{proc.stdout[-4000:]}", file=sys.stderr)
@@ -27,11 +49,24 @@ def _run(args) -> int:
     print(f"{args.name}: {verdict.held} properties hold, {verdict.reached} reachability checks reached, "
           f"{len(verdict.failed)} failed, {len(verdict.unreached)} unreached, "
           f"{len(verdict.known_open)} known open ({seconds:.1f} s)")
+    # A known open failure keeps its sliced trace (its free inputs replay it; CI need not pay for the table).
+    rerun = timeline_rerun_args(args.cbmc_args, [p for p in verdict.failed if not timeline.rows(p.trace)])
+    if rerun:
+        try:
+            traces = {p.name: p.trace for p in _cbmc(args, rerun)[1] if p.status == "FAILURE"}
+        except ValueError as err:
+            print(f"paccbmc: {args.name}: the run for the timeline: {err}", file=sys.stderr)
+            traces = {}
+        for prop in verdict.failed:
+            prop.trace = traces.get(prop.name, prop.trace)
     out_dir = Path(args.counterexamples) if args.counterexamples else None
     for kind, props_of_kind in (("FAILED", verdict.failed), ("KNOWN OPEN", verdict.known_open)):
         for prop in props_of_kind:
             print(f"\n{kind}: {prop.description} [{prop.name}]")
-            print(timeline.table(prop.trace))
+            if timeline.rows(prop.trace) or SLICE not in args.cbmc_args:
+                print(timeline.table(prop.trace))
+            else:
+                print("(no timeline: --slice-formula dropped it; cbmc_replay_tests replays the free inputs below)")
             if out_dir:
                 out_dir.mkdir(parents=True, exist_ok=True)
                 path = out_dir / f"{args.name}.{prop.name}.inputs"

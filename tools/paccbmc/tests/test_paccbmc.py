@@ -3,7 +3,7 @@ known open failures) and the counterexample table."""
 import json
 import unittest
 
-from paccbmc import results, timeline
+from paccbmc import cli, results, timeline
 
 
 def _assign(lhs, data, hidden=False):
@@ -68,3 +68,15 @@ class Timeline(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class TimelineRerun(unittest.TestCase):
+    def test_failed_properties_checked_again_without_slicing(self):
+        failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
+        self.assertEqual(cli.timeline_rerun_args(["h.c", "--slice-formula", "--unwind", "3"], failed),
+                         ["h.c", "--unwind", "3", "--property", "main.assertion.3"])
+
+    def test_no_rerun_without_slicing_or_failures(self):
+        failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
+        self.assertIsNone(cli.timeline_rerun_args(["h.c"], failed))
+        self.assertIsNone(cli.timeline_rerun_args(["h.c", "--slice-formula"], []))
