@@ -226,6 +226,10 @@ int main(void) {
     FB_PAC_CMDINTERFACE_init__(&ifaceFresh, FALSE);
     ifaceFresh.TWOSTEPWRITE.value = twoStep;
     iface = ifaceFresh;
+    /* The program has run since its cold start: its channel is past the first handshake (the parked read, in
+     * step with the controller's RECEIVE 0), so the K scans go to commands; a PLC restart below starts a fresh
+     * channel, whose first handshake is then checked. */
+    iface.CHANNEL.value.FIRSTREADDONE = TRUE;
     for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
