@@ -226,10 +226,12 @@ int main(void) {
     FB_PAC_CMDINTERFACE_init__(&ifaceFresh, FALSE);
     ifaceFresh.TWOSTEPWRITE.value = twoStep;
     iface = ifaceFresh;
-    /* The program has run since its cold start: its channel is past the first handshake (the parked read, in
-     * step with the controller's RECEIVE 0), so the K scans go to commands; a PLC restart below starts a fresh
-     * channel, whose first handshake is then checked. */
+#if !CBMC__PLC_RESTARTS
+    /* Without a PLC restart the program has run since its cold start: its channel is past the first handshake
+     * (the parked read, in step with the controller's RECEIVE 0), so the K scans go to commands. With restarts
+     * the harness starts at a cold start, and each restart starts a fresh channel. */
     iface.CHANNEL.value.FIRSTREADDONE = TRUE;
+#endif
     for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
