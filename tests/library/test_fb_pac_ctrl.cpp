@@ -387,6 +387,11 @@ struct BitCase {
 
 class FbPacCtrlBit : public FbPacCtrl, public ::testing::WithParamInterface<BitCase> {};
 
+// CANCEL and RESET ERROR are Done on no mode bit only once their bit has been out for 70 ms (the bus both ways
+// and the controller's cycle in home position) and 7 more scans: at a 1 ms scan, 77 scans after the edge.
+constexpr int kReadScans = 77;
+bool ShownAsHome(E_PAC_CTRLREQUEST r) { return r == kReqCancel || r == kReqResetError; }
+
 TEST_P(FbPacCtrlBit, AssertedFromTheEdgeUntilTheResultThenReleasedWithDone) {
     const BitCase& c = GetParam();
     fromPac_ = StatusImage(c.fromWord, c.fromError);
@@ -404,6 +409,14 @@ TEST_P(FbPacCtrlBit, AssertedFromTheEdgeUntilTheResultThenReleasedWithDone) {
     EXPECT_TRUE(Busy());
     fromPac_ = StatusImage(c.resultWord, c.resultError);
     Cycle(1);
+    if (ShownAsHome(c.request)) {
+        // No mode bit is also a start's 10 or 30: Done once the bit was read, kReadScans after the edge.
+        EXPECT_FALSE(Done()) << "not before the controller has read the bit";
+        EXPECT_EQ(Control(), c.control);
+        Cycle(kReadScans - 7);
+        EXPECT_FALSE(Done());
+        Cycle(1);
+    }
     EXPECT_TRUE(Done()) << "Done in the first scan that shows the result";
     EXPECT_EQ(Control(), kIdle) << "released in that same scan";
     Cycle(3);
@@ -509,16 +522,18 @@ constexpr Outcome D = Outcome::kDoneAtOnce;
 constexpr Outcome N = Outcome::kNotAllowed;
 constexpr Outcome R = Outcome::kNotReady;
 
+// CANCEL and RESET ERROR where no mode bit shows put their bit out until the controller has read it: no mode
+// bit is also a start's 10 or 30 (FbPacCtrl.CancelAndResetErrorInHomePositionAreDoneOnceTheirBitWasRead).
 //                                                                       START_ONL START_AUT STOP CANCEL RESET
 INSTANTIATE_TEST_SUITE_P(
     Statuses, FbPacCtrlState,
     ::testing::Values(
-        StateRow{"Home1", kBooted, 0, W, W, N, D, D},
-        StateRow{"Home9Class2Error", kBooted | kSystemError, 150, N, N, N, D, W},
-        StateRow{"Home9CpuError", kBatteryOk | kSystemError, 5, R, R, N, D, N},
+        StateRow{"Home1", kBooted, 0, W, W, N, W, W},
+        StateRow{"Home9Class2Error", kBooted | kSystemError, 150, N, N, N, W, W},
+        StateRow{"Home9CpuError", kBatteryOk | kSystemError, 5, R, R, N, W, N},
         StateRow{"LinkLost", 0, 0, R, R, R, R, R},
-        StateRow{"BatteryLowHome1", kReady, 0, W, W, N, D, D},
-        StateRow{"Started10Or30LooksLikeHome", kBooted, 0, W, W, N, D, D},
+        StateRow{"BatteryLowHome1", kReady, 0, W, W, N, W, W},
+        StateRow{"Started10Or30LooksLikeHome", kBooted, 0, W, W, N, W, W},
         StateRow{"Automatic11", kBooted | kAutomaticActive, 0, N, D, W, W, N},
         StateRow{"AutomaticStopped15", kBooted | kAutomaticStopped, 0, N, W, D, W, N},
         StateRow{"AutomaticMalfunction17", kBooted | kSystemError | kAutomaticActive, 600, N, N, W, W, N},
@@ -610,9 +625,37 @@ TEST_F(FbPacCtrl, CancelEndsDoneInHomePositionWithAClass2ErrorLeft) {
     Execute(kReqCancel);
     Cycle(1);
     fromPac_ = StatusImage(kBooted | kSystemError, 150);  // 9
-    Cycle(1);
+    Cycle(kReadScans);
     EXPECT_TRUE(Done());
     EXPECT_EQ(ctrl_->SYSTEMERRORNUMBER.value, 150);
+}
+
+// Home position already shown at the edge: it may be a start's 10 or 30 (a start bit of the instance before a
+// PLC restart on its way). The bit goes out in the edge scan and stays out, Busy, until the controller has read
+// it (a Cancel at 0 cancels whatever mode started meanwhile); Done in that scan, the bit released with it.
+TEST_F(FbPacCtrl, CancelAndResetErrorInHomePositionAreDoneOnceTheirBitWasRead) {
+    for (auto request : {kReqCancel, kReqResetError}) {
+        SCOPED_TRACE(Name(request));
+        ctrl_ = PAC_FB(FB_PAC_CTRL);
+        rules_.Restart();
+        fromPac_ = StatusImage(kBooted | kSystemError, 150);
+        Cycle(1);
+        Execute(request);
+        Cycle(1);
+        const std::uint8_t bit = request == kReqCancel ? kCancel : kResetError;
+        EXPECT_EQ(Control(), bit) << "the bit goes out in the edge scan";
+        if (request == kReqResetError) fromPac_ = StatusImage(kBooted);
+        for (int i = 1; i < kReadScans; ++i) {
+            Cycle(1);
+            ASSERT_TRUE(Busy()) << "scan " << i << " after the edge";
+            ASSERT_EQ(Control(), bit) << "scan " << i;
+        }
+        Cycle(1);
+        EXPECT_TRUE(Done());
+        EXPECT_EQ(Control(), kIdle);
+        Release();
+        Cycle(1);
+    }
 }
 
 class FbPacCtrlLinkLost : public FbPacCtrl, public ::testing::WithParamInterface<BitCase> {};

@@ -401,12 +401,39 @@ protected:
     void SetUp() override { RecordProperty("bus", pac::test::Describe(GetParam())); }
 };
 
+// CANCEL and RESET ERROR are Done on no mode bit, which a start's one-cycle status shows too: only once
+// their bit has been out for the bus both ways and the controller's cycle (70 ms), then 7 more scans.
+bool ShownAsHome(Request r) { return r == kCancel || r == kResetError; }
+int ReadScans(const BusTiming& t) {
+    return static_cast<int>((std::chrono::milliseconds(70) + t.PlcCycle() - std::chrono::nanoseconds(1)) / t.PlcCycle()) + 7;
+}
+
+// The window for Done of `r` whose edge scan ran last: `extraCycles` transitional controller cycles, for
+// CANCEL and RESET ERROR not before their bit was read.
+ScanWindow DoneWindowOf(const CtrlSimPlc& plc, Request r, int extraCycles) {
+    ScanWindow w = plc.DoneWindow(extraCycles);
+    if (ShownAsHome(r)) {
+        w.min = std::max(w.min, ReadScans(plc.Timing()));
+        w.max = std::max(w.max, ReadScans(plc.Timing()));
+    }
+    return w;
+}
+
 // Runs `r`: Done in the scan window of `extraCycles` transitional controller cycles.
 ::testing::AssertionResult DoneInWindow(CtrlSimPlc& plc, Request r, int extraCycles) {
     const FinalOutcome f = plc.Run(r);
-    const ScanWindow w = plc.DoneWindow(extraCycles);
+    const ScanWindow w = DoneWindowOf(plc, r, extraCycles);
     if (f.Done() && w.Contains(f.Scans())) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << Name(r) << ": " << f << ", the protocol allows " << w;
+}
+
+// Runs CANCEL or RESET ERROR where the status word already shows its result: the bit goes out, Done exactly
+// when it has been read.
+::testing::AssertionResult DoneOnceRead(CtrlSimPlc& plc, Request r) {
+    const FinalOutcome f = plc.Run(r);
+    if (f.Done() && f.Scans() == ReadScans(plc.Timing())) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << Name(r) << ": " << f << ", expected Done " << ReadScans(plc.Timing())
+                                         << " scans after the edge";
 }
 
 // Runs `r`: decided in the edge scan, Done at once (errorId 0) or the error `errorId`.
@@ -496,7 +523,7 @@ TEST_P(CtrlSim, Class2ErrorIsResetInHomePosition) {
     EXPECT_TRUE(DecidedAtOnce(plc, kStartOnline, kErrNotAllowed));
     EXPECT_TRUE(DoneInWindow(plc, kResetError, 0));
     EXPECT_TRUE(plc.SettledAt(1));
-    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, 0));  // nothing left to reset
+    EXPECT_TRUE(DoneOnceRead(plc, kResetError));  // nothing left to reset
     EXPECT_TRUE(DoneInWindow(plc, kStartOnline, 1));
 }
 
@@ -524,12 +551,12 @@ TEST_P(CtrlSim, Class3ErrorIsClearedOnReturningHome) {
     EXPECT_TRUE(plc.SettledAt(39, 600));
     plc.Begin(kCancel);
     const FinalOutcome f = plc.WaitEnd(1000);
-    EXPECT_TRUE(f.Done() && plc.DoneWindow(0).Contains(f.Scans())) << f;
+    EXPECT_TRUE(f.Done() && DoneWindowOf(plc, kCancel, 0).Contains(f.Scans())) << f;
     EXPECT_FALSE(plc.Ctrl()->SYSTEMERROR.value) << "cleared in the reply that shows home position";
     EXPECT_EQ(plc.Ctrl()->SYSTEMERRORNUMBER.value, 0);
     plc.Release();
     EXPECT_TRUE(plc.SettledAt(1));
-    EXPECT_TRUE(DecidedAtOnce(plc, kResetError, 0));
+    EXPECT_TRUE(DoneOnceRead(plc, kResetError));
 
     ASSERT_TRUE(plc.Run(kStartAutomatic).Done());
     plc.Controller().RaiseSystemError(700);
@@ -578,7 +605,7 @@ TEST_P(CtrlSim, CtrlStartsOnlineAndCmdStopsIt) {
     EXPECT_TRUE(plc.SettledAt(31));
     ASSERT_TRUE(plc.Command(kCmdCancelOnline).Done());
     EXPECT_TRUE(plc.SettledAt(1));
-    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, 0));
+    EXPECT_TRUE(DoneOnceRead(plc, kCancel));
     EXPECT_EQ(plc.Controller().Counters().recognized - plc.Controller().Counters().Count(0x190B), 2u);
 }
 
@@ -702,9 +729,11 @@ std::vector<StateCase> States() {
     sim::PaControlConfig longMalfunctionProgram = Script(1, 1, 1, 1'000'000);
     //                      START_ONL START_AUT STOP CANCEL RESET
     return {
-        {"Home1", {}, run({}), 1, 0, W, W, N, D, D},
-        {"Home9Class2", {}, raise({}, 150, false), 9, 150, N, N, N, D, W},
-        {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, N, D, N},
+        // CANCEL and RESET ERROR in home position put their bit out until the controller has read it
+        // (DoneOnceRead, CancelAfterAPlcRestartWhileTheOldStartIsOnItsWayEndsInHomePosition).
+        {"Home1", {}, run({}), 1, 0, W, W, N, W, W},
+        {"Home9Class2", {}, raise({}, 150, false), 9, 150, N, N, N, W, W},
+        {"Home9Cpu", {}, raise({}, 42, false), 9, 42, R, R, N, W, N},
         {"Automatic11", {}, run({kStartAutomatic}), 11, 0, N, D, W, W, N},
         {"AutomaticStopped15", {}, run({kStartAutomatic, kStop}), 15, 0, N, W, D, W, N},
         {"AutomaticMalfunction18", longMalfunctionProgram, raise({kStartAutomatic}, 600, false), 18, 600,
@@ -799,7 +828,8 @@ TEST_P(CtrlSim, StartInManualOperationTimesOut) {
         EXPECT_EQ(plc.Controller().OperatingStatus(), 2);
     }
     EXPECT_TRUE(DecidedAtOnce(plc, kStop, kErrNotAllowed));
-    EXPECT_TRUE(DecidedAtOnce(plc, kCancel, 0));
+    plc.Ctrl()->TIMEOUT.value = pac::ToIecTime(10s);  // longer than the read of CANCEL's bit
+    EXPECT_TRUE(DoneOnceRead(plc, kCancel));
 }
 
 // A stop that takes longer than Timeout: 16#8009 at the exact scan, the stop bit released; the
@@ -1037,6 +1067,28 @@ TEST_P(CtrlSim, FreshInstanceAfterAPlcRestartStopsAndCancelsNothing) {
         }
         EXPECT_TRUE(plc.Shows(c.status));
         EXPECT_FALSE(plc.Ctrl()->INTEGERMODEACTIVE.value) << "the format in force is the old one";
+    }
+}
+
+// A start bit the instance before a PLC restart put out can still reach the controller after the new
+// instance's CANCEL edge (the bus latency): the controller takes the start and shows 30 or 10, which show no
+// mode bit like home position. The CANCEL must not be Done before the controller has read its own bit, which
+// cancels any mode started meanwhile: when it is Done, the controller is in home position and stays there.
+TEST_P(CtrlSim, CancelAfterAPlcRestartWhileTheOldStartIsOnItsWayEndsInHomePosition) {
+    for (Request start : {kStartOnline, kStartAutomatic}) {
+        CtrlSimPlc probe(GetParam());
+        const int roundTrip = probe.Window().RoundTripScans();
+        for (int restartAfter = 0; restartAfter <= roundTrip; ++restartAfter) {
+            SCOPED_TRACE(std::string(Name(start)) + ", PLC restart " + std::to_string(restartAfter) + " scans after its edge");
+            CtrlSimPlc plc(GetParam());
+            plc.Settle();
+            plc.Begin(start);
+            plc.Scan(restartAfter);
+            plc.RestartPlcProgram();
+            const FinalOutcome f = plc.Run(kCancel);
+            ASSERT_TRUE(f.Done()) << f;
+            EXPECT_TRUE(plc.SettledAt(1)) << "CANCEL Done, so the controller stays in home position";
+        }
     }
 }
 

@@ -7,7 +7,7 @@ addresses), never from CODESYS's declaration text, so what is read is what every
 Anything this reader does not know is an error, not a guess.
 """
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Optional
 
 from lxml import etree
@@ -54,8 +54,10 @@ class StObject:
     declaration: str
     body: Optional[str]
     members: str = ""  # its METHODs and ACTIONs as ST, after it (user programs)
-    xml_line: int = 0  # the object's element in the XML file
-    body_xml_line: int = 0  # the line of the XML file where its ST body starts (0: none)
+    # Where it stands in the XML file, for messages: not part of what the object is (compare=False), so the
+    # same objects read from two layouts of one export compare equal.
+    xml_line: int = field(default=0, compare=False)  # the object's element in the XML file
+    body_xml_line: int = field(default=0, compare=False)  # the line where its ST body starts (0: none)
 
     def st(self):
         """The object as the text of one ST file."""
