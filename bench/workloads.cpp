@@ -215,6 +215,9 @@ std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans) {
     auto cmd = PAC_FB(FB_PAC_CMD);
     CommandInputs libraryIn;
     CallLibrary(library, cmd, libraryIn, CycleCheckedCommand);
+    // The hand-written handshake knows no PLC cold start: the library's channel starts past its first
+    // handshake, the parked read (docs/fb/FB_PAC_Cmd.md, "After a PLC cold start").
+    library.CmdInterface()->CHANNEL.value.FIRSTREADDONE = TRUE;
     library.Start();
     pac::PacRig hand(timing);
     CmdHandshake hs;

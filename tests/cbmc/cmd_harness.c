@@ -9,7 +9,9 @@
  * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on (-DCBMC__BLIPS=0 leaves it
  * out), and a PLC restart (the interface and the command FBs back to their cold-start values, the program's
  * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
- * controller keeps a ledger of the commands it took; P5 matches every Done with an entry of its own.
+ * controller keeps a ledger of the commands it took; P5 matches every Done with an entry of its own. The channel
+ * starts past its first handshake (a program running since its cold start), so that the K scans go to commands;
+ * a PLC restart starts a fresh channel, whose first handshake is then checked.
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
@@ -71,6 +73,12 @@ typedef struct {
     BOOL ledgerClaimed[CBMC__K + 1]; /* an FB ended Done for it */
     BOOL processingLong;  /* it acknowledged a long command and has not ended it */
     int downSince;        /* restarting since this scan (0: running) */
+    BOOL restarted;       /* it restarted and has taken no command since */
+    BOOL lastStop;        /* the last command it took was a stop, */
+    BOOL lastStopSend;    /* with this SEND flag, */
+    WORD lastStopCode, lastStopParam; /* code, parameter */
+    DWORD lastStopData;   /* and data */
+    int retakenStops;     /* stops it took again from the same module after a restart (P7) */
     BOOL blip;            /* the PLC read an all-zero image in the scan before (a lost telegram) */
 } Controller;
 
@@ -92,6 +100,7 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->downSince = n;
         c->receive = nondet_bool() ? c->lastSend : FALSE; /* where RECEIVE starts again: 0 or the last SEND */
         c->processingLong = FALSE;
+        c->restarted = TRUE;
     }
     if (c->downSince != 0) {
         c->blip = FALSE;
@@ -137,7 +146,21 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
                 c->ledgerClaimed[c->ledger] = FALSE;
                 c->ledger++;
             }
-            if (!parked) c->taken++;
+            /* A stop stays on the module through any status 0, never withdrawn (docs/fb/FB_PAC_Cmd.md): a
+             * controller that took it, restarted before the PLC saw the acknowledgement and starts RECEIVE at 0
+             * takes it again from the same module. The library sent it once; a stop makes nothing move (and a
+             * controller back from a restart is in HOME POSITION): P7 counts it apart. */
+            const BOOL retaken = c->restarted && c->lastStop && IsStop(code) && code == c->lastStopCode
+                                 && Word(module, 4) == c->lastStopParam && Dword(module) == c->lastStopData
+                                 && send == c->lastStopSend;
+            c->restarted = FALSE;
+            c->lastStop = IsStop(code);
+            c->lastStopSend = send;
+            c->lastStopCode = code;
+            c->lastStopParam = Word(module, 4);
+            c->lastStopData = Dword(module);
+            if (retaken) c->retakenStops++;
+            if (!parked && !retaken) c->taken++;
             c->processingLong = IsLong(code);
         }
     }
@@ -226,6 +249,9 @@ int main(void) {
     FB_PAC_CMDINTERFACE_init__(&ifaceFresh, FALSE);
     ifaceFresh.TWOSTEPWRITE.value = twoStep;
     iface = ifaceFresh;
+    /* The program has run since its cold start: its channel is past the first handshake (the parked read, in
+     * step with the controller's RECEIVE 0). A PLC restart below starts a fresh channel (ifaceFresh). */
+    iface.CHANNEL.value.FIRSTREADDONE = TRUE;
     for (int i = 0; i < CBMC__CALLERS; ++i) {
         const Watch none = {0};
         watch[i] = none; /* a replay runs the harness more than once in one process */
@@ -327,7 +353,8 @@ int main(void) {
             if (called[i]) Check(&cmd[i], &watch[i], &ctrl, n, edge[i]);
             edges += watch[i].edges;
         }
-        /* P7: a toggle is one new command; the parked read aside, none goes out without an edge. */
+        /* P7: a toggle is one new command; the parked read aside, none goes out without an edge (a stop the
+         * controller took again after its restart aside, above). */
         __CPROVER_assert(ctrl.taken <= edges, "P7 no command sent without an Execute edge");
     }
     __CPROVER_assert(!reachDone, "reach: Done");
@@ -338,6 +365,8 @@ int main(void) {
     __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
 #if CBMC__BLIPS
     __CPROVER_assert(!reachBlipBusy, "reach: a single all-zero scan while a caller is Busy");
+    /* P7's exception is reached: its acknowledgement lost in an all-zero scan, then the restart. */
+    __CPROVER_assert(ctrl.retakenStops == 0, "reach: a stop taken again by a controller back from a restart");
 #else
     (void)reachBlipBusy;
 #endif

@@ -128,11 +128,14 @@ private:
     }
 
     // A SEND flag that changes to differ from the RECEIVE flag the PLC reads is a new command for the
-    // PA-CONTROL; bringing SEND back to RECEIVE (resynchronising) is none.
+    // PA-CONTROL; bringing SEND back to RECEIVE (resynchronising) is none, and neither is the parked read (190B
+    // without parameter or data, a read without effect), which the interface toggles after a cold start.
     void CountNewCommands() {
         const bool send = (module_[6] & kFlagBit) != 0;
         const bool receive = (replies_.Bytes()[6] & kFlagBit) != 0;
-        if (send != lastSend_ && send != receive) ++sent_;
+        bool parked = (module_[6] & 0x7FU) == 0x19 && module_[7] == 0x0B;
+        for (int i = 0; i < 6; ++i) parked = parked && module_[i] == 0;
+        if (send != lastSend_ && send != receive && !parked) ++sent_;
         lastSend_ = send;
         if (sent_ > edges_) {
             pac::fuzz::Violation("scan " + std::to_string(plc_.Task().ScanCount()) + ": " + std::to_string(sent_) +

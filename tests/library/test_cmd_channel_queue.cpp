@@ -29,6 +29,7 @@ protected:
     static constexpr int kFbs = 3;
 
     CmdChannelQueue() {
+        interface_->CHANNEL.value.FIRSTREADDONE = TRUE;  // past the cold start's first handshake (FbPacCmdColdStart)
         task_.AddProgram([this] {
             ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
             channel.FROMPAC.table[0] = channel.FROMPAC.table[1] = channel.FROMPAC.table[2] = 0;

@@ -209,10 +209,12 @@ TEST_P(CmdRecovery, RestartUnseenBehindFrozenInputsWhileEveryFbHoldsAnError) {
 }
 
 // Defect 1 at power-up: the controller's first reply may show RECEIVE = SEND with END OF PROCESSING 0
-// although nothing runs; the first command goes out in its edge scan and ends at the protocol minimum.
+// although nothing runs; once the cold start's parked read is acknowledged (D8), the first command goes out
+// in its edge scan and ends at the protocol minimum.
 TEST_P(CmdRecovery, FirstCommandAfterPowerUpGoesAtOnce) {
     SharedCmdPlc plc(GetParam(), 1, kBoot);
     plc.Plc().Rig().ScanUntil([&] { return plc.Fb(0)->OPSTATUS.value != 0; }, 100000);
+    plc.Plc().ScanPastFirstHandshake();
     plc.Controller().Io().intRegisters.SetInt(2, 22);
     plc.Set(0, code::kGetIntReg, 2);
     const FinalOutcome read = plc.Run(0);

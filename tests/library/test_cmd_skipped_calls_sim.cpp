@@ -5,7 +5,8 @@
 // as the interface is free. Each FB ends Done for its own command only, with its own answer, and the controller
 // took each command once. And a stop edged in the scan of another command's data (two-step write), called after
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
-// commands are on their way at once (issue 32, items 1 and 2).
+// commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
+// still on its way, and a single all-zero scan while a move is on its way.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -90,6 +91,16 @@ public:
     void Order(int first, int second) { order_ = {first, second}; }
     void Scan() { rig_.Scan(); }
     pac::PacRig& Rig() { return rig_; }
+    // A PLC cold start: the interface and both FBs back to their initial values, the program's call plan too;
+    // the bus still carries the modules the PLC wrote before.
+    void RestartPlc() {
+        auto& iface = rig_.CmdInterface();
+        const BOOL twoStep = iface->TWOSTEPWRITE.value;
+        iface = PAC_FB(FB_PAC_CMDINTERFACE);
+        iface->TWOSTEPWRITE.value = twoStep;
+        for (auto& fb : fbs_) fb = PAC_FB(FB_PAC_CMD);
+        called_[0] = called_[1] = true;
+    }
 
     // The commands the controller took since the last call, oldest first.
     std::vector<Command> Taken() {
@@ -232,6 +243,99 @@ TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandAtOnce) 
         }
     }
     EXPECT_GT(overtakenRuns, 0) << "the stop never took the interface between data and toggle";
+}
+
+// A long command the controller took while it still processed one: the reply before it showed neither END OF
+// PROCESSING nor COMMAND ERROR under RECEIVE = the SEND it had taken (issue 32, D8).
+int LongCommandsTakenWhileProcessing(pac::PacRig& rig) {
+    int n = 0;
+    const auto& records = rig.Controller().Log().Records();
+    for (std::size_t k = 1; k < records.size(); ++k) {
+        if (!records[k].newCommand) continue;
+        const auto f = pac::sim::CommandFrame::Decode(records[k].toPac.Cmd());
+        const auto before = records[k - 1].fromPac.Cmd();
+        if (f.code == code::kPosAxisAbsolute && before[5] != 0 && (before[6] & 0x60) == 0) ++n;
+    }
+    return n;
+}
+
+// D8, a PLC restart: the old program's command leaves with its toggle and the PLC restarts 0 to 4 scans later,
+// the module still on its way; the fresh program edges a write of its own in its first scan. Its FB may end
+// Done only for its own write, which the controller took once (before the fix: Done on the old command's
+// acknowledgement, the new write never executed).
+TEST_P(CmdSkippedCalls, AfterAPlcRestartTheFirstCommandIsNotDoneOnTheOldOnesAcknowledgement) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    std::uint32_t serial = 500;
+    for (int after = 0; after <= 4; ++after) {
+        for (int old = 0; old < 2; ++old) {  // an odd and an even number of commands before: either SEND flag
+            SCOPED_TRACE("PLC restart " + std::to_string(after) + " scans after the old command's edge, SEND " +
+                         std::to_string(old));
+            if (old == 1) ASSERT_TRUE(plc.RunAlone(0, {code::kPutIntReg, 3, serial++}));
+            const Command before{code::kPutIntReg, 1, serial++};
+            const Command own{code::kPutIntReg, 2, serial++};
+            plc.Taken();
+            plc.Set(0, before);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            for (int n = 0; n <= after; ++n) plc.Scan();
+            plc.RestartPlc();
+            plc.Set(0, own);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            int n = 0;
+            for (; n < 20000 && !plc.Final(0); ++n) plc.Scan();
+            ASSERT_TRUE(plc.Final(0)) << "Busy after " << n << " scans";
+            for (int k = 0; k < 40; ++k) plc.Scan();
+            const auto taken = plc.Taken();
+            EXPECT_LE(Count(taken, own), 1) << "taken once at most";
+            if (plc.Fb(0)->DONE.value) {
+                EXPECT_EQ(Count(taken, own), 1) << "Done for a write the controller never took";
+            }
+            EXPECT_EQ(plc.Rig().Controller().Io().intRegisters.GetInt(2) == static_cast<std::int32_t>(own.data),
+                      Count(taken, own) == 1);
+            plc.Fb(0)->EXECUTE.value = FALSE;
+            plc.Scan();
+        }
+    }
+}
+
+// D8, a single all-zero scan (a lost telegram: status 0, RECEIVE 0) 0 to 3 scans after a move's edge, while the
+// controller runs on: the move on its way is not taken back, and the next move, edged as soon as the first
+// FB ends, reaches the controller only after the first one's END OF PROCESSING (before the fix: the module
+// parked, the controller took the move late from the module on its way, and the second move went out into it).
+TEST_P(CmdSkippedCalls, AnAllZeroScanDoesNotWithdrawAMoveOnItsWay) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    float target = 1.0F;
+    for (int after = 0; after <= 3; ++after) {
+        SCOPED_TRACE("all-zero scan " + std::to_string(after) + " scans after the move's edge");
+        const Command first{code::kPosAxisAbsolute, 2, pac::test::BitsOf(target += 40.0F)};
+        const Command second{code::kPosAxisAbsolute, 2, pac::test::BitsOf(target += 40.0F)};
+        plc.Taken();
+        plc.Set(0, first);
+        plc.Fb(0)->EXECUTE.value = TRUE;
+        for (int n = 0; n < after; ++n) plc.Scan();
+        auto& link = plc.Rig().Bus().FromPacLink();
+        link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kAllZero);
+        int n = 0;
+        for (; n < 20 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
+        link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kNone);
+        for (n = 0; n < 200000 && !plc.Final(0); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Final(0));
+        plc.Set(1, second);
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        for (n = 0; n < 400000 && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Final(1));
+        for (n = 0; n < 400000 && plc.Rig().Controller().Processing(); ++n) plc.Scan();
+        const auto taken = plc.Taken();
+        EXPECT_LE(Count(taken, first), 1);
+        EXPECT_LE(Count(taken, second), 1);
+        EXPECT_EQ(LongCommandsTakenWhileProcessing(plc.Rig()), 0) << "a move went out into a move still running";
+        plc.Fb(0)->EXECUTE.value = FALSE;
+        plc.Fb(1)->EXECUTE.value = FALSE;
+        plc.Scan();
+        plc.Scan();
+    }
 }
 
 std::vector<SkipCase> SkipCases() {

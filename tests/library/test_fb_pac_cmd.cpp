@@ -45,6 +45,7 @@ class FbPacCmd : public pac::ScanTest {
 protected:
     FbPacCmd() {
         fromPac_ = Reply(false, false, true);
+        interface_->CHANNEL.value.FIRSTREADDONE = TRUE;  // past the cold start's first handshake (FbPacCmdColdStart)
         // A PLC program: the module into the channel, FB_PAC_CmdInterface, the command FB, the module out.
         task_.AddProgram([this] {
             ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
@@ -235,6 +236,8 @@ TEST_F(FbPacCmd, WithTwoStepWriteTheResyncWaitsAScanForTheParkedData) {
     EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "then its toggle";
 }
 
+// A reply with status 0 says nothing of RECEIVE (a restarting controller and a lost telegram look alike): the
+// module stays parked under its SEND flag, and SEND follows RECEIVE once the controller shows it ready.
 TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
     fromPac_ = Reply(false, false, true);
     Request(0x0906, 1, 7);
@@ -246,13 +249,16 @@ TEST_F(FbPacCmd, SendFlagFollowsReceiveFlagWhileTheControllerRestarts) {
     cmd_->EXECUTE.value = FALSE;
     fromPac_ = Reply(false, false, false, 0, 0);  // restarting: status 0, RECEIVE back to 0
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "parked: SEND = RECEIVE, harmless 190B";
-    EXPECT_EQ(interface_->RESYNCS.value, 1u);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "parked under its SEND flag: harmless 190B";
+    EXPECT_EQ(interface_->RESYNCS.value, 0u) << "no resynchronisation on a status-0 reply";
     fromPac_ = Reply(false, false, true);  // booted
     Request(0x1906, 2, 0);
     Cycle(1);
-    EXPECT_FALSE(SendFlag()) << "a reply within a round trip (1 scan here) of the resync is not trusted";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "SEND := RECEIVE over the parked module";
+    EXPECT_EQ(interface_->RESYNCS.value, 1u);
     EXPECT_TRUE(Busy());
+    Cycle(1);
+    EXPECT_FALSE(SendFlag()) << "a reply within a round trip (1 scan here) of the resync is not trusted";
     Cycle(1);
     EXPECT_TRUE(SendFlag()) << "then the next command is one clean toggle";
 }
@@ -323,16 +329,18 @@ TEST_F(FbPacCmd, ControllerRestartWhileWaitingForTheInterfaceIsAnError) {
     EXPECT_EQ((toPac_[6] & 0x7F) << 8 | toPac_[7], 0x190B) << "nothing was sent: the module stays parked";
 }
 
-// The parked module follows RECEIVE whichever value the controller last showed: here a reply with status 0
-// that still carries RECEIVE 1 (the link, not the controller, is gone).
+// The parked module follows RECEIVE whichever value the controller last showed, once it shows it ready: a
+// reply with status 0 that still carries RECEIVE 1 (the link, not the controller, is gone) changes nothing.
 TEST_F(FbPacCmd, ParkedModuleTakesASetReceiveFlagToo) {
     Cycle(1);
     ASSERT_FALSE(SendFlag());
     fromPac_ = Reply(true, false, false, 0, 0);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "SEND := RECEIVE = 1, harmless 190B";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "status 0: parked under its SEND flag";
     fromPac_ = Reply(true, false, true);
     Request(0x1906, 2, 0);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "SEND := RECEIVE = 1, harmless 190B";
     Cycle(1);
     EXPECT_FALSE(SendFlag()) << "the next command is one clean toggle, from 1 to 0";
 }
@@ -477,6 +485,7 @@ TEST_F(FbPacCmd, GoodCommandAfterCommandError) {
 class TwoFbPacCmd : public pac::ScanTest {
 protected:
     TwoFbPacCmd() {
+        interface_->CHANNEL.value.FIRSTREADDONE = TRUE;  // past the cold start's first handshake (FbPacCmdColdStart)
         task_.AddProgram([this] {
             ST_PAC_CMDCHANNEL& channel = interface_->CHANNEL.value;
             for (int i = 0; i < 8; ++i) channel.FROMPAC.table[i] = fromPac_[i];

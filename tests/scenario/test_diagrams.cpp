@@ -122,15 +122,20 @@ struct Lanes {
     std::map<std::string, std::string> waves;
 };
 
+// The level SEND toggles to in column `edge` ('1' or '0'; which one depends on the handshakes before, the cold
+// start's parked read among them).
+char Toggled(const Lanes& lanes, int edge) { return lanes.Becomes("SEND", '1', edge - 1) == edge ? '1' : '0'; }
+
 // The handshake as the manual and docs/fb/FB_PAC_Cmd.md give it: SEND toggles with Execute's edge, the
 // acknowledgement (RF = SEND) comes later, Done in the scan that sees it.
 TEST(Diagrams, TheCommandDiagramShowsTheHandshakeInItsOrder) {
     const Lanes ack("cmd_ack");
     const int edge = ack.Becomes("Execute", '1');
     ASSERT_GT(edge, 0) << "the diagram starts before the edge";
-    EXPECT_EQ(ack.Becomes("SEND", '1', 0), edge) << "SEND toggles in the edge scan";
+    const char sent = Toggled(ack, edge);
+    EXPECT_EQ(ack.Becomes("SEND", sent, edge - 1), edge) << "SEND toggles in the edge scan";
     EXPECT_EQ(ack.Becomes("Busy", '1'), edge);
-    const int acknowledged = ack.Becomes("RF", '1');
+    const int acknowledged = ack.Becomes("RF", sent, edge);
     EXPECT_GT(acknowledged, edge) << "the acknowledgement needs the bus and a controller cycle";
     EXPECT_EQ(ack.Becomes("Done", '1'), acknowledged);
     EXPECT_EQ(ack.Becomes("Busy", '0', edge), acknowledged);
@@ -139,12 +144,12 @@ TEST(Diagrams, TheCommandDiagramShowsTheHandshakeInItsOrder) {
     EXPECT_EQ(error.Becomes("KF", '1'), error.Becomes("Error", '1'));
     EXPECT_EQ(error.Becomes("Done", '1'), -1);
 
-    // A long command: acknowledged with BF 0 first (RF follows SEND, here toggled to 0), Done only when BF
-    // returns to 1.
+    // A long command: acknowledged with BF 0 first (RF follows SEND), Done only when BF returns to 1.
     const Lanes move("cmd_move");
     const int taken = move.Becomes("BF", '0');
     ASSERT_GT(taken, 0);
-    EXPECT_EQ(move.Becomes("RF", '0'), taken);
+    const int moveEdge = move.Becomes("Execute", '1');
+    EXPECT_EQ(move.Becomes("RF", Toggled(move, moveEdge), moveEdge), taken);
     EXPECT_EQ(move.Becomes("Done", '1'), move.Becomes("BF", '1', taken));
 }
 

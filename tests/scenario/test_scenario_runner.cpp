@@ -105,12 +105,13 @@ TEST(ScenarioRunner, DemoMeetsEveryExpectation) {
     EXPECT_EQ(run.report.Requests(), 2u);
     EXPECT_EQ(run.report.AxisJobs(), 5u);
     EXPECT_NE(out.find("Result: 16 steps, 7 commands, 2 mode requests, 5 axis jobs: all expectations met"), std::string::npos) << out;
-    // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4);
-    // the module is parked (190B, the SEND flag kept) in the scan that sees the reply.
-    EXPECT_NE(out.find("| 00 00 01 4D 00 03 89 06 |"), std::string::npos) << out;
-    EXPECT_NE(out.find("| 00 00 00 00 00 00 99 0B | 00 00 01 4D 00 01 A0 00 |"), std::string::npos) << out;
+    // N3 := 333 and its reply, byte for byte as in the corrected Interbus example of the manual (4.2.4) but for
+    // the SEND flag: 0 here, since the cold start's parked read (190B) went out with SEND 1 before it; the
+    // module is parked (190B, the SEND flag kept) in the scan that sees the reply.
+    EXPECT_NE(out.find("| 00 00 01 4D 00 03 09 06 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 00 00 00 00 00 00 19 0B | 00 00 01 4D 00 01 20 00 |"), std::string::npos) << out;
     // R1 = 640.0 is 44 20 00 00 (docs/manual_errata.md), printed as a REAL because the step expects one.
-    EXPECT_NE(out.find("| 44 20 00 00 00 01 A0 00 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| 44 20 00 00 00 01 20 00 |"), std::string::npos) << out;
     EXPECT_NE(out.find("AckData 640.0 (16#44200000): as expected"), std::string::npos) << out;
     EXPECT_NE(out.find("ErrorID 38 PAC_ERR_N_REGISTER \"inadmissible N register\""), std::string::npos) << out;
     // The power cycle: the reply drops to zero, the idle FB parks the module, the boot ends.
@@ -362,8 +363,9 @@ TEST(ScenarioRunner, WaitsScanWholePlcCyclesAndPrintOnlyChanges) {
     EXPECT_TRUE(run.report.Passed());
     const std::string& out = run.timeline.str();
     EXPECT_NE(out.find("wait 401 ms (101 scans)"), std::string::npos) << out;
-    // The first scan (booting: zeros) and the scan that sees the boot's reply; nothing changes after.
-    EXPECT_EQ(ScanLines(out), 2) << out;
+    // The first scan (booting: zeros), the scan that sees the boot's reply and toggles the cold start's parked
+    // read (190B, SEND 1), and the scan that sees its acknowledgement; nothing changes after.
+    EXPECT_EQ(ScanLines(out), 3) << out;
     // The boot ends at 10 ms; the PA-CONTROL's first cycle from then (10 ms cycles, the default) writes
     // its reply, which the first scan from then on reads (4 ms cycles, no latency): scan 3 at 12 ms.
     const Scenario& s = run.scenario;
@@ -372,7 +374,7 @@ TEST(ScenarioRunner, WaitsScanWholePlcCyclesAndPrintOnlyChanges) {
     const int scan = (firstReply + s.timing.plcCycleMs - 1) / s.timing.plcCycleMs;
     std::ostringstream line;
     line << std::setw(8) << scan * s.timing.plcCycleMs << std::setw(7) << scan
-         << " | 00 00 00 00 00 00 19 0B | 00 00 00 00 00 01 20 00 |";
+         << " | 00 00 00 00 00 00 99 0B | 00 00 00 00 00 01 20 00 |";
     EXPECT_NE(out.find(line.str()), std::string::npos) << line.str() << "\n" << out;
 }
 

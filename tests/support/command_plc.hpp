@@ -85,6 +85,11 @@ public:
     const pac::Trace& Trace() const { return trace_.Recording(); }
 
     void Scan(int n = 1) { rig_.Scan(n); }
+    // Scans until the channel's first handshake after the cold start, the parked read, is acknowledged:
+    // from then on a command goes out in its edge scan (docs/fb/FB_PAC_Cmd.md, after a PLC cold start).
+    void ScanPastFirstHandshake(int maxScans = 100000) {
+        for (int i = 0; i < maxScans && !rig_.Channel().FIRSTREADDONE; ++i) rig_.Scan();
+    }
     const BusTiming& Timing() const { return timing_; }
     PacRig& Rig() { return rig_; }
     pac::sim::PaControl& Controller() { return rig_.Controller(); }

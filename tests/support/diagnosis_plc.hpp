@@ -89,6 +89,8 @@ public:
     void Boot() {
         for (int i = 0; i < 100000 && !Controller().Booted(); ++i) Scan();
         Scan(3 + 2 * timing_.latency + timing_.jitterUs / 1000 / timing_.plcMs);
+        // Past the cold start's first handshake on the CMD interface (the parked read).
+        for (int i = 0; i < 100000 && !plc_.Channel().FIRSTREADDONE; ++i) Scan();
     }
 
     // Scans for `ms` of PLC time.
@@ -105,6 +107,8 @@ public:
             const auto& r = records[logRead_];
             if (!r.newCommand) continue;
             const auto frame = pac::sim::CommandFrame::Decode(r.toPac.Cmd());
+            // The parked read (190B without data) executes nothing: the first handshake after a cold start.
+            if (frame.code == 0x190B && frame.parameter == 0 && frame.data == 0) continue;
             seen_.push_back({r.time, frame.code, frame.parameter});
         }
         return seen_;

@@ -42,6 +42,7 @@ public:
     void Boot() {
         for (int i = 0; i < 100000 && !Controller().Booted(); ++i) plc_.Scan();
         plc_.Scan(3 + 2 * plc_.Timing().latency + plc_.Timing().jitterUs / 1000 / plc_.Timing().plcMs);
+        plc_.ScanPastFirstHandshake();
     }
 
     pac::FbInstance<FB_PAC_CMD>& Fb(int i) { return fbs_.at(static_cast<std::size_t>(i)); }
