@@ -60,7 +60,7 @@ const FreeCommand kReadB{code::kGetIntReg, pac::test::kFreeReadRegisters + 1, 0}
 class LateReplyPlc {
 public:
     LateReplyPlc(const LateCase& c, nanoseconds turnaround) : rig_(Timing(c), Config(), Port(c, turnaround)) {
-        rig_.CallWhen(cmd_, [this] { return !skipped_ || !skipped_(); }, [this] { After(); });
+        rig_.CallWhen(cmd_, [this] { return Calls(); }, [this] { After(); });
         for (int n = 0; n < 4; ++n) {
             rig_.Controller().Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
         }
@@ -108,6 +108,8 @@ public:
     // The last call's time, and whether it handed a request to the driver.
     nanoseconds LastCall() const { return lastCall_; }
     int Requests() const { return requests_; }
+    // The first scan that saw a byte of the controller on the wire; negative: none yet.
+    nanoseconds FirstReply() const { return firstReply_; }
 
 private:
     static pac::SerialRigTiming Timing(const LateCase& c) {
@@ -130,6 +132,11 @@ private:
         return port;
     }
 
+    bool Calls() {
+        if (firstReply_ < 0ns && rig_.Line().fromPac.Carrying(rig_.Now())) firstReply_ = rig_.Now();
+        return !skipped_ || !skipped_();
+    }
+
     void After() {
         lastCall_ = rig_.Now();
         if (cmd_->TXBUFFER.value.COUNT == 0) return;
@@ -147,34 +154,46 @@ private:
     std::size_t ledgerAtEdge_ = 0;
     nanoseconds lastCall_{0};
     int requests_ = 0;
+    nanoseconds firstReply_{-1};
 };
 
 const auto kTimings = ::testing::Values(LateCase{9600, 1, 10}, LateCase{38400, 2, 3},
                                         LateCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false});
 
 // The controller answers a read late, so that its reply is on the wire when the request's Timeout (1 s) runs
-// out, in some scan of the sweep; the driver holds RxBuffer in every other scan. The FB must not take a scan it
-// could not read for a quiet one: it waits for the reply, takes it (the late reply of a failed request counts)
-// and sends nothing while it comes in. A driver that holds the buffer that often must not stop the FB either.
+// out; the driver holds RxBuffer in every other scan. The sweep's turnarounds whose reply begins only after the
+// Timeout's last scan are left out: that reply is a lost one, the request goes again on a quiet line, and a
+// controller that slow answers every later request late as well (Timeout must cover a reply, the FB's page).
+// The FB must not take a scan it could not read for a quiet one: it waits for the reply, takes it (the late
+// reply of a failed request counts) and sends nothing while it comes in. A driver that holds the buffer that
+// often must not stop the FB either.
 class Rs232HeldRxBuffer : public ::testing::TestWithParam<LateCase> {};
 
 TEST_P(Rs232HeldRxBuffer, NoRequestWhileALateReplyComesIn) {
     int failing = 0;
     int cases = 0;
-    for (nanoseconds turnaround = 900ms; turnaround <= 1000ms; turnaround += 2ms) {
+    for (int phase = 0; phase < 2; ++phase) for (nanoseconds turnaround = 900ms; turnaround <= 1000ms; turnaround += 500us) {
         ++cases;
-        SCOPED_TRACE("controller turnaround " + std::to_string(turnaround.count() / 1000000) + " ms");
+        SCOPED_TRACE("controller turnaround " + std::to_string(turnaround.count() / 1000) + " us, held in the " +
+                     (phase == 0 ? "odd" : "even") + " scans");
         LateReplyPlc plc(GetParam(), turnaround);
-        plc.Rig().HoldRxBuffer([&plc] { return plc.Rig().Task().ScanCount() % 2 == 1; });
+        plc.Rig().HoldRxBuffer([&plc, phase] { return (plc.Rig().Task().ScanCount() + phase) % 2 == 1; });
         plc.LeadIn();
-        plc.Run(kReadA);
-        const bool ok = plc.Violations().empty() && plc.Cmd()->DONE.value &&
-                        plc.Cmd()->ACKDATA.value == pac::test::FreeReadAnswer(kReadA);
-        if (!ok) ++failing;
+        const nanoseconds edge = plc.Run(kReadA);
+        if (plc.FirstReply() > edge + 1s) {
+            --cases;
+            continue;
+        }
+        // The read ends (a controller this slow may make AUTO's first frames fail: 16#8001 then), and Done
+        // only with its register's value.
+        const bool final = plc.Cmd()->DONE.value || plc.Cmd()->ERROR.value;
+        const bool rightValue = !plc.Cmd()->DONE.value || plc.Cmd()->ACKDATA.value == pac::test::FreeReadAnswer(kReadA);
+        if (!plc.Violations().empty() || !final || !rightValue) ++failing;
         for (const std::string& v : plc.Violations()) ADD_FAILURE() << v;
-        EXPECT_TRUE(plc.Cmd()->DONE.value) << "ErrorID 16#" << std::hex << plc.Cmd()->ERRORID.value;
-        EXPECT_EQ(plc.Cmd()->ACKDATA.value, pac::test::FreeReadAnswer(kReadA));
+        EXPECT_TRUE(final);
+        EXPECT_TRUE(rightValue);
     }
+    EXPECT_GT(cases, 3) << "too few replies straddle the Timeout";
     EXPECT_EQ(failing, 0) << failing << " of " << cases << " turnarounds failed";
 }
 
@@ -256,7 +275,8 @@ TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitForRoomRanOut) {
             ok = ok && sent && plc.Cmd()->DONE.value && plc.Executed(kReadA) == 1;
             EXPECT_TRUE(plc.Cmd()->DONE.value) << "ErrorID 16#" << std::hex << plc.Cmd()->ERRORID.value;
         } else {
-            ok = ok && !sent && plc.Cmd()->ERROR.value && plc.Cmd()->ERRORID.value == 0x8011 && plc.Executed(kReadA) == 0;
+            ok = ok && !sent && plc.Cmd()->ERROR.value && plc.Cmd()->ERRORID.value == 0x8011 &&
+                 plc.Executed(kReadA) == 0;
             EXPECT_FALSE(sent) << "a request went out after its wait for room had run out";
             EXPECT_TRUE(plc.Cmd()->ERROR.value);
             EXPECT_EQ(plc.Cmd()->ERRORID.value, 0x8011);
