@@ -233,14 +233,16 @@ TEST_P(Rs232RestartLateReply, AFreshInstanceNeverTakesTheOldInstancesReply) {
 
 INSTANTIATE_TEST_SUITE_P(Timings, Rs232RestartLateReply, kTimings, LateCaseName);
 
-// The driver holds TxBuffer from the edge on (a port still busy with another program's bytes), and the
-// program leaves the FB out from the scan after the edge until a call `late` after it, which finds room.
-// Timeout (100 ms) bounds the wait for room on the clock: a call before it sends the read, which ends Done; a
-// call after it ends 16#8011 with nothing sent, so Busy ends in the first call after the bound the page states,
-// (Retries + 1) x 3 x Timeout + one request for AUTO's probe + EndTimeout, however long the FB was left out.
+// The driver holds TxBuffer from the edge on (a port still busy with another program's bytes), or RxBuffer
+// (so the fresh instance cannot see the line quiet before its first request), and the program leaves the FB
+// out from the scan after the edge until a call `late` after it, which finds the buffer free. Timeout (100 ms)
+// bounds each wait on the clock: a call before it sends the read, which ends Done; a call after it ends
+// 16#8011 (room) or 16#8012 (quiet line) with nothing sent, so Busy ends in the first call after the bound the
+// page states, (Retries + 1) x 3 x Timeout + one request for AUTO's probe + EndTimeout, however long the FB
+// was left out.
 class Rs232SkipPastTimeout : public ::testing::TestWithParam<LateCase> {};
 
-TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitForRoomRanOut) {
+TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitRanOut) {
     constexpr nanoseconds kTimeout = 100ms;
     constexpr nanoseconds kBound = 5 * 3 * kTimeout + 1s;
     const nanoseconds plcCycle = std::chrono::milliseconds(GetParam().plcMs);
@@ -251,15 +253,22 @@ TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitForRoomRanOut) {
     lates.push_back(kBound + plcCycle);
     lates.push_back(2 * kBound);
     int failing = 0;
-    for (const nanoseconds late : lates) {
-        SCOPED_TRACE("first call after the edge " + std::to_string(late.count() / 1000000) + " ms after it");
+    for (const bool quiet : {false, true}) for (const nanoseconds late : lates) {
+        SCOPED_TRACE(std::string(quiet ? "RxBuffer" : "TxBuffer") + " held, first call after the edge " +
+                     std::to_string(late.count() / 1000000) + " ms after it");
+        const std::uint16_t ranOut = quiet ? 0x8012 : 0x8011;
         LateReplyPlc plc(GetParam(), 0ns);
         plc.Cmd()->TIMEOUT.value = pac::ToIecTime(kTimeout);
         plc.Cmd()->ENDTIMEOUT.value = pac::ToIecTime(1s);
         plc.LeadIn();
-        nanoseconds edge = -1ns;  // the edge's scan holds TxBuffer too
+        nanoseconds edge = -1ns;  // the edge's scan holds the buffer too
         plc.LeaveOut([&] { return edge >= 0ns && plc.Rig().Now() > edge && plc.Rig().Now() < edge + late; });
-        plc.Rig().HoldTxBuffer([&] { return edge < 0ns || plc.Rig().Now() < edge + late; });
+        const auto held = [&] { return edge < 0ns || plc.Rig().Now() < edge + late; };
+        if (quiet) {
+            plc.Rig().HoldRxBuffer(held);
+        } else {
+            plc.Rig().HoldTxBuffer(held);
+        }
         plc.Edge(kReadA);
         plc.Rig().Scan();
         edge = plc.Rig().Now();
@@ -275,17 +284,17 @@ TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitForRoomRanOut) {
             ok = ok && sent && plc.Cmd()->DONE.value && plc.Executed(kReadA) == 1;
             EXPECT_TRUE(plc.Cmd()->DONE.value) << "ErrorID 16#" << std::hex << plc.Cmd()->ERRORID.value;
         } else {
-            ok = ok && !sent && plc.Cmd()->ERROR.value && plc.Cmd()->ERRORID.value == 0x8011 &&
+            ok = ok && !sent && plc.Cmd()->ERROR.value && plc.Cmd()->ERRORID.value == ranOut &&
                  plc.Executed(kReadA) == 0;
-            EXPECT_FALSE(sent) << "a request went out after its wait for room had run out";
+            EXPECT_FALSE(sent) << "a request went out after its wait had run out";
             EXPECT_TRUE(plc.Cmd()->ERROR.value);
-            EXPECT_EQ(plc.Cmd()->ERRORID.value, 0x8011);
+            EXPECT_EQ(plc.Cmd()->ERRORID.value, ranOut);
             EXPECT_EQ(plc.Executed(kReadA), 0);
         }
         EXPECT_FALSE(busyPastBound) << "Busy in the first call after the bound";
         if (!ok) ++failing;
     }
-    EXPECT_EQ(failing, 0) << failing << " of " << lates.size() << " skips failed";
+    EXPECT_EQ(failing, 0) << failing << " of " << 2 * lates.size() << " skips failed";
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkipPastTimeout, kTimings, LateCaseName);
