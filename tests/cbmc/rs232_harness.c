@@ -40,7 +40,6 @@
 #define CBMC__CMD_DATA 0x41480000u /* 12.5 */
 #endif
 
-
 /* The frames' texts as manual 3.3 composes them, written out here, independent of the FB's text functions: the
  * command's, also with PAR_1 in the leading-zero form the FB uses where a text's XOR would make its CHECK 0 or 3
  * (the same number: the controller executes the same command), and the probe's (the read 190B that goes first
@@ -71,11 +70,12 @@ typedef struct {
 /* The controller (manual 3.3, 3.3.1): it executes a frame whose CHECK it accepts and answers it with
  * SOH STX QUIT;BE;STATUS;ERROR;TYP_QUIT;Q_PAR ETX CHECK EOT; an EOT poll gets its last reply again, with BE 1
  * once the command ended (3.3.1: "another acknowledgement is requested"); before any reply, a poll gets none.
- * Its reading of the CHECK is free per run (NOTES of the manual's examples, docs/open_points.md): the XOR of the
- * text with or without ETX, "0" taken as not checked or not, a wrong CHECK answered with QUIT 16 (6.5) or
- * ignored, and the XOR of its own replies with or without ETX. A frame it accepts it may refuse with a command
- * error (20, 6.5: not carried out); the probe, a read, it always carries out. STATUS and Q_PAR are free digits
- * of each execution (the probe's Q_PAR is STATUS, as 190B reads it): two executions answer differently. */
+ * Its reading of the CHECK is free per run (the manual's examples agree with no single rule,
+ * docs/open_points.md): the XOR of the text with or without ETX, "0" taken as not checked or not, a wrong CHECK
+ * answered with QUIT 16 (6.5) or ignored, and the XOR of its own replies with or without ETX. A frame it
+ * accepts it may refuse with a command error (20, 6.5: not carried out); the probe, a read, it always carries
+ * out. STATUS and Q_PAR are free digits of each execution (the probe's Q_PAR is STATUS, as 190B reads it): two
+ * executions answer differently. */
 typedef struct {
     BOOL checkEtx, zeroUnchecked, ignoreBad, replyEtx;
     BOOL answered, running;
@@ -389,10 +389,11 @@ int main(void) {
             const int lengthCmd = sizeof CBMC__CMD_TEXT - 1, lengthZero = sizeof CBMC__CMD_TEXT_ZERO - 1;
             const int lengthProbe = sizeof PROBE_TEXT - 1;
             const BOOL zeroForm = FrameOf(tx, wrIdx0, written, CBMC__CMD_TEXT_ZERO, lengthZero);
-            const int kind = written == 1                                                  ? REQ_POLL
-                             : FrameOf(tx, wrIdx0, written, CBMC__CMD_TEXT, lengthCmd) || zeroForm ? REQ_COMMAND
-                             : FrameOf(tx, wrIdx0, written, PROBE_TEXT, lengthProbe)       ? REQ_PROBE
-                                                                                           : REQ_OTHER;
+            const BOOL command = FrameOf(tx, wrIdx0, written, CBMC__CMD_TEXT, lengthCmd) || zeroForm;
+            const int kind = written == 1 ? REQ_POLL
+                             : command    ? REQ_COMMAND
+                             : FrameOf(tx, wrIdx0, written, PROBE_TEXT, lengthProbe) ? REQ_PROBE
+                                                                                     : REQ_OTHER;
             __CPROVER_assert(kind != REQ_OTHER, "R4 a frame carries the command's text or the probe's");
             /* The CHECK digits between ETX and EOT (R1: the last byte is EOT). */
             const int textLength = kind == REQ_PROBE ? lengthProbe : zeroForm ? lengthZero : lengthCmd;
@@ -422,7 +423,8 @@ int main(void) {
                           && !cmd.ACKISREAL.value && !cmd.PACERROR.value;
                 }
             }
-            __CPROVER_assert(runs == 1, "L1 Done only if the controller executed the command's text once since the edge");
+            __CPROVER_assert(runs == 1,
+                             "L1 Done only if the controller executed the command's text once since the edge");
             __CPROVER_assert(runs != 1 || own, "L2 Done carries the answer of the command's own execution");
             if (runs == 1 && own) reachDoneExecuted = 1;
             if (polled) reachDoneAfterPoll = 1;
