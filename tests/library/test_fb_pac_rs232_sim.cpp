@@ -20,6 +20,7 @@
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"
 #include "real_bits.hpp"
+#include "rs232_case.hpp"
 #include "run_to_final.hpp"
 
 namespace {
@@ -113,11 +114,7 @@ public:
 
 private:
     static pac::SerialRigTiming Timing(const SerialTiming& t) {
-        pac::SerialRigTiming timing;
-        timing.plcCycle = std::chrono::milliseconds(t.plcMs);
-        timing.pacCycle = std::chrono::milliseconds(t.pacMs);
-        timing.format.baud = t.baud;
-        return timing;
+        return pac::test::Rs232RigTiming(pac::test::Rs232Case{t.baud, t.plcMs, t.pacMs});
     }
 
     pac::FbInstance<FB_PAC_RS232CMD> cmd_ = PAC_FB(FB_PAC_RS232CMD);

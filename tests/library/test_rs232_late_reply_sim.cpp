@@ -25,6 +25,7 @@
 #include "pac/sim/command_table.hpp"
 #include "pac/sim/serial_port.hpp"
 #include "pac/st_program.hpp"
+#include "rs232_case.hpp"
 
 namespace {
 
@@ -33,24 +34,9 @@ using std::chrono::nanoseconds;
 using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 
-struct LateCase {
-    int baud = 9600;
-    int plcMs = 1;
-    int pacMs = 10;
-    pac::sim::CheckVerification verify = pac::sim::CheckVerification::kXorText;
-    bool acceptZeroCheck = true;
-};
+using LateCase = pac::test::Rs232Case;
 
-std::string LateCaseName(const ::testing::TestParamInfo<LateCase>& info) {
-    const auto& c = info.param;
-    return std::to_string(c.baud) + "Baud_Plc" + std::to_string(c.plcMs) + "ms_Pac" + std::to_string(c.pacMs) + "ms" +
-           (c.verify == pac::sim::CheckVerification::kXorText ? "_XorText" : "_XorWithEtx") +
-           (c.acceptZeroCheck ? "_ZeroAccepted" : "_ZeroRefused");
-}
-
-void PrintTo(const LateCase& c, std::ostream* out) {
-    *out << c.baud << " baud, PLC " << c.plcMs << " ms, PA-CONTROL " << c.pacMs << " ms";
-}
+std::string LateCaseName(const ::testing::TestParamInfo<LateCase>& info) { return pac::test::Rs232CaseName(info.param); }
 
 const FreeCommand kReadA{code::kGetIntReg, pac::test::kFreeReadRegisters, 0};
 const FreeCommand kReadB{code::kGetIntReg, pac::test::kFreeReadRegisters + 1, 0};
@@ -59,7 +45,8 @@ const FreeCommand kReadB{code::kGetIntReg, pac::test::kFreeReadRegisters + 1, 0}
 // checks that no request goes to the controller while one of its replies is still on the wire.
 class LateReplyPlc {
 public:
-    LateReplyPlc(const LateCase& c, nanoseconds turnaround) : rig_(Timing(c), Config(), Port(c, turnaround)) {
+    LateReplyPlc(const LateCase& c, nanoseconds turnaround)
+        : rig_(pac::test::Rs232RigTiming(c), pac::test::Rs232RigConfig(), pac::test::Rs232RigPort(c, turnaround)) {
         rig_.CallWhen(cmd_, [this] { return Calls(); }, [this] { After(); });
         for (int n = 0; n < 4; ++n) {
             rig_.Controller().Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
@@ -112,26 +99,6 @@ public:
     nanoseconds FirstReply() const { return firstReply_; }
 
 private:
-    static pac::SerialRigTiming Timing(const LateCase& c) {
-        pac::SerialRigTiming timing;
-        timing.plcCycle = std::chrono::milliseconds(c.plcMs);
-        timing.pacCycle = std::chrono::milliseconds(c.pacMs);
-        timing.format.baud = c.baud;
-        return timing;
-    }
-    static pac::sim::PaControlConfig Config() {
-        pac::sim::PaControlConfig config;
-        config.modes.requireExternalStop = false;
-        return config;
-    }
-    static pac::sim::SerialPortConfig Port(const LateCase& c, nanoseconds turnaround) {
-        pac::sim::SerialPortConfig port;
-        port.verify = c.verify;
-        port.acceptZeroCheck = c.acceptZeroCheck;
-        port.turnaround = turnaround;
-        return port;
-    }
-
     bool Calls() {
         if (firstReply_ < 0ns && rig_.Line().fromPac.Carrying(rig_.Now())) firstReply_ = rig_.Now();
         return !skipped_ || !skipped_();
