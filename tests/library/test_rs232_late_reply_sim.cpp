@@ -2,12 +2,13 @@
 // "A noisy line" and "The calling contract"), scan by scan against the simulated PA-CONTROL, on the bus
 // timings and CHECK readings of the calling-contract suites:
 // - a reply that arrives while the Timeout of its request runs out, with a driver in a faster task that holds
-//   RxBuffer in every other scan: no request reaches the controller while its reply is on the wire, and the
-//   late reply ends the read Done with its register's value;
+//   RxBuffer in one or two scans of every two or three: no request reaches the controller while its reply is
+//   on the wire, and the read ends, Done only with its register's value;
 // - a PLC restart at every scan from the edge of a read to the end of its reply: the fresh instance's read
 //   ends Done with its own register's value, never the old instance's;
-// - an edge that finds no room in TxBuffer, the FB left out until a call some time later that finds room:
-//   after Timeout no request goes out (16#8011), and Busy ends within the bound the page states.
+// - an edge that finds no room in TxBuffer (or no quiet line), the FB left out until a call some time later
+//   that finds it: after Timeout no request goes out (16#8011, 16#8012), and Busy ends within the bound the
+//   page states.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -36,7 +37,9 @@ namespace code = pac::sim::code;
 
 using LateCase = pac::test::Rs232Case;
 
-std::string LateCaseName(const ::testing::TestParamInfo<LateCase>& info) { return pac::test::Rs232CaseName(info.param); }
+std::string LateCaseName(const ::testing::TestParamInfo<LateCase>& info) {
+    return pac::test::Rs232CaseName(info.param);
+}
 
 const FreeCommand kReadA{code::kGetIntReg, pac::test::kFreeReadRegisters, 0};
 const FreeCommand kReadB{code::kGetIntReg, pac::test::kFreeReadRegisters + 1, 0};
@@ -128,31 +131,37 @@ const auto kTimings = ::testing::Values(LateCase{9600, 1, 10}, LateCase{38400, 2
                                         LateCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false});
 
 // The controller answers a read late, so that its reply is on the wire when the request's Timeout (1 s) runs
-// out; the driver holds RxBuffer in every other scan. The sweep's turnarounds whose reply begins only after the
-// Timeout's last scan are left out: that reply is a lost one, the request goes again on a quiet line, and a
-// controller that slow answers every later request late as well (Timeout must cover a reply, the FB's page).
-// The FB must not take a scan it could not read for a quiet one: it waits for the reply, takes it (the late
-// reply of a failed request counts) and sends nothing while it comes in. A driver that holds the buffer that
-// often must not stop the FB either.
+// out; the driver holds RxBuffer in every other scan, or in two of every three. CheckRule is the controller's
+// own rule: in AUTO a controller this slow keeps AUTO's probe and its repetitions in flight together. The
+// sweep's turnarounds whose reply begins only after the Timeout's last scan are left out: that reply is a lost
+// one, the request goes again on a quiet line, and a controller that slow answers every later request late as
+// well (Timeout must cover a reply, the FB's page). The FB must not take a scan it could not read for a quiet
+// one: it waits for the reply, takes it (the late reply of a failed request counts) and sends nothing while it
+// comes in. A driver that holds the buffer that often must not stop the FB either.
 class Rs232HeldRxBuffer : public ::testing::TestWithParam<LateCase> {};
 
 TEST_P(Rs232HeldRxBuffer, NoRequestWhileALateReplyComesIn) {
     int failing = 0;
     int cases = 0;
-    for (int phase = 0; phase < 2; ++phase) for (nanoseconds turnaround = 900ms; turnaround <= 1000ms; turnaround += 500us) {
+    const auto controllersRule = GetParam().verify == pac::sim::CheckVerification::kXorText
+                                     ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
+                                     : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+    // The driver's schedules: free in one scan of every `period`, from scan `phase` on.
+    for (int period = 2; period <= 3; ++period) for (int phase = 0; phase < period; ++phase)
+    for (nanoseconds turnaround = 900ms; turnaround <= 1000ms; turnaround += 500us) {
         ++cases;
-        SCOPED_TRACE("controller turnaround " + std::to_string(turnaround.count() / 1000) + " us, held in the " +
-                     (phase == 0 ? "odd" : "even") + " scans");
+        SCOPED_TRACE("controller turnaround " + std::to_string(turnaround.count() / 1000) + " us, free in scan " +
+                     std::to_string(phase) + " of every " + std::to_string(period));
         LateReplyPlc plc(GetParam(), turnaround);
-        plc.Rig().HoldRxBuffer([&plc, phase] { return (plc.Rig().Task().ScanCount() + phase) % 2 == 1; });
+        plc.Cmd()->CHECKRULE.value = controllersRule;
+        plc.Rig().HoldRxBuffer([&plc, period, phase] { return (plc.Rig().Task().ScanCount() + phase) % period != 0; });
         plc.LeadIn();
         const nanoseconds edge = plc.Run(kReadA);
         if (plc.FirstReply() > edge + 1s) {
             --cases;
             continue;
         }
-        // The read ends (a controller this slow may make AUTO's first frames fail: 16#8001 then), and Done
-        // only with its register's value.
+        // The read ends, and Done only with its register's value.
         const bool final = plc.Cmd()->DONE.value || plc.Cmd()->ERROR.value;
         const bool rightValue = !plc.Cmd()->DONE.value || plc.Cmd()->ACKDATA.value == pac::test::FreeReadAnswer(kReadA);
         if (!plc.Violations().empty() || !final || !rightValue) ++failing;
