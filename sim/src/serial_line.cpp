@@ -79,4 +79,11 @@ std::vector<std::uint8_t> SerialWire::Receive(std::chrono::nanoseconds now) {
     return arrived;
 }
 
+bool SerialWire::Carrying(std::chrono::nanoseconds now) const {
+    for (const OnWire& b : onWire_) {
+        if (b.end > now) return b.end - characterTime_ <= now;
+    }
+    return false;
+}
+
 }  // namespace pac::sim

@@ -277,9 +277,14 @@ int main(void) {
     fresh.TXBUFFER.value.WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
     cmd = fresh;
     T_PAC_COMBUFFER *tx = &cmd.TXBUFFER.value, *rx = &cmd.RXBUFFER.value;
+    /* The program has called the FB idle on a quiet line since the PLC started, longer than any QuietTime: a
+     * fresh instance lets the line fall quiet for QuietTime from its first call before its first request (D10),
+     * and at K = 2 a first call with the edge would leave no scan for the reply. The instance after a PLC
+     * restart below is not called before its scan. */
+    FB_PAC_RS232CMD_body__(&cmd);
 
     for (int n = 1; n <= CBMC__K; ++n) {
-        __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        __CURRENT_TIME = __time_make(0, (long)(n + CBMC__TMAX) * CYCLE_NS);
         /* A PLC cold start: the FB instance and its rings back to their initial values; what the controller
          * still sends for a request of the instance before goes into the new RxBuffer. The request history of
          * R2 starts anew (the new instance cannot know of the old request). */

@@ -20,6 +20,7 @@
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"
 #include "real_bits.hpp"
+#include "rs232_case.hpp"
 #include "run_to_final.hpp"
 
 namespace {
@@ -113,11 +114,7 @@ public:
 
 private:
     static pac::SerialRigTiming Timing(const SerialTiming& t) {
-        pac::SerialRigTiming timing;
-        timing.plcCycle = std::chrono::milliseconds(t.plcMs);
-        timing.pacCycle = std::chrono::milliseconds(t.pacMs);
-        timing.format.baud = t.baud;
-        return timing;
+        return pac::test::Rs232RigTiming(pac::test::Rs232Case{t.baud, t.plcMs, t.pacMs});
     }
 
     pac::FbInstance<FB_PAC_RS232CMD> cmd_ = PAC_FB(FB_PAC_RS232CMD);
@@ -141,6 +138,8 @@ class Rs232Timing : public ::testing::TestWithParam<SerialTiming> {};
 
 TEST_P(Rs232Timing, WriteAndReadRegistersAtTheLinesPace) {
     SerialCmdPlc plc(GetParam());
+    // Called idle for QuietTime since the PLC started: the fresh instance's first request goes at its edge.
+    plc.Rig().Scan(50 / GetParam().plcMs + 1);
     const FinalOutcome write = plc.Run(0x0906, 3, static_cast<std::uint32_t>(-333));
     ASSERT_TRUE(write.Done()) << write;
     EXPECT_EQ(write.Scans(), plc.ReplyScans(RequestBytes("0906;3;0;-333"), ReplyBytes("0;1;1;0;0;-333")));

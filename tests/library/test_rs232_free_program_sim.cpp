@@ -27,6 +27,7 @@
 #include "pac/sim/serial_port.hpp"
 #include "pac/st_program.hpp"
 #include "real_bits.hpp"
+#include "rs232_case.hpp"
 
 namespace {
 
@@ -35,30 +36,17 @@ using pac::test::FreeCaller;
 using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 
-struct Rs232FreeCase {
-    int baud = 9600;
-    int plcMs = 1;
-    int pacMs = 10;
-    pac::sim::CheckVerification verify = pac::sim::CheckVerification::kXorText;
-    bool acceptZeroCheck = true;
-    std::uint64_t seed = 1;
-};
+using Rs232FreeCase = pac::test::Rs232Case;
 
 std::string Rs232FreeCaseName(const ::testing::TestParamInfo<Rs232FreeCase>& info) {
-    const auto& c = info.param;
-    return std::to_string(c.baud) + "Baud_Plc" + std::to_string(c.plcMs) + "ms_Pac" + std::to_string(c.pacMs) + "ms" +
-           (c.verify == pac::sim::CheckVerification::kXorText ? "_XorText" : "_XorWithEtx") +
-           (c.acceptZeroCheck ? "_ZeroAccepted" : "_ZeroRefused") + "_Seed" + std::to_string(c.seed);
-}
-
-void PrintTo(const Rs232FreeCase& c, std::ostream* out) {
-    *out << c.baud << " baud, PLC " << c.plcMs << " ms, PA-CONTROL " << c.pacMs << " ms, seed " << c.seed;
+    return pac::test::Rs232CaseName(info.param) + "_Seed" + std::to_string(info.param.seed);
 }
 
 class FreeRs232Program {
 public:
     explicit FreeRs232Program(const Rs232FreeCase& c)
-        : case_(c), rig_(Timing(c), Config(), Port(c)), random_(c.seed), caller_("FB_PAC_Rs232Cmd", random_, Odds(), log_) {
+        : case_(c), rig_(pac::test::Rs232RigTiming(c), pac::test::Rs232RigConfig(), pac::test::Rs232RigPort(c)),
+          random_(c.seed), caller_("FB_PAC_Rs232Cmd", random_, Odds(), log_) {
         rig_.CallWhen(cmd_, [this] { return Before(); }, [this] { After(); });
         for (int n = 0; n < 4; ++n) {
             rig_.Controller().Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
@@ -104,24 +92,6 @@ public:
     int EndedAfterSkip() const { return endedAfterSkip_; }
 
 private:
-    static pac::SerialRigTiming Timing(const Rs232FreeCase& c) {
-        pac::SerialRigTiming timing;
-        timing.plcCycle = std::chrono::milliseconds(c.plcMs);
-        timing.pacCycle = std::chrono::milliseconds(c.pacMs);
-        timing.format.baud = c.baud;
-        return timing;
-    }
-    static pac::sim::PaControlConfig Config() {
-        pac::sim::PaControlConfig config;
-        config.modes.requireExternalStop = false;
-        return config;
-    }
-    static pac::sim::SerialPortConfig Port(const Rs232FreeCase& c) {
-        pac::sim::SerialPortConfig port;
-        port.verify = c.verify;
-        port.acceptZeroCheck = c.acceptZeroCheck;
-        return port;
-    }
     static pac::test::FreeCallerOdds Odds() {
         pac::test::FreeCallerOdds odds;
         odds.newCommand = 4;

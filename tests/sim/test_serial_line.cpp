@@ -32,6 +32,19 @@ TEST(SerialLine, BytesArriveOneCharacterTimeApartAndInOrder) {
     EXPECT_TRUE(wire.Idle(30ms));
 }
 
+// A byte sent for later (a reply after the controller's turnaround) is on its way but not yet on the wire.
+TEST(SerialLine, CarryingOnlyFromTheStartBitToTheStopBit) {
+    SerialWire wire(SerialFormat{1200, 7, false, 1});  // 7.5 ms per character
+    wire.Send(10ms, Bytes{1, 2});
+    EXPECT_FALSE(wire.Carrying(5ms));
+    EXPECT_FALSE(wire.Idle(5ms));
+    EXPECT_TRUE(wire.Carrying(10ms));
+    EXPECT_TRUE(wire.Carrying(24ms));
+    EXPECT_FALSE(wire.Carrying(25ms));
+    EXPECT_EQ(wire.Receive(25ms), (Bytes{1, 2}));
+    EXPECT_FALSE(wire.Carrying(26ms));
+}
+
 TEST(SerialLine, SevenDataBitsClearTheTopBit) {
     SerialWire wire;
     wire.Send(0ms, Bytes{0xB1});

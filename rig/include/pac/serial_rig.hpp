@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "pac/fb_instance.hpp"
@@ -80,14 +81,25 @@ public:
             for (std::uint8_t byte : line_.fromPac.Receive(clock_.Now())) {
                 if (!com_ring::Put(fb->RXBUFFER.value, byte)) ++overruns_;
             }
+            // A driver in a faster task holds a buffer (Blocked) while the FB runs in the scans it says.
+            fb->RXBUFFER.value.BLOCKED = rxHeld_ && rxHeld_() ? 1 : 0;
+            fb->TXBUFFER.value.BLOCKED = txHeld_ && txHeld_() ? 1 : 0;
             if (called) {
                 fb();
                 if (after) after();
             }
+            fb->RXBUFFER.value.BLOCKED = 0;
+            fb->TXBUFFER.value.BLOCKED = 0;
             const std::vector<std::uint8_t> out = com_ring::TakeAll(fb->TXBUFFER.value);
             if (!out.empty()) line_.toPac.Send(clock_.Now(), out);
         });
     }
+
+    // The PLC's serial driver in a faster task (Tc2_SerialCom's Blocked): it holds the FB's receive or
+    // transmit buffer during the FB's call in the scans in which `held` returns TRUE (asked once a scan,
+    // before the call). The bytes still arrive; the FB finds them in its next call with the buffer free.
+    void HoldRxBuffer(std::function<bool()> held) { rxHeld_ = std::move(held); }
+    void HoldTxBuffer(std::function<bool()> held) { txHeld_ = std::move(held); }
 
     void Scan(int n = 1);
     // Scans until `predicate` holds after a scan; returns the scans run, or -1 after maxScans.
@@ -110,6 +122,8 @@ private:
     pac::sim::PacRunner runner_;
     pac::sim::SerialLine line_;
     std::uint64_t overruns_ = 0;
+    std::function<bool()> rxHeld_;
+    std::function<bool()> txHeld_;
 };
 
 }  // namespace pac

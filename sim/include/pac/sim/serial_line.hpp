@@ -45,6 +45,9 @@ public:
     std::vector<std::uint8_t> Receive(std::chrono::nanoseconds now);
     // Nothing on its way (every byte sent has arrived or been dropped by `now`).
     bool Idle(std::chrono::nanoseconds now) const { return lastEnd_ <= now; }
+    // A byte is on the wire at `now`: its start bit has begun and its stop bit has not ended (a byte sent for
+    // later, such as a reply after the controller's turnaround, is not yet on it).
+    bool Carrying(std::chrono::nanoseconds now) const;
     // When the last byte sent so far ends.
     std::chrono::nanoseconds LastEnd() const { return lastEnd_; }
 
