@@ -1133,6 +1133,8 @@ class Compiler:
         translated again outside their POU, where its own constants are out of reach."""
         if not self.user or _cls(node) in _INT_LITERALS | _BIT_LITERALS:
             return None
+        if _cls(node) == "UnaryOperation" and str(node.op) == "-" and _cls(node.expr) in _INT_LITERALS:
+            return None  # a negative literal (`INT := -1`) is portable, typed below as before
         if id(node) not in self.constant_inits:
             value = self.constant_int(node, earlier=True)
             if value is None:
