@@ -4,7 +4,8 @@ and line, on
   - an absolute path under a root that belongs to one machine (a home, a work or scratch folder, a mount);
     the system's own roots (/usr, /etc, /dev, /proc, /bin, /lib, /sys) are the same on every Debian 12
     and allowed: ./run looks for Debian's packages there;
-  - a path that climbs out of the repository: `../shared`, `${PROJECT_SOURCE_DIR}/..`, or a relative
+  - a path that climbs out of the repository: the folder of working material beside the clone (the
+    pattern below), `${PROJECT_SOURCE_DIR}/..`, or a relative
     Markdown link that resolves outside the repository or to nothing;
   - the name of working material that was never part of the repository (the manual's text file, the
     old reading notes and portable-subset file, the verdict corpus under its outside name, task briefs).
