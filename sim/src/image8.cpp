@@ -8,13 +8,6 @@ namespace pac::sim {
 
 namespace {
 
-void CheckRange(int offset, int width, const char* what) {
-    if (offset < 0 || offset + width > 8) {
-        throw std::out_of_range(std::string(what) + ": offset " + std::to_string(offset) +
-                                " outside the 8-byte image");
-    }
-}
-
 int HexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -24,33 +17,13 @@ int HexDigit(char c) {
 
 }  // namespace
 
-std::uint16_t ReadWord(const Image8& image, int word) {
-    CheckRange(word * 2, 2, "ReadWord");
-    return static_cast<std::uint16_t>((image[word * 2] << 8) | image[word * 2 + 1]);
+namespace detail {
+
+void ThrowImage8Offset(int offset, const char* what) {
+    throw std::out_of_range(std::string(what) + ": offset " + std::to_string(offset) + " outside the 8-byte image");
 }
 
-void WriteWord(Image8& image, int word, std::uint16_t value) {
-    CheckRange(word * 2, 2, "WriteWord");
-    image[word * 2] = static_cast<std::uint8_t>(value >> 8);
-    image[word * 2 + 1] = static_cast<std::uint8_t>(value & 0xFF);
-}
-
-std::uint32_t ReadDword(const Image8& image, int byteOffset) {
-    CheckRange(byteOffset, 4, "ReadDword");
-    std::uint32_t value = 0;
-    for (int i = 0; i < 4; ++i) {
-        value = (value << 8) | image[byteOffset + i];
-    }
-    return value;
-}
-
-void WriteDword(Image8& image, int byteOffset, std::uint32_t value) {
-    CheckRange(byteOffset, 4, "WriteDword");
-    for (int i = 3; i >= 0; --i) {
-        image[byteOffset + i] = static_cast<std::uint8_t>(value & 0xFF);
-        value >>= 8;
-    }
-}
+}  // namespace detail
 
 std::uint32_t FloatToBits(float value) {
     static_assert(sizeof(float) == 4, "IEEE single precision expected");

@@ -1,6 +1,7 @@
 // Per-axis state of the ONLINE commands (see online_axes.hpp and docs/sim_cmd.md).
 #include "pac/sim/online_axes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -49,31 +50,35 @@ void OnlineAxes::Supervise(std::chrono::nanoseconds now, AxisGroup& axes, const 
         for (Axis& a : axes_) a.limitMonitoring = true;
     }
     wasOnline_ = online;
-    for (int axis = 1; axis <= static_cast<int>(axes_.size()) && axis <= axes.Capacity(); ++axis) {
-        Axis& a = At(axis);
+    const int count = std::min(static_cast<int>(axes_.size()), axes.Capacity());
+    for (int axis = 1; axis <= count; ++axis) {
+        Axis& a = axes_[static_cast<std::size_t>(axis - 1)];
         ServoAxis& motion = axes.Motion(axis);
-        const bool running = motion.JobActive() || motion.Moving();
-        if (a.keepAliveUntil) {
-            if (!running) {
-                a.keepAliveUntil.reset();
-            } else if (now >= *a.keepAliveUntil) {
-                // 5.2.6.10: "If this command is not issued, the respective axis stays still."
-                motion.Interrupt(now);
-                a.keepAliveUntil.reset();
+        // Most axes have neither a manual traverse nor a condition: then their motion is not asked.
+        if (a.keepAliveUntil || a.activeCondition) {
+            const bool running = motion.JobActive() || motion.Moving();
+            if (a.keepAliveUntil) {
+                if (!running) {
+                    a.keepAliveUntil.reset();
+                } else if (now >= *a.keepAliveUntil) {
+                    // 5.2.6.10: "If this command is not issued, the respective axis stays still."
+                    motion.Interrupt(now);
+                    a.keepAliveUntil.reset();
+                }
             }
-        }
-        if (a.activeCondition) {
-            if (running) {
-                a.conditionSeenMoving = true;
-                if (!Holds(*a.activeCondition, elements)) {
-                    motion.Interrupt(now);  // 5.2.6.23: switching over the element terminates the movement
+            if (a.activeCondition) {
+                if (running) {
+                    a.conditionSeenMoving = true;
+                    if (!Holds(*a.activeCondition, elements)) {
+                        motion.Interrupt(now);  // 5.2.6.23: switching over the element terminates the movement
+                        a.activeCondition.reset();
+                    }
+                } else if (a.conditionSeenMoving) {
                     a.activeCondition.reset();
                 }
-            } else if (a.conditionSeenMoving) {
-                a.activeCondition.reset();
             }
         }
-        const double following = std::fabs(motion.FollowingError());
+        const double following = motion.FollowingErrorSize();
         if (following > a.maxFollowingError) a.maxFollowingError = following;
     }
 }

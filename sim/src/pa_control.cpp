@@ -180,8 +180,10 @@ void PaControl::ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds
 
 void PaControl::ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
     const AxisModuleContext context = ModuleContext(now);
+    // modules_ holds axisModules modules, axis k at k - 1 (the constructor): no range check per call.
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        Module(axis).Serve(toPac.Module12(layout_.AxisOffset(axis)), state_.axes.Motion(axis), context);
+        modules_[static_cast<std::size_t>(axis - 1)].Serve(toPac.Module12(layout_.AxisOffset(axis)),
+                                                           state_.axes.Motion(axis), context);
     }
 }
 
@@ -288,9 +290,9 @@ ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
     const AxisModuleContext context = ModuleContext(now);
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
+        const auto k = static_cast<std::size_t>(axis - 1);
         reply.SetModule12(layout_.AxisOffset(axis),
-                          automatic ? automaticReplies_[static_cast<std::size_t>(axis - 1)]
-                                    : Module(axis).Reply(state_.axes.Motion(axis), context));
+                          automatic ? automaticReplies_[k] : modules_[k].Reply(state_.axes.Motion(axis), context));
     }
     return reply;
 }

@@ -64,6 +64,11 @@ double ServoAxis::Target() const { return std::isnan(target_) ? CommandedPositio
 double ServoAxis::Velocity() const { return blocked_ ? 0.0 : CommandedVelocity(); }
 double ServoAxis::ActualSpeed() const { return std::fabs(Velocity()); }
 double ServoAxis::FollowingError() const { return CommandedMachine() - ActualMachine(); }
+double ServoAxis::FollowingErrorSize() const {
+    // Neither blocked nor disturbed, the actual position is the commanded one: c - (c + 0) is 0 exactly.
+    if (!blocked_ && disturbance_ == 0.0) return 0.0;
+    return std::fabs(FollowingError());
+}
 MotionPhase ServoAxis::Phase() const { return trajectory_.PhaseAt(Seconds()); }
 bool ServoAxis::Moving() const { return trajectory_.Moves(); }
 
@@ -109,16 +114,31 @@ void ServoAxis::Update(nanoseconds now) {
 void ServoAxis::Advance(nanoseconds now) {
     Update(now);
     settledAt_.reset();  // the caller changes the axis now: the next Update() must look for events again
+    eventKnown_ = false;
 }
 
 void ServoAxis::RunEventsUntil(nanoseconds until) {
+    // The event searched at an earlier time of the same state is the one a search now would find: the
+    // times come from the profile, and one is clamped to the search's time only when due at once, which
+    // a search that found nothing due up to now_ rules out for the rest.
     for (int k = 0; k < kMaxEventsPerCall; ++k) {
-        const auto event = NextEvent();
-        if (!event || event->time > until) return;
-        if (event->time > now_) now_ = event->time;
-        Handle(*event);
+        if (!eventKnown_) {
+            nextEvent_ = NextEvent();
+            eventKnown_ = !NextEventDependsOnPosition();
+        }
+        if (!nextEvent_ || nextEvent_->time > until) return;
+        const Event event = *nextEvent_;
+        eventKnown_ = false;  // handled: the state changes
+        if (event.time > now_) now_ = event.time;
+        Handle(event);
     }
     throw std::logic_error("ServoAxis: events do not settle");
+}
+
+bool ServoAxis::NextEventDependsOnPosition() const {
+    // Entering the reference cam is searched only while off it (EntersCamAhead): a search that reads the
+    // position is not kept.
+    return captureArmed_ || (activity_ == Activity::kHoming && homingStep_ == HomingStep::kSearch);
 }
 
 std::optional<nanoseconds> ServoAxis::WhenCommandReaches(double commanded) const {

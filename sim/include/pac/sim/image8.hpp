@@ -12,13 +12,41 @@ namespace pac::sim {
 
 using Image8 = std::array<std::uint8_t, 8>;
 
+namespace detail {
+[[noreturn]] void ThrowImage8Offset(int offset, const char* what);
+inline std::size_t Image8Field(int offset, int width, const char* what) {
+    if (offset < 0 || offset + width > 8) ThrowImage8Offset(offset, what);
+    return static_cast<std::size_t>(offset);
+}
+}  // namespace detail
+
+// Inline: the simulator encodes and decodes the CMD module in every cycle, and a call per field cost more
+// than the field.
+
 // Word n (0..3) of the image.
-std::uint16_t ReadWord(const Image8& image, int word);
-void WriteWord(Image8& image, int word, std::uint16_t value);
+inline std::uint16_t ReadWord(const Image8& image, int word) {
+    const std::size_t k = detail::Image8Field(word * 2, 2, "ReadWord");
+    return static_cast<std::uint16_t>((image[k] << 8) | image[k + 1]);
+}
+inline void WriteWord(Image8& image, int word, std::uint16_t value) {
+    const std::size_t k = detail::Image8Field(word * 2, 2, "WriteWord");
+    image[k] = static_cast<std::uint8_t>(value >> 8);
+    image[k + 1] = static_cast<std::uint8_t>(value & 0xFF);
+}
 
 // Dword at PAC byte offset 0..4 (the CMD data dword is at 0).
-std::uint32_t ReadDword(const Image8& image, int byteOffset);
-void WriteDword(Image8& image, int byteOffset, std::uint32_t value);
+inline std::uint32_t ReadDword(const Image8& image, int byteOffset) {
+    const std::size_t k = detail::Image8Field(byteOffset, 4, "ReadDword");
+    return static_cast<std::uint32_t>(image[k]) << 24 | static_cast<std::uint32_t>(image[k + 1]) << 16 |
+           static_cast<std::uint32_t>(image[k + 2]) << 8 | image[k + 3];
+}
+inline void WriteDword(Image8& image, int byteOffset, std::uint32_t value) {
+    const std::size_t k = detail::Image8Field(byteOffset, 4, "WriteDword");
+    image[k] = static_cast<std::uint8_t>(value >> 24);
+    image[k + 1] = static_cast<std::uint8_t>(value >> 16);
+    image[k + 2] = static_cast<std::uint8_t>(value >> 8);
+    image[k + 3] = static_cast<std::uint8_t>(value);
+}
 
 // IEEE-754 single precision, as the PA-CONTROL carries REAL values in a dword (manual 6.1).
 std::uint32_t FloatToBits(float value);

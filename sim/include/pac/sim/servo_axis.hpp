@@ -114,6 +114,7 @@ public:
     double Velocity() const;            // actual, signed
     double ActualSpeed() const;         // |Velocity()|
     double FollowingError() const;      // commanded - actual
+    double FollowingErrorSize() const;  // |FollowingError()|, without evaluating the profile where it is 0
     MotionPhase Phase() const;
     bool Moving() const;                // the trajectory generator runs (ANPOS2 st_still = 0)
     bool JobActive() const { return activity_ != Activity::kNone; }  // moving, homing, or not yet in position
@@ -177,6 +178,7 @@ private:
     void Advance(std::chrono::nanoseconds now);
     void RunEventsUntil(std::chrono::nanoseconds until);
     std::optional<Event> NextEvent() const;
+    bool NextEventDependsOnPosition() const;
     std::optional<std::chrono::nanoseconds> WhenCommandReaches(double commanded) const;
     std::optional<std::chrono::nanoseconds> WhenActualReaches(double actual) const;
     bool EntersCamAhead() const;
@@ -210,6 +212,11 @@ private:
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
     std::optional<std::chrono::nanoseconds> settledAt_;
     mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
+    // NextEvent() as last searched, while nothing has changed the axis since (eventKnown_): the times it
+    // finds follow from the profile and the settings alone, so a later search would find the same event
+    // (RunEventsUntil). Every change comes through Advance() or Handle(), which forget it.
+    bool eventKnown_ = false;
+    std::optional<Event> nextEvent_;
 
     // Motion: the running profile (machine coordinates), its start, the job's target (NaN: none yet).
     Trajectory trajectory_;
