@@ -1,7 +1,8 @@
 // Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
 // `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
 // hand-written C CMD handshake, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
-// to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind.
+// to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
+// `bench_table --only throughput,scale` prints only those sections.
 #include <sys/utsname.h>
 #include <unistd.h>
 
@@ -370,13 +371,25 @@ int main(int argc, char** argv) {
             std::printf("scans %d jobs %ld\n", r.scans, r.jobs);
             return 0;
         }
+        // `--only throughput,scale` prints only the sections named (scan-cost, throughput, scale, latency):
+        // the throughput and scale rows take a minute, the whole table much longer.
+        std::string only;
+        if (argc == 3 && std::string(argv[1]) == "--only") {
+            only = "," + std::string(argv[2]) + ",";
+        } else if (argc != 1) {
+            std::fprintf(stderr, "usage: bench_table [--only SECTION,...] | --workload W --scans N\n");
+            return 2;
+        }
+        const auto wanted = [&only](const char* section) {
+            return only.empty() || only.find("," + std::string(section) + ",") != std::string::npos;
+        };
         const std::string self = SelfPath();
         PrintMachine();
-        int failures = PrintScanCost(self);
-        PrintThroughput(self);
-        PrintScale();
-        failures += PrintLatency();
-        failures += PrintSharedRate();
+        int failures = 0;
+        if (wanted("scan-cost")) failures += PrintScanCost(self);
+        if (wanted("throughput")) PrintThroughput(self);
+        if (wanted("scale")) PrintScale();
+        if (wanted("latency")) failures += PrintLatency() + PrintSharedRate();
         std::printf("Load average at the end: %s\n", LoadAverage().c_str());
         return failures == 0 ? 0 : 1;
     } catch (const std::exception& e) {
