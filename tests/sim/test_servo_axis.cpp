@@ -439,6 +439,21 @@ TEST(ServoAxisLimits, MonitoringOffPerJobPassesTheSwitch) {
     EXPECT_EQ(axis.Jog(Ms(2100), Direction::kPositive, 1.0, kFull, JobOptions{false}), axis_error::kNone);
 }
 
+// The axis keeps the next event it found while nothing changes it (docs/sim_axis.md, "The model"): a switch
+// placed in the path of a move that has already run for many cycles must still stop it.
+TEST(ServoAxisLimits, ASwitchPlacedAheadDuringAMoveStopsIt) {
+    ServoAxis axis(ReferencedConfig());
+    ASSERT_EQ(axis.MoveAbsolute(Ms(0), 1000.0, kFull), axis_error::kNone);
+    for (int ms = 1; ms <= 500; ++ms) axis.Update(Ms(ms));  // at 450 units, no switch on the way
+    ServoAxisConfig withSwitch = axis.Config();
+    withSwitch.positiveLimitSwitch = 700.0;
+    axis.SetConfig(Ms(500), withSwitch);
+    for (int ms = 501; ms <= 1200; ++ms) axis.Update(Ms(ms));
+    EXPECT_EQ(axis.Position(), 700.0);  // reached at 750 ms: 50 + 1000 * 0.7
+    EXPECT_FALSE(axis.Moving());
+    EXPECT_EQ(axis.AxisError(), axis_error::kLimitSwitchActuated);
+}
+
 // ---- following error ----------------------------------------------------------------------------------
 
 TEST(ServoAxisFollowingError, BlockedAxisFaultsWhenTheLagReachesTheLimit) {
