@@ -731,7 +731,7 @@ class ExprCompiler:
 
     def _user_conversion(self, node, src, dst):
         """User mode: TIME to and from a number of milliseconds (TIME_TO_DINT, UDINT_TO_TIME: CODESYS and TwinCAT
-        count TIME in ms), and the 64-bit types' conversions."""
+        count TIME in ms), LTIME's (_ltime_converted), and the 64-bit types' conversions."""
         types = dict(T.ELEMENTARY, LTIME=T.LTIME, **T.USER_ELEMENTARY)
         for tname in (src, dst):
             if tname not in types or tname in ("STRING",) or tname not in ("TIME", "LTIME") and tname not in _CONVERTIBLE \
