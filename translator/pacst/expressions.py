@@ -144,8 +144,8 @@ class ExprCompiler:
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
         hint = ""
-        if te.type.is_elementary and target.is_elementary and (te.type.is_time and target.is_time or
-                                                               te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE):
+        convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
         else:
             hint = array_name_hint(te.type, target)
@@ -734,7 +734,7 @@ class ExprCompiler:
         count TIME in ms), LTIME's (_ltime_converted), and the 64-bit types' conversions."""
         types = dict(T.ELEMENTARY, LTIME=T.LTIME, **T.USER_ELEMENTARY)
         for tname in (src, dst):
-            if tname not in types or tname in ("STRING",) or tname not in ("TIME", "LTIME") and tname not in _CONVERTIBLE \
+            if tname not in types or tname == "STRING" or tname not in ("TIME", "LTIME") and tname not in _CONVERTIBLE \
                     and tname not in T.USER_ELEMENTARY:
                 raise self.err(node, f"unknown conversion {src}_TO_{dst}")
         if src == dst:
