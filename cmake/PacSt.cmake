@@ -169,6 +169,9 @@ function(pac_st_library target)
     set_source_files_properties("${mat}/layout_check.c" PROPERTIES GENERATED TRUE
                                 OBJECT_DEPENDS "${mat}/layout_expected.h;${mat}/POUS.h")
     target_include_directories(${target} PRIVATE "${mat}" "${MATIEC_LIB}/C" INTERFACE "${decl}")
+    # MATIEC's STRING (126 characters) in every file that sees these declarations, whichever copy of
+    # pacst_iec.h it includes first (the declarations' or the translator's)
+    target_compile_definitions(${target} INTERFACE PACST_MATIEC_STRING=1)
   endif()
   # IEC integer overflow wraps; C only promises that with -fwrapv.
   target_compile_options(${target} PRIVATE -fwrapv -Wno-unused-function -Wno-unused-variable

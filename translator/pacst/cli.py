@@ -136,6 +136,7 @@ def _declare(args):
         return 1
     outputs = {name: text for name, text in Emitter(comp, program).outputs(args.files).items() if name in names}
     outputs["layout_probe.c"] = layout.probe_source(program, args.files)
+    outputs["pacst_iec.h"] = layout.matiec_header(outputs["pacst_iec.h"])
     outputs.update(_tables(constants))
     write_outputs(args.out, outputs)
     # Beside MATIEC's POUS.h: a quoted include looks in the including file's folder first.

@@ -264,6 +264,9 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
+        if self.user and up == "LTIME":
+            self.dialect(token, "LTIME")
+            return T.LTIME
         if self.user and up == "BIT":  # TwinCAT packs a BIT member into its struct's bits: a BOOL here
             self.dialect(token, "BIT")
             return T.ELEMENTARY["BOOL"]
@@ -1153,7 +1156,8 @@ class Compiler:
             inner = _cls(node.expr)
             if inner not in _INT_LITERALS | {"Real"}:
                 raise self.err(node, "initial value must be a literal")
-        elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"}:
+        elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"} and \
+                not (cls == "Lduration" and self.user):
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
                 self.bare_enum_value(self.enum_values[_name(node.name).upper()], _name(node.name), node)
             elif self.qualified_enum_value(node) is not None:

@@ -65,7 +65,20 @@ def widens(source, target):
         return not source.is_signed and target.bits >= source.bits
     if source.is_int and target.is_real:
         return True
+    if source.is_time and target.is_time:  # TIME to LTIME
+        return target is T.LTIME
     return source.is_real and target.is_real and target.bits > source.bits
+
+
+def _ltime_converted(st, dt, code):
+    """User mode: LTIME to and from a number of nanoseconds (LTIME_TO_ULINT, LREAL_TO_LTIME), as TwinCAT and
+    CODESYS count it, unsigned; TIME_TO_LTIME exact, LTIME_TO_TIME to whole milliseconds, TIME's resolution."""
+    if st.is_time and dt.is_time:
+        return TE(dt, code if dt is T.LTIME else f"__time_from_ms(__time_to_ms({code}))")
+    if st.is_time:
+        return TE(dt, f"(__time_to_ns({code}) != 0u)" if dt.is_bool else f"(({dt.cname})__time_to_ns({code}))")
+    ns = f"(uint64_t)__real_to_i64({code})" if st.is_real else f"(uint64_t)({code})"
+    return TE(dt, f"__time_from_ns({ns})")
 
 
 class ExprCompiler:
@@ -129,10 +142,10 @@ class ExprCompiler:
             return f"(({target.cname})({te.code}))"
         if self.comp.user and widens(te.type, target):
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
-            return f"(({target.cname})({te.code}))"
+            return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
         hint = ""
-        if te.type.is_elementary and target.is_elementary and \
-                te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE:
+        convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
         else:
             hint = array_name_hint(te.type, target)
@@ -184,7 +197,7 @@ class ExprCompiler:
         cls = _cls(node)
         method = getattr(self, "_e_" + cls, None)
         if method is None:
-            if cls in ("Lduration", "Date", "DateTime", "TimeOfDay", "Ldate", "LdateTime", "LtimeOfDay"):
+            if cls in ("Date", "DateTime", "TimeOfDay", "Ldate", "LdateTime", "LtimeOfDay"):
                 raise self.err(node, f"{cls} literals are outside the portable subset")
             raise self.err(node, f"{cls} is outside the portable subset")
         return method(node, want)
@@ -243,6 +256,9 @@ class ExprCompiler:
         if self.comp.user and len(value) > user.STRING_CAPACITY:
             raise self.err(node, f"STRING literal of {len(value)} characters: a STRING holds at most "
                                  f"{user.STRING_CAPACITY}")
+        if self.comp.user and len(value) > user.MATIEC_STRING_CAPACITY:
+            self.comp.dialect(node, f"a STRING literal of {len(value)} characters (MATIEC's STRING holds "
+                                    f"{user.MATIEC_STRING_CAPACITY})")
         if not self.comp.user and len(value) > T.STRING_LITERAL_MAX:
             raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
                                  "the default STRING length of CODESYS and TwinCAT")
@@ -252,6 +268,16 @@ class ExprCompiler:
     def _e_Duration(self, node, want):
         line, col = pos(node)
         return TE(T.TIME, literals.time_c(literals.duration_ns(node, self.comp.file, line, col)))
+
+    def _e_Lduration(self, node, want):
+        """User mode: LTIME#1S2US44NS, exact to the nanosecond."""
+        if not self.comp.user:
+            raise self.err(node, "Lduration literals are outside the portable subset")
+        line, col = pos(node)
+        ns = literals.duration_ns(node, self.comp.file, line, col)
+        if not 0 <= ns < 2**64:
+            raise self.err(node, "an LTIME holds 0 to LTIME#213503D23H34M33S709MS551US615NS")
+        return TE(T.LTIME, literals.time_c(ns))
 
     def _e_ParenthesizedExpression(self, node, want):
         inner = self.expr(node.expr, want)
@@ -392,8 +418,8 @@ class ExprCompiler:
             raise self.err(node.op, f"TIME {op} {n.type.name}: a TIME is scaled by a number")
         self.comp.dialect(node.op, f"TIME {op} a number")
         if op == "/":
-            return TE(T.TIME, f"(({factor}) == 0.0 ? __time_make(0L, 0L) : __time_scale({t.code}, 1.0 / ({factor})))")
-        return TE(T.TIME, f"__time_scale({t.code}, {factor})")
+            return TE(t.type, f"(({factor}) == 0.0 ? __time_make(0L, 0L) : __time_scale({t.code}, 1.0 / ({factor})))")
+        return TE(t.type, f"__time_scale({t.code}, {factor})")
 
     def _fold(self, node, op, a, b):
         if op == "+":
@@ -557,7 +583,7 @@ class ExprCompiler:
 
     def _memory(self, node, fn):
         """User mode: ADR(x) (a POINTER TO x's type), SIZEOF(x or a type) in bytes as the C layout has them (a
-        STRING is 127 bytes here), MEMCPY / MEMMOVE / MEMSET (destAddr, srcAddr or fillByte, n: UDINT, the bytes
+        STRING is 256 bytes here), MEMCPY / MEMMOVE / MEMSET (destAddr, srcAddr or fillByte, n: UDINT, the bytes
         done), MEMCMP (pBuf1, pBuf2, n: DINT, -1, 0 or 1), __ISVALIDREF(r)."""
         self.comp.dialect(node, fn)
         if fn in ("ADR", "__ISVALIDREF"):
@@ -686,7 +712,7 @@ class ExprCompiler:
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
         if self.comp.user and "STRING" in (src, dst):
             return self._string_conversion(node, src, dst)
-        if self.comp.user and ("TIME" in (src, dst) or {src, dst} & set(T.USER_ELEMENTARY)):
+        if self.comp.user and ({"TIME", "LTIME"} & {src, dst} or {src, dst} & set(T.USER_ELEMENTARY)):
             return self._user_conversion(node, src, dst)
         for tname in (src, dst):
             if tname in T.OUTSIDE_SUBSET:
@@ -705,10 +731,10 @@ class ExprCompiler:
 
     def _user_conversion(self, node, src, dst):
         """User mode: TIME to and from a number of milliseconds (TIME_TO_DINT, UDINT_TO_TIME: CODESYS and TwinCAT
-        count TIME in ms), and the 64-bit types' conversions."""
-        types = dict(T.ELEMENTARY, **T.USER_ELEMENTARY)
+        count TIME in ms), LTIME's (_ltime_converted), and the 64-bit types' conversions."""
+        types = dict(T.ELEMENTARY, LTIME=T.LTIME, **T.USER_ELEMENTARY)
         for tname in (src, dst):
-            if tname not in types or tname in ("STRING",) or tname != "TIME" and tname not in _CONVERTIBLE \
+            if tname not in types or tname == "STRING" or tname not in ("TIME", "LTIME") and tname not in _CONVERTIBLE \
                     and tname not in T.USER_ELEMENTARY:
                 raise self.err(node, f"unknown conversion {src}_TO_{dst}")
         if src == dst:
@@ -717,6 +743,8 @@ class ExprCompiler:
         (arg,) = self._positional(node, 1, ["IN"])
         st, dt = types[src], types[dst]
         code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if T.LTIME in (st, dt):
+            return _ltime_converted(st, dt, code)
         if st.is_time:
             return TE(dt, f"(__time_to_ms({code}) != 0)" if dt.is_bool else f"(({dt.cname})__time_to_ms({code}))")
         if dt.is_time:

@@ -20,6 +20,13 @@ _ELEMENTARY = ["BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", 
 _STRUCTS = {"TIME": ["tv_sec", "tv_nsec"], "STRING": ["len", "body"]}
 
 
+def matiec_header(text):
+    """pacst_iec.h as the declarations of MATIEC's C include it: its STRING is MATIEC's (126 characters)."""
+    guard = "#define PACST_IEC_H\n"
+    assert guard in text
+    return text.replace(guard, guard + "#define PACST_MATIEC_STRING 1\n", 1)
+
+
 def matiec_type_name(t):
     """The C type name MATIEC gives an IEC type: named arrays become __ARRAY_OF_<element>_<count>."""
     if t.is_array:

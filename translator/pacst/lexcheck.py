@@ -7,6 +7,7 @@ tokens: their offsets and the comments are where it cuts a file into declaration
 """
 import re
 
+from . import durations
 from .errors import StError
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
@@ -150,6 +151,9 @@ def tokenize(text, file, comments=None, user=False):
                 # Typed literal or time literal: WORD#16#FF, INT#-5, T#1S500MS.
                 if word.upper() in _TIME_PREFIX:
                     lit = re.compile(r"#-?[0-9A-Za-z_.]+").match(text, m.end())
+                    finer = durations.finer_than_milliseconds(word, lit.group(0)) if user and lit else None
+                    if finer is not None:
+                        raise StError(file, line, col, finer)
                 else:
                     lit = re.compile(r"#-?[0-9][0-9A-Za-z_#.]*(?:[eE][+-]?[0-9_]+)?|#[A-Za-z_][A-Za-z0-9_]*").match(
                         text, m.end())

@@ -5,7 +5,7 @@ from fractions import Fraction
 from .errors import StError
 
 _NS = {"days": 86400 * 10**9, "hours": 3600 * 10**9, "minutes": 60 * 10**9, "seconds": 10**9,
-       "milliseconds": 10**6}
+       "milliseconds": 10**6, "microseconds": 10**3, "nanoseconds": 1}  # the last two: LTIME literals
 
 
 def int_value(node):

@@ -10,9 +10,10 @@ its column, so that errors, `#line` directives and coverage still name the user'
   subrange's range anywhere;
 - `RETURN(Done);` (CODESYS's conditional RETURN): `IF    (Done) THEN RETURN; END_IF;`, `RETURN` written over
   by `IF` and blanks, the rest of the statement after the `)`; `RETURN(Init := T <= 0);` (an assignment as its
-  condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`.
+  condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`;
+- `LTIME#1S2US44NS` (microseconds and nanoseconds after another unit): durations.py.
 """
-from . import lexcheck
+from . import durations, lexcheck
 from .errors import StError
 
 _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
@@ -67,6 +68,8 @@ def user_text(text, path):
                     name = text[tokens[k + 2].start:tokens[target].start].strip()
                     edits.append((tok.start, nxt.end, ""))
                     edits.append((tokens[close].start, tokens[close + 1].end, f"; IF {name} THEN RETURN; END_IF;"))
+    more, used = durations.long_time_edits(tokens)  # LTIME#1S2US44NS
+    edits, uses = sorted(edits + more), uses + used
     if not edits:
         return text, []
     out, at = [], 0

@@ -10,7 +10,7 @@ FORMAT = 1
 # sizeof of pacst_iec.h's elementary types (STRING: a length byte and STR_MAX_LEN bytes; TIME: two longs on
 # the LP64 hosts the runtime targets).
 _C_SIZES = {"BOOL": 1, "SINT": 1, "INT": 2, "DINT": 4, "USINT": 1, "UINT": 2, "UDINT": 4, "BYTE": 1,
-            "WORD": 2, "DWORD": 4, "REAL": 4, "LREAL": 8, "TIME": 16, "STRING": 127,
+            "WORD": 2, "DWORD": 4, "REAL": 4, "LREAL": 8, "TIME": 16, "STRING": 256,
             "LINT": 8, "ULINT": 8, "LWORD": 8}
 _DIRECTIONS = {"input": "input", "output": "output", "inout": "in_out", "var": "var", "temp": "temp"}
 

@@ -70,6 +70,10 @@ ELEMENTARY = {
 # The 64-bit types of user programs (pacst --user): TwinCAT and CODESYS have them, MATIEC's C does too.
 USER_ELEMENTARY = {t.name: t for t in [Elementary("LINT", "int", 64, True), Elementary("ULINT", "int", 64),
                                        Elementary("LWORD", "bit", 64)]}
+# LTIME of user programs: TwinCAT's and CODESYS's nanoseconds in 64 bits. pacst's TIME already counts
+# nanoseconds (two longs), so an LTIME is that C type too; a type of its own for ST's rules and conversions.
+LTIME = Elementary("LTIME", "time", 64)
+LTIME.cname = "TIME"
 BOOL = ELEMENTARY["BOOL"]
 INT = ELEMENTARY["INT"]
 DINT = ELEMENTARY["DINT"]

@@ -15,8 +15,10 @@ from .common import _cls, _name, pos
 from .errors import StError
 from .names import reserved_reason
 
-# The largest STRING pacst and MATIEC hold (STR_MAX_LEN of pacst_iec.h and of MATIEC's headers).
-STRING_CAPACITY = 126
+# The largest STRING of pacst's C (STR_MAX_LEN of pacst_iec.h): TwinCAT's T_MaxString, the longest string its
+# string functions take. MATIEC's STRING holds 126: a longer STRING(n) or literal is dialect there.
+STRING_CAPACITY = 255
+MATIEC_STRING_CAPACITY = 126
 # The namespaces of the standard library in TwinCAT (Tc2_Standard) and CODESYS (Standard): the standard FBs
 # and functions may be written Tc2_Standard.TON, Standard.LEN in user programs.
 STANDARD_NAMESPACES = {"TC2_STANDARD", "STANDARD"}
@@ -121,9 +123,11 @@ def string_length(comp, spec):
 def string_capacity(comp, spec, n):
     """`n`, when a STRING(n) holds it; else the refusal at `spec`."""
     if not 1 <= n <= STRING_CAPACITY:
-        raise comp.err(spec, f"STRING({n}): pacst's and MATIEC's STRING hold 1 to {STRING_CAPACITY} characters; "
-                             f"declare STRING({STRING_CAPACITY}) or shorter where the program's texts fit (a "
-                             f"T_MaxString, STRING(255), too), or leave the POU out of the program tested")
+        raise comp.err(spec, f"STRING({n}): pacst's STRING holds 1 to {STRING_CAPACITY} characters, as many as "
+                             f"TwinCAT's string functions take (T_MaxString); declare STRING({STRING_CAPACITY}) or "
+                             "shorter where the program's texts fit, or leave the POU out of the program tested")
+    if n > MATIEC_STRING_CAPACITY:
+        comp.dialect(spec, f"STRING({n}) (MATIEC's STRING holds {MATIEC_STRING_CAPACITY} characters)")
     return n
 
 

@@ -30,6 +30,10 @@ class MatiecHostBuild(build.HostBuild):
         self.mat = os.path.join(out, "matiec")
         self.c_dir = os.path.join(self.mat, "c")
 
+    def _flags(self, cxx):
+        # the natives' C++ and the host take MATIEC's STRING (126 characters), not pacst's (pacst_iec.h)
+        return super()._flags(cxx) + ["-DPACST_MATIEC_STRING=1"]
+
     def tasks(self):
         """pacst matiec's task list: each PROGRAM in its task, the wiring's cycle as the TASK's interval and
         the task's place in the wiring file as its priority (the host calls the programs itself)."""

@@ -39,8 +39,14 @@ typedef struct {
     long tv_nsec;
 } IEC_TIMESPEC;
 typedef IEC_TIMESPEC TIME;
-/* MATIEC's STRING: a length and room for 126 bytes. */
+/* A STRING: a length and room for STR_MAX_LEN bytes. pacst's C holds 255 characters, TwinCAT's longest
+ * string its string functions take (T_MaxString); the declarations of MATIEC's C (pacst declare) and every
+ * file of a MATIEC build define PACST_MATIEC_STRING, for MATIEC's STRING of 126 (docs/translator.md). */
+#ifdef PACST_MATIEC_STRING
 #define STR_MAX_LEN 126
+#else
+#define STR_MAX_LEN 255
+#endif
 typedef struct {
     uint8_t len;
     uint8_t body[STR_MAX_LEN];
@@ -429,6 +435,14 @@ static inline int64_t __time_to_ms(TIME t) {
 }
 static inline TIME __time_from_ms(int64_t ms) {
     return __time_make((long)(ms / 1000), (long)((ms % 1000) * 1000000));
+}
+/* LTIME (user programs) is a TIME here too, converted to and from nanoseconds as TwinCAT and CODESYS count
+ * it: unsigned 64 bits (LTIME_TO_ULINT, ULINT_TO_LTIME). */
+static inline uint64_t __time_to_ns(TIME t) {
+    return (uint64_t)t.tv_sec * 1000000000u + (uint64_t)t.tv_nsec;
+}
+static inline TIME __time_from_ns(uint64_t ns) {
+    return __time_make((long)(ns / 1000000000u), (long)(ns % 1000000000u));
 }
 static inline TIME __time_scale(TIME t, double factor) {
     double ns = ((double)t.tv_sec * 1e9 + (double)t.tv_nsec) * factor;
