@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import user
+from . import system, user
 
 
 
@@ -255,6 +255,8 @@ class Compiler:
 
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
+        if self.user and system.is_system(name) and "." in name:  # __SYSTEM.TYPE_CLASS, __SYSTEM.AnyType
+            return system.system_type(self, name.split(".", 1)[1], token)
         if self.user and "." in name:
             name = self.strip_namespace(name, token)
             self.dialect(token, f"the namespace in '{_name(token)}'")
@@ -589,6 +591,10 @@ class Compiler:
                     self.enum_shared[up] = [e for e in self.enum_shared[up] if e is not None]
                 else:
                     self.enum_values[up] = t
+        elif cls == "SimpleTypeDeclaration" and self.user:
+            self._declare_global(decl.name, "type")
+            self.types[_name(decl.name).upper()] = user.alias(self, decl)
+            return
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
         elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \

@@ -2,7 +2,7 @@
 import dataclasses
 import re
 
-from . import literals
+from . import literals, system
 from . import types as T
 from . import user
 from .common import TE, _cls, _name, pos
@@ -270,6 +270,10 @@ class ExprCompiler:
 
     def _value_of(self, node):
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
+        known = system.enum_value(self.comp, node) if self.comp.user and (
+            self.body is None or self.body.lookup(_name(getattr(node.name, "name", node.name))) is None) else None
+        if known is not None:  # __SYSTEM.TYPE_CLASS.TYPE_INT
+            return TE(known[0], known[0].cvalue(known[1]))
         name = _name(node.name) if _cls(node) == "SimpleVariable" else None
         if name is not None and (self.body is None or self.body.lookup(name) is None) \
                 and name.upper() in self.comp.enum_values:
@@ -492,6 +496,9 @@ class ExprCompiler:
             return self._conversion(node, m.group(1), m.group(2))
         if self.comp.user and up in _MATH and up not in self.comp.pous:
             return self._math(node, up, want)
+        if self.comp.user and up in ("__NEW", "__DELETE"):
+            raise self.err(node, f"{up} inside an expression: TwinCAT takes __NEW in an assignment only "
+                                 "(p := __NEW(T)), __DELETE as a statement (__DELETE(p);)")
         if self.comp.user and up in _MEMORY and up not in self.comp.pous and self.body is not None:
             return self._memory(node, up)
         m = re.fullmatch(r"TO_([A-Z]+)", up)

@@ -336,3 +336,18 @@ def external(comp, pou, block):
         if g.constant and not constant:
             raise comp.err(item.name, f"the global {g.gvl.name}.{g.name} is CONSTANT: declare VAR_EXTERNAL CONSTANT")
         pou.externals[name.upper()] = (g, constant)
+
+
+def alias(comp, decl):
+    """The type an alias `TYPE T_Type : __SYSTEM.TYPE_CLASS; END_TYPE` (or `: INT`, `: POINTER TO ST_Data`, `: E_Mode`)
+    names: the alias is another name of it, as in TwinCAT (a value of the type and of the alias is the same). An
+    alias with an initial value of its own, or that EXTENDS, is refused."""
+    init = decl.init
+    if decl.extends is not None:
+        raise comp.err(decl, f"type alias {_name(decl.name)} with EXTENDS: extend a STRUCT or a FUNCTION_BLOCK")
+    if getattr(init, "value", None) is not None:
+        raise comp.err(init.value, f"type alias {_name(decl.name)} with an initial value of its own: pacst takes an "
+                                   "alias as another name of its type; give the variables the initial value")
+    t = comp._spec_type(init.spec, allow_fb=False)
+    comp.dialect(decl, "a type alias")
+    return t
