@@ -136,11 +136,29 @@ class BodyCompiler:
             call = copy.copy(proto)
             call.cfunc = f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, \"{where}\"))->{proto.cname}"
             return f"({r.read()}).inst", call
+        if r.type.kind == "interface":  # a PROPERTY through the instance's table
+            return self._interface_property(r, last)
         pou = getattr(r.type, "pou", None) if r.type.is_fb else None
         m = getattr(pou, table).get(_name(last.field.name).upper()) if pou is not None else None
         if m is None:
             return None
         return f"&({r.read()})", m
+
+    def _interface_property(self, r, last):
+        """(the instance, the PROPERTY) of `itf.X`, X a PROPERTY of the INTERFACE r's type, its Get and Set called
+        through the table of the instance's FB."""
+        prop = r.type.properties.get(_name(last.field.name).upper())
+        if prop is None:
+            raise self.err(last, f"INTERFACE {r.type.name} has no METHOD or PROPERTY '{_name(last.field.name)}'")
+        line, col = pos(last)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        through = dict(prop)
+        for kind in ("get", "set"):
+            if prop[kind] is not None:
+                through[kind] = copy.copy(prop[kind])
+                through[kind].cfunc = (f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, "
+                                       f"\"{where}\"))->{prop[kind].cname}")
+        return f"({r.read()}).inst", through
 
     # ------------------------------------------------------------------ variable access
     def _root(self, token):
@@ -798,6 +816,9 @@ class BodyCompiler:
                 te = self.ex.expr(p.value, fv.type)
                 value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))
                 pre.append(f"{ind}__PACST_SETP({member}, , {value});")
+            elif fv.constant:  # VAR_IN_OUT CONSTANT (user mode): read only, a value may be passed
+                te = self.ex.expr(p.value, fv.type)
+                pre.append(f"{ind}{member}.value = {self.ex.coerce(te, fv.type, p.value, 'argument')};")
             else:
                 arg = self.ref(p.value)
                 if arg.type is not fv.type:

@@ -93,6 +93,10 @@ class ExprCompiler:
             if pou is None or target not in pou.interfaces:
                 raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
             return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
+        if te.type.kind == "interface" and target.kind == "interface" and target in te.type.bases:
+            # an INTERFACE's variable given to one of a base's type: the instance's table for the base
+            return (f"(({target.cname}){{({te.code}).inst, ({te.code}).vt != NULL ? ({te.code}).vt->{target.cname}__BASE "
+                    ": NULL})")
         if te.type.is_pointer and target.is_pointer and self.comp.user:
             return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
@@ -795,6 +799,19 @@ class ExprCompiler:
             raise self.err(p, f"'{pname}' is an output: use =>")
         return v
 
+    def _constant_inout(self, arg, v):
+        """The C pointer a VAR_IN_OUT CONSTANT is given: a variable's address, or (as TwinCAT takes a literal or an
+        expression there) the address of a one-element array holding the value, alive during the call."""
+        if _cls(arg) in ("SimpleVariable", "MultiElementVariable") and self.body.property_target(arg) is None:
+            ref = self.body.ref(arg)
+            if ref.type is not v.type:
+                raise self.err(arg, f"type mismatch: {ref.type.name} passed to VAR_IN_OUT CONSTANT '{v.name}' of type "
+                                    f"{v.type.name}")
+            if getattr(ref, "whole", None) is None:  # a bit has no address: its value is passed
+                return f"&({ref.read()})"
+        value = self.coerce(self.expr(arg, v.type), v.type, arg, "argument")
+        return f"(({v.type.cname}[]){{{value}}})"
+
     def _user_call(self, node, pou, this=None):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
@@ -838,6 +855,9 @@ class ExprCompiler:
                 if v.section == "inout":
                     raise self.err(node, f"VAR_IN_OUT '{v.name}' of {pou.name} must be passed")
                 args.append(f"&({v.type.cname}){{0}}")
+                continue
+            if v.section == "inout" and v.constant and self.body is not None:  # VAR_IN_OUT CONSTANT (user mode)
+                args.append(self._constant_inout(arg, v))
                 continue
             ref = self.body.ref(arg) if self.body is not None else None
             if ref is None:
