@@ -812,6 +812,8 @@ class BodyCompiler:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
                 post.append(ind + target.write(_limited(target.var, f"{member}.value", target.suffix)))
+            elif fv.section == "input" and getattr(fv.type, "any", False):  # an ANY input (user mode)
+                pre.append(f"{ind}__PACST_SETP({member}, , {system.any_argument(self.ex, p.value, fv)});")
             elif fv.section == "input":
                 te = self.ex.expr(p.value, fv.type)
                 value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))

@@ -257,6 +257,8 @@ class Compiler:
         name = _name(token)
         if self.user and system.is_system(name) and "." in name:  # __SYSTEM.TYPE_CLASS, __SYSTEM.AnyType
             return system.system_type(self, name.split(".", 1)[1], token)
+        if self.user and name.upper() == "ANY":  # a VAR_INPUT of any type: a __SYSTEM.AnyType
+            return system.any_type(self, token)
         if self.user and "." in name:
             name = self.strip_namespace(name, token)
             self.dialect(token, f"the namespace in '{_name(token)}'")
@@ -1085,6 +1087,9 @@ class Compiler:
 
     def _check_section(self, pou, section, constant, vtype, item):
         """Whether a variable of type `vtype` may stand in this block of `pou`."""
+        if getattr(vtype, "any", False) and section != "input":
+            raise self.err(item, "ANY is the type of a VAR_INPUT only (as in TwinCAT); declare a __SYSTEM.AnyType to "
+                                 "keep what one was given")
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:

@@ -97,6 +97,8 @@ class ExprCompiler:
             # an INTERFACE's variable given to one of a base's type: the instance's table for the base
             return (f"(({target.cname}){{({te.code}).inst, ({te.code}).vt != NULL ? ({te.code}).vt->{target.cname}__BASE "
                     ": NULL})")
+        if self.comp.user and system.same_struct(te.type, target):  # an ANY input to a __SYSTEM.AnyType
+            return te.code
         if te.type.is_pointer and target.is_pointer and self.comp.user:
             return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
@@ -848,6 +850,8 @@ class ExprCompiler:
                                 else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
                     if v.init is not None:
                         args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
+                elif getattr(v.type, "any", False):  # an ANY input (user mode)
+                    args.append(system.any_argument(self, arg, v))
                 else:
                     args.append(self.coerce(self.expr(arg, v.type), v.type, arg, "argument"))
                 continue

@@ -55,6 +55,69 @@ def system_type(comp, name, node):
     return t
 
 
+def any_type(comp, node):
+    """The type of a VAR_INPUT of type ANY (user mode): TwinCAT passes it as a __SYSTEM.AnyType, which the POU
+    reads (`Value.TypeClass`, `Value.pValue`, `Value.diSize`) or assigns to one; a call gives any variable or value
+    (any_argument)."""
+    anytype = system_type(comp, "AnyType", node)
+    t = comp.types.get(f"{NAMESPACE}__ANY")
+    if t is None:
+        t = T.StructType("ANY")
+        t.members = anytype.members
+        t.cname = anytype.cname  # the same C struct: declared once, as __SYSTEM.AnyType
+        t.any = True
+        comp.types[f"{NAMESPACE}__ANY"] = t
+    comp.dialect(node, "ANY")
+    return t
+
+
+def same_struct(source, target):
+    """Whether an ANY goes to a __SYSTEM.AnyType (or back) as it is: the same C struct."""
+    return source.is_struct and target.is_struct and source.cname == target.cname == f"{NAMESPACE}__ANYTYPE"
+
+
+# TYPE_CLASS of the elementary types an ANY input is given
+_CLASS_OF = {"BOOL": "TYPE_BOOL", "BYTE": "TYPE_BYTE", "WORD": "TYPE_WORD", "DWORD": "TYPE_DWORD", "LWORD": "TYPE_LWORD",
+             "SINT": "TYPE_SINT", "INT": "TYPE_INT", "DINT": "TYPE_DINT", "LINT": "TYPE_LINT", "USINT": "TYPE_USINT",
+             "UINT": "TYPE_UINT", "UDINT": "TYPE_UDINT", "ULINT": "TYPE_ULINT", "REAL": "TYPE_REAL",
+             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "TIME": "TYPE_TIME"}
+
+
+def _class_of(t):
+    if t.is_pointer:
+        return "TYPE_REFERENCE" if t.reference else "TYPE_POINTER"
+    if t.is_enum:
+        return "TYPE_ENUM"
+    if t.is_array:
+        return "TYPE_ARRAY"
+    return _CLASS_OF.get(t.name, "TYPE_USERDEF")
+
+
+def any_argument(ex, arg, pin):
+    """C of the __SYSTEM.AnyType an ANY input `pin` is given for `arg`: the address of the variable (of a copy of
+    a value, alive during the call), its size in bytes and its type class."""
+    comp, body = ex.comp, ex.body
+    if _cls(arg) in ("SimpleVariable", "MultiElementVariable") and body is not None \
+            and body.property_target(arg) is None and enum_value(comp, arg) is None:
+        r = body.ref(arg)
+        if getattr(r, "whole", None) is None:  # not a bit of a variable, which has no address
+            if same_struct(r.type, pin.type):
+                return r.read()  # an ANY passed on
+            where, t = f"&({r.read()})", r.type
+            return _descriptor(comp, pin, where, t)
+    te = ex.expr(arg, None)
+    t = ex.default_type(te, None) if te.type.kind in ("anyint", "anyreal") else te.type
+    if t.is_fb:
+        raise comp.err(arg, f"an ANY input is given a variable or a value, not a {t.name} instance here")
+    return _descriptor(comp, pin, f"(({t.cname}[]){{{ex.coerce(te, t, arg)}}})", t)
+
+
+def _descriptor(comp, pin, address, t):
+    cls = system_type(comp, "TYPE_CLASS", pin.node)
+    return (f"(({pin.type.cname}){{(__PTR_BYTE)(void *)({address}), (DINT)sizeof({t.cname}), "
+            f"{cls.cvalue(_class_of(t))}}})")
+
+
 def enum_value(comp, node):
     """(EnumType, value) of `__SYSTEM.TYPE_CLASS.TYPE_INT` (a MultiElementVariable), or None for another name."""
     if _cls(node) != "MultiElementVariable" or node.name.dereferenced or not is_system(_name(node.name.name)):
