@@ -804,13 +804,12 @@ class ExprCompiler:
     def _constant_inout(self, arg, v):
         """The C pointer a VAR_IN_OUT CONSTANT is given: a variable's address, or (as TwinCAT takes a literal or an
         expression there) the address of a one-element array holding the value, alive during the call."""
-        if _cls(arg) in ("SimpleVariable", "MultiElementVariable") and self.body.property_target(arg) is None:
-            ref = self.body.ref(arg)
+        ref = system.variable(self, arg)
+        if ref is not None:
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to VAR_IN_OUT CONSTANT '{v.name}' of type "
                                     f"{v.type.name}")
-            if getattr(ref, "whole", None) is None:  # a bit has no address: its value is passed
-                return f"&({ref.read()})"
+            return f"&({ref.read()})"
         value = self.coerce(self.expr(arg, v.type), v.type, arg, "argument")
         return f"(({v.type.cname}[]){{{value}}})"
 

@@ -12,6 +12,7 @@
 """
 from . import types as T
 from .common import _cls, _name, pos
+from .errors import StError
 
 NAMESPACE = "__SYSTEM"
 # The type classes in their order: each one's number is its index (CODESYS's library Base Interfaces, TypeClass).
@@ -93,18 +94,28 @@ def _class_of(t):
     return _CLASS_OF.get(t.name, "TYPE_USERDEF")
 
 
+def variable(ex, arg):
+    """The Ref of the variable `arg` names, when it is one with an address (no PROPERTY, bit, enumeration value
+    or constant of a type); else None, and the argument is a value."""
+    if _cls(arg) not in ("SimpleVariable", "MultiElementVariable") or ex.body is None \
+            or ex.body.property_target(arg) is not None or enum_value(ex.comp, arg) is not None:
+        return None
+    try:
+        r = ex.body.ref(arg)
+    except StError:
+        return None  # an enumeration value, a named value: passed as a value
+    return r if getattr(r, "whole", None) is None else None
+
+
 def any_argument(ex, arg, pin):
     """C of the __SYSTEM.AnyType an ANY input `pin` is given for `arg`: the address of the variable (of a copy of
     a value, alive during the call), its size in bytes and its type class."""
-    comp, body = ex.comp, ex.body
-    if _cls(arg) in ("SimpleVariable", "MultiElementVariable") and body is not None \
-            and body.property_target(arg) is None and enum_value(comp, arg) is None:
-        r = body.ref(arg)
-        if getattr(r, "whole", None) is None:  # not a bit of a variable, which has no address
-            if same_struct(r.type, pin.type):
-                return r.read()  # an ANY passed on
-            where, t = f"&({r.read()})", r.type
-            return _descriptor(comp, pin, where, t)
+    comp = ex.comp
+    r = variable(ex, arg)
+    if r is not None:
+        if same_struct(r.type, pin.type):
+            return r.read()  # an ANY passed on
+        return _descriptor(comp, pin, f"&({r.read()})", r.type)
     te = ex.expr(arg, None)
     t = ex.default_type(te, None) if te.type.kind in ("anyint", "anyreal") else te.type
     if t.is_fb:
