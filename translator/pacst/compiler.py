@@ -1355,6 +1355,11 @@ class Compiler:
             pairs = _struct_elements(node.init if cls == "InitializedStructure" else node)
         else:
             pairs = None
+        if pairs is None and self.user:  # `Error : T_Error := GVL_Errors.ERR_NO_ERROR;`
+            named = user.constant_aggregate(self, node, t)
+            if named is not None:
+                self.dialect(node, "an initial value that is a global constant array or struct")
+                return self._aggregate_init(t, named, target)
         if pairs is not None:
             out = []
             for name, value in pairs:

@@ -58,6 +58,11 @@ _TWINCAT_TRANSLATED = {"__ISVALIDREF", "__NEW", "__DELETE", "__SYSTEM"}
 _TWINCAT_OPERATORS = {
     "__QUERYINTERFACE": "not translated; assign the instance to a variable of the INTERFACE and call through it",
     "__QUERYPOINTER": "not translated; assign the instance to a variable of the INTERFACE and call through it",
+    "__TRY": "exception handling (__TRY, __CATCH, __FINALLY, __ENDTRY) is not translated: the test runtime stops the "
+             "test at the ST line of a fault; keep the code between __TRY and __CATCH",
+    "__CATCH": "exception handling is not translated: keep the code between __TRY and __CATCH",
+    "__FINALLY": "exception handling is not translated: keep the code between __TRY and __CATCH",
+    "__ENDTRY": "exception handling is not translated: keep the code between __TRY and __CATCH",
 }
 
 def _check_underscores(digits, file, line, col):

@@ -351,3 +351,18 @@ def alias(comp, decl):
     t = comp._spec_type(init.spec, allow_fb=False)
     comp.dialect(decl, "a type alias")
     return t
+
+
+def constant_aggregate(comp, node, t):
+    """The initial value of the global CONSTANT array or struct of type `t` that the initial value `node` names
+    (`GVL_Errors.ERR_NO_ERROR`, or the name alone), or None: the variable is given the same value, the constant's
+    own initial value translated again where the variable is initialised."""
+    g = None
+    if _cls(node) == "SimpleVariable":
+        g = lookup_global(comp, node.name)
+    elif _cls(node) == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
+            and _cls(node.elements[0].field) == "SimpleVariable" and _name(node.name.name).upper() in comp.gvls:
+        g = comp.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+    if g is None or not g.constant or g.type is not t or g.init is None:
+        return None
+    return g.init
