@@ -817,11 +817,7 @@ class Compiler:
         <Property> in a .TcIO and its <Get> and <Set>): a prototype for each accessor, a slot `X__GET` / `X__SET`
         of the table."""
         name, _, part = _name(node.name).partition(".")
-        rt = node.return_type
-        if rt is None:
-            raise self.err(node, f"PROPERTY {name} needs its type")
-        pt = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-            self._resolve_type(rt, allow_fb=False)
+        pt = self._property_type(node, name)
         up = name.upper()
         known = t.properties.setdefault(up, {"name": name, "type": pt, "get": None, "set": None})
         if known["type"] is not pt:
@@ -830,13 +826,8 @@ class Compiler:
         if kinds is None:
             raise self.err(node.name, f"PROPERTY {_name(node.name)}: the parts of a PROPERTY are Get and Set")
         for kind in kinds:
-            proto = Pou("function", name, self.file, node)
+            proto = self._accessor(node, name, kind, pt)
             proto.cname = f"{up}__{kind.upper()}"
-            proto.accessor = kind
-            if kind == "get":
-                proto.ret = pt
-            else:
-                proto.vars.append(T.Var(name, "input", pt, None, node.name))
             known[kind] = proto
             t.protos[proto.cname] = proto
 
@@ -888,6 +879,24 @@ class Compiler:
             m.inherited_from = base
         return members
 
+    def _accessor(self, node, name, kind, t):
+        """The Get (returning the PROPERTY's value) or the Set (taking it as its input) of the PROPERTY `name`."""
+        m = Pou("function", name, self.file, node)
+        m.accessor = kind
+        if kind == "get":
+            m.ret = t
+        else:
+            m.vars.append(T.Var(name, "input", t, None, node.name))
+        return m
+
+    def _property_type(self, node, name):
+        """The type of the PROPERTY `name` whose declaration or accessor is `node`."""
+        rt = node.return_type
+        if rt is None:
+            raise self.err(node, f"PROPERTY {name} needs its type")
+        return self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+
     def _property(self, owner, node, inherited):
         """User mode: a PROPERTY: `X` declares it (TwinCAT's <Property>), `X.Get` and `X.Set` are its accessors
         (a body of `X` alone is its Get): C functions `<FB>__<X>__GET(FB *, EN, ENO)` returning the value and
@@ -895,11 +904,8 @@ class Compiler:
         other."""
         name, _, part = _name(node.name).partition(".")
         self.dialect(node, f"PROPERTY {name}")
+        t = self._property_type(node, name)
         rt = node.return_type
-        if rt is None:
-            raise self.err(node, f"PROPERTY {name} needs its type")
-        t = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-            self._resolve_type(rt, allow_fb=False)
         up = name.upper()
         known = owner.properties.get(up)
         if known is None:
@@ -915,14 +921,9 @@ class Compiler:
             return None
         if known[kind] is not None and not inherited:
             raise self.err(node.name, f"PROPERTY {name} has two {kind.capitalize()}s")
-        m = Pou("function", name, self.file, node)
+        m = self._accessor(node, name, kind, t)
         m.owner = owner
         m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
-        m.accessor = kind
-        if kind == "get":
-            m.ret = t
-        else:
-            m.vars.append(T.Var(name, "input", t, None, node.name))
         for block in node.declarations:
             self._var_block(m, block)
         known[kind] = m
