@@ -821,7 +821,7 @@ class Compiler:
         up = name.upper()
         known = t.properties.setdefault(up, {"name": name, "type": pt, "get": None, "set": None})
         if known["type"] is not pt:
-            raise self.err(rt, f"PROPERTY {name} is a {known['type'].name}, not a {pt.name}")
+            raise self.err(node.return_type, f"PROPERTY {name} is a {known['type'].name}, not a {pt.name}")
         kinds = {"": [], "GET": ["get"], "SET": ["set"]}.get(part.upper())  # `X` alone: its type
         if kinds is None:
             raise self.err(node.name, f"PROPERTY {_name(node.name)}: the parts of a PROPERTY are Get and Set")
