@@ -4,6 +4,8 @@
   of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48) and base type UDINT, as TwinCAT
   programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
   TypeClass). Both are declared in the program the first time a program names them.
+- A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
+  gives.
 - `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
   runtime (pacst_iec.h: PACST_HEAP_BYTES), initialised as a variable of T is (an FB's initial values and its
   METHOD FB_init); 0 when the heap has no room, as TwinCAT's router memory returns 0 when it is exhausted.
