@@ -3,7 +3,7 @@ import copy
 import dataclasses
 import re
 
-from . import literals
+from . import literals, system
 from . import types as T
 from . import user
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
@@ -136,11 +136,29 @@ class BodyCompiler:
             call = copy.copy(proto)
             call.cfunc = f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, \"{where}\"))->{proto.cname}"
             return f"({r.read()}).inst", call
+        if r.type.kind == "interface":  # a PROPERTY through the instance's table
+            return self._interface_property(r, last)
         pou = getattr(r.type, "pou", None) if r.type.is_fb else None
         m = getattr(pou, table).get(_name(last.field.name).upper()) if pou is not None else None
         if m is None:
             return None
         return f"&({r.read()})", m
+
+    def _interface_property(self, r, last):
+        """(the instance, the PROPERTY) of `itf.X`, X a PROPERTY of the INTERFACE r's type, its Get and Set called
+        through the table of the instance's FB."""
+        prop = r.type.properties.get(_name(last.field.name).upper())
+        if prop is None:
+            raise self.err(last, f"INTERFACE {r.type.name} has no METHOD or PROPERTY '{_name(last.field.name)}'")
+        line, col = pos(last)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        through = dict(prop)
+        for kind in ("get", "set"):
+            if prop[kind] is not None:
+                through[kind] = copy.copy(prop[kind])
+                through[kind].cfunc = (f"((const {r.type.cname}__VT *)__pacst_ptr((void *)({r.read()}).vt, "
+                                       f"\"{where}\"))->{prop[kind].cname}")
+        return f"({r.read()}).inst", through
 
     # ------------------------------------------------------------------ variable access
     def _root(self, token):
@@ -314,6 +332,8 @@ class BodyCompiler:
                             "an FB's outputs are written only by the FB itself")
                 else:
                     raise self.err(field, f"'{fname}': {r.type.name} has no members")
+            elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
+                r = self._pointer_index(r, el)
             elif ecls == "SubscriptList":
                 if not r.type.is_array:
                     raise self.err(el, f"{r.type.name} is not an array")
@@ -330,6 +350,21 @@ class BodyCompiler:
         if node.dereferenced:
             r = self._deref(r, node)
         return self._through(r, node, raw)
+
+    def _pointer_index(self, r, el):
+        """User mode: `p[i]`, the i-th element of p's target type from where p points, as TwinCAT reads it
+        (`(p + i * SIZEOF(p^))^`); a null p stops the run with the ST line, as `p^` does."""
+        if len(el.subscripts) != 1:
+            raise self.err(el, f"{r.type.name} takes one index: p[i]")
+        self.comp.dialect(el, "an index on a POINTER")
+        te = self.ex.expr(el.subscripts[0], T.DINT)
+        if te.type is not T.ANY_INT and not (te.type.is_int or te.type.is_bit):
+            raise self.err(el.subscripts[0], f"an index of type {te.type.name}: use an integer type")
+        t = r.type.target
+        index = str(te.value) if te.type is T.ANY_INT else f"(long long)({te.code})"
+        line, col = pos(el)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        return Ref(f"((({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))[{index}])", False, t, r.var)
 
     def _index(self, r, idx_node):
         """The element `idx_node` of the array `r`: checked against the bounds at run time, or now."""
@@ -415,6 +450,8 @@ class BodyCompiler:
             raise self.err(target, f"'{r.var.name}' cannot be written: {r.why_not}")
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
+        if self.comp.user and system.is_new(node.expression):  # p := __NEW(T)
+            return system.new_assignment(self, r, node.expression, ind)
         te = self.ex.expr(node.expression, r.type)
         return [ind + r.write(_limited(r.var, self.ex.coerce(te, r.type, node.expression), r.suffix))]
 
@@ -576,8 +613,14 @@ class BodyCompiler:
             self.comp.dialect(node, f"the namespace in '{parts[0]}.{parts[1]}'")
             parts = parts[1:]
         text = ".".join(parts)
+        known = system.case_label(self.comp, parts, node) if self.lookup(parts[0]) is None else None
+        if known is not None:  # __SYSTEM.TYPE_CLASS.TYPE_INT
+            if known[0] is not sel_type:
+                raise self.err(node, f"CASE label '{text}' must be a value of {sel_type.name}")
+            return sel_type.number(known[1])
         if sel_type.is_enum:
-            if len(parts) == 2 and parts[0].upper() == sel_type.name.upper():
+            if len(parts) == 2 and (parts[0].upper() == sel_type.name.upper()
+                                    or self.comp.types.get(parts[0].upper()) is sel_type):  # an alias's name too
                 return sel_type.number(self.comp.enum_value_of(sel_type, parts[1], node))
             if len(parts) == 1 and self.lookup(parts[0]) is None:
                 self.comp.shared_enum_value(parts[0], node)
@@ -708,6 +751,8 @@ class BodyCompiler:
         node = dataclasses.replace(node, name=self.this(node.name))
         if self.comp.user and (_cls(node.name) != "SimpleVariable" or (
                 self.pou.var(_name(node.name.name)) is None and _name(node.name.name).upper() not in self.comp.pous)):
+            if _cls(node.name) == "SimpleVariable" and _name(node.name.name).upper() == "__DELETE":
+                return system.delete_statement(self, node, ind)
             # User mode: MEMCPY(...) and the other functions the translator provides, as statements
             if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
                     and _name(node.name.name).upper() in STATEMENT_FUNCTIONS:
@@ -767,10 +812,15 @@ class BodyCompiler:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
                 post.append(ind + target.write(_limited(target.var, f"{member}.value", target.suffix)))
+            elif fv.section == "input" and getattr(fv.type, "any", False):  # an ANY input (user mode)
+                pre.append(f"{ind}__PACST_SETP({member}, , {system.any_argument(self.ex, p.value, fv)});")
             elif fv.section == "input":
                 te = self.ex.expr(p.value, fv.type)
                 value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))
                 pre.append(f"{ind}__PACST_SETP({member}, , {value});")
+            elif fv.constant:  # VAR_IN_OUT CONSTANT (user mode): read only, a value may be passed
+                te = self.ex.expr(p.value, fv.type)
+                pre.append(f"{ind}{member}.value = {self.ex.coerce(te, fv.type, p.value, 'argument')};")
             else:
                 arg = self.ref(p.value)
                 if arg.type is not fv.type:

@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import user
+from . import system, user
 
 
 
@@ -255,6 +255,10 @@ class Compiler:
 
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
+        if self.user and system.is_system(name) and "." in name:  # __SYSTEM.TYPE_CLASS, __SYSTEM.AnyType
+            return system.system_type(self, name.split(".", 1)[1], token)
+        if self.user and name.upper() == "ANY":  # a VAR_INPUT of any type: a __SYSTEM.AnyType
+            return system.any_type(self, token)
         if self.user and "." in name:
             name = self.strip_namespace(name, token)
             self.dialect(token, f"the namespace in '{_name(token)}'")
@@ -592,6 +596,10 @@ class Compiler:
                     self.enum_shared[up] = [e for e in self.enum_shared[up] if e is not None]
                 else:
                     self.enum_values[up] = t
+        elif cls == "SimpleTypeDeclaration" and self.user:
+            self._declare_global(decl.name, "type")
+            self.types[_name(decl.name).upper()] = user.alias(self, decl)
+            return
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
         elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \
@@ -742,24 +750,57 @@ class Compiler:
             if missing:
                 raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
             for up, proto in t.protos.items():
-                if _signature(pou.methods[up]) != _signature(proto):
+                if proto.accessor is not None:  # a PROPERTY's Get or Set
+                    own = pou.properties.get(proto.name.upper())
+                    if own is None or own[proto.accessor] is None:
+                        raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no PROPERTY {proto.name} with "
+                                              f"a {proto.accessor.capitalize()}")
+                    if own["type"] is not t.properties[proto.name.upper()]["type"]:
+                        raise self.err(token, f"{pou.name}.{proto.name} is a {own['type'].name}, "
+                                              f"{t.name}.{proto.name} a {t.properties[proto.name.upper()]['type'].name}")
+                elif _signature(pou.methods[up]) != _signature(proto):
                     raise self.err(token, f"{pou.name}.{proto.name} differs from {t.name}.{proto.name} in its result "
                                           "or its inputs, outputs and in-outs")
-            if t not in pou.interfaces:
-                pou.interfaces.append(t)
+            for i in t.bases + [t]:  # the bases' tables first: the interface's table points to them
+                if i not in pou.interfaces:
+                    pou.interfaces.append(i)
 
     def _interface(self, node):
-        """User mode: an INTERFACE: its METHODs' prototypes, which an FB that IMPLEMENTS it must have with the
-        same pins. A variable of the interface type refers to such an FB's instance: in C a struct of the
-        instance's address and a table of its METHODs (`<FB>__<ITF>__VT`), through which a call goes."""
+        """User mode: an INTERFACE: its METHODs' and PROPERTYs' prototypes, which an FB that IMPLEMENTS it must have
+        with the same pins and types, its bases' (EXTENDS) first. A variable of the interface type refers to such an
+        FB's instance: in C a struct of the instance's address and a table of its METHODs and PROPERTY accessors
+        (`<FB>__<ITF>__VT`), through which a call goes; the table ends with the addresses of the FB's tables for
+        the bases, so that the variable can be given to one of a base's type."""
         self._declare_global(node.name, "interface")
         self.dialect(node, f"INTERFACE {_name(node.name)}")
-        if node.extends is not None or node.declarations:
-            raise self.err(node, "an INTERFACE that EXTENDS another or declares PROPERTYs is not translated yet")
+        if node.declarations:
+            raise self.err(node, "an INTERFACE declares METHODs and PROPERTYs, no variables")
         t = T.InterfaceType(_name(node.name))
+        for token in node.extends.interfaces if node.extends is not None else []:
+            if _name(token).upper() == f"{system.NAMESPACE}.IQUERYINTERFACE":  # TwinCAT's root: no METHODs
+                self.dialect(token, f"EXTENDS {_name(token)}")
+                continue
+            base = self.types.get(_name(token).upper())
+            if base is None or base.kind != "interface":
+                raise self.err(token, f"INTERFACE {t.name} EXTENDS {_name(token)}: no INTERFACE of that name"
+                                      + (" (declared later or refused)" if _name(token).upper() in self.declared_at
+                                         else ""))
+            self.dialect(token, f"EXTENDS {base.name}")
+            for b in base.bases + [base]:
+                if b not in t.bases:
+                    t.bases.append(b)
+            for up, proto in base.protos.items():
+                if up not in t.protos:
+                    t.methods += [proto.name] if proto.accessor is None else []
+                    t.protos[up] = proto
+            for up, prop in base.properties.items():
+                t.properties.setdefault(up, prop)
         for m in self.members.get(id(node), []):
+            if _cls(m) == "Property":
+                self._interface_property(t, m)
+                continue
             if _cls(m) != "Method":
-                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE is not translated yet: declare METHODs")
+                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE: an INTERFACE declares METHODs and PROPERTYs")
             proto = Pou("function", _name(m.name), self.file, m)
             if m.return_type is not None:
                 rt = m.return_type
@@ -767,10 +808,31 @@ class Compiler:
                     self._resolve_type(rt, allow_fb=False)
             for block in m.declarations:
                 self._var_block(proto, block)
+            if proto.cname in t.protos:
+                raise self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its bases')")
             t.methods.append(proto.name)
             t.protos[proto.cname] = proto
         self.types[t.cname] = t
         self.program.items.append(("type", t, self.file))
+
+    def _interface_property(self, t, node):
+        """User mode: a PROPERTY of an INTERFACE: `X` its type, `X.Get` and `X.Set` its accessors (TwinCAT's
+        <Property> in a .TcIO and its <Get> and <Set>): a prototype for each accessor, a slot `X__GET` / `X__SET`
+        of the table."""
+        name, _, part = _name(node.name).partition(".")
+        pt = self._property_type(node, name)
+        up = name.upper()
+        known = t.properties.setdefault(up, {"name": name, "type": pt, "get": None, "set": None})
+        if known["type"] is not pt:
+            raise self.err(node.return_type, f"PROPERTY {name} is a {known['type'].name}, not a {pt.name}")
+        kinds = {"": [], "GET": ["get"], "SET": ["set"]}.get(part.upper())  # `X` alone: its type
+        if kinds is None:
+            raise self.err(node.name, f"PROPERTY {_name(node.name)}: the parts of a PROPERTY are Get and Set")
+        for kind in kinds:
+            proto = self._accessor(node, name, kind, pt)
+            proto.cname = f"{up}__{kind.upper()}"
+            known[kind] = proto
+            t.protos[proto.cname] = proto
 
     def _extends(self, pou, node):
         """User mode: FUNCTION_BLOCK ... EXTENDS Base: the base's variables first, then its own; the base's
@@ -820,6 +882,24 @@ class Compiler:
             m.inherited_from = base
         return members
 
+    def _accessor(self, node, name, kind, t):
+        """The Get (returning the PROPERTY's value) or the Set (taking it as its input) of the PROPERTY `name`."""
+        m = Pou("function", name, self.file, node)
+        m.accessor = kind
+        if kind == "get":
+            m.ret = t
+        else:
+            m.vars.append(T.Var(name, "input", t, None, node.name))
+        return m
+
+    def _property_type(self, node, name):
+        """The type of the PROPERTY `name` whose declaration or accessor is `node`."""
+        rt = node.return_type
+        if rt is None:
+            raise self.err(node, f"PROPERTY {name} needs its type")
+        return self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+
     def _property(self, owner, node, inherited):
         """User mode: a PROPERTY: `X` declares it (TwinCAT's <Property>), `X.Get` and `X.Set` are its accessors
         (a body of `X` alone is its Get): C functions `<FB>__<X>__GET(FB *, EN, ENO)` returning the value and
@@ -827,11 +907,8 @@ class Compiler:
         other."""
         name, _, part = _name(node.name).partition(".")
         self.dialect(node, f"PROPERTY {name}")
+        t = self._property_type(node, name)
         rt = node.return_type
-        if rt is None:
-            raise self.err(node, f"PROPERTY {name} needs its type")
-        t = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-            self._resolve_type(rt, allow_fb=False)
         up = name.upper()
         known = owner.properties.get(up)
         if known is None:
@@ -847,14 +924,9 @@ class Compiler:
             return None
         if known[kind] is not None and not inherited:
             raise self.err(node.name, f"PROPERTY {name} has two {kind.capitalize()}s")
-        m = Pou("function", name, self.file, node)
+        m = self._accessor(node, name, kind, t)
         m.owner = owner
         m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
-        m.accessor = kind
-        if kind == "get":
-            m.ret = t
-        else:
-            m.vars.append(T.Var(name, "input", t, None, node.name))
         for block in node.declarations:
             self._var_block(m, block)
         known[kind] = m
@@ -954,6 +1026,9 @@ class Compiler:
         if attrs is not None:
             if str(attrs.name).lower() == "constant" and section == "var":
                 constant = True
+            elif self.user and str(attrs.name).lower() == "constant" and section == "inout":
+                self.dialect(block, "VAR_IN_OUT CONSTANT")  # read only; a call may pass a value (expressions.py)
+                constant = True
             else:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
@@ -996,11 +1071,10 @@ class Compiler:
     def _statics(self, pou, block):
         """User mode: VAR_STAT, variables every instance of the FUNCTION_BLOCK shares: each a C variable
         `<FB>__STAT__<NAME>` beside the FB's code, given its initial value when an instance is initialised
-        (before the first scan, so a second instance finds it as the first left it only then)."""
-        if pou.kind != "fb" and pou.owner is None:
-            raise self.err(block, "VAR_STAT belongs to a FUNCTION_BLOCK or PROGRAM")
-        holder = pou.owner or pou
-        self.dialect(block, "VAR_STAT")
+        (before the first scan, so a second instance finds it as the first left it only then). A FUNCTION's
+        keep their values from one call to the next, as TwinCAT keeps them."""
+        holder = pou.owner or pou  # a FUNCTION's: kept from call to call (emit.py initialises them in the first)
+        self.dialect(block, "VAR_STAT" if pou.kind == "fb" or pou.owner is not None else "VAR_STAT in a FUNCTION")
         for item in block.items:
             vtype, strlen = user.var_type(self, item.init, allow_fb=False)
             for dv in item.variables:
@@ -1017,6 +1091,9 @@ class Compiler:
 
     def _check_section(self, pou, section, constant, vtype, item):
         """Whether a variable of type `vtype` may stand in this block of `pou`."""
+        if getattr(vtype, "any", False) and section != "input":
+            raise self.err(item, "ANY is the type of a VAR_INPUT only (as in TwinCAT); declare a __SYSTEM.AnyType to "
+                                 "keep what one was given")
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
@@ -1051,6 +1128,7 @@ class Compiler:
             v.strlen = strlen
             user.check_string_init(self, v)
             v.fb_init_args = fb_init_args
+            v.fb_init_owner = pou
             if vtype.is_fb and self._fb_init(vtype) is not None:
                 self.declaring = pou  # checks the FB_init arguments now, as an initial value
                 try:
@@ -1076,7 +1154,7 @@ class Compiler:
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
         v = T.Var(name, section, vtype, value, dv, constant)
-        if constant and value is None:
+        if constant and value is None and section != "inout":
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
             if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
@@ -1213,12 +1291,32 @@ class Compiler:
                             ExprCompiler(self, None).coerce(self.literal_te(v.init, v.type), v.type, v.init))
             elif self.initial_constant(value) is None and _cls(value) not in _INT_LITERALS | _BIT_LITERALS | {
                     "Real", "Boolean", "Duration", "String"}:
-                raise self.err(value, f"FB_init argument '{v.name}' of {var.type.name}: pacst passes literals and "
-                                      "constants only: declare the instance without it and set in code what "
-                                      "FB_init sets from it")
+                args.append(self._fb_init_variable(var, value, v))
             else:
                 args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
         return f"{method.cfunc}(&{target}, TRUE, NULL, {', '.join(args)});"
+
+    def _fb_init_variable(self, var, value, pin):
+        """User mode: an FB_init argument that names a variable (`Logger : FB_Logger(Results);`): one of the
+        FUNCTION_BLOCK's or PROGRAM's own declared before the instance (initialised before it, as TwinCAT
+        initialises in the order of declaration), or a global list's; an FB instance goes to an INTERFACE input."""
+        owner = getattr(var, "fb_init_owner", None)
+        te = None
+        if _cls(value) == "SimpleVariable":
+            src = owner.var(_name(value.name)) if owner is not None and owner.kind == "fb" else None
+            if src is not None and owner.vars.index(src) < owner.vars.index(var):
+                te = TE(src.type, f"&(data__->{src.cname})" if src.type.is_fb else f"data__->{src.cname}.value")
+            elif src is None:
+                g = user.lookup_global(self, value.name)
+                if g is not None:
+                    te = TE(g.type, f"&({g.csym})" if g.type.is_fb else f"{g.csym}.value")
+        if te is None:
+            raise self.err(value, f"FB_init argument '{pin.name}' of {var.type.name}: pacst passes literals, constants, "
+                                  "a variable of the FUNCTION_BLOCK or PROGRAM declared before the instance and a "
+                                  "global variable: declare the instance without it and set in code what FB_init "
+                                  "sets from it")
+        self.dialect(value, "a variable as an FB_init argument")
+        return ExprCompiler(self, None).coerce(te, pin.type, value, "argument")
 
     def _init_code(self, var, target):
         """C statements that give `target` (an lvalue of var's type) var's initial value."""
@@ -1262,6 +1360,11 @@ class Compiler:
             pairs = _struct_elements(node.init if cls == "InitializedStructure" else node)
         else:
             pairs = None
+        if pairs is None and self.user:  # `Error : T_Error := GVL_Errors.ERR_NO_ERROR;`
+            named = user.constant_aggregate(self, node, t)
+            if named is not None:
+                self.dialect(node, "an initial value that is a global constant array or struct")
+                return self._aggregate_init(t, named, target)
         if pairs is not None:
             out = []
             for name, value in pairs:

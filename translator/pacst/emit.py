@@ -77,6 +77,7 @@ class Emitter:
             out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
             slots = [f"  {_ret(p)} (*{p.cname})({', '.join(['void *data__'] + self._params(p))});"
                      for p in t.protos.values()]
+            slots += [f"  const struct {b.cname}__VT *{b.cname}__BASE;" for b in t.bases]  # INTERFACE EXTENDS
             out.append(f"typedef struct {t.cname}__VT {{\n" + "\n".join(slots or ["  char none;"]) +
                        f"\n}} {t.cname}__VT;")
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
@@ -158,13 +159,14 @@ class Emitter:
         for t in pou.interfaces:
             names = []
             for p in t.protos.values():
-                m = pou.methods[p.cname]
+                m = pou.methods[p.cname] if p.accessor is None else pou.properties[p.name.upper()][p.accessor]
                 thunk = f"{pou.cname}__{t.cname}__{p.cname}"
                 pins = [v.cname for v in m.vars if v.section in ("input", "output", "inout")]
                 call = f"{m.cfunc}(({pou.cname} *)data__, {', '.join(['EN', '__ENO'] + pins)})"
                 out += [f"static {_ret(m)} {thunk}({', '.join(['void *data__'] + self._params(m))}) {{",
                         f"  {'return ' if m.ret is not None else ''}{call};", "}"]
                 names.append(thunk)
+            names += [f"&{b.vtable(pou.cname)}" for b in t.bases]
             out += [f"const {t.cname}__VT {t.vtable(pou.cname)} = {{{', '.join(names) or '0'}}};", ""]
         return out
 
@@ -237,12 +239,25 @@ class Emitter:
         out += ["  goto __end;", "__end:", "  return;", "}", ""]
         return out
 
+    def _function_statics(self, pou):
+        """A FUNCTION's VAR_STAT (user mode): C variables of its file, and the lines that give them their initial
+        values in its first call (TwinCAT gives them before the first scan: no other POU sees them before)."""
+        if not pou.statics or pou.owner is not None:
+            return [], []
+        first = f"{pou.cname}__STAT__INITIALISED"
+        out = [f"static __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics] + [f"static BOOL {first};"]
+        init = [f"  if (!{first}) {{", f"    {first} = TRUE;"]
+        for v in pou.statics:
+            init += ["    " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
+        return out, init + ["  }"]
+
     def _function_code(self, pou):
         if pou.ret is None:  # a METHOD or ACTION without a result (user mode)
             return self._procedure_code(pou)
-        out = [self._function_signature(pou) + " {",
-               "  BOOL ENO = TRUE;",
-               f"  {pou.ret.cname} {pou.cname};"]
+        statics, init = self._function_statics(pou)
+        out = statics + [self._function_signature(pou) + " {",
+                         "  BOOL ENO = TRUE;",
+                         f"  {pou.ret.cname} {pou.cname};"] + init
         for v in pou.vars:
             if v.section == "var":
                 out.append(self._local(v))
@@ -268,7 +283,8 @@ class Emitter:
         return f"  {v.type.cname} {v.cname}{' = {0}' if self.comp.user and compound else ''};"
 
     def _procedure_code(self, pou):
-        out = [self._function_signature(pou) + " {", "  BOOL ENO = TRUE;"]
+        statics, init = self._function_statics(pou)
+        out = statics + [self._function_signature(pou) + " {", "  BOOL ENO = TRUE;"] + init
         for v in pou.vars:
             if v.section == "var":
                 out.append(self._local(v))

@@ -2,7 +2,7 @@
 import dataclasses
 import re
 
-from . import literals
+from . import literals, system
 from . import types as T
 from . import user
 from .common import TE, _cls, _name, pos
@@ -106,6 +106,12 @@ class ExprCompiler:
             if pou is None or target not in pou.interfaces:
                 raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
             return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
+        if te.type.kind == "interface" and target.kind == "interface" and target in te.type.bases:
+            # an INTERFACE's variable given to one of a base's type: the instance's table for the base
+            return (f"(({target.cname}){{({te.code}).inst, ({te.code}).vt != NULL ? ({te.code}).vt->{target.cname}__BASE "
+                    ": NULL})")
+        if self.comp.user and system.same_struct(te.type, target):  # an ANY input to a __SYSTEM.AnyType
+            return te.code
         if te.type.is_pointer and target.is_pointer and self.comp.user:
             return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
@@ -296,6 +302,10 @@ class ExprCompiler:
 
     def _value_of(self, node):
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
+        known = system.enum_value(self.comp, node) if self.comp.user and (
+            self.body is None or self.body.lookup(_name(getattr(node.name, "name", node.name))) is None) else None
+        if known is not None:  # __SYSTEM.TYPE_CLASS.TYPE_INT
+            return TE(known[0], known[0].cvalue(known[1]))
         name = _name(node.name) if _cls(node) == "SimpleVariable" else None
         if name is not None and (self.body is None or self.body.lookup(name) is None) \
                 and name.upper() in self.comp.enum_values:
@@ -518,6 +528,9 @@ class ExprCompiler:
             return self._conversion(node, m.group(1), m.group(2))
         if self.comp.user and up in _MATH and up not in self.comp.pous:
             return self._math(node, up, want)
+        if self.comp.user and up in ("__NEW", "__DELETE"):
+            raise self.err(node, f"{up} inside an expression: TwinCAT takes __NEW in an assignment only "
+                                 "(p := __NEW(T)), __DELETE as a statement (__DELETE(p);)")
         if self.comp.user and up in _MEMORY and up not in self.comp.pous and self.body is not None:
             return self._memory(node, up)
         m = re.fullmatch(r"TO_([A-Z]+)", up)
@@ -816,6 +829,18 @@ class ExprCompiler:
             raise self.err(p, f"'{pname}' is an output: use =>")
         return v
 
+    def _constant_inout(self, arg, v):
+        """The C pointer a VAR_IN_OUT CONSTANT is given: a variable's address, or (as TwinCAT takes a literal or an
+        expression there) the address of a one-element array holding the value, alive during the call."""
+        ref = system.variable(self, arg)
+        if ref is not None:
+            if ref.type is not v.type:
+                raise self.err(arg, f"type mismatch: {ref.type.name} passed to VAR_IN_OUT CONSTANT '{v.name}' of type "
+                                    f"{v.type.name}")
+            return f"&({ref.read()})"
+        value = self.coerce(self.expr(arg, v.type), v.type, arg, "argument")
+        return f"(({v.type.cname}[]){{{value}}})"
+
     def _user_call(self, node, pou, this=None):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
@@ -852,6 +877,8 @@ class ExprCompiler:
                                 else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
                     if v.init is not None:
                         args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
+                elif getattr(v.type, "any", False):  # an ANY input (user mode)
+                    args.append(system.any_argument(self, arg, v))
                 else:
                     args.append(self.coerce(self.expr(arg, v.type), v.type, arg, "argument"))
                 continue
@@ -859,6 +886,9 @@ class ExprCompiler:
                 if v.section == "inout":
                     raise self.err(node, f"VAR_IN_OUT '{v.name}' of {pou.name} must be passed")
                 args.append(f"&({v.type.cname}){{0}}")
+                continue
+            if v.section == "inout" and v.constant and self.body is not None:  # VAR_IN_OUT CONSTANT (user mode)
+                args.append(self._constant_inout(arg, v))
                 continue
             ref = self.body.ref(arg) if self.body is not None else None
             if ref is None:

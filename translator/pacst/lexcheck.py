@@ -53,14 +53,17 @@ class Comment:
         self.end = end
 
 
-# TwinCAT's operators and namespaces of names starting with '__' that user mode does not translate, and why
+# TwinCAT's operators and namespaces starting with '__' that user mode translates (system.py, expressions.py)
+_TWINCAT_TRANSLATED = {"__ISVALIDREF", "__NEW", "__DELETE", "__SYSTEM"}
+# and those it does not translate, and why
 _TWINCAT_OPERATORS = {
-    "__NEW": "dynamic memory, which pac-test does not provide; give the program fixed arrays or instances",
-    "__DELETE": "dynamic memory, which pac-test does not provide; give the program fixed arrays or instances",
-    "__SYSTEM": "the runtime's type classes and exception codes are not translated; keep the POU that needs "
-                "them out of the program tested",
     "__QUERYINTERFACE": "not translated; assign the instance to a variable of the INTERFACE and call through it",
     "__QUERYPOINTER": "not translated; assign the instance to a variable of the INTERFACE and call through it",
+    "__TRY": "exception handling (__TRY, __CATCH, __FINALLY, __ENDTRY) is not translated: the test runtime stops the "
+             "test at the ST line of a fault; keep the code between __TRY and __CATCH",
+    "__CATCH": "exception handling is not translated: keep the code between __TRY and __CATCH",
+    "__FINALLY": "exception handling is not translated: keep the code between __TRY and __CATCH",
+    "__ENDTRY": "exception handling is not translated: keep the code between __TRY and __CATCH",
 }
 
 def _check_underscores(digits, file, line, col):
@@ -167,7 +170,7 @@ def tokenize(text, file, comments=None, user=False):
                 tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
-            if "__" in word and (not user or word.startswith("__") and word.upper() != "__ISVALIDREF"):
+            if "__" in word and (not user or word.startswith("__") and word.upper() not in _TWINCAT_TRANSLATED):
                 if user and word.upper() in _TWINCAT_OPERATORS:
                     raise StError(file, line, col, f"TwinCAT's {word}: {_TWINCAT_OPERATORS[word.upper()]}")
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"

@@ -213,6 +213,8 @@ class InterfaceType(Type):
         super().__init__(name)
         self.methods = []  # the METHODs' names, in order
         self.protos = {}  # upper name -> the METHOD's prototype (a Pou without body)
+        self.properties = {}  # upper name -> {"name", "type", "get", "set"}: a PROPERTY's accessors' prototypes
+        self.bases = []  # the INTERFACEs it EXTENDS, theirs too, the farthest first
 
     def vtable(self, fb_cname):
         """The C name of the table of `fb_cname`'s METHODs for this interface."""

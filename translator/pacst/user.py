@@ -340,3 +340,33 @@ def external(comp, pou, block):
         if g.constant and not constant:
             raise comp.err(item.name, f"the global {g.gvl.name}.{g.name} is CONSTANT: declare VAR_EXTERNAL CONSTANT")
         pou.externals[name.upper()] = (g, constant)
+
+
+def alias(comp, decl):
+    """The type an alias `TYPE T_Type : __SYSTEM.TYPE_CLASS; END_TYPE` (or `: INT`, `: POINTER TO ST_Data`, `: E_Mode`)
+    names: the alias is another name of it, as in TwinCAT (a value of the type and of the alias is the same). An
+    alias with an initial value of its own, or that EXTENDS, is refused."""
+    init = decl.init
+    if decl.extends is not None:
+        raise comp.err(decl, f"type alias {_name(decl.name)} with EXTENDS: extend a STRUCT or a FUNCTION_BLOCK")
+    if getattr(init, "value", None) is not None:
+        raise comp.err(init.value, f"type alias {_name(decl.name)} with an initial value of its own: pacst takes an "
+                                   "alias as another name of its type; give the variables the initial value")
+    t = comp._spec_type(init.spec, allow_fb=False)
+    comp.dialect(decl, "a type alias")
+    return t
+
+
+def constant_aggregate(comp, node, t):
+    """The initial value of the global CONSTANT array or struct of type `t` that the initial value `node` names
+    (`GVL_Errors.ERR_NO_ERROR`, or the name alone), or None: the variable is given the same value, the constant's
+    own initial value translated again where the variable is initialised."""
+    g = None
+    if _cls(node) == "SimpleVariable":
+        g = lookup_global(comp, node.name)
+    elif _cls(node) == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
+            and _cls(node.elements[0].field) == "SimpleVariable" and _name(node.name.name).upper() in comp.gvls:
+        g = comp.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+    if g is None or not g.constant or g.type is not t or g.init is None:
+        return None
+    return g.init

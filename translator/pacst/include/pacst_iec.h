@@ -426,6 +426,53 @@ static inline void *__pacst_ptr(void *p, const char *where) {
     if (p == NULL) __pacst_fault(where, "a null POINTER or an unset REFERENCE read or written through", 0);
     return p;
 }
+/* TwinCAT's __NEW and __DELETE (user mode): blocks of the C heap, at most PACST_HEAP_BYTES of them at once
+ * (TwinCAT takes them from its router memory, whose size is configured): __NEW returns NULL when the program
+ * holds that much already, as TwinCAT's returns 0 when the router memory is exhausted. The blocks are kept in
+ * a list, so that __DELETE of a pointer __NEW did not return stops the run with its ST line. One list for
+ * every C file of the program: weak definitions, which the linker merges. */
+#ifndef __CPROVER__
+#ifndef PACST_HEAP_BYTES
+#define PACST_HEAP_BYTES (4UL * 1024UL * 1024UL)
+#endif
+typedef struct __pacst_block {
+    struct __pacst_block *prev, *next;
+    size_t size, unused; /* four words: the memory after the header keeps malloc's alignment */
+} __pacst_block;
+__attribute__((weak)) __pacst_block *__pacst_heap_blocks = NULL;
+__attribute__((weak)) size_t __pacst_heap_used = 0;
+static inline void *__pacst_new(size_t size, long long n) {
+    __pacst_block *b;
+    if (n < 1 || size == 0 || (unsigned long long)n > (PACST_HEAP_BYTES - __pacst_heap_used) / size) return NULL;
+    b = (__pacst_block *)calloc(1, sizeof(__pacst_block) + (size_t)n * size);
+    if (b == NULL) return NULL;
+    b->size = (size_t)n * size;
+    b->next = __pacst_heap_blocks;
+    if (b->next != NULL) b->next->prev = b;
+    __pacst_heap_blocks = b;
+    __pacst_heap_used += b->size;
+    return b + 1;
+}
+static inline __pacst_block *__pacst_heap_find(void *p, const char *where) {
+    __pacst_block *b;
+    for (b = __pacst_heap_blocks; b != NULL; b = b->next)
+        if ((void *)(b + 1) == p) return b;
+    __pacst_fault(where, "__DELETE of a pointer that __NEW did not return, or deleted already", 0);
+    return NULL;
+}
+/* `p` when __NEW returned it (FB_exit is called on it before __DELETE frees it) */
+static inline void *__pacst_heap_block(void *p, const char *where) {
+    (void)__pacst_heap_find(p, where);
+    return p;
+}
+static inline void __pacst_delete(void *p, const char *where) {
+    __pacst_block *b = __pacst_heap_find(p, where);
+    if (b->prev != NULL) b->prev->next = b->next; else __pacst_heap_blocks = b->next;
+    if (b->next != NULL) b->next->prev = b->prev;
+    __pacst_heap_used -= b->size;
+    free(b);
+}
+#endif
 static inline DINT __pacst_memcmp(const void *a, const void *b, size_t n) {
     int c = memcmp(a, b, n);
     return c < 0 ? -1 : c > 0;

@@ -1,0 +1,225 @@
+"""User mode: TwinCAT's operators starting with `__` (docs/user_dialect.md).
+
+- `__SYSTEM.TYPE_CLASS`, the enumeration of the type classes (`__SYSTEM.TYPE_CLASS.TYPE_INT`), with the numbers
+  of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48) and base type UDINT, as TwinCAT
+  programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
+  TypeClass). Both are declared in the program the first time a program names them.
+- A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
+  gives.
+- `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
+  runtime (pacst_iec.h: PACST_HEAP_BYTES), initialised as a variable of T is (an FB's initial values and its
+  METHOD FB_init); 0 when the heap has no room, as TwinCAT's router memory returns 0 when it is exhausted.
+- `__DELETE(p)`: the FB's METHOD FB_exit first when p points to an FB that has one, then the memory freed and
+  p set to 0; p = 0 does nothing; a pointer __NEW did not return stops the test with its ST line.
+"""
+from . import types as T
+from .common import _cls, _name, pos
+from .errors import StError
+
+NAMESPACE = "__SYSTEM"
+# The type classes in their order: each one's number is its index (CODESYS's library Base Interfaces, TypeClass).
+_TYPE_CLASSES = (
+    "TYPE_BOOL TYPE_BIT TYPE_BYTE TYPE_WORD TYPE_DWORD TYPE_LWORD TYPE_SINT TYPE_INT TYPE_DINT TYPE_LINT "
+    "TYPE_USINT TYPE_UINT TYPE_UDINT TYPE_ULINT TYPE_REAL TYPE_LREAL TYPE_STRING TYPE_WSTRING TYPE_TIME TYPE_DATE "
+    "TYPE_DATEANDTIME TYPE_TIMEOFDAY TYPE_POINTER TYPE_REFERENCE TYPE_SUBRANGE TYPE_ENUM TYPE_ARRAY TYPE_PARAMS "
+    "TYPE_USERDEF TYPE_NONE TYPE_ANY TYPE_ANYBIT TYPE_ANYDATE TYPE_ANYINT TYPE_ANYNUM TYPE_ANYREAL TYPE_LAZY "
+    "TYPE_LTIME TYPE_BITCONST TYPE_UXINT TYPE_XWORD TYPE_XINT TYPE_XSTRING TYPE_VARLENARRAY TYPE_ANYSTRING "
+    "TYPE_VECTOR TYPE_LDATE TYPE_LDATEANDTIME TYPE_LTIMEOFDAY").split()
+TYPES = ("TYPE_CLASS", "ANYTYPE")
+
+
+def is_system(name):
+    """Whether the dotted `name` starts with the namespace __SYSTEM."""
+    return name.upper().split(".")[0] == NAMESPACE
+
+
+def system_type(comp, name, node):
+    """The type `__SYSTEM.<name>` (TYPE_CLASS or AnyType), declared in the program at its first use."""
+    up = name.upper()
+    if up not in TYPES:
+        raise comp.err(node, f"'{NAMESPACE}.{name}': pacst provides {NAMESPACE}.TYPE_CLASS and {NAMESPACE}.AnyType "
+                             "of TwinCAT's __SYSTEM (not its exception codes or IQueryInterface)")
+    comp.dialect(node, f"TwinCAT's {NAMESPACE}.{name}")
+    key = f"{NAMESPACE}__{up}"
+    t = comp.types.get(key)
+    if t is not None:
+        return t
+    if up == "TYPE_CLASS":
+        t = T.EnumType(f"{NAMESPACE}.TYPE_CLASS", list(_TYPE_CLASSES), list(range(len(_TYPE_CLASSES))),
+                       T.ELEMENTARY["UDINT"])
+    else:
+        t = T.StructType(f"{NAMESPACE}.AnyType")
+        t.members = [T.Var("pValue", "member", comp.pointer_to(T.ELEMENTARY["BYTE"]), None, None),
+                     T.Var("diSize", "member", T.DINT, None, None),
+                     T.Var("TypeClass", "member", system_type(comp, "TYPE_CLASS", node), None, None)]
+    t.cname = key
+    comp.types[key] = t
+    comp.program.items.append(("type", t, comp.file))
+    return t
+
+
+def any_type(comp, node):
+    """The type of a VAR_INPUT of type ANY (user mode): TwinCAT passes it as a __SYSTEM.AnyType, which the POU
+    reads (`Value.TypeClass`, `Value.pValue`, `Value.diSize`) or assigns to one; a call gives any variable or value
+    (any_argument)."""
+    anytype = system_type(comp, "AnyType", node)
+    t = comp.types.get(f"{NAMESPACE}__ANY")
+    if t is None:
+        t = T.StructType("ANY")
+        t.members = anytype.members
+        t.cname = anytype.cname  # the same C struct: declared once, as __SYSTEM.AnyType
+        t.any = True
+        comp.types[f"{NAMESPACE}__ANY"] = t
+    comp.dialect(node, "ANY")
+    return t
+
+
+def same_struct(source, target):
+    """Whether an ANY goes to a __SYSTEM.AnyType (or back) as it is: the same C struct."""
+    return source.is_struct and target.is_struct and source.cname == target.cname == f"{NAMESPACE}__ANYTYPE"
+
+
+# TYPE_CLASS of the elementary types an ANY input is given
+_CLASS_OF = {"BOOL": "TYPE_BOOL", "BYTE": "TYPE_BYTE", "WORD": "TYPE_WORD", "DWORD": "TYPE_DWORD", "LWORD": "TYPE_LWORD",
+             "SINT": "TYPE_SINT", "INT": "TYPE_INT", "DINT": "TYPE_DINT", "LINT": "TYPE_LINT", "USINT": "TYPE_USINT",
+             "UINT": "TYPE_UINT", "UDINT": "TYPE_UDINT", "ULINT": "TYPE_ULINT", "REAL": "TYPE_REAL",
+             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "TIME": "TYPE_TIME"}
+
+
+def _class_of(t):
+    if t.is_pointer:
+        return "TYPE_REFERENCE" if t.reference else "TYPE_POINTER"
+    if t.is_enum:
+        return "TYPE_ENUM"
+    if t.is_array:
+        return "TYPE_ARRAY"
+    return _CLASS_OF.get(t.name, "TYPE_USERDEF")
+
+
+def variable(ex, arg):
+    """The Ref of the variable `arg` names, when it is one with an address (no PROPERTY, bit, enumeration value
+    or constant of a type); else None, and the argument is a value."""
+    if _cls(arg) not in ("SimpleVariable", "MultiElementVariable") or ex.body is None \
+            or ex.body.property_target(arg) is not None or enum_value(ex.comp, arg) is not None:
+        return None
+    try:
+        r = ex.body.ref(arg)
+    except StError:
+        return None  # an enumeration value, a named value: passed as a value
+    return r if getattr(r, "whole", None) is None else None
+
+
+def any_argument(ex, arg, pin):
+    """C of the __SYSTEM.AnyType an ANY input `pin` is given for `arg`: the address of the variable (of a copy of
+    a value, alive during the call), its size in bytes and its type class."""
+    comp = ex.comp
+    r = variable(ex, arg)
+    if r is not None:
+        if same_struct(r.type, pin.type):
+            return r.read()  # an ANY passed on
+        return _descriptor(comp, pin, f"&({r.read()})", r.type)
+    te = ex.expr(arg, None)
+    t = ex.default_type(te, None) if te.type.kind in ("anyint", "anyreal") else te.type
+    if t.is_fb:
+        raise comp.err(arg, f"an ANY input is given a variable or a value, not a {t.name} instance here")
+    return _descriptor(comp, pin, f"(({t.cname}[]){{{ex.coerce(te, t, arg)}}})", t)
+
+
+def _descriptor(comp, pin, address, t):
+    cls = system_type(comp, "TYPE_CLASS", pin.node)
+    return (f"(({pin.type.cname}){{(__PTR_BYTE)(void *)({address}), (DINT)sizeof({t.cname}), "
+            f"{cls.cvalue(_class_of(t))}}})")
+
+
+def enum_value(comp, node):
+    """(EnumType, value) of `__SYSTEM.TYPE_CLASS.TYPE_INT` (a MultiElementVariable), or None for another name."""
+    if _cls(node) != "MultiElementVariable" or node.name.dereferenced or not is_system(_name(node.name.name)):
+        return None
+    names = [el for el in node.elements if _cls(el) == "FieldSelector" and _cls(el.field) == "SimpleVariable"]
+    if len(names) != len(node.elements) or len(names) != 2 or _name(names[0].field.name).upper() != "TYPE_CLASS":
+        raise comp.err(node, f"'{NAMESPACE}' names its TYPE_CLASS's values here: {NAMESPACE}.TYPE_CLASS.TYPE_INT")
+    t = system_type(comp, "TYPE_CLASS", node)
+    return t, comp.enum_value_of(t, _name(names[1].field.name), names[1].field)
+
+
+def case_label(comp, parts, node):
+    """(EnumType, value) of a CASE label written `__SYSTEM.TYPE_CLASS.TYPE_INT` (split at its dots), or None."""
+    if not parts or parts[0].upper() != NAMESPACE:
+        return None
+    if len(parts) != 3 or parts[1].upper() != "TYPE_CLASS":
+        raise comp.err(node, f"'{NAMESPACE}' names its TYPE_CLASS's values here: {NAMESPACE}.TYPE_CLASS.TYPE_INT")
+    t = system_type(comp, "TYPE_CLASS", node)
+    return t, comp.enum_value_of(t, parts[2], node)
+
+
+def _where(comp, node):
+    line, col = pos(node)
+    return f"{comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+
+
+def is_new(node):
+    """Whether the expression `node` is a call of __NEW."""
+    return _cls(node) == "FunctionCall" and _cls(node.name) == "SimpleVariable" \
+        and _name(node.name.name).upper() == "__NEW"
+
+
+def new_assignment(body, target, node, ind):
+    """C statements of `target := __NEW(T)` / `__NEW(T, n)`: the memory from the heap, each element initialised,
+    then the pointer (NULL when the heap had no room) written to the target, a POINTER."""
+    comp, ex = body.comp, body.ex
+    comp.dialect(node, "TwinCAT's __NEW")
+    args = [getattr(p, "value", p) for p in node.parameters]
+    if not 1 <= len(args) <= 2 or any(a is None for a in args) or _cls(args[0]) != "SimpleVariable":
+        raise comp.err(node, "__NEW takes a type and, for an elementary type, a number of elements: "
+                             "__NEW(ST_Data), __NEW(BYTE, n)")
+    t = comp._resolve_type(args[0].name, allow_fb=True)
+    if len(args) == 2 and not t.is_elementary:
+        raise comp.err(args[1], f"__NEW({t.name}, n): the number of elements is for an elementary type, as in "
+                                "TwinCAT; allocate an array type or one instance")
+    if not target.type.is_pointer or target.type.reference:
+        raise comp.err(node, f"__NEW returns a POINTER TO {t.name}: assign it to a POINTER, not a "
+                             f"{target.type.name}")
+    count = "1"
+    if len(args) == 2:
+        te = ex.expr(args[1], T.ELEMENTARY["UDINT"])
+        if te.type is not T.ANY_INT and not (te.type.is_int or te.type.is_bit):
+            raise comp.err(args[1], f"__NEW's number of elements is an integer, not {te.type.name}")
+        count = str(te.value) if te.type is T.ANY_INT else te.code
+    lines = [f"{ind}{{", f"{ind}  long long __n = (long long)({count});",
+             f"{ind}  {t.cname} *__p = ({t.cname} *)__pacst_new(sizeof({t.cname}), __n);",
+             f"{ind}  if (__p != NULL) {{", f"{ind}    long long __i;"]
+    if t.is_fb:
+        lines.append(f"{ind}    BOOL retain = FALSE;")
+    init = comp.init_code(T.Var("e", "member", t, None, None), "__p[__i]")
+    lines.append(f"{ind}    for (__i = 0; __i < __n; __i++) {{")
+    lines += [f"{ind}      {line}" for line in init]
+    lines += [f"{ind}    }}", f"{ind}  }}",
+              f"{ind}  {target.write(f'({target.type.cname})(void *)__p')}", f"{ind}}}"]
+    return lines
+
+
+def delete_statement(body, node, ind):
+    """C statements of `__DELETE(p);`."""
+    comp = body.comp
+    comp.dialect(node, "TwinCAT's __DELETE")
+    args = [getattr(p, "value", p) for p in node.parameters]
+    if len(args) != 1 or args[0] is None:
+        raise comp.err(node, "__DELETE takes one POINTER: __DELETE(p)")
+    r = body.ref(args[0], raw=True)
+    if not r.type.is_pointer or r.type.reference:
+        raise comp.err(args[0], f"__DELETE's operand is a POINTER, not a {r.type.name} (TwinCAT refuses it too)")
+    if not r.writable:
+        raise comp.err(args[0], f"'{r.var.name}' cannot be written: {r.why_not}")
+    t = r.type.target
+    lines = [f"{ind}if ({r.read()} != NULL) {{"]
+    fb_exit = t.pou.methods.get("FB_EXIT") if t.is_fb and getattr(t, "pou", None) is not None else None
+    if fb_exit is not None:
+        inputs = [v for v in fb_exit.vars if v.section == "input"]
+        if len(inputs) != 1 or not inputs[0].type.is_bool or any(v.section in ("output", "inout")
+                                                                  for v in fb_exit.vars):
+            raise comp.err(node, f"the METHOD FB_exit of {t.name} is not TwinCAT's: its one input is bInCopyCode (BOOL)")
+        lines.append(f"{ind}  (void){fb_exit.cfunc}(__pacst_heap_block((void *){r.read()}, \"{_where(comp, node)}\"),"
+                     " TRUE, NULL, FALSE);")
+    lines += [f"{ind}  __pacst_delete((void *){r.read()}, \"{_where(comp, node)}\");",
+              f"{ind}  {r.write('NULL')}", f"{ind}}}"]
+    return lines
