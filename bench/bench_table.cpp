@@ -308,7 +308,9 @@ int PrintLatency() {
                 "the next scan reads it), on every PLC cycle (1, 2, 5, 10 ms) x controller cycle (1, 3, 10 ms) "
                 "for each bus latency. Shared interface: FB_PAC_WriteIntReg and FB_PAC_ReadIntReg in turn on "
                 "the one CMD interface, all started in the same scan; Done of the last one against the protocol "
-                "minima of the commands one after the other.\n\n");
+                "minima of the commands one after the other. Each run starts past the CMD interface's first "
+                "handshake after the PLC cold start (the parked read, acknowledged before any command may go "
+                "out).\n\n");
     std::printf("| FBs | bus latency [PLC cycles] | jobs | scans | protocol minimum | later than the minimum |\n"
                 "|---|---:|---:|---:|---:|---:|\n");
     int late = 0;

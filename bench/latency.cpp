@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "pac/fb_instance.hpp"
@@ -27,12 +28,26 @@ void LatencyRow::Merge(const LatencyRow& other) {
     aboveMinimum += other.aboveMinimum;
 }
 
+namespace {
+
+// Starts `plc` and scans past the CMD interface's first handshake after the PLC cold start (the parked read
+// toggled and acknowledged with its end, docs/fb/FB_PAC_Cmd.md "After a PLC cold start"), then 3 scans more:
+// no command may go out before it, so a job started earlier would wait for it on top of its own round trip.
+void StartPastFirstHandshake(pac::PacRig& plc) {
+    plc.Start();
+    if (plc.ScanUntil([&] { return plc.Channel().FIRSTREADDONE != 0; }, 10000) < 0) {
+        throw std::runtime_error("the CMD interface's first handshake did not end");
+    }
+    plc.Scan(3);
+}
+
+}  // namespace
+
 LatencyRow MeasureCmd(const pac::RigTiming& timing, int commands) {
     pac::PacRig plc(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
     plc.Call(cmd);
-    plc.Start();
-    plc.Scan(3);
+    StartPastFirstHandshake(plc);
     LatencyRow row;
     for (int i = 0; i < commands; ++i) {
         cmd->CODE.value = (i % 2 == 0) ? 0x0906 : 0x1906;  // write, then read back, N register 1
@@ -109,8 +124,7 @@ std::vector<std::unique_ptr<SharedFb>> SharedFbs(pac::PacRig& plc, int fbs) {
 LatencyRow MeasureShared(const pac::RigTiming& timing, int fbs, int rounds) {
     pac::PacRig plc(timing);
     const auto shared = SharedFbs(plc, fbs);
-    plc.Start();
-    plc.Scan(3);
+    StartPastFirstHandshake(plc);
     const auto allFinal = [&] {
         return std::all_of(shared.begin(), shared.end(), [](const auto& fb) { return fb->Final(); });
     };
@@ -148,8 +162,7 @@ SharedRate MeasureSharedRate(const pac::RigTiming& timing, int fbs, int scans) {
             shared[i]->SetExecute(execute[i]);
         }
     });
-    plc.Start();
-    plc.Scan(3);
+    StartPastFirstHandshake(plc);
     const auto start = plc.Now();
     std::fill(done.begin(), done.end(), 0);
     rate.errors = 0;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "latency.hpp"
 #include "workloads.hpp"
 
 namespace {
@@ -53,6 +54,20 @@ TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
                     << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
             }
         }
+    }
+}
+
+// The latency table compares each job with the protocol minimum of its own round trip: a job that also waits
+// for the CMD interface's first handshake after the PLC cold start (the parked read) would count as late.
+// The slowest timings, where that handshake lasts longest: a 1 ms PLC cycle, a 10 ms controller cycle.
+TEST(BenchWorkloads, LatencyJobsStartPastTheFirstHandshake) {
+    for (int latency : {0, 3}) {
+        pac::RigTiming timing;
+        timing.plcCycle = milliseconds(1);
+        timing.pacCycle = milliseconds(10);
+        timing.latencyCycles = latency;
+        EXPECT_EQ(pac::bench::MeasureCmd(timing, 4).aboveMinimum, 0) << "latency " << latency;
+        EXPECT_EQ(pac::bench::MeasureShared(timing, 2, 2).aboveMinimum, 0) << "latency " << latency;
     }
 }
 
