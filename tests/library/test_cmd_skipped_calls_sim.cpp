@@ -338,6 +338,104 @@ TEST_P(CmdSkippedCalls, AnAllZeroScanDoesNotWithdrawAMoveOnItsWay) {
     }
 }
 
+// A controller restart with the module's SEND at 1 (RECEIVE back to 0 under "RECEIVE 0 after restart"), soon
+// after a PLC cold start: the interface brings the module back in step, and a stop edged 0 or 1 scans after the
+// controller is ready again goes out and is taken once, whatever the controller compares SEND with. The PLC
+// restarts at every phase of the controller's cycle, so that the round trips measured since (the cold start's
+// first read, perhaps one read more) range from short to long. Before the fix the resync held SEND 0 for the
+// longest round trip measured; a controller on "SEND changed" whose cycle was longer never read that 0, and the
+// stop's SEND 1 was no change for it: never taken, 16#8001 after its Timeout.
+TEST_P(CmdSkippedCalls, AStopRightAfterAControllerRestartIsTakenOnce) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command stop{code::kStop, 0, 0};
+    const auto& timing = GetParam().sharing.timing;
+    const int phases = timing.pacMs / timing.plcMs + 2;
+    for (int phase = 0; phase < phases; ++phase) {
+        for (int after = 0; after <= 1; ++after) {
+            SCOPED_TRACE("PLC restart " + std::to_string(phase) + " scans into the run, the stop edged " +
+                         std::to_string(after) + " scans after the controller's restart");
+            for (int n = 0; n < phase; ++n) plc.Scan();
+            plc.RestartPlc();
+            int n = 0;
+            for (; n < 20000 && !plc.Rig().Channel().FIRSTREADDONE; ++n) plc.Scan();
+            if ((plc.Rig().Channel().TOPAC.table[6] & 0x80) == 0) {
+                ASSERT_TRUE(plc.RunAlone(0, {code::kGetIntReg, 7, 0})) << "one command more: the module's SEND 1";
+            }
+            plc.Taken();
+            plc.Rig().Controller().PowerCycle(plc.Rig().Now());
+            for (n = 0; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
+            for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
+            ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
+            for (n = 0; n < after; ++n) plc.Scan();
+            plc.Set(1, stop);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            for (n = 0; n < 20000 && !plc.Final(1); ++n) plc.Scan();
+            ASSERT_TRUE(plc.Final(1)) << "Busy after " << n << " scans";
+            for (n = 0; n < 40; ++n) plc.Scan();
+            const auto id = plc.Fb(1)->ERRORID.value;
+            EXPECT_NE(id, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never went out";
+            EXPECT_NE(id, kGvl["PAC_LIB_ERR_ACK_TIMEOUT"]) << "went out, never acknowledged";
+            EXPECT_EQ(Count(plc.Taken(), stop), 1) << "the controller took the stop once";
+            plc.Fb(1)->EXECUTE.value = FALSE;
+            plc.Scan();
+            if (HasFailure()) return;
+        }
+    }
+}
+
+// A PLC restart 0 to 3 scans after a move's edge: the controller may take the old move, still on its way, in
+// the place of the fresh program's first read, which then ends with the move. That handshake's round trip is
+// its acknowledgement, not the move's end: after a later controller restart, a stop with a Timeout shorter than
+// the move goes out and is taken once (before the fix the resync held the channel for the whole move, and the
+// stop ended 16#8006 without having gone out).
+TEST_P(CmdSkippedCalls, AnOldMoveTakenInTheFirstReadsPlaceHoldsNoLaterStop) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command stop{code::kStop, 0, 0};
+    const auto stopTimeout = 300ms;
+    float target = 0.0F;
+    int movesTakenAfterTheRestart = 0;
+    for (int after = 0; after <= 3; ++after) {
+        SCOPED_TRACE("PLC restart " + std::to_string(after) + " scans after the move's edge");
+        ASSERT_TRUE(plc.GoOnline());
+        target = target > 0.0F ? 0.0F : 400.0F;
+        const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)};
+        plc.Set(0, move);
+        plc.Taken();
+        plc.Fb(0)->EXECUTE.value = TRUE;
+        for (int n = 0; n <= after; ++n) plc.Scan();
+        plc.RestartPlc();
+        const auto restart = plc.Rig().Now();
+        int n = 0;
+        for (; n < 400000 && !plc.Rig().Channel().FIRSTREADDONE; ++n) plc.Scan();
+        ASSERT_TRUE(plc.Rig().Channel().FIRSTREADDONE) << "the first read never ended";
+        const bool heldForTheMove = Count(plc.Taken(), move) == 1 && plc.Rig().Now() - restart > stopTimeout;
+        movesTakenAfterTheRestart += heldForTheMove ? 1 : 0;
+        if ((plc.Rig().Channel().TOPAC.table[6] & 0x80) == 0) {
+            ASSERT_TRUE(plc.RunAlone(0, {code::kGetIntReg, 7, 0})) << "one command more: the module's SEND 1";
+        }
+        plc.Rig().Controller().PowerCycle(plc.Rig().Now());
+        for (n = 0; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
+        for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
+        ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
+        plc.Set(1, stop);
+        plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(stopTimeout);
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        for (n = 0; n < 20000 && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Final(1)) << "Busy after " << n << " scans";
+        for (n = 0; n < 40; ++n) plc.Scan();
+        EXPECT_NE(plc.Fb(1)->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"])
+            << "never went out (the channel held " << plc.Rig().Channel().ROUNDTRIP << " scans"
+            << (heldForTheMove ? ", the first read ended with the old move)" : ")");
+        EXPECT_EQ(Count(plc.Taken(), stop), 1) << "the controller took the stop once";
+        plc.Fb(1)->EXECUTE.value = FALSE;
+        plc.Scan();
+        if (HasFailure()) return;
+    }
+    RecordProperty("MovesTakenInTheFirstReadsPlace", movesTakenAfterTheRestart);
+}
+
 std::vector<SkipCase> SkipCases() {
     return pac::test::ChannelCases({{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}},
                                    false);

@@ -200,8 +200,9 @@ TEST_F(FbPacCmd, EdgeWhileBusyIsIgnored) {
 
 // A restarted PLC's module shows SEND = 0 while the controller last acknowledged SEND = 1. No FB owns a
 // command, so FB_PAC_CmdInterface brings the module back in step without a command: the harmless 190B with
-// SEND := RECEIVE, in one write on a bus with module consistency. Nothing but that read can execute, and
-// the queued command then goes with exactly one toggle.
+// SEND := RECEIVE, in one write on a bus with module consistency, then that read toggled and acknowledged, so
+// that a controller comparing SEND with the image before has seen the flag the command toggles from. Nothing
+// but that read can execute, and the queued command then goes with exactly one toggle.
 TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
     fromPac_ = Reply(true, false, true);  // the controller acknowledged SEND = 1 before the PLC restarted
     Request(0x1906, 1, 0);
@@ -210,8 +211,13 @@ TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
     EXPECT_TRUE(Busy());
     EXPECT_EQ(interface_->RESYNCS.value, 1u);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "one toggle: the queued command";
-    fromPac_ = Reply(false, false, true, 0, 1, 5);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "the parked read toggled";
+    Cycle(2);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "no command before the read's acknowledgement";
+    fromPac_ = Reply(false, false, true);
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "one toggle: the queued command";
+    fromPac_ = Reply(true, false, true, 0, 1, 5);
     Cycle(1);
     EXPECT_TRUE(Done());
     EXPECT_EQ(cmd_->ACKDATA.value, 5u);
@@ -219,8 +225,8 @@ TEST_F(FbPacCmd, AfterPlcRestartTheModuleIsResynchronisedWithoutACommand) {
 }
 
 // Without module consistency (TwoStepWrite) the SEND flag never changes in the write that changes the data:
-// first the parked module with the SEND flag it has, then SEND := RECEIVE, then the command's data, then its
-// toggle.
+// first the parked module with the SEND flag it has, then SEND := RECEIVE, the read's toggle and its
+// acknowledgement, then the command's data, then its toggle.
 TEST_F(FbPacCmd, WithTwoStepWriteTheResyncWaitsAScanForTheParkedData) {
     interface_->TWOSTEPWRITE.value = TRUE;
     fromPac_ = Reply(true, false, true);
@@ -231,9 +237,12 @@ TEST_F(FbPacCmd, WithTwoStepWriteTheResyncWaitsAScanForTheParkedData) {
     EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x99, 0x0B})) << "then SEND follows RECEIVE over it";
     EXPECT_EQ(interface_->RESYNCS.value, 1u);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "the command's data, the SEND flag unchanged";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 0, 0x19, 0x0B})) << "the parked read toggled";
+    fromPac_ = Reply(false, false, true);
     Cycle(1);
-    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "then its toggle";
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x19, 0x06})) << "the command's data, the SEND flag unchanged";
+    Cycle(1);
+    EXPECT_EQ(toPac_, (Image{0, 0, 0, 0, 0, 1, 0x99, 0x06})) << "then its toggle";
 }
 
 // A reply with status 0 says nothing of RECEIVE (a restarting controller and a lost telegram look alike): the
