@@ -436,6 +436,53 @@ TEST_P(CmdSkippedCalls, AnOldMoveTakenInTheFirstReadsPlaceHoldsNoLaterStop) {
     RecordProperty("MovesTakenInTheFirstReadsPlace", movesTakenAfterTheRestart);
 }
 
+// A PLC cold start and, 1 to a controller cycle's scans later, a controller restart, while the fresh program's
+// first read is on its way: the controller back (RECEIVE 0 on "RECEIVE 0 after restart") may never see that
+// read's SEND change. The read is toggled anew until one is acknowledged, and a stop edged as soon as the
+// controller is ready goes out and is taken once. Before the fix the first read after a cold start never went
+// back to SEND = RECEIVE (no round trip known yet): on "SEND changed" it was never taken, and no command, the
+// stop neither, ever went out (16#8006). Open (docs/verification.md, "Defects found"): disabled until fixed;
+// it fails 24 of the 112 cases on this tree. Also seen with it: on a bus without module consistency a torn read
+// of the read's module can show the controller SEND back at 0, a new command on "SEND changed"; the stop
+// edged then finds RECEIVE out of step at its toggle and ends 16#8003 without going out (counted apart).
+TEST_P(CmdSkippedCalls, DISABLED_AControllerRestartDuringTheColdStartsFirstReadHoldsNoStop) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command stop{code::kStop, 0, 0};
+    const auto& timing = GetParam().sharing.timing;
+    const int phases = timing.pacMs / timing.plcMs + 2;
+    int withdrawnAtTheToggle = 0;
+    for (int phase = 1; phase <= phases; ++phase) {
+        SCOPED_TRACE("the controller restarts " + std::to_string(phase) + " scans after the PLC's cold start");
+        plc.RestartPlc();
+        for (int n = 0; n < phase; ++n) plc.Scan();
+        plc.Taken();
+        plc.Rig().Controller().PowerCycle(plc.Rig().Now());
+        int n = 0;
+        for (; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
+        for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
+        ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
+        plc.Set(1, stop);
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        for (n = 0; n < 20000 && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Final(1)) << "Busy after " << n << " scans";
+        for (n = 0; n < 40; ++n) plc.Scan();
+        EXPECT_TRUE(plc.Rig().Channel().FIRSTREADDONE) << "the first read never acknowledged";
+        const auto id = plc.Fb(1)->ERRORID.value;
+        EXPECT_NE(id, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never went out";
+        const int taken = Count(plc.Taken(), stop);
+        if (GetParam().twoStepWrite && id == kGvl["PAC_LIB_ERR_NOT_READY"] && taken == 0) {
+            ++withdrawnAtTheToggle;  // the known-open path above: an Error, not a false Done
+        } else {
+            EXPECT_EQ(taken, 1) << "the controller took the stop once";
+        }
+        plc.Fb(1)->EXECUTE.value = FALSE;
+        plc.Scan();
+        if (HasFailure()) return;
+    }
+    RecordProperty("StopsWithdrawnAtTheirToggle", withdrawnAtTheToggle);
+}
+
 std::vector<SkipCase> SkipCases() {
     return pac::test::ChannelCases({{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}},
                                    false);
