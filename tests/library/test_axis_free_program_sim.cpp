@@ -4,17 +4,20 @@
 // edges absolute and relative moves, G29 and reference runs with values no other job used, holds a jog input
 // (JogPositive / JogNegative, its longest distance of its own) as it would hold Execute, lets Execute or the jog
 // input fall while the job runs, aborts for a few scans now and then, and pulses ResetError and ChangeDynamics
-// now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
+// (with new values) now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
 // its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The
 // property, in a PLC programmer's words: the FB ends Done only if the controller took exactly its job (the
 // traverse bit, the position and the per-mille values) after this Execute (or jog input) edge, an absolute move Done stands at
-// its target, and Busy ends within the bound the FB's page states. The PLCopen rules hold on every call. Every
+// its target, and Busy ends within the bound the FB's page states; a change of dynamics the FB reports
+// (DynamicsChanged) is in force on the controller a round trip later while it still runs that job, and the axis
+// type changes its speed while traversing. The PLCopen rules hold on every call. Every
 // random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -152,6 +155,7 @@ public:
     int DoneMoves() const { return doneMoves_; }
     int DoneJogs() const { return doneJogs_; }
     int Aborts() const { return aborts_; }
+    int DynamicsChanges() const { return dynamicsChanges_; }
     int EndedAfterSkip() const { return endedAfterSkip_; }
     const FreeCaller& Caller() const { return caller_; }
 
@@ -170,6 +174,7 @@ private:
         pac::sim::PaControlConfig config;
         config.axisModule.activeFor = c.activeFor;
         config.axisModule.cmdErrorRestart = c.cmdErrorRestart;
+        config.axisModule.speedChange = pac::sim::SpeedChange::kWhileTraversing;  // DynamicsChangeable TRUE
         return config;
     }
 
@@ -224,8 +229,17 @@ private:
         }
         // Pulses the program gives in some calls, whatever the job: an axis error reset, new dynamics.
         const bool resetError = free_ && !scripted_ && caller_.Draw(150) < 3;
-        const bool changeDynamics = free_ && !scripted_ && caller_.Draw(100) < 3;
+        // New dynamics only for a job on its way (a call that edges a job latches its pins as the job's), as a pulse:
+        // FALSE in the call before.
+        const bool changeDynamics = free_ && !scripted_ && axis_->BUSY.value && !axis_->CHANGEDYNAMICS.value &&
+                                    caller_.Draw(100) < 3;
         const std::size_t offset = layout_.AxisOffset(1);
+        CheckDynamicsChange();
+        if (changeDynamics) {
+            change_ = {250 + caller_.Draw(751), 500 + caller_.Draw(501)};
+        } else if (abortLeft_ > 0) {
+            change_.reset();  // the job stops: the change need not be in force
+        }
         auto call = [&] {
             axis_->ABORT.value = abortLeft_ > 0 ? TRUE : FALSE;
             const bool held = axis_->EXECUTE.value != 0;
@@ -237,8 +251,8 @@ private:
             axis_->DYNAMICSCHANGEABLE.value = TRUE;
             axis_->COMMAND.value = job_.command;
             axis_->POSITION.value = job_.position;
-            axis_->VELOCITY.value = static_cast<UINT>(job_.velocity);
-            axis_->ACCELERATION.value = static_cast<UINT>(job_.acceleration);
+            axis_->VELOCITY.value = static_cast<UINT>(changeDynamics ? change_->velocity : job_.velocity);
+            axis_->ACCELERATION.value = static_cast<UINT>(changeDynamics ? change_->acceleration : job_.acceleration);
             axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
             axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
             axis_->OPSTATUS.value = fromPac[kOpStatusByte];
@@ -256,13 +270,39 @@ private:
         const auto ended = pac::test::CallFree(caller_, axis_, BusyBound(), call, [this] {
             ledgerAtEdge_ = Ledger().size();
             missed_ = false;
+            change_.reset();
         });
+        if (changeDynamics && axis_->DYNAMICSCHANGED.value) {
+            change_->at = rig_.Now();
+            change_->jobs = Ledger().size();
+            ++dynamicsChanges_;
+        } else if (changeDynamics || !axis_->RUNNING.value) {
+            change_.reset();  // refused, or the job no longer runs as the FB sees it
+        }
         if (ended == FreeCaller::Ended::kNo) return;
         if (missed_) ++endedAfterSkip_;
         if (ended == FreeCaller::Ended::kDone) CheckDone();
     }
 
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
+
+    // A round trip after DynamicsChanged, the controller runs the same job (no job taken since) with the new
+    // values, unless it has ended it meanwhile.
+    void CheckDynamicsChange() {
+        if (!change_ || change_->jobs == 0 || rig_.Now() - change_->at <= RoundTrip()) return;
+        const auto& module = rig_.Controller().Module(1);
+        if (Ledger().size() == change_->jobs && module.JobRunning() &&
+            (module.SpeedPerMille() != change_->velocity || module.AccelerationPerMille() != change_->acceleration)) {
+            log_.Add(scans_, rig_.Now(), "DynamicsChanged to " + std::to_string(change_->velocity) + "/" +
+                                             std::to_string(change_->acceleration) + " per mille, but the controller runs the job at " +
+                                             std::to_string(module.SpeedPerMille()) + "/" + std::to_string(module.AccelerationPerMille()));
+        }
+        change_.reset();
+    }
+
+    std::chrono::nanoseconds RoundTrip() const {
+        return 3 * case_.timing.PlcCycle() + 2 * case_.timing.PacCycle() + 2 * case_.timing.Latency() + 5ms;
+    }
 
     void CheckDone() {
         const std::uint32_t bit = TraverseBit(job_);
@@ -322,6 +362,15 @@ private:
     int doneJogs_ = 0;
     int aborts_ = 0;
     int endedAfterSkip_ = 0;
+    // A change of dynamics the FB reported, until checked: the values, when, the ledger's size then (0: not yet).
+    struct Change {
+        unsigned velocity = 0;
+        unsigned acceleration = 0;
+        std::chrono::nanoseconds at{0};
+        std::size_t jobs = 0;
+    };
+    std::optional<Change> change_;
+    int dynamicsChanges_ = 0;
 };
 
 class AxisFreeProgram : public ::testing::TestWithParam<AxisFreeCase> {};
@@ -338,6 +387,7 @@ TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     EXPECT_GT(program.DoneMoves(), 2) << program.Dones() << " Done";
     EXPECT_GT(program.DoneJogs(), 0) << program.Dones() << " Done";
     EXPECT_GT(program.Aborts(), 0);
+    EXPECT_GT(program.DynamicsChanges(), 0);
 }
 
 // The named cases: an absolute move, its calls left out for 1 to 6 scans from 1 to 14 scans after its edge
