@@ -5,16 +5,17 @@
 // now and then given up for good (the program calls a fresh instance from then on), MC_Power's Enable falling
 // for a while now and then, an axis error raised in the controller now and then. The simulated PA-CONTROL's
 // ledger of the jobs its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it
-// executed; after every scan the test notes when the controller's axis was on, stood still, ran at
-// MC_MoveVelocity's velocity and had its axis error cleared. The property: a move or MC_Home ends Done only if
+// executed; after every scan the test notes when the controller's drive was enabled, its axis stood still, ran
+// at MC_MoveVelocity's velocity and had its axis error cleared. The property: a move or MC_Home ends Done only if
 // the controller took exactly its job (traverse bit, position, speed) after this Execute edge, an absolute move
 // Done stands at its target, MC_Stop and MC_Halt end Done only once the controller's axis stood still after
 // their edge; MC_MoveVelocity shows InVelocity only for its own job taken over after its edge and while the
 // controller's axis runs at its velocity (or brakes at the traverse range end, which the module does not
 // announce), within a round trip; MC_Reset started in ErrorStop ends Done only once the controller cleared the
-// axis error after its edge; MC_Power's Status only while the controller's axis is on (within a round trip),
-// and the controller's axis is off a round trip after MC_Power saw Enable FALSE; Busy ends within the bound
-// MC_blocks.md states; the PLCopen rules hold on every call. The blocks run in the order McRig lists them or reversed; every random choice comes
+// axis error after its edge; MC_Power's Status only while the controller's drive is enabled (within a round
+// trip), and Axis ON off on the controller a round trip after MC_Power saw Enable FALSE (in ONLINE); Busy ends
+// within the bound MC_blocks.md states; the PLCopen rules hold on every call. The blocks run in the order McRig
+// lists them or reversed; every random choice comes
 // from the seed in the test's name.
 #include <gtest/gtest.h>
 
