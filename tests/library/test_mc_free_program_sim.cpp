@@ -15,8 +15,7 @@
 // axis error after its edge; MC_Power's Status only while the controller's drive is enabled (within a round
 // trip), and Axis ON off on the controller a round trip after MC_Power saw Enable FALSE (in ONLINE); Busy ends
 // within the bound MC_blocks.md states; the PLCopen rules hold on every call. The blocks run in the order McRig
-// lists them or reversed; every random choice comes
-// from the seed in the test's name.
+// lists them or reversed; every random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
