@@ -51,14 +51,7 @@ struct McBlocks {
 };
 
 // MC_MoveVelocity has InVelocity where the others have Done: its PLCopen outputs with Done FALSE.
-inline PlcOpenOutputs VelocityOutputsOf(const FbInstance<MC_MOVEVELOCITY>& fb) {
-    PlcOpenOutputs out;
-    out.busy = fb->BUSY.value != 0;
-    out.error = fb->ERROR.value != 0;
-    out.aborted = fb->COMMANDABORTED.value != 0;
-    out.errorId = fb->ERRORID.value;
-    return out;
-}
+inline PlcOpenOutputs VelocityOutputsOf(const FbInstance<MC_MOVEVELOCITY>& fb) { return OutputsOf(fb); }
 
 // The order the blocks of an axis are called in every scan: as McBlocks lists them (the A instances that bring
 // the axis into a state first, then MC_Power ... MC_Reset), or the other way round, so that two blocks edged
@@ -201,10 +194,8 @@ private:
     // MC_MoveVelocity, checked with Done FALSE.
     void CheckVelocityBlock(FbInstance<MC_MOVEVELOCITY>& fb, const std::string& name) {
         auto checker = std::make_shared<PlcOpenChecker>(name);
-        checks_.push_back([checker, &fb](std::int64_t scan) {
-            CommandInputs in;
-            in.execute = fb->EXECUTE.value != 0;
-            checker->Check(scan, in, VelocityOutputsOf(fb));
+        checks_.push_back([this, checker, &fb](std::int64_t scan) {
+            if (around_.count(&fb) == 0) checker->Check(scan, InputsOf(fb), OutputsOf(fb));
         });
     }
 

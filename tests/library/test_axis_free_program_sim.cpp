@@ -4,17 +4,20 @@
 // edges absolute and relative moves, G29 and reference runs with values no other job used, holds a jog input
 // (JogPositive / JogNegative, its longest distance of its own) as it would hold Execute, lets Execute or the jog
 // input fall while the job runs, aborts for a few scans now and then, and pulses ResetError and ChangeDynamics
-// now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
+// (with new values) now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
 // its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The
 // property, in a PLC programmer's words: the FB ends Done only if the controller took exactly its job (the
 // traverse bit, the position and the per-mille values) after this Execute (or jog input) edge, an absolute move Done stands at
-// its target, and Busy ends within the bound the FB's page states. The PLCopen rules hold on every call. Every
+// its target, and Busy ends within the bound the FB's page states; a change of dynamics the FB reports
+// (DynamicsChanged) is in force on the controller a round trip later while it still runs that job, and the axis
+// type changes its speed while traversing. The PLCopen rules hold on every call. Every
 // random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -90,6 +93,7 @@ public:
           layout_{true, 1},
           rig_(pac::test::RigTimingOf(c.timing), ConfigOf(c), layout_),
           random_(c.seed),
+          errorRandom_(c.seed + 1000),
           caller_("FB_PAC_Axis", random_, Odds(), log_) {
         auto& pac = rig_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
@@ -103,8 +107,8 @@ public:
         axis_->ENABLE.value = TRUE;
     }
 
-    // ONLINE through FB_PAC_Ctrl, the axis FB called in every scan; then its first job, alone.
-    void Prepare() {
+    // ONLINE through FB_PAC_Ctrl, the axis FB called in every scan; then (`free`) the free program.
+    void Prepare(bool free = true) {
         ASSERT_GT(rig_.ScanUntil([this] { return ctrl_->READY.value != 0; }, 20000), 0) << "Ready";
         Scan(case_.timing.ScansFor(20ms));
         ctrl_->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
@@ -114,7 +118,7 @@ public:
         ctrl_->EXECUTE.value = FALSE;
         Scan(case_.timing.ScansFor(30ms));
         ASSERT_EQ(rig_.Controller().OperatingStatus(), 31);
-        free_ = true;
+        free_ = free;
     }
 
     // A named case: `job`, its calls from `from` to `from + length - 1` scans after the edge left out (Execute
@@ -137,11 +141,24 @@ public:
         caller_.Script(after, 1000000, false);
     }
     pac::sim::PaControl& Controller() { return rig_.Controller(); }
+    // ResetError TRUE in the next call only (a press of the program's reset key).
+    void PressResetError() { pressReset_ = true; }
+    std::chrono::nanoseconds Now() const { return rig_.Now(); }
     std::size_t JobsTaken() { return Ledger().size(); }
 
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
             blips_.BeforeScan(rig_.Controller(), random_, free_ && !scripted_);  // outside the named cases
+            // An axis error now and then (1 in 200 scans, drawn apart from the program's choices) between jobs,
+            // outside the named cases, once the last one is gone for the FB too and a pulse for it is over.
+            if (free_ && !scripted_ && !faulted_ && !rig_.Controller().Axes().Motion(1).Fault() && !axis_->AXISERROR.value &&
+                !axis_->BUSY.value &&
+                rig_.Now() - clearedAt_ > PulseBound() &&
+                std::uniform_int_distribution<int>(0, 199)(errorRandom_) == 0) {
+                rig_.Controller().Axes().RaiseAxisError(1, rig_.Now(), pac::sim::axis_error::kFollowingError);
+                raisedAt_ = rig_.Now();
+                ++axisErrors_;
+            }
             rig_.Scan();
             ++scans_;
         }
@@ -152,6 +169,9 @@ public:
     int DoneMoves() const { return doneMoves_; }
     int DoneJogs() const { return doneJogs_; }
     int Aborts() const { return aborts_; }
+    int DynamicsChanges() const { return dynamicsChanges_; }
+    int AxisErrorsReset() const { return resets_; }
+    int AxisErrors() const { return axisErrors_; }
     int EndedAfterSkip() const { return endedAfterSkip_; }
     const FreeCaller& Caller() const { return caller_; }
 
@@ -170,6 +190,7 @@ private:
         pac::sim::PaControlConfig config;
         config.axisModule.activeFor = c.activeFor;
         config.axisModule.cmdErrorRestart = c.cmdErrorRestart;
+        config.axisModule.speedChange = pac::sim::SpeedChange::kWhileTraversing;  // DynamicsChangeable TRUE
         return config;
     }
 
@@ -208,6 +229,7 @@ private:
     }
 
     void Program(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+        if (free_) WatchAxisError();
         const bool called = !free_ || caller_.Plan(scans_, rig_.Now());
         if (free_ && caller_.NewCommand()) job_ = scripted_ ? scriptedJob_ : NextJob();
         if (free_ && !scripted_) {
@@ -223,9 +245,19 @@ private:
             return;
         }
         // Pulses the program gives in some calls, whatever the job: an axis error reset, new dynamics.
-        const bool resetError = free_ && !scripted_ && caller_.Draw(150) < 3;
-        const bool changeDynamics = free_ && !scripted_ && caller_.Draw(100) < 3;
+        const bool resetError = (free_ && !scripted_ && caller_.Draw(150) < 3) || (called && pressReset_);
+        if (called) pressReset_ = false;
+        // New dynamics only for a job on its way (a call that edges a job latches its pins as the job's), as a pulse:
+        // FALSE in the call before.
+        const bool changeDynamics = free_ && !scripted_ && axis_->BUSY.value && !axis_->CHANGEDYNAMICS.value &&
+                                    caller_.Draw(100) < 3;
         const std::size_t offset = layout_.AxisOffset(1);
+        CheckDynamicsChange();
+        if (changeDynamics) {
+            change_ = {250 + caller_.Draw(751), 500 + caller_.Draw(501)};
+        } else if (abortLeft_ > 0) {
+            change_.reset();  // the job stops: the change need not be in force
+        }
         auto call = [&] {
             axis_->ABORT.value = abortLeft_ > 0 ? TRUE : FALSE;
             const bool held = axis_->EXECUTE.value != 0;
@@ -237,8 +269,8 @@ private:
             axis_->DYNAMICSCHANGEABLE.value = TRUE;
             axis_->COMMAND.value = job_.command;
             axis_->POSITION.value = job_.position;
-            axis_->VELOCITY.value = static_cast<UINT>(job_.velocity);
-            axis_->ACCELERATION.value = static_cast<UINT>(job_.acceleration);
+            axis_->VELOCITY.value = static_cast<UINT>(changeDynamics ? change_->velocity : job_.velocity);
+            axis_->ACCELERATION.value = static_cast<UINT>(changeDynamics ? change_->acceleration : job_.acceleration);
             axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
             axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
             axis_->OPSTATUS.value = fromPac[kOpStatusByte];
@@ -256,13 +288,69 @@ private:
         const auto ended = pac::test::CallFree(caller_, axis_, BusyBound(), call, [this] {
             ledgerAtEdge_ = Ledger().size();
             missed_ = false;
+            change_.reset();
         });
+        if (resetError) {
+            resetAskedAt_ = rig_.Now();
+            // A pulse the FB gives: it sees the error, in ONLINE.
+            if (axis_->AXISERROR.value && fromPac[kOpStatusByte] == 31 && !resetDue_) resetDue_ = rig_.Now();
+        }
+        if (changeDynamics && axis_->DYNAMICSCHANGED.value) {
+            change_->at = rig_.Now();
+            change_->jobs = Ledger().size();
+            ++dynamicsChanges_;
+        } else if (changeDynamics || !axis_->RUNNING.value) {
+            change_.reset();  // refused, or the job no longer runs as the FB sees it
+        }
         if (ended == FreeCaller::Ended::kNo) return;
         if (missed_) ++endedAfterSkip_;
         if (ended == FreeCaller::Ended::kDone) CheckDone();
     }
 
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
+
+    // The controller's axis error: cleared only after a ResetError pulse of the program since it came, and within
+    // the pulse's bound (Timeout, the update time, the longest skip, a round trip) after a pulse the FB gave in
+    // ONLINE while it showed the error, unless the controller left ONLINE meanwhile (a blip ends the pulse).
+    void WatchAxisError() {
+        const bool fault = rig_.Controller().Axes().Motion(1).Fault();
+        if (faulted_ && !fault) {
+            ++resets_;
+            clearedAt_ = rig_.Now();
+            // A pulse asked for just before the error came may reach the controller after it.
+            if (resetAskedAt_ < raisedAt_ - PulseBound()) log_.Add(scans_, rig_.Now(), "the controller cleared the axis error, but the program gave no ResetError since it came");
+            resetDue_.reset();
+        }
+        faulted_ = fault;
+        if (rig_.Controller().OperatingStatus() != 31 || !fault) resetDue_.reset();
+        if (resetDue_ && rig_.Now() - *resetDue_ > 1s + PulseBound()) {
+            log_.Add(scans_, rig_.Now(), "the axis error is still there " +
+                                             std::to_string((rig_.Now() - *resetDue_) / std::chrono::milliseconds(1)) +
+                                             " ms after a ResetError pulse in ONLINE");
+            resetDue_.reset();
+        }
+    }
+
+    // From a ResetError call to the pulse on the controller: the update time, the longest skip, a round trip.
+    std::chrono::nanoseconds PulseBound() const { return 10ms + 7 * case_.timing.PlcCycle() + RoundTrip(); }
+
+    // A round trip after DynamicsChanged, the controller runs the same job (no job taken since) with the new
+    // values, unless it has ended it meanwhile.
+    void CheckDynamicsChange() {
+        if (!change_ || change_->jobs == 0 || rig_.Now() - change_->at <= RoundTrip()) return;
+        const auto& module = rig_.Controller().Module(1);
+        if (Ledger().size() == change_->jobs && module.JobRunning() &&
+            (module.SpeedPerMille() != change_->velocity || module.AccelerationPerMille() != change_->acceleration)) {
+            log_.Add(scans_, rig_.Now(), "DynamicsChanged to " + std::to_string(change_->velocity) + "/" +
+                                             std::to_string(change_->acceleration) + " per mille, but the controller runs the job at " +
+                                             std::to_string(module.SpeedPerMille()) + "/" + std::to_string(module.AccelerationPerMille()));
+        }
+        change_.reset();
+    }
+
+    std::chrono::nanoseconds RoundTrip() const {
+        return 3 * case_.timing.PlcCycle() + 2 * case_.timing.PacCycle() + 2 * case_.timing.Latency() + 5ms;
+    }
 
     void CheckDone() {
         const std::uint32_t bit = TraverseBit(job_);
@@ -302,6 +390,7 @@ private:
     pac::sim::ModuleLayout layout_;
     pac::PacRig rig_;
     std::mt19937_64 random_;
+    std::mt19937_64 errorRandom_;
     pac::test::ViolationLog log_;
     FreeCaller caller_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
@@ -322,6 +411,23 @@ private:
     int doneJogs_ = 0;
     int aborts_ = 0;
     int endedAfterSkip_ = 0;
+    // A change of dynamics the FB reported, until checked: the values, when, the ledger's size then (0: not yet).
+    struct Change {
+        unsigned velocity = 0;
+        unsigned acceleration = 0;
+        std::chrono::nanoseconds at{0};
+        std::size_t jobs = 0;
+    };
+    std::optional<Change> change_;
+    int dynamicsChanges_ = 0;
+    bool pressReset_ = false;
+    bool faulted_ = false;       // the controller's axis had an error at the last look
+    std::chrono::nanoseconds raisedAt_{0};      // the last axis error raised
+    std::chrono::nanoseconds clearedAt_{0};     // and cleared
+    std::chrono::nanoseconds resetAskedAt_{0};  // the last call with ResetError
+    std::optional<std::chrono::nanoseconds> resetDue_;  // a pulse the FB gave for the error it showed
+    int axisErrors_ = 0;
+    int resets_ = 0;
 };
 
 class AxisFreeProgram : public ::testing::TestWithParam<AxisFreeCase> {};
@@ -330,7 +436,7 @@ TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     FreeAxisProgram program(GetParam());
     program.Prepare();
     ASSERT_FALSE(HasFatalFailure());
-    program.Scan(3000);
+    program.Scan(5000);
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
     // Reachability: skips while a job was on its way, jobs ended after a skip, moves Done, aborts.
     EXPECT_GT(program.Caller().SkipsWhileBusy(), 10);
@@ -338,6 +444,8 @@ TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     EXPECT_GT(program.DoneMoves(), 2) << program.Dones() << " Done";
     EXPECT_GT(program.DoneJogs(), 0) << program.Dones() << " Done";
     EXPECT_GT(program.Aborts(), 0);
+    EXPECT_GT(program.DynamicsChanges(), 0);
+    EXPECT_GT(program.AxisErrorsReset(), 0) << program.AxisErrors() << " axis errors raised";
 }
 
 // The named cases: an absolute move, its calls left out for 1 to 6 scans from 1 to 14 scans after its edge
@@ -402,6 +510,28 @@ TEST_P(AxisSkippedCalls, AMoveWhoseFbIsNeverCalledAgainRunsToItsEnd) {
         EXPECT_NEAR(program.Controller().Axes().Motion(1).Position(), 33.5, 0.01);
         for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
     }
+}
+
+// ResetError pressed every 200 ms while the axis error's cause persists (a load the servo cannot correct: the
+// controller refuses the reset), then the cause removed: the next press resets the error. The PA-CONTROL acts on
+// the rising edge of bit 16, so each press must give one.
+TEST_P(AxisSkippedCalls, AResetPressedAgainAfterTheCauseIsGoneClearsTheError) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare(false);  // called in every scan, nothing but the presses
+    ASSERT_FALSE(HasFatalFailure());
+    auto& axes = program.Controller().Axes();
+    axes.SetDisturbance(1, program.Now(), 5.0);  // following error beyond the limit: an axis error that stays
+    program.Scan(GetParam().timing.ScansFor(100ms));
+    ASSERT_TRUE(axes.Motion(1).Fault());
+    auto press = [&] {
+        program.PressResetError();
+        program.Scan(GetParam().timing.ScansFor(200ms));
+    };
+    for (int i = 0; i < 5; ++i) press();
+    EXPECT_TRUE(axes.Motion(1).Fault()) << "the cause persists";
+    axes.SetDisturbance(1, program.Now(), 0.0);
+    press();
+    EXPECT_FALSE(axes.Motion(1).Fault()) << "the first press after the cause is gone";
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, AxisSkippedCalls,

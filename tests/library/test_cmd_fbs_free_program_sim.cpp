@@ -11,8 +11,12 @@
 // FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target (for 0A89:
 // the controller's end report at its own acknowledged start plus the distance); a read ends with its
 // register's own value; Busy ends within
-// the documented bound; the PLCopen rules hold on every call. Every random choice comes from the seed in the
-// test's name.
+// the documented bound; the PLCopen rules hold on every call. FB_PAC_JogAxis on an axis of its own, its button
+// (Traverse) pressed when the FB is not Busy and held up to past its MaxTime, its calls left out like the others':
+// no start (0A90 / 0A91) and no keep-alive before the stop is taken by the controller later than a round trip after
+// the call that saw the button released; Done only if the controller took the stop (0A9A) after the last start it
+// took since the press, or took no start; Busy, Done and Error never together, Busy within its bound. Every
+// random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,6 +34,7 @@
 #include "free_caller.hpp"
 #include "free_commands.hpp"
 #include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/command_table.hpp"
@@ -45,7 +50,7 @@ using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 namespace status = pac::sim::status;
 
-enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel };
+enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel, kJog };  // FB_PAC_JogAxis: no block of its own
 
 // One FB of the program and what its present command asked for.
 struct Block {
@@ -76,16 +81,20 @@ public:
         }
         auto& pac = rig_.Controller();
         pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput);
-        pac.SystemParameters().Set(pac::sim::sysparam::kNumberOfAxes, kRelativeAxis);
+        pac.SystemParameters().Set(pac::sim::sysparam::kNumberOfAxes, kJogAxis);
         pac.Io().inputs.Set(kExternalStopInput, true);
         for (int n = 0; n < 4; ++n) {
             pac.Io().intRegisters.SetInt(pac::test::kFreeReadRegisters + n, pac::test::kFreeReadBase + n);
         }
+        jog_.draw = [this](std::uint32_t n) { return std::uniform_int_distribution<std::uint32_t>(0, n - 1)(random_); };
         rig_.CmdInterface()->TWOSTEPWRITE.value = c.twoStepWrite ? TRUE : FALSE;
         rig_.CallImage([this](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) { CallCtrl(fromPac, toPac); });
         rig_.CallCmdProgram([this](ST_PAC_CMDCHANNEL& channel) { Program(channel); });
         rig_.Start();
-        rig_.Task().AddProgram([this] { statusSeen_[rig_.Controller().OperatingStatus()] = rig_.Now(); });
+        rig_.Task().AddProgram([this] {
+            statusSeen_[rig_.Controller().OperatingStatus()] = rig_.Now();
+            if (free_) WatchJog();
+        });
     }
 
     // ONLINE through FB_PAC_Ctrl called in every scan, as a program starts.
@@ -112,10 +121,17 @@ public:
     int Dones(Kind k) const { return dones_[static_cast<int>(k)]; }
     int SkipsWhileBusy() const { return pac::test::SkipsWhileBusyOf(blocks_); }
     int EndedAfterSkip() const { return endedAfterSkip_; }
+    int JogsStopped() const { return jog_.stopped; }
+    int JogsReleasedEarly() const { return jog_.releasedEarly; }
+    int JogStarts() const { return jog_.starts; }
+    int JogSkipsWhileBusy() const { return jog_.skipsWhileBusy; }
 
 private:
     static constexpr int kExternalStopInput = 7;
     static constexpr std::uint16_t kRelativeAxis = 3;
+    static constexpr std::uint16_t kJogAxis = 4;  // FB_PAC_JogAxis's own
+    static constexpr auto kJogMaxTime = 1s;
+    static constexpr auto kJogTimeout = 3s;  // the start waits for an empty queue behind the moves of the others
 
     static pac::sim::PaControlConfig ConfigOf(const pac::test::ChannelCase& c) {
         pac::sim::PaControlConfig config = c.sharing.Config();
@@ -152,6 +168,8 @@ private:
             case Kind::kStop:
                 b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A9A : code::kStopAxis),
                              static_cast<std::uint16_t>(1 + b.caller->Draw(3)), 0};
+                break;
+            case Kind::kJog:  // PlaceJog draws its own
                 break;
             case Kind::kCtrl: {
                 static const E_PAC_CTRLREQUEST requests[] = {E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
@@ -211,6 +229,10 @@ private:
         if (!free_) return;
         std::shuffle(order_.begin(), order_.end(), random_);
         for (Kind k : order_) {
+            if (k == Kind::kJog) {
+                PlaceJog(channel);
+                continue;
+            }
             Block& b = B(k);
             switch (k) {
                 case Kind::kWrite:
@@ -317,6 +339,103 @@ private:
         }
     }
 
+    // FB_PAC_JogAxis's button and the program's call: the button pressed (1 in 20 scans) in ONLINE while the FB is
+    // not Busy, held up to 0.4 s, or (1 in 4) 0.8 to 1.2 s past MaxTime (1 s), from the call that saw it; calls
+    // left out in runs of 1 to 6 scans.
+    void PlaceJog(ST_PAC_CMDCHANNEL& channel) {
+        JogButton& j = jog_;
+        // An operator jogs in ONLINE (the interface's OpStatus); the FB_PAC_Ctrl requests may end it meanwhile.
+        const bool online = rig_.CmdInterface()->OPSTATUS.value == status::kOnline;
+        if (!j.pressed && online && !jogFb_->BUSY.value && j.draw(20) == 0) {
+            j.pressed = true;
+            j.edgeSeen = false;
+            j.holdFor = std::chrono::milliseconds(j.draw(4) == 0 ? 800 + j.draw(400) : j.draw(400));
+            j.relative = j.draw(2) == 0;
+            const bool up = rig_.Controller().Axes().Motion(kJogAxis).Position() < 5000.0;
+            j.target = j.relative ? (up ? 1000.0F : -1000.0F) : (up ? 9000.0F : 1000.0F);
+        } else if (j.pressed && j.edgeSeen && rig_.Now() - j.pressedAt >= j.holdFor) {
+            j.pressed = false;
+        }
+        if (j.skip > 0 || j.draw(6) == 0) {
+            j.skip = j.skip > 0 ? j.skip - 1 : static_cast<int>(j.draw(6));
+            if (jogFb_->BUSY.value) ++j.skipsWhileBusy;
+            return;
+        }
+        jogFb_->TRAVERSE.value = j.pressed ? TRUE : FALSE;
+        jogFb_->AXIS.value = kJogAxis;
+        jogFb_->TARGET.value = j.target;
+        jogFb_->RELATIVE.value = j.relative ? TRUE : FALSE;
+        jogFb_->MAXTIME.value = pac::ToIecTime(kJogMaxTime);
+        jogFb_->TIMEOUT.value = pac::ToIecTime(kJogTimeout);
+        if (j.pressed && !j.edgeSeen && !jogFb_->BUSY.value) {
+            j.edgeSeen = true;
+            j.releaseSeen = false;
+            j.pressedAt = rig_.Now();
+            j.ledgerAtEdge = Ledger().size();
+        }
+        if (!j.pressed && j.edgeSeen && !j.releaseSeen) {
+            j.releaseSeen = true;
+            j.releasedAt = rig_.Now();
+        }
+        const bool doneBefore = jogFb_->DONE.value != 0;
+        CallOn(channel, jogFb_);
+        const bool busy = jogFb_->BUSY.value != 0;
+        const bool done = jogFb_->DONE.value != 0;
+        if (int{busy} + int{done} + int{jogFb_->ERROR.value != 0} > 1 || (jogFb_->ACTIVE.value && !busy)) {
+            log_.Add(scans_, rig_.Now(), "FB_PAC_JogAxis shows Busy, Done, Error or Active together");
+        }
+        // FB_PAC_JogAxis.md: MaxTime, the waits for the interface and the acknowledgements of the start and the stop.
+        if (busy && rig_.Now() - j.pressedAt > kJogMaxTime + 4 * kJogTimeout + 7 * case_.sharing.timing.PlcCycle() + 100ms) {
+            log_.Add(scans_, rig_.Now(), "FB_PAC_JogAxis still Busy " +
+                                             std::to_string((rig_.Now() - j.pressedAt) / std::chrono::milliseconds(1)) +
+                                             " ms after the press");
+        }
+        if (done && !doneBefore) CheckJogDone();
+    }
+
+    // Done: the controller took a stop of the axis after the last start it took since the press, or no start.
+    void CheckJogDone() {
+        const auto& ledger = Ledger();
+        long lastStart = -1;
+        long lastStop = -1;
+        for (std::size_t k = jog_.ledgerAtEdge; k < ledger.size(); ++k) {
+            if (ledger[k].param != kJogAxis) continue;
+            if (IsJogStart(ledger[k])) lastStart = static_cast<long>(k);
+            if (ledger[k].code == 0x0A9A) lastStop = static_cast<long>(k);
+        }
+        if (lastStart < 0) {
+            ++jog_.releasedEarly;
+        } else if (lastStop > lastStart) {
+            ++jog_.stopped;
+        } else {
+            log_.Add(scans_, rig_.Now(), "FB_PAC_JogAxis ended Done, but the controller took no stop after its start" +
+                                             ledger_.DescribeFrom(jog_.ledgerAtEdge));
+        }
+    }
+
+    static bool IsJogStart(const FreeCommand& c) { return c.code == 0x0A90 || c.code == 0x0A91; }
+
+    // After every scan: what the controller took since the last scan, against the jog button's release.
+    void WatchJog() {
+        const auto& ledger = Ledger();
+        const auto late = jog_.releasedAt + 3 * case_.sharing.timing.PlcCycle() + 2 * case_.sharing.timing.PacCycle() +
+                          2 * case_.sharing.timing.Latency() + 5ms;
+        for (; jog_.ledgerSeen < ledger.size(); ++jog_.ledgerSeen) {
+            const FreeCommand& c = ledger[jog_.ledgerSeen];
+            if (c.param == kJogAxis && IsJogStart(c)) ++jog_.starts;
+            if (c.param != kJogAxis || !jog_.releaseSeen) continue;
+            const auto at = rig_.Controller().Log().Records()[ledger_.RecordOf(jog_.ledgerSeen)].time;
+            if (c.code == 0x0A9A) jog_.stopTaken = true;
+            const bool keepAlive = c.code == 0x0A92 && !jog_.stopTaken;
+            if (at > late && (IsJogStart(c) || keepAlive)) {
+                log_.Add(scans_, rig_.Now(), "the controller took " + pac::test::Describe(c) + " " +
+                                                 std::to_string((at - jog_.releasedAt) / std::chrono::microseconds(1)) +
+                                                 " us after FB_PAC_JogAxis saw the button released");
+            }
+        }
+        if (!jog_.releaseSeen) jog_.stopTaken = false;
+    }
+
     // FB_PAC_Cmd.md: the waits for the interface and the acknowledgement (Timeout each), END OF PROCESSING
     // (EndTimeout; FreeInterface: a status read every PollInterval until in position); FB_PAC_Ctrl.md: its
     // Timeout. Plus the longest skip and a round trip.
@@ -331,13 +450,34 @@ private:
     std::mt19937_64 random_;
     pac::test::ViolationLog log_;
     std::vector<std::unique_ptr<Block>> blocks_;
-    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kMoveRel};
+    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kMoveRel, Kind::kJog};
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_WRITEINTREG> write_ = PAC_FB(FB_PAC_WRITEINTREG);
     pac::FbInstance<FB_PAC_READINTREG> read_ = PAC_FB(FB_PAC_READINTREG);
     pac::FbInstance<FB_PAC_MOVEAXISABSOLUTE> move_ = PAC_FB(FB_PAC_MOVEAXISABSOLUTE);
     pac::FbInstance<FB_PAC_STOPAXIS> stop_ = PAC_FB(FB_PAC_STOPAXIS);
     pac::FbInstance<FB_PAC_MOVEAXISRELATIVE> moveRel_ = PAC_FB(FB_PAC_MOVEAXISRELATIVE);
+    pac::FbInstance<FB_PAC_JOGAXIS> jogFb_ = PAC_FB(FB_PAC_JOGAXIS);
+    // FB_PAC_JogAxis's button and what the test saw of it.
+    struct JogButton {
+        std::function<std::uint32_t(std::uint32_t)> draw;
+        bool pressed = false;
+        bool edgeSeen = false;     // a call saw the press (the FB's edge)
+        bool releaseSeen = false;  // a call saw the button released after it
+        bool stopTaken = false;    // the controller took 0A9A for the axis since the release
+        bool relative = false;
+        float target = 0.0F;
+        std::chrono::nanoseconds holdFor{0};
+        std::chrono::nanoseconds pressedAt{0};
+        std::chrono::nanoseconds releasedAt{0};
+        std::size_t ledgerAtEdge = 0;
+        std::size_t ledgerSeen = 0;
+        int skip = 0;
+        int skipsWhileBusy = 0;
+        int stopped = 0;
+        int releasedEarly = 0;
+        int starts = 0;  // 0A90 / 0A91 the controller took
+    } jog_;
     bool free_ = false;
     long scans_ = 0;
     int serial_ = 0;
@@ -360,6 +500,10 @@ TEST_P(CmdFbsFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
     for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel}) {
         EXPECT_GT(program.Dones(k), 0) << "kind " << static_cast<int>(k);
     }
+    // The jog's start waits for an empty queue, which the others' commands leave rarely: a start or a release
+    // before it in every case.
+    EXPECT_GT(program.JogStarts() + program.JogsReleasedEarly(), 0);
+    EXPECT_GT(program.JogSkipsWhileBusy(), 3);
 }
 
 std::vector<pac::test::ChannelCase> CmdFbsFreeCases() {

@@ -5,10 +5,12 @@
 // (mc_rig.hpp). The state diagram state by state: test_mc_state_diagram_sim.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "mc_test_steps.hpp"
+#include "pac/axis_module_bits.hpp"
 
 namespace {
 
@@ -540,6 +542,63 @@ TEST_P(McSim, MoveVelocityRunsToTheRangeEndAndThatEndsItWithAnError) {
     EXPECT_EQ(rig.Position(1), 0.0f);
     rig.Scan();
     EXPECT_EQ(rig.State(1), kStandstill);
+}
+
+// InVelocity means the commanded velocity is reached (PLCopen). From standstill at 40 units/s with 100 units/s2
+// the ramp takes 0.4 s: in every scan that shows InVelocity the controller's axis runs at 40 units/s.
+TEST_P(McSim, InVelocityOnlyOnceTheAxisRunsAtTheVelocity) {
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    b.velocity->VELOCITY.value = 40.0f;
+    b.velocity->ACCELERATION.value = 100.0f;
+    b.velocity->DIRECTION.value = E_PAC_MCDIRECTION__PAC_MC_POSITIVE;
+    Execute(rig, b.velocity);
+    int early = 0;
+    ASSERT_TRUE(rig.WaitFor([&] {
+        const double speed = rig.Pac().Axes().Motion(1).Velocity();
+        if (b.velocity->INVELOCITY.value && std::fabs(speed - 40.0) > 0.04 && early++ == 0) {
+            ADD_FAILURE() << "InVelocity with the controller's axis at " << speed << " units/s (scan " << rig.ScanCount() << ")";
+        }
+        return b.velocity->INVELOCITY.value != 0;
+    }, 1500, "InVelocity"));
+    EXPECT_NEAR(rig.Pac().Axes().Motion(1).Velocity(), 40.0, 0.04);
+}
+
+// InVelocity only for the block's own job: MC_MoveVelocity edged 1 to 8 scans after an MC_MoveAbsolute, whose
+// Start may still be on the wire when the velocity job is posted (the ACTIVE that follows is the move's), shows
+// InVelocity only once the controller took the velocity job over (its ledger of the jobs taken on a Start).
+TEST_P(McSim, InVelocityOnlyForTheBlocksOwnJob) {
+    McRig rig(GetParam(), 1);
+    rig.PowerUp();
+    McBlocks& b = rig.Blocks(1);
+    const auto& taken = rig.Pac().Module(1).TakenJobs();
+    for (int after = 1; after <= 8; ++after) {
+        SCOPED_TRACE("MC_MoveVelocity " + std::to_string(after) + " scans after the move");
+        SetMove(b.moveA, rig.Position(1) < 50.0f ? 90.0f : 10.0f, 1000.0f);
+        Execute(rig, b.moveA);
+        rig.Scan(after - 1);
+        b.velocity->VELOCITY.value = 20.0f;
+        b.velocity->DIRECTION.value = rig.Position(1) < 50.0f ? E_PAC_MCDIRECTION__PAC_MC_POSITIVE : E_PAC_MCDIRECTION__PAC_MC_NEGATIVE;
+        const std::size_t before = taken.size();
+        Execute(rig, b.velocity);
+        ASSERT_TRUE(rig.WaitFor([&] {
+            const bool own = std::any_of(taken.begin() + static_cast<long>(before), taken.end(), [](const auto& job) {
+                return (job.command.control & (pac::axis_control::kMoveToMax | pac::axis_control::kMoveToMin)) != 0;
+            });
+            if (b.velocity->INVELOCITY.value && !own) {
+                ADD_FAILURE() << "InVelocity before the controller took the velocity job (scan " << rig.ScanCount() << ")";
+                return true;
+            }
+            return b.velocity->INVELOCITY.value != 0;
+        }, 1000, "InVelocity"));
+        Release(rig, b.moveA);
+        Execute(rig, b.halt);
+        ASSERT_TRUE(EndsDone(rig, b.halt, 2000, "Halt"));
+        Release(rig, b.velocity);
+        Release(rig, b.halt);
+        if (HasFailure()) break;
+    }
 }
 
 // ---- what the PA-CONTROL cannot do, and values outside what the module carries ----------------------------

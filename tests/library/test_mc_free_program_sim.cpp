@@ -1,14 +1,21 @@
 // The PLCopen MC_ blocks in a PLC program freer than the other MC suites' (docs/fb/MC_blocks.md, "Calling
 // contract"): FB_PAC_McAxis called in every scan as the library asks, and two MC_MoveAbsolute, an
-// MC_MoveRelative, MC_Home, MC_Halt and MC_Stop each called or left out independently in every scan (runs of 1
-// to 6 scans), edged when idle, Execute falling while Busy, a move block now and then given up for good (the
-// program calls a fresh instance from then on). The simulated PA-CONTROL's ledger of the jobs its axis module
-// took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The property: a move or
-// MC_Home ends Done only if the controller took exactly its job (traverse bit, position, speed) after this
-// Execute edge, an absolute move Done stands at its target, MC_Stop and MC_Halt end Done only once the
-// controller's axis stood still after their edge; Busy ends within the bound MC_blocks.md states; the PLCopen
-// rules hold on every call. The blocks run in the order McRig lists them or reversed; every random choice comes
-// from the seed in the test's name.
+// MC_MoveRelative, MC_Home, MC_Halt, MC_Stop, MC_MoveVelocity, MC_Reset and MC_Power each called or left out
+// independently in every scan (runs of 1 to 6 scans), edged when idle, Execute falling while Busy, a move block
+// now and then given up for good (the program calls a fresh instance from then on), MC_Power's Enable falling
+// for a while now and then, an axis error raised in the controller now and then. The simulated PA-CONTROL's
+// ledger of the jobs its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it
+// executed; after every scan the test notes when the controller's drive was enabled, its axis stood still, ran
+// at MC_MoveVelocity's velocity and had its axis error cleared. The property: a move or MC_Home ends Done only if
+// the controller took exactly its job (traverse bit, position, speed) after this Execute edge, an absolute move
+// Done stands at its target, MC_Stop and MC_Halt end Done only once the controller's axis stood still after
+// their edge; MC_MoveVelocity shows InVelocity only for its own job taken over after its edge and while the
+// controller's axis runs at its velocity (or brakes at the traverse range end, which the module does not
+// announce), within a round trip; MC_Reset started in ErrorStop ends Done only once the controller cleared the
+// axis error after its edge; MC_Power's Status only while the controller's drive is enabled (within a round
+// trip), and Axis ON off on the controller a round trip after MC_Power saw Enable FALSE (in ONLINE); Busy ends
+// within the bound MC_blocks.md states; the PLCopen rules hold on every call. The blocks run in the order McRig
+// lists them or reversed; every random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,7 +60,7 @@ std::string McFreeCaseName(const ::testing::TestParamInfo<McFreeCase>& info) {
 
 void PrintTo(const McFreeCase& c, std::ostream* out) { *out << pac::test::Describe(c.timing) << "; seed " << c.seed; }
 
-enum class Kind { kAbsolute, kRelative, kHome, kHalt, kStop };
+enum class Kind { kAbsolute, kRelative, kHome, kHalt, kStop, kVelocity, kReset };
 
 // One block of the program and what its present command asked for.
 struct Block {
@@ -61,7 +68,10 @@ struct Block {
     std::unique_ptr<FreeCaller> caller;
     float position = 0.0F;
     float velocity = 0.0F;
+    float acceleration = 0.0F;  // MC_MoveVelocity's
     std::size_t ledgerAtEdge = 0;
+    bool errorStopAtEdge = false;  // MC_Reset's edge came in ErrorStop
+    bool inVelocity = false;       // MC_MoveVelocity showed InVelocity for its present command
     std::chrono::nanoseconds edgeTime{0};
     bool missed = false;  // a scan without the call since the edge
     std::optional<float> scriptedPosition;  // a named case's command
@@ -80,6 +90,15 @@ public:
         Add(Kind::kHome, "MC_Home", b.home, [] { return PAC_FB(MC_HOME); });
         Add(Kind::kHalt, "MC_Halt", b.halt, [] { return PAC_FB(MC_HALT); });
         Add(Kind::kStop, "MC_Stop", b.stop, [] { return PAC_FB(MC_STOP); });
+        Add(Kind::kVelocity, "MC_MoveVelocity", b.velocity, [] { return PAC_FB(MC_MOVEVELOCITY); });
+        velocity_ = blocks_.back().get();
+        Add(Kind::kReset, "MC_Reset", b.reset, [] { return PAC_FB(MC_RESET); });
+        rig_.Around(&b.power, [this] { return BeforePower(); }, [this] { AfterPower(); });
+        // A range an MC_MoveVelocity crosses within the Busy bound; the other blocks' targets lie inside it.
+        auto& parameters = rig_.Pac().Axes().Parameters(1);
+        parameters.Set(pac::sim::axisparam::kMinTraverseArea, pac::test::BitsOf(0.0F));
+        parameters.Set(pac::sim::axisparam::kMaxTraverseArea, pac::test::BitsOf(kRangeEnd));
+        EXPECT_TRUE(rig_.Pac().Axes().ApplyParameters(1));
         rig_.Plc().Task().AddProgram([this] { Watch(); });
     }
 
@@ -91,6 +110,11 @@ public:
     void Scan(int n) {
         for (int i = 0; i < n; ++i) {
             blips_.BeforeScan(rig_.Pac(), random_, free_ && !named_);  // outside the named cases
+            auto& axis = rig_.Pac().Axes().Motion(1);
+            if (free_ && !named_ && !axis.Fault() && std::uniform_int_distribution<int>(0, ScansFor(2s))(random_) == 0) {
+                rig_.Pac().Axes().RaiseAxisError(1, rig_.Now(), pac::sim::axis_error::kFollowingError);
+                ++axisErrors_;
+            }
             rig_.Scan();
             ++scans_;
         }
@@ -127,13 +151,19 @@ public:
     int SkipsWhileBusy() const { return pac::test::SkipsWhileBusyOf(blocks_); }
     int EndedAfterSkip() const { return endedAfterSkip_; }
     int Abandons() const { return abandons_; }
+    int InVelocities() const { return inVelocities_; }
+    int ResetsOfErrors() const { return resetsOfErrors_; }
+    int PowerOffs() const { return powerOffs_; }
+    int AxisErrors() const { return axisErrors_; }
 
 private:
     // `fresh` makes the instance the program calls instead of one it gave up.
     template <class Fb, class Make>
     void Add(Kind kind, const std::string& name, pac::FbInstance<Fb>& fb, Make fresh) {
         pac::test::FreeCallerOdds odds;
-        odds.newCommand = named_ ? 0 : (kind == Kind::kStop || kind == Kind::kHome ? 800 : (kind == Kind::kHalt ? 400 : 150));
+        odds.newCommand = named_ ? 0 : (kind == Kind::kStop || kind == Kind::kHome ? 800
+                                        : (kind == Kind::kHalt ? 400 : (kind == Kind::kVelocity ? 200 : 150)));
+        if (kind == Kind::kReset) odds.newCommand = named_ ? 0 : 100;
         odds.earlyFall = named_ ? 0 : 150;
         odds.abandon = !named_ && (kind == Kind::kAbsolute || kind == Kind::kRelative) ? 400 : 0;
         blocks_.push_back(std::make_unique<Block>());
@@ -164,6 +194,8 @@ private:
             b.ledgerAtEdge = Ledger().size();
             b.edgeTime = rig_.Now();
             b.missed = false;
+            b.errorStopAtEdge = rig_.State(1) == E_PAC_MCSTATE__PAC_MC_ERROR_STOP;
+            b.inVelocity = false;
         }
         return true;
     }
@@ -171,11 +203,23 @@ private:
     template <class Fb>
     void After(Block& b, pac::FbInstance<Fb>& fb) {
         if (!free_) return;
+        if constexpr (std::is_same_v<Fb, MC_MOVEVELOCITY>) {
+            if (fb->INVELOCITY.value) CheckInVelocity(b);
+        }
         const auto ended = b.caller->AfterCall(pac::test::InputsOf(fb), pac::test::OutputsOf(fb), BusyBound());
         if (ended == FreeCaller::Ended::kNo) return;
         if (b.missed) ++endedAfterSkip_;
         if (ended != FreeCaller::Ended::kDone) return;
         ++dones_[static_cast<int>(b.kind)];
+        if (b.kind == Kind::kReset) {
+            if (!b.errorStopAtEdge) return;  // nothing to reset: Done at once
+            ++resetsOfErrors_;
+            Watch();  // the controller as it stands in this scan
+            if (clearedAt_ < b.edgeTime) {
+                log_.Add(scans_, rig_.Now(), "MC_Reset ended Done, but the controller has not cleared the axis error since its edge");
+            }
+            return;
+        }
         if (b.kind == Kind::kHalt || b.kind == Kind::kStop) {
             Watch();  // the axis as it stands in this scan (a block in Standstill is Done at its edge)
             if (stoodAt_ < b.edgeTime) {
@@ -199,6 +243,12 @@ private:
         if (b.kind == Kind::kRelative) {
             b.position = (b.caller->Draw(2) == 0 ? -1.0F : 1.0F) * (2.0F + static_cast<float>(b.caller->Draw(8)) + unique);
         }
+        if (b.kind == Kind::kVelocity) {
+            // Slow enough to cross the range within the Busy bound, a ramp of 0.01 to 0.2 s; towards the far end.
+            b.velocity = static_cast<float>(10 + b.caller->Draw(31));
+            b.acceleration = static_cast<float>(100 * (2 + b.caller->Draw(9)));
+            b.position = rig_.Position(1) < kRangeEnd / 2.0F ? 1.0F : -1.0F;  // the direction
+        }
     }
 
     template <class Fb>
@@ -206,6 +256,68 @@ private:
         if constexpr (std::is_same_v<Fb, MC_MOVEABSOLUTE> || std::is_same_v<Fb, MC_MOVERELATIVE>) {
             fb->POSITION.value = b.position;
             fb->VELOCITY.value = b.velocity;
+        }
+        if constexpr (std::is_same_v<Fb, MC_MOVEVELOCITY>) {
+            fb->VELOCITY.value = b.velocity;
+            fb->ACCELERATION.value = b.acceleration;
+            fb->DIRECTION.value = b.position > 0.0F ? E_PAC_MCDIRECTION__PAC_MC_POSITIVE : E_PAC_MCDIRECTION__PAC_MC_NEGATIVE;
+        }
+    }
+
+    // InVelocity: the controller took this block's job after its edge, and its axis ran at the velocity (or
+    // braked at the range end) within the last round trip.
+    void CheckInVelocity(Block& b) {
+        namespace bit = pac::axis_control;
+        if (!b.inVelocity) {
+            ++inVelocities_;
+            b.inVelocity = true;
+            const std::uint32_t traverse = b.position > 0.0F ? bit::kMoveToMax : bit::kMoveToMin;
+            const bool taken = claims_.Claim(Ledger(), b.ledgerAtEdge, [&](const pac::sim::AxisModuleCommand& taken) {
+                return (taken.control & bit::kTraverseBits) == traverse &&
+                       taken.speedPerMille == static_cast<std::uint16_t>(b.velocity) &&
+                       taken.accelerationPerMille == static_cast<std::uint16_t>(b.acceleration / 10.0F);
+            });
+            if (!taken) {
+                log_.Add(scans_, rig_.Now(), "MC_MoveVelocity showed InVelocity for a job the controller did not take over after its edge");
+            }
+        }
+        Watch();  // the controller as it stands in this scan
+        if (atSpeedAt_ < b.edgeTime || rig_.Now() - atSpeedAt_ > RoundTrip()) {
+            std::ostringstream what;
+            what << "MC_MoveVelocity showed InVelocity for " << b.velocity * b.position << " units/s, but the controller's axis runs at "
+                 << rig_.Pac().Axes().Motion(1).Velocity() << " units/s and ran at it last "
+                 << (rig_.Now() - atSpeedAt_) / std::chrono::microseconds(1) << " us ago";
+            log_.Add(scans_, rig_.Now(), what.str());
+        }
+    }
+
+    // MC_Power: called or left out (1 in 6), Enable falling for 50 to 300 ms about every 2 s.
+    bool BeforePower() {
+        if (!free_) return true;
+        auto& power = rig_.Blocks(1).power;
+        if (powerOffLeft_ > 0) {
+            --powerOffLeft_;
+        } else if (!named_ && std::uniform_int_distribution<int>(0, ScansFor(2s))(random_) == 0) {
+            powerOffLeft_ = ScansFor(std::chrono::milliseconds(50 + std::uniform_int_distribution<int>(0, 250)(random_)));
+            ++powerOffs_;
+        }
+        if (std::uniform_int_distribution<int>(0, 5)(random_) == 0) return false;
+        power->ENABLE.value = powerOffLeft_ > 0 ? FALSE : TRUE;
+        return true;
+    }
+
+    void AfterPower() {
+        if (!free_) return;
+        auto& power = rig_.Blocks(1).power;
+        if (power->ENABLE.value) {
+            offSeenAt_.reset();
+        } else if (!offSeenAt_) {
+            offSeenAt_ = rig_.Now();
+        }
+        Watch();  // the controller as it stands in this scan
+        if (power->STATUS.value && rig_.Now() - enabledAt_ > RoundTrip()) {
+            log_.Add(scans_, rig_.Now(), "MC_Power shows Status, but the controller's drive has not been enabled for " +
+                                             std::to_string((rig_.Now() - enabledAt_) / std::chrono::milliseconds(1)) + " ms");
         }
     }
 
@@ -227,9 +339,37 @@ private:
         log_.Add(scans_, rig_.Now(), what.str());
     }
 
-    // After every scan: when the controller's axis last stood still (no job, not moving).
+    // After every scan: when the controller's axis last stood still (no job, not moving), was on, ran at
+    // MC_MoveVelocity's velocity (or braked at the range end) and had its axis error cleared.
     void Watch() {
-        if (!rig_.Pac().Module(1).Active() && !rig_.Pac().Axes().Motion(1).Moving()) stoodAt_ = rig_.Now();
+        const auto& axis = rig_.Pac().Axes().Motion(1);
+        if (!rig_.Pac().Module(1).Active() && !axis.Moving()) stoodAt_ = rig_.Now();
+        if (axis.Drive() == pac::sim::DriveState::kEnabled) enabledAt_ = rig_.Now();  // status bit 0 DRIVE ENABLED
+        if (faulted_ && !axis.Fault()) clearedAt_ = rig_.Now();
+        faulted_ = axis.Fault();
+        const Block& v = *velocity_;
+        const double wanted = static_cast<double>(v.velocity * v.position);
+        const bool braking = axis.Phase() == pac::sim::MotionPhase::kDecelerating &&
+                             (std::fabs(axis.Target()) < 0.01 || std::fabs(axis.Target() - kRangeEnd) < 0.01);
+        if (braking || (axis.Moving() && std::fabs(axis.Velocity() - wanted) <= 1.0E-3 * std::fabs(wanted))) {
+            atSpeedAt_ = rig_.Now();
+        }
+        // Outside ONLINE the controller runs the axis whatever Axis ON says (2.7.2): the bound starts in ONLINE.
+        if (offSeenAt_ && rig_.Pac().OperatingStatus() != 31) offSeenAt_ = rig_.Now();
+        if (offSeenAt_ && rig_.Now() - *offSeenAt_ > RoundTrip() && axis.AxisOn()) {
+            log_.Add(scans_, rig_.Now(), "the controller's axis is still on " +
+                                             std::to_string((rig_.Now() - *offSeenAt_) / std::chrono::milliseconds(1)) +
+                                             " ms after MC_Power saw Enable FALSE");
+            offSeenAt_.reset();
+        }
+    }
+
+    int ScansFor(std::chrono::nanoseconds t) const { return case_.timing.ScansFor(t); }
+
+    // From a PLC call to the controller acting on its outputs and back to the PLC's inputs: two PLC cycles,
+    // two controller cycles, the bus latency each way and the jitter.
+    std::chrono::nanoseconds RoundTrip() const {
+        return 3 * case_.timing.PlcCycle() + 2 * case_.timing.PacCycle() + 2 * case_.timing.Latency() + 5ms;
     }
 
     // MC_blocks.md: the axis to be free and the take-over (Timeout each), the job (a reference run, or a move of
@@ -237,6 +377,8 @@ private:
     std::chrono::nanoseconds BusyBound() const {
         return 1s + 1s + 2s + 10s + 7 * case_.timing.PlcCycle() + 2 * case_.timing.PacCycle() + 100ms;
     }
+
+    static constexpr float kRangeEnd = 100.0F;
 
     McFreeCase case_;
     bool named_;
@@ -250,7 +392,18 @@ private:
     int serial_ = 0;
     pac::test::AxisJobClaims claims_;
     std::chrono::nanoseconds stoodAt_{0};
-    int dones_[5] = {0, 0, 0, 0, 0};
+    const Block* velocity_ = nullptr;  // MC_MoveVelocity's
+    std::chrono::nanoseconds enabledAt_{0};
+    std::chrono::nanoseconds clearedAt_{0};
+    std::chrono::nanoseconds atSpeedAt_{0};
+    std::optional<std::chrono::nanoseconds> offSeenAt_;
+    bool faulted_ = false;
+    int powerOffLeft_ = 0;
+    int dones_[7] = {};
+    int inVelocities_ = 0;
+    int resetsOfErrors_ = 0;
+    int powerOffs_ = 0;
+    int axisErrors_ = 0;
     int endedAfterSkip_ = 0;
     int abandons_ = 0;
 };
@@ -269,6 +422,9 @@ TEST_P(McFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     EXPECT_GT(program.Dones(Kind::kRelative) + program.Dones(Kind::kHome) + program.Dones(Kind::kHalt) +
                   program.Dones(Kind::kStop),
               3);
+    EXPECT_GT(program.InVelocities(), 0);
+    EXPECT_GT(program.ResetsOfErrors(), 0) << program.AxisErrors() << " axis errors";
+    EXPECT_GT(program.PowerOffs(), 0);
 }
 
 // The named cases. MC_MoveAbsolute: its calls left out for 1 to 6 scans from 1 to 14 scans after its edge, with

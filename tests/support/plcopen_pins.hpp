@@ -24,6 +24,11 @@ template <class Fb>
 struct HasCommandAborted<Fb, std::void_t<decltype(std::declval<const Fb&>().COMMANDABORTED)>> : std::true_type {};
 
 template <class Fb, class = void>
+struct HasDone : std::false_type {};
+template <class Fb>
+struct HasDone<Fb, std::void_t<decltype(std::declval<const Fb&>().DONE)>> : std::true_type {};
+
+template <class Fb, class = void>
 struct HasJog : std::false_type {};
 template <class Fb>
 struct HasJog<Fb, std::void_t<decltype(std::declval<const Fb&>().JOGPOSITIVE),
@@ -88,7 +93,7 @@ PlcOpenOutputs OutputsOf(const Fb& instance) {
     using Struct = std::decay_t<decltype(fb)>;
     PlcOpenOutputs o;
     o.busy = fb.BUSY.value != 0;
-    o.done = fb.DONE.value != 0;
+    if constexpr (pins::HasDone<Struct>::value) o.done = fb.DONE.value != 0;  // MC_MoveVelocity has none
     o.error = fb.ERROR.value != 0;
     if constexpr (pins::HasCommandAborted<Struct>::value) o.aborted = fb.COMMANDABORTED.value != 0;
     o.errorId = fb.ERRORID.value;

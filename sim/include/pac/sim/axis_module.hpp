@@ -142,6 +142,9 @@ public:
     // State as the reply shows it.
     bool Active() const { return active_; }
     bool JobRunning() const { return job_ != 0 && !jobComplete_; }  // taken over, not yet complete
+    // The per-mille speed and acceleration in force for the job (its Start's, or a change while traversing).
+    std::uint16_t SpeedPerMille() const { return speedPerMille_; }
+    std::uint16_t AccelerationPerMille() const { return accelerationPerMille_; }
     std::uint16_t CmdError() const { return cmdError_; }
     bool StoppedByCondition() const { return stoppedByG123_; }
     // Every job taken over since power-on of the simulation, oldest first (Reset keeps them: a ledger).
