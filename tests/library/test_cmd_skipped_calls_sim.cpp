@@ -102,6 +102,14 @@ public:
         called_[0] = called_[1] = true;
     }
 
+    // A controller restart (a power cycle) and the scans until the interface sees it ready again: ready?
+    bool RestartController() {
+        rig_.Controller().PowerCycle(rig_.Now());
+        for (int n = 0; n < 1000 && rig_.CmdInterface()->OPSTATUS.value != 0; ++n) rig_.Scan();
+        for (int n = 0; n < 200000 && rig_.CmdInterface()->OPSTATUS.value == 0; ++n) rig_.Scan();
+        return rig_.CmdInterface()->OPSTATUS.value != 0;
+    }
+
     // The commands the controller took since the last call, oldest first.
     std::vector<Command> Taken() {
         std::vector<Command> taken;
@@ -136,6 +144,9 @@ int Count(const std::vector<Command>& taken, const Command& c) {
 }
 
 class CmdSkippedCalls : public ::testing::TestWithParam<SkipCase> {};
+
+// PLC scans in one controller cycle.
+int CycleScans(const SkipCase& c) { return c.sharing.timing.pacMs / c.sharing.timing.plcMs; }
 
 // FB 0 sends a write of N1 or a move of axis 2; the program leaves it uncalled for `skip` scans from `offset`
 // scans after its edge. FB 1, called every scan, edges a read of N7 in the scan FB 0 is first left out, so that
@@ -349,8 +360,7 @@ TEST_P(CmdSkippedCalls, AStopRightAfterAControllerRestartIsTakenOnce) {
     TwoCallerPlc plc(GetParam());
     plc.Boot();
     const Command stop{code::kStop, 0, 0};
-    const auto& timing = GetParam().sharing.timing;
-    const int phases = timing.pacMs / timing.plcMs + 2;
+    const int phases = CycleScans(GetParam()) + 2;
     for (int phase = 0; phase < phases; ++phase) {
         for (int after = 0; after <= 1; ++after) {
             SCOPED_TRACE("PLC restart " + std::to_string(phase) + " scans into the run, the stop edged " +
@@ -363,10 +373,7 @@ TEST_P(CmdSkippedCalls, AStopRightAfterAControllerRestartIsTakenOnce) {
                 ASSERT_TRUE(plc.RunAlone(0, {code::kGetIntReg, 7, 0})) << "one command more: the module's SEND 1";
             }
             plc.Taken();
-            plc.Rig().Controller().PowerCycle(plc.Rig().Now());
-            for (n = 0; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
-            for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
-            ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
+            ASSERT_TRUE(plc.RestartController()) << "the controller back";
             for (n = 0; n < after; ++n) plc.Scan();
             plc.Set(1, stop);
             plc.Fb(1)->EXECUTE.value = TRUE;
@@ -415,10 +422,7 @@ TEST_P(CmdSkippedCalls, AnOldMoveTakenInTheFirstReadsPlaceHoldsNoLaterStop) {
         if ((plc.Rig().Channel().TOPAC.table[6] & 0x80) == 0) {
             ASSERT_TRUE(plc.RunAlone(0, {code::kGetIntReg, 7, 0})) << "one command more: the module's SEND 1";
         }
-        plc.Rig().Controller().PowerCycle(plc.Rig().Now());
-        for (n = 0; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
-        for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
-        ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
+        ASSERT_TRUE(plc.RestartController()) << "the controller back";
         plc.Set(1, stop);
         plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(stopTimeout);
         plc.Fb(1)->EXECUTE.value = TRUE;
@@ -449,19 +453,15 @@ TEST_P(CmdSkippedCalls, DISABLED_AControllerRestartDuringTheColdStartsFirstReadH
     TwoCallerPlc plc(GetParam());
     plc.Boot();
     const Command stop{code::kStop, 0, 0};
-    const auto& timing = GetParam().sharing.timing;
-    const int phases = timing.pacMs / timing.plcMs + 2;
+    const int phases = CycleScans(GetParam()) + 2;
     int withdrawnAtTheToggle = 0;
     for (int phase = 1; phase <= phases; ++phase) {
         SCOPED_TRACE("the controller restarts " + std::to_string(phase) + " scans after the PLC's cold start");
         plc.RestartPlc();
         for (int n = 0; n < phase; ++n) plc.Scan();
         plc.Taken();
-        plc.Rig().Controller().PowerCycle(plc.Rig().Now());
+        ASSERT_TRUE(plc.RestartController()) << "the controller back";
         int n = 0;
-        for (; n < 1000 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) plc.Scan();
-        for (n = 0; n < 200000 && plc.Rig().CmdInterface()->OPSTATUS.value == 0; ++n) plc.Scan();
-        ASSERT_NE(plc.Rig().CmdInterface()->OPSTATUS.value, 0) << "the controller back";
         plc.Set(1, stop);
         plc.Fb(1)->EXECUTE.value = TRUE;
         for (n = 0; n < 20000 && !plc.Final(1); ++n) plc.Scan();
