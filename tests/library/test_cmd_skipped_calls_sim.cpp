@@ -483,6 +483,26 @@ TEST_P(CmdSkippedCalls, DISABLED_AControllerRestartDuringTheColdStartsFirstReadH
     RecordProperty("StopsWithdrawnAtTheirToggle", withdrawnAtTheToggle);
 }
 
+// The calling contract's last case (docs/fb/FB_PAC_Cmd.md): an FB left uncalled from the scan its command went
+// out while 17 later commands of another FB ended finds its outcome no longer in the channel's 16-entry history.
+// Whether the controller executed it is unknown to it: 16#8017, never Done.
+TEST_P(CmdSkippedCalls, AnFbLeftOutWhileSeventeenLaterCommandsEndedIsNeverDone) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command read{code::kGetIntReg, 7, 0};
+    plc.Set(0, read);
+    plc.Fb(0)->EXECUTE.value = TRUE;
+    for (int n = 0; n < 20000 && !plc.Rig().Channel().INFLIGHT; ++n) plc.Scan();
+    ASSERT_TRUE(plc.Rig().Channel().INFLIGHT) << "FB 0's command never went out";
+    plc.Call(0, false);
+    for (int k = 0; k < 17; ++k) ASSERT_TRUE(plc.RunAlone(1, read)) << "FB 1's command " << k;
+    plc.Call(0, true);
+    for (int n = 0; n < 3 && !plc.Final(0); ++n) plc.Scan();
+    EXPECT_FALSE(plc.Fb(0)->DONE.value);
+    EXPECT_TRUE(plc.Fb(0)->ERROR.value);
+    EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_OUTCOME_LOST"]);
+}
+
 std::vector<SkipCase> SkipCases() {
     return pac::test::ChannelCases({{1, 10, 0}, {1, 5, 0}, {1, 3, 1}, {2, 10, 2}, {5, 1, 3}, {10, 3, 0}, {2, 3, 1, 1500, 606}},
                                    false);
