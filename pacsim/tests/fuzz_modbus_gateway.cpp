@@ -9,10 +9,12 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -44,12 +46,25 @@ public:
 
     // Sends `bytes` on a new connection, closes its sending side and returns all the server sent back.
     Bytes Exchange(const std::uint8_t* bytes, std::size_t size) const {
-        const int fd = socket(AF_INET, SOCK_STREAM, 0);
         sockaddr_in address{};
         address.sin_family = AF_INET;
         address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
         address.sin_port = htons(static_cast<std::uint16_t>(gateway_->PortOf(0)));
-        if (connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) Broken("the server takes no client");
+        // Two clients an input, thousands a second: the machine's own limits (its ephemeral ports, the listen
+        // queue) may refuse one for a moment; a server that takes none for a second is broken.
+        int fd = -1;
+        for (int attempt = 0; fd < 0; ++attempt) {
+            fd = socket(AF_INET, SOCK_STREAM, 0);
+            if (fd >= 0 && connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) break;
+            const int error = errno;
+            if (fd >= 0) close(fd);
+            fd = -1;
+            if (attempt == 100) {
+                std::fprintf(stderr, "fuzz_modbus_gateway: connect: %s\n", std::strerror(error));
+                Broken("the server takes no client");
+            }
+            usleep(10000);
+        }
         for (std::size_t sent = 0; sent < size;) {
             const ssize_t n = send(fd, bytes + sent, size - sent, MSG_NOSIGNAL);
             if (n <= 0) break;  // the server closed the connection on a frame it could not read
