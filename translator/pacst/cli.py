@@ -9,7 +9,7 @@ import tempfile
 import time
 
 from .compiler import Compiler
-from . import gvl, layout, matiec, plcopen_read, symbols, twincat
+from . import gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
 from .order import declaration_order
 from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
 from .errors import StError, StErrors
@@ -65,9 +65,11 @@ def _user_files(args):
     """The files to compile: the native interfaces first (the user's POUs call them); in user mode a
     TwinCAT `.plcproj` stands for the object files it lists, a PLCopen XML project for the ST files of
     its objects (written to the `--sources` folder, or a temporary one)."""
-    if (args.native or args.sources_dir or args.namespace) and not args.user:
-        raise SystemExit("pacst: --native, --namespace and --sources need --user")
+    if (args.native or args.sources_dir or args.namespace or args.library) and not args.user:
+        raise SystemExit("pacst: --native, --namespace, --library and --sources need --user")
     files = []
+    for name, path in _libraries(args):
+        files += libraries.files(name, path, _sources_dir(args))
     for path in args.files:
         if args.user and path.lower().endswith(".plcproj"):
             files += twincat.project_files(path)
@@ -86,7 +88,19 @@ def _namespaces(args):
         if not sep or not name or not folder:
             raise SystemExit(f"pacst: --namespace {item}: write NAME=FOLDER")
         found[name] = (name, folder)
+    for name, path in _libraries(args):
+        if name.upper() in {n.upper() for n in found}:
+            raise SystemExit(f"pacst: --library {name}={path}: the namespace {name} is given by --namespace too")
+        found[name] = (name, libraries.folder(name, path, _sources_dir(args)))
     return found
+
+
+def _libraries(args):
+    """--library NAME=PATH: [(NAME, PATH)]."""
+    try:
+        return libraries.parse(args.library)
+    except libraries.LibraryError as e:
+        raise SystemExit(f"pacst: {e}") from None
 
 
 def _sources_dir(args):
@@ -221,6 +235,10 @@ def _user_options(parser):
     parser.add_argument("--namespace", action="append", default=[], metavar="NAME=DIR",
                         help="(--user) the declarations of the files under DIR may be written NAME.Decl (a library "
                              "referenced with its namespace: PA_CONTROL=st)")
+    parser.add_argument("--library", action="append", default=[], metavar="NAME=PATH",
+                        help="(--user) a library of the program's own, referenced under the namespace NAME: a "
+                             ".plcproj (or its folder), a PLCopen XML project (its objects written to the --sources "
+                             "folder's NAME/) or a folder of .st and TwinCAT files")
     parser.add_argument("--sources", dest="sources_dir", metavar="DIR",
                         help="(--user) folder for the ST files of a PLCopen XML project (default: a temporary one)")
 

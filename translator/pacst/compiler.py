@@ -239,15 +239,18 @@ class Compiler:
         self._check_ident(token, what)
         up = name.upper()
         if up in self.types or up in self.pous:
-            library = next((ns for ns, (_, folder) in self.namespaces.items() if self._under(self.file, folder) or
-                            self._under(self.declared_at.get(up, ("",))[0], folder)), None)
-            if library is not None:  # a CODESYS export "into an application" carries the library's objects
-                why = (f"{what} '{name}' is declared by the library {self.namespaces[library][0]} too: leave the "
+            first = self.declared_at.get(up, (self.file, 1))
+            owners = [self.library_of(first[0]), self.library_of(self.file)]
+            if owners[0] and owners[1] and owners[0] != owners[1]:
+                raise self.err(token, f"{what} '{name}' is declared by the library {owners[1]} and by the library "
+                                      f"{owners[0]} ({first[0]}:{first[1]}): a program and its libraries share one "
+                                      "set of names here; give pac-test one of the two libraries only")
+            if owners[0] or owners[1]:  # a CODESYS export "into an application" carries the library's objects
+                why = (f"{what} '{name}' is declared by the library {owners[0] or owners[1]} too: leave the "
                        "library's objects out of your sources (pac-test adds the library; export your application "
-                       "without it)")
-                other = self.declared_at.get(up)
-                if other is not None and other[0] != self.file and not self._under(other[0], self.namespaces[library][1]):
-                    raise StError(other[0], other[1], 1, why)  # at the user's copy, not at the library's file
+                       "without it), or rename yours: a program and its libraries share one set of names here")
+                if first[0] != self.file and not owners[0]:
+                    raise StError(first[0], first[1], 1, why)  # at the user's copy, not at the library's file
                 raise self.err(token, why)
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
         if up in self.enum_values:
@@ -320,6 +323,11 @@ class Compiler:
             return "standard"
         return None
 
+    def namespace_names(self):
+        """The namespaces a program may write, as spelt where they were given: PA_CONTROL, the libraries', the
+        standard library's."""
+        return [spelling for spelling, _ in self.namespaces.values()] + ["Tc2_Standard", "Standard"]
+
     def in_namespace(self, namespace, name):
         """Whether `name` (a type, POU, global list or enumeration value) is declared in the namespace."""
         up = name.upper()
@@ -332,6 +340,10 @@ class Compiler:
         file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
         return self._under(file, self.namespaces[namespace.upper()][1])
 
+    def library_of(self, path):
+        """The namespace (as spelt where given) of the library whose folder holds the file `path`, or None."""
+        return next((spelling for spelling, folder in self.namespaces.values() if self._under(path, folder)), None)
+
     @staticmethod
     def _under(path, folder):
         return bool(path) and os.path.abspath(path).startswith(os.path.join(os.path.abspath(folder), ""))
@@ -341,10 +353,21 @@ class Compiler:
         namespace pac-test does not have."""
         first, _, rest = dotted.partition(".")
         if self.namespace(first) is None:
-            raise self.err(node, f"'{dotted}': {user.unknown_namespace(first)}")
+            raise self.err(node, f"'{dotted}': {user.unknown_namespace(first, self.namespace_names())}")
         if "." in rest or not self.in_namespace(first, rest):
             raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'")
         return rest
+
+    def declared_name(self, token):
+        """User mode: the name of the declaration `token` names in a heading (EXTENDS, IMPLEMENTS), without the
+        library namespace before it (`FsCommon.I_Runnable` is I_Runnable); an error for a namespace not given or a
+        name its library lacks."""
+        name = _name(token)
+        if not self.user or "." not in name or system.is_system(name):
+            return name
+        name = self.strip_namespace(name, token)
+        self.dialect(token, f"the namespace in '{_name(token)}'")
+        return name
 
     def unqualify(self, node, local=None):
         """User mode: the variable or call name `node` without a namespace before it (PA_CONTROL.GVL_PAC.X is
@@ -740,10 +763,8 @@ class Compiler:
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
         for token in implements.interfaces:
-            t = self.types.get(_name(token).upper())
+            t = self.types.get(self.declared_name(token).upper())
             if t is None or t.kind != "interface":
-                if user.namespace_like(_name(token).split(".")[0]):
-                    raise self.err(token, f"'{_name(token)}': {user.unknown_namespace(_name(token).split('.')[0])}")
                 raise self.err(token, f"IMPLEMENTS {_name(token)}: no INTERFACE of that name")
             self.dialect(token, f"IMPLEMENTS {t.name}")
             missing = [m for m in t.methods if m.upper() not in pou.methods]
@@ -780,7 +801,7 @@ class Compiler:
             if _name(token).upper() == f"{system.NAMESPACE}.IQUERYINTERFACE":  # TwinCAT's root: no METHODs
                 self.dialect(token, f"EXTENDS {_name(token)}")
                 continue
-            base = self.types.get(_name(token).upper())
+            base = self.types.get(self.declared_name(token).upper())
             if base is None or base.kind != "interface":
                 raise self.err(token, f"INTERFACE {t.name} EXTENDS {_name(token)}: no INTERFACE of that name"
                                       + (" (declared later or refused)" if _name(token).upper() in self.declared_at
@@ -839,13 +860,10 @@ class Compiler:
         METHODs and ACTIONs translated again for this FB unless it overrides them; SUPER^() is the base's
         body and SUPER^.M() the base's M, both on this instance."""
         token = node.extends.interfaces[0]
-        name = _name(token)
-        first, _, rest = name.partition(".")
-        if rest and self.namespace(first) is not None and self.in_namespace(first, rest):  # TcUnit.FB_TestSuite
-            name = rest
-        base = self.pous.get(name.upper())
+        name = self.declared_name(token).upper()  # TcUnit.FB_TestSuite: FB_TestSuite
+        base = self.pous.get(name)
         if base is None or base.kind != "fb" or base.program:
-            if _name(token).upper() in self.declared_at and _name(token).upper() not in self.pous:
+            if name in self.declared_at and name not in self.pous:
                 raise self.err(token, f"{_name(token)} cannot be extended: its declaration was refused or comes later")
             raise self.err(token, f"{_name(token)} is no FUNCTION_BLOCK to extend")
         self.dialect(node.extends, f"EXTENDS {base.name}")

@@ -10,7 +10,8 @@ from lxml import etree
 
 from .errors import StError
 
-OBJECT_EXTENSIONS = (".tcpou", ".tcgvl", ".tcdut", ".tcio")
+# a .TcTLEO is an enumeration with a text list (TwinCAT's EnumerationTextList): its TYPE is read as a .TcDUT's
+OBJECT_EXTENSIONS = (".tcpou", ".tcgvl", ".tcdut", ".tcio", ".tctleo")
 _CDATA = re.compile(r"<!\[CDATA\[(.*?)\]\]>", re.S)
 _COMMENTS = re.compile(r"\(\*.*?\*\)|//[^\n]*|\{[^}]*\}", re.S)
 _POU_KEYWORD = re.compile(r"\b(FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.I)
@@ -21,7 +22,7 @@ _LANGUAGES = {"NWL": "a network list (LD, FBD or IL)", "SFC": "SFC", "CFC": "CFC
 _MEMBERS = {"Method": "METHOD", "Action": "ACTION", "Property": "PROPERTY"}
 _PROPERTY = re.compile(r"PROPERTY\s+(?:(?:PUBLIC|PRIVATE|PROTECTED|INTERNAL|FINAL|ABSTRACT)\s+)*(\w+)\s*:\s*"
                        r"([^\r\n;]*?)\s*;?\s*$", re.I | re.M)
-_OBJECTS = {"POU", "GVL", "DUT", "Itf"}
+_OBJECTS = {"POU", "GVL", "DUT", "Itf", "EnumerationTextList"}
 
 
 def is_object_file(path):

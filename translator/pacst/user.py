@@ -26,12 +26,13 @@ STANDARD_NAMESPACES = {"TC2_STANDARD", "STANDARD"}
 _VENDOR_LIBRARY = re.compile(r"(TC[23]_\w+|SM3_\w+|SYS\w+|CAA_?\w+|UTIL|IOSTANDARD|CMPERRORS\w*)$", re.I)
 
 
-def unknown_namespace(name):
-    """The reason a program cannot name `name` as a library namespace."""
+def unknown_namespace(name, known):
+    """The reason a program cannot name `name` as a library namespace; `known`: the namespaces it may write."""
     if _VENDOR_LIBRARY.match(name):
         return (f"pac-test does not provide the vendor library {name} (it provides PA_CONTROL, and the standard "
                 "FBs and functions as Tc2_Standard or Standard); leave its calls out of the program tested")
-    return f"'{name}' is no library namespace (PA_CONTROL, Tc2_Standard, Standard)"
+    return (f"'{name}' is no library namespace ({', '.join(known)}); give pac-test a library of your own with the "
+            f"namespace it is referenced under: --library {name}=PATH, or \"libraries\" in the wiring file")
 
 
 def namespace_like(name):
