@@ -30,22 +30,23 @@ def parse(items):
     return found
 
 
-def check(libraries, where=lambda name: f"--library {name}"):
-    """A LibraryError for a namespace given twice, a library given twice, a PATH that is no library; `where`
-    names a library's entry in the message."""
+def check(libraries, labels=None):
+    """A LibraryError for a namespace given twice, a library given twice, a PATH that is no library; `labels`
+    (one per library, default `--library NAME`) say where each is given."""
+    labels = labels or [f"--library {name}" for name, _ in libraries]
     names, paths = {}, {}
-    for name, path in libraries:
+    for (name, path), label in zip(libraries, labels):
         if not name.replace("_", "").isalnum() or name[0].isdigit():
-            raise LibraryError(f"{where(name)}: the namespace {name} is no ST identifier")
+            raise LibraryError(f"{label}: the namespace {name} is no ST identifier")
         if name.upper() in names:
-            raise LibraryError(f"{where(name)}: the namespace {name} is given twice ({names[name.upper()]} too; "
-                               "namespaces are case-insensitive)")
+            raise LibraryError(f"{label}: the namespace {name} is given twice, also by {names[name.upper()]} "
+                               "(namespaces are case-insensitive)")
         key = os.path.realpath(path)
         if key in paths:
-            raise LibraryError(f"{where(name)}: {path} is given twice, also as the library {paths[key]}")
+            raise LibraryError(f"{label}: {path} is given twice, also by {paths[key]}")
         if not (os.path.isdir(path) or os.path.isfile(path) and path.lower().endswith((".plcproj", ".xml"))):
-            raise LibraryError(f"{where(name)}: {path} is no library (a .plcproj, a PLCopen XML file or a folder)")
-        names[name.upper()], paths[key] = name, name
+            raise LibraryError(f"{label}: {path} is no library (a .plcproj, a PLCopen XML file or a folder)")
+        names[name.upper()], paths[key] = label, label
 
 
 def project_file(path):

@@ -75,8 +75,9 @@ class HostBuild:
         ST files written to OUT/plcopen."""
         # the vendor libraries' parts and TcUnit's suite are dialect: with MATIEC only for a program that names
         # them (which pacst matiec then refuses at its lines)
-        dialect = self.takes_dialect or project.uses_vendor(self.wiring.sources)
-        tcunit = self.takes_dialect and project.uses_tcunit(self.wiring.sources)
+        theirs = self.wiring.sources + [path for _, path, _ in self.wiring.libraries]
+        dialect = self.takes_dialect or project.uses_vendor(theirs)
+        tcunit = self.takes_dialect and project.uses_tcunit(theirs)
         vendor = project.vendor_sources() if dialect else []
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
             (project.tcunit_sources() if tcunit else []) + self.wiring.sources
@@ -88,6 +89,8 @@ class HostBuild:
             namespaces += ["--namespace", f"{name}={folder}"]
         if tcunit:  # TcUnit's FB_TestSuite and RUN (docs/user_tests.md#tcunit-suites)
             namespaces += ["--namespace", f"TcUnit={project.TCUNIT}"]
+        for name, path, _ in self.wiring.libraries:  # the program's own: FsCommon.I_Runnable
+            namespaces += ["--library", f"{name}={path}"]
         return ["--user", *namespaces, "--sources", os.path.join(self.out, "plcopen"), *natives, *files]
 
     def translate(self):
@@ -108,7 +111,8 @@ class HostBuild:
                 found.append(fb)
             return found
         theirs = (os.path.join(project.ROOT, "st", ""), project.VOCABULARY + os.sep, project.TCUNIT + os.sep,
-                  project.VENDOR + os.sep)
+                  project.VENDOR + os.sep, *(os.path.join(f, "") for f in project.library_folders(self.wiring.libraries,
+                                                                                               self.out)))
         # a TcUnit suite (EXTENDS FB_TestSuite) is a test whatever its name
         return [fb for fb in symbols.table["function_blocks"]
                 if not fb.get("standard") and (fb["name"].upper().startswith(self.wiring.prefix.upper())

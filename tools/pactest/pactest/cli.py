@@ -148,6 +148,14 @@ def _run_one(host, wiring, fb, out, vcd_dir, time_limit_ms, vcd_all=False, in_xm
     return result
 
 
+def _library_option(item):
+    """(namespace, path, where given) of a --library NAME=PATH (the path relative to the working folder)."""
+    name, sep, path = item.partition("=")
+    if not sep or not name.strip() or not path:
+        raise project.LibraryError(f"--library {item}: write NAMESPACE=PATH (a .plcproj, a PLCopen XML file or a folder)")
+    return name.strip(), os.path.abspath(path), f"--library {name.strip()}"
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="pac-test", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -163,6 +171,10 @@ def main(argv=None):
     parser.add_argument("--list", action="store_true", help="print the tests of this shard and stop")
     parser.add_argument("--vcd-all", action="store_true",
                         help="write the VCD of every test, passing ones too (OUT/vcd/NAME.vcd)")
+    parser.add_argument("--library", action="append", default=[], metavar="NAME=PATH",
+                        help="a library of your own that the program references under the namespace NAME (a .plcproj "
+                             "or its folder, a PLCopen XML project, a folder of ST files); besides the wiring file's "
+                             "\"libraries\"")
     parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache)")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
     args = parser.parse_args(argv)
@@ -175,6 +187,8 @@ def main(argv=None):
         wiring = Wiring(args.wiring)
         for warning in wiring.warnings():
             print(f"pac-test: warning: {args.wiring}: {warning}", file=sys.stderr)
+        wiring.libraries += [_library_option(item) for item in args.library]
+        project.check_libraries(wiring.libraries)
         pac = project.PacBuild(args.pac_build)
         if pac.matiec:  # MATIEC's C has no coverage table of the user's ST (docs/user_tests.md, "On MATIEC")
             args.no_coverage = True
@@ -202,7 +216,7 @@ def main(argv=None):
     except WiringError as e:
         print(f"pac-test: invalid wiring file {args.wiring}: {e}", file=sys.stderr)
         return EXIT_REFUSED
-    except (build.BuildError, hostgen.ProgramError) as e:
+    except (build.BuildError, hostgen.ProgramError, project.LibraryError) as e:
         print(f"pac-test: {e}", file=sys.stderr)
         return EXIT_REFUSED
     built = time.monotonic()
@@ -235,7 +249,8 @@ def main(argv=None):
     junit.write(junit_path, wiring.name, results, ran - built)
     if not args.no_coverage:
         coverage.report(host_build.obj, wiring.sources, _where(os.path.join(out, "coverage")),
-                        extracted=os.path.join(out, "plcopen"))
+                        extracted=os.path.join(out, "plcopen"),
+                        libraries=project.library_folders(wiring.libraries, out))
     bad = [r for r in results if r.outcome in ("failed", "error", "passed unexpectedly")]
     expected = sum(1 for r in results if r.outcome == "failed as expected")
     shard = f", shard {index}/{count}" if count > 1 else ""

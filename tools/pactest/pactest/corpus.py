@@ -5,7 +5,9 @@ For each project under the folders given (a folder holding a .plcproj, or a fold
 pac-test gives a program: its test vocabulary, the vendor libraries' parts it provides (Tc2_System's) and, for
 sources that name it, TcUnit's FB_TestSuite (for a project that declares TcUnit itself, the vendor parts only). A file
 is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
-depends on it is counted as such. Prints each project's counts and the refusals by reason (the names in a reason replaced by
+depends on it is counted as such. A project is translated with the libraries its .plcproj references that are
+projects measured too (matched by title or name and company; pac-test-corpus A/Lib A/App gives App the library Lib
+under the namespace its reference names), as `pac-test --library` gives them. Prints each project's counts and the refusals by reason (the names in a reason replaced by
 '…'), and with --json writes them."""
 import argparse
 import collections
@@ -17,11 +19,16 @@ import sys
 
 from . import project
 
-KINDS = {".tcpou": "POU", ".tcdut": "DUT", ".tcgvl": "GVL", ".tcio": "ITF"}
+KINDS = {".tcpou": "POU", ".tcdut": "DUT", ".tcgvl": "GVL", ".tcio": "ITF", ".tctleo": "DUT"}
 # a refusal caused by another file's refusal, not by the file's own ST
 _DEPENDS = re.compile(r"declaration was refused|undeclared (type|name)|has no (variable|member|METHOD)|"
                       r"called before its declaration|cannot be used: its declaration", re.I)
-_VENDOR = re.compile(r"vendor library|\b(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
+# a refusal for a vendor library: pac-test says so, or the name it quotes is one of a vendor library's
+_VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
+# a name of a library missing because the library's own declaration of it was refused
+_LIBRARY_LACKS = re.compile(r"the library \w+ has no (?:type or POU|declaration) '(\w+)'")
+# a refusal for a library of another project not given (an unknown namespace that is no vendor's)
+_LIBRARY = re.compile(r"is no library namespace")
 
 
 def _translator():
@@ -66,18 +73,88 @@ def _given(files):
     return extra + project.tcunit_sources(), native + project.tcunit_natives(), namespaces
 
 
-def measure(files, cache, jobs):
-    """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`."""
+def _plcproj(root):
+    """The .plcproj of a project folder, or None."""
+    found = sorted(n for n in os.listdir(root) if n.lower().endswith(".plcproj")) if os.path.isdir(root) else []
+    return os.path.join(root, found[0]) if found else None
+
+
+def _project_info(root):
+    """(the names a reference may give the project's library by, its default namespace, [(referenced library's
+    name, company, namespace or None)]) of the .plcproj in `root`; nothing for a folder without one."""
+    path = _plcproj(root)
+    if path is None:
+        return set(), None, []
+    from lxml import etree  # the translator's venv's
+    try:
+        tree = etree.parse(path)
+    except etree.XMLSyntaxError:
+        return set(), None, []
+
+    def text(element, tag):
+        found = element.find(f"{{*}}{tag}")
+        return found.text.strip() if found is not None and found.text else None
+    group = tree.getroot().find("{*}PropertyGroup")
+    company = text(group, "Company") if group is not None else None
+    names = {(n, company) for n in (text(group, "Title"), text(group, "Name")) if group is not None and n}
+    namespace = (text(group, "DefaultNamespace") or text(group, "Title")) if group is not None else None
+    references = []
+    for ref in list(tree.iter("{*}PlaceholderReference")) + list(tree.iter("{*}LibraryReference")):
+        resolution = text(ref, "DefaultResolution") or ref.get("Include", "")
+        m = re.match(r"\s*([^,]+?)\s*,.*?\(([^)]*)\)\s*$", resolution)
+        name, by = (m.group(1), m.group(2)) if m else (ref.get("Include", "").split(",")[0], None)
+        references.append((name, by, text(ref, "Namespace")))
+    return names, namespace, references
+
+
+def dependencies(roots):
+    """{project folder: [(namespace, library's project folder)]}: each library a project references that is one of
+    the projects measured (matched by its title or name and its company), under the reference's namespace or the
+    library's default one, with the libraries those reference in turn; a library pac-test gives itself (TcUnit,
+    Tc2_Standard...) is left to pac-test's own."""
+    info = {root: _project_info(root) for root in roots}
+    reserved = project.reserved_namespaces()
+    found = {}
+    for root in roots:
+        deps, todo = [], [root]
+        while todo:
+            for name, company, namespace in info[todo.pop()][2]:
+                library = next((r for r in roots if r != root and any(n == name and (company is None or c in (None, company))
+                                                                      for n, c in info[r][0])), None)
+                if library is None:
+                    continue
+                namespace = namespace or info[library][1] or name
+                if namespace.upper() in reserved or any(f == library for _, f in deps):
+                    continue
+                deps.append((namespace, library))
+                todo.append(library)
+        found[root] = deps
+    return found
+
+
+def _lacks_refused(message, gone):
+    """Whether `message` says a library lacks a name whose file in it was refused."""
+    m = _LIBRARY_LACKS.search(message)
+    return m is not None and m.group(1).upper() in gone
+
+
+def measure(files, cache, jobs, libraries=()):
+    """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`, translated with its
+    `libraries` [(namespace, folder, files)] as pac-test translates a program with --library."""
     compiler, errors, order, parsing = _translator()
     extra, native, namespaces = _given(files)
+    theirs = [f for _, _, library_files in libraries for f in library_files if f not in files]
+    for namespace, folder, _ in libraries:
+        namespaces.setdefault(namespace.upper(), (namespace, folder))
     verdict = {}
     sources = []
-    for path, result in zip(files + extra, parsing.parse_files(files + extra, cache, jobs, user=True)):
+    for path, result in zip(files + theirs + extra, parsing.parse_files(files + theirs + extra, cache, jobs, user=True)):
         if isinstance(result, errors.StError):
             verdict[path] = ("syntax", f"{result.line}: {result.message}")
         else:
             sources.append(result)
-    for _ in range(8):
+    gone = {os.path.splitext(os.path.basename(p))[0].upper() for p in theirs if p in verdict}  # libraries' refused
+    for _ in range(12):
         if not sources:
             break
         try:
@@ -96,10 +173,12 @@ def measure(files, cache, jobs):
                 verdict[p] = ("translation", str(next(iter(refused.values()))[0].message))
             sources = []
             break
+        gone.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused if p in theirs)
         for path, errs in refused.items():
-            own = [x for x in errs if not _DEPENDS.search(x.message)]
+            own = [x for x in errs if not _DEPENDS.search(x.message) and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
-            kind = ("vendor library" if any(_VENDOR.search(x.message) for x in errs)
+            kind = ("vendor library" if _VENDOR.search(first.message)
+                    else "library not given" if _LIBRARY.search(first.message)
                     else "refused construct" if own else "depends on a refused declaration")
             verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
         sources = [s for s in sources if s.path not in refused]
@@ -137,8 +216,11 @@ def main(argv=None):
     totals = collections.Counter()
     reasons = collections.Counter()
     report = {"projects": []}
-    for root, files in projects(args.folders).items():
-        verdict = measure(files, args.cache, args.jobs)
+    found = projects(args.folders)
+    libraries = dependencies(list(found))
+    for root, files in found.items():
+        given = [(namespace, folder, found[folder]) for namespace, folder in libraries[root]]
+        verdict = measure(files, args.cache, args.jobs, given)
         pous = [f for f in files if f.lower().endswith(".tcpou")]
         counts = collections.Counter("accepted" if verdict[f] is None else verdict[f][0] for f in pous)
         totals.update(counts)
@@ -146,14 +228,17 @@ def main(argv=None):
         for f in pous:
             if verdict[f] is not None and verdict[f][0] != "depends on a refused declaration":
                 reasons[(verdict[f][0], reason(verdict[f][1].split(": ", 1)[1]))] += 1
-        print(f"{root}: {len(pous)} POUs, {counts['accepted']} accepted; "
+        with_libraries = f" (with {', '.join(f'{n}: {f}' for n, f in libraries[root])})" if libraries[root] else ""
+        print(f"{root}{with_libraries}: {len(pous)} POUs, {counts['accepted']} accepted; "
               + ", ".join(f"{n} {k}" for k, n in sorted(counts.items()) if k != "accepted"))
         report["projects"].append({"folder": root, "pous": len(pous), "counts": dict(counts),
+                                   "libraries": {n: f for n, f in libraries[root]},
                                    "files": {f: verdict[f] for f in files}})
     share = 100.0 * totals["accepted"] / totals["POUs"] if totals["POUs"] else 0.0
     print(f"total: {totals['POUs']} POUs, {totals['accepted']} accepted ({share:.1f} %), "
           f"{totals['syntax']} refused by the parser, {totals['refused construct']} for a construct, "
           f"{totals['vendor library']} needing a vendor library, "
+          f"{totals['library not given']} needing a library of another project not measured, "
           f"{totals['depends on a refused declaration']} depending on a refused declaration")
     print("refusals by reason (the POU's first):")
     for (kind, text), n in reasons.most_common():

@@ -33,10 +33,10 @@ def source_folders(sources):
     return [f for f in folders if not any(f.startswith(os.path.join(o, "")) for o in folders if o != f)]
 
 
-def report(objects, sources, out, extracted=None):
+def report(objects, sources, out, extracted=None, libraries=()):
     """Prints the table of the ST files in the folders of `sources` and of those extracted from a PLCopen XML
-    project into `extracted` (under OUT); returns False when there is none (gcovr missing, or no line of those
-    files measured)."""
+    project into `extracted` (under OUT), but the program's own libraries' (in the folders `libraries`); returns
+    False when there is none (gcovr missing, or no line of those files measured)."""
     gcovr = gcovr_command()
     if gcovr is None:
         print("pac-test: no coverage table: gcovr is not installed (pip install gcovr)")
@@ -57,7 +57,9 @@ def report(objects, sources, out, extracted=None):
         if extracted.startswith(built):
             keep = f"(?!{re.escape(extracted[len(built):])})"
     run = subprocess.run([gcovr, "--root", os.path.commonpath(folders), *filters,
-                          "--exclude", re.escape(built) + keep + ".*", "--json", detail,
+                          "--exclude", re.escape(built) + keep + ".*",
+                          *[a for f in libraries for a in ("--exclude", re.escape(os.path.join(f, "")) + ".*")],
+                          "--json", detail,
                           "--html-details", os.path.join(out, "index.html"),
                           "--html-title", "pac-test: coverage of the machine program", objects],
                          check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)

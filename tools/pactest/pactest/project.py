@@ -3,6 +3,7 @@ configured build of the project holding the runtime, simulator and rig libraries
 import glob
 import os
 import re
+import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 # The library's namespace in CODESYS and TwinCAT (docs/import.md): a program writes PA_CONTROL.MC_Power.
@@ -19,6 +20,49 @@ LIBRARY_DIRS = {"pac_scenario_lib": "scenario", "pac_scenario_loader": "scenario
                 "pac_rig": "rig", "pac_st": "st", "pac_sim": "sim", "pac_runtime": "runtime"}
 INCLUDES = ["runtime/include", "sim/include", "rig/include", "runtime/names/include", "scenario",
             "translator/pacst/include"]
+
+
+def translator():
+    """The checkout's translator (PACTEST_TRANSLATOR: another checkout's) importable as `pacst`, as pac-test runs it."""
+    path = os.environ.get("PACTEST_TRANSLATOR", os.path.join(ROOT, "translator"))
+    if path not in sys.path:
+        sys.path.insert(0, path)
+
+
+def reserved_namespaces():
+    """{upper namespace: what pac-test gives under it}: no library of the program's own may take one."""
+    names = {NAMESPACE: "the PA-CONTROL library", "TC2_STANDARD": "the standard library", "STANDARD": "the standard "
+             "library", "TCUNIT": "TcUnit's suite"}
+    names.update((name.upper(), f"its part of the vendor library {name}") for name in vendor_libraries())
+    return names
+
+
+class LibraryError(Exception):
+    """A library of the program's own that pac-test cannot take, with where it is given."""
+
+
+def check_libraries(libraries):
+    """A program's own libraries, [(namespace, path, where given)]: raises pacst's LibraryError, naming where the
+    library is given, for a namespace pac-test gives itself, a namespace or a library given twice, a path that is no
+    library."""
+    translator()
+    from pacst import libraries as pacst_libraries  # noqa: E402 (the checkout's translator)
+    reserved = reserved_namespaces()
+    for name, _, label in libraries:
+        if name.upper() in reserved:
+            raise LibraryError(f"{label}: the namespace {name} is pac-test's, for {reserved[name.upper()]}: "
+                               "reference your library under another")
+    try:
+        pacst_libraries.check([(name, path) for name, path, _ in libraries], [label for _, _, label in libraries])
+    except pacst_libraries.LibraryError as e:
+        raise LibraryError(str(e)) from None
+
+
+def library_folders(libraries, out):
+    """The folders whose declarations the program's own libraries hold (a PLCopen XML library's: OUT/plcopen/NAME)."""
+    translator()
+    from pacst import libraries as pacst_libraries  # noqa: E402
+    return [pacst_libraries.folder(name, path, os.path.join(out, "plcopen")) for name, path, _ in libraries]
 
 
 def library_sources():
@@ -81,8 +125,9 @@ def _names(sources, pattern):
     """Whether `pattern` occurs in the user's sources."""
     files = []
     for path in sources:
-        if path.lower().endswith(".plcproj"):
-            files += [os.path.join(d, n) for d, _, names in os.walk(os.path.dirname(path)) for n in names
+        if path.lower().endswith(".plcproj") or os.path.isdir(path):  # a library may be a folder
+            top = path if os.path.isdir(path) else os.path.dirname(path)
+            files += [os.path.join(d, n) for d, _, names in os.walk(top) for n in names
                       if n.lower().endswith((".tcpou", ".st"))]
         else:
             files.append(path)

@@ -13,7 +13,7 @@ class WiringError(Exception):
         super().__init__(f"{path}: {reason}")
 
 
-TOP_KEYS = {"name", "description", "sources", "tasks", "bus", "timing", "controller", "tests", "signals"}
+TOP_KEYS = {"name", "description", "sources", "libraries", "tasks", "bus", "timing", "controller", "tests", "signals"}
 TEST_KEYS = {"prefix", "names", "task", "time_limit_ms", "faults", "expected_to_fail"}
 FAULT_KEYS = {"at_ms", "fault", "link", "number", "input", "value", "note"}
 
@@ -77,6 +77,7 @@ class Wiring:
         _object(data, "$", TOP_KEYS)
         self.name = data.get("name", os.path.splitext(os.path.basename(path))[0])
         self.sources = self._sources(data.get("sources"), "$.sources")
+        self.libraries = self._libraries(data.get("libraries", {}), "$.libraries")
         self.tasks = self._tasks(data.get("tasks"), "$.tasks")
         self.base_cycle_ms = math.gcd(*[t["cycle_ms"] for t in self.tasks])
         self.modules = self._bus(data.get("bus", {}), "$.bus")
@@ -113,6 +114,17 @@ class Wiring:
                 raise WiringError(f"{path}[{i}]", f"no file matches {pattern}")
             files += [f for f in found if f not in files]
         return files
+
+    def _libraries(self, value, path):
+        """[(namespace, path, where it is given)] of the program's own libraries: {"FsCommon": "lib/FsCommon.plcproj"}."""
+        _object(value, path, set(value) if isinstance(value, dict) else set())
+        found = []
+        for name, where in value.items():
+            if not isinstance(where, str) or not where:
+                raise WiringError(f"{path}.{name}", "expected the library's path: a .plcproj, a PLCopen XML file or a "
+                                                    "folder of ST or TwinCAT files")
+            found.append((name, os.path.normpath(os.path.join(self.folder, where)), f"{path}.{name}"))
+        return found
 
     def _tasks(self, value, path):
         if not isinstance(value, list) or not value:

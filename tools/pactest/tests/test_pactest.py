@@ -577,6 +577,89 @@ class DialectTest(unittest.TestCase):
             self.assertRegex(f.read(), r"\$scope module GVL_Io \$end\n\$var wire 1 \S+ StartButton \$end")
 
 
+class LibraryTest(unittest.TestCase):
+    """tools/pactest/tests/library: a machine program and a library of its own (Common) that it references under
+    that namespace, given in the wiring file's "libraries" or with --library: Common.FB_Counter, Common.GVL_Common.x,
+    Common.E_Level.FULL, EXTENDS Common.FB_Counter, IMPLEMENTS Common.I_Runnable and the names without the namespace
+    resolve; a library missing, given twice or under pac-test's own namespace, and a name the library lacks, are
+    refused with where they are given."""
+
+    folder = os.path.join(HERE, "library")
+
+    def copy(self, name, libraries=None):
+        """The project copied to OUT/name with the wiring file's "libraries" replaced (None: left out); its wiring file."""
+        import shutil
+        target = os.path.join(OUT, name)
+        shutil.rmtree(target, ignore_errors=True)
+        shutil.copytree(self.folder, target)
+        path = os.path.join(target, "wiring.json")
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+        data.pop("libraries")
+        if libraries is not None:
+            data["libraries"] = libraries
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(data, f)
+        return path
+
+    def test_every_test_passes(self):
+        run = pac_test(os.path.join(self.folder, "wiring.json"), os.path.join(OUT, "library"), "--no-coverage")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn("1 tests: 1 passed, 0 failed", run.stdout)
+        self.assertRegex(run.stdout, r"ok  FB_TestLibrary  \(7 asserts")
+
+    def test_the_library_given_as_an_option(self):
+        wiring = self.copy("library-option")
+        run = pac_test(wiring, os.path.join(OUT, "library-option"), "--no-coverage", "--list",
+                       "--library", f"Common={os.path.join(os.path.dirname(wiring), 'Common')}")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertEqual(run.stdout.split(), ["FB_TestLibrary"])
+
+    def test_without_the_library_its_namespace_is_refused_at_its_line(self):
+        wiring = self.copy("library-missing")
+        run = pac_test(wiring, os.path.join(OUT, "library-missing", "out"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        source = os.path.join(os.path.dirname(wiring), "Machine", "FB_DoubleCounter.st")
+        line = line_of(source, "EXTENDS Common.FB_Counter")
+        with open(source, encoding="utf-8") as f:
+            column = f.read().splitlines()[line - 1].index("Common.FB_Counter") + 1
+        self.assertIn(f"{source}:{line}:{column}: error: 'Common.FB_Counter': 'Common' is no library namespace "
+                      "(PA_CONTROL, Tc2_Standard, Standard); give pac-test a library of your own with the namespace it "
+                      "is referenced under: --library Common=PATH", run.stderr)
+
+    def test_a_library_given_twice(self):
+        wiring = self.copy("library-twice", {"Common": "Common", "Again": "Common/"})
+        run = pac_test(wiring, os.path.join(OUT, "library-twice", "out"), "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        common = os.path.join(os.path.dirname(wiring), "Common")
+        self.assertIn(f"pac-test: $.libraries.Again: {common} is given twice, also by $.libraries.Common", run.stderr)
+        wiring = self.copy("library-twice", {"Common": "Common"})
+        run = pac_test(wiring, os.path.join(OUT, "library-twice", "out"), "--list", "--library", "common=Machine")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("pac-test: --library common: the namespace common is given twice, also by $.libraries.Common",
+                      run.stderr)
+
+    def test_a_namespace_of_pac_test_itself(self):
+        wiring = self.copy("library-clash", {"PA_CONTROL": "Common"})
+        run = pac_test(wiring, os.path.join(OUT, "library-clash", "out"), "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn("pac-test: $.libraries.PA_CONTROL: the namespace PA_CONTROL is pac-test's, for the PA-CONTROL "
+                      "library: reference your library under another", run.stderr)
+
+    def test_a_name_the_library_lacks(self):
+        wiring = self.copy("library-lacks", {"Common": "Common"})
+        source = os.path.join(os.path.dirname(wiring), "Machine", "MAIN.st")
+        with open(source, encoding="utf-8") as f:
+            text = f.read()
+        with open(source, "w", encoding="utf-8") as f:
+            f.write(text.replace("Parts : Common.FB_Counter;", "Parts : Common.FB_Count;"))
+        run = pac_test(wiring, os.path.join(OUT, "library-lacks", "out"), "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        line = line_of(source, "Common.FB_Count;")
+        self.assertIn(f"{source}:{line}:11: error: 'Common.FB_Count': the library Common has no type or POU "
+                      "'FB_Count'", run.stderr)
+
+
 @unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
 class MatiecDialectTest(unittest.TestCase):
     """On a MATIEC build, the dialect project is refused by pacst before iec2c, each construct at its line."""
