@@ -606,7 +606,7 @@ class LibraryTest(unittest.TestCase):
         run = pac_test(os.path.join(self.folder, "wiring.json"), os.path.join(OUT, "library"), "--no-coverage")
         self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
         self.assertIn("1 tests: 1 passed, 0 failed", run.stdout)
-        self.assertRegex(run.stdout, r"ok  FB_TestLibrary  \(7 asserts")
+        self.assertRegex(run.stdout, r"ok  FB_TestLibrary  \(6 asserts")
 
     def test_the_library_given_as_an_option(self):
         wiring = self.copy("library-option")
@@ -623,9 +623,10 @@ class LibraryTest(unittest.TestCase):
         line = line_of(source, "EXTENDS Common.FB_Counter")
         with open(source, encoding="utf-8") as f:
             column = f.read().splitlines()[line - 1].index("Common.FB_Counter") + 1
-        self.assertIn(f"{source}:{line}:{column}: error: 'Common.FB_Counter': 'Common' is no library namespace "
-                      "(PA_CONTROL, Tc2_Standard, Standard); give pac-test a library of your own with the namespace it "
-                      "is referenced under: --library Common=PATH", run.stderr)
+        self.assertRegex(run.stderr, re.escape(f"{source}:{line}:{column}: error: 'Common.FB_Counter': 'Common' is no "
+                                               "library namespace (PA_CONTROL, ") + r"[\w, ]*" +
+                         re.escape("Standard); give pac-test a library of your own with the namespace it is referenced "
+                                   "under: --library Common=PATH"))
 
     def test_a_library_given_twice(self):
         wiring = self.copy("library-twice", {"Common": "Common", "Again": "Common/"})
