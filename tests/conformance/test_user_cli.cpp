@@ -523,4 +523,36 @@ TEST_F(TranslatorUserCli, MatiecRefusesAFunctionThatReadsGlobals) {
         << result.output;
 }
 
+TEST_F(TranslatorUserCli, LibraryOfTheProgramsOwnFromPlcopen) {
+    // A library of the program's own given as a PLCopen XML project (--library NAME=PATH): its objects written to
+    // the --sources folder's NAME/ and held by the namespace NAME; a refusal in it named at the XML file's line.
+    const std::string lamp =
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous>\n"
+        "<pou name=\"FB_Blink\" pouType=\"functionBlock\">\n<interface><outputVars><variable name=\"Lit\"><type><BOOL/>"
+        "</type></variable></outputVars></interface>\n"
+        "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Lit := NOT Lit;\nLit := BODY;</xhtml></ST></body>\n"
+        "</pou>\n</pous></types></project>\n";
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR\n  Blink : Lamps.FB_Blink;\n  On : BOOL;\nEND_VAR\n"
+                                     "Blink();\nOn := Blink.Lit;\nEND_PROGRAM\n");
+    auto xml = Write("Lamps.xml", std::string(lamp).replace(lamp.find("\nLit := BODY;"), 13, ""));
+    const std::string sources = Out() + "/plcopen";
+    auto result = RunTranslator({"build", "--user", "--library", "Lamps=" + xml, "--sources", sources, "--out", Out(),
+                                 main});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::exists(sources + "/Lamps/FB_Blink.st"));
+    result = RunTranslator({"check", "--user", main});
+    EXPECT_NE(result.output.find(main + ":3:11: error: 'Lamps.FB_Blink': 'Lamps' is no library namespace"),
+              std::string::npos) << result.output;
+    auto broken = Write("Broken.xml", lamp);
+    result = RunTranslator({"check", "--user", "--library", "Lamps=" + broken, "--sources", sources, main});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(broken + ":7:8: error: undeclared name 'BODY' (in FB_Blink)"), std::string::npos)
+        << result.output;
+    result = RunTranslator({"check", "--user", "--library", "Lamps=" + xml, "--library", "LAMPS=" + broken, main});
+    EXPECT_NE(result.output.find("pacst: --library LAMPS: the namespace LAMPS is given twice, also by --library Lamps"),
+              std::string::npos) << result.output;
+    result = RunTranslator({"check", "--library", "Lamps=" + xml, main});
+    EXPECT_NE(result.output.find("need --user"), std::string::npos) << result.output;
+}
+
 }  // namespace
