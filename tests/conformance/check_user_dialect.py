@@ -5,7 +5,8 @@
 The page's construct table names a snippet of tests/conformance/dialect/ in each row, and says whether user
 mode accepts it. Every snippet is in the table once; the verdict is the snippet's (its first line is
 `(* accept *)` or `(* expect-error: LINE:COL: text *)`), and pacst --user, with the library under its
-namespace as pac-test gives it, gives that verdict: an accepted snippet translates, and `pacst matiec` would
+namespace as pac-test gives it (and, for a snippet whose second line is `(* library NAME: FOLDER *)`, the ST files
+of the repository's FOLDER as a library of the program's own, as `--library NAME=FOLDER` gives it), gives that verdict: an accepted snippet translates, and `pacst matiec` would
 refuse it (a construct of the dialect, MATIEC compiles the portable subset only) unless the row says MATIEC
 takes it; a refused one is refused at its line and column with that text. The page's table of standard
 functions gives a call and its result type in each row: each accepted call is assigned to a variable of
@@ -21,6 +22,7 @@ ROW = re.compile(r"^\|(.+)\|\s*$")
 SNIPPET = re.compile(r"\]\(\.\./tests/conformance/dialect/(\w+\.st)\)")
 EXPECT = re.compile(r"^\(\* expect-error: (\d+):(\d+): (.*?) \*\)")
 CALL = re.compile(r"^`(.+)`$")
+LIBRARY = re.compile(r"^\(\* library (\w+): (\S+) \*\)")
 
 
 def table_rows(text, heading):
@@ -48,7 +50,7 @@ def main(argv=None):
     parser.add_argument("--cache")
     args = parser.parse_args(argv)
     sys.path.insert(0, os.path.join(args.repo, "translator"))
-    from pacst import cli  # noqa: E402
+    from pacst import cli, libraries  # noqa: E402
     from pacst.errors import StError, StErrors  # noqa: E402
     from pacst.parsing import parse_files  # noqa: E402
 
@@ -62,11 +64,18 @@ def main(argv=None):
     problems = []
 
     def translate(path):
-        """None when pacst --user translates `path` with the library, else the first error; and the
-        constructs `pacst matiec` refuses."""
+        """None when pacst --user translates `path` with the library (and the library of its own its second line
+        names), else the first error; and the constructs `pacst matiec` refuses."""
+        with open(path, encoding="utf-8") as f:
+            own = LIBRARY.match((f.readlines()[1:2] or [""])[0])
+        given, extra = namespaces, []
+        if own is not None:
+            folder = os.path.join(args.repo, own.group(2))
+            given = dict(namespaces, **{own.group(1).upper(): (own.group(1), folder)})
+            extra = parse_files(libraries.files(own.group(1), folder, None), args.cache, 1, True)
         results = parse_files([path], args.cache, 1, True)
         try:
-            comp, _, _ = cli._translate_parsed(lib_results + results, [], True, (), namespaces)
+            comp, _, _ = cli._translate_parsed(lib_results + extra + results, [], True, (), given)
         except StErrors as e:
             return e.errors[0], []
         except StError as e:
