@@ -26,8 +26,9 @@ _DEPENDS = re.compile(r"declaration was refused|undeclared (type|name)|has no (v
 # a refusal for a vendor library: pac-test says so, or the name it quotes is one of a vendor library's
 _VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
 # a name of a library missing because the library's own declaration of it was refused
-_LIBRARY_LACKS = re.compile(r"the library \w+ has no (?:type or POU|declaration) '(\w+)'")
-# a refusal for a library of another project not given (an unknown namespace that is no vendor's)
+_LIBRARY_LACKS = re.compile(r"the library (\w+) has no (?:type or POU|declaration) '(\w+)'")
+# a refusal for a library of another project not given (an unknown namespace that is no vendor's), or, for a
+# library given, a name it lacks (the library's version measured is not the one the project was written against)
 _LIBRARY = re.compile(r"is no library namespace")
 
 
@@ -92,12 +93,12 @@ def _project_info(root):
         return set(), None, []
 
     def text(element, tag):
-        found = element.find(f"{{*}}{tag}")
+        found = element.find(f"{{*}}{tag}") if element is not None else None
         return found.text.strip() if found is not None and found.text else None
     group = tree.getroot().find("{*}PropertyGroup")
-    company = text(group, "Company") if group is not None else None
-    names = {(n, company) for n in (text(group, "Title"), text(group, "Name")) if group is not None and n}
-    namespace = (text(group, "DefaultNamespace") or text(group, "Title")) if group is not None else None
+    company = text(group, "Company")
+    names = {(n, company) for n in (text(group, "Title"), text(group, "Name")) if n}
+    namespace = text(group, "DefaultNamespace") or text(group, "Title")
     references = []
     for ref in list(tree.iter("{*}PlaceholderReference")) + list(tree.iter("{*}LibraryReference")):
         resolution = text(ref, "DefaultResolution") or ref.get("Include", "")
@@ -135,7 +136,7 @@ def dependencies(roots):
 def _lacks_refused(message, gone):
     """Whether `message` says a library lacks a name whose file in it was refused."""
     m = _LIBRARY_LACKS.search(message)
-    return m is not None and m.group(1).upper() in gone
+    return m is not None and m.group(2).upper() in gone
 
 
 def measure(files, cache, jobs, libraries=()):
@@ -177,8 +178,10 @@ def measure(files, cache, jobs, libraries=()):
         for path, errs in refused.items():
             own = [x for x in errs if not _DEPENDS.search(x.message) and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
+            lacks = _LIBRARY_LACKS.search(first.message)
             kind = ("vendor library" if _VENDOR.search(first.message)
-                    else "library not given" if _LIBRARY.search(first.message)
+                    else "library not given" if _LIBRARY.search(first.message) or lacks and lacks.group(1).upper()
+                    in {namespace.upper() for namespace, _, _ in libraries}
                     else "refused construct" if own else "depends on a refused declaration")
             verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
         sources = [s for s in sources if s.path not in refused]
@@ -238,8 +241,9 @@ def main(argv=None):
     print(f"total: {totals['POUs']} POUs, {totals['accepted']} accepted ({share:.1f} %), "
           f"{totals['syntax']} refused by the parser, {totals['refused construct']} for a construct, "
           f"{totals['vendor library']} needing a vendor library, "
-          f"{totals['library not given']} needing a library of another project not measured, "
-          f"{totals['depends on a refused declaration']} depending on a refused declaration")
+          f"{totals['depends on a refused declaration']} depending on a refused declaration, "
+          f"{totals['library not given']} needing a library of another project not measured (or a name the "
+          "library measured lacks)")
     print("refusals by reason (the POU's first):")
     for (kind, text), n in reasons.most_common():
         print(f"  {n:4d}  {kind}: {text}")

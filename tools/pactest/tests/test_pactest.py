@@ -236,6 +236,64 @@ class CorpusTest(unittest.TestCase):
         self.assertEqual(files["FB_User.TcPOU"][0], "depends on a refused declaration")
         self.assertEqual(files["FB_Broken.TcPOU"][0], "syntax")
 
+    def test_a_project_gets_the_libraries_it_references(self):
+        """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
+        App is translated with Lib's files, as pac-test --library gives them; without Lib measured, App's use of
+        the namespace counts as needing a library not measured. A POU first refused for OR_ELSE is refused for a
+        construct, whatever else of it names a vendor library."""
+        top = os.path.join(OUT, "corpus-libraries")
+        import shutil
+        shutil.rmtree(top, ignore_errors=True)
+        wrap = ('<?xml version="1.0" encoding="utf-8"?>\n<TcPlcObject Version="1.1.0.1">\n  <POU Name="{0}">\n'
+                '    <Declaration><![CDATA[{1}]]></Declaration>\n'
+                '    <Implementation>\n      <ST><![CDATA[{2}]]></ST>\n    </Implementation>\n  </POU>\n'
+                '</TcPlcObject>\n')
+        projects = {
+            "Lib": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
+                    '<Name>Lib</Name><Company>Example</Company><Title>Example Library</Title>'
+                    '<DefaultNamespace>ExLib</DefaultNamespace></PropertyGroup></Project>\n',
+                    {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;")}),
+            "App": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
+                    '<Name>App</Name></PropertyGroup><ItemGroup>'
+                    '<PlaceholderReference Include="Example Library"><DefaultResolution>Example Library, * (Example)'
+                    '</DefaultResolution><Namespace>Common</Namespace></PlaceholderReference>'
+                    '<PlaceholderReference Include="TcUnit"><DefaultResolution>TcUnit, * (www.tcunit.org)'
+                    '</DefaultResolution><Namespace>TcUnit</Namespace></PlaceholderReference>'
+                    '</ItemGroup></Project>\n',
+                    {"FB_UsesTool": ("FUNCTION_BLOCK FB_UsesTool\nVAR\n  Tool : Common.FB_Tool;\n  m : INT;\nEND_VAR\n",
+                                     "Tool();\nm := Tool.n;"),
+                     "FB_OrElse": ("FUNCTION_BLOCK FB_OrElse\nVAR\n  a : BOOL;\nEND_VAR\n",
+                                   "a := a OR_ELSE a;\na := Tc2_System.F_Nothing();")})}
+        for name, (plcproj, pous) in projects.items():
+            folder = os.path.join(top, name)
+            os.makedirs(folder)
+            with open(os.path.join(folder, name + ".plcproj"), "w", encoding="utf-8") as f:
+                f.write(plcproj)
+            for pou, (declaration, body) in pous.items():
+                with open(os.path.join(folder, pou + ".TcPOU"), "w", encoding="utf-8") as f:
+                    f.write(wrap.format(pou, declaration, body))
+        env = dict(os.environ, PYTHONPATH=TOOL)
+
+        def measure(*folders):
+            report = os.path.join(top, "report.json")
+            run = subprocess.run([sys.executable, "-m", "pactest.corpus", *folders, "--json", report,
+                                  "--cache", os.path.join(OUT, "pacst-cache")], capture_output=True, text=True, env=env)
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            with open(report, encoding="utf-8") as f:
+                found = {os.path.basename(p["folder"]): p for p in json.load(f)["projects"]}
+            return run.stdout, found
+
+        stdout, found = measure(os.path.join(top, "Lib"), os.path.join(top, "App"))
+        app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
+        self.assertEqual(found["App"]["libraries"], {"Common": os.path.join(top, "Lib")}, stdout)
+        self.assertIsNone(app["FB_UsesTool.TcPOU"], stdout)
+        self.assertEqual(app["FB_OrElse.TcPOU"][0], "refused construct")
+        self.assertIn("OR_ELSE", app["FB_OrElse.TcPOU"][1])
+        stdout, found = measure(os.path.join(top, "App"))
+        app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
+        self.assertEqual(app["FB_UsesTool.TcPOU"][0], "library not given", stdout)
+        self.assertIn("1 needing a library of another project not measured", stdout)
+
 
 def _files(folder):
     return [os.path.join(d, n) for d, _, names in os.walk(folder) for n in names]
