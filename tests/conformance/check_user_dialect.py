@@ -5,8 +5,9 @@
 The page's construct table names a snippet of tests/conformance/dialect/ in each row, and says whether user
 mode accepts it. Every snippet is in the table once; the verdict is the snippet's (its first line is
 `(* accept *)` or `(* expect-error: LINE:COL: text *)`), and pacst --user, with the library under its
-namespace as pac-test gives it (and, for a snippet whose second line is `(* library NAME: FOLDER *)`, the ST files
-of the repository's FOLDER as a library of the program's own, as `--library NAME=FOLDER` gives it), gives that verdict: an accepted snippet translates, and `pacst matiec` would
+namespace as pac-test gives it (and, for a snippet whose second line is `(* library NAME: FOLDER *)`, the ST
+files of the repository's FOLDER as a library of the program's own, as `--library NAME=FOLDER` gives it), gives
+that verdict: an accepted snippet translates, and `pacst matiec` would
 refuse it (a construct of the dialect, MATIEC compiles the portable subset only) unless the row says MATIEC
 takes it; a refused one is refused at its line and column with that text. The page's table of standard
 functions gives a call and its result type in each row: each accepted call is assigned to a variable of

@@ -152,7 +152,8 @@ def _library_option(item):
     """(namespace, path, where given) of a --library NAME=PATH (the path relative to the working folder)."""
     name, sep, path = item.partition("=")
     if not sep or not name.strip() or not path:
-        raise project.LibraryError(f"--library {item}: write NAMESPACE=PATH (a .plcproj, a PLCopen XML file or a folder)")
+        raise project.LibraryError(f"--library {item}: write NAMESPACE=PATH (a .plcproj, a PLCopen XML file or a "
+                                   "folder)")
     return name.strip(), os.path.abspath(path), f"--library {name.strip()}"
 
 

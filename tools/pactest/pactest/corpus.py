@@ -7,8 +7,8 @@ sources that name it, TcUnit's FB_TestSuite (for a project that declares TcUnit 
 is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
 depends on it is counted as such. A project is translated with the libraries its .plcproj references that are
 projects measured too (matched by title or name and company; pac-test-corpus A/Lib A/App gives App the library Lib
-under the namespace its reference names), as `pac-test --library` gives them. Prints each project's counts and the refusals by reason (the names in a reason replaced by
-'…'), and with --json writes them."""
+under the namespace its reference names), as `pac-test --library` gives them. Prints each project's counts and the
+refusals by reason (the names in a reason replaced by '…'), and with --json writes them."""
 import argparse
 import collections
 import json
@@ -120,8 +120,8 @@ def dependencies(roots):
         deps, todo = [], [root]
         while todo:
             for name, company, namespace in info[todo.pop()][2]:
-                library = next((r for r in roots if r != root and any(n == name and (company is None or c in (None, company))
-                                                                      for n, c in info[r][0])), None)
+                library = next((r for r in roots if r != root and any(
+                    n == name and (company is None or c in (None, company)) for n, c in info[r][0])), None)
                 if library is None:
                     continue
                 namespace = namespace or info[library][1] or name
@@ -149,7 +149,8 @@ def measure(files, cache, jobs, libraries=()):
         namespaces.setdefault(namespace.upper(), (namespace, folder))
     verdict = {}
     sources = []
-    for path, result in zip(files + theirs + extra, parsing.parse_files(files + theirs + extra, cache, jobs, user=True)):
+    every = files + theirs + extra
+    for path, result in zip(every, parsing.parse_files(every, cache, jobs, user=True)):
         if isinstance(result, errors.StError):
             verdict[path] = ("syntax", f"{result.line}: {result.message}")
         else:

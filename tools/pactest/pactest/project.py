@@ -42,8 +42,8 @@ class LibraryError(Exception):
 
 
 def check_libraries(libraries):
-    """A program's own libraries, [(namespace, path, where given)]: raises pacst's LibraryError, naming where the
-    library is given, for a namespace pac-test gives itself, a namespace or a library given twice, a path that is no
+    """A program's own libraries, [(namespace, path, where given)]: raises LibraryError, naming where the library
+    is given, for a namespace pac-test gives itself, a namespace or a library given twice, a path that is no
     library."""
     translator()
     from pacst import libraries as pacst_libraries  # noqa: E402 (the checkout's translator)

@@ -116,7 +116,8 @@ class Wiring:
         return files
 
     def _libraries(self, value, path):
-        """[(namespace, path, where it is given)] of the program's own libraries: {"FsCommon": "lib/FsCommon.plcproj"}."""
+        """[(namespace, path, where it is given)] of the program's own libraries:
+        {"FsCommon": "lib/FsCommon.plcproj"}."""
         _object(value, path, set(value) if isinstance(value, dict) else set())
         found = []
         for name, where in value.items():

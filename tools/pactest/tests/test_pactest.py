@@ -645,7 +645,8 @@ class LibraryTest(unittest.TestCase):
     folder = os.path.join(HERE, "library")
 
     def copy(self, name, libraries=None):
-        """The project copied to OUT/name with the wiring file's "libraries" replaced (None: left out); its wiring file."""
+        """The project copied to OUT/name with the wiring file's "libraries" replaced (None: left out); its wiring
+        file."""
         import shutil
         target = os.path.join(OUT, name)
         shutil.rmtree(target, ignore_errors=True)
