@@ -180,10 +180,11 @@ def measure(files, cache, jobs, libraries=()):
             own = [x for x in errs if not _DEPENDS.search(x.message) and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
             lacks = _LIBRARY_LACKS.search(first.message)
-            kind = ("vendor library" if _VENDOR.search(first.message)
+            kind = ("depends on a refused declaration" if not own
+                    else "vendor library" if _VENDOR.search(first.message)
                     else "library not given" if _LIBRARY.search(first.message) or lacks and lacks.group(1).upper()
                     in {namespace.upper() for namespace, _, _ in libraries}
-                    else "refused construct" if own else "depends on a refused declaration")
+                    else "refused construct")
             verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
         sources = [s for s in sources if s.path not in refused]
     for s in sources:
