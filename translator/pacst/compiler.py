@@ -255,6 +255,9 @@ class Compiler:
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
         if up in self.enum_values:
             raise self.err(token, f"{what} '{name}' has the name of an enumeration value")
+        if up in self.namespaces:  # Name.x would name the library's x
+            raise self.err(token, f"{what} '{name}' has the name of the library namespace {self.namespaces[up][0]}: "
+                                  "rename it (Name.x would name the library's x)")
 
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)

@@ -228,6 +228,9 @@ def global_list(comp, block, src):
             raise comp.err(block, f"global variable list {why}")
         if up in comp.types or up in comp.pous or up in comp.enum_values:
             raise comp.err(block, f"global variable list '{name}' has the name of a type, POU or enumeration value")
+        if up in comp.namespaces:
+            raise comp.err(block, f"global variable list '{name}' has the name of the library namespace "
+                                  f"{comp.namespaces[up][0]}: rename it (Name.x would name the library's x)")
         gvl = comp.gvls[up] = GlobalList(name, src.path, pos(block)[0])
         gvl.qualified_only = qualified_only(comp, pos(block)[0])
         comp.program.items.append(("gvl", gvl, src.path))
