@@ -22,7 +22,8 @@ from . import project
 KINDS = {".tcpou": "POU", ".tcdut": "DUT", ".tcgvl": "GVL", ".tcio": "ITF", ".tctleo": "DUT"}
 # a refusal caused by another file's refusal, not by the file's own ST
 _DEPENDS = re.compile(r"declaration was refused|undeclared (type|name)|has no (variable|member|METHOD)|"
-                      r"called before its declaration|cannot be used: its declaration", re.I)
+                      r"called before its declaration|cannot be used: (its declaration|a declaration of the global "
+                      r"variable list)", re.I)
 # a refusal for a vendor library: pac-test says so, or the name it quotes is one of a vendor library's
 _VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
 # a name of a library missing because the library's own declaration of it was refused
