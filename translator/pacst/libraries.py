@@ -69,7 +69,7 @@ def files(name, path, sources_dir):
     """The ST and TwinCAT files of the library `name` at `path`; raises StError on a project it cannot read."""
     plcproj = project_file(path)
     if plcproj is not None:
-        return twincat.project_files(plcproj)
+        return twincat.project_files(plcproj, generated=False)
     if os.path.isdir(path):
         found = sorted(os.path.join(d, n) for d, _, names in os.walk(path) for n in names
                        if n.lower().endswith(_SOURCE_EXTENSIONS))

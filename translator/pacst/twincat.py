@@ -159,8 +159,11 @@ def _write(chars, start, end, word, path, at):
                                  "tags on lines of their own")
 
 
-def project_files(path):
-    """The TwinCAT object files a `.plcproj` compiles, in its order (absolute paths)."""
+def project_files(path, generated=True):
+    """The TwinCAT object files a `.plcproj` compiles, in its order (absolute paths). Without `generated`, not
+    the POUs TwinCAT generates into a library project (its "Project Information": F_GetVersion, F_GetTitle...,
+    marked SystemCall), which every library project declares and a program calls under the library's namespace
+    only: read as a library of the program, they would clash with the program's own or another library's."""
     with open(path, "rb") as f:
         data = f.read()
     try:
@@ -171,6 +174,7 @@ def project_files(path):
     files = []
     for element in root.iter("{*}Compile"):
         include = element.get("Include", "").replace("\\", "/")
-        if is_object_file(include):
+        system_call = (element.findtext("{*}SystemCall") or "").strip().lower() == "true"
+        if is_object_file(include) and (generated or not system_call):
             files.append(os.path.normpath(os.path.join(folder, include)))
     return files

@@ -134,6 +134,19 @@ def dependencies(roots):
     return found
 
 
+def _library_files(root, files):
+    """The `files` of the project in `root` that pac-test reads of it as a library (pacst --library): without the
+    POUs TwinCAT generates into a library project (F_GetVersion...)."""
+    plcproj = _plcproj(root)
+    if plcproj is None:
+        return files
+    _translator()
+    from pacst import twincat  # noqa: E402 (the checkout's translator)
+    kept = {os.path.abspath(f) for f in twincat.project_files(plcproj, generated=False)}
+    generated = {os.path.abspath(f) for f in twincat.project_files(plcproj)} - kept
+    return [f for f in files if os.path.abspath(f) not in generated]
+
+
 def _lacks_refused(message, gone):
     """Whether `message` says a library lacks a name whose file in it was refused."""
     m = _LIBRARY_LACKS.search(message)
@@ -225,7 +238,7 @@ def main(argv=None):
     found = projects(args.folders)
     libraries = dependencies(list(found))
     for root, files in found.items():
-        given = [(namespace, folder, found[folder]) for namespace, folder in libraries[root]]
+        given = [(namespace, folder, _library_files(folder, found[folder])) for namespace, folder in libraries[root]]
         verdict = measure(files, args.cache, args.jobs, given)
         pous = [f for f in files if f.lower().endswith(".tcpou")]
         counts = collections.Counter("accepted" if verdict[f] is None else verdict[f][0] for f in pous)

@@ -238,7 +238,8 @@ class CorpusTest(unittest.TestCase):
 
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
-        App is translated with Lib's files, as pac-test --library gives them; without Lib measured, App's use of
+        App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
+        them; without Lib measured, App's use of
         the namespace counts as needing a library not measured. A POU first refused for OR_ELSE is refused for a
         construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
@@ -251,8 +252,11 @@ class CorpusTest(unittest.TestCase):
         projects = {
             "Lib": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
                     '<Name>Lib</Name><Company>Example</Company><Title>Example Library</Title>'
-                    '<DefaultNamespace>ExLib</DefaultNamespace></PropertyGroup></Project>\n',
-                    {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;")}),
+                    '<DefaultNamespace>ExLib</DefaultNamespace></PropertyGroup><ItemGroup>'
+                    '<Compile Include="FB_Tool.TcPOU" /><Compile Include="F_GetVersion.TcPOU"><SystemCall>true'
+                    '</SystemCall></Compile></ItemGroup></Project>\n',
+                    {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
+                     "F_GetVersion": ("FUNCTION F_GetVersion : INT\n", "F_GetVersion := 1;")}),
             "App": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
                     '<Name>App</Name></PropertyGroup><ItemGroup>'
                     '<PlaceholderReference Include="Example Library"><DefaultResolution>Example Library, * (Example)'
@@ -262,6 +266,7 @@ class CorpusTest(unittest.TestCase):
                     '</ItemGroup></Project>\n',
                     {"FB_UsesTool": ("FUNCTION_BLOCK FB_UsesTool\nVAR\n  Tool : Common.FB_Tool;\n  m : INT;\nEND_VAR\n",
                                      "Tool();\nm := Tool.n;"),
+                     "F_GetVersion": ("FUNCTION F_GetVersion : INT\n", "F_GetVersion := 2;"),
                      "FB_OrElse": ("FUNCTION_BLOCK FB_OrElse\nVAR\n  a : BOOL;\nEND_VAR\n",
                                    "a := a OR_ELSE a;\na := Tc2_System.F_Nothing();")})}
         for name, (plcproj, pous) in projects.items():
@@ -287,6 +292,8 @@ class CorpusTest(unittest.TestCase):
         app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
         self.assertEqual(found["App"]["libraries"], {"Common": os.path.join(top, "Lib")}, stdout)
         self.assertIsNone(app["FB_UsesTool.TcPOU"], stdout)
+        # the library's generated Project Information POUs are not read with it: no clash with the program's own
+        self.assertIsNone(app["F_GetVersion.TcPOU"], stdout)
         self.assertEqual(app["FB_OrElse.TcPOU"][0], "refused construct")
         self.assertIn("OR_ELSE", app["FB_OrElse.TcPOU"][1])
         stdout, found = measure(os.path.join(top, "App"))
