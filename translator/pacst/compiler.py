@@ -804,11 +804,11 @@ class Compiler:
             if _name(token).upper() == f"{system.NAMESPACE}.IQUERYINTERFACE":  # TwinCAT's root: no METHODs
                 self.dialect(token, f"EXTENDS {_name(token)}")
                 continue
-            base = self.types.get(self.declared_name(token).upper())
+            up = self.declared_name(token).upper()
+            base = self.types.get(up)
             if base is None or base.kind != "interface":
                 raise self.err(token, f"INTERFACE {t.name} EXTENDS {_name(token)}: no INTERFACE of that name"
-                                      + (" (declared later or refused)" if _name(token).upper() in self.declared_at
-                                         else ""))
+                                      + (" (declared later or refused)" if up in self.declared_at else ""))
             self.dialect(token, f"EXTENDS {base.name}")
             for b in base.bases + [base]:
                 if b not in t.bases:
