@@ -378,6 +378,8 @@ class Compiler:
         if not self.user or _cls(node) != "MultiElementVariable" or node.name.dereferenced:
             return node
         first = _name(node.name.name)
+        if local is not None and self.namespace(first) is None and not local(first) and self._nothing_named(first):
+            self._unknown_head(node.name, first)  # Other.F_X(), Other.GVL.x: no variable, list, POU or namespace
         if self.namespace(first) is None or (local is not None and local(first)):
             return node
         head = node.elements[0]
@@ -391,6 +393,23 @@ class Compiler:
                 return head.field
             return node  # a pointer: refused where it is read
         return dataclasses.replace(node, name=head.field, elements=node.elements[1:])
+
+    def _nothing_named(self, name):
+        """Whether no global declaration (a global variable, list, POU, type, enumeration value, TwinCAT's __SYSTEM)
+        has the name `name`, not even a refused one."""
+        up = name.upper()
+        return not (up in self.globals or up in self.gvls or up in self.pous or up in self.types or up in
+                    self.enum_values or up in self.declared_at or up in self.refused or system.is_system(name)
+                    or up in ("THIS", "SUPER"))
+
+    def _unknown_head(self, token, name):
+        """The refusal of `name.x` where `name` is declared nowhere: a vendor library's namespace, or an undeclared
+        name that would be a library's namespace if the library were given."""
+        if user.namespace_like(name):
+            raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.namespace_names())}")
+        raise self.err(token, f"undeclared name '{name}': no variable, global list, PROGRAM or library namespace "
+                              f"({', '.join(self.namespace_names())}) has that name; a library of your own is given "
+                              f"to pac-test with the namespace it is referenced under: --library {name}=PATH")
 
     # ------------------------------------------------------------------ types
     def pointer_type(self, node, target, indirection):

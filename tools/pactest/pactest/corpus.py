@@ -30,7 +30,7 @@ _VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
 _LIBRARY_LACKS = re.compile(r"the library (\w+) has no (?:type or POU|declaration) '(\w+)'")
 # a refusal for a library of another project not given (an unknown namespace that is no vendor's), or, for a
 # library given, a name it lacks (the library's version measured is not the one the project was written against)
-_LIBRARY = re.compile(r"is no library namespace")
+_LIBRARY = re.compile(r"is no library namespace|PROGRAM or library namespace")
 
 
 def _translator():
@@ -191,7 +191,8 @@ def measure(files, cache, jobs, libraries=()):
             break
         gone.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused if p in theirs)
         for path, errs in refused.items():
-            own = [x for x in errs if not _DEPENDS.search(x.message) and not _lacks_refused(x.message, gone)]
+            own = [x for x in errs if (not _DEPENDS.search(x.message) or _LIBRARY.search(x.message))
+                   and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
             lacks = _LIBRARY_LACKS.search(first.message)
             kind = ("depends on a refused declaration" if not own
