@@ -239,8 +239,7 @@ class CorpusTest(unittest.TestCase):
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
-        them; without Lib measured, App's use of
-        the namespace counts as needing a library not measured. A POU first refused for OR_ELSE is refused for a
+        them; without Lib measured, App's use of the namespace counts as needing a library not measured. A POU first refused for OR_ELSE is refused for a
         construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
