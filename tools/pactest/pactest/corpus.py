@@ -25,12 +25,14 @@ _DEPENDS = re.compile(r"declaration was refused|undeclared (type|name)|has no (v
                       r"called before its declaration|cannot be used: (its declaration|a declaration of the global "
                       r"variable list)", re.I)
 # a refusal for a vendor library: pac-test says so, or the name it quotes is one of a vendor library's
-_VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*)\b")
+_VENDOR = re.compile(r"vendor library|'(Tc[23]_\w+|Sys\w+|SM3_\w+|CmpSys\w*|TwinCAT_\w+)\b")
 # a name of a library missing because the library's own declaration of it was refused
 _LIBRARY_LACKS = re.compile(r"the library (\w+) has no (?:type or POU|declaration) '(\w+)'")
 # a refusal for a library of another project not given (an unknown namespace that is no vendor's), or, for a
 # library given, a name it lacks (the library's version measured is not the one the project was written against)
-_LIBRARY = re.compile(r"is no library namespace|PROGRAM or library namespace")
+_LIBRARY = re.compile(r"is no library namespace")
+# an undeclared name before a dot: a library's namespace, unless it is the name of a file refused (and removed)
+_UNDECLARED_HEAD = re.compile(r"undeclared name '(\w+)': no variable, global list, PROGRAM or library namespace")
 
 
 def _translator():
@@ -147,6 +149,12 @@ def _library_files(root, files):
     return [f for f in files if os.path.abspath(f) not in generated]
 
 
+def _namespace_of_nothing(message, removed):
+    """Whether `message` refuses an undeclared name before a dot that no refused file had: a library's namespace."""
+    m = _UNDECLARED_HEAD.search(message)
+    return m is not None and m.group(1).upper() not in removed
+
+
 def _lacks_refused(message, gone):
     """Whether `message` says a library lacks a name whose file in it was refused."""
     m = _LIBRARY_LACKS.search(message)
@@ -170,6 +178,7 @@ def measure(files, cache, jobs, libraries=()):
         else:
             sources.append(result)
     gone = {os.path.splitext(os.path.basename(p))[0].upper() for p in theirs if p in verdict}  # libraries' refused
+    removed = {os.path.splitext(os.path.basename(p))[0].upper() for p in verdict} | gone  # every file refused
     for _ in range(12):
         if not sources:
             break
@@ -190,15 +199,17 @@ def measure(files, cache, jobs, libraries=()):
             sources = []
             break
         gone.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused if p in theirs)
+        removed.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused)
         for path, errs in refused.items():
-            own = [x for x in errs if (not _DEPENDS.search(x.message) or _LIBRARY.search(x.message))
+            own = [x for x in errs if (not _DEPENDS.search(x.message) or _namespace_of_nothing(x.message, removed))
                    and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
             lacks = _LIBRARY_LACKS.search(first.message)
             kind = ("depends on a refused declaration" if not own
                     else "vendor library" if _VENDOR.search(first.message)
                     else "library not given" if _LIBRARY.search(first.message) or lacks and lacks.group(1).upper()
-                    in {namespace.upper() for namespace, _, _ in libraries}
+                    in {namespace.upper() for namespace, _, _ in libraries} or _namespace_of_nothing(first.message,
+                                                                                                   removed)
                     else "refused construct")
             verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
         sources = [s for s in sources if s.path not in refused]
