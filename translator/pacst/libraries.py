@@ -13,7 +13,7 @@ _SOURCE_EXTENSIONS = (".st",) + twincat.OBJECT_EXTENSIONS
 
 
 class LibraryError(Exception):
-    pass
+    """A library given wrong: the message names where it is given (`--library NAME`, or the wiring file's key)."""
 
 
 def parse(items):
