@@ -6,7 +6,8 @@
 // took each command once. And a stop edged in the scan of another command's data (two-step write), called after
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
-// still on its way, and a single all-zero scan while a move is on its way.
+// still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
+// either FB left out (item 10).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -205,6 +206,58 @@ TEST_P(CmdSkippedCalls, EachFbEndsDoneForItsOwnCommandWhateverScansItMisses) {
         }
     }
     EXPECT_GE(skippedWhileBusy, 2 * 6 * 2) << "each skip met each command at two points of its handshake at least";
+}
+
+// Issue 32, item 10: 0A81 (cmd_abort_online, 5.2.6.1: "positioning is stopped") is a stop, so it overtakes a
+// 0A87 still processing (F_PAC_IsStopOver) whichever FB the program leaves out: the 0A81's or the move's, uncalled
+// for 1 to 6 scans from 0 to 8 scans after the 0A81's edge. The 0A81 ends Done, taken once; the move ends with
+// 16#8007 (its processing taken over), never Done and never after a Timeout; the controller is in HOME POSITION.
+TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command abort{code::kAbortOnline, 0, 0};
+    std::uint32_t serial = 0;
+    for (int away = 0; away <= 1; ++away) {
+        for (int skip = 1; skip <= 6; ++skip) {
+            for (int offset = 0; offset <= 8; ++offset) {
+                SCOPED_TRACE((away == 1 ? "the 0A81's FB" : "the move's FB") + std::string(" left out for ") +
+                             std::to_string(skip) + " scans from scan " + std::to_string(offset) + " after the 0A81's edge");
+                ASSERT_TRUE(plc.GoOnline());
+                ++serial;
+                // Far from where the axis stands (the traverse range is 0 to 10,000): seconds of processing.
+                const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
+                const Command move{code::kPosAxisAbsolute, 2,
+                                   pac::test::BitsOf((up ? 9000.0F : 1.0F) + 0.0625F * static_cast<float>(serial % 16))};
+                plc.Taken();
+                plc.Set(0, move);
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+                ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
+                    << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+                plc.Set(1, abort);
+                plc.Fb(1)->EXECUTE.value = TRUE;
+                int n = 0;
+                for (; n < 20000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                    plc.Call(away, n < offset || n >= offset + skip);
+                    plc.Scan();
+                }
+                plc.Call(away, true);
+                ASSERT_TRUE(plc.Final(0) && plc.Final(1)) << "Busy after " << n << " scans";
+                const auto taken = plc.Taken();
+                EXPECT_TRUE(plc.Fb(1)->DONE.value) << "0A81: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_EQ(Count(taken, abort), 1) << "the controller took the 0A81 once";
+                EXPECT_EQ(Count(taken, move), 1);
+                EXPECT_TRUE(plc.Fb(0)->ERROR.value);
+                EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]);
+                EXPECT_EQ(plc.Rig().Controller().OperatingStatus(), 1) << "HOME POSITION";
+                plc.Fb(0)->EXECUTE.value = FALSE;
+                plc.Fb(1)->EXECUTE.value = FALSE;
+                plc.Scan();
+                plc.Scan();
+                if (HasFailure()) return;
+            }
+        }
+    }
 }
 
 // Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
