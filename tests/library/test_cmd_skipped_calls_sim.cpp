@@ -7,7 +7,7 @@
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
-// either FB left out (item 10).
+// either FB left out (item 10), and a stop on its way through an all-zero scan with its FB left out (item 7).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -400,6 +400,66 @@ TEST_P(CmdSkippedCalls, AnAllZeroScanDoesNotWithdrawAMoveOnItsWay) {
         plc.Scan();
         plc.Scan();
     }
+}
+
+// Issue 32, item 7: a stop of a running move (0A93) on its way, a single all-zero scan (a lost telegram) 0 to 3
+// scans after its edge while the controller runs on, and the stop's FB left out for 0 to 6 scans from that scan. A
+// stop that went out is never withdrawn: the controller takes it exactly once and the axis stands; its FB ends
+// Done, or 16#8004 (outcome unknown). One that had not gone out yet ends 16#8003, never sent.
+TEST_P(CmdSkippedCalls, AnAllZeroScanNeverWithdrawsAStopOnItsWay) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    int sent = 0;
+    for (int after = 0; after <= 3; ++after) {
+        for (int skip = 0; skip <= 6; ++skip) {
+            SCOPED_TRACE("all-zero scan " + std::to_string(after) + " scans after the stop's edge, its FB left out " +
+                         std::to_string(skip) + " scans from then");
+            const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
+            const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(up ? 9000.0F : 1.0F)};
+            const Command stop{code::kStopAxis, 2, 0};
+            plc.Taken();
+            plc.Set(0, move);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+            ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
+            plc.Set(1, stop);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            for (int n = 0; n < after; ++n) plc.Scan();
+            auto& link = plc.Rig().Bus().FromPacLink();
+            link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kAllZero);
+            int n = 0;
+            for (; n < 20 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) {
+                plc.Call(1, n >= skip);
+                plc.Scan();
+            }
+            link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kNone);
+            for (; n < 200000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                plc.Call(1, n >= skip);
+                plc.Scan();
+            }
+            plc.Call(1, true);
+            ASSERT_TRUE(plc.Final(0) && plc.Final(1));
+            for (n = 0; n < 400000 && plc.Rig().Controller().Processing(); ++n) plc.Scan();
+            plc.Rig().Scan(GetParam().sharing.timing.ScansFor(300ms));
+            const auto taken = plc.Taken();
+            if (plc.Fb(1)->ERRORID.value == kGvl["PAC_LIB_ERR_NOT_READY"]) {
+                EXPECT_EQ(Count(taken, stop), 0) << "16#8003: never sent";
+            } else {
+                ++sent;
+                EXPECT_EQ(Count(taken, stop), 1) << "the stop withdrawn or taken twice";
+                EXPECT_TRUE(plc.Fb(1)->DONE.value || plc.Fb(1)->ERRORID.value == kGvl["PAC_LIB_ERR_CONNECTION_LOST"])
+                    << "ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_FALSE(plc.Rig().Controller().Axes().Motion(2).Moving()) << "the axis stands";
+            }
+            plc.Fb(0)->EXECUTE.value = FALSE;
+            plc.Fb(1)->EXECUTE.value = FALSE;
+            plc.Scan();
+            plc.Scan();
+            if (HasFailure()) return;
+        }
+    }
+    EXPECT_GT(sent, 14) << "stops that went out before the all-zero scan";
 }
 
 // A controller restart with the module's SEND at 1 (RECEIVE back to 0 under "RECEIVE 0 after restart"), soon
