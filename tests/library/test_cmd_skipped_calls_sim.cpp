@@ -144,6 +144,19 @@ int Count(const std::vector<Command>& taken, const Command& c) {
     return n;
 }
 
+// FB 0 edges a move of axis 2 far from where the axis stands (the traverse range is 0 to 10,000: seconds of
+// processing), `fraction` added to the target so that each move is its own; scans until the controller acknowledged
+// it or FB 0 ended. The move's command; FB 0 is Busy and Acknowledged if all went well.
+Command StartFarMove(TwoCallerPlc& plc, float fraction) {
+    const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
+    const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf((up ? 9000.0F : 1.0F) + fraction)};
+    plc.Taken();
+    plc.Set(0, move);
+    plc.Fb(0)->EXECUTE.value = TRUE;
+    for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+    return move;
+}
+
 class CmdSkippedCalls : public ::testing::TestWithParam<SkipCase> {};
 
 // PLC scans in one controller cycle.
@@ -224,14 +237,7 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
                              std::to_string(skip) + " scans from scan " + std::to_string(offset) + " after the 0A81's edge");
                 ASSERT_TRUE(plc.GoOnline());
                 ++serial;
-                // Far from where the axis stands (the traverse range is 0 to 10,000): seconds of processing.
-                const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
-                const Command move{code::kPosAxisAbsolute, 2,
-                                   pac::test::BitsOf((up ? 9000.0F : 1.0F) + 0.0625F * static_cast<float>(serial % 16))};
-                plc.Taken();
-                plc.Set(0, move);
-                plc.Fb(0)->EXECUTE.value = TRUE;
-                for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+                const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
                 ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
                     << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
                 plc.Set(1, abort);
@@ -415,13 +421,8 @@ TEST_P(CmdSkippedCalls, AnAllZeroScanNeverWithdrawsAStopOnItsWay) {
         for (int skip = 0; skip <= 6; ++skip) {
             SCOPED_TRACE("all-zero scan " + std::to_string(after) + " scans after the stop's edge, its FB left out " +
                          std::to_string(skip) + " scans from then");
-            const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
-            const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(up ? 9000.0F : 1.0F)};
             const Command stop{code::kStopAxis, 2, 0};
-            plc.Taken();
-            plc.Set(0, move);
-            plc.Fb(0)->EXECUTE.value = TRUE;
-            for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+            StartFarMove(plc, 0.0F);
             ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
             plc.Set(1, stop);
             plc.Fb(1)->EXECUTE.value = TRUE;
