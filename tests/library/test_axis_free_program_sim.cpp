@@ -155,8 +155,8 @@ public:
             FollowMode();
             // An axis error now and then (1 in 200 scans, drawn apart from the program's choices) between jobs,
             // outside the named cases, once the last one is gone for the FB too and a pulse for it is over.
-            if (free_ && !scripted_ && mode_ == Mode::kOnline && !faulted_ && !rig_.Controller().Axes().Motion(1).Fault() && !axis_->AXISERROR.value &&
-                !axis_->BUSY.value &&
+            if (free_ && !scripted_ && mode_ == Mode::kOnline && !faulted_ &&
+                !rig_.Controller().Axes().Motion(1).Fault() && !axis_->AXISERROR.value && !axis_->BUSY.value &&
                 rig_.Now() - clearedAt_ > PulseBound() &&
                 std::uniform_int_distribution<int>(0, 199)(errorRandom_) == 0) {
                 rig_.Controller().Axes().RaiseAxisError(1, rig_.Now(), pac::sim::axis_error::kFollowingError);
@@ -182,7 +182,8 @@ public:
     const FreeCaller& Caller() const { return caller_; }
 
 private:
-    enum class Mode { kOnline, kPressing, kCancelling, kHome, kStarting };  // of the controller, as the program drives it
+    // The controller's mode as the program drives it (FollowMode).
+    enum class Mode { kOnline, kPressing, kCancelling, kHome, kStarting };
     static constexpr int kExternalStopInput = 1;
     static constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
 
@@ -325,9 +326,9 @@ private:
 
     static bool Online(int status) { return status >= 30 && status <= 39; }
 
-    // Every 1,000 to 2,500 scans of the free program (no axis error showing) ONLINE ends, whatever the job: ResetError
-    // pressed in every other call from 4 scans before a CANCEL through FB_PAC_Ctrl until the FB sees it, 20 to 60 ms
-    // in HOME POSITION, then START ONLINE again.
+    // Every 1,000 to 2,500 scans of the free program (no axis error showing) ONLINE ends, whatever the job:
+    // ResetError pressed in every other call from 4 scans before a CANCEL through FB_PAC_Ctrl until the FB sees it,
+    // 20 to 60 ms in HOME POSITION, then START ONLINE again.
     void FollowMode() {
         if (!free_ || scripted_) return;
         const bool over = ctrl_->DONE.value || ctrl_->ERROR.value;
@@ -357,7 +358,8 @@ private:
                     retry_ = true;
                     return;
                 }
-                homeUntil_ = rig_.Now() + std::chrono::milliseconds(20 + std::uniform_int_distribution<int>(0, 40)(modeRandom_));
+                homeUntil_ = rig_.Now() +
+                             std::chrono::milliseconds(20 + std::uniform_int_distribution<int>(0, 40)(modeRandom_));
                 mode_ = mode_ == Mode::kCancelling ? Mode::kHome : Mode::kOnline;
                 return;
             case Mode::kHome:

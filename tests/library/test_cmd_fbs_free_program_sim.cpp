@@ -69,8 +69,8 @@ class FreeCmdFbProgram {
 public:
     explicit FreeCmdFbProgram(const pac::test::ChannelCase& c)
         : case_(c), layout_{true, 0}, rig_(pac::test::RigTimingOf(c.sharing.timing), ConfigOf(c), layout_), random_(c.seed) {
-        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl, Kind::kMoveRel, Kind::kValueRead,
-                       Kind::kMonitor}) {
+        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl, Kind::kMoveRel,
+                       Kind::kValueRead, Kind::kMonitor}) {
             static const char* names[] = {"FB_PAC_WriteIntReg", "FB_PAC_ReadIntReg", "FB_PAC_MoveAxisAbsolute",
                                           "FB_PAC_StopAxis", "FB_PAC_Ctrl", "FB_PAC_MoveAxisRelative",
                                           "FB_PAC_ReadAxisValue", "FB_PAC_SetLimitSwitchMonitoring"};
@@ -272,8 +272,9 @@ private:
                 case Kind::kValueRead:
                     Place<FB_PAC_READAXISVALUE>(b, value_, [&] {
                         value_->AXIS.value = static_cast<USINT>(b.command.param);
-                        value_->KIND.value = b.command.code == code::kGetTraverseAreaMin ? E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN
-                                                                                         : E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
+                        value_->KIND.value = b.command.code == code::kGetTraverseAreaMin
+                                                 ? E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN
+                                                 : E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
                     }, [&] { CallOn(channel, value_); }, [] { return PAC_FB(FB_PAC_READAXISVALUE); });
                     break;
                 case Kind::kMonitor:
@@ -535,7 +536,8 @@ TEST_P(CmdFbsFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
     EXPECT_GT(program.SkipsWhileBusy(), 20);
     EXPECT_GT(program.EndedAfterSkip(), 5);
-    for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel, Kind::kValueRead, Kind::kMonitor}) {
+    for (Kind k :
+         {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel, Kind::kValueRead, Kind::kMonitor}) {
         EXPECT_GT(program.Dones(k), 0) << "kind " << static_cast<int>(k);
     }
     // The jog's start waits for an empty queue, which the others' commands leave rarely: a start or a release

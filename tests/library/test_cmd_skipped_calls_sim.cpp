@@ -234,7 +234,8 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
         for (int skip = 1; skip <= 6; ++skip) {
             for (int offset = 0; offset <= 8; ++offset) {
                 SCOPED_TRACE((away == 1 ? "the 0A81's FB" : "the move's FB") + std::string(" left out for ") +
-                             std::to_string(skip) + " scans from scan " + std::to_string(offset) + " after the 0A81's edge");
+                             std::to_string(skip) + " scans from scan " + std::to_string(offset) +
+                             " after the 0A81's edge");
                 ASSERT_TRUE(plc.GoOnline());
                 ++serial;
                 const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
