@@ -50,7 +50,7 @@ using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 namespace status = pac::sim::status;
 
-// FB_PAC_JogAxis: no block of its own
+// The program's FBs; kJog (FB_PAC_JogAxis) has no Block of its own (PlaceJog).
 enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel, kValueRead, kMonitor, kJog };
 
 // One FB of the program and what its present command asked for.
