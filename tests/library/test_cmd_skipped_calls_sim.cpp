@@ -7,9 +7,11 @@
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
-// either FB left out (item 10), and a stop on its way through an all-zero scan with its FB left out (item 7).
+// either FB left out (item 10), a stop on its way through an all-zero scan with its FB left out (item 7), and the
+// command a stop overtook between its data and its toggle left out (item 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -314,6 +316,73 @@ TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandAtOnce) 
         }
     }
     EXPECT_GT(overtakenRuns, 0) << "the stop never took the interface between data and toggle";
+}
+
+// Issue 32, item 2 with skipped calls: as above, and FB 0 left out for 0 to 6 scans after the stop's edge, while
+// FB 1 sends an ordinary write in the scan after its stop ended. FB 0's command that the stop overtook ends 16#8016
+// soon after the skip, never Done on the write's acknowledgement and not after its Timeout; one that
+// went out ends Done, taken once; the write ends Done, taken once. (0600 is a command error in HOME POSITION, which
+// does not matter here: the controller took it.)
+TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandWhateverScansItMisses) {
+    if (!GetParam().twoStepWrite) GTEST_SKIP() << "only a two-step write has a scan between data and toggle";
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    std::uint32_t serial = 1000;
+    int overtakenRuns = 0;
+    for (const bool stopFirst : {false, true}) {
+        for (int lag = 0; lag <= 2; ++lag) {
+            for (int skip = 0; skip <= 6; ++skip) {
+                SCOPED_TRACE(std::string(stopFirst ? "the stop's FB called first" : "the stop's FB called second") +
+                             ", the stop edged " + std::to_string(lag) + " scans after the command, FB 0 left out " +
+                             std::to_string(skip) + " scans after that scan");
+                plc.Order(stopFirst ? 1 : 0, stopFirst ? 0 : 1);
+                const Command own{code::kPutIntReg, 2, serial++};
+                const Command write{code::kPutIntReg, 3, serial++};
+                plc.Taken();
+                plc.Set(0, own);
+                plc.Set(1, {code::kStop, 0, 0});
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                int phase = 0;  // FB 1: 0 the stop, 1 its Execute low, 2 the write
+                int n = 0;
+                int finalScan = -1;
+                for (; n < 5000 && !(plc.Final(0) && phase == 2 && plc.Final(1)); ++n) {
+                    if (n == lag) plc.Fb(1)->EXECUTE.value = TRUE;
+                    if (phase == 0 && n > lag && plc.Final(1)) {  // Done, or 20 in HOME POSITION: it went out
+                        plc.Fb(1)->EXECUTE.value = FALSE;
+                        phase = 1;
+                    } else if (phase == 1) {
+                        plc.Set(1, write);
+                        plc.Fb(1)->EXECUTE.value = TRUE;
+                        phase = 2;
+                    }
+                    plc.Call(0, n <= lag || n > lag + skip);
+                    plc.Scan();
+                    if (finalScan < 0 && plc.Final(0)) finalScan = n;
+                }
+                plc.Call(0, true);
+                ASSERT_TRUE(plc.Final(0) && phase == 2 && plc.Final(1)) << "Busy after " << n << " scans";
+                const auto taken = plc.Taken();
+                if (Count(taken, own) == 0) {
+                    ++overtakenRuns;
+                    EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]) << "never went out";
+                    EXPECT_LT(finalScan, lag + skip + 1000 / GetParam().sharing.timing.plcMs / 2)
+                        << "ended at once, not after its Timeout";
+                } else {
+                    EXPECT_EQ(Count(taken, own), 1);
+                    EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
+                }
+                EXPECT_EQ(Count(taken, {code::kStop, 0, 0}), 1) << "the stop went out, once";
+                EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_EQ(Count(taken, write), 1) << "the write went out, once";
+                plc.Fb(0)->EXECUTE.value = FALSE;
+                plc.Fb(1)->EXECUTE.value = FALSE;
+                plc.Scan();
+                plc.Scan();
+                if (HasFailure()) return;
+            }
+        }
+    }
+    EXPECT_GT(overtakenRuns, 6) << "the stop took the interface between data and toggle too seldom";
 }
 
 // A long command the controller took while it still processed one: the reply before it showed neither END OF
