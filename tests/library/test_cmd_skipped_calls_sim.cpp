@@ -89,6 +89,12 @@ public:
         Fb(i)->DATA.value = c.data;
     }
     bool Final(int i) { return Fb(i)->DONE.value || Fb(i)->ERROR.value; }
+    // Both FBs' Execute low, and two scans in which their final outputs clear.
+    void ReleaseBoth() {
+        Fb(0)->EXECUTE.value = FALSE;
+        Fb(1)->EXECUTE.value = FALSE;
+        rig_.Scan(2);
+    }
     pac::FbInstance<FB_PAC_CMD>& Fb(int i) { return fbs_[i]; }
     void Call(int i, bool called) { called_[i] = called; }
     void Order(int first, int second) { order_ = {first, second}; }
@@ -259,10 +265,7 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
                 EXPECT_TRUE(plc.Fb(0)->ERROR.value);
                 EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]);
                 EXPECT_EQ(plc.Rig().Controller().OperatingStatus(), 1) << "HOME POSITION";
-                plc.Fb(0)->EXECUTE.value = FALSE;
-                plc.Fb(1)->EXECUTE.value = FALSE;
-                plc.Scan();
-                plc.Scan();
+                plc.ReleaseBoth();
                 if (HasFailure()) return;
             }
         }
@@ -374,10 +377,7 @@ TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandWhatever
                 EXPECT_EQ(Count(taken, {code::kStop, 0, 0}), 1) << "the stop went out, once";
                 EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
                 EXPECT_EQ(Count(taken, write), 1) << "the write went out, once";
-                plc.Fb(0)->EXECUTE.value = FALSE;
-                plc.Fb(1)->EXECUTE.value = FALSE;
-                plc.Scan();
-                plc.Scan();
+                plc.ReleaseBoth();
                 if (HasFailure()) return;
             }
         }
@@ -523,10 +523,7 @@ TEST_P(CmdSkippedCalls, AnAllZeroScanNeverWithdrawsAStopOnItsWay) {
                     << "ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
                 EXPECT_FALSE(plc.Rig().Controller().Axes().Motion(2).Moving()) << "the axis stands";
             }
-            plc.Fb(0)->EXECUTE.value = FALSE;
-            plc.Fb(1)->EXECUTE.value = FALSE;
-            plc.Scan();
-            plc.Scan();
+            plc.ReleaseBoth();
             if (HasFailure()) return;
         }
     }
