@@ -4,14 +4,16 @@
 // edges absolute and relative moves, G29 and reference runs with values no other job used, holds a jog input
 // (JogPositive / JogNegative, its longest distance of its own) as it would hold Execute, lets Execute or the jog
 // input fall while the job runs, aborts for a few scans now and then, and pulses ResetError and ChangeDynamics
-// (with new values) now and then in the scans it calls the FB. The simulated PA-CONTROL's ledger of the jobs
-// its axis module took over on a Start edge (AxisModule::TakenJobs) is the record of what it executed. The
-// property, in a PLC programmer's words: the FB ends Done only if the controller took exactly its job (the
-// traverse bit, the position and the per-mille values) after this Execute (or jog input) edge, an absolute move Done stands at
-// its target, and Busy ends within the bound the FB's page states; a change of dynamics the FB reports
-// (DynamicsChanged) is in force on the controller a round trip later while it still runs that job, and the axis
-// type changes its speed while traversing. The PLCopen rules hold on every call. Every
-// random choice comes from the seed in the test's name.
+// (with new values) now and then in the scans it calls the FB, and every 1,000 to 2,500 scans ends ONLINE
+// (CANCEL, HOME POSITION for 20 to 60 ms, START ONLINE) with ResetError pressed in every other call until it sees
+// ONLINE end. The simulated PA-CONTROL's ledger of the jobs its axis module took over on a Start edge
+// (AxisModule::TakenJobs) is the record of what it executed. The property, in a PLC programmer's words: the FB
+// ends Done only if the controller took exactly its job (the traverse bit, the position and the per-mille values)
+// after this Execute (or jog input) edge, an absolute move Done stands at its target, and Busy ends within the
+// bound the FB's page states; a change of dynamics the FB reports (DynamicsChanged) is in force on the controller
+// a round trip later while it still runs that job, and the axis type changes its speed while traversing; bit 16
+// (reset axis error) goes out only while the last status the FB was given is ONLINE. The PLCopen rules hold on
+// every call. Every random choice comes from the seed in the test's name.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -94,6 +96,7 @@ public:
           rig_(pac::test::RigTimingOf(c.timing), ConfigOf(c), layout_),
           random_(c.seed),
           errorRandom_(c.seed + 1000),
+          modeRandom_(c.seed + 2000),
           caller_("FB_PAC_Axis", random_, Odds(), log_) {
         auto& pac = rig_.Controller();
         EXPECT_EQ(pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput),
@@ -149,10 +152,11 @@ public:
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
             blips_.BeforeScan(rig_.Controller(), random_, free_ && !scripted_);  // outside the named cases
+            FollowMode();
             // An axis error now and then (1 in 200 scans, drawn apart from the program's choices) between jobs,
             // outside the named cases, once the last one is gone for the FB too and a pulse for it is over.
-            if (free_ && !scripted_ && !faulted_ && !rig_.Controller().Axes().Motion(1).Fault() && !axis_->AXISERROR.value &&
-                !axis_->BUSY.value &&
+            if (free_ && !scripted_ && mode_ == Mode::kOnline && !faulted_ &&
+                !rig_.Controller().Axes().Motion(1).Fault() && !axis_->AXISERROR.value && !axis_->BUSY.value &&
                 rig_.Now() - clearedAt_ > PulseBound() &&
                 std::uniform_int_distribution<int>(0, 199)(errorRandom_) == 0) {
                 rig_.Controller().Axes().RaiseAxisError(1, rig_.Now(), pac::sim::axis_error::kFollowingError);
@@ -173,9 +177,13 @@ public:
     int AxisErrorsReset() const { return resets_; }
     int AxisErrors() const { return axisErrors_; }
     int EndedAfterSkip() const { return endedAfterSkip_; }
+    int OnlineEnds() const { return onlineEnds_; }
+    int ResetsAtOnlineEnd() const { return resetsAtOnlineEnd_; }
     const FreeCaller& Caller() const { return caller_; }
 
 private:
+    // The controller's mode as the program drives it (FollowMode).
+    enum class Mode { kOnline, kPressing, kCancelling, kHome, kStarting };
     static constexpr int kExternalStopInput = 1;
     static constexpr std::size_t kOpStatusByte = 5;  // of the CMD reply (2.4.2)
 
@@ -245,8 +253,14 @@ private:
             return;
         }
         // Pulses the program gives in some calls, whatever the job: an axis error reset, new dynamics.
-        const bool resetError = (free_ && !scripted_ && caller_.Draw(150) < 3) || (called && pressReset_);
+        // Presses in every other call from the CANCEL until the FB sees ONLINE end: each edge after a pulse waits
+        // for bit 16 to have been low for the update time, so one is mostly held back when ONLINE ends.
+        const bool burst = burst_ && (burstCalls_++ % 2 == 0);
+        const bool resetError = (free_ && !scripted_ && caller_.Draw(150) < 3) || (called && pressReset_) || burst;
         if (called) pressReset_ = false;
+        const int knownBefore = fbKnown_;
+        if (fromPac[kOpStatusByte] != 0) fbKnown_ = fromPac[kOpStatusByte];
+        if (!Online(fbKnown_)) burst_ = false;
         // New dynamics only for a job on its way (a call that edges a job latches its pins as the job's), as a pulse:
         // FALSE in the call before.
         const bool changeDynamics = free_ && !scripted_ && axis_->BUSY.value && !axis_->CHANGEDYNAMICS.value &&
@@ -290,6 +304,7 @@ private:
             missed_ = false;
             change_.reset();
         });
+        CheckResetBit(toPac, knownBefore, resetError);
         if (resetError) {
             resetAskedAt_ = rig_.Now();
             // A pulse the FB gives: it sees the error, in ONLINE.
@@ -308,6 +323,71 @@ private:
     }
 
     const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
+
+    static bool Online(int status) { return status >= 30 && status <= 39; }
+
+    // Every 1,000 to 2,500 scans of the free program (no axis error showing) ONLINE ends, whatever the job:
+    // ResetError pressed in every other call from 4 scans before a CANCEL through FB_PAC_Ctrl until the FB sees it,
+    // 20 to 60 ms in HOME POSITION, then START ONLINE again.
+    void FollowMode() {
+        if (!free_ || scripted_) return;
+        const bool over = ctrl_->DONE.value || ctrl_->ERROR.value;
+        switch (mode_) {
+            case Mode::kOnline:
+                if (++freeScans_ < nextOnlineEnd_ || faulted_ || axis_->AXISERROR.value) return;
+                nextOnlineEnd_ += std::uniform_int_distribution<long>(1000, 2500)(modeRandom_);
+                burst_ = true;
+                burstCalls_ = 0;
+                pressScans_ = 4;
+                mode_ = Mode::kPressing;
+                ++onlineEnds_;
+                return;
+            case Mode::kPressing:
+                if (--pressScans_ == 0) Request(E_PAC_CTRLREQUEST__PAC_REQ_CANCEL, Mode::kCancelling);
+                return;
+            case Mode::kCancelling:
+            case Mode::kStarting:
+                if (retry_) {
+                    retry_ = false;
+                    ctrl_->EXECUTE.value = TRUE;
+                    return;
+                }
+                if (!over) return;
+                ctrl_->EXECUTE.value = FALSE;
+                if (!ctrl_->DONE.value) {  // a status-0 blip ends or refuses it (16#8004, 16#8003): again
+                    retry_ = true;
+                    return;
+                }
+                homeUntil_ = rig_.Now() +
+                             std::chrono::milliseconds(20 + std::uniform_int_distribution<int>(0, 40)(modeRandom_));
+                mode_ = mode_ == Mode::kCancelling ? Mode::kHome : Mode::kOnline;
+                return;
+            case Mode::kHome:
+                if (rig_.Now() >= homeUntil_) Request(E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, Mode::kStarting);
+                return;
+        }
+    }
+    void Request(E_PAC_CTRLREQUEST request, Mode next) {
+        ctrl_->REQUEST.value = request;
+        ctrl_->EXECUTE.value = TRUE;
+        mode_ = next;
+    }
+
+    // Bit 16 (reset axis error) only while the last status other than 0 the FB was given is ONLINE: outside it the
+    // PA-CONTROL acts on no control word, and on the AUTOMATIC layout FW2_N4 bit 16 is flag M1 (issue 32, item 8).
+    // Counted when ONLINE ends for the FB with the pulse on or an edge it saw in ONLINE not yet on the wire.
+    void CheckResetBit(const pac::sim::ProcessImage& toPac, int knownBefore, bool resetError) {
+        const std::size_t offset = layout_.AxisOffset(1);
+        const bool onWire = (pac::sim::ReadDword(toPac.Module12(offset), 0) & pac::axis_control::kResetAxisError) != 0;
+        if (onWire && !Online(fbKnown_)) {
+            log_.Add(scans_, rig_.Now(), "bit 16 (reset axis error) on the wire in status " + std::to_string(fbKnown_));
+        }
+        if (Online(knownBefore) && !Online(fbKnown_) && (pulseOn_ || edgeWaiting_)) ++resetsAtOnlineEnd_;
+        if (resetError && !lastReset_ && Online(fbKnown_)) edgeWaiting_ = true;
+        if ((onWire && !pulseOn_) || !Online(fbKnown_)) edgeWaiting_ = false;
+        pulseOn_ = onWire;
+        lastReset_ = resetError;
+    }
 
     // The controller's axis error: cleared only after a ResetError pulse of the program since it came, and within
     // the pulse's bound (Timeout, the update time, the longest skip, a round trip) after a pulse the FB gave in
@@ -391,6 +471,7 @@ private:
     pac::PacRig rig_;
     std::mt19937_64 random_;
     std::mt19937_64 errorRandom_;
+    std::mt19937_64 modeRandom_;  // when ONLINE ends, how long HOME POSITION lasts
     pac::test::ViolationLog log_;
     FreeCaller caller_;
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
@@ -428,6 +509,20 @@ private:
     std::optional<std::chrono::nanoseconds> resetDue_;  // a pulse the FB gave for the error it showed
     int axisErrors_ = 0;
     int resets_ = 0;
+    Mode mode_ = Mode::kOnline;
+    std::chrono::nanoseconds homeUntil_{0};
+    long freeScans_ = 0;
+    long nextOnlineEnd_ = 1000;
+    int pressScans_ = 0;  // the presses begin these scans before the CANCEL
+    bool retry_ = false;  // FB_PAC_Ctrl's request edged again in the next scan
+    bool burst_ = false;
+    unsigned burstCalls_ = 0;
+    int fbKnown_ = 31;  // the last status other than 0 the FB was given in a call
+    bool pulseOn_ = false;
+    bool lastReset_ = false;   // ResetError in the last call
+    bool edgeWaiting_ = false;  // an edge the FB saw in ONLINE, its pulse not yet on the wire
+    int onlineEnds_ = 0;
+    int resetsAtOnlineEnd_ = 0;
 };
 
 class AxisFreeProgram : public ::testing::TestWithParam<AxisFreeCase> {};
@@ -446,6 +541,8 @@ TEST_P(AxisFreeProgram, DoneOnlyForTheJobTheControllerTookOver) {
     EXPECT_GT(program.Aborts(), 0);
     EXPECT_GT(program.DynamicsChanges(), 0);
     EXPECT_GT(program.AxisErrorsReset(), 0) << program.AxisErrors() << " axis errors raised";
+    EXPECT_GT(program.OnlineEnds(), 0);
+    EXPECT_GT(program.ResetsAtOnlineEnd(), 0) << program.OnlineEnds() << " times ONLINE ended";
 }
 
 // The named cases: an absolute move, its calls left out for 1 to 6 scans from 1 to 14 scans after its edge

@@ -1,7 +1,7 @@
 // The FBs built on FB_PAC_Cmd (the element FBs, the command-set FBs) and FB_PAC_Ctrl in a PLC program as free as
 // real ones (docs/fb/FB_PAC_Cmd.md and FB_PAC_Ctrl.md, "The calling contract"): FB_PAC_WriteIntReg,
 // FB_PAC_ReadIntReg, FB_PAC_MoveAxisAbsolute, FB_PAC_MoveAxisRelative and FB_PAC_StopAxis (each with
-// FreeInterface drawn per command) on
+// FreeInterface drawn per command), FB_PAC_ReadAxisValue and FB_PAC_SetLimitSwitchMonitoring on
 // one CMD interface, in a call order drawn anew every scan, and FB_PAC_Ctrl on the CTRL module asking for ONLINE,
 // a stop and a cancel now and then; each FB called or left out independently in every scan (runs of 1 to 6
 // scans), edged when idle, Execute falling while Busy, a command FB now and then given up for good (the program
@@ -10,7 +10,7 @@
 // Done only if the controller took exactly its command (code, parameter, data) after this Execute edge, or for
 // FB_PAC_Ctrl reached the requested status after it; a move only once its axis stands at the target (for 0A89:
 // the controller's end report at its own acknowledged start plus the distance); a read ends with its
-// register's own value; Busy ends within
+// register's or axis parameter's own value; Busy ends within
 // the documented bound; the PLCopen rules hold on every call. FB_PAC_JogAxis on an axis of its own, its button
 // (Traverse) pressed when the FB is not Busy and held up to past its MaxTime, its calls left out like the others':
 // no start (0A90 / 0A91) and no keep-alive before the stop is taken by the controller later than a round trip after
@@ -50,7 +50,8 @@ using pac::test::FreeCommand;
 namespace code = pac::sim::code;
 namespace status = pac::sim::status;
 
-enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel, kJog };  // FB_PAC_JogAxis: no block of its own
+// The program's FBs; kJog (FB_PAC_JogAxis) has no Block of its own (PlaceJog).
+enum class Kind { kWrite, kRead, kMove, kStop, kCtrl, kMoveRel, kValueRead, kMonitor, kJog };
 
 // One FB of the program and what its present command asked for.
 struct Block {
@@ -68,9 +69,11 @@ class FreeCmdFbProgram {
 public:
     explicit FreeCmdFbProgram(const pac::test::ChannelCase& c)
         : case_(c), layout_{true, 0}, rig_(pac::test::RigTimingOf(c.sharing.timing), ConfigOf(c), layout_), random_(c.seed) {
-        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl, Kind::kMoveRel}) {
+        for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kCtrl, Kind::kMoveRel,
+                       Kind::kValueRead, Kind::kMonitor}) {
             static const char* names[] = {"FB_PAC_WriteIntReg", "FB_PAC_ReadIntReg", "FB_PAC_MoveAxisAbsolute",
-                                          "FB_PAC_StopAxis", "FB_PAC_Ctrl", "FB_PAC_MoveAxisRelative"};
+                                          "FB_PAC_StopAxis", "FB_PAC_Ctrl", "FB_PAC_MoveAxisRelative",
+                                          "FB_PAC_ReadAxisValue", "FB_PAC_SetLimitSwitchMonitoring"};
             pac::test::FreeCallerOdds odds;
             odds.newCommand = k == Kind::kCtrl ? 400 : (k == Kind::kStop ? 60 : 6);
             odds.earlyFall = 200;
@@ -169,6 +172,13 @@ private:
                 b.command = {static_cast<std::uint16_t>(b.freeInterface ? 0x0A9A : code::kStopAxis),
                              static_cast<std::uint16_t>(1 + b.caller->Draw(3)), 0};
                 break;
+            case Kind::kValueRead:  // an end of the traverse range of axis 1..3 (axis parameters 8, 9)
+                b.command = {b.caller->Draw(2) == 0 ? code::kGetTraverseAreaMin : code::kGetTraverseAreaMax,
+                             static_cast<std::uint16_t>(1 + b.caller->Draw(3)), 0};
+                break;
+            case Kind::kMonitor:  // on, as ONLINE has it (5.2.6.22): every axis or one
+                b.command = {0x0AA2, static_cast<std::uint16_t>(b.caller->Draw(4)), 1};
+                break;
             case Kind::kJog:  // PlaceJog draws its own
                 break;
             case Kind::kCtrl: {
@@ -259,6 +269,20 @@ private:
                         moveRel_->FREEINTERFACE.value = b.freeInterface ? TRUE : FALSE;
                     }, [&] { CallOn(channel, moveRel_); }, [] { return PAC_FB(FB_PAC_MOVEAXISRELATIVE); });
                     break;
+                case Kind::kValueRead:
+                    Place<FB_PAC_READAXISVALUE>(b, value_, [&] {
+                        value_->AXIS.value = static_cast<USINT>(b.command.param);
+                        value_->KIND.value = b.command.code == code::kGetTraverseAreaMin
+                                                 ? E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MIN
+                                                 : E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
+                    }, [&] { CallOn(channel, value_); }, [] { return PAC_FB(FB_PAC_READAXISVALUE); });
+                    break;
+                case Kind::kMonitor:
+                    Place<FB_PAC_SETLIMITSWITCHMONITORING>(b, monitor_, [&] {
+                        monitor_->AXIS.value = static_cast<USINT>(b.command.param);
+                        monitor_->MONITOR.value = TRUE;
+                    }, [&] { CallOn(channel, monitor_); }, [] { return PAC_FB(FB_PAC_SETLIMITSWITCHMONITORING); });
+                    break;
                 default:
                     Place<FB_PAC_STOPAXIS>(b, stop_, [&] {
                         stop_->AXIS.value = static_cast<USINT>(b.command.param);
@@ -306,6 +330,7 @@ private:
                                                  " with the axis at " + std::to_string(at) +
                                                  "; the controller took since its edge" + ledger_.DescribeFrom(b.ledgerAtEdge));
             }
+            if (b.kind == Kind::kValueRead) CheckRangeValue(b);
             if (b.kind == Kind::kRead &&
                 static_cast<std::uint32_t>(read_->VALUE.value) != pac::test::FreeReadAnswer(b.command)) {
                 log_.Add(scans_, rig_.Now(), "FB_PAC_ReadIntReg ended Done for " + pac::test::Describe(b.command) +
@@ -315,6 +340,17 @@ private:
         }
         log_.Add(scans_, rig_.Now(), b.caller->Name() + " ended Done for " + pac::test::Describe(b.command) +
                                          ", which the controller did not take after its Execute edge");
+    }
+
+    // A read of the traverse range ends with the axis parameter's own value (the program writes none).
+    void CheckRangeValue(const Block& b) {
+        const auto number = b.command.code == code::kGetTraverseAreaMin ? pac::sim::axisparam::kMinTraverseArea
+                                                                        : pac::sim::axisparam::kMaxTraverseArea;
+        const auto value = rig_.Controller().Axes().Parameters(b.command.param).RealValue(number);
+        if (!value || *value != value_->VALUE.value) {
+            log_.Add(scans_, rig_.Now(), "FB_PAC_ReadAxisValue ended Done for " + pac::test::Describe(b.command) +
+                                             " with Value " + std::to_string(value_->VALUE.value));
+        }
     }
 
     // 0A89 (5.2.6.7): its acknowledgement carries the start position, its END OF PROCESSING report the position
@@ -450,13 +486,16 @@ private:
     std::mt19937_64 random_;
     pac::test::ViolationLog log_;
     std::vector<std::unique_ptr<Block>> blocks_;
-    std::vector<Kind> order_ = {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kStop, Kind::kMoveRel, Kind::kJog};
+    std::vector<Kind> order_ = {Kind::kWrite,   Kind::kRead,      Kind::kMove,    Kind::kStop,
+                                Kind::kMoveRel, Kind::kValueRead, Kind::kMonitor, Kind::kJog};
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_WRITEINTREG> write_ = PAC_FB(FB_PAC_WRITEINTREG);
     pac::FbInstance<FB_PAC_READINTREG> read_ = PAC_FB(FB_PAC_READINTREG);
     pac::FbInstance<FB_PAC_MOVEAXISABSOLUTE> move_ = PAC_FB(FB_PAC_MOVEAXISABSOLUTE);
     pac::FbInstance<FB_PAC_STOPAXIS> stop_ = PAC_FB(FB_PAC_STOPAXIS);
     pac::FbInstance<FB_PAC_MOVEAXISRELATIVE> moveRel_ = PAC_FB(FB_PAC_MOVEAXISRELATIVE);
+    pac::FbInstance<FB_PAC_READAXISVALUE> value_ = PAC_FB(FB_PAC_READAXISVALUE);
+    pac::FbInstance<FB_PAC_SETLIMITSWITCHMONITORING> monitor_ = PAC_FB(FB_PAC_SETLIMITSWITCHMONITORING);
     pac::FbInstance<FB_PAC_JOGAXIS> jogFb_ = PAC_FB(FB_PAC_JOGAXIS);
     // FB_PAC_JogAxis's button and what the test saw of it.
     struct JogButton {
@@ -483,7 +522,7 @@ private:
     int serial_ = 0;
     pac::test::CmdLedger ledger_;
     std::map<std::uint8_t, std::chrono::nanoseconds> statusSeen_;
-    int dones_[6] = {0, 0, 0, 0, 0, 0};
+    int dones_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int endedAfterSkip_ = 0;
 };
 
@@ -493,11 +532,12 @@ TEST_P(CmdFbsFreeProgram, DoneOnlyForTheCommandTheControllerTook) {
     FreeCmdFbProgram program(GetParam());
     program.Prepare();
     ASSERT_FALSE(HasFatalFailure());
-    program.Scan(std::max(GetParam().sharing.timing.ScansFor(5s), 3000));
+    program.Scan(std::max(GetParam().sharing.timing.ScansFor(8s), 4800));
     for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
     EXPECT_GT(program.SkipsWhileBusy(), 20);
     EXPECT_GT(program.EndedAfterSkip(), 5);
-    for (Kind k : {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel}) {
+    for (Kind k :
+         {Kind::kWrite, Kind::kRead, Kind::kMove, Kind::kCtrl, Kind::kMoveRel, Kind::kValueRead, Kind::kMonitor}) {
         EXPECT_GT(program.Dones(k), 0) << "kind " << static_cast<int>(k);
     }
     // The jog's start waits for an empty queue, which the others' commands leave rarely: a start or a release

@@ -6,9 +6,12 @@
 // took each command once. And a stop edged in the scan of another command's data (two-step write), called after
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
-// still on its way, and a single all-zero scan while a move is on its way.
+// still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
+// either FB left out (item 10), a stop on its way through an all-zero scan with its FB left out (item 7), and the
+// command a stop overtook between its data and its toggle left out (item 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -86,6 +89,12 @@ public:
         Fb(i)->DATA.value = c.data;
     }
     bool Final(int i) { return Fb(i)->DONE.value || Fb(i)->ERROR.value; }
+    // Both FBs' Execute low, and two scans in which their final outputs clear.
+    void ReleaseBoth() {
+        Fb(0)->EXECUTE.value = FALSE;
+        Fb(1)->EXECUTE.value = FALSE;
+        rig_.Scan(2);
+    }
     pac::FbInstance<FB_PAC_CMD>& Fb(int i) { return fbs_[i]; }
     void Call(int i, bool called) { called_[i] = called; }
     void Order(int first, int second) { order_ = {first, second}; }
@@ -141,6 +150,19 @@ int Count(const std::vector<Command>& taken, const Command& c) {
     int n = 0;
     for (const Command& t : taken) n += t == c ? 1 : 0;
     return n;
+}
+
+// FB 0 edges a move of axis 2 far from where the axis stands (the traverse range is 0 to 10,000: seconds of
+// processing), `fraction` added to the target so that each move is its own; scans until the controller acknowledged
+// it or FB 0 ended. The move's command; FB 0 is Busy and Acknowledged if all went well.
+Command StartFarMove(TwoCallerPlc& plc, float fraction) {
+    const bool up = plc.Rig().Controller().Axes().Motion(2).Position() < 5000.0;
+    const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf((up ? 9000.0F : 1.0F) + fraction)};
+    plc.Taken();
+    plc.Set(0, move);
+    plc.Fb(0)->EXECUTE.value = TRUE;
+    for (int n = 0; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+    return move;
 }
 
 class CmdSkippedCalls : public ::testing::TestWithParam<SkipCase> {};
@@ -207,6 +229,49 @@ TEST_P(CmdSkippedCalls, EachFbEndsDoneForItsOwnCommandWhateverScansItMisses) {
     EXPECT_GE(skippedWhileBusy, 2 * 6 * 2) << "each skip met each command at two points of its handshake at least";
 }
 
+// Issue 32, item 10: 0A81 (cmd_abort_online, 5.2.6.1: "positioning is stopped") is a stop, so it overtakes a
+// 0A87 still processing (F_PAC_IsStopOver) whichever FB the program leaves out: the 0A81's or the move's, uncalled
+// for 1 to 6 scans from 0 to 8 scans after the 0A81's edge. The 0A81 ends Done, taken once; the move ends with
+// 16#8007 (its processing taken over), never Done and never after a Timeout; the controller is in HOME POSITION.
+TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const Command abort{code::kAbortOnline, 0, 0};
+    std::uint32_t serial = 0;
+    for (int away = 0; away <= 1; ++away) {
+        for (int skip = 1; skip <= 6; ++skip) {
+            for (int offset = 0; offset <= 8; ++offset) {
+                SCOPED_TRACE((away == 1 ? "the 0A81's FB" : "the move's FB") + std::string(" left out for ") +
+                             std::to_string(skip) + " scans from scan " + std::to_string(offset) +
+                             " after the 0A81's edge");
+                ASSERT_TRUE(plc.GoOnline());
+                ++serial;
+                const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
+                ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
+                    << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+                plc.Set(1, abort);
+                plc.Fb(1)->EXECUTE.value = TRUE;
+                int n = 0;
+                for (; n < 20000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                    plc.Call(away, n < offset || n >= offset + skip);
+                    plc.Scan();
+                }
+                plc.Call(away, true);
+                ASSERT_TRUE(plc.Final(0) && plc.Final(1)) << "Busy after " << n << " scans";
+                const auto taken = plc.Taken();
+                EXPECT_TRUE(plc.Fb(1)->DONE.value) << "0A81: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_EQ(Count(taken, abort), 1) << "the controller took the 0A81 once";
+                EXPECT_EQ(Count(taken, move), 1);
+                EXPECT_TRUE(plc.Fb(0)->ERROR.value);
+                EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]);
+                EXPECT_EQ(plc.Rig().Controller().OperatingStatus(), 1) << "HOME POSITION";
+                plc.ReleaseBoth();
+                if (HasFailure()) return;
+            }
+        }
+    }
+}
+
 // Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
 // matter here) edged `lag` scans apart, in either call order. The
 // stop may take the interface between FB 0's data and its toggle; then FB 0's command never went out and FB 0
@@ -254,6 +319,70 @@ TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandAtOnce) 
         }
     }
     EXPECT_GT(overtakenRuns, 0) << "the stop never took the interface between data and toggle";
+}
+
+// Issue 32, item 2 with skipped calls: as above, and FB 0 left out for 0 to 6 scans after the stop's edge, while
+// FB 1 sends an ordinary write in the scan after its stop ended. FB 0's command that the stop overtook ends 16#8016
+// soon after the skip, never Done on the write's acknowledgement and not after its Timeout; one that
+// went out ends Done, taken once; the write ends Done, taken once. (0600 is a command error in HOME POSITION, which
+// does not matter here: the controller took it.)
+TEST_P(CmdSkippedCalls, AStopBetweenDataAndToggleEndsTheOvertakenCommandWhateverScansItMisses) {
+    if (!GetParam().twoStepWrite) GTEST_SKIP() << "only a two-step write has a scan between data and toggle";
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    std::uint32_t serial = 1000;
+    int overtakenRuns = 0;
+    for (const bool stopFirst : {false, true}) {
+        for (int lag = 0; lag <= 2; ++lag) {
+            for (int skip = 0; skip <= 6; ++skip) {
+                SCOPED_TRACE(std::string(stopFirst ? "the stop's FB called first" : "the stop's FB called second") +
+                             ", the stop edged " + std::to_string(lag) + " scans after the command, FB 0 left out " +
+                             std::to_string(skip) + " scans after that scan");
+                plc.Order(stopFirst ? 1 : 0, stopFirst ? 0 : 1);
+                const Command own{code::kPutIntReg, 2, serial++};
+                const Command write{code::kPutIntReg, 3, serial++};
+                plc.Taken();
+                plc.Set(0, own);
+                plc.Set(1, {code::kStop, 0, 0});
+                plc.Fb(0)->EXECUTE.value = TRUE;
+                int phase = 0;  // FB 1: 0 the stop, 1 its Execute low, 2 the write
+                int n = 0;
+                int finalScan = -1;
+                for (; n < 5000 && !(plc.Final(0) && phase == 2 && plc.Final(1)); ++n) {
+                    if (n == lag) plc.Fb(1)->EXECUTE.value = TRUE;
+                    if (phase == 0 && n > lag && plc.Final(1)) {  // Done, or 20 in HOME POSITION: it went out
+                        plc.Fb(1)->EXECUTE.value = FALSE;
+                        phase = 1;
+                    } else if (phase == 1) {
+                        plc.Set(1, write);
+                        plc.Fb(1)->EXECUTE.value = TRUE;
+                        phase = 2;
+                    }
+                    plc.Call(0, n <= lag || n > lag + skip);
+                    plc.Scan();
+                    if (finalScan < 0 && plc.Final(0)) finalScan = n;
+                }
+                plc.Call(0, true);
+                ASSERT_TRUE(plc.Final(0) && phase == 2 && plc.Final(1)) << "Busy after " << n << " scans";
+                const auto taken = plc.Taken();
+                if (Count(taken, own) == 0) {
+                    ++overtakenRuns;
+                    EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_OVERTAKEN"]) << "never went out";
+                    EXPECT_LT(finalScan, lag + skip + 1000 / GetParam().sharing.timing.plcMs / 2)
+                        << "ended at once, not after its Timeout";
+                } else {
+                    EXPECT_EQ(Count(taken, own), 1);
+                    EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
+                }
+                EXPECT_EQ(Count(taken, {code::kStop, 0, 0}), 1) << "the stop went out, once";
+                EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID " << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_EQ(Count(taken, write), 1) << "the write went out, once";
+                plc.ReleaseBoth();
+                if (HasFailure()) return;
+            }
+        }
+    }
+    EXPECT_GT(overtakenRuns, 6) << "the stop took the interface between data and toggle too seldom";
 }
 
 // A long command the controller took while it still processed one: the reply before it showed neither END OF
@@ -347,6 +476,58 @@ TEST_P(CmdSkippedCalls, AnAllZeroScanDoesNotWithdrawAMoveOnItsWay) {
         plc.Scan();
         plc.Scan();
     }
+}
+
+// Issue 32, item 7: a stop of a running move (0A93) on its way, a single all-zero scan (a lost telegram) 0 to 3
+// scans after its edge while the controller runs on, and the stop's FB left out for 0 to 6 scans from that scan. A
+// stop that went out is never withdrawn: the controller takes it exactly once and the axis stands; its FB ends
+// Done, or 16#8004 (outcome unknown). One that had not gone out yet ends 16#8003, never sent.
+TEST_P(CmdSkippedCalls, AnAllZeroScanNeverWithdrawsAStopOnItsWay) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    int sent = 0;
+    for (int after = 0; after <= 3; ++after) {
+        for (int skip = 0; skip <= 6; ++skip) {
+            SCOPED_TRACE("all-zero scan " + std::to_string(after) + " scans after the stop's edge, its FB left out " +
+                         std::to_string(skip) + " scans from then");
+            const Command stop{code::kStopAxis, 2, 0};
+            StartFarMove(plc, 0.0F);
+            ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
+            plc.Set(1, stop);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            for (int n = 0; n < after; ++n) plc.Scan();
+            auto& link = plc.Rig().Bus().FromPacLink();
+            link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kAllZero);
+            int n = 0;
+            for (; n < 20 && plc.Rig().CmdInterface()->OPSTATUS.value != 0; ++n) {
+                plc.Call(1, n >= skip);
+                plc.Scan();
+            }
+            link.SetFault(plc.Rig().Now(), pac::sim::LinkFault::kNone);
+            for (; n < 200000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                plc.Call(1, n >= skip);
+                plc.Scan();
+            }
+            plc.Call(1, true);
+            ASSERT_TRUE(plc.Final(0) && plc.Final(1));
+            for (n = 0; n < 400000 && plc.Rig().Controller().Processing(); ++n) plc.Scan();
+            plc.Rig().Scan(GetParam().sharing.timing.ScansFor(300ms));
+            const auto taken = plc.Taken();
+            if (plc.Fb(1)->ERRORID.value == kGvl["PAC_LIB_ERR_NOT_READY"]) {
+                EXPECT_EQ(Count(taken, stop), 0) << "16#8003: never sent";
+            } else {
+                ++sent;
+                EXPECT_EQ(Count(taken, stop), 1) << "the stop withdrawn or taken twice";
+                EXPECT_TRUE(plc.Fb(1)->DONE.value || plc.Fb(1)->ERRORID.value == kGvl["PAC_LIB_ERR_CONNECTION_LOST"])
+                    << "ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+                EXPECT_FALSE(plc.Rig().Controller().Axes().Motion(2).Moving()) << "the axis stands";
+            }
+            plc.ReleaseBoth();
+            if (HasFailure()) return;
+        }
+    }
+    EXPECT_GT(sent, 14) << "stops that went out before the all-zero scan";
 }
 
 // A controller restart with the module's SEND at 1 (RECEIVE back to 0 under "RECEIVE 0 after restart"), soon

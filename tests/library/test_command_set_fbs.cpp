@@ -488,6 +488,82 @@ TEST_P(CommandSetFbs, ManualTraverseWhoseStartFindsNoFreeInterfaceWithinTimeoutS
     EXPECT_EQ(rig.Count(0x0A90), 0u) << "the start never went out";
 }
 
+// The jog key held while other callers keep the queue full of short commands (three reads, each edged again in
+// the scan after its release, so that one waits while another is on its way; all called before the jog): the start
+// goes out only into an empty queue (a queued start could not be withdrawn). Where this traffic leaves no such
+// scan (every timing of this suite), the jog ends with 16#8006 in the first scan past Timeout from the press,
+// nothing sent; where it does, the start goes out then. Either way Busy ends within its bound (docs/commands.md,
+// "Manual traverse"). With the reads held back while the jog is Busy, as the page advises, the next press
+// starts the axis once the reads queued before it have ended.
+TEST_P(CommandSetFbs, ManualTraverseUnderQueueTrafficStartsOrEndsWithinTimeout) {
+    CommandSetRig rig(GetParam());
+    ASSERT_TRUE(rig.GoOnline());
+    rig.readN->NUMBER.value = 5;
+    rig.readStatus->AXIS.value = 2;
+    rig.readValue->AXIS.value = 2;
+    rig.readValue->KIND.value = E_PAC_AXISVALUE__PAC_AXVAL_TRAVERSE_MAX;
+    bool holdBack = false;  // the reads wait while the jog is Busy
+    std::uint64_t reads = 0;
+    auto poll = [&](auto& fb) {
+        if (fb->EXECUTE.value && (fb->DONE.value || fb->ERROR.value)) {
+            EXPECT_TRUE(fb->DONE.value) << "a read of the traffic: ErrorID 16#" << std::hex << fb->ERRORID.value;
+            fb->EXECUTE.value = FALSE;
+            ++reads;
+        } else if (!fb->EXECUTE.value && !(holdBack && rig.jog->BUSY.value)) {
+            fb->EXECUTE.value = TRUE;
+        }
+    };
+    auto scan = [&] {
+        poll(rig.readN);
+        poll(rig.readStatus);
+        poll(rig.readValue);
+        rig.Settle(1);
+    };
+    for (int i = 0; i < GetParam().ScansFor(200ms); ++i) scan();
+    constexpr auto kTimeout = 100ms;
+    rig.AimJog(5000.0F);
+    rig.jog->TIMEOUT.value = pac::ToIecTime(kTimeout);
+    rig.jog->TRAVERSE.value = TRUE;
+    const std::uint64_t readsBefore = reads;
+    scan();
+    const nanoseconds pressed = rig.Now();
+    while (rig.jog->BUSY.value && !rig.jog->ACTIVE.value && rig.Count(0x0A90) == 0 &&
+           rig.Now() - pressed <= kTimeout + GetParam().PlcCycle()) {
+        scan();
+    }
+    if (rig.Count(0x0A90) == 0) {
+        EXPECT_FALSE(rig.jog->BUSY.value) << "still Busy " << (rig.Now() - pressed) / 1ms << " ms after the press";
+        EXPECT_TRUE(rig.jog->ERROR.value);
+        EXPECT_EQ(rig.jog->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]);
+        EXPECT_GE(rig.Now() - pressed, kTimeout) << "16#8006 before Timeout";
+        EXPECT_GT(reads - readsBefore, 3u) << "the traffic went on meanwhile";
+    }
+    // Reachability: the traffic leaves no empty queue on a controller cycle of 10 ms.
+    if (GetParam().pacMs == 10) {
+        EXPECT_EQ(rig.Count(0x0A90), 0u) << "a start found an empty queue";
+    }
+    rig.jog->TRAVERSE.value = FALSE;
+    scan();
+    for (int i = 0; i < GetParam().ScansFor(2s) && rig.jog->BUSY.value; ++i) scan();
+    EXPECT_FALSE(rig.jog->BUSY.value);
+    // The remedy the page gives: the program holds its other callers back while the jog is Busy
+    // (Execute := Poll AND NOT Jog.Busy). The reads already queued end, and the start goes out then.
+    holdBack = true;
+    const std::uint64_t starts = rig.Count(0x0A90);
+    rig.jog->TRAVERSE.value = TRUE;
+    scan();
+    EXPECT_TRUE(rig.jog->BUSY.value);
+    ASSERT_TRUE(rig.jog->ERRORID.value == 0) << "ErrorID 16#" << std::hex << rig.jog->ERRORID.value;
+    const std::uint64_t readsAtPress = reads;
+    for (int i = 0; i < GetParam().ScansFor(kTimeout) && !rig.jog->ACTIVE.value && !rig.jog->ERROR.value; ++i) scan();
+    EXPECT_TRUE(rig.jog->ACTIVE.value) << "the start, behind the reads queued before the press";
+    EXPECT_EQ(rig.Count(0x0A90), starts + 1);
+    EXPECT_LE(reads - readsAtPress, 3u) << "only the reads queued at the press went before the start";
+    rig.jog->TRAVERSE.value = FALSE;
+    for (int i = 0; i < GetParam().ScansFor(2s) && rig.jog->BUSY.value; ++i) scan();
+    EXPECT_TRUE(rig.jog->DONE.value);
+}
+
 // The jog key released in the scan after its start went out, before or with the start's acknowledgement: the
 // stop 0A9A follows the start at once, and the axis stands.
 TEST_P(CommandSetFbs, ManualTraverseReleasedWhileItsStartIsOnItsWayIsStoppedAtOnce) {

@@ -14,6 +14,7 @@
 #include <functional>
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -829,6 +830,79 @@ TEST_P(AxisSimTiming, DisturbanceKeepsTheAxisErrorUntilItsCauseIsGone) {
     EXPECT_TRUE(move.Done()) << move;
     EXPECT_EQ(rig.Position(1), 1.0f);
     rig.ExpectJobsSeen(1, 1);
+}
+
+// ResetError when ONLINE ends (issue 32, item 8): outside ONLINE the PA-CONTROL acts on no control word (2.7.2
+// notes), and on the AUTOMATIC layout FW2_N4 bit 16 is flag M1. An axis error whose cause stays keeps the pulse
+// on; the program CANCELs ONLINE and, with `pressAgain`, presses ResetError again in the scan the controller
+// leaves ONLINE: the FB, still seeing ONLINE, drops the running pulse and holds the new one back for the update
+// time (10 ms). From the first call that sees a status outside ONLINE, bit 16 never goes out, neither the
+// running pulse nor the edge held back; nor once ONLINE is back.
+void ResetPulseWhenOnlineEnds(AxisSimRig& rig, bool pressAgain, bool& heldBackWhenSeen) {
+    auto& fb = rig.Fb(1);
+    auto& ctrl = rig.Ctrl();
+    rig.Pac().Axes().SetDisturbance(1, rig.Now(), 5.0);
+    ASSERT_TRUE(rig.WaitFor([&] { return fb->AXISERROR.value != 0; }, 200, "axis error"));
+    fb->RESETERROR.value = TRUE;
+    rig.Scan();
+    ASSERT_NE(rig.Control(1) & ac::kResetAxisError, 0u) << "the pulse, the cause persisting";
+    fb->RESETERROR.value = FALSE;
+    rig.Scan();
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_CANCEL;
+    ctrl->EXECUTE.value = TRUE;
+    auto online = [](int status) { return status >= 30 && status <= 39; };
+    int known = 31;  // the last status other than 0 the FB was given
+    std::optional<std::int64_t> pressScan;
+    bool seen = false;
+    for (int i = 0; i < rig.ScansFor(300); ++i) {
+        if (pressAgain && !pressScan && !online(rig.Pac().OperatingStatus())) {
+            fb->RESETERROR.value = TRUE;
+            pressScan = rig.ScanCount() + 1;
+        }
+        rig.Scan();
+        if (fb->OPSTATUS.value != 0) known = fb->OPSTATUS.value;
+        if (!online(known) && !seen) {
+            seen = true;
+            // The edge was seen in ONLINE (a scan before this one) and its 10 ms of bit 16 low had not passed: it
+            // was held back when ONLINE ended.
+            const std::int64_t since = pressScan ? rig.ScanCount() - *pressScan : 0;
+            heldBackWhenSeen = since > 0 && since * rig.Options().timing.plcMs < 10;
+        }
+        if (!online(known)) {
+            ASSERT_EQ(rig.Control(1) & ac::kResetAxisError, 0u)
+                << "bit 16 on the wire in status " << known << ", scan " << rig.ScanCount();
+        }
+    }
+    ASSERT_TRUE(seen) << "ONLINE cancelled";
+    ASSERT_TRUE(ctrl->DONE.value) << "CANCEL: ErrorID 16#" << std::hex << ctrl->ERRORID.value;
+    ctrl->EXECUTE.value = FALSE;
+    rig.Scan();
+    ctrl->REQUEST.value = E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+    ctrl->EXECUTE.value = TRUE;
+    ASSERT_TRUE(rig.WaitFor([&] { return ctrl->DONE.value || ctrl->ERROR.value; }, 500, "ONLINE again"));
+    ctrl->EXECUTE.value = FALSE;
+    for (int i = 0; i < rig.ScansFor(100); ++i) {
+        rig.Scan();
+        ASSERT_EQ(rig.Control(1) & ac::kResetAxisError, 0u) << "an old edge or pulse, ONLINE again, scan " << i;
+    }
+}
+
+TEST_P(AxisSimTiming, NoResetPulseOnTheWireOnceOnlineEnded) {
+    const BusTiming& t = GetParam().timing;
+    for (const bool pressAgain : {false, true}) {
+        SCOPED_TRACE(pressAgain ? "pressed again as ONLINE ends" : "the pulse running as ONLINE ends");
+        AxisSimRig rig(Options());
+        rig.GoOnline();
+        bool heldBack = false;
+        ResetPulseWhenOnlineEnds(rig, pressAgain, heldBack);
+        if (HasFatalFailure()) return;
+        // Reachability: the press comes in the scan after the controller's change, which reaches the FB `latency`
+        // scans after the change; from a latency of 2 the FB sees the press in ONLINE, and within the update time
+        // the new status, so the edge is held back then.
+        if (pressAgain && t.latency >= 2 && (t.latency - 1) * t.plcMs <= 5) {
+            EXPECT_TRUE(heldBack);
+        }
+    }
 }
 
 // ---- interruptions: Abort, Enable, link, a new job -----------------------------------------------------

@@ -1,7 +1,8 @@
 // FB_PAC_Diagnosis on the simulated PA-CONTROL (docs/fb/FB_PAC_Diagnosis.md), on several bus timings: it reads
 // by command only what no cyclic module carries, at the poll rate; Enable FALSE sends nothing; a command error
 // and a controller restart; the CMD channel shared with another command FB edged in the same scan, in both call
-// orders. The PLCopen Enable rules hold on FB_PAC_Diagnosis after every scan (diagnosis_plc.hpp).
+// orders; the diagnosis left out of scans at every point of its reads. The PLCopen Enable rules hold on
+// FB_PAC_Diagnosis after every scan (diagnosis_plc.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -268,6 +269,59 @@ TEST_P(DiagnosisSim, AControllerRestartIsAnErrorThenEveryValueIsReadAgain) {
     EXPECT_GE(plc.Count(kGetStatusAxis, 1, restart - milliseconds(20)), 1) << "Valid before axis 1 was read again";
     EXPECT_GE(plc.Count(kGetStatusAxis, 2, restart - milliseconds(20)), 1) << "Valid before axis 2 was read again";
     EXPECT_EQ(plc.Entry(1).SOURCE, E_PAC_DIAGSOURCE__PAC_DIAGSRC_COMMAND);
+}
+
+// The calling contract (docs/fb/FB_PAC_Diagnosis.md): the diagnosis left out for 1 to 6 scans, from 0 to 11 scans
+// into a stretch of back-to-back reads (PollTime T#1MS), so at every point of a read's handshake, while another FB
+// reads N3 again and again on the same channel (4242, which is no axis status). What the diagnosis shows is its
+// own 1910s' answer ("standing, in position"), never the other command's; it stays Valid without Error; it sends
+// 1910 of axes 1 and 2 only, and the other FB's reads end Done with their own value.
+TEST_P(DiagnosisSim, LeftOutOfScansItShowsOnlyItsOwnReads) {
+    const BusTiming& t = GetParam();
+    DiagnosisPlc plc(t, DiagnosisLayout{});
+    plc.Boot();
+    plc.Controller().Io().intRegisters.SetInt(3, 4242);
+    plc.Diag()->AXES.value = 2;
+    plc.SetPollMs(1);
+    plc.Diag()->ENABLE.value = TRUE;
+    ASSERT_TRUE(plc.WaitMs([&] { return plc.Diag()->VALID.value != 0; }, 3 * CommandMs(t) + 10));
+    plc.Other()->CODE.value = kGetIntReg;
+    plc.Other()->PARAM.value = 3;
+    int otherDone = 0;
+    auto scan = [&] {
+        auto& other = plc.Other();
+        if (other->EXECUTE.value && (other->DONE.value || other->ERROR.value)) {
+            EXPECT_TRUE(other->DONE.value) << "N3: ErrorID 16#" << std::hex << other->ERRORID.value;
+            EXPECT_EQ(other->ACKDATA.value, 4242u) << "N3's own value";
+            other->EXECUTE.value = FALSE;
+            ++otherDone;
+        } else {
+            other->EXECUTE.value = TRUE;
+        }
+        plc.Scan();
+    };
+    const int readsBefore = plc.Count(kGetStatusAxis);
+    for (int skip = 1; skip <= 6; ++skip) {
+        for (int offset = 0; offset <= 11; ++offset) {
+            SCOPED_TRACE(std::to_string(skip) + " scans left out from scan " + std::to_string(offset));
+            for (int n = 0; n < 12 + skip; ++n) {
+                plc.CallDiagnosis(n < offset || n >= offset + skip);
+                scan();
+            }
+            plc.CallDiagnosis(true);
+            scan();
+            for (int k = 1; k <= 2; ++k) {
+                EXPECT_EQ(Text(plc.Entry(k).STATUSTEXT), "standing, in position") << "axis " << k;
+                EXPECT_EQ(plc.Entry(k).READERRORID, 0) << "axis " << k;
+            }
+            EXPECT_TRUE(plc.Diag()->VALID.value);
+            ASSERT_FALSE(plc.Diag()->ERROR.value) << "ErrorID 16#" << std::hex << plc.Diag()->ERRORID.value;
+        }
+    }
+    EXPECT_GT(plc.Count(kGetStatusAxis) - readsBefore, 20) << "the diagnosis kept reading";
+    EXPECT_GT(otherDone, 20);
+    EXPECT_EQ(plc.Count(kGetStatusAxis, 1) + plc.Count(kGetStatusAxis, 2), plc.Count(kGetStatusAxis));
+    EXPECT_EQ(plc.CountAll(), plc.Count(kGetStatusAxis) + plc.Count(kGetIntReg, 3)) << "a command of neither FB";
 }
 
 INSTANTIATE_TEST_SUITE_P(BusTimings, DiagnosisSim, ::testing::ValuesIn(DiagnosisTimings()),

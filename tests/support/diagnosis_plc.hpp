@@ -67,9 +67,17 @@ public:
                 diag_->AXISSTATUS.value.table[k - 1] = Axis(k)->STATUS.value;
             }
         };
-        if (layout.diagnosisFirst) plc_.Call(diag_, wire);
+        // The diagnosis as a program calls it, in the scans the test lets it (a CASE step, an IF branch).
+        auto diagnosis = [this, wire](ST_PAC_CMDCHANNEL& channel) {
+            if (!diagnosisCalled_) return;
+            wire();
+            diag_->CHANNEL.value = channel;
+            diag_();
+            channel = diag_->CHANNEL.value;
+        };
+        if (layout.diagnosisFirst) plc_.CallCmdProgram(diagnosis);
         plc_.Call(other_);
-        if (!layout.diagnosisFirst) plc_.Call(diag_, wire);
+        if (!layout.diagnosisFirst) plc_.CallCmdProgram(diagnosis);
         plc_.Start();
         rules_.AddCommand("FB_PAC_Cmd (other)", other_);
         rules_.Attach(plc_.Task());
@@ -127,6 +135,8 @@ public:
         return n;
     }
 
+    // Whether the program calls FB_PAC_Diagnosis in the next scans (TRUE from the start).
+    void CallDiagnosis(bool called) { diagnosisCalled_ = called; }
     void SetPollMs(int ms) { diag_->POLLTIME.value = TIME{ms / 1000, (ms % 1000) * 1'000'000L}; }
 
     void Scan(int n = 1) { plc_.Scan(n); }
@@ -150,6 +160,7 @@ private:
     DiagnosisLayout layout_;
     FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     FbInstance<FB_PAC_DIAGNOSIS> diag_ = PAC_FB(FB_PAC_DIAGNOSIS);
+    bool diagnosisCalled_ = true;
     FbInstance<FB_PAC_CMD> other_ = PAC_FB(FB_PAC_CMD);
     std::vector<std::unique_ptr<FbInstance<FB_PAC_AXIS>>> axes_;  // before plc_, whose programs call them
     PacRig plc_;
