@@ -271,6 +271,9 @@ class Compiler:
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
+        if self.user and up == "WSTRING":
+            self.dialect(token, "WSTRING")
+            return T.WSTRING
         if self.user and up == "BIT":  # TwinCAT packs a BIT member into its struct's bits: a BOOL here
             self.dialect(token, "BIT")
             return T.ELEMENTARY["BOOL"]
@@ -438,20 +441,21 @@ class Compiler:
             if _cls(tok) == "StringTypeSpecification":  # STRING[10], WSTRING
                 if str(tok.type_name).upper() == "STRING" and tok.length is None:
                     return T.STRING
-                if str(tok.type_name).upper() == "STRING" and self.user:
+                if self.user and user.string_type(self, tok) is not None:
                     # A struct member, array element or result: a STRING, its length checked, not kept.
-                    user.string_length(self, tok)
-                    return T.STRING
+                    if tok.length is not None:
+                        user.string_length(self, tok)
+                    return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
         if cls == "ArraySpecification":
             raise self.err(spec, "inline ARRAY declaration: declare a named array type (TYPE ... END_TYPE)")
-        if cls == "StringTypeSpecification" and self.user and str(spec.type_name).upper() == "STRING":
+        if cls == "StringTypeSpecification" and self.user and user.string_type(self, spec) is not None:
             if spec.length is not None:  # an array's element: a STRING, its length checked, not kept
                 user.string_length(self, spec)
-            return T.STRING
+            return user.string_type(self, spec)
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
@@ -459,11 +463,12 @@ class Compiler:
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
                 length = [getattr(p, "value", p) for p in spec.init_parameters]
-                if _name(spec.type).upper() == "STRING" and len(length) == 1 and _cls(length[0]) == "Integer":
+                if _name(spec.type).upper() in ("STRING", "WSTRING") and len(length) == 1 \
+                        and _cls(length[0]) == "Integer":
                     # a FUNCTION's or METHOD's result STRING(80), which blark reads as a call
                     user.string_capacity(self, spec, literals.int_value(length[0]))
-                    self.dialect(spec, "a result of type STRING(n)")
-                    return T.STRING
+                    self.dialect(spec, f"a result of type {_name(spec.type).upper()}(n)")
+                    return T.WSTRING if _name(spec.type).upper() == "WSTRING" else T.STRING
                 # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone; `List : FB_List(10);`
                 # gives them to the FB's METHOD FB_init (_fb_init)
                 t = self._spec_type(spec.type, allow_fb)
@@ -602,14 +607,14 @@ class Compiler:
             return
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
-        elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \
+        elif cls == "StringTypeDeclaration" and self.user and user.string_type(self, decl.string_type) is not None \
                 and decl.value is None:
             # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
             self._declare_global(decl.name, "type")
             if decl.string_type.length is not None:
                 user.string_length(self, decl.string_type)
             self.dialect(decl, "a STRING type")
-            self.types[_name(decl.name).upper()] = T.STRING
+            self.types[_name(decl.name).upper()] = user.string_type(self, decl.string_type)
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])

@@ -151,6 +151,8 @@ class ExprCompiler:
             return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
         hint = ""
         convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        if te.type.is_string and target.is_string and self.comp.user:
+            convertible = True
         if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
         else:
@@ -239,10 +241,15 @@ class ExprCompiler:
 
     def _e_String(self, node, want):
         text = str(node.value)
-        if not text.startswith("'"):
+        wide = text.startswith('"')
+        if wide and not self.comp.user:
             raise self.err(node, "double-quoted WSTRING literals are outside the portable subset")
+        if wide:
+            self.comp.dialect(node, "a WSTRING literal")
+        kind = "WSTRING" if wide else "STRING"
         body, out, i = text[1:-1], [], 0
-        escapes = {"$": "$", "'": "'", "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        escapes = {"$": "$", text[0]: text[0], "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        digits = 4 if wide else 2  # $0041 in a WSTRING, $41 in a STRING
         while i < len(body):
             c = body[i]
             if c == "$":
@@ -251,14 +258,18 @@ class ExprCompiler:
                     out.append(escapes[nxt])
                     i += 2
                     continue
-                if re.fullmatch(r"[0-9A-Fa-f]{2}", body[i + 1:i + 3]):
-                    out.append(chr(int(body[i + 1:i + 3], 16)))
-                    i += 3
+                if re.fullmatch(f"[0-9A-Fa-f]{{{digits}}}", body[i + 1:i + 1 + digits]):
+                    out.append(chr(int(body[i + 1:i + 1 + digits], 16)))
+                    i += 1 + digits
                     continue
-                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a STRING literal")
+                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a {kind} literal")
             out.append(c)
             i += 1
         value = "".join(out)
+        if wide and any(ord(ch) > 0xFF for ch in value):
+            raise self.err(node, f"the character '{next(ch for ch in value if ord(ch) > 0xFF)}' in a WSTRING literal: "
+                                 "pacst's WSTRING holds the characters U+0000 to U+00FF (Latin-1) only; write the "
+                                 "text without it, or leave the POU out of the program tested")
         if self.comp.user and len(value) > user.STRING_CAPACITY:
             raise self.err(node, f"STRING literal of {len(value)} characters: a STRING holds at most "
                                  f"{user.STRING_CAPACITY}")
@@ -269,7 +280,7 @@ class ExprCompiler:
             raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
                                  "the default STRING length of CODESYS and TwinCAT")
         c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
-        return TE(T.STRING, f'__pacst_string("{c_text}", {len(value)})')
+        return TE(T.WSTRING if wide else T.STRING, f'__pacst_string("{c_text}", {len(value)})')
 
     def _e_Duration(self, node, want):
         line, col = pos(node)
@@ -723,6 +734,14 @@ class ExprCompiler:
             if src == dst:
                 (arg,) = self._positional(node, 1, ["IN"])
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
+        if self.comp.user and {src, dst} == {"STRING", "WSTRING"}:  # one character a byte in both here
+            self.comp.dialect(node, f"{src}_TO_{dst}")
+            (arg,) = self._positional(node, 1, ["IN"])
+            st, dt = (T.STRING, T.WSTRING) if src == "STRING" else (T.WSTRING, T.STRING)
+            return TE(dt, self.coerce(self.expr(arg, st), st, arg, "argument"))
+        if self.comp.user and "WSTRING" in (src, dst):
+            raise self.err(node, f"{src}_TO_{dst} is outside pacst's user programs: of the WSTRING conversions, "
+                                 "WSTRING_TO_STRING and STRING_TO_WSTRING are translated; convert through a STRING")
         if self.comp.user and "STRING" in (src, dst):
             return self._string_conversion(node, src, dst)
         if self.comp.user and ({"TIME", "LTIME"} & {src, dst} or {src, dst} & set(T.USER_ELEMENTARY)):

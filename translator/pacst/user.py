@@ -108,6 +108,15 @@ def parse_location(comp, node, vtype):
     return Location(text, area, size, numbers)
 
 
+def string_type(comp, spec):
+    """STRING or WSTRING (user mode, recorded as dialect) for a StringTypeSpecification, else None."""
+    name = str(spec.type_name).upper()
+    if name == "WSTRING":
+        comp.dialect(spec, "WSTRING")
+        return T.WSTRING
+    return T.STRING if name == "STRING" else None
+
+
 def string_length(comp, spec):
     """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
     expr = spec.length.length
@@ -183,9 +192,8 @@ def var_type(comp, init, allow_fb):
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
-        if _cls(tok) == "StringTypeSpecification" and str(tok.type_name).upper() == "STRING" \
-                and tok.length is not None:
-            return T.STRING, string_length(comp, tok)
+        if _cls(tok) == "StringTypeSpecification" and string_type(comp, tok) is not None:
+            return string_type(comp, tok), string_length(comp, tok) if tok.length is not None else None
         if cls == "TypeInitialization":
             return comp._spec_type(spec, allow_fb=allow_fb), None
     if cls == "SubrangeTypeInitialization" and init.indirection is None and init.spec.subrange is not None:
@@ -205,10 +213,10 @@ def initial_value(init):
 def check_string_init(comp, var):
     """A sized STRING's literal initial value fits its length."""
     if var.strlen is not None and var.init is not None and _cls(var.init) == "String":
-        te = comp.literal_te(var.init, T.STRING)
+        te = comp.literal_te(var.init, var.type)
         length = int(te.code.rsplit(",", 1)[1].strip(" )"))
         if length > var.strlen:
-            raise comp.err(var.init, f"initial value of {length} characters for a STRING({var.strlen})")
+            raise comp.err(var.init, f"initial value of {length} characters for a {var.type.name}({var.strlen})")
 
 
 def global_list(comp, block, src):
@@ -329,7 +337,7 @@ def external(comp, pou, block):
         if _cls(spec) == "ArraySpecification":
             t = inline_array(comp, spec, comp.file)
         elif _cls(spec) == "SimpleSpecification" and _cls(spec.type) == "StringTypeSpecification":
-            t = T.STRING
+            t = string_type(comp, spec.type) or T.STRING
         else:
             t = comp._spec_type(spec, allow_fb=False)
         if t is not g.type:
