@@ -271,6 +271,9 @@ class Compiler:
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
+        if self.user and up in T.USER_DATES:
+            self.dialect(token, up)
+            return T.USER_DATES[up]
         if self.user and up == "WSTRING":
             self.dialect(token, "WSTRING")
             return T.WSTRING
@@ -1240,7 +1243,7 @@ class Compiler:
             if inner not in _INT_LITERALS | {"Real"}:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"} and \
-                not (cls == "Lduration" and self.user):
+                not (cls in ("Lduration", "Date", "DateTime", "TimeOfDay") and self.user):
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
                 self.bare_enum_value(self.enum_values[_name(node.name).upper()], _name(node.name), node)
             elif self.qualified_enum_value(node) is not None:

@@ -83,7 +83,8 @@ def same_struct(source, target):
 _CLASS_OF = {"BOOL": "TYPE_BOOL", "BYTE": "TYPE_BYTE", "WORD": "TYPE_WORD", "DWORD": "TYPE_DWORD", "LWORD": "TYPE_LWORD",
              "SINT": "TYPE_SINT", "INT": "TYPE_INT", "DINT": "TYPE_DINT", "LINT": "TYPE_LINT", "USINT": "TYPE_USINT",
              "UINT": "TYPE_UINT", "UDINT": "TYPE_UDINT", "ULINT": "TYPE_ULINT", "REAL": "TYPE_REAL",
-             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "WSTRING": "TYPE_WSTRING", "TIME": "TYPE_TIME"}
+             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "WSTRING": "TYPE_WSTRING", "TIME": "TYPE_TIME",
+             "LTIME": "TYPE_LTIME", "DATE": "TYPE_DATE", "DATE_AND_TIME": "TYPE_DATEANDTIME", "TIME_OF_DAY": "TYPE_TIMEOFDAY"}
 
 
 def _class_of(t):
