@@ -122,6 +122,7 @@ class Compiler:
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
+        self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
@@ -376,13 +377,16 @@ class Compiler:
     def pointer_type(self, node, target, indirection):
         """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
         reference = bool(indirection.reference)
-        if (0 if reference else 1) != indirection.pointer_depth or target.is_pointer:
-            raise self.err(node, "a POINTER TO POINTER and a REFERENCE TO a POINTER are not translated")
+        depth = indirection.pointer_depth
+        if reference and depth or target.is_pointer or depth > 2:
+            raise self.err(node, "a REFERENCE TO a POINTER, and a POINTER TO POINTER TO POINTER, are not translated")
         self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        if depth == 2:  # POINTER TO POINTER TO T: an array of pointers from __NEW(POINTER TO T, n)
+            return self.pointer_to(self.pointer_to(target))
         return self.pointer_to(target, reference)
 
     def pointer_to(self, target, reference=False):
-        key = (target.cname, reference)
+        key = (T.PointerType(target, reference).cname, reference)
         t = self.pointer_types.get(key)
         if t is None:
             t = self.pointer_types[key] = T.PointerType(target, reference)
@@ -433,9 +437,28 @@ class Compiler:
         elif cls == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
                 and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
             var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+        if var is None and cls == "SimpleVariable" and self.user:
+            init = self._later_constant(_name(node.name))
+            return self.constant_int(init, earlier) if init is not None else None
         if var is None or not var.constant or var.init is None:
             return None
         return self.constant_int(var.init, earlier)
+
+    def _later_constant(self, name):
+        """User mode: the initial value of a VAR CONSTANT `name` of the METHOD or POU whose declarations are being
+        read, declared in a block after the one that uses it (TwinCAT resolves a POU's constants before its
+        variables), or None."""
+        up = name.upper()
+        for block in getattr(self, "constant_blocks", None) or ():
+            attrs = getattr(block, "attrs", None)
+            if attrs is None or str(getattr(attrs, "name", attrs)).lower() != "constant":
+                continue
+            for item in getattr(block, "items", ()):
+                value = getattr(getattr(item, "init", None), "value", None)
+                if value is not None and any(_name(getattr(v, "name", v)).upper() == up
+                                             for v in getattr(item, "variables", ())):
+                    return value
+        return None
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -693,6 +716,7 @@ class Compiler:
                 else self._resolve_type(node.return_type, allow_fb=False)
         constant_block = None
         refused = []
+        self.constant_blocks = node.declarations
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
@@ -714,6 +738,7 @@ class Compiler:
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
                                       "return the struct alone or use a FUNCTION_BLOCK")
+        self.constant_blocks = None
         if refused:
             raise StErrors(refused)
         if kind == "fb":
@@ -965,6 +990,7 @@ class Compiler:
             rt = node.return_type
             m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
                 self._resolve_type(rt, allow_fb=False)
+        self.constant_blocks = [] if is_action else node.declarations  # its own constants, then its FB's
         for block in ([] if is_action else node.declarations):
             if _cls(block) == "MethodInstanceVariableDeclarations":
                 self._instance_vars(owner, m, block, inherited)
@@ -976,6 +1002,7 @@ class Compiler:
                         self._declare_var(m, "var", False, vtype, item.init.value, dv)
                 continue
             self._var_block(m, block)
+        self.constant_blocks = None
         owner.methods[prefix + name.upper()] = m
         return m
 
