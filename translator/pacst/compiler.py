@@ -28,6 +28,15 @@ def _signature(pou):
     return pou.ret, [(v.section, v.type) for v in pou.vars if v.section in ("input", "output", "inout")]
 
 
+def _array_leaves(t, target):
+    """(type, C lvalue) of each element that is no array of the array `t` at `target`, in TwinCAT's order."""
+    for k in range(t.high - t.low + 1):
+        if t.elem.is_array:
+            yield from _array_leaves(t.elem, f"{target}.table[{k}]")
+        else:
+            yield t.elem, f"{target}.table[{k}]"
+
+
 def _array_elements(node):
     """The elements of an array's initial value in order (blark nests the ones after the first, unbracketed)."""
     out = []
@@ -1381,6 +1390,16 @@ class Compiler:
             for el in _array_elements(node):
                 count = literals.int_value(el.count) if el.count is not None else 1
                 elements += [el.element] * count
+            if self.user and t.elem.is_array and not any(_cls(e) == "ArrayInitialization" for e in elements):
+                # ARRAY [1..2] OF ARRAY [1..3] OF INT := [1, 2, 3, 4, 5, 6]: TwinCAT fills the inner arrays in turn
+                leaves = list(_array_leaves(t, target))
+                if len(elements) > len(leaves):
+                    raise self.err(node, f"{len(elements)} initial values for the {len(leaves)} elements of {t.name}")
+                self.dialect(node, "the initial values of an array of arrays written flat")
+                out = []
+                for (elem, path), element in zip(leaves, elements):
+                    out += self._element_init(elem, element, path)
+                return out
             if len(elements) > t.high - t.low + 1:
                 raise self.err(node, f"{len(elements)} initial values for the {t.high - t.low + 1} elements of "
                                      f"{t.name}")
