@@ -92,6 +92,18 @@ static inline STRING __pacst_string(const char *text, int len) {
     for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < len ? text[i] : 0);
     return s;
 }
+/* User mode: s[i], the byte at offset i of a STRING's characters, as TwinCAT and CODESYS read it (0 after the
+ * last character, their terminating NUL); written, the length is where the first NUL is then. */
+static inline BYTE __pacst_str_byte(STRING s, long i) {
+    return (BYTE)(i < (long)s.len ? s.body[i] : 0);
+}
+static inline STRING __pacst_str_setbyte(STRING s, long i, BYTE b) {
+    int n = 0;
+    s.body[i] = b;
+    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
+    s.len = (uint8_t)n;
+    return s;
+}
 static inline int __pacst_string_eq(STRING a, STRING b) {
     int i;
     if (a.len != b.len) return 0;
