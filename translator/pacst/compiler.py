@@ -1377,10 +1377,33 @@ class Compiler:
             if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
                 lines += self._aggregate_init(t, var.init, target)
             return lines
+        if var.init is not None and self.user and t.kind == "interface" and _cls(var.init) == "SimpleVariable":
+            return [f"{target} = {self._interface_init(var)};"]
         if var.init is not None:
             te = self.literal_te(var.init, t)
             return [f"{target} = {ExprCompiler(self, None).coerce(te, t, var.init)};"]
         return [f"{target} = {self.default_c(t)};"]
+
+    def _interface_init(self, var):
+        """User mode: `Logger : I_Logger := AdsLogger;`, a variable of an INTERFACE given an FB instance of its
+        FUNCTION_BLOCK or PROGRAM declared before it (TwinCAT initialises in the order of declaration) or of a
+        global list."""
+        owner = self.declaring or getattr(var, "fb_init_owner", None)
+        name = _name(var.init.name)
+        src = owner.var(name) if owner is not None and owner.kind == "fb" else None
+        te = None
+        if src is not None and src.type.is_fb and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var)):
+            te = TE(src.type, f"&(data__->{src.cname})")
+        elif src is None:
+            g = user.lookup_global(self, var.init.name)
+            if g is not None and g.type.is_fb:
+                te = TE(g.type, f"&({g.csym})")
+        if te is None:
+            raise self.err(var.init, f"the initial value '{name}' of the INTERFACE variable '{var.name}': pacst takes "
+                                     "an FB instance of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a "
+                                     "global list; assign it in code")
+        self.dialect(var.init, "an FB instance as an INTERFACE variable's initial value")
+        return ExprCompiler(self, None).coerce(te, var.type, var.init)
 
     def _aggregate_init(self, t, node, target):
         """User mode: the C assignments of an array's or a struct's initial value, after its defaults."""
