@@ -797,6 +797,8 @@ class ExprCompiler:
             if src == dst:
                 (arg,) = self._positional(node, 1, ["IN"])
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
+        if self.comp.user and dst == "STRING" and src in ("TIME", "LTIME", *T.USER_DATES):
+            return self._time_to_string(node, src)
         if self.comp.user and {src, dst} & set(T.USER_DATES):
             return self._date_conversion(node, src, dst)
         if self.comp.user and {src, dst} == {"STRING", "WSTRING"}:  # one character a byte in both here
@@ -826,6 +828,17 @@ class ExprCompiler:
         te = self.expr(arg, st)
         return _converted(st, dt, self.coerce(te, st, arg, "argument"))
 
+    def _time_to_string(self, node, src):
+        """User mode: TIME_TO_STRING, LTIME_TO_STRING and the date types' _TO_STRING, the literal TwinCAT writes
+        ('T#1h30m', 'LTIME#1s2us', 'D#2002-08-18', 'TOD#14:01:05.123', 'DT#1998-02-13-14:20:00')."""
+        st = T.LTIME if src == "LTIME" else T.TIME if src == "TIME" else T.USER_DATES[src]
+        (arg,) = self._positional(node, 1, ["IN"])
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, f"{src}_TO_STRING")
+        if st.is_time:
+            return TE(T.STRING, f"__pacst_time_to_string({code}, {1 if st is T.LTIME else 0})")
+        return TE(T.STRING, f"__pacst_date_to_string({code}, {[T.DATE, T.TOD, T.DT].index(st)})")
+
     def _date_conversion(self, node, src, dst):
         """User mode: DATE, TIME_OF_DAY and DATE_AND_TIME as TwinCAT and CODESYS convert them: to and from
         numbers their count (seconds, TOD milliseconds) cut to 32 bits; DT to DATE its midnight, DT to TOD its
@@ -837,7 +850,7 @@ class ExprCompiler:
             if tname not in types or tname == "STRING":
                 raise self.err(node, f"{name} is outside pacst's user programs: DATE, TIME_OF_DAY and DATE_AND_TIME "
                                      "are converted to and from numbers, TOD to and from TIME, DT to DATE and TOD, "
-                                     "DATE to DT")
+                                     "DATE to DT, and to STRING")
         st, dt = types[src], types[dst]
         if st is dt:
             raise self.err(node, f"{name} converts nothing")
