@@ -306,6 +306,8 @@ class BodyCompiler:
             if ecls == "FieldSelector":
                 if el.dereferenced and not self.comp.user:
                     raise self.err(el, "pointers are outside the portable subset")
+                if el.dereferenced:  # the `^` before the `.` (blark's reading of p^.pNext^.Value)
+                    r = self._deref(r, el)
                 field = el.field
                 if _cls(field) != "SimpleVariable" and self.comp.user and (r.type.is_bit or r.type.is_int):
                     r = self._bit(r, el, field)
@@ -347,7 +349,9 @@ class BodyCompiler:
                     r = self._index(r, idx_node)
             else:
                 raise self.err(el, f"{ecls} is outside the portable subset")
-            if getattr(el, "dereferenced", False):  # a.p^, a[i]^
+            if ecls == "FieldSelector" and getattr(el.field, "dereferenced", False):  # a.pNext^
+                r = self._deref(r, el.field)
+            elif ecls != "FieldSelector" and getattr(el, "dereferenced", False):  # a[i]^
                 r = self._deref(r, el)
         if node.dereferenced:
             r = self._deref(r, node)

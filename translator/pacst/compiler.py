@@ -556,26 +556,15 @@ class Compiler:
             if decl.extends is not None or decl.indirection is not None:
                 raise self.err(decl, "EXTENDS and pointers are outside the portable subset")
             t = T.StructType(_name(decl.name))
-            seen = set()
-            for el in decl.declarations:
-                if _cls(el) != "StructureElementDeclaration":
-                    raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
-                init = el.init
-                if self.user and _cls(init) == "ArrayTypeInitialization":
-                    mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
-                elif _cls(init) != "TypeInitialization":
-                    raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
-                else:
-                    mtype = self._spec_type(init.spec, allow_fb=False)
-                for dv in el.variables:
-                    name = self._decl_var_name(dv, "member")
-                    if name.upper() in seen:
-                        raise self.err(dv, f"member '{name}' is declared twice")
-                    seen.add(name.upper())
-                    v = T.Var(name, "member", mtype, init.value, dv)
-                    if init.value is not None:
-                        self._init_code(v, "x")  # checks the initial value now
-                    t.members.append(v)
+            if self.user:  # a member may point at the struct itself (a list's node): POINTER TO ST_Node
+                self.types[t.cname] = t
+                try:
+                    self._struct_members(t, decl)
+                except (StError, StErrors):
+                    del self.types[t.cname]
+                    raise
+            else:
+                self._struct_members(t, decl)
         elif cls == "EnumeratedTypeDeclaration":
             self._declare_global(decl.name, "type")
             init = decl.init
@@ -661,6 +650,32 @@ class Compiler:
             raise self.err(decl, f"{cls} is outside the portable subset")
         self.types[t.cname] = t
         self.program.items.append(("type", t, self.file))
+
+    def _struct_members(self, t, decl):
+        """The members of the STRUCT `t`, from its declaration."""
+        seen = set()
+        for el in decl.declarations:
+            if _cls(el) != "StructureElementDeclaration":
+                raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
+            init = el.init
+            if self.user and _cls(init) == "ArrayTypeInitialization":
+                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
+            elif _cls(init) != "TypeInitialization":
+                raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
+            else:
+                mtype = self._spec_type(init.spec, allow_fb=False)
+            if mtype is t or (mtype.is_array and mtype.elem is t):
+                raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
+                                   "itself, never itself")
+            for dv in el.variables:
+                name = self._decl_var_name(dv, "member")
+                if name.upper() in seen:
+                    raise self.err(dv, f"member '{name}' is declared twice")
+                seen.add(name.upper())
+                v = T.Var(name, "member", mtype, init.value, dv)
+                if init.value is not None:
+                    self._init_code(v, "x")  # checks the initial value now
+                t.members.append(v)
 
     def _enum_number(self, node, base):
         """User mode: the number an enumeration value is given (a literal, negative too), checked against the
