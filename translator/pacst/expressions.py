@@ -453,7 +453,7 @@ class ExprCompiler:
         if t.is_bit and self.comp.user:  # unsigned, wrapping at the width (no C promotion to a signed int)
             if op in ("/", "MOD"):
                 return TE(t, f"__{'div' if op == '/' else 'mod'}_{t.cname}({ca}, {cb})")
-            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))")
+            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32)
         if t.is_time:
             if op == "+":
                 return TE(t, f"__time_add({ca}, {cb})")
