@@ -28,6 +28,19 @@ def _signature(pou):
     return pou.ret, [(v.section, v.type) for v in pou.vars if v.section in ("input", "output", "inout")]
 
 
+def _address_of(node):
+    """The operand of `ADR(x)` (user mode: a POINTER's initial value), or None; blark reads the initial value of a
+    POINTER TO ARRAY as an array's `n(x)` with ADR for n."""
+    if _cls(node) == "FunctionCall" and _cls(node.name) == "SimpleVariable" and _name(node.name.name).upper() == "ADR" \
+            and len(node.parameters) == 1:
+        return getattr(node.parameters[0], "value", node.parameters[0])
+    if _cls(node) == "ArrayInitialization" and len(node.elements) == 1:
+        count = getattr(node.elements[0], "count", None)
+        if _cls(count) == "EnumeratedValue" and count.type_name is None and _name(count.name).upper() == "ADR":
+            return node.elements[0].element
+    return None
+
+
 def _array_leaves(t, target):
     """(type, C lvalue) of each element that is no array of the array `t` at `target`, in TwinCAT's order."""
     for k in range(t.high - t.low + 1):
@@ -495,6 +508,12 @@ class Compiler:
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
             if self.user and spec.indirection is not None and spec.init_parameters is None:
+                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+            length = [getattr(p, "value", p) for p in spec.init_parameters or ()]
+            if self.user and spec.indirection is not None and len(length) == 1 and _cls(length[0]) == "Integer" \
+                    and _cls(spec.type) == "SimpleSpecification" and _cls(spec.type.type) == "StringTypeSpecification":
+                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked
+                user.string_capacity(self, spec, literals.int_value(length[0]))
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
                 length = [getattr(p, "value", p) for p in spec.init_parameters]
@@ -1394,10 +1413,35 @@ class Compiler:
             return lines
         if var.init is not None and self.user and t.kind == "interface" and _cls(var.init) == "SimpleVariable":
             return [f"{target} = {self._interface_init(var)};"]
+        if var.init is not None and self.user and t.is_pointer and not t.reference and _address_of(var.init):
+            return [f"{target} = {self._address_init(var)};"]
         if var.init is not None:
             te = self.literal_te(var.init, t)
             return [f"{target} = {ExprCompiler(self, None).coerce(te, t, var.init)};"]
         return [f"{target} = {self.default_c(t)};"]
+
+    def _address_init(self, var):
+        """User mode: `pList : POINTER TO T := ADR(List);`, the address of a variable of the same FUNCTION_BLOCK
+        or PROGRAM declared before it, or of a global list's."""
+        args = [_address_of(var.init)]
+        owner = self.declaring or getattr(var, "fb_init_owner", None)
+        code = src_type = None
+        if len(args) == 1 and _cls(args[0]) == "SimpleVariable":
+            name = _name(args[0].name)
+            src = owner.var(name) if owner is not None and owner.kind == "fb" else None
+            if src is not None and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var)):
+                code, src_type = (f"&(data__->{src.cname})" if src.type.is_fb else
+                                  f"&(data__->{src.cname}.value)"), src.type
+            elif src is None:
+                g = user.lookup_global(self, args[0].name)
+                if g is not None:
+                    code, src_type = (f"&({g.csym})" if g.type.is_fb else f"&({g.csym}.value)"), g.type
+        if code is None:
+            raise self.err(var.init, f"the initial value of the POINTER '{var.name}': pacst takes ADR of a variable "
+                                     "of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a global list; "
+                                     "assign it in code")
+        self.dialect(var.init, "ADR(variable) as a POINTER's initial value")
+        return f"(({var.type.cname})(void *){code})"
 
     def _interface_init(self, var):
         """User mode: `Logger : I_Logger := AdsLogger;`, a variable of an INTERFACE given an FB instance of its

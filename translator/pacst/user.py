@@ -184,8 +184,8 @@ def var_type(comp, init, allow_fb):
     STRINGs besides what the library's subset declares."""
     cls = _cls(init)
     if cls == "ArrayTypeInitialization":
-        if init.indirection is not None:
-            raise comp.err(init, "pointers and references are outside pacst's user programs")
+        if init.indirection is not None:  # POINTER TO ARRAY [0..24] OF I_Logger
+            return comp.pointer_type(init, inline_array(comp, init.spec, comp.file), init.indirection), None
         return inline_array(comp, init.spec, comp.file), None
     if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2); Delay : TON := (PT := T#1S)
         return comp._resolve_type(init.name, allow_fb=allow_fb), None
