@@ -1423,25 +1423,35 @@ class Compiler:
     def _address_init(self, var):
         """User mode: `pList : POINTER TO T := ADR(List);`, the address of a variable of the same FUNCTION_BLOCK
         or PROGRAM declared before it, or of a global list's."""
-        args = [_address_of(var.init)]
+        operand = _address_of(var.init)
         owner = self.declaring or getattr(var, "fb_init_owner", None)
-        code = src_type = None
-        if len(args) == 1 and _cls(args[0]) == "SimpleVariable":
-            name = _name(args[0].name)
-            src = owner.var(name) if owner is not None and owner.kind == "fb" else None
+        code = None
+        if _cls(operand) == "SimpleVariable":
+            src = owner.var(_name(operand.name)) if owner is not None and owner.kind == "fb" else None
             if src is not None and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var)):
-                code, src_type = (f"&(data__->{src.cname})" if src.type.is_fb else
-                                  f"&(data__->{src.cname}.value)"), src.type
+                code = f"&(data__->{src.cname})" if src.type.is_fb else f"&(data__->{src.cname}.value)"
             elif src is None:
-                g = user.lookup_global(self, args[0].name)
+                g = user.lookup_global(self, operand.name)
                 if g is not None:
-                    code, src_type = (f"&({g.csym})" if g.type.is_fb else f"&({g.csym}.value)"), g.type
+                    code = f"&({g.csym})" if g.type.is_fb else f"&({g.csym}.value)"
         if code is None:
             raise self.err(var.init, f"the initial value of the POINTER '{var.name}': pacst takes ADR of a variable "
                                      "of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a global list; "
-                                     "assign it in code")
+                                     f"{self._later_or_refused(operand)}assign it in code")
         self.dialect(var.init, "ADR(variable) as a POINTER's initial value")
         return f"(({var.type.cname})(void *){code})"
+
+    def _later_or_refused(self, node):
+        """What a refusal of an initial value naming the variable `node` adds when the POU being declared declares
+        it after, or its declaration was refused: that, and to declare it before."""
+        up = _name(node.name).upper() if _cls(node) == "SimpleVariable" else None
+        for block in self.constant_blocks or ():
+            for item in getattr(block, "items", ()):
+                if any(_name(getattr(getattr(v, "variable", v), "name", v)).upper() == up
+                       for v in getattr(item, "variables", ())):
+                    return (f"'{_name(node.name)}' is declared after it or its declaration was refused (above): "
+                            "declare it before, or ")
+        return ""
 
     def _interface_init(self, var):
         """User mode: `Logger : I_Logger := AdsLogger;`, a variable of an INTERFACE given an FB instance of its
@@ -1451,7 +1461,8 @@ class Compiler:
         name = _name(var.init.name)
         src = owner.var(name) if owner is not None and owner.kind == "fb" else None
         te = None
-        if src is not None and src.type.is_fb and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var)):
+        before = src is not None and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var))
+        if before and src.type.is_fb:
             te = TE(src.type, f"&(data__->{src.cname})")
         elif src is None:
             g = user.lookup_global(self, var.init.name)
@@ -1460,7 +1471,7 @@ class Compiler:
         if te is None:
             raise self.err(var.init, f"the initial value '{name}' of the INTERFACE variable '{var.name}': pacst takes "
                                      "an FB instance of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a "
-                                     "global list; assign it in code")
+                                     f"global list; {self._later_or_refused(var.init)}assign it in code")
         self.dialect(var.init, "an FB instance as an INTERFACE variable's initial value")
         return ExprCompiler(self, None).coerce(te, var.type, var.init)
 

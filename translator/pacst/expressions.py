@@ -859,7 +859,7 @@ class ExprCompiler:
         self.comp.dialect(node, name)
         if st.is_date and dt.is_date:
             if (st, dt) == (T.DT, T.DATE):
-                return TE(dt, f"((UDINT)({code} - {code} % 86400U))")
+                return TE(dt, f"__pacst_dt_to_date({code})")
             if (st, dt) == (T.DT, T.TOD):
                 return TE(dt, f"((UDINT)({code} % 86400U * 1000U))")
             if (st, dt) == (T.DATE, T.DT):

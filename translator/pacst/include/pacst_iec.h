@@ -525,6 +525,9 @@ static inline STRING __pacst_time_to_string(TIME t, int nanoseconds) {
     if (!any) snprintf(text + n, sizeof text - (size_t)n, "0%s", nanoseconds ? "ns" : "ms");
     return __pacst_text(text);
 }
+static inline UDINT __pacst_dt_to_date(UDINT dt) {
+    return dt - dt % 86400u;
+}
 /* kind: 0 DATE, 1 TIME_OF_DAY, 2 DATE_AND_TIME; a DATE or DT counts seconds since 1970, a TOD milliseconds. */
 static inline STRING __pacst_date_to_string(uint32_t v, int kind) {
     char text[48];
