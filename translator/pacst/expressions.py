@@ -414,6 +414,15 @@ class ExprCompiler:
 
     def _e_BinaryOperation(self, node, want):
         op = str(node.op).upper()
+        if op in ("AND_THEN", "OR_ELSE") and self.comp.user:  # the right operand only when it decides
+            self.comp.dialect(node.op, op)
+            sides = []
+            for side in (node.left, node.right):
+                te = self.expr(side, T.BOOL)
+                if not te.type.is_bool:
+                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}")
+                sides.append(te.code)
+            return TE(T.BOOL, f"({sides[0]} {'&&' if op == 'AND_THEN' else '||'} {sides[1]})")
         if op in ("AND_THEN", "OR_ELSE"):
             raise self.err(node.op, f"{op} is a CODESYS/TwinCAT extension outside the portable subset")
         if op == "&":
