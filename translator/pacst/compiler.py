@@ -572,9 +572,16 @@ class Compiler:
             t = T.ArrayType(_name(decl.name), low, high, elem)
         elif cls == "StructureTypeDeclaration":
             self._declare_global(decl.name, "type")
-            if decl.extends is not None or decl.indirection is not None:
+            if decl.indirection is not None or (decl.extends is not None and not self.user):
                 raise self.err(decl, "EXTENDS and pointers are outside the portable subset")
             t = T.StructType(_name(decl.name))
+            if decl.extends is not None:  # user mode: STRUCT EXTENDS, the base's members first, as TwinCAT lays it out
+                token = decl.extends.interfaces[0]
+                base = self._resolve_type(token, allow_fb=False)
+                if not base.is_struct or len(decl.extends.interfaces) != 1:
+                    raise self.err(token, f"{t.name} EXTENDS {_name(token)}: a STRUCT extends one STRUCT")
+                self.dialect(token, "STRUCT EXTENDS")
+                t.members = list(base.members)
             if self.user:  # a member may point at the struct itself (a list's node): POINTER TO ST_Node
                 self.types[t.cname] = t
                 try:
@@ -663,6 +670,14 @@ class Compiler:
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
         elif cls == "UnionTypeDeclaration":
             raise self.err(decl, "UNION is outside the portable subset")
+        elif cls == "SubrangeTypeDeclaration" and self.user and decl.init.indirection is None \
+                and decl.init.value is None:
+            # TYPE T_Capacity : DINT(1..100); END_TYPE: another name of its base type; the range is not checked, as
+            # TwinCAT checks it only with a CheckRange POU
+            self._declare_global(decl.name, "type")
+            self.dialect(decl, "a subrange type")
+            self.types[_name(decl.name).upper()] = self._resolve_type(decl.init.spec.type_name, allow_fb=False)
+            return
         elif cls == "SubrangeTypeDeclaration":
             raise self.err(decl, "subrange types are outside the portable subset")
         else:
@@ -672,7 +687,7 @@ class Compiler:
 
     def _struct_members(self, t, decl):
         """The members of the STRUCT `t`, from its declaration."""
-        seen = set()
+        seen = {m.cname for m in t.members}  # a STRUCT EXTENDS: its base's members
         for el in decl.declarations:
             if _cls(el) != "StructureElementDeclaration":
                 raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
