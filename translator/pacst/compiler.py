@@ -886,6 +886,16 @@ class Compiler:
                     t.protos[up] = proto
             for up, prop in base.properties.items():
                 t.properties.setdefault(up, prop)
+        self.types[t.cname] = t  # a METHOD may take or return the INTERFACE itself (I_List.Clone : I_List)
+        try:
+            self._interface_members(t, node)
+        except (StError, StErrors):
+            del self.types[t.cname]
+            raise
+        self.program.items.append(("type", t, self.file))
+
+    def _interface_members(self, t, node):
+        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`."""
         for m in self.members.get(id(node), []):
             if _cls(m) == "Property":
                 self._interface_property(t, m)
@@ -903,8 +913,6 @@ class Compiler:
                 raise self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its bases')")
             t.methods.append(proto.name)
             t.protos[proto.cname] = proto
-        self.types[t.cname] = t
-        self.program.items.append(("type", t, self.file))
 
     def _interface_property(self, t, node):
         """User mode: a PROPERTY of an INTERFACE: `X` its type, `X.Get` and `X.Set` its accessors (TwinCAT's
