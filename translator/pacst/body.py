@@ -306,6 +306,8 @@ class BodyCompiler:
             if ecls == "FieldSelector":
                 if el.dereferenced and not self.comp.user:
                     raise self.err(el, "pointers are outside the portable subset")
+                if el.dereferenced:  # the `^` before the `.` (blark's reading of p^.pNext^.Value)
+                    r = self._deref(r, el)
                 field = el.field
                 if _cls(field) != "SimpleVariable" and self.comp.user and (r.type.is_bit or r.type.is_int):
                     r = self._bit(r, el, field)
@@ -334,6 +336,8 @@ class BodyCompiler:
                     raise self.err(field, f"'{fname}': {r.type.name} has no members")
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
                 r = self._pointer_index(r, el)
+            elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
+                r = self._string_index(r, el)
             elif ecls == "SubscriptList":
                 if not r.type.is_array:
                     raise self.err(el, f"{r.type.name} is not an array")
@@ -345,7 +349,9 @@ class BodyCompiler:
                     r = self._index(r, idx_node)
             else:
                 raise self.err(el, f"{ecls} is outside the portable subset")
-            if getattr(el, "dereferenced", False):  # a.p^, a[i]^
+            if ecls == "FieldSelector" and getattr(el.field, "dereferenced", False):  # a.pNext^
+                r = self._deref(r, el.field)
+            elif ecls != "FieldSelector" and getattr(el, "dereferenced", False):  # a[i]^
                 r = self._deref(r, el)
         if node.dereferenced:
             r = self._deref(r, node)
@@ -365,6 +371,21 @@ class BodyCompiler:
         line, col = pos(el)
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         return Ref(f"((({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))[{index}])", False, t, r.var)
+
+    def _string_index(self, r, el):
+        """User mode: `s[i]`, the character at offset i of a STRING as a BYTE (of a WSTRING as a WORD), as CODESYS
+        and TwinCAT index a string; an offset outside the C STRING's room stops the run with the ST line."""
+        if len(el.subscripts) != 1:
+            raise self.err(el, f"a {r.type.name} takes one index: s[i]")
+        self.comp.dialect(el, f"an index on a {r.type.name}")
+        te = self.ex.expr(el.subscripts[0], T.DINT)
+        if te.type is not T.ANY_INT and not (te.type.is_int or te.type.is_bit):
+            raise self.err(el.subscripts[0], f"an index of type {te.type.name}: use an integer type")
+        line, col = pos(el.subscripts[0])
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        index = str(te.value) if te.type is T.ANY_INT else f"(long long)({te.code})"
+        return StringByteRef(r, f"__pacst_index((long)({index}), 0L, STR_MAX_LEN - 1L, \"{where}\")",
+                             T.ELEMENTARY["WORD" if r.type is T.WSTRING else "BYTE"])
 
     def _index(self, r, idx_node):
         """The element `idx_node` of the array `r`: checked against the bounds at run time, or now."""
@@ -453,7 +474,8 @@ class BodyCompiler:
         if self.comp.user and system.is_new(node.expression):  # p := __NEW(T)
             return system.new_assignment(self, r, node.expression, ind)
         te = self.ex.expr(node.expression, r.type)
-        return [ind + r.write(_limited(r.var, self.ex.coerce(te, r.type, node.expression), r.suffix))]
+        value = self.ex.coerce(te, r.type, node.expression)
+        return [ind + r.write(value if isinstance(r, StringByteRef) else _limited(r.var, value, r.suffix))]
 
     def _s_ReferenceAssignmentStatement(self, node, ind, d):
         """User mode: `R REF= X`: the REFERENCE R now stands for X (REF= 0: for nothing)."""
@@ -852,6 +874,22 @@ class BitRef(Ref):
         t = self.whole.type.cname
         mask = f"(({t})1 << {self.n})"
         return self.whole.write(f"(({t})(({value}) ? ({self.whole.read()} | {mask}) : ({self.whole.read()} & ({t})~{mask})))")
+
+
+class StringByteRef(Ref):
+    """A character of a STRING variable by its offset (user mode): a BYTE (WORD of a WSTRING) read and written."""
+
+    def __init__(self, whole, index, type_):
+        super().__init__(whole.base, whole.wrapped, type_, whole.var, whole.suffix, whole.writable, whole.why_not,
+                         whole.subscripted)
+        self.whole, self.index = whole, index
+
+    def read(self):
+        return f"(({self.type.cname})__pacst_str_byte({self.whole.read()}, {self.index}))"
+
+    def write(self, value):
+        return self.whole.write(_limited(self.var, f"__pacst_str_setbyte({self.whole.read()}, {self.index}, "
+                                                   f"(BYTE)({value}))", self.whole.suffix))
 
 
 def program_instance(pou):

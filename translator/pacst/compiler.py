@@ -28,6 +28,28 @@ def _signature(pou):
     return pou.ret, [(v.section, v.type) for v in pou.vars if v.section in ("input", "output", "inout")]
 
 
+def _address_of(node):
+    """The operand of `ADR(x)` (user mode: a POINTER's initial value), or None; blark reads the initial value of a
+    POINTER TO ARRAY as an array's `n(x)` with ADR for n."""
+    if _cls(node) == "FunctionCall" and _cls(node.name) == "SimpleVariable" and _name(node.name.name).upper() == "ADR" \
+            and len(node.parameters) == 1:
+        return getattr(node.parameters[0], "value", node.parameters[0])
+    if _cls(node) == "ArrayInitialization" and len(node.elements) == 1:
+        count = getattr(node.elements[0], "count", None)
+        if _cls(count) == "EnumeratedValue" and count.type_name is None and _name(count.name).upper() == "ADR":
+            return node.elements[0].element
+    return None
+
+
+def _array_leaves(t, target):
+    """(type, C lvalue) of each element that is no array of the array `t` at `target`, in TwinCAT's order."""
+    for k in range(t.high - t.low + 1):
+        if t.elem.is_array:
+            yield from _array_leaves(t.elem, f"{target}.table[{k}]")
+        else:
+            yield t.elem, f"{target}.table[{k}]"
+
+
 def _array_elements(node):
     """The elements of an array's initial value in order (blark nests the ones after the first, unbracketed)."""
     out = []
@@ -122,6 +144,7 @@ class Compiler:
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
+        self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
@@ -277,6 +300,12 @@ class Compiler:
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
+        if self.user and up in T.USER_DATES:
+            self.dialect(token, up)
+            return T.USER_DATES[up]
+        if self.user and up == "WSTRING":
+            self.dialect(token, "WSTRING")
+            return T.WSTRING
         if self.user and up == "BIT":  # TwinCAT packs a BIT member into its struct's bits: a BOOL here
             self.dialect(token, "BIT")
             return T.ELEMENTARY["BOOL"]
@@ -415,13 +444,16 @@ class Compiler:
     def pointer_type(self, node, target, indirection):
         """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
         reference = bool(indirection.reference)
-        if (0 if reference else 1) != indirection.pointer_depth or target.is_pointer:
-            raise self.err(node, "a POINTER TO POINTER and a REFERENCE TO a POINTER are not translated")
+        depth = indirection.pointer_depth
+        if reference and depth or target.is_pointer or depth > 2:
+            raise self.err(node, "a REFERENCE TO a POINTER, and a POINTER TO POINTER TO POINTER, are not translated")
         self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        if depth == 2:  # POINTER TO POINTER TO T: an array of pointers from __NEW(POINTER TO T, n)
+            return self.pointer_to(self.pointer_to(target))
         return self.pointer_to(target, reference)
 
     def pointer_to(self, target, reference=False):
-        key = (target.cname, reference)
+        key = (T.PointerType(target, reference).cname, reference)
         t = self.pointer_types.get(key)
         if t is None:
             t = self.pointer_types[key] = T.PointerType(target, reference)
@@ -472,9 +504,28 @@ class Compiler:
         elif cls == "MultiElementVariable" and len(node.elements) == 1 and _cls(node.elements[0]) == "FieldSelector" \
                 and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
             var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
+        if var is None and cls == "SimpleVariable" and self.user:
+            init = self._later_constant(_name(node.name))
+            return self.constant_int(init, earlier) if init is not None else None
         if var is None or not var.constant or var.init is None:
             return None
         return self.constant_int(var.init, earlier)
+
+    def _later_constant(self, name):
+        """User mode: the initial value of a VAR CONSTANT `name` of the METHOD or POU whose declarations are being
+        read, declared in a block after the one that uses it (TwinCAT resolves a POU's constants before its
+        variables), or None."""
+        up = name.upper()
+        for block in getattr(self, "constant_blocks", None) or ():
+            attrs = getattr(block, "attrs", None)
+            if attrs is None or str(getattr(attrs, "name", attrs)).lower() != "constant":
+                continue
+            for item in getattr(block, "items", ()):
+                value = getattr(getattr(item, "init", None), "value", None)
+                if value is not None and any(_name(getattr(v, "name", v)).upper() == up
+                                             for v in getattr(item, "variables", ())):
+                    return value
+        return None
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -483,32 +534,40 @@ class Compiler:
             if _cls(tok) == "StringTypeSpecification":  # STRING[10], WSTRING
                 if str(tok.type_name).upper() == "STRING" and tok.length is None:
                     return T.STRING
-                if str(tok.type_name).upper() == "STRING" and self.user:
+                if self.user and user.string_type(self, tok) is not None:
                     # A struct member, array element or result: a STRING, its length checked, not kept.
-                    user.string_length(self, tok)
-                    return T.STRING
+                    if tok.length is not None:
+                        user.string_length(self, tok)
+                    return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
         if cls == "ArraySpecification":
             raise self.err(spec, "inline ARRAY declaration: declare a named array type (TYPE ... END_TYPE)")
-        if cls == "StringTypeSpecification" and self.user and str(spec.type_name).upper() == "STRING":
+        if cls == "StringTypeSpecification" and self.user and user.string_type(self, spec) is not None:
             if spec.length is not None:  # an array's element: a STRING, its length checked, not kept
                 user.string_length(self, spec)
-            return T.STRING
+            return user.string_type(self, spec)
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
         if cls == "IndirectSimpleSpecification":
             if self.user and spec.indirection is not None and spec.init_parameters is None:
                 return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+            length = [getattr(p, "value", p) for p in spec.init_parameters or ()]
+            if self.user and spec.indirection is not None and len(length) == 1 and _cls(length[0]) == "Integer" \
+                    and _cls(spec.type) == "SimpleSpecification" and _cls(spec.type.type) == "StringTypeSpecification":
+                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked
+                user.string_capacity(self, spec, literals.int_value(length[0]))
+                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
                 length = [getattr(p, "value", p) for p in spec.init_parameters]
-                if _name(spec.type).upper() == "STRING" and len(length) == 1 and _cls(length[0]) == "Integer":
+                if _name(spec.type).upper() in ("STRING", "WSTRING") and len(length) == 1 \
+                        and _cls(length[0]) == "Integer":
                     # a FUNCTION's or METHOD's result STRING(80), which blark reads as a call
                     user.string_capacity(self, spec, literals.int_value(length[0]))
-                    self.dialect(spec, "a result of type STRING(n)")
-                    return T.STRING
+                    self.dialect(spec, f"a result of type {_name(spec.type).upper()}(n)")
+                    return T.WSTRING if _name(spec.type).upper() == "WSTRING" else T.STRING
                 # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone; `List : FB_List(10);`
                 # gives them to the FB's METHOD FB_init (_fb_init)
                 t = self._spec_type(spec.type, allow_fb)
@@ -558,29 +617,25 @@ class Compiler:
             t = T.ArrayType(_name(decl.name), low, high, elem)
         elif cls == "StructureTypeDeclaration":
             self._declare_global(decl.name, "type")
-            if decl.extends is not None or decl.indirection is not None:
+            if decl.indirection is not None or (decl.extends is not None and not self.user):
                 raise self.err(decl, "EXTENDS and pointers are outside the portable subset")
             t = T.StructType(_name(decl.name))
-            seen = set()
-            for el in decl.declarations:
-                if _cls(el) != "StructureElementDeclaration":
-                    raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
-                init = el.init
-                if self.user and _cls(init) == "ArrayTypeInitialization":
-                    mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
-                elif _cls(init) != "TypeInitialization":
-                    raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
-                else:
-                    mtype = self._spec_type(init.spec, allow_fb=False)
-                for dv in el.variables:
-                    name = self._decl_var_name(dv, "member")
-                    if name.upper() in seen:
-                        raise self.err(dv, f"member '{name}' is declared twice")
-                    seen.add(name.upper())
-                    v = T.Var(name, "member", mtype, init.value, dv)
-                    if init.value is not None:
-                        self._init_code(v, "x")  # checks the initial value now
-                    t.members.append(v)
+            if decl.extends is not None:  # user mode: STRUCT EXTENDS, the base's members first, as TwinCAT lays it out
+                token = decl.extends.interfaces[0]
+                base = self._resolve_type(token, allow_fb=False)
+                if not base.is_struct or len(decl.extends.interfaces) != 1:
+                    raise self.err(token, f"{t.name} EXTENDS {_name(token)}: a STRUCT extends one STRUCT")
+                self.dialect(token, "STRUCT EXTENDS")
+                t.members = list(base.members)
+            if self.user:  # a member may point at the struct itself (a list's node): POINTER TO ST_Node
+                self.types[t.cname] = t
+                try:
+                    self._struct_members(t, decl)
+                except (StError, StErrors):
+                    del self.types[t.cname]
+                    raise
+            else:
+                self._struct_members(t, decl)
         elif cls == "EnumeratedTypeDeclaration":
             self._declare_global(decl.name, "type")
             init = decl.init
@@ -647,25 +702,59 @@ class Compiler:
             return
         elif cls == "SimpleTypeDeclaration":
             raise self.err(decl, "type aliases are outside the portable subset")
-        elif cls == "StringTypeDeclaration" and self.user and str(decl.string_type.type_name).upper() == "STRING" \
+        elif cls == "StringTypeDeclaration" and self.user and user.string_type(self, decl.string_type) is not None \
                 and decl.value is None:
             # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
             self._declare_global(decl.name, "type")
             if decl.string_type.length is not None:
                 user.string_length(self, decl.string_type)
             self.dialect(decl, "a STRING type")
-            self.types[_name(decl.name).upper()] = T.STRING
+            self.types[_name(decl.name).upper()] = user.string_type(self, decl.string_type)
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
         elif cls == "UnionTypeDeclaration":
             raise self.err(decl, "UNION is outside the portable subset")
+        elif cls == "SubrangeTypeDeclaration" and self.user and decl.init.indirection is None \
+                and decl.init.value is None:
+            # TYPE T_Capacity : DINT(1..100); END_TYPE: another name of its base type; the range is not checked, as
+            # TwinCAT checks it only with a CheckRange POU
+            self._declare_global(decl.name, "type")
+            self.dialect(decl, "a subrange type")
+            self.types[_name(decl.name).upper()] = self._resolve_type(decl.init.spec.type_name, allow_fb=False)
+            return
         elif cls == "SubrangeTypeDeclaration":
             raise self.err(decl, "subrange types are outside the portable subset")
         else:
             raise self.err(decl, f"{cls} is outside the portable subset")
         self.types[t.cname] = t
         self.program.items.append(("type", t, self.file))
+
+    def _struct_members(self, t, decl):
+        """The members of the STRUCT `t`, from its declaration."""
+        seen = {m.cname for m in t.members}  # a STRUCT EXTENDS: its base's members
+        for el in decl.declarations:
+            if _cls(el) != "StructureElementDeclaration":
+                raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
+            init = el.init
+            if self.user and _cls(init) == "ArrayTypeInitialization":
+                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
+            elif _cls(init) != "TypeInitialization":
+                raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
+            else:
+                mtype = self._spec_type(init.spec, allow_fb=False)
+            if mtype is t or (mtype.is_array and mtype.elem is t):
+                raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
+                                   "itself, never itself")
+            for dv in el.variables:
+                name = self._decl_var_name(dv, "member")
+                if name.upper() in seen:
+                    raise self.err(dv, f"member '{name}' is declared twice")
+                seen.add(name.upper())
+                v = T.Var(name, "member", mtype, init.value, dv)
+                if init.value is not None:
+                    self._init_code(v, "x")  # checks the initial value now
+                t.members.append(v)
 
     def _enum_number(self, node, base):
         """User mode: the number an enumeration value is given (a literal, negative too), checked against the
@@ -730,6 +819,7 @@ class Compiler:
                 else self._resolve_type(node.return_type, allow_fb=False)
         constant_block = None
         refused = []
+        self.constant_blocks = node.declarations
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
@@ -751,6 +841,7 @@ class Compiler:
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
                                       "return the struct alone or use a FUNCTION_BLOCK")
+        self.constant_blocks = None
         if refused:
             raise StErrors(refused)
         if kind == "fb":
@@ -838,6 +929,16 @@ class Compiler:
                     t.protos[up] = proto
             for up, prop in base.properties.items():
                 t.properties.setdefault(up, prop)
+        self.types[t.cname] = t  # a METHOD may take or return the INTERFACE itself (I_List.Clone : I_List)
+        try:
+            self._interface_members(t, node)
+        except (StError, StErrors):
+            del self.types[t.cname]
+            raise
+        self.program.items.append(("type", t, self.file))
+
+    def _interface_members(self, t, node):
+        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`."""
         for m in self.members.get(id(node), []):
             if _cls(m) == "Property":
                 self._interface_property(t, m)
@@ -855,8 +956,6 @@ class Compiler:
                 raise self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its bases')")
             t.methods.append(proto.name)
             t.protos[proto.cname] = proto
-        self.types[t.cname] = t
-        self.program.items.append(("type", t, self.file))
 
     def _interface_property(self, t, node):
         """User mode: a PROPERTY of an INTERFACE: `X` its type, `X.Get` and `X.Set` its accessors (TwinCAT's
@@ -997,6 +1096,7 @@ class Compiler:
             rt = node.return_type
             m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
                 self._resolve_type(rt, allow_fb=False)
+        self.constant_blocks = [] if is_action else node.declarations  # its own constants, then its FB's
         for block in ([] if is_action else node.declarations):
             if _cls(block) == "MethodInstanceVariableDeclarations":
                 self._instance_vars(owner, m, block, inherited)
@@ -1008,6 +1108,7 @@ class Compiler:
                         self._declare_var(m, "var", False, vtype, item.init.value, dv)
                 continue
             self._var_block(m, block)
+        self.constant_blocks = None
         owner.methods[prefix + name.upper()] = m
         return m
 
@@ -1275,7 +1376,7 @@ class Compiler:
             if inner not in _INT_LITERALS | {"Real"}:
                 raise self.err(node, "initial value must be a literal")
         elif cls not in _INT_LITERALS | _BIT_LITERALS | {"Real", "Boolean", "Duration", "String"} and \
-                not (cls == "Lduration" and self.user):
+                not (cls in ("Lduration", "Date", "DateTime", "TimeOfDay") and self.user):
             if cls == "SimpleVariable" and _name(node.name).upper() in self.enum_values:
                 self.bare_enum_value(self.enum_values[_name(node.name).upper()], _name(node.name), node)
             elif self.qualified_enum_value(node) is not None:
@@ -1373,10 +1474,69 @@ class Compiler:
             if var.init is not None:  # user mode: [1, 2, 3(0)] and (X := 1, Y := 2)
                 lines += self._aggregate_init(t, var.init, target)
             return lines
+        if var.init is not None and self.user and t.kind == "interface" and _cls(var.init) == "SimpleVariable":
+            return [f"{target} = {self._interface_init(var)};"]
+        if var.init is not None and self.user and t.is_pointer and not t.reference and _address_of(var.init):
+            return [f"{target} = {self._address_init(var)};"]
         if var.init is not None:
             te = self.literal_te(var.init, t)
             return [f"{target} = {ExprCompiler(self, None).coerce(te, t, var.init)};"]
         return [f"{target} = {self.default_c(t)};"]
+
+    def _address_init(self, var):
+        """User mode: `pList : POINTER TO T := ADR(List);`, the address of a variable of the same FUNCTION_BLOCK
+        or PROGRAM declared before it, or of a global list's."""
+        operand = _address_of(var.init)
+        owner = self.declaring or getattr(var, "fb_init_owner", None)
+        code = None
+        if _cls(operand) == "SimpleVariable":
+            src = owner.var(_name(operand.name)) if owner is not None and owner.kind == "fb" else None
+            if src is not None and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var)):
+                code = f"&(data__->{src.cname})" if src.type.is_fb else f"&(data__->{src.cname}.value)"
+            elif src is None:
+                g = user.lookup_global(self, operand.name)
+                if g is not None:
+                    code = f"&({g.csym})" if g.type.is_fb else f"&({g.csym}.value)"
+        if code is None:
+            raise self.err(var.init, f"the initial value of the POINTER '{var.name}': pacst takes ADR of a variable "
+                                     "of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a global list; "
+                                     f"{self._later_or_refused(operand)}assign it in code")
+        self.dialect(var.init, "ADR(variable) as a POINTER's initial value")
+        return f"(({var.type.cname})(void *){code})"
+
+    def _later_or_refused(self, node):
+        """What a refusal of an initial value naming the variable `node` adds when the POU being declared declares
+        it after, or its declaration was refused: that, and to declare it before."""
+        up = _name(node.name).upper() if _cls(node) == "SimpleVariable" else None
+        for block in self.constant_blocks or ():
+            for item in getattr(block, "items", ()):
+                if any(_name(getattr(getattr(v, "variable", v), "name", v)).upper() == up
+                       for v in getattr(item, "variables", ())):
+                    return (f"'{_name(node.name)}' is declared after it or its declaration was refused (above): "
+                            "declare it before, or ")
+        return ""
+
+    def _interface_init(self, var):
+        """User mode: `Logger : I_Logger := AdsLogger;`, a variable of an INTERFACE given an FB instance of its
+        FUNCTION_BLOCK or PROGRAM declared before it (TwinCAT initialises in the order of declaration) or of a
+        global list."""
+        owner = self.declaring or getattr(var, "fb_init_owner", None)
+        name = _name(var.init.name)
+        src = owner.var(name) if owner is not None and owner.kind == "fb" else None
+        te = None
+        before = src is not None and (var not in owner.vars or owner.vars.index(src) < owner.vars.index(var))
+        if before and src.type.is_fb:
+            te = TE(src.type, f"&(data__->{src.cname})")
+        elif src is None:
+            g = user.lookup_global(self, var.init.name)
+            if g is not None and g.type.is_fb:
+                te = TE(g.type, f"&({g.csym})")
+        if te is None:
+            raise self.err(var.init, f"the initial value '{name}' of the INTERFACE variable '{var.name}': pacst takes "
+                                     "an FB instance of the same FUNCTION_BLOCK or PROGRAM declared before it, or of a "
+                                     f"global list; {self._later_or_refused(var.init)}assign it in code")
+        self.dialect(var.init, "an FB instance as an INTERFACE variable's initial value")
+        return ExprCompiler(self, None).coerce(te, var.type, var.init)
 
     def _aggregate_init(self, t, node, target):
         """User mode: the C assignments of an array's or a struct's initial value, after its defaults."""
@@ -1386,6 +1546,16 @@ class Compiler:
             for el in _array_elements(node):
                 count = literals.int_value(el.count) if el.count is not None else 1
                 elements += [el.element] * count
+            if self.user and t.elem.is_array and not any(_cls(e) == "ArrayInitialization" for e in elements):
+                # ARRAY [1..2] OF ARRAY [1..3] OF INT := [1, 2, 3, 4, 5, 6]: TwinCAT fills the inner arrays in turn
+                leaves = list(_array_leaves(t, target))
+                if len(elements) > len(leaves):
+                    raise self.err(node, f"{len(elements)} initial values for the {len(leaves)} elements of {t.name}")
+                self.dialect(node, "the initial values of an array of arrays written flat")
+                out = []
+                for (elem, path), element in zip(leaves, elements):
+                    out += self._element_init(elem, element, path)
+                return out
             if len(elements) > t.high - t.low + 1:
                 raise self.err(node, f"{len(elements)} initial values for the {t.high - t.low + 1} elements of "
                                      f"{t.name}")

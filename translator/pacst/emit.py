@@ -69,7 +69,9 @@ class Emitter:
             out.append(f"typedef struct {{ {t.elem.cname} table[{t.high - t.low + 1}]; }} {t.cname};")
         elif t.is_struct:
             members = "\n".join(f"  {m.type.cname} {m.cname};" for m in t.members)
-            out.append(f"typedef struct {{\n{members}\n}} {t.cname};")
+            out.append(f"typedef struct {t.cname} {{\n{members}\n}} {t.cname};")  # tagged: a member may point at it
+        elif t.is_pointer and t.target.is_struct:  # user mode: the struct may be incomplete yet (ST_Node.pNext)
+            out.append(f"typedef struct {t.target.cname} *{t.cname};")
         elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
             out.append(f"typedef {t.target.cname} *{t.cname};")
         elif t.kind == "interface":  # user mode: an FB instance's address and the table of its METHODs

@@ -1,5 +1,7 @@
 """Types and translates expressions: literals, operators, conversions and calls of functions."""
 import dataclasses
+import datetime
+import decimal
 import re
 
 from . import literals, system
@@ -151,6 +153,8 @@ class ExprCompiler:
             return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
         hint = ""
         convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        if te.type.is_string and target.is_string and self.comp.user:
+            convertible = True
         if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
         else:
@@ -239,10 +243,15 @@ class ExprCompiler:
 
     def _e_String(self, node, want):
         text = str(node.value)
-        if not text.startswith("'"):
+        wide = text.startswith('"')
+        if wide and not self.comp.user:
             raise self.err(node, "double-quoted WSTRING literals are outside the portable subset")
+        if wide:
+            self.comp.dialect(node, "a WSTRING literal")
+        kind = "WSTRING" if wide else "STRING"
         body, out, i = text[1:-1], [], 0
-        escapes = {"$": "$", "'": "'", "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        escapes = {"$": "$", text[0]: text[0], "N": "\n", "L": "\n", "R": "\r", "T": "\t", "P": "\f"}
+        digits = 4 if wide else 2  # $0041 in a WSTRING, $41 in a STRING
         while i < len(body):
             c = body[i]
             if c == "$":
@@ -251,14 +260,18 @@ class ExprCompiler:
                     out.append(escapes[nxt])
                     i += 2
                     continue
-                if re.fullmatch(r"[0-9A-Fa-f]{2}", body[i + 1:i + 3]):
-                    out.append(chr(int(body[i + 1:i + 3], 16)))
-                    i += 3
+                if re.fullmatch(f"[0-9A-Fa-f]{{{digits}}}", body[i + 1:i + 1 + digits]):
+                    out.append(chr(int(body[i + 1:i + 1 + digits], 16)))
+                    i += 1 + digits
                     continue
-                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a STRING literal")
+                raise self.err(node, f"unknown escape '${body[i + 1:i + 2]}' in a {kind} literal")
             out.append(c)
             i += 1
         value = "".join(out)
+        if wide and any(ord(ch) > 0xFF for ch in value):
+            raise self.err(node, f"the character '{next(ch for ch in value if ord(ch) > 0xFF)}' in a WSTRING literal: "
+                                 "pacst's WSTRING holds the characters U+0000 to U+00FF (Latin-1) only; write the "
+                                 "text without it, or leave the POU out of the program tested")
         if self.comp.user and len(value) > user.STRING_CAPACITY:
             raise self.err(node, f"STRING literal of {len(value)} characters: a STRING holds at most "
                                  f"{user.STRING_CAPACITY}")
@@ -269,7 +282,42 @@ class ExprCompiler:
             raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
                                  "the default STRING length of CODESYS and TwinCAT")
         c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
-        return TE(T.STRING, f'__pacst_string("{c_text}", {len(value)})')
+        return TE(T.WSTRING if wide else T.STRING, f'__pacst_string("{c_text}", {len(value)})')
+
+    def _e_Date(self, node, want):
+        """User mode: D#2000-01-01, seconds since 1970-01-01 at its midnight, as TwinCAT keeps a DATE."""
+        return self._date_literal(node, T.DATE, node, None)
+
+    def _e_DateTime(self, node, want):
+        """User mode: DT#2000-01-01-12:30:15, seconds since 1970-01-01-00:00:00."""
+        return self._date_literal(node, T.DT, node.date, node.time)
+
+    def _e_TimeOfDay(self, node, want):
+        """User mode: TOD#12:30:15.250, milliseconds since midnight."""
+        return self._date_literal(node, T.TOD, None, node)
+
+    def _date_literal(self, node, t, day, clock):
+        if not self.comp.user:
+            raise self.err(node, f"{_cls(node)} literals are outside the portable subset")
+        self.comp.dialect(node, f"a {t.name} literal")
+        value = 0
+        if day is not None:
+            try:
+                value = (datetime.date(int(day.year), int(day.month), int(day.day or 1)) -
+                         datetime.date(1970, 1, 1)).days * 86400
+            except ValueError:
+                raise self.err(node, f"{node} is no date") from None
+        if clock is not None:
+            second = decimal.Decimal(str(clock.second or 0))
+            hour, minute = int(clock.hour), int(clock.minute)
+            if not (0 <= hour < 24 and 0 <= minute < 60 and 0 <= second < 60):
+                raise self.err(node, f"{node} is no time of day")
+            ms = (hour * 3600 + minute * 60) * 1000 + int(second * 1000)
+            value = value + ms // 1000 if day is not None else ms
+        if not 0 <= value <= 0xFFFFFFFF:
+            raise self.err(node, f"{node}: a {t.name} holds D#1970-01-01 to DT#2106-02-07-06:28:15, 32 bits as in "
+                                 "TwinCAT")
+        return TE(t, f"((UDINT){value}U)")
 
     def _e_Duration(self, node, want):
         line, col = pos(node)
@@ -366,6 +414,15 @@ class ExprCompiler:
 
     def _e_BinaryOperation(self, node, want):
         op = str(node.op).upper()
+        if op in ("AND_THEN", "OR_ELSE") and self.comp.user:  # the right operand only when it decides
+            self.comp.dialect(node.op, op)
+            sides = []
+            for side in (node.left, node.right):
+                te = self.expr(side, T.BOOL)
+                if not te.type.is_bool:
+                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}")
+                sides.append(te.code)
+            return TE(T.BOOL, f"({sides[0]} {'&&' if op == 'AND_THEN' else '||'} {sides[1]})")
         if op in ("AND_THEN", "OR_ELSE"):
             raise self.err(node.op, f"{op} is a CODESYS/TwinCAT extension outside the portable subset")
         if op == "&":
@@ -389,15 +446,23 @@ class ExprCompiler:
         if self.comp.user and op in ("*", "/") and (a.type.is_time or b.type.is_time) \
                 and not (a.type.is_time and b.type.is_time) and (op == "*" or a.type.is_time):
             return self._time_scale(node, op, a, b)
+        if self.comp.user and (a.type.is_date or b.type.is_date):
+            return self._date_arithmetic(node, op, a, b)
         # The operator's own rules come before the operands' types must agree (W + I is refused for the
         # WORD, T * N for the TIME), and are reported at the operator.
         for te in (a, b):
             if te.type.is_time and op not in ("+", "-"):
                 raise self.err(node.op, f"TIME {op}: TIME only adds and subtracts (MATIEC overflows otherwise)")
-            if te.type.is_bit:
+            if te.type.is_bit and self.comp.user:  # TwinCAT and CODESYS compute them as unsigned integers
+                self.comp.dialect(node.op, f"arithmetic on {te.type.name}")
+            elif te.type.is_bit:
                 raise self.err(node.op, f"arithmetic on {te.type.name}: bit strings have no arithmetic; convert "
                                         "to an integer type first")
         t, ca, cb = self.unify(a, b, want, node)
+        if t.is_bit and self.comp.user:  # unsigned, wrapping at the width (no C promotion to a signed int)
+            if op in ("/", "MOD"):
+                return TE(t, f"__{'div' if op == '/' else 'mod'}_{t.cname}({ca}, {cb})")
+            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32)
         if t.is_time:
             if op == "+":
                 return TE(t, f"__time_add({ca}, {cb})")
@@ -414,6 +479,22 @@ class ExprCompiler:
         if op == "MOD":
             return TE(t, f"__mod_{t.cname}({ca}, {cb})")
         return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32)
+
+    def _date_arithmetic(self, node, op, a, b):
+        """User mode: DT, TOD + or - a TIME (DT whole seconds of it), DT - DT, TOD - TOD and DATE - DATE a TIME,
+        as IEC 61131-3 and TwinCAT define them; 32 bits wrapping as TwinCAT's."""
+        t = a.type
+        if op == "-" and b.type is t:
+            scale = "" if t is T.TOD else " * 1000"
+            self.comp.dialect(node.op, f"{t.name} - {t.name}")
+            return TE(T.TIME, f"__time_from_ms(((int64_t)({a.code}) - (int64_t)({b.code})){scale})")
+        if op in ("+", "-") and t in (T.DT, T.TOD) and b.type is T.TIME:
+            self.comp.dialect(node.op, f"{t.name} {op} TIME")
+            amount = f"__time_to_ms({b.code})" if t is T.TOD else f"(__time_to_ms({b.code}) / 1000)"
+            return TE(t, f"((UDINT)((int64_t)({a.code}) {op} {amount}))")
+        raise self.err(node.op, f"{a.type.name} {op} {b.type.name}: of DATE, TIME_OF_DAY and DATE_AND_TIME, a DT or "
+                                "TOD adds and subtracts a TIME, and two of one type subtract to a TIME; convert to "
+                                "a number for anything else")
 
     def _time_scale(self, node, op, a, b):
         """User mode: TIME * number, number * TIME, TIME / number, rounded toward zero to the nanosecond."""
@@ -523,6 +604,8 @@ class ExprCompiler:
             raise self.err(node, "only plain function names can be called")
         name = _name(node.name.name)
         up = name.upper()
+        if self.comp.user and up not in self.comp.pous:  # TIME_OF_DAY_TO_DWORD, TO_DATE_AND_TIME
+            up = up.replace("TIME_OF_DAY", "TOD").replace("DATE_AND_TIME", "DT")
         m = re.fullmatch(r"([A-Z]+)_TO_([A-Z]+)", up)
         if m and not (self.comp.user and up in self.comp.pous):  # a user FUNCTION BIN_TO_BYTE is the user's
             return self._conversion(node, m.group(1), m.group(2))
@@ -723,6 +806,18 @@ class ExprCompiler:
             if src == dst:
                 (arg,) = self._positional(node, 1, ["IN"])
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
+        if self.comp.user and dst == "STRING" and src in ("TIME", "LTIME", *T.USER_DATES):
+            return self._time_to_string(node, src)
+        if self.comp.user and {src, dst} & set(T.USER_DATES):
+            return self._date_conversion(node, src, dst)
+        if self.comp.user and {src, dst} == {"STRING", "WSTRING"}:  # one character a byte in both here
+            self.comp.dialect(node, f"{src}_TO_{dst}")
+            (arg,) = self._positional(node, 1, ["IN"])
+            st, dt = (T.STRING, T.WSTRING) if src == "STRING" else (T.WSTRING, T.STRING)
+            return TE(dt, self.coerce(self.expr(arg, st), st, arg, "argument"))
+        if self.comp.user and "WSTRING" in (src, dst):
+            raise self.err(node, f"{src}_TO_{dst} is outside pacst's user programs: of the WSTRING conversions, "
+                                 "WSTRING_TO_STRING and STRING_TO_WSTRING are translated; convert through a STRING")
         if self.comp.user and "STRING" in (src, dst):
             return self._string_conversion(node, src, dst)
         if self.comp.user and ({"TIME", "LTIME"} & {src, dst} or {src, dst} & set(T.USER_ELEMENTARY)):
@@ -741,6 +836,55 @@ class ExprCompiler:
         st, dt = T.ELEMENTARY[src], T.ELEMENTARY[dst]
         te = self.expr(arg, st)
         return _converted(st, dt, self.coerce(te, st, arg, "argument"))
+
+    def _time_to_string(self, node, src):
+        """User mode: TIME_TO_STRING, LTIME_TO_STRING and the date types' _TO_STRING, the literal TwinCAT writes
+        ('T#1h30m', 'LTIME#1s2us', 'D#2002-08-18', 'TOD#14:01:05.123', 'DT#1998-02-13-14:20:00')."""
+        st = T.LTIME if src == "LTIME" else T.TIME if src == "TIME" else T.USER_DATES[src]
+        (arg,) = self._positional(node, 1, ["IN"])
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, f"{src}_TO_STRING")
+        if st.is_time:
+            return TE(T.STRING, f"__pacst_time_to_string({code}, {1 if st is T.LTIME else 0})")
+        return TE(T.STRING, f"__pacst_date_to_string({code}, {[T.DATE, T.TOD, T.DT].index(st)})")
+
+    def _date_conversion(self, node, src, dst):
+        """User mode: DATE, TIME_OF_DAY and DATE_AND_TIME as TwinCAT and CODESYS convert them: to and from
+        numbers their count (seconds, TOD milliseconds) cut to 32 bits; DT to DATE its midnight, DT to TOD its
+        time of day, DATE to DT the same second; TOD to and from TIME the milliseconds."""
+        numbers = dict(T.ELEMENTARY, **T.USER_ELEMENTARY)
+        types = dict(numbers, TIME=T.TIME, **T.USER_DATES)
+        name = f"{src}_TO_{dst}"
+        for tname in (src, dst):
+            if tname not in types or tname == "STRING":
+                raise self.err(node, f"{name} is outside pacst's user programs: DATE, TIME_OF_DAY and DATE_AND_TIME "
+                                     "are converted to and from numbers, TOD to and from TIME, DT to DATE and TOD, "
+                                     "DATE to DT, and to STRING")
+        st, dt = types[src], types[dst]
+        if st is dt:
+            raise self.err(node, f"{name} converts nothing")
+        (arg,) = self._positional(node, 1, ["IN"])
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, name)
+        if st.is_date and dt.is_date:
+            if (st, dt) == (T.DT, T.DATE):
+                return TE(dt, f"__pacst_dt_to_date({code})")
+            if (st, dt) == (T.DT, T.TOD):
+                return TE(dt, f"((UDINT)({code} % 86400U * 1000U))")
+            if (st, dt) == (T.DATE, T.DT):
+                return TE(dt, code)
+            raise self.err(node, f"{name} is outside pacst's user programs: TwinCAT has no such conversion")
+        if st.is_time or dt.is_time:
+            if T.TOD not in (st, dt):
+                raise self.err(node, f"{name} is outside pacst's user programs: of DATE, TOD and DT only TOD "
+                                     "converts to and from TIME (milliseconds)")
+            if st.is_time:
+                return TE(dt, f"((UDINT)__time_to_ms({code}))")
+            return TE(dt, f"__time_from_ms((int64_t)({code}))")
+        # a number: the count, cut to 32 bits (REAL rounded half to even)
+        if st.is_date:
+            return _converted(T.ELEMENTARY["UDINT"], dt, code)
+        return TE(dt, _converted(st, T.ELEMENTARY["UDINT"], code).code)
 
     def _user_conversion(self, node, src, dst):
         """User mode: TIME to and from a number of milliseconds (TIME_TO_DINT, UDINT_TO_TIME: CODESYS and TwinCAT

@@ -170,7 +170,8 @@ def tokenize(text, file, comments=None, user=False):
                 tokens.append(Token("literal", text[i:end], line, col, i))
                 advance(end)
                 continue
-            if "__" in word and (not user or word.startswith("__") and word.upper() not in _TWINCAT_TRANSLATED):
+            if "__" in word and (not user or word.startswith("__") and word.upper() not in _TWINCAT_TRANSLATED
+                                 and not word.startswith("__PTRTO_")):  # rewrite.py's __NEW(POINTER TO T, n)
                 if user and word.upper() in _TWINCAT_OPERATORS:
                     raise StError(file, line, col, f"TwinCAT's {word}: {_TWINCAT_OPERATORS[word.upper()]}")
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"

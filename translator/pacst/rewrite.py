@@ -11,11 +11,15 @@ its column, so that errors, `#line` directives and coverage still name the user'
 - `RETURN(Done);` (CODESYS's conditional RETURN): `IF    (Done) THEN RETURN; END_IF;`, `RETURN` written over
   by `IF` and blanks, the rest of the statement after the `)`; `RETURN(Init := T <= 0);` (an assignment as its
   condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`;
+- `__NEW(POINTER TO T, n)` (n pointers, a type blark's grammar does not read as an argument): `POINTER TO `
+  written over by `__PTRTO____`, one name with T's that system.new_assignment reads back;
 - `LTIME#1S2US44NS` (microseconds and nanoseconds after another unit): durations.py.
 """
 from . import durations, lexcheck
 from .errors import StError
 
+# the prefix of `__NEW(POINTER TO T, n)`'s type, rewritten (the name blark reads: __PTRTO____T)
+NEW_POINTER = "__PTRTO"
 _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
 
 
@@ -56,6 +60,13 @@ def user_text(text, path):
             if close is not None and any(t.text == ".." for t in tokens[k + 3:close]):
                 uses.append((nxt.line, nxt.col, "a subrange type"))
                 edits.append((tokens[k + 2].start, tokens[close].end, ""))
+        elif up == "__NEW" and nxt is not None and nxt.text == "(" and k + 4 < len(tokens) \
+                and tokens[k + 2].kind == "ident" and tokens[k + 2].upper == "POINTER" \
+                and tokens[k + 3].kind == "ident" and tokens[k + 3].upper == "TO" and tokens[k + 4].kind == "ident" \
+                and tokens[k + 4].line == tokens[k + 2].line:
+            span = tokens[k + 4].start - tokens[k + 2].start
+            uses.append((tokens[k + 2].line, tokens[k + 2].col, "__NEW(POINTER TO T, n)"))
+            edits.append((tokens[k + 2].start, tokens[k + 4].start, NEW_POINTER.ljust(span, "_")))
         elif up == "RETURN" and nxt is not None and nxt.text == "(":
             close = _closing(tokens, k + 1)
             if close is not None and close + 1 < len(tokens) and tokens[close + 1].text == ";":

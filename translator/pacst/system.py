@@ -12,6 +12,7 @@
 - `__DELETE(p)`: the FB's METHOD FB_exit first when p points to an FB that has one, then the memory freed and
   p set to 0; p = 0 does nothing; a pointer __NEW did not return stops the test with its ST line.
 """
+from . import rewrite
 from . import types as T
 from .common import _cls, _name, pos
 from .errors import StError
@@ -83,7 +84,9 @@ def same_struct(source, target):
 _CLASS_OF = {"BOOL": "TYPE_BOOL", "BYTE": "TYPE_BYTE", "WORD": "TYPE_WORD", "DWORD": "TYPE_DWORD", "LWORD": "TYPE_LWORD",
              "SINT": "TYPE_SINT", "INT": "TYPE_INT", "DINT": "TYPE_DINT", "LINT": "TYPE_LINT", "USINT": "TYPE_USINT",
              "UINT": "TYPE_UINT", "UDINT": "TYPE_UDINT", "ULINT": "TYPE_ULINT", "REAL": "TYPE_REAL",
-             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "TIME": "TYPE_TIME"}
+             "LREAL": "TYPE_LREAL", "STRING": "TYPE_STRING", "WSTRING": "TYPE_WSTRING", "TIME": "TYPE_TIME",
+             "LTIME": "TYPE_LTIME", "DATE": "TYPE_DATE", "DATE_AND_TIME": "TYPE_DATEANDTIME",
+             "TIME_OF_DAY": "TYPE_TIMEOFDAY"}
 
 
 def _class_of(t):
@@ -172,8 +175,13 @@ def new_assignment(body, target, node, ind):
     if not 1 <= len(args) <= 2 or any(a is None for a in args) or _cls(args[0]) != "SimpleVariable":
         raise comp.err(node, "__NEW takes a type and, for an elementary type, a number of elements: "
                              "__NEW(ST_Data), __NEW(BYTE, n)")
-    t = comp._resolve_type(args[0].name, allow_fb=True)
-    if len(args) == 2 and not t.is_elementary:
+    name = _name(args[0].name)
+    if name.upper().startswith(rewrite.NEW_POINTER):  # __NEW(POINTER TO T, n), rewritten before parsing
+        name = name[len(rewrite.NEW_POINTER):].lstrip("_")
+        t = comp.pointer_to(comp._resolve_type(args[0].name.update(value=name), allow_fb=True))
+    else:
+        t = comp._resolve_type(args[0].name, allow_fb=True)
+    if len(args) == 2 and not t.is_elementary and not t.is_pointer:
         raise comp.err(args[1], f"__NEW({t.name}, n): the number of elements is for an elementary type, as in "
                                 "TwinCAT; allocate an array type or one instance")
     if not target.type.is_pointer or target.type.reference:

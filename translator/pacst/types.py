@@ -14,14 +14,15 @@ class Type:
         return self.name
 
     # Classification used by the type rules.
-    is_bool = is_int = is_signed = is_bit = is_real = is_time = is_string = False
+    is_bool = is_int = is_signed = is_bit = is_real = is_time = is_string = is_date = False
     is_enum = is_array = is_struct = is_fb = False
     is_pointer = False  # user mode: POINTER TO and REFERENCE TO
     bits = 0
 
     @property
     def is_elementary(self):
-        return self.is_bool or self.is_int or self.is_bit or self.is_real or self.is_time or self.is_string
+        return self.is_bool or self.is_int or self.is_bit or self.is_real or self.is_time or self.is_string \
+            or self.is_date
 
     @property
     def is_numeric(self):
@@ -40,6 +41,7 @@ class Elementary(Type):
         self.is_real = group == "real"
         self.is_time = group == "time"
         self.is_string = group == "string"
+        self.is_date = group == "date"
         self.is_signed = signed
 
     def int_range(self):
@@ -74,12 +76,25 @@ USER_ELEMENTARY = {t.name: t for t in [Elementary("LINT", "int", 64, True), Elem
 # nanoseconds (two longs), so an LTIME is that C type too; a type of its own for ST's rules and conversions.
 LTIME = Elementary("LTIME", "time", 64)
 LTIME.cname = "TIME"
+# DATE, TIME_OF_DAY and DATE_AND_TIME of user programs, as TwinCAT and CODESYS keep them: 32 bits unsigned,
+# DATE and DATE_AND_TIME seconds since 1970-01-01-00:00:00, TIME_OF_DAY milliseconds since midnight; a UDINT in C.
+DATE = Elementary("DATE", "date", 32)
+TOD = Elementary("TIME_OF_DAY", "date", 32)
+DT = Elementary("DATE_AND_TIME", "date", 32)
+for _t in (DATE, TOD, DT):
+    _t.cname = "UDINT"
+USER_DATES = {"DATE": DATE, "TIME_OF_DAY": TOD, "TOD": TOD, "DATE_AND_TIME": DT, "DT": DT}
 BOOL = ELEMENTARY["BOOL"]
 INT = ELEMENTARY["INT"]
 DINT = ELEMENTARY["DINT"]
 LREAL = ELEMENTARY["LREAL"]
 TIME = ELEMENTARY["TIME"]
 STRING = ELEMENTARY["STRING"]
+# WSTRING of user programs: TwinCAT's and CODESYS's wide string. Its characters are kept one a byte in pacst's
+# STRING (a literal or a conversion with a character beyond U+00FF is refused), so a WSTRING is that C type; a
+# type of its own for ST's rules: no STRING where a WSTRING is expected, WSTRING_TO_STRING and back written.
+WSTRING = Elementary("WSTRING", "string", 0)
+WSTRING.cname = "STRING"
 # A STRING literal may not be longer than CODESYS's and TwinCAT's default STRING (80 characters).
 STRING_LITERAL_MAX = 80
 
@@ -201,7 +216,9 @@ class PointerType(Type):
         super().__init__(f"{'REFERENCE' if reference else 'POINTER'} TO {target.name}")
         self.target = target
         self.reference = reference
-        self.cname = f"__{'REF' if reference else 'PTR'}_{target.cname}"
+        # a type sharing its C type with another (LTIME, WSTRING, the dates) gets a pointer type of its own
+        own = target.name if target.kind == "elementary" and target.name != target.cname else target.cname
+        self.cname = f"__{'REF' if reference else 'PTR'}_{own}"
 
 
 class InterfaceType(Type):

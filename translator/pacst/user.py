@@ -109,6 +109,15 @@ def parse_location(comp, node, vtype):
     return Location(text, area, size, numbers)
 
 
+def string_type(comp, spec):
+    """STRING or WSTRING (user mode, recorded as dialect) for a StringTypeSpecification, else None."""
+    name = str(spec.type_name).upper()
+    if name == "WSTRING":
+        comp.dialect(spec, "WSTRING")
+        return T.WSTRING
+    return T.STRING if name == "STRING" else None
+
+
 def string_length(comp, spec):
     """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
     expr = spec.length.length
@@ -176,17 +185,16 @@ def var_type(comp, init, allow_fb):
     STRINGs besides what the library's subset declares."""
     cls = _cls(init)
     if cls == "ArrayTypeInitialization":
-        if init.indirection is not None:
-            raise comp.err(init, "pointers and references are outside pacst's user programs")
+        if init.indirection is not None:  # POINTER TO ARRAY [0..24] OF I_Logger
+            return comp.pointer_type(init, inline_array(comp, init.spec, comp.file), init.indirection), None
         return inline_array(comp, init.spec, comp.file), None
     if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2); Delay : TON := (PT := T#1S)
         return comp._resolve_type(init.name, allow_fb=allow_fb), None
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
-        if _cls(tok) == "StringTypeSpecification" and str(tok.type_name).upper() == "STRING" \
-                and tok.length is not None:
-            return T.STRING, string_length(comp, tok)
+        if _cls(tok) == "StringTypeSpecification" and string_type(comp, tok) is not None:
+            return string_type(comp, tok), string_length(comp, tok) if tok.length is not None else None
         if cls == "TypeInitialization":
             return comp._spec_type(spec, allow_fb=allow_fb), None
     if cls == "SubrangeTypeInitialization" and init.indirection is None and init.spec.subrange is not None:
@@ -206,10 +214,10 @@ def initial_value(init):
 def check_string_init(comp, var):
     """A sized STRING's literal initial value fits its length."""
     if var.strlen is not None and var.init is not None and _cls(var.init) == "String":
-        te = comp.literal_te(var.init, T.STRING)
+        te = comp.literal_te(var.init, var.type)
         length = int(te.code.rsplit(",", 1)[1].strip(" )"))
         if length > var.strlen:
-            raise comp.err(var.init, f"initial value of {length} characters for a STRING({var.strlen})")
+            raise comp.err(var.init, f"initial value of {length} characters for a {var.type.name}({var.strlen})")
 
 
 def global_list(comp, block, src):
@@ -333,7 +341,7 @@ def external(comp, pou, block):
         if _cls(spec) == "ArraySpecification":
             t = inline_array(comp, spec, comp.file)
         elif _cls(spec) == "SimpleSpecification" and _cls(spec.type) == "StringTypeSpecification":
-            t = T.STRING
+            t = string_type(comp, spec.type) or T.STRING
         else:
             t = comp._spec_type(spec, allow_fb=False)
         if t is not g.type:

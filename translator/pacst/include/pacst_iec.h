@@ -92,6 +92,18 @@ static inline STRING __pacst_string(const char *text, int len) {
     for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < len ? text[i] : 0);
     return s;
 }
+/* User mode: s[i], the byte at offset i of a STRING's characters, as TwinCAT and CODESYS read it (0 after the
+ * last character, their terminating NUL); written, the length is where the first NUL is then. */
+static inline BYTE __pacst_str_byte(STRING s, long i) {
+    return (BYTE)(i < (long)s.len ? s.body[i] : 0);
+}
+static inline STRING __pacst_str_setbyte(STRING s, long i, BYTE b) {
+    int n = 0;
+    s.body[i] = b;
+    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
+    s.len = (uint8_t)n;
+    return s;
+}
 static inline int __pacst_string_eq(STRING a, STRING b) {
     int i;
     if (a.len != b.len) return 0;
@@ -490,6 +502,54 @@ static inline uint64_t __time_to_ns(TIME t) {
 }
 static inline TIME __time_from_ns(uint64_t ns) {
     return __time_make((long)(ns / 1000000000u), (long)(ns % 1000000000u));
+}
+/* User mode: TIME_TO_STRING and LTIME_TO_STRING as TwinCAT writes them (T#1h30m5s, LTIME#1s2us44ns: the units
+ * that are not 0, T#0ms for 0), and the date types' literals (D#2002-08-18, DT#1998-02-13-14:20:00,
+ * TOD#14:01:05.123 with the milliseconds when there are any). */
+static inline STRING __pacst_text(const char *text) {
+    return __pacst_string(text, (int)strlen(text));
+}
+static inline STRING __pacst_time_to_string(TIME t, int nanoseconds) {
+    static const char *const units[] = {"d", "h", "m", "s", "ms", "us", "ns"};
+    const uint64_t per[] = {86400000000000ull, 3600000000000ull, 60000000000ull, 1000000000ull, 1000000ull,
+                            1000ull, 1ull};
+    char text[96];
+    int n = snprintf(text, sizeof text, "%s", nanoseconds ? "LTIME#" : "T#"), u, any = 0;
+    uint64_t ns = nanoseconds ? __time_to_ns(t) : (uint64_t)(uint32_t)__time_to_ms(t) * 1000000ull;
+    for (u = 0; u < (nanoseconds ? 7 : 5); u++) {
+        if (ns / per[u] == 0) continue;
+        n += snprintf(text + n, sizeof text - (size_t)n, "%llu%s", (unsigned long long)(ns / per[u]), units[u]);
+        ns %= per[u];
+        any = 1;
+    }
+    if (!any) snprintf(text + n, sizeof text - (size_t)n, "0%s", nanoseconds ? "ns" : "ms");
+    return __pacst_text(text);
+}
+static inline UDINT __pacst_dt_to_date(UDINT dt) {
+    return dt - dt % 86400u;
+}
+/* kind: 0 DATE, 1 TIME_OF_DAY, 2 DATE_AND_TIME; a DATE or DT counts seconds since 1970, a TOD milliseconds. */
+static inline STRING __pacst_date_to_string(uint32_t v, int kind) {
+    char text[48];
+    if (kind == 1) {
+        unsigned ms = v % 1000u, s = v / 1000u;
+        int n = snprintf(text, sizeof text, "TOD#%02u:%02u:%02u", s / 3600u, s / 60u % 60u, s % 60u);
+        if (ms != 0u) snprintf(text + n, sizeof text - (size_t)n, ".%03u", ms);
+    } else {
+        /* the Gregorian date of a day count since 1970-01-01, in eras of 400 years from 0000-03-01 */
+        long z = (long)(v / 86400u) + 719468L, era = z / 146097L, doe = z - era * 146097L;
+        long yoe = (doe - doe / 1460L + doe / 36524L - doe / 146096L) / 365L;
+        long doy = doe - (365L * yoe + yoe / 4L - yoe / 100L), mp = (5L * doy + 2L) / 153L;
+        long day = doy - (153L * mp + 2L) / 5L + 1L, month = mp < 10L ? mp + 3L : mp - 9L;
+        long year = yoe + era * 400L + (month <= 2L);
+        unsigned s = v % 86400u;
+        if (kind == 0)
+            snprintf(text, sizeof text, "D#%04ld-%02ld-%02ld", year, month, day);
+        else
+            snprintf(text, sizeof text, "DT#%04ld-%02ld-%02ld-%02u:%02u:%02u", year, month, day, s / 3600u,
+                     s / 60u % 60u, s % 60u);
+    }
+    return __pacst_text(text);
 }
 static inline TIME __time_scale(TIME t, double factor) {
     double ns = ((double)t.tv_sec * 1e9 + (double)t.tv_nsec) * factor;
