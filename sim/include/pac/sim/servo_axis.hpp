@@ -53,8 +53,17 @@ public:
     explicit ServoAxis(ServoAxisConfig config = {});
 
     // Brings the axis up to `now` (an earlier time is ignored: time never runs backwards). Every call below
-    // does this first with its own `now`.
-    void Update(std::chrono::nanoseconds now);
+    // does this first with its own `now`. Inline, the case of every cycle: no event due and nothing settling,
+    // so that only the time moves on (the controller brings each of its axes here several times per cycle).
+    void Update(std::chrono::nanoseconds now) {
+        if (now < now_ || (settled_ && settledAt_ == now)) return;
+        if (eventKnown_ && (!nextEvent_ || nextEvent_->time > now) && activity_ != Activity::kSettling) {
+            now_ = now;
+            Settled();
+            return;
+        }
+        RunUntil(now);
+    }
 
     // Jobs (a Start edge of the axis module, or a CMD move). 0 = taken over, else the refusal number
     // (axis_error); a refused job changes nothing. Checked in this order: 46 axis error pending, 55 not
@@ -114,7 +123,8 @@ public:
     double Velocity() const;            // actual, signed
     double ActualSpeed() const;         // |Velocity()|
     double FollowingError() const;      // commanded - actual
-    double FollowingErrorSize() const;  // |FollowingError()|, without evaluating the profile where it is 0
+    // |FollowingError()|, without evaluating the profile where it is 0 (inline: supervised every cycle).
+    double FollowingErrorSize() const { return !blocked_ && disturbance_ == 0.0 ? 0.0 : DisturbedFollowingError(); }
     MotionPhase Phase() const;
     bool Moving() const;                // the trajectory generator runs (ANPOS2 st_still = 0)
     bool JobActive() const { return activity_ != Activity::kNone; }  // moving, homing, or not yet in position
@@ -174,6 +184,15 @@ private:
     std::uint16_t SetPositionRefusal(double position) const;
     bool IntoActuatedLimitSwitch(Direction direction) const;
 
+    // Update() where an event may be due or the axis settles.
+    void RunUntil(std::chrono::nanoseconds now);
+    // Update() is done at now_: nothing changes the axis until the next call that changes it.
+    void Settled() {
+        settled_ = true;
+        settledAt_ = now_;
+        settledCommanded_.reset();
+    }
+    double DisturbedFollowingError() const;
     // Update(), for the calls that change the axis after it: every one of them comes through here.
     void Advance(std::chrono::nanoseconds now);
     void RunEventsUntil(std::chrono::nanoseconds until);
@@ -210,7 +229,8 @@ private:
     ServoAxisConfig config_;
     std::chrono::nanoseconds now_{0};
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
-    std::optional<std::chrono::nanoseconds> settledAt_;
+    bool settled_ = false;
+    std::chrono::nanoseconds settledAt_{0};
     mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
     // NextEvent() as last searched, while nothing has changed the axis since (eventKnown_): the times it
     // finds follow from the profile and the settings alone, so a later search would find the same event
