@@ -48,18 +48,16 @@ ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
 // ---- time and positions -------------------------------------------------------------------------------
 
 double ServoAxis::Seconds() const { return ToSeconds(now_ - trajectoryStart_); }
-double ServoAxis::CommandedMachine() const {
-    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
-    // cycle (position, limit switches, following error) evaluate it once.
-    if (!settled_ || settledAt_ != now_) return trajectory_.PositionAt(Seconds());
-    if (!settledCommanded_) settledCommanded_ = trajectory_.PositionAt(Seconds());
-    return *settledCommanded_;
+double ServoAxis::EvaluateCommanded() const {
+    const double commanded = trajectory_.PositionAt(Seconds());
+    if (settled_ && settledAt_ == now_) {
+        settledCommanded_ = commanded;
+        settledCommandedKnown_ = true;
+    }
+    return commanded;
 }
-double ServoAxis::ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
 double ServoAxis::CommandedVelocity() const { return trajectory_.VelocityAt(Seconds()); }
 
-double ServoAxis::Position() const { return ActualMachine() + offset_; }
-double ServoAxis::CommandedPosition() const { return CommandedMachine() + offset_; }
 double ServoAxis::Target() const { return std::isnan(target_) ? CommandedPosition() : target_ + offset_; }
 double ServoAxis::Velocity() const { return blocked_ ? 0.0 : CommandedVelocity(); }
 double ServoAxis::ActualSpeed() const { return std::fabs(Velocity()); }
@@ -68,23 +66,13 @@ double ServoAxis::FollowingError() const { return CommandedMachine() - ActualMac
 // c - (c + 0) is 0 exactly.
 double ServoAxis::DisturbedFollowingError() const { return std::fabs(FollowingError()); }
 MotionPhase ServoAxis::Phase() const { return trajectory_.PhaseAt(Seconds()); }
-bool ServoAxis::Moving() const { return trajectory_.Moves(); }
 
 bool ServoAxis::InTolerance() const { return windowSince_ && *windowSince_ + config_.toleranceDelay <= now_; }
-bool ServoAxis::Interrupted() const { return interrupted_ && !Moving(); }
 
 AxisStatus ServoAxis::Status() const {
     if (axisError_ != 0) return AxisStatus::kMalfunction;
     if (JobActive() || Moving()) return AxisStatus::kMoving;
     return interrupted_ ? AxisStatus::kStopped : AxisStatus::kInPosition;
-}
-
-bool ServoAxis::NegativeLimitSwitch() const {
-    return config_.negativeLimitSwitch && ActualMachine() <= *config_.negativeLimitSwitch;
-}
-
-bool ServoAxis::PositiveLimitSwitch() const {
-    return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
 }
 
 bool ServoAxis::ReferenceSwitch() const { return OnCam(ActualMachine()); }

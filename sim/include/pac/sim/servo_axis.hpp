@@ -117,8 +117,9 @@ public:
 
     // Queries, as of the last Update().
     std::chrono::nanoseconds Now() const { return now_; }
-    double Position() const;            // actual position, axis coordinates
-    double CommandedPosition() const;   // ANPOS2 posvirt
+    // Inline, as the other queries the axis module's reply makes of every axis in every cycle.
+    double Position() const { return ActualMachine() + offset_; }  // actual position, axis coordinates
+    double CommandedPosition() const { return CommandedMachine() + offset_; }  // ANPOS2 posvirt
     double Target() const;              // the job's target (after a stop: where it stopped)
     double Velocity() const;            // actual, signed
     double ActualSpeed() const;         // |Velocity()|
@@ -126,10 +127,11 @@ public:
     // |FollowingError()|, without evaluating the profile where it is 0 (inline: supervised every cycle).
     double FollowingErrorSize() const { return !blocked_ && disturbance_ == 0.0 ? 0.0 : DisturbedFollowingError(); }
     MotionPhase Phase() const;
-    bool Moving() const;                // the trajectory generator runs (ANPOS2 st_still = 0)
+    bool Moving() const { return trajectory_.Moves(); }  // the trajectory generator runs (ANPOS2 st_still = 0)
     bool JobActive() const { return activity_ != Activity::kNone; }  // moving, homing, or not yet in position
     bool InTolerance() const;           // ANPOS2 st_toll
-    bool Interrupted() const;           // the last job was interrupted and the axis stands (status HALT)
+    // The last job was interrupted and the axis stands (status HALT).
+    bool Interrupted() const { return interrupted_ && !Moving(); }
     bool HomingActive() const { return activity_ == Activity::kHoming; }
     bool HomingArmed() const { return captureArmed_; }  // mode 2 waits for the switch
     double LastHomingCorrection() const { return homingCorrection_; }  // ANPOS2 deltaprspos
@@ -142,8 +144,12 @@ public:
     bool DriveDisabled() const { return driveDisabled_; }
     bool DisplacedDuringOff() const { return displaced_; }
     // Actuated = true (the axis module reports them low-active, 2.7.4.9 / 2.7.4.10).
-    bool NegativeLimitSwitch() const;
-    bool PositiveLimitSwitch() const;
+    bool NegativeLimitSwitch() const {
+        return config_.negativeLimitSwitch && ActualMachine() <= *config_.negativeLimitSwitch;
+    }
+    bool PositiveLimitSwitch() const {
+        return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
+    }
     bool ReferenceSwitch() const;
     double MinRange() const { return config_.minTraverseRange + shift_; }  // with the G29 shift
     double MaxRange() const { return config_.maxTraverseRange + shift_; }
@@ -174,8 +180,14 @@ private:
 
     // Machine coordinates: commanded and actual position, and the time base of the running profile.
     double Seconds() const;
-    double CommandedMachine() const;
-    double ActualMachine() const;
+    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
+    // cycle (position, limit switches, following error) evaluate it once.
+    double CommandedMachine() const {
+        if (settledCommandedKnown_ && settled_ && settledAt_ == now_) return settledCommanded_;
+        return EvaluateCommanded();
+    }
+    double EvaluateCommanded() const;
+    double ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
     double CommandedVelocity() const;
 
     std::uint16_t MotionRefusal() const;
@@ -190,7 +202,7 @@ private:
     void Settled() {
         settled_ = true;
         settledAt_ = now_;
-        settledCommanded_.reset();
+        settledCommandedKnown_ = false;
     }
     double DisturbedFollowingError() const;
     // Update(), for the calls that change the axis after it: every one of them comes through here.
@@ -231,7 +243,8 @@ private:
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
     bool settled_ = false;
     std::chrono::nanoseconds settledAt_{0};
-    mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
+    mutable bool settledCommandedKnown_ = false;  // settledCommanded_ is CommandedMachine() at settledAt_
+    mutable double settledCommanded_ = 0.0;
     // NextEvent() as last searched, while nothing has changed the axis since (eventKnown_): the times it
     // finds follow from the profile and the settings alone, so a later search would find the same event
     // (RunEventsUntil). Every change comes through Advance() or Handle(), which forget it.
