@@ -137,6 +137,14 @@ void AxisGroup::UpdateAll(std::chrono::nanoseconds now) {
     for (auto& a : axes_) a.motion.Update(now);
 }
 
+bool AxisGroup::AnyDisplacedDuringOff(int count) const {
+    const auto n = static_cast<std::size_t>(count <= 0 ? 0 : (count < Capacity() ? count : Capacity()));
+    for (std::size_t k = 0; k < n; ++k) {
+        if (axes_[k].motion.DisplacedDuringOff()) return true;
+    }
+    return false;
+}
+
 void AxisGroup::StopAll(std::chrono::nanoseconds now) {
     for (auto& a : axes_) a.motion.Interrupt(now);
 }

@@ -56,11 +56,15 @@ AxisModuleReply AxisModuleReply::Decode(const Image12& module) {
 
 Image12 AxisModuleReply::Encode() const {
     Image12 module{};
+    EncodeInto(module);
+    return module;
+}
+
+void AxisModuleReply::EncodeInto(Image12& module) const {
     WriteDword(module, 0, status);
     WriteWordAt(module, 4, cmdError);
     WriteWordAt(module, 6, axisError);
     WriteDword(module, 8, position);
-    return module;
 }
 
 std::uint32_t EncodeModulePosition(double position, bool integerFormat) {
@@ -279,6 +283,13 @@ bool AxisModule::ConditionHolds(const AxisModuleContext& context) const {
 }
 
 Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& context) const {
+    Image12 module{};
+    ReplyInto(axis, context, module);
+    return module;
+}
+
+// Into the caller's bytes: the controller's reply of every cycle builds no copy of its own.
+void AxisModule::ReplyInto(const ServoAxis& axis, const AxisModuleContext& context, Image12& module) const {
     using namespace axis_status;
     const DriveState drive = axis.Drive();
     std::uint32_t status = 0;
@@ -303,7 +314,7 @@ Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& contex
     reply.cmdError = cmdError_;
     reply.axisError = axis.AxisError();
     reply.position = EncodeModulePosition(axis.Position(), context.integerFormat);
-    return reply.Encode();
+    reply.EncodeInto(module);
 }
 
 }  // namespace pac::sim

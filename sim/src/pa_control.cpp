@@ -143,9 +143,7 @@ AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
     context.integerFormat = state_.integerFormat;
     context.inputs = &state_.elements.inputs;
     // 2.7.4.13: the group is every axis with a module.
-    for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        if (state_.axes.Motion(axis).DisplacedDuringOff()) context.groupDisplaced = true;
-    }
+    context.groupDisplaced = state_.axes.AnyDisplacedDuringOff(state_.axisModules);
     return context;
 }
 
@@ -286,10 +284,15 @@ void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) 
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
     const AxisModuleContext context = ModuleContext(now);
+    Image12 module;
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
         const auto k = static_cast<std::size_t>(axis - 1);
-        reply.SetModule12(layout_.AxisOffset(axis),
-                          automatic ? automaticReplies_[k] : modules_[k].Reply(state_.axes.Motion(axis), context));
+        if (automatic) {
+            module = automaticReplies_[k];
+        } else {
+            modules_[k].ReplyInto(state_.axes.Motion(axis), context, module);
+        }
+        reply.SetModule12(layout_.AxisOffset(axis), module);
     }
 }
 

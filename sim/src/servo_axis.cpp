@@ -36,8 +36,6 @@ nanoseconds After(nanoseconds base, double seconds) {
 
 }  // namespace
 
-bool IsPowered(DriveState state) { return state == DriveState::kEnabled || state == DriveState::kHalt; }
-
 ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
     config_.Validate();
     referenced_ = config_.referenced;

@@ -64,6 +64,8 @@ public:
     void Restart(std::chrono::nanoseconds now, bool referenced);
 
     void UpdateAll(std::chrono::nanoseconds now);
+    // Whether one of axes 1..count is "displaced during OFF" (the axis modules' group, 2.7.4.13).
+    bool AnyDisplacedDuringOff(int count) const;
     void StopAll(std::chrono::nanoseconds now);  // interrupt: braking with each job's deceleration
     void HaltAll(std::chrono::nanoseconds now);  // emergency stop: at once, without a ramp
     bool AnyMoving() const;

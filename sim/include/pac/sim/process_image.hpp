@@ -75,7 +75,11 @@ public:
     friend bool operator!=(const ProcessImage& a, const ProcessImage& b) { return !(a == b); }
 
 private:
-    static std::size_t CheckedSize(std::size_t bytes);
+    static std::size_t CheckedSize(std::size_t bytes) {
+        if (bytes > kMaxBytes) ThrowSize(bytes);
+        return bytes;
+    }
+    [[noreturn]] static void ThrowSize(std::size_t bytes);
     [[noreturn]] static void ThrowIndex(std::size_t i, std::size_t size);
     [[noreturn]] static void ThrowFit(std::size_t offset, std::size_t length, std::size_t size, const char* what);
     static std::ptrdiff_t Offset(std::size_t i) { return static_cast<std::ptrdiff_t>(i); }

@@ -39,7 +39,7 @@ enum class DriveState {
     kSafe,      // Axis OFF, enable mode SAFE: no current, safety function on
     kDisabled,  // DISABLE DRIVE (G140): no current, whatever Axis ON says
 };
-bool IsPowered(DriveState state);  // kEnabled, kHalt
+inline bool IsPowered(DriveState state) { return state == DriveState::kEnabled || state == DriveState::kHalt; }
 
 // Per job (axis module control word bit 17, G142): limit switch monitoring. G25 always monitors.
 struct JobOptions {
