@@ -106,11 +106,16 @@ void AxisModule::Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleCo
         cmdError_ = pendingCmdError_;
         pendingCmdError_ = 0;
     }
-    FollowMode(axis, context);
-    if (context.service != AxisModuleService::kReportOnly) ApplyDrive(control, axis, context);
-    FollowJob(control, axis, context);
-    FollowDynamics(command, axis, context);
-    ContinueInterruptedTraverse(axis, context);
+    // Each step is called only where its first test lets it act: in most cycles of most modules none does.
+    if ((context.service != AxisModuleService::kReportOnly) != served_) FollowMode(axis, context);
+    if (context.service != AxisModuleService::kReportOnly &&
+        (((control & kDisableDrive) != 0) != axis.DriveDisabled() || ((control & kAxisOn) != 0) != axis.AxisOn() ||
+         Rising(control, lastControl_, kResetAxisError))) {
+        ApplyDrive(control, axis, context);
+    }
+    if (job_ != 0 && !jobComplete_) FollowJob(control, axis, context);
+    if (config_.speedChange == SpeedChange::kWhileTraversing) FollowDynamics(command, axis, context);
+    if (toContinue_) ContinueInterruptedTraverse(axis, context);
     // 2.7.4.8: ACTIVE falls at the earliest when the job is complete and Start is 0 again.
     if (active_ && jobComplete_ && (control & kStart) == 0) active_ = false;
     // 2.7.3.2: a job is recognised on the Start edge while none is processed; an edge during a job is lost.

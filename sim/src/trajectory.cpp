@@ -157,11 +157,11 @@ double Trajectory::SegmentAcceleration(const Segment& s, double tau) const {
 }
 
 const Trajectory::Segment* Trajectory::SegmentAt(double t) const {
-    const Segment* found = nullptr;
-    for (std::size_t i = 0; i < segmentCount_; ++i) {
-        if (segments_[i].startTime <= t) found = &segments_[i];
+    // The last one that has started: the start times grow from segment to segment.
+    for (std::size_t i = segmentCount_; i > 0; --i) {
+        if (segments_[i - 1].startTime <= t) return &segments_[i - 1];
     }
-    return found;
+    return nullptr;
 }
 
 double Trajectory::PositionAt(double t) const {
