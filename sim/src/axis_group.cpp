@@ -29,6 +29,7 @@ AxisGroup::AxisGroup(int capacity, const std::vector<ParameterSpec>& axisParamet
             config = machine;  // default parameters that do not fit together: the machine's own values
         }
         axes_.push_back(Axis{ServoAxis(config), std::move(parameters), machine, config.FullDynamics()});
+        ++capacity_;
     }
 }
 
