@@ -204,29 +204,6 @@ double ScansPerCpuSecond(std::vector<std::unique_ptr<Plant>>& plants, int scans)
     return best;
 }
 
-// `count` plants brought to ONLINE scan for scan, as in one runtime, and every axis under way.
-std::vector<std::unique_ptr<Plant>> Plants(int count, milliseconds pacCycle) {
-    std::vector<std::unique_ptr<Plant>> plants;
-    PlantOptions options;
-    options.pacCycle = pacCycle;
-    for (int i = 0; i < count; ++i) plants.push_back(std::make_unique<Plant>(options));
-    for (int scan = 0; scan < 1000; ++scan) {
-        bool all = true;
-        for (auto& plant : plants) {
-            plant->Scan();
-            all = all && plant->Online();
-        }
-        if (all) break;
-    }
-    for (auto& plant : plants) {
-        if (!plant->Online()) throw std::runtime_error("a plant did not reach ONLINE");
-    }
-    for (int scan = 0; scan < 200; ++scan) {
-        for (auto& plant : plants) plant->Scan();
-    }
-    return plants;
-}
-
 void PrintThroughput(const std::string& self) {
     std::printf("### Simulation throughput\n\nOne PA-CONTROL with CMD, CTRL and 8 axis modules; FB_PAC_Cmd "
                 "writes and reads a register without pause, every axis moves back and forth (bench/plant.hpp); "
@@ -251,7 +228,7 @@ void PrintThroughput(const std::string& self) {
                       Number(100 * simulator->instructionsPerScan / total->instructionsPerScan) + " %)";
             }
         }
-        auto plants = Plants(1, milliseconds(pacMs));
+        auto plants = OnlinePlants(1, milliseconds(pacMs));
         const double rate = ScansPerCpuSecond(plants, kPlantScansPerRun);
         std::printf("| %d ms | %s | %s | %s | %s | %s |\n", pacMs, all.c_str(), fbs.c_str(), sim.c_str(),
                     Number(rate).c_str(), Met(rate >= kThroughputGoal).c_str());
@@ -268,7 +245,7 @@ void PrintScale() {
                 Number(kRealTimeGoal).c_str());
     double single = 0;
     for (int count : {1, 2, 4, 8, 16, 32}) {
-        auto plants = Plants(count, milliseconds(10));
+        auto plants = OnlinePlants(count, milliseconds(10));
         const double cycles = ScansPerCpuSecond(plants, kPlantScansPerRun / count);
         const double perController = 1e6 / (cycles * count);  // microseconds
         if (count == 1) single = perController;

@@ -123,4 +123,26 @@ void Plant::NextMove(int k) {
     }
 }
 
+std::vector<std::unique_ptr<Plant>> OnlinePlants(int count, std::chrono::nanoseconds pacCycle) {
+    std::vector<std::unique_ptr<Plant>> plants;
+    PlantOptions options;
+    options.pacCycle = pacCycle;
+    for (int i = 0; i < count; ++i) plants.push_back(std::make_unique<Plant>(options));
+    for (int scan = 0; scan < 1000; ++scan) {
+        bool all = true;
+        for (auto& plant : plants) {
+            plant->Scan();
+            all = all && plant->Online();
+        }
+        if (all) break;
+    }
+    for (auto& plant : plants) {
+        if (!plant->Online()) throw std::runtime_error("a plant did not reach ONLINE");
+    }
+    for (int scan = 0; scan < 200; ++scan) {
+        for (auto& plant : plants) plant->Scan();
+    }
+    return plants;
+}
+
 }  // namespace pac::bench

@@ -71,4 +71,8 @@ private:
     long movesDone_ = 0;
 };
 
+// `count` plants with a controller cycle of `pacCycle` brought to ONLINE scan for scan, as in one runtime,
+// then 200 scans more so that every axis is under way. std::runtime_error if one does not reach ONLINE.
+std::vector<std::unique_ptr<Plant>> OnlinePlants(int count, std::chrono::nanoseconds pacCycle);
+
 }  // namespace pac::bench

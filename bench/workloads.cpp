@@ -1,6 +1,7 @@
 #include "workloads.hpp"
 
 #include <chrono>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -194,6 +195,23 @@ WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
     return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone() + plant.CommandsDone(); });
 }
 
+// `count` plants at a controller cycle of 10 ms scanned one after the other in each PLC cycle, as the scale
+// rows run them: `cycles` PLC cycles measured, each plant's scan one scan of the result (the cost per
+// controller and scan).
+WorkloadResult PlantsWorkload(int count, int cycles) {
+    auto plants = OnlinePlants(count, milliseconds(10));
+    const auto jobs = [&plants] {
+        long done = 0;
+        for (const auto& plant : plants) done += plant->MovesDone() + plant->CommandsDone();
+        return done;
+    };
+    WorkloadResult result = Measure([&] {
+        for (auto& plant : plants) plant->Scan();
+    }, cycles, jobs);
+    result.scans *= count;
+    return result;
+}
+
 // The jobs of the side-by-side check: write and read back N register 1, and a code with the SEND flag set,
 // which both refuse without sending.
 void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
@@ -263,6 +281,11 @@ WorkloadResult RunWorkload(const std::string& name, int scans) {
         {"plant-pac1", [](int n) { return PlantWorkload(milliseconds(1), n); }},
         {"plant-pac10", [](int n) { return PlantWorkload(milliseconds(10), n); }},
     };
+    const std::string plants = "plants-";
+    if (name.rfind(plants, 0) == 0) {
+        const int count = std::atoi(name.c_str() + plants.size());
+        if (count >= 1) return PlantsWorkload(count, scans);
+    }
     auto it = workloads.find(name);
     if (it == workloads.end()) throw std::invalid_argument("no workload '" + name + "'");
     return it->second(scans);

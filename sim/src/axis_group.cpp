@@ -29,6 +29,7 @@ AxisGroup::AxisGroup(int capacity, const std::vector<ParameterSpec>& axisParamet
             config = machine;  // default parameters that do not fit together: the machine's own values
         }
         axes_.push_back(Axis{ServoAxis(config), std::move(parameters), machine, config.FullDynamics()});
+        ++capacity_;
     }
 }
 
@@ -135,6 +136,14 @@ void AxisGroup::Restart(std::chrono::nanoseconds now, bool referenced) {
 
 void AxisGroup::UpdateAll(std::chrono::nanoseconds now) {
     for (auto& a : axes_) a.motion.Update(now);
+}
+
+bool AxisGroup::AnyDisplacedDuringOff(int count) const {
+    const auto n = static_cast<std::size_t>(count <= 0 ? 0 : (count < Capacity() ? count : Capacity()));
+    for (std::size_t k = 0; k < n; ++k) {
+        if (axes_[k].motion.DisplacedDuringOff()) return true;
+    }
+    return false;
 }
 
 void AxisGroup::StopAll(std::chrono::nanoseconds now) {

@@ -56,11 +56,15 @@ AxisModuleReply AxisModuleReply::Decode(const Image12& module) {
 
 Image12 AxisModuleReply::Encode() const {
     Image12 module{};
+    EncodeInto(module);
+    return module;
+}
+
+void AxisModuleReply::EncodeInto(Image12& module) const {
     WriteDword(module, 0, status);
     WriteWordAt(module, 4, cmdError);
     WriteWordAt(module, 6, axisError);
     WriteDword(module, 8, position);
-    return module;
 }
 
 std::uint32_t EncodeModulePosition(double position, bool integerFormat) {
@@ -102,11 +106,16 @@ void AxisModule::Serve(const Image12& toPac, ServoAxis& axis, const AxisModuleCo
         cmdError_ = pendingCmdError_;
         pendingCmdError_ = 0;
     }
-    FollowMode(axis, context);
-    if (context.service != AxisModuleService::kReportOnly) ApplyDrive(control, axis, context);
-    FollowJob(control, axis, context);
-    FollowDynamics(command, axis, context);
-    ContinueInterruptedTraverse(axis, context);
+    // Each step is called only where its first test lets it act: in most cycles of most modules none does.
+    if ((context.service != AxisModuleService::kReportOnly) != served_) FollowMode(axis, context);
+    if (context.service != AxisModuleService::kReportOnly &&
+        (((control & kDisableDrive) != 0) != axis.DriveDisabled() || ((control & kAxisOn) != 0) != axis.AxisOn() ||
+         Rising(control, lastControl_, kResetAxisError))) {
+        ApplyDrive(control, axis, context);
+    }
+    if (job_ != 0 && !jobComplete_) FollowJob(control, axis, context);
+    if (config_.speedChange == SpeedChange::kWhileTraversing) FollowDynamics(command, axis, context);
+    if (toContinue_) ContinueInterruptedTraverse(axis, context);
     // 2.7.4.8: ACTIVE falls at the earliest when the job is complete and Start is 0 again.
     if (active_ && jobComplete_ && (control & kStart) == 0) active_ = false;
     // 2.7.3.2: a job is recognised on the Start edge while none is processed; an edge during a job is lost.
@@ -279,6 +288,13 @@ bool AxisModule::ConditionHolds(const AxisModuleContext& context) const {
 }
 
 Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& context) const {
+    Image12 module{};
+    ReplyInto(axis, context, module);
+    return module;
+}
+
+// Into the caller's bytes: the controller's reply of every cycle builds no copy of its own.
+void AxisModule::ReplyInto(const ServoAxis& axis, const AxisModuleContext& context, Image12& module) const {
     using namespace axis_status;
     const DriveState drive = axis.Drive();
     std::uint32_t status = 0;
@@ -303,7 +319,7 @@ Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& contex
     reply.cmdError = cmdError_;
     reply.axisError = axis.AxisError();
     reply.position = EncodeModulePosition(axis.Position(), context.integerFormat);
-    return reply.Encode();
+    reply.EncodeInto(module);
 }
 
 }  // namespace pac::sim

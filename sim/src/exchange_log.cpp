@@ -9,12 +9,6 @@
 
 namespace pac::sim {
 
-void ExchangeLog::Add(const ExchangeRecord& record) {
-    if (capacity_ == 0) return;
-    if (records_.size() == capacity_) records_.pop_front();
-    records_.push_back(record);
-}
-
 std::string ExchangeLog::Format(bool changesOnly) const {
     std::ostringstream out;
     const ExchangeRecord* previous = nullptr;

@@ -39,8 +39,7 @@ Link::Link(LinkConfig config, std::size_t imageBytes)
       rng_(config.seed),
       tearRng_(config.seed ^ kTearSeedSalt),
       imageBytes_(imageBytes),
-      delivered_(imageBytes),
-      beforeDelivered_(imageBytes),
+      delivered_{ProcessImage(imageBytes), ProcessImage(imageBytes)},
       frozen_(imageBytes) {
     CheckDelay(config_.latency, "latency");
     CheckDelay(config_.jitter, "jitter");
@@ -66,7 +65,9 @@ void Link::Write(std::chrono::nanoseconds now, const ProcessImage& image) {
         static_cast<std::int64_t>(rng_.UniformUpTo(static_cast<std::uint64_t>(config_.jitter.count()))));
     const auto arrival = std::max(now + config_.latency + extra, lastArrival_);
     lastArrival_ = arrival;
-    inFlight_.push_back(InFlight{arrival, image});
+    InFlight& slot = inFlight_.push_back();
+    slot.arrival = arrival;
+    slot.image = image;
 }
 
 ProcessImage Link::Read(std::chrono::nanoseconds now) {
@@ -86,11 +87,11 @@ void Link::SetFault(std::chrono::nanoseconds now, LinkFault fault) {
     Deliver(now);
     if (fault == LinkFault::kFrozen && fault_ != LinkFault::kFrozen) {
         // What the reader would see now (zeros if the link was down or zeroed until this moment).
-        frozen_ = fault_ == LinkFault::kNone ? delivered_ : ProcessImage(imageBytes_);
+        frozen_ = fault_ == LinkFault::kNone ? Delivered() : ProcessImage(imageBytes_);
     }
     if (fault == LinkFault::kDisconnected && fault_ != LinkFault::kDisconnected) {
         inFlight_.clear();
-        delivered_ = ProcessImage(imageBytes_);
+        Delivered() = ProcessImage(imageBytes_);
     }
     fault_ = fault;
 }
@@ -112,8 +113,8 @@ void Link::SetTearPercent(int percent) {
 
 void Link::Deliver(std::chrono::nanoseconds now) {
     while (!inFlight_.empty() && inFlight_.front().arrival <= now) {
-        beforeDelivered_ = delivered_;
-        delivered_ = inFlight_.front().image;
+        newest_ = 1 - newest_;  // the newest so far becomes the one before
+        Delivered() = inFlight_.front().image;
         unread_ = true;
         inFlight_.pop_front();
     }
@@ -122,13 +123,14 @@ void Link::Deliver(std::chrono::nanoseconds now) {
 ProcessImage Link::ReadDelivered() {
     const bool fresh = unread_;
     unread_ = false;
-    if (!fresh || config_.tearPercent == 0 || delivered_ == beforeDelivered_) return delivered_;
-    if (tearRng_.UniformUpTo(99) >= static_cast<std::uint64_t>(config_.tearPercent)) return delivered_;
-    ProcessImage torn = delivered_;
+    const ProcessImage& delivered = Delivered();
+    if (!fresh || config_.tearPercent == 0 || delivered == BeforeDelivered()) return delivered;
+    if (tearRng_.UniformUpTo(99) >= static_cast<std::uint64_t>(config_.tearPercent)) return delivered;
+    ProcessImage torn = delivered;
     for (std::size_t i = 0; i < imageBytes_; ++i) {
-        if ((tearRng_.Next() & 1U) != 0) torn[i] = beforeDelivered_[i];
+        if ((tearRng_.Next() & 1U) != 0) torn[i] = BeforeDelivered()[i];
     }
-    if (torn != delivered_) ++tornReads_;
+    if (torn != delivered) ++tornReads_;
     return torn;
 }
 

@@ -79,18 +79,15 @@ std::chrono::nanoseconds PaControl::CycleTime() const {
 
 void PaControl::Cycle(std::chrono::nanoseconds now) {
     CheckTime(now, "Cycle");
-    const ProcessImage toPac = bus_.ReadToPac(now);
-    lastToPac_ = toPac;
-    ExchangeRecord record;
-    record.time = now;
-    record.toPac = toPac;
+    lastToPac_ = bus_.ReadToPac(now);
+    const ProcessImage& toPac = lastToPac_;  // the cycle's record keeps it as read
+    bool newCommand = false;
 
     if (!booted_) {
         if (now < bootEnd_) {
             serial_.Discard(now);
             WriteReply(now, ProcessImage(layout_.Bytes()));
-            record.fromPac = lastFromPac_;
-            log_.Add(record);
+            log_.Add(now, toPac, lastFromPac_, false);
             return;
         }
         Boot();
@@ -116,7 +113,7 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
         emergencyStop_ = false;
         const CommandFrame command = CommandFrame::Decode(toPac.Cmd());
         if (protocol_.Recognise(command)) {
-            record.newCommand = true;
+            newCommand = true;
             Execute(command, now);
         }
         // Last, so that a mode change by CTRL or CMD in this cycle applies to the axis modules at once. Like
@@ -129,9 +126,9 @@ void PaControl::Cycle(std::chrono::nanoseconds now) {
     // COM1 needs no fieldbus: an RS232-only controller sees an all-zero image all the time.
     serial_.Cycle(now, serialHost_);
 
-    WriteReply(now, ComposeReply(now));
-    record.fromPac = lastFromPac_;
-    log_.Add(record);
+    ComposeReply(now, lastFromPac_);
+    bus_.WriteFromPac(now, lastFromPac_);
+    log_.Add(now, toPac, lastFromPac_, newCommand);
 }
 
 AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
@@ -146,9 +143,7 @@ AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
     context.integerFormat = state_.integerFormat;
     context.inputs = &state_.elements.inputs;
     // 2.7.4.13: the group is every axis with a module.
-    for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        if (state_.axes.Motion(axis).DisplacedDuringOff()) context.groupDisplaced = true;
-    }
+    context.groupDisplaced = state_.axes.AnyDisplacedDuringOff(state_.axisModules);
     return context;
 }
 
@@ -283,18 +278,22 @@ void PaControl::AttachSerial(SerialLine& line, SerialPortConfig config) {
     serial_.Connect(line);
 }
 
-ProcessImage PaControl::ComposeReply(std::chrono::nanoseconds now) const {
-    ProcessImage reply(layout_.Bytes());
+void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const {
+    reply = ProcessImage(layout_.Bytes());
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
     const AxisModuleContext context = ModuleContext(now);
+    Image12 module;
     for (int axis = 1; axis <= state_.axisModules; ++axis) {
         const auto k = static_cast<std::size_t>(axis - 1);
-        reply.SetModule12(layout_.AxisOffset(axis),
-                          automatic ? automaticReplies_[k] : modules_[k].Reply(state_.axes.Motion(axis), context));
+        if (automatic) {
+            module = automaticReplies_[k];
+        } else {
+            modules_[k].ReplyInto(state_.axes.Motion(axis), context, module);
+        }
+        reply.SetModule12(layout_.AxisOffset(axis), module);
     }
-    return reply;
 }
 
 void PaControl::WriteReply(std::chrono::nanoseconds now, const ProcessImage& reply) {

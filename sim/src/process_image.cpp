@@ -26,12 +26,9 @@ void ModuleLayout::ThrowNoAxisModule(int module) {
     throw std::out_of_range("ModuleLayout: axis module " + std::to_string(module) + " not configured");
 }
 
-std::size_t ProcessImage::CheckedSize(std::size_t bytes) {
-    if (bytes > kMaxBytes) {
-        throw std::invalid_argument("ProcessImage: " + std::to_string(bytes) + " bytes; a PA-CONTROL's image has " +
-                                    "at most " + std::to_string(kMaxBytes));
-    }
-    return bytes;
+void ProcessImage::ThrowSize(std::size_t bytes) {
+    throw std::invalid_argument("ProcessImage: " + std::to_string(bytes) + " bytes; a PA-CONTROL's image has " +
+                                "at most " + std::to_string(kMaxBytes));
 }
 
 void ProcessImage::ThrowIndex(std::size_t i, std::size_t size) {

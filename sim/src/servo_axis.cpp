@@ -36,8 +36,6 @@ nanoseconds After(nanoseconds base, double seconds) {
 
 }  // namespace
 
-bool IsPowered(DriveState state) { return state == DriveState::kEnabled || state == DriveState::kHalt; }
-
 ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
     config_.Validate();
     referenced_ = config_.referenced;
@@ -48,45 +46,31 @@ ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
 // ---- time and positions -------------------------------------------------------------------------------
 
 double ServoAxis::Seconds() const { return ToSeconds(now_ - trajectoryStart_); }
-double ServoAxis::CommandedMachine() const {
-    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
-    // cycle (position, limit switches, following error) evaluate it once.
-    if (!settledAt_ || *settledAt_ != now_) return trajectory_.PositionAt(Seconds());
-    if (!settledCommanded_) settledCommanded_ = trajectory_.PositionAt(Seconds());
-    return *settledCommanded_;
+double ServoAxis::EvaluateCommanded() const {
+    const double commanded = trajectory_.PositionAt(Seconds());
+    if (settled_ && settledAt_ == now_) {
+        settledCommanded_ = commanded;
+        settledCommandedKnown_ = true;
+    }
+    return commanded;
 }
-double ServoAxis::ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
 double ServoAxis::CommandedVelocity() const { return trajectory_.VelocityAt(Seconds()); }
 
-double ServoAxis::Position() const { return ActualMachine() + offset_; }
-double ServoAxis::CommandedPosition() const { return CommandedMachine() + offset_; }
 double ServoAxis::Target() const { return std::isnan(target_) ? CommandedPosition() : target_ + offset_; }
 double ServoAxis::Velocity() const { return blocked_ ? 0.0 : CommandedVelocity(); }
 double ServoAxis::ActualSpeed() const { return std::fabs(Velocity()); }
 double ServoAxis::FollowingError() const { return CommandedMachine() - ActualMachine(); }
-double ServoAxis::FollowingErrorSize() const {
-    // Neither blocked nor disturbed, the actual position is the commanded one: c - (c + 0) is 0 exactly.
-    if (!blocked_ && disturbance_ == 0.0) return 0.0;
-    return std::fabs(FollowingError());
-}
+// FollowingErrorSize() of a blocked or disturbed axis: neither, the actual position is the commanded one, and
+// c - (c + 0) is 0 exactly.
+double ServoAxis::DisturbedFollowingError() const { return std::fabs(FollowingError()); }
 MotionPhase ServoAxis::Phase() const { return trajectory_.PhaseAt(Seconds()); }
-bool ServoAxis::Moving() const { return trajectory_.Moves(); }
 
 bool ServoAxis::InTolerance() const { return windowSince_ && *windowSince_ + config_.toleranceDelay <= now_; }
-bool ServoAxis::Interrupted() const { return interrupted_ && !Moving(); }
 
 AxisStatus ServoAxis::Status() const {
     if (axisError_ != 0) return AxisStatus::kMalfunction;
     if (JobActive() || Moving()) return AxisStatus::kMoving;
     return interrupted_ ? AxisStatus::kStopped : AxisStatus::kInPosition;
-}
-
-bool ServoAxis::NegativeLimitSwitch() const {
-    return config_.negativeLimitSwitch && ActualMachine() <= *config_.negativeLimitSwitch;
-}
-
-bool ServoAxis::PositiveLimitSwitch() const {
-    return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
 }
 
 bool ServoAxis::ReferenceSwitch() const { return OnCam(ActualMachine()); }
@@ -98,22 +82,20 @@ bool ServoAxis::OnCam(double machinePosition) const {
 
 // ---- advancing time -----------------------------------------------------------------------------------
 
-void ServoAxis::Update(nanoseconds now) {
-    if (now < now_) return;
-    // Nothing changed since the last call brought the axis to this very time: no event is due, nothing settles.
-    // The simulator asks several times per cycle (the axis group, the axis module), each search costs.
-    if (settledAt_ && *settledAt_ == now) return;
-    settledAt_.reset();  // the events change the axis
+// Update() once its shortcuts are ruled out: a call to the time of the last one found nothing changed since
+// (the simulator asks several times per cycle: the axis group, the axis module), and with no event due and
+// nothing settling only the time moves on.
+void ServoAxis::RunUntil(nanoseconds now) {
+    settled_ = false;  // the events change the axis
     RunEventsUntil(now);
     now_ = now;
     Settle();
-    settledAt_ = now;
-    settledCommanded_.reset();
+    Settled();
 }
 
 void ServoAxis::Advance(nanoseconds now) {
     Update(now);
-    settledAt_.reset();  // the caller changes the axis now: the next Update() must look for events again
+    settled_ = false;  // the caller changes the axis now: the next Update() must look for events again
     eventKnown_ = false;
 }
 

@@ -136,7 +136,7 @@ Trajectory Trajectory::Brake(double start, Direction direction, double speed, do
 
 void Trajectory::Append(double duration, double startSpeed, double endSpeed) {
     if (!(duration > 0.0)) return;
-    segments_.push_back(Segment{duration_, duration, startSpeed, endSpeed, distance_});
+    segments_.at(segmentCount_++) = Segment{duration_, duration, startSpeed, endSpeed, distance_};
     duration_ += duration;
     distance_ += std::isinf(duration) ? kInfinity : (startSpeed + endSpeed) / 2.0 * duration;
 }
@@ -157,11 +157,11 @@ double Trajectory::SegmentAcceleration(const Segment& s, double tau) const {
 }
 
 const Trajectory::Segment* Trajectory::SegmentAt(double t) const {
-    const Segment* found = nullptr;
-    for (const auto& s : segments_) {
-        if (s.startTime <= t) found = &s;
+    // The last one that has started: the start times grow from segment to segment.
+    for (std::size_t i = segmentCount_; i > 0; --i) {
+        if (segments_[i - 1].startTime <= t) return &segments_[i - 1];
     }
-    return found;
+    return nullptr;
 }
 
 double Trajectory::PositionAt(double t) const {
@@ -194,7 +194,7 @@ MotionPhase Trajectory::PhaseAt(double t) const {
 bool Trajectory::FinalRampAt(double t) const {
     if (!Moves() || t >= duration_) return false;
     const Segment* s = SegmentAt(t < 0.0 ? 0.0 : t);
-    return s == &segments_.back() && s->endSpeed == 0.0 && s->startSpeed > 0.0;
+    return s == &segments_[segmentCount_ - 1] && s->endSpeed == 0.0 && s->startSpeed > 0.0;
 }
 
 std::optional<double> Trajectory::TimeToReach(double position) const {
@@ -206,9 +206,9 @@ std::optional<double> Trajectory::TimeToReach(double position) const {
     if (wanted <= 0.0) return 0.0;
     if (wanted > distance_) return std::nullopt;
     if (wanted == distance_) return duration_;
-    for (std::size_t i = 0; i < segments_.size(); ++i) {
+    for (std::size_t i = 0; i < segmentCount_; ++i) {
         const Segment& s = segments_[i];
-        const double end = i + 1 < segments_.size() ? segments_[i + 1].startDistance : distance_;
+        const double end = i + 1 < segmentCount_ ? segments_[i + 1].startDistance : distance_;
         if (wanted > end) continue;
         const double rest = wanted - s.startDistance;
         if (s.startSpeed == s.endSpeed) {

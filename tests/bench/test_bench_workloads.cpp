@@ -38,6 +38,18 @@ TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
 
 TEST(BenchWorkloads, AnUnknownWorkloadIsRefused) {
     EXPECT_THROW(pac::bench::RunWorkload("no-such-workload", 1), std::invalid_argument);
+    EXPECT_THROW(pac::bench::RunWorkload("plants-0", 1), std::invalid_argument);
+}
+
+// The scale rows' instruction counts divide by every plant's scans: N plants for `cycles` PLC cycles are
+// N x cycles scans, and every plant finishes jobs (a 10 ms controller cycle: an axis move within hundreds).
+TEST(BenchWorkloads, PlantsWorkloadCountsEveryPlantsScans) {
+    const pac::bench::WorkloadResult one = pac::bench::RunWorkload("plants-1", kScans);
+    const pac::bench::WorkloadResult three = pac::bench::RunWorkload("plants-3", kScans);
+    EXPECT_EQ(one.scans, kScans);
+    EXPECT_EQ(three.scans, 3 * kScans);
+    EXPECT_GE(one.jobs, 2);
+    EXPECT_EQ(three.jobs, 3 * one.jobs) << "the plants share nothing: each does what one alone does";
 }
 
 // The scan-cost ratio compares the library's CMD interface with the hand-written C only if both write the

@@ -20,7 +20,7 @@ public:
     // Every axis gets `machine` (its parameter fields are overwritten by the axis parameters).
     AxisGroup(int capacity, const std::vector<ParameterSpec>& axisParameters, const ServoAxisConfig& machine = {});
 
-    int Capacity() const { return static_cast<int>(axes_.size()); }
+    int Capacity() const { return capacity_; }
     bool Contains(int axis) const { return axis >= 1 && axis <= Capacity(); }
 
     // std::out_of_range outside 1..Capacity().
@@ -64,6 +64,8 @@ public:
     void Restart(std::chrono::nanoseconds now, bool referenced);
 
     void UpdateAll(std::chrono::nanoseconds now);
+    // Whether one of axes 1..count is "displaced during OFF" (the axis modules' group, 2.7.4.13).
+    bool AnyDisplacedDuringOff(int count) const;
     void StopAll(std::chrono::nanoseconds now);  // interrupt: braking with each job's deceleration
     void HaltAll(std::chrono::nanoseconds now);  // emergency stop: at once, without a ramp
     bool AnyMoving() const;
@@ -87,6 +89,7 @@ private:
     [[noreturn]] void ThrowOutside(int axis) const;
 
     std::vector<Axis> axes_;
+    int capacity_ = 0;  // axes_.size(), kept: the size of a vector of Axis takes a multiplication per lookup
 };
 
 }  // namespace pac::sim

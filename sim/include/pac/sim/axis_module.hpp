@@ -36,6 +36,7 @@ struct AxisModuleReply {
 
     static AxisModuleReply Decode(const Image12& module);
     Image12 Encode() const;
+    void EncodeInto(Image12& module) const;
 };
 
 // A position as the module carries it (2.5.3): IEEE single, or a DINT of the value x 1000, rounded to the
@@ -133,6 +134,7 @@ public:
     void Follow(const Image12& toPac) { lastControl_ = AxisModuleCommand::Decode(toPac).control; }
     // The 12 reply bytes for the axis as it stands (call after Serve in the same cycle).
     Image12 Reply(const ServoAxis& axis, const AxisModuleContext& context) const;
+    void ReplyInto(const ServoAxis& axis, const AxisModuleContext& context, Image12& module) const;
 
     // G123 input (2.7.3.10 / 2.7.3.11; cmd_put_condition_move_axis). 1..n; back to 1 when ONLINE starts.
     // std::invalid_argument below 1. An input the controller does not have reads 0.

@@ -1,13 +1,14 @@
 // What the simulated PA-CONTROL saw and answered, cycle by cycle: for timelines in test failures
-// (Format()) and for tests that check when a reply appeared. Keeps the newest `capacity` records.
+// (Format()) and for tests that check when a reply appeared. Keeps the newest `capacity` records, in a
+// RingBuffer: a cycle of the controller writes its record over the oldest one, without allocating.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
-#include <deque>
 #include <string>
 
 #include "pac/sim/process_image.hpp"
+#include "pac/sim/ring_buffer.hpp"
 
 namespace pac::sim {
 
@@ -20,11 +21,20 @@ struct ExchangeRecord {
 
 class ExchangeLog {
 public:
-    explicit ExchangeLog(std::size_t capacity) : capacity_(capacity) {}
+    explicit ExchangeLog(std::size_t capacity) : capacity_(capacity), records_(capacity) {}
 
-    void Add(const ExchangeRecord& record);
+    void Add(const ExchangeRecord& record) { Add(record.time, record.toPac, record.fromPac, record.newCommand); }
+    void Add(std::chrono::nanoseconds time, const ProcessImage& toPac, const ProcessImage& fromPac, bool newCommand) {
+        if (capacity_ == 0) return;
+        ExchangeRecord& record = records_.push_back();
+        record.time = time;
+        record.toPac = toPac;
+        record.fromPac = fromPac;
+        record.newCommand = newCommand;
+    }
     void Clear() { records_.clear(); }
-    const std::deque<ExchangeRecord>& Records() const { return records_; }
+    // Oldest first; read as a std::deque (size(), [k], back(), iterators).
+    const RingBuffer<ExchangeRecord>& Records() const { return records_; }
     std::size_t Capacity() const { return capacity_; }
 
     // One line per record:
@@ -34,7 +44,7 @@ public:
 
 private:
     std::size_t capacity_;
-    std::deque<ExchangeRecord> records_;
+    RingBuffer<ExchangeRecord> records_;
 };
 
 // "12 ms", "12.5 ms": exact.

@@ -27,9 +27,9 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 
 #include "pac/sim/process_image.hpp"
+#include "pac/sim/ring_buffer.hpp"
 #include "pac/sim/rng.hpp"
 
 namespace pac::sim {
@@ -71,22 +71,27 @@ public:
 
 private:
     struct InFlight {
-        std::chrono::nanoseconds arrival;
+        std::chrono::nanoseconds arrival{0};
         ProcessImage image;
     };
 
-    void Deliver(std::chrono::nanoseconds now);  // moves arrived images to delivered_
-    ProcessImage ReadDelivered();                 // delivered_, or torn on its first read
+    void Deliver(std::chrono::nanoseconds now);  // moves arrived images to Delivered()
+    ProcessImage ReadDelivered();                 // Delivered(), or torn on its first read
     void CheckReaderTime(std::chrono::nanoseconds now, const char* what);
+    // The newest image arrived, and the one that arrived just before it: two slots in turn, so that an
+    // arrival copies one image.
+    ProcessImage& Delivered() { return delivered_[newest_]; }
+    const ProcessImage& Delivered() const { return delivered_[newest_]; }
+    const ProcessImage& BeforeDelivered() const { return delivered_[1 - newest_]; }
 
     LinkConfig config_;
     SplitMix64 rng_;
     SplitMix64 tearRng_;
-    std::deque<InFlight> inFlight_;
+    RingBuffer<InFlight> inFlight_;  // oldest first; allocates only while more are in flight than ever before
     std::size_t imageBytes_;
-    ProcessImage delivered_;
-    ProcessImage beforeDelivered_;  // the image that arrived just before delivered_
-    bool unread_ = false;           // delivered_ arrived after the last read
+    ProcessImage delivered_[2];
+    int newest_ = 0;                // Delivered() is delivered_[newest_]
+    bool unread_ = false;           // Delivered() arrived after the last read
     ProcessImage frozen_;
     LinkFault fault_ = LinkFault::kNone;
     std::chrono::nanoseconds lastArrival_{std::chrono::nanoseconds::min()};

@@ -182,7 +182,7 @@ private:
     void ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
     bool AutomaticExchangeNow() const;
     AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
-    ProcessImage ComposeReply(std::chrono::nanoseconds now) const;
+    void ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const;
 
     Bus& bus_;
     ModuleLayout layout_;

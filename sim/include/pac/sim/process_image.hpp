@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <ostream>
 #include <string>
 
@@ -75,7 +76,11 @@ public:
     friend bool operator!=(const ProcessImage& a, const ProcessImage& b) { return !(a == b); }
 
 private:
-    static std::size_t CheckedSize(std::size_t bytes);
+    static std::size_t CheckedSize(std::size_t bytes) {
+        if (bytes > kMaxBytes) ThrowSize(bytes);
+        return bytes;
+    }
+    [[noreturn]] static void ThrowSize(std::size_t bytes);
     [[noreturn]] static void ThrowIndex(std::size_t i, std::size_t size);
     [[noreturn]] static void ThrowFit(std::size_t offset, std::size_t length, std::size_t size, const char* what);
     static std::ptrdiff_t Offset(std::size_t i) { return static_cast<std::ptrdiff_t>(i); }
@@ -128,10 +133,16 @@ inline std::uint32_t ReadDword(const Image12& m, int byteOffset) {
 
 inline void WriteDword(Image12& m, int byteOffset, std::uint32_t value) {
     const std::size_t k = detail::ModuleField(byteOffset, 4);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    // One store of the swapped value: byte by byte, g++ assembles the bytes in a register, a shift each.
+    const std::uint32_t big = __builtin_bswap32(value);
+    std::memcpy(m.data() + k, &big, sizeof big);
+#else
     m[k] = static_cast<std::uint8_t>(value >> 24);
     m[k + 1] = static_cast<std::uint8_t>(value >> 16);
     m[k + 2] = static_cast<std::uint8_t>(value >> 8);
     m[k + 3] = static_cast<std::uint8_t>(value);
+#endif
 }
 
 inline std::uint16_t ReadWordAt(const Image12& m, int byteOffset) {
@@ -141,8 +152,13 @@ inline std::uint16_t ReadWordAt(const Image12& m, int byteOffset) {
 
 inline void WriteWordAt(Image12& m, int byteOffset, std::uint16_t value) {
     const std::size_t k = detail::ModuleField(byteOffset, 2);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    const std::uint16_t big = __builtin_bswap16(value);
+    std::memcpy(m.data() + k, &big, sizeof big);
+#else
     m[k] = static_cast<std::uint8_t>(value >> 8);
     m[k + 1] = static_cast<std::uint8_t>(value);
+#endif
 }
 
 }  // namespace pac::sim

@@ -20,6 +20,10 @@ public:
     // Uniform in [0, max], both ends included (rejection sampling, no modulo bias).
     std::uint64_t UniformUpTo(std::uint64_t max) {
         if (max == UINT64_MAX) return Next();
+        if (max == 0) {  // a link without jitter draws in every write: the same step, without the divisions
+            Next();
+            return 0;
+        }
         const std::uint64_t range = max + 1;
         const std::uint64_t limit = UINT64_MAX - (UINT64_MAX % range + 1) % range;
         std::uint64_t draw = Next();

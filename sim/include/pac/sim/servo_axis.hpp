@@ -39,7 +39,7 @@ enum class DriveState {
     kSafe,      // Axis OFF, enable mode SAFE: no current, safety function on
     kDisabled,  // DISABLE DRIVE (G140): no current, whatever Axis ON says
 };
-bool IsPowered(DriveState state);  // kEnabled, kHalt
+inline bool IsPowered(DriveState state) { return state == DriveState::kEnabled || state == DriveState::kHalt; }
 
 // Per job (axis module control word bit 17, G142): limit switch monitoring. G25 always monitors.
 struct JobOptions {
@@ -53,8 +53,17 @@ public:
     explicit ServoAxis(ServoAxisConfig config = {});
 
     // Brings the axis up to `now` (an earlier time is ignored: time never runs backwards). Every call below
-    // does this first with its own `now`.
-    void Update(std::chrono::nanoseconds now);
+    // does this first with its own `now`. Inline, the case of every cycle: no event due and nothing settling,
+    // so that only the time moves on (the controller brings each of its axes here several times per cycle).
+    void Update(std::chrono::nanoseconds now) {
+        if (now < now_ || (settled_ && settledAt_ == now)) return;
+        if (eventKnown_ && (!nextEvent_ || nextEvent_->time > now) && activity_ != Activity::kSettling) {
+            now_ = now;
+            Settled();
+            return;
+        }
+        RunUntil(now);
+    }
 
     // Jobs (a Start edge of the axis module, or a CMD move). 0 = taken over, else the refusal number
     // (axis_error); a refused job changes nothing. Checked in this order: 46 axis error pending, 55 not
@@ -108,18 +117,21 @@ public:
 
     // Queries, as of the last Update().
     std::chrono::nanoseconds Now() const { return now_; }
-    double Position() const;            // actual position, axis coordinates
-    double CommandedPosition() const;   // ANPOS2 posvirt
+    // Inline, as the other queries the axis module's reply makes of every axis in every cycle.
+    double Position() const { return ActualMachine() + offset_; }  // actual position, axis coordinates
+    double CommandedPosition() const { return CommandedMachine() + offset_; }  // ANPOS2 posvirt
     double Target() const;              // the job's target (after a stop: where it stopped)
     double Velocity() const;            // actual, signed
     double ActualSpeed() const;         // |Velocity()|
     double FollowingError() const;      // commanded - actual
-    double FollowingErrorSize() const;  // |FollowingError()|, without evaluating the profile where it is 0
+    // |FollowingError()|, without evaluating the profile where it is 0 (inline: supervised every cycle).
+    double FollowingErrorSize() const { return !blocked_ && disturbance_ == 0.0 ? 0.0 : DisturbedFollowingError(); }
     MotionPhase Phase() const;
-    bool Moving() const;                // the trajectory generator runs (ANPOS2 st_still = 0)
+    bool Moving() const { return trajectory_.Moves(); }  // the trajectory generator runs (ANPOS2 st_still = 0)
     bool JobActive() const { return activity_ != Activity::kNone; }  // moving, homing, or not yet in position
     bool InTolerance() const;           // ANPOS2 st_toll
-    bool Interrupted() const;           // the last job was interrupted and the axis stands (status HALT)
+    // The last job was interrupted and the axis stands (status HALT).
+    bool Interrupted() const { return interrupted_ && !Moving(); }
     bool HomingActive() const { return activity_ == Activity::kHoming; }
     bool HomingArmed() const { return captureArmed_; }  // mode 2 waits for the switch
     double LastHomingCorrection() const { return homingCorrection_; }  // ANPOS2 deltaprspos
@@ -132,8 +144,12 @@ public:
     bool DriveDisabled() const { return driveDisabled_; }
     bool DisplacedDuringOff() const { return displaced_; }
     // Actuated = true (the axis module reports them low-active, 2.7.4.9 / 2.7.4.10).
-    bool NegativeLimitSwitch() const;
-    bool PositiveLimitSwitch() const;
+    bool NegativeLimitSwitch() const {
+        return config_.negativeLimitSwitch && ActualMachine() <= *config_.negativeLimitSwitch;
+    }
+    bool PositiveLimitSwitch() const {
+        return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
+    }
     bool ReferenceSwitch() const;
     double MinRange() const { return config_.minTraverseRange + shift_; }  // with the G29 shift
     double MaxRange() const { return config_.maxTraverseRange + shift_; }
@@ -164,8 +180,14 @@ private:
 
     // Machine coordinates: commanded and actual position, and the time base of the running profile.
     double Seconds() const;
-    double CommandedMachine() const;
-    double ActualMachine() const;
+    // Settled at now_, the profile and the time stay as they are until the next change: the many queries of a
+    // cycle (position, limit switches, following error) evaluate it once.
+    double CommandedMachine() const {
+        if (settledCommandedKnown_ && settled_ && settledAt_ == now_) return settledCommanded_;
+        return EvaluateCommanded();
+    }
+    double EvaluateCommanded() const;
+    double ActualMachine() const { return blocked_ ? blockedAt_ : CommandedMachine() + disturbance_; }
     double CommandedVelocity() const;
 
     std::uint16_t MotionRefusal() const;
@@ -174,6 +196,15 @@ private:
     std::uint16_t SetPositionRefusal(double position) const;
     bool IntoActuatedLimitSwitch(Direction direction) const;
 
+    // Update() where an event may be due or the axis settles.
+    void RunUntil(std::chrono::nanoseconds now);
+    // Update() is done at now_: nothing changes the axis until the next call that changes it.
+    void Settled() {
+        settled_ = true;
+        settledAt_ = now_;
+        settledCommandedKnown_ = false;
+    }
+    double DisturbedFollowingError() const;
     // Update(), for the calls that change the axis after it: every one of them comes through here.
     void Advance(std::chrono::nanoseconds now);
     void RunEventsUntil(std::chrono::nanoseconds until);
@@ -210,8 +241,10 @@ private:
     ServoAxisConfig config_;
     std::chrono::nanoseconds now_{0};
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
-    std::optional<std::chrono::nanoseconds> settledAt_;
-    mutable std::optional<double> settledCommanded_;  // CommandedMachine() at settledAt_, once asked
+    bool settled_ = false;
+    std::chrono::nanoseconds settledAt_{0};
+    mutable bool settledCommandedKnown_ = false;  // settledCommanded_ is CommandedMachine() at settledAt_
+    mutable double settledCommanded_ = 0.0;
     // NextEvent() as last searched, while nothing has changed the axis since (eventKnown_): the times it
     // finds follow from the profile and the settings alone, so a later search would find the same event
     // (RunEventsUntil). Every change comes through Advance() or Handle(), which forget it.

@@ -4,8 +4,9 @@
 // then (never from summed steps), so they do not depend on how often anyone evaluates them.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
-#include <vector>
 
 namespace pac::sim {
 
@@ -56,7 +57,7 @@ public:
     MotionPhase PhaseAt(double t) const;
     bool FinalRampAt(double t) const;  // on the last ramp, down to standstill (not a ramp to a lower speed)
 
-    bool Moves() const { return !segments_.empty(); }
+    bool Moves() const { return segmentCount_ != 0; }
     Direction Dir() const { return sign_ > 0.0 ? Direction::kPositive : Direction::kNegative; }
     double StartPosition() const { return start_; }
     double Duration() const { return duration_; }        // infinity for Run
@@ -84,7 +85,11 @@ private:
     double end_ = 0.0;
     double sign_ = 1.0;
     RampType ramp_ = RampType::kLinear;
-    std::vector<Segment> segments_;
+    // A profile has at most three segments (ramp, cruise, ramp): held inline, so that a new or copied profile
+    // (every job, every stop) needs no allocation.
+    static constexpr std::size_t kMaxSegments = 3;
+    std::array<Segment, kMaxSegments> segments_{};
+    std::size_t segmentCount_ = 0;
     double duration_ = 0.0;
     double distance_ = 0.0;  // along the direction; infinity for Run
 };
