@@ -225,11 +225,16 @@ static void Check(const FB_PAC_CMD *fb, Watch *w, Controller *c, int n, BOOL edg
     }
 }
 
-/* A command FB's call: the channel in, the body, the channel out (VAR_IN_OUT). */
+/* A command FB's call as an ST program makes it: on the channel itself (VAR_IN_OUT) where pacst's C passes it
+ * by reference; in, the body, out where it copies (MATIEC's C, in the replay of a MATIEC build). */
 static void CallCmd(FB_PAC_CMD *fb, FB_PAC_CMDINTERFACE *iface) {
+#ifdef PACST_BODY_REF
+    FB_PAC_CMD_body_ref__(fb, &iface->CHANNEL.value);
+#else
     fb->CHANNEL.value = iface->CHANNEL.value;
     FB_PAC_CMD_body__(fb);
     iface->CHANNEL.value = fb->CHANNEL.value;
+#endif
 }
 
 int main(void) {

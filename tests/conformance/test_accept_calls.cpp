@@ -4,6 +4,7 @@
 
 #include "pac/fb_instance.hpp"
 #include "pac/st_program.hpp"
+#include "matiec_deviations.hpp"
 
 namespace {
 
@@ -109,7 +110,7 @@ TEST(ConformanceCalls, NestedFunctionBlockInstances) {
     EXPECT_EQ(fb->SECONDCALLS.value, 3);
 }
 
-TEST(ConformanceCalls, FunctionBlockInOutIsCopiedInAndBack) {
+TEST(ConformanceCalls, FunctionBlockInOutArrayAndStructChangeTheCallers) {
     auto fb = PAC_FB(CONF_FBINOUT);
     fb->VALUE.value = 7;
     fb();
@@ -128,6 +129,27 @@ TEST(ConformanceCalls, FunctionBlockInOutIsCopiedInAndBack) {
         EXPECT_EQ(fb->QUEUE.value.table[i], after2[i]) << "Queue[" << i << "]";
     }
     EXPECT_EQ(fb->STATS.value.PUSHES, 2);
+}
+
+TEST(ConformanceCalls, FunctionBlockInOutIsTheCallersVariable) {
+    auto fb = PAC_FB(CONF_FBINOUTREFERENCE);
+    fb->AMOUNT.value = 3;
+    fb->OUTER.value.TOTAL = 100;
+    fb();
+    EXPECT_EQ(fb->SEENBETWEEN.value, 3);  // the inner FB's write, seen by the FB that passed the in-out on
+    EXPECT_EQ(fb->LEDGER.value.TOTAL, 33);
+    EXPECT_EQ(fb->LEDGER.value.WRITES, 2);
+    EXPECT_EQ(fb->OUTER.value.TOTAL, 111);  // passed on two levels down from the C caller's member
+    EXPECT_EQ(fb->OUTER.value.WRITES, 2);
+    EXPECT_EQ(fb->APART.value, 1);
+    EXPECT_EQ(fb->OTHER.value, 10);
+    // One variable to both in-outs: written through both; MATIEC copies each back, the last one wins.
+    EXPECT_EQ(fb->SHARED.value, pac::test::kMatiecBackend ? 10 : 11);
+    fb();
+    EXPECT_EQ(fb->SEENBETWEEN.value, 36);
+    EXPECT_EQ(fb->LEDGER.value.TOTAL, 66);
+    EXPECT_EQ(fb->OUTER.value.TOTAL, 122);
+    EXPECT_EQ(fb->SHARED.value, pac::test::kMatiecBackend ? 20 : 22);
 }
 
 }  // namespace

@@ -6,7 +6,8 @@ import re
 from . import literals, system
 from . import types as T
 from . import user
-from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, located, pos
+from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
+    inouts_by_reference, located, pos
 from .errors import StError, StErrors
 from .expressions import STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
 
@@ -196,6 +197,8 @@ class BodyCompiler:
         writable, why = True, ""
         if v.constant:
             writable, why = False, "it is a CONSTANT"
+        if pou.kind == "fb" and any(v is r for r in inouts_by_reference(pou)):  # the caller's variable itself
+            return Ref(f"(*{inout_parameter(v)})", False, v.type, v, writable=writable, why_not=why)
         if pou.kind == "fb":
             return Ref(f"data__->{v.cname}", not v.type.is_fb, v.type, v, writable=writable, why_not=why)
         if v.section in ("output", "inout"):
@@ -819,6 +822,8 @@ class BodyCompiler:
         """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`."""
         pre, post = [], []
         given = set()
+        by_reference = inouts_by_reference(fbt.pou)
+        addresses = {}  # the C address each VAR_IN_OUT in by_reference is given, by its C name
         for p in node.parameters:
             if p.name is None:
                 raise self.err(p, "function block calls must be formal: name every argument (Pin := value)")
@@ -851,12 +856,19 @@ class BodyCompiler:
                                             f"{array_name_hint(arg.type, fv.type)}")
                 if not arg.writable:
                     raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
+                if type(arg) is Ref and any(fv is r for r in by_reference):  # an lvalue: the FB works on it
+                    addresses[fv.cname] = f"&({arg.read()})"
+                    continue
+                # Copied in and out: an FB whose body works on the member, or a bit of a variable (user mode)
                 pre.append(f"{ind}{member}.value = {arg.read()};")
                 post.insert(0, ind + arg.write(f"{member}.value"))
         missing = [fv.name for fv in fbt.vars if fv.section == "inout" and fv.cname not in given]
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
-        return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
+        if not by_reference:
+            return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
+        args = "".join(", " + addresses.get(fv.cname, f"&{inst}.{fv.cname}.value") for fv in by_reference)
+        return pre + [f"{ind}{fbt.cname}_body_ref__(&{inst}{args});"] + post
 
 
 class BitRef(Ref):

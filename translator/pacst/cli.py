@@ -148,7 +148,8 @@ def _declare(args):
         for err in e.errors:
             print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
-    outputs = {name: text for name, text in Emitter(comp, program).outputs(args.files).items() if name in names}
+    outputs = {name: text for name, text in Emitter(comp, program, by_reference=False).outputs(args.files).items()
+               if name in names}
     outputs["layout_probe.c"] = layout.probe_source(program, args.files)
     outputs["pacst_iec.h"] = layout.matiec_header(outputs["pacst_iec.h"])
     outputs.update(_tables(constants))

@@ -78,3 +78,20 @@ class Ref:
         if self.wrapped:
             return f"__PACST_SETP({self.base}, {self.suffix}, {value});"
         return f"{self.base}{self.suffix} = {value};"
+
+
+def inouts_by_reference(pou):
+    """The VAR_IN_OUTs that the FUNCTION_BLOCK `pou`'s body reaches through pointer parameters, in declaration
+    order (docs/translator.md, "VAR_IN_OUT of a function block"): every one not CONSTANT, of an FB with no
+    METHOD, ACTION, PROPERTY, INTERFACE or base (those read the FB's variables between its calls, where only
+    the member holds a value). None of a PROGRAM (only its host calls it), a FUNCTION or a standard FB."""
+    if pou is None or pou.kind != "fb" or pou.program or pou.owner is not None or pou.methods \
+            or pou.properties or pou.interfaces or pou.base is not None:
+        return []
+    return [v for v in pou.vars if v.section == "inout" and not v.constant]
+
+
+def inout_parameter(var):
+    """The C parameter of the body that holds the address of the VAR_IN_OUT `var` (lower case: no ST name
+    becomes it)."""
+    return f"inout__{var.cname}"
