@@ -43,9 +43,8 @@ FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), sca
 
 def pac_test(wiring, out, *args):
     env = dict(os.environ, PYTHONPATH=TOOL)
-    cache = PARSE_CACHE
     return subprocess.run([sys.executable, "-m", "pactest", wiring, "--pac-build", PAC_BUILD, "--out", out,
-                           "--parse-cache", cache, *args],
+                           "--parse-cache", PARSE_CACHE, *args],
                           capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
 
 
