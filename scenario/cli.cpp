@@ -1,5 +1,6 @@
 #include "cli.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <fstream>
 
@@ -20,11 +21,12 @@ constexpr const char* kProgram = "pac_scenario";
 
 void Usage(std::ostream& out) {
     out << "usage: " << kProgram << " [--check] [--vcd FILE] [--wavedrom FILE] SCENARIO.json\n"
+        << "       " << kProgram << " --check SCENARIO.json...\n"
         << "       " << kProgram << " --version\n"
         << "  Runs the scenario's commands, mode requests and axis jobs through FB_PAC_Cmd, FB_PAC_Ctrl and\n"
         << "  FB_PAC_Axis against the simulated PA-CONTROL and prints a scan-by-scan timeline of the\n"
         << "  modules' images and the FBs' pins (format: docs/scenario.md).\n"
-        << "  --check          only check the scenario, do not run it\n"
+        << "  --check          only check the scenario (or each of several), do not run it\n"
         << "  --vcd FILE       also write every signal of the run, scan by scan, as VCD (GTKWave)\n"
         << "  --wavedrom FILE  also write the scenario's \"diagram\" (steps, signals) as WaveJSON (WaveDrom)\n"
         << "  --version        print the library's version (st/library.json) and exit\n"
@@ -34,7 +36,7 @@ void Usage(std::ostream& out) {
 
 struct Options {
     bool checkOnly = false;
-    std::string scenarioFile;
+    std::vector<std::string> scenarioFiles;
     std::string vcdFile;
     std::string waveFile;
 };
@@ -57,6 +59,26 @@ bool WriteTraces(const Options& options, const Scenario& scenario, const TraceOb
         WriteScenarioDiagram(scenario, trace, file);
     }
     return true;
+}
+
+// Reads `file` into `scenario` and prints the warnings of its unmet preconditions; kExitOk, or the exit
+// code of the refusal (the reason on `err`).
+int Load(const GvlNames& names, const std::string& file, Scenario& scenario, std::ostream& err) {
+    try {
+        scenario = ScenarioLoader(names).FromFile(file);
+    } catch (const ScenarioError& e) {
+        err << kProgram << ": invalid scenario " << file << ": " << e.what() << "\n";
+        return kExitRefused;
+    } catch (const std::exception& e) {
+        err << kProgram << ": internal error while reading " << file << ": " << e.what() << "\n";
+        return kExitInternalError;
+    }
+    // The run goes on: the warning says in advance why a request will be refused.
+    for (const PreconditionWarning& warning : FindUnmetPreconditions(scenario)) {
+        err << kProgram << ": warning: " << file << ": step " << warning.step + 1 << " ($.steps["
+            << warning.step << "]): " << warning.message << "\n";
+    }
+    return kExitOk;
 }
 
 }  // namespace
@@ -85,40 +107,37 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             err << kProgram << ": unknown option " << arg << "\n";
             Usage(err);
             return kExitRefused;
-        } else if (options.scenarioFile.empty()) {
-            options.scenarioFile = arg;
         } else {
-            err << kProgram << ": one scenario file at a time (got " << options.scenarioFile << " and " << arg << ")\n";
-            return kExitRefused;
+            options.scenarioFiles.push_back(arg);
         }
     }
-    if (options.scenarioFile.empty()) {
+    if (options.scenarioFiles.empty()) {
         Usage(err);
         return kExitRefused;
     }
-    const std::string& scenarioFile = options.scenarioFile;
-
     const GvlNames names;
-    Scenario scenario;
-    try {
-        scenario = ScenarioLoader(names).FromFile(scenarioFile);
-    } catch (const ScenarioError& e) {
-        err << kProgram << ": invalid scenario " << scenarioFile << ": " << e.what() << "\n";
-        return kExitRefused;
-    } catch (const std::exception& e) {
-        err << kProgram << ": internal error while reading " << scenarioFile << ": " << e.what() << "\n";
-        return kExitInternalError;
-    }
-    // The run goes on: the warning says in advance why a request will be refused.
-    for (const PreconditionWarning& warning : FindUnmetPreconditions(scenario)) {
-        err << kProgram << ": warning: " << scenarioFile << ": step " << warning.step + 1 << " ($.steps["
-            << warning.step << "]): " << warning.message << "\n";
-    }
     if (options.checkOnly) {
-        const auto steps = scenario.steps.size();
-        out << scenarioFile << ": valid scenario, " << steps << (steps == 1 ? " step\n" : " steps\n");
-        return kExitOk;
+        // Each file checked on its own, all of them even after a refusal: the worst exit code counts.
+        int worst = kExitOk;
+        for (const std::string& file : options.scenarioFiles) {
+            Scenario scenario;
+            const int code = Load(names, file, scenario, err);
+            if (code == kExitOk) {
+                const auto steps = scenario.steps.size();
+                out << file << ": valid scenario, " << steps << (steps == 1 ? " step\n" : " steps\n");
+            }
+            worst = std::max(worst, code);
+        }
+        return worst;
     }
+    if (options.scenarioFiles.size() > 1) {
+        err << kProgram << ": one scenario file at a time (got " << options.scenarioFiles[0] << " and "
+            << options.scenarioFiles[1] << "); only --check takes several\n";
+        return kExitRefused;
+    }
+    const std::string& scenarioFile = options.scenarioFiles[0];
+    Scenario scenario;
+    if (const int code = Load(names, scenarioFile, scenario, err); code != kExitOk) return code;
     try {
         TimelinePrinter printer(out, names);
         TraceObserver trace(scenario.modules);

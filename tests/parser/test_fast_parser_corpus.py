@@ -8,6 +8,7 @@ trees are kept in the build tree ($PAC_ORACLE_CACHE) so that a second run parses
 import concurrent.futures
 import glob
 import os
+import re
 import sys
 import unittest
 
@@ -30,6 +31,9 @@ CORPORA = {
 }
 
 _ORACLE = None
+# A POU's body alone (statement_list), as TwinCAT files and PLCopen XML keep it: what follows the last
+# END_VAR up to the POU's end, in the conformance suite's accepted files.
+_BODY = re.compile(r"^END_VAR[ \t]*\n(?!.*^END_VAR)(.*)^END_(?:FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.S | re.M)
 
 
 def _compare_file(path):
@@ -40,6 +44,15 @@ def _compare_file(path):
         return path, _ORACLE.compare(f.read())
 
 
+def _compare_body(path):
+    global _ORACLE
+    if _ORACLE is None:
+        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+    with open(path, encoding="utf-8") as f:
+        found = _BODY.search(f.read())
+    return path, _ORACLE.compare(found.group(1), "statement_list") if found and found.group(1).strip() else None
+
+
 def _compare_all(paths):
     jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     if jobs <= 1:
@@ -48,6 +61,11 @@ def _compare_all(paths):
         # Longest first, so that no worker is left with a long file at the end.
         ordered = sorted(paths, key=os.path.getsize, reverse=True)
         return dict(pool.map(_compare_file, ordered))
+
+
+def _compare_bodies(paths):
+    with concurrent.futures.ProcessPoolExecutor(max_workers=2) as pool:
+        return {path: result for path, result in pool.map(_compare_body, paths) if result is not None}
 
 
 class Corpus(unittest.TestCase):
@@ -77,6 +95,14 @@ class Corpus(unittest.TestCase):
         self.assertEqual(len(paths), 3)
         declined = [os.path.relpath(p, REPO) for p in paths if self.results[p][0] != "same"]
         self.assertEqual(declined, [])
+
+    def test_bodies_alone_equal_earleys(self):
+        """The bodies the PLCopen and TwinCAT readers parse alone (pacst.parsing.parse_text)."""
+        results = _compare_bodies(CORPORA["conformance accept"])
+        self.assertGreater(len(results), 30)
+        for path, (verdict, what) in results.items():
+            with self.subTest(path=os.path.relpath(path, REPO)):
+                self.assertEqual(verdict, "same", what)
 
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]

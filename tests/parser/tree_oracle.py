@@ -94,17 +94,18 @@ class Oracle:
         self._cache_dir = cache_dir
         self._grammar = _grammar_version() if cache_dir else None
 
-    def _earley_tree(self, text):
+    def _earley_tree(self, text, start="iec_source"):
         if not self._cache_dir:
-            return self.earley.parse(text, start="iec_source")
-        key = hashlib.sha256(f"{self._grammar}|{text}".encode("utf-8")).hexdigest()
+            return self.earley.parse(text, start=start)
+        rule = "" if start == "iec_source" else f"{start}|"
+        key = hashlib.sha256(f"{self._grammar}|{rule}{text}".encode("utf-8")).hexdigest()
         path = os.path.join(self._cache_dir, key + ".pickle")
         try:
             with open(path, "rb") as f:
                 return _from_plain(pickle.load(f))
         except (OSError, pickle.UnpicklingError, EOFError):
             pass
-        tree = self.earley.parse(text, start="iec_source")
+        tree = self.earley.parse(text, start=start)
         os.makedirs(self._cache_dir, exist_ok=True)
         fd, tmp = tempfile.mkstemp(dir=self._cache_dir, suffix=".tmp")
         with os.fdopen(fd, "wb") as f:
@@ -116,19 +117,19 @@ class Oracle:
     def processed(source):
         return util.find_and_clean_comments(source)[1]
 
-    def compare(self, source):
+    def compare(self, source, start="iec_source"):
         """("declined", None), ("same", None) or ("different", what): the fast parser's tree against
-        Earley's. A text Earley refuses must be declined."""
+        Earley's, both from the rule `start`. A text Earley refuses must be declined."""
         try:
             text = self.processed(source)
         except Exception:  # blark's comment pass fails on unbalanced comments before any parser runs
             return "declined", None
         try:
-            fast = self.fast.parse(text)
+            fast = self.fast.parse(text, start)
         except Decline:
             return "declined", None
         try:
-            earley = self._earley_tree(text)
+            earley = self._earley_tree(text, start)
         except lark.exceptions.LarkError as exc:
             return "different", f"the fast parser accepted what Earley refuses: {exc}"
         found = difference(fast, earley)

@@ -186,6 +186,20 @@ TEST(ScenarioCli, UsageErrorsExitTwo) {
     EXPECT_NE(help.out.str().find("exit codes: 0 all expectations met"), std::string::npos);
 }
 
+// --check takes several files (a folder's scenarios in one call): each is reported, the refused one does
+// not stop the others, and the exit code is the worst.
+TEST(ScenarioCli, CheckReportsEachOfSeveralFiles) {
+    const std::string missing = testing::TempDir() + "/missing.json";
+    const Cli check({"--check", missing, kDemo});
+    EXPECT_EQ(check.exitCode, pac::scenario::kExitRefused);
+    EXPECT_EQ(check.err.str(), "pac_scenario: invalid scenario " + missing + ": cannot read the file\n");
+    EXPECT_EQ(check.out.str().rfind(std::string(kDemo) + ": valid scenario, ", 0), 0u) << check.out.str();
+    const Cli both({"--check", kDemo, kDemo});
+    EXPECT_EQ(both.exitCode, pac::scenario::kExitOk);
+    const std::string out = both.out.str();
+    EXPECT_NE(out.find(std::string(kDemo) + ": valid scenario, "), out.rfind(std::string(kDemo) + ": valid scenario, "));
+}
+
 TEST(ScenarioCli, AMissingScenarioFileExitsTwo) {
     const Cli scenario({testing::TempDir() + "/missing.json"});
     EXPECT_EQ(scenario.exitCode, pac::scenario::kExitRefused);

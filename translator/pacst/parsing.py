@@ -104,9 +104,9 @@ class _FastFirst:
         return self._earley
 
     def parse(self, text, start):
-        if start == "iec_source":
+        if start in ("iec_source", "statement_list"):
             try:
-                return self._fast.parse(text)
+                return self._fast.parse(text, start)
             except Decline:
                 pass
         return self._earley_parser().parse(text, start=start)

@@ -31,6 +31,9 @@ def _matiec_build(folder):
 
 MATIEC = _matiec_build(PAC_BUILD)
 OUT = os.environ.get("PACTEST_OUT", os.path.join(PAC_BUILD, "pactest-tests"))
+# One parse cache for every run: each parses the library, and a cold parse costs most of a run. The build
+# tree's own (PACST_CACHE, set by CTest) already holds the library's trees and the parser from the build.
+PARSE_CACHE = os.environ.get("PACST_CACHE") or os.path.join(OUT, "pacst-cache")
 EXAMPLE_TESTS = ["FB_TestControllerRestart", "FB_TestLimitSwitchRecovery", "FB_TestNormalCycle",
                  "FB_TestShowsAFailure", "FB_TestStopInput"]
 FIXTURE_TESTS = ["FB_TestBusByName", "FB_TestFails", "FB_TestNeverEnds", "FB_TestPasses", "FB_TestWaitFails"]
@@ -40,10 +43,8 @@ FAILURE = re.compile(r"^    (?P<file>\S+):(?P<line>\d+): test (?P<test>\w+), sca
 
 def pac_test(wiring, out, *args):
     env = dict(os.environ, PYTHONPATH=TOOL)
-    # one parse cache for every run: each parses the library, and a cold parse costs most of a run
-    cache = os.path.join(OUT, "pacst-cache")
     return subprocess.run([sys.executable, "-m", "pactest", wiring, "--pac-build", PAC_BUILD, "--out", out,
-                           "--parse-cache", cache, *args],
+                           "--parse-cache", PARSE_CACHE, *args],
                           capture_output=True, text=True, env=env, cwd=os.path.dirname(wiring))
 
 
@@ -224,7 +225,7 @@ class CorpusTest(unittest.TestCase):
         report = os.path.join(OUT, "corpus", "report.json")
         env = dict(os.environ, PYTHONPATH=TOOL)
         run = subprocess.run([sys.executable, "-m", "pactest.corpus", os.path.dirname(folder), "--json", report,
-                              "--cache", os.path.join(OUT, "pacst-cache")], capture_output=True, text=True, env=env)
+                              "--cache", PARSE_CACHE], capture_output=True, text=True, env=env)
         self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
         self.assertIn("total: 4 POUs, 1 accepted (25.0 %), 1 refused by the parser, 1 for a construct, "
                       "0 needing a vendor library, 1 depending on a refused declaration", run.stdout)
@@ -805,8 +806,8 @@ class PlcopenRoundTripTest(unittest.TestCase):
         python = os.path.join(PAC_BUILD, "venv-pacexport", "bin", "python")
         env = dict(os.environ, PYTHONPATH=os.pathsep.join([os.path.join(ROOT, "tools", "pacexport"),
                                                             os.path.join(ROOT, "translator")]))
-        export = subprocess.run([python, "-m", "pacexport", "export", "--library", info, "--out",
-                                 os.path.join(out, "export"), *sorted(sources)], cwd=st, env=env,
+        export = subprocess.run([python, "-m", "pacexport", "export", "--library", info, "--cache", PARSE_CACHE,
+                                 "--out", os.path.join(out, "export"), *sorted(sources)], cwd=st, env=env,
                                 capture_output=True, text=True)
         self.assertEqual(export.returncode, 0, export.stderr)
         with open(os.path.join(folder, "wiring.json"), encoding="utf-8") as f:

@@ -20,11 +20,21 @@ class FastParser:
         """`facts`: grammar_facts() of blark's built parser."""
         vocabulary = Vocabulary(facts)
         expressions = Expressions(vocabulary, Literals(vocabulary))
-        self._declarations = Declarations(expressions, Statements(expressions))
+        self._statements = Statements(expressions)
+        self._declarations = Declarations(expressions, self._statements)
 
-    def parse(self, text):
-        """blark's tree of `text` from the start rule iec_source; raises Decline."""
+    def parse(self, text, start="iec_source"):
+        """blark's tree of `text` from the start rule iec_source, or statement_list (a POU's body alone, as
+        TwinCAT keeps it); raises Decline."""
         try:
+            if start == "statement_list":
+                s = Scanner(text)
+                tree = self._statements.statement_list(s)
+                if tree is None or not s.at_end():
+                    raise Decline("not a statement list alone")
+                return tree
+            if start != "iec_source":
+                raise Decline(f"start rule {start} not read here")
             return self._declarations.source(Scanner(text))
         except RecursionError:
             raise Decline("nested too deeply") from None
