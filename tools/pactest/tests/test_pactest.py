@@ -240,8 +240,8 @@ class CorpusTest(unittest.TestCase):
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
-        them; without Lib measured, App's use of the namespace counts as needing a library not measured. A POU first refused for OR_ELSE is refused for a
-        construct, whatever else of it names a vendor library."""
+        them; without Lib measured, App's use of the namespace counts as needing a library not measured. A POU first refused for a construct (FOR ... BY 0)
+        is refused for a construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
         shutil.rmtree(top, ignore_errors=True)
@@ -267,8 +267,8 @@ class CorpusTest(unittest.TestCase):
                     {"FB_UsesTool": ("FUNCTION_BLOCK FB_UsesTool\nVAR\n  Tool : Common.FB_Tool;\n  m : INT;\nEND_VAR\n",
                                      "Tool();\nm := Tool.n;"),
                      "F_GetVersion": ("FUNCTION F_GetVersion : INT\n", "F_GetVersion := 2;"),
-                     "FB_OrElse": ("FUNCTION_BLOCK FB_OrElse\nVAR\n  a : BOOL;\nEND_VAR\n",
-                                   "a := a OR_ELSE a;\na := Tc2_System.F_Nothing();")})}
+                     "FB_ForByZero": ("FUNCTION_BLOCK FB_ForByZero\nVAR\n  a : INT;\n  b : INT;\nEND_VAR\n",
+                                      "FOR a := 1 TO 3 BY 0 DO\n  b := a;\nEND_FOR;\na := Tc2_System.F_Nothing();")})}
         for name, (plcproj, pous) in projects.items():
             folder = os.path.join(top, name)
             os.makedirs(folder)
@@ -294,8 +294,8 @@ class CorpusTest(unittest.TestCase):
         self.assertIsNone(app["FB_UsesTool.TcPOU"], stdout)
         # the library's generated Project Information POUs are not read with it: no clash with the program's own
         self.assertIsNone(app["F_GetVersion.TcPOU"], stdout)
-        self.assertEqual(app["FB_OrElse.TcPOU"][0], "refused construct")
-        self.assertIn("OR_ELSE", app["FB_OrElse.TcPOU"][1])
+        self.assertEqual(app["FB_ForByZero.TcPOU"][0], "refused construct")
+        self.assertIn("BY 0", app["FB_ForByZero.TcPOU"][1])
         stdout, found = measure(os.path.join(top, "App"))
         app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
         self.assertEqual(app["FB_UsesTool.TcPOU"][0], "library not given", stdout)
