@@ -68,9 +68,9 @@ def _given(files):
     names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
     namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
     if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names, Tc2_System's parts
-        return project.vendor_sources(), project.vendor_natives(), namespaces
-    extra = project.vocabulary_sources() + project.vendor_sources()
-    native = project.native_sources() + project.vendor_natives()
+        return project.vendor_sources(files), project.vendor_natives(files), namespaces
+    extra = project.vocabulary_sources() + project.vendor_sources(files)
+    native = project.native_sources() + project.vendor_natives(files)
     if not project.uses_tcunit(files):
         return extra, native, namespaces
     namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)

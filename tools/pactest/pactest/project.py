@@ -84,21 +84,27 @@ def tcunit_sources():
 
 
 VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
+# The vendor FUNCTIONs the host implements (pactest_natives.cpp); the other parts are ST, run as they are.
+VENDOR_NATIVES = {"F_GetSystemTime"}
 
 
 def vendor_libraries():
-    """{namespace: folder} of the vendor libraries' parts pac-test provides (docs/user_dialect.md): Tc2_System's."""
+    """{namespace: folder} of the vendor libraries' parts pac-test provides (docs/user_dialect.md)."""
     return {name: os.path.join(VENDOR, name) for name in sorted(os.listdir(VENDOR))
             if os.path.isdir(os.path.join(VENDOR, name))}
 
 
-def vendor_sources():
-    return [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))]
+def vendor_sources(sources=()):
+    """The vendor parts' files, but those declaring a name the user's `sources` declare themselves (a program's
+    own TIMESTRUCT or FLOOR stays the program's)."""
+    theirs = declared_names(sources)
+    return [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))
+            if os.path.splitext(os.path.basename(f))[0].upper() not in theirs]
 
 
-def vendor_natives():
+def vendor_natives(sources=()):
     """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock)."""
-    return [f for f in vendor_sources() if os.path.basename(f).startswith("F_")]
+    return [f for f in vendor_sources(sources) if os.path.splitext(os.path.basename(f))[0] in VENDOR_NATIVES]
 
 
 def tcunit_natives():
@@ -107,7 +113,6 @@ def tcunit_natives():
 
 
 _TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)
-_VENDOR_NAMES = re.compile(rb"\bTc2_System\s*\.|\bT_MaxString\b|\bMAX_STRING_LENGTH\b|\bF_GetSystemTime\b", re.I)
 
 
 def uses_tcunit(sources):
@@ -117,21 +122,50 @@ def uses_tcunit(sources):
 
 
 def uses_vendor(sources):
-    """Whether the user's sources name what pac-test provides of a vendor library (Tc2_System's)."""
-    return _names(sources, _VENDOR_NAMES)
+    """Whether the user's sources name what pac-test provides of a vendor library: a library's namespace
+    (Tc2_System.), a part's name (T_MaxString) or a constant of its global lists (MAX_STRING_LENGTH)."""
+    names = [re.escape(n) + r"\s*\." for n in vendor_libraries()]
+    for path in vendor_sources(sources):
+        names.append(re.escape(os.path.splitext(os.path.basename(path))[0]))
+        if os.path.basename(path).startswith("GVL_"):
+            with open(path, encoding="utf-8") as f:
+                names += re.findall(r"^\s*(\w+)\s*:", f.read(), re.M)
+    return _names(sources, re.compile(rb"\b(?:" + "|".join(names).encode() + rb")\b", re.I))
 
 
-def _names(sources, pattern):
-    """Whether `pattern` occurs in the user's sources."""
+# a declaration's name in ST or a TwinCAT object: FUNCTION_BLOCK PUBLIC FB_X, TYPE T_X :, INTERFACE I_X
+_DECLARATION = re.compile(rb"^\s*(?:FUNCTION_BLOCK|FUNCTION|PROGRAM|INTERFACE|TYPE)\s+(?:(?:PUBLIC|INTERNAL|ABSTRACT|"
+                          rb"FINAL)\s+)*(\w+)", re.I | re.M)
+
+
+def declared_names(sources):
+    """The upper-case names the user's sources declare (POUs, types, interfaces)."""
+    found = set()
+    for path in _files(sources, (".tcpou", ".tcdut", ".tcio", ".st")):
+        try:
+            with open(path, "rb") as f:
+                found.update(m.group(1).decode("ascii", "replace").upper() for m in _DECLARATION.finditer(f.read()))
+        except OSError:
+            continue
+    return found
+
+
+def _files(sources, extensions):
+    """The files of the user's sources (a .plcproj or a folder stands for the files below it)."""
     files = []
     for path in sources:
         if path.lower().endswith(".plcproj") or os.path.isdir(path):  # a library may be a folder
             top = path if os.path.isdir(path) else os.path.dirname(path)
             files += [os.path.join(d, n) for d, _, names in os.walk(top) for n in names
-                      if n.lower().endswith((".tcpou", ".st"))]
+                      if n.lower().endswith(extensions)]
         else:
             files.append(path)
-    for path in files:
+    return files
+
+
+def _names(sources, pattern):
+    """Whether `pattern` occurs in the user's sources."""
+    for path in _files(sources, (".tcpou", ".st")):
         try:
             with open(path, "rb") as f:
                 if pattern.search(f.read()):
