@@ -317,6 +317,10 @@ void RecordTestFinished(const std::string& name) {
     }
 }
 
+bool TestFinished(const std::string& name) {
+    return running && Contains(running->tcunitFinished, name);
+}
+
 int Main(int argc, char** argv, const Project& project) {
     try {
         return Run(ParseOptions(argc, argv), project);

@@ -58,6 +58,8 @@ std::chrono::nanoseconds Now();
 void RecordTest(const std::string& name);
 // TcUnit's TEST_FINISHED_NAMED('name')
 void RecordTestFinished(const std::string& name);
+// TcUnit's IS_TEST_FINISHED('name'): whether the running suite's test has finished
+bool TestFinished(const std::string& name);
 // TcUnit's TEST_ORDERED('name'): a test of the suite that runs once every ordered test called before it has
 // finished; whether it runs now (it is then the current test, as after TEST('name'))
 bool RecordTestOrdered(const std::string& name);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <string>
 
 #include "POUS.h"
@@ -25,6 +26,31 @@ std::string Number(const char* format, T value) {
 std::string TimeText(const TIME& t) {
     const double ms = static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
     return Number("T#%gMS", ms);
+}
+
+std::string LongTimeText(const TIME& t) {
+    return Number("LTIME#%lldNS", static_cast<long long>(t.tv_sec) * 1000000000LL + static_cast<long long>(t.tv_nsec));
+}
+
+// DATE and DATE_AND_TIME: seconds since 1970-01-01 (UTC); TIME_OF_DAY: milliseconds since midnight
+std::string DateAndTimeText(UDINT seconds) {
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buffer[40];
+    std::strftime(buffer, sizeof buffer, "DT#%Y-%m-%d-%H:%M:%S", &tm);
+    return buffer;
+}
+
+std::string DateText(UDINT seconds) {
+    return "D#" + DateAndTimeText(seconds).substr(3, 10);
+}
+
+std::string TimeOfDayText(UDINT ms) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "TOD#%02u:%02u:%02u.%03u", ms / 3600000U, ms / 60000U % 60U, ms / 1000U % 60U,
+                  ms % 1000U);
+    return buffer;
 }
 
 BOOL Equals(const char* file, int line, bool passed, const std::string& expected, const std::string& actual,
@@ -77,6 +103,21 @@ PACTEST_EQUALS(ASSERTEQUALS_UDINT, UDINT, "%lu", static_cast<unsigned long>)
 PACTEST_EQUALS(ASSERTEQUALS_BYTE, BYTE, "16#%02X", static_cast<unsigned>)
 PACTEST_EQUALS(ASSERTEQUALS_WORD, WORD, "16#%04X", static_cast<unsigned>)
 PACTEST_EQUALS(ASSERTEQUALS_DWORD, DWORD, "16#%08lX", static_cast<unsigned long>)
+// TcUnit's asserts beyond the vocabulary's (tools/pactest/tcunit): the 64-bit types, the dates, WSTRING
+PACTEST_EQUALS(ASSERTEQUALS_LINT, LINT, "%lld", static_cast<long long>)
+PACTEST_EQUALS(ASSERTEQUALS_ULINT, ULINT, "%llu", static_cast<unsigned long long>)
+PACTEST_EQUALS(ASSERTEQUALS_LWORD, LWORD, "16#%016llX", static_cast<unsigned long long>)
+
+#define PACTEST_EQUALS_TEXT(NAME, TYPE, TEXT)                                                                 \
+    BOOL NAME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TYPE EXPECTED, TYPE ACTUAL, STRING MESSAGE) { \
+        (void)EN;                                                                                             \
+        Ok(__ENO);                                                                                            \
+        return Equals(file__, line__, EXPECTED == ACTUAL, TEXT(EXPECTED), TEXT(ACTUAL), MESSAGE);             \
+    }
+
+PACTEST_EQUALS_TEXT(ASSERTEQUALS_DATE, UDINT, DateText)
+PACTEST_EQUALS_TEXT(ASSERTEQUALS_DATE_AND_TIME, UDINT, DateAndTimeText)
+PACTEST_EQUALS_TEXT(ASSERTEQUALS_TIME_OF_DAY, UDINT, TimeOfDayText)
 
 BOOL ASSERTEQUALS_TIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIME EXPECTED, TIME ACTUAL,
                        STRING MESSAGE) {
@@ -84,6 +125,27 @@ BOOL ASSERTEQUALS_TIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIM
     Ok(__ENO);
     const bool passed = EXPECTED.tv_sec == ACTUAL.tv_sec && EXPECTED.tv_nsec == ACTUAL.tv_nsec;
     return Equals(file__, line__, passed, TimeText(EXPECTED), TimeText(ACTUAL), MESSAGE);
+}
+
+BOOL ASSERTEQUALS_LTIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIME EXPECTED, TIME ACTUAL,
+                        STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    const bool passed = EXPECTED.tv_sec == ACTUAL.tv_sec && EXPECTED.tv_nsec == ACTUAL.tv_nsec;
+    return Equals(file__, line__, passed, LongTimeText(EXPECTED), LongTimeText(ACTUAL), MESSAGE);
+}
+
+BOOL ASSERTEQUALS_WSTRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING EXPECTED, STRING ACTUAL,
+                          STRING MESSAGE) {
+    (void)EN;
+    Ok(__ENO);
+    return Equals(file__, line__, Text(EXPECTED) == Text(ACTUAL), "\"" + Text(EXPECTED) + "\"",
+                  "\"" + Text(ACTUAL) + "\"", MESSAGE);
+}
+
+BOOL IS_TEST_FINISHED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
+    Ok(__ENO);
+    return pactest::TestFinished(Text(TESTNAME)) ? TRUE : FALSE;
 }
 
 BOOL ASSERTEQUALS_STRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING EXPECTED, STRING ACTUAL,

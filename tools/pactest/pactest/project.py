@@ -108,8 +108,8 @@ def vendor_natives(sources=()):
 
 
 def tcunit_natives():
-    """TcUnit's TEST and TEST_FINISHED_NAMED, which the host implements."""
-    return [f for f in tcunit_sources() if os.path.basename(f).startswith("TEST")]
+    """TcUnit's FUNCTIONs the host implements: TEST, TEST_FINISHED_NAMED, IS_TEST_FINISHED, the asserts."""
+    return [f for f in tcunit_sources() if os.path.basename(f).startswith(("TEST", "IS_TEST", "Assert"))]
 
 
 _TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)

@@ -183,8 +183,8 @@ class TcUnitTest(unittest.TestCase):
 
     def test_each_suite_is_a_test(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
-        self.assertIn("3 tests: 2 passed, 0 failed, 1 failed as expected", self.result.stdout)
-        check_junit(self, os.path.join(self.out, "junit.xml"), tests=3, failed=0, skipped=1)
+        self.assertIn("5 tests: 3 passed, 0 failed, 2 failed as expected", self.result.stdout)
+        check_junit(self, os.path.join(self.out, "junit.xml"), tests=5, failed=0, skipped=2)
 
     def test_a_finished_test_counts_no_more_asserts_and_the_suite_ends_with_its_last_test(self):
         # 2 + 2 in the one-scan tests; 10 scans of the third, whose assert after TEST_FINISHED_NAMED is not counted
@@ -195,11 +195,26 @@ class TcUnitTest(unittest.TestCase):
         self.assertRegex(self.result.stdout, r"ok  FB_OrderedSuite  \(4 asserts")
 
     def test_a_failure_names_the_tcunit_test_and_its_line(self):
-        found = failures(self.result.stdout)
+        found = [f for f in failures(self.result.stdout) if f["test"] == "FB_ShowsAFailureSuite"]
         source = os.path.join(self.folder, "FB_ShowsAFailureSuite.TcPOU")
         self.assertEqual([(f["test"], int(f["line"]), f["msg"]) for f in found],
                          [("FB_ShowsAFailureSuite", line_of(source, "one edge is not two"),
                            "FailsOnPurpose: one edge is not two: expected 2, got 1")])
+
+    def test_the_asserts_of_the_64_bit_types_the_dates_and_wstring(self):
+        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING and IS_TEST_FINISHED
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(13 asserts")
+        source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
+        found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout) if f["test"] == "FB_TypesFailureSuite"]
+        expected = [("'LINT'", "expected -9000000000, got 9000000000"),
+                    ("'LWORD'", "expected 16#00000000000000FF, got 16#0000000000000100"),
+                    ("'DATE'", "expected D#2026-01-01, got D#2026-01-02"),
+                    ("'DT'", "expected DT#2026-01-01-12:30:00, got DT#2026-01-01-12:30:01"),
+                    ("'TOD'", "expected TOD#12:30:00.500, got TOD#12:30:00.000"),
+                    ("'LTIME'", "expected LTIME#1000002000NS, got LTIME#1000000000NS"),
+                    ("'WSTRING'", 'expected "axis 1", got "axis 2"')]
+        self.assertEqual(found, [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {m[1:-1]}: {text}")
+                                 for m, text in expected])
 
 
 class CorpusTest(unittest.TestCase):
