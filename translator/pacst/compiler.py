@@ -78,6 +78,10 @@ def _struct_elements(node):
     return out
 
 
+# Tc2_System's memory functions, which the translator provides itself (Tc2_System.MEMCPY is MEMCPY)
+_TC2_SYSTEM_MEMORY = {"MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP"}
+
+
 class Pou:
     def __init__(self, kind, name, file, node):
         self.kind = kind  # "fb" or "function" (a user PROGRAM is an "fb" with `program` set)
@@ -367,6 +371,8 @@ class Compiler:
         if kind == "standard":
             return up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS or up in STANDARD_FUNCTIONS \
                 or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up) is not None
+        if kind == "library" and namespace.upper() == "TC2_SYSTEM" and up in _TC2_SYSTEM_MEMORY:
+            return True  # Tc2_System.MEMCPY: the translator's own MEMCPY
         if up in self.enum_values and up not in self.declared_at:  # PA_CONTROL.PAC_AX_HOME: its type's
             up = self.enum_values[up].cname
         file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
@@ -387,8 +393,16 @@ class Compiler:
         if self.namespace(first) is None:
             raise self.err(node, f"'{dotted}': {user.unknown_namespace(first, self.namespace_names())}")
         if "." in rest or not self.in_namespace(first, rest):
-            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'")
+            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
         return rest
+
+    @staticmethod
+    def _part_of(namespace):
+        """What to write instead of a name a vendor library pac-test provides in part lacks."""
+        if not user.namespace_like(namespace):
+            return ""
+        return (f": pac-test provides part of the vendor library {namespace} (docs/user_dialect.md, \"Vendor "
+                "libraries\"); keep the code that needs this name out of the program tested")
 
     def declared_name(self, token):
         """User mode: the name of the declaration `token` names in a heading (EXTENDS, IMPLEMENTS), without the
@@ -415,7 +429,8 @@ class Compiler:
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
         if not self.in_namespace(first, _name(head.field.name)):
-            raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'")
+            raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'"
+                                       f"{self._part_of(first)}")
         self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
         if len(node.elements) == 1:
             if not head.dereferenced and not node.dereferenced:

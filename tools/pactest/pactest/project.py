@@ -133,8 +133,8 @@ def uses_vendor(sources):
     return _names(sources, re.compile(rb"\b(?:" + "|".join(names).encode() + rb")\b", re.I))
 
 
-# a declaration's name in ST or a TwinCAT object: FUNCTION_BLOCK PUBLIC FB_X, TYPE T_X :, INTERFACE I_X
-_DECLARATION = re.compile(rb"^\s*(?:FUNCTION_BLOCK|FUNCTION|PROGRAM|INTERFACE|TYPE)\s+(?:(?:PUBLIC|INTERNAL|ABSTRACT|"
+# a declaration's name in ST or a TwinCAT object (<Declaration><![CDATA[FUNCTION_BLOCK PUBLIC FB_X), TYPE T_X :
+_DECLARATION = re.compile(rb"^(?:.*<!\[CDATA\[)?\s*(?:FUNCTION_BLOCK|FUNCTION|PROGRAM|INTERFACE|TYPE)\s+(?:(?:PUBLIC|INTERNAL|ABSTRACT|"
                           rb"FINAL)\s+)*(\w+)", re.I | re.M)
 
 

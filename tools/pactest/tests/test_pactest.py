@@ -15,6 +15,7 @@ TOOL = os.path.dirname(HERE)
 ROOT = os.path.dirname(os.path.dirname(TOOL))
 sys.path.insert(0, TOOL)
 
+from pactest import project  # noqa: E402
 from pactest.cli import shard_of  # noqa: E402
 
 PAC_BUILD = os.environ.get("PAC_BUILD", os.path.join(ROOT, "build"))
@@ -593,6 +594,51 @@ class ProgramRefusalTest(unittest.TestCase):
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         self.assertIn(f"{path}:2: GVL_Word.Speed located at %IW64: pac-test copies byte", run.stderr)
         self.assertNotIn("invalid wiring file", run.stderr)
+
+    def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
+        import shutil
+        folder = os.path.join(OUT, "vendor-name")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        path = os.path.join(folder, "FB_TaskIndex.st")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write("FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : Tc2_System.GETCURTASKINDEX;\nEND_VAR\n"
+                    "END_FUNCTION_BLOCK\n")
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn(f"{path}:3:11: error: 'Tc2_System.GETCURTASKINDEX': the library Tc2_System has no type or POU "
+                      "'GETCURTASKINDEX': pac-test provides part of the vendor library Tc2_System (docs/user_dialect.md, "
+                      "\"Vendor libraries\"); keep the code that needs this name out of the program tested", run.stderr)
+
+
+class VendorLibraryTest(unittest.TestCase):
+    """The vendor libraries' parts pac-test gives a program (tools/pactest/vendor): all of them, but a part the
+    program declares itself; the host implements only those it names."""
+
+    def test_a_part_the_program_declares_is_left_out(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            mine = os.path.join(folder, "FLOOR.TcPOU")
+            with open(mine, "w", encoding="utf-8") as f:
+                f.write("<TcPlcObject><POU Name=\"FLOOR\"><Declaration><![CDATA[FUNCTION FLOOR : INT\n")
+            given = {os.path.basename(p) for p in project.vendor_sources([folder])}
+            every = {os.path.basename(p) for p in project.vendor_sources()}
+        self.assertIn("FLOOR.st", every)
+        self.assertEqual(every - given, {"FLOOR.st"})
+
+    def test_the_host_implements_the_named_natives_only(self):
+        self.assertEqual([os.path.basename(p) for p in project.vendor_natives()], ["F_GetSystemTime.st"])
+
+    def test_a_program_naming_a_part_uses_the_vendor_libraries(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "MAIN.st")
+            for text, uses in (("x := Tc2_Math.FLOOR(2.5);", True), ("s : T_MaxString;", True),
+                               ("n := MAX_STRING_LENGTH;", True), ("n := LEN2(ADR(s));", True),
+                               ("x := FLOORED;", False)):
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+                self.assertEqual(project.uses_vendor([path]), uses, text)
 
 
 def outcomes(stdout):
