@@ -376,6 +376,8 @@ class Compiler:
         if up in self.enum_values and up not in self.declared_at:  # PA_CONTROL.PAC_AX_HOME: its type's
             up = self.enum_values[up].cname
         file = self.gvls[up].file if up in self.gvls else self.declared_at.get(up, (None,))[0]
+        if file is None and up in self.globals:  # Tc2_System.ADSLOG_MSGTYPE_ERROR: a library's global variable
+            return any(self._under(g.gvl.file, self.namespaces[namespace.upper()][1]) for g in self.globals[up])
         return self._under(file, self.namespaces[namespace.upper()][1])
 
     def library_of(self, path):
