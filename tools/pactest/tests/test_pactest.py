@@ -602,13 +602,38 @@ class ProgramRefusalTest(unittest.TestCase):
         shutil.copytree(os.path.join(HERE, "fixture"), folder)
         path = os.path.join(folder, "FB_TaskIndex.st")
         with open(path, "w", encoding="utf-8") as f:
-            f.write("FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : Tc2_System.GETCURTASKINDEX;\nEND_VAR\n"
+            f.write("FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : Tc2_System.E_TcMemoryArea;\nEND_VAR\n"
                     "END_FUNCTION_BLOCK\n")
         run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{path}:3:11: error: 'Tc2_System.GETCURTASKINDEX': the library Tc2_System has no type or POU "
-                      "'GETCURTASKINDEX': pac-test provides part of the vendor library Tc2_System (docs/user_dialect.md, "
+        self.assertIn(f"{path}:3:11: error: 'Tc2_System.E_TcMemoryArea': the library Tc2_System has no type or POU "
+                      "'E_TcMemoryArea': pac-test provides part of the vendor library Tc2_System (docs/user_dialect.md, "
                       "\"Vendor libraries\"); keep the code that needs this name out of the program tested", run.stderr)
+
+
+    def test_a_call_of_a_refused_function_and_a_function_named_like_a_conversion(self):
+        import shutil
+        folder = os.path.join(OUT, "refused-function")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(HERE, "fixture"), folder)
+        files = {"F_Bad.st": "FUNCTION F_Bad : INT\nVAR_INPUT\n  X : NoSuchType;\nEND_VAR\nF_Bad := 1;\nEND_FUNCTION\n",
+                 "BIN_TO_BYTE.st": "FUNCTION BIN_TO_BYTE : BYTE\nVAR_INPUT\n  Bits : WORD;\nEND_VAR\n"
+                                   "BIN_TO_BYTE := WORD_TO_BYTE(Bits);\nEND_FUNCTION\n",
+                 "PRG_Calls.st": "PROGRAM PRG_Calls\nVAR\n  N : INT;\n  B : BYTE;\nEND_VAR\nN := F_Bad(X := 1);\n"
+                                 "B := BIN_TO_BYTE(16#0102);\nEND_PROGRAM\n"}
+        for name, text in files.items():
+            with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
+                f.write(text)
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn(f"{os.path.join(folder, 'F_Bad.st')}:3:7: error: undeclared type 'NoSuchType'", run.stderr)
+        # the call names the refusal above, not an order of declarations
+        self.assertIn(f"{os.path.join(folder, 'PRG_Calls.st')}:6:6: error: FUNCTION F_Bad cannot be called: its "
+                      "declaration was refused (above)", run.stderr)
+        self.assertNotIn("before its declaration", run.stderr)
+        # a FUNCTION of the program's own named like a conversion is called as declared
+        self.assertNotIn("BIN_TO_BYTE", run.stderr)
+        self.assertNotIn("PRG_Calls.st:7:", run.stderr)
 
 
 class VendorLibraryTest(unittest.TestCase):
