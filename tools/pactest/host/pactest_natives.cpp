@@ -63,6 +63,11 @@ void Ok(BOOL* eno) {
     if (eno) *eno = TRUE;
 }
 
+// TIME and LTIME: pacst's C keeps both as seconds and nanoseconds
+bool operator==(const TIME& a, const TIME& b) {
+    return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
 }  // namespace
 
 extern "C" {
@@ -119,21 +124,8 @@ PACTEST_EQUALS_TEXT(ASSERTEQUALS_DATE, UDINT, DateText)
 PACTEST_EQUALS_TEXT(ASSERTEQUALS_DATE_AND_TIME, UDINT, DateAndTimeText)
 PACTEST_EQUALS_TEXT(ASSERTEQUALS_TIME_OF_DAY, UDINT, TimeOfDayText)
 
-BOOL ASSERTEQUALS_TIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIME EXPECTED, TIME ACTUAL,
-                       STRING MESSAGE) {
-    (void)EN;
-    Ok(__ENO);
-    const bool passed = EXPECTED.tv_sec == ACTUAL.tv_sec && EXPECTED.tv_nsec == ACTUAL.tv_nsec;
-    return Equals(file__, line__, passed, TimeText(EXPECTED), TimeText(ACTUAL), MESSAGE);
-}
-
-BOOL ASSERTEQUALS_LTIME(const char* file__, int line__, BOOL EN, BOOL* __ENO, TIME EXPECTED, TIME ACTUAL,
-                        STRING MESSAGE) {
-    (void)EN;
-    Ok(__ENO);
-    const bool passed = EXPECTED.tv_sec == ACTUAL.tv_sec && EXPECTED.tv_nsec == ACTUAL.tv_nsec;
-    return Equals(file__, line__, passed, LongTimeText(EXPECTED), LongTimeText(ACTUAL), MESSAGE);
-}
+PACTEST_EQUALS_TEXT(ASSERTEQUALS_TIME, TIME, TimeText)
+PACTEST_EQUALS_TEXT(ASSERTEQUALS_LTIME, TIME, LongTimeText)
 
 BOOL ASSERTEQUALS_WSTRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING EXPECTED, STRING ACTUAL,
                           STRING MESSAGE) {

@@ -582,49 +582,42 @@ class WiringRefusalTest(unittest.TestCase):
 class ProgramRefusalTest(unittest.TestCase):
     """What pac-test cannot run in the program itself is named at its file and line, not as the wiring file's."""
 
-    def test_a_word_address(self):
+    @staticmethod
+    def listed(name, files):
+        """pac-test --list on the fixture copied to OUT/name with `files` ({name: ST}) added: (run, folder)."""
         import shutil
-        folder = os.path.join(OUT, "word-address")
+        folder = os.path.join(OUT, name)
         shutil.rmtree(folder, ignore_errors=True)
         shutil.copytree(os.path.join(HERE, "fixture"), folder)
-        path = os.path.join(folder, "GVL_Word.st")
-        with open(path, "w", encoding="utf-8") as f:
-            f.write("VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n")
-        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        for file, text in files.items():
+            with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
+                f.write(text)
+        return pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list"), folder
+
+    def test_a_word_address(self):
+        run, folder = self.listed("word-address", {"GVL_Word.st": "VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{path}:2: GVL_Word.Speed located at %IW64: pac-test copies byte", run.stderr)
+        self.assertIn(f"{os.path.join(folder, 'GVL_Word.st')}:2: GVL_Word.Speed located at %IW64: pac-test copies byte",
+                      run.stderr)
         self.assertNotIn("invalid wiring file", run.stderr)
 
     def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
-        import shutil
-        folder = os.path.join(OUT, "vendor-name")
-        shutil.rmtree(folder, ignore_errors=True)
-        shutil.copytree(os.path.join(HERE, "fixture"), folder)
-        path = os.path.join(folder, "FB_TaskIndex.st")
-        with open(path, "w", encoding="utf-8") as f:
-            f.write("FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : Tc2_System.E_TcMemoryArea;\nEND_VAR\n"
-                    "END_FUNCTION_BLOCK\n")
-        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        run, folder = self.listed("vendor-name", {"FB_TaskIndex.st": "FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : "
+                                                                      "Tc2_System.E_TcMemoryArea;\nEND_VAR\n"
+                                                                      "END_FUNCTION_BLOCK\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{path}:3:11: error: 'Tc2_System.E_TcMemoryArea': the library Tc2_System has no type or POU "
-                      "'E_TcMemoryArea': pac-test provides part of the vendor library Tc2_System (docs/user_dialect.md, "
-                      "\"Vendor libraries\"); keep the code that needs this name out of the program tested", run.stderr)
-
+        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.E_TcMemoryArea': the library "
+                      "Tc2_System has no type or POU 'E_TcMemoryArea': pac-test provides part of the vendor library "
+                      "Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); keep the code that needs this name out "
+                      "of the program tested", run.stderr)
 
     def test_a_call_of_a_refused_function_and_a_function_named_like_a_conversion(self):
-        import shutil
-        folder = os.path.join(OUT, "refused-function")
-        shutil.rmtree(folder, ignore_errors=True)
-        shutil.copytree(os.path.join(HERE, "fixture"), folder)
-        files = {"F_Bad.st": "FUNCTION F_Bad : INT\nVAR_INPUT\n  X : NoSuchType;\nEND_VAR\nF_Bad := 1;\nEND_FUNCTION\n",
-                 "BIN_TO_BYTE.st": "FUNCTION BIN_TO_BYTE : BYTE\nVAR_INPUT\n  Bits : WORD;\nEND_VAR\n"
-                                   "BIN_TO_BYTE := WORD_TO_BYTE(Bits);\nEND_FUNCTION\n",
-                 "PRG_Calls.st": "PROGRAM PRG_Calls\nVAR\n  N : INT;\n  B : BYTE;\nEND_VAR\nN := F_Bad(X := 1);\n"
-                                 "B := BIN_TO_BYTE(16#0102);\nEND_PROGRAM\n"}
-        for name, text in files.items():
-            with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
-                f.write(text)
-        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        run, folder = self.listed("refused-function", {
+            "F_Bad.st": "FUNCTION F_Bad : INT\nVAR_INPUT\n  X : NoSuchType;\nEND_VAR\nF_Bad := 1;\nEND_FUNCTION\n",
+            "BIN_TO_BYTE.st": "FUNCTION BIN_TO_BYTE : BYTE\nVAR_INPUT\n  Bits : WORD;\nEND_VAR\n"
+                              "BIN_TO_BYTE := WORD_TO_BYTE(Bits);\nEND_FUNCTION\n",
+            "PRG_Calls.st": "PROGRAM PRG_Calls\nVAR\n  N : INT;\n  B : BYTE;\nEND_VAR\nN := F_Bad(X := 1);\n"
+                            "B := BIN_TO_BYTE(16#0102);\nEND_PROGRAM\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
         self.assertIn(f"{os.path.join(folder, 'F_Bad.st')}:3:7: error: undeclared type 'NoSuchType'", run.stderr)
         # the call names the refusal above, not an order of declarations
