@@ -134,8 +134,8 @@ def uses_vendor(sources):
 
 
 # a declaration's name in ST or a TwinCAT object (<Declaration><![CDATA[FUNCTION_BLOCK PUBLIC FB_X), TYPE T_X :
-_DECLARATION = re.compile(rb"^(?:.*<!\[CDATA\[)?\s*(?:FUNCTION_BLOCK|FUNCTION|PROGRAM|INTERFACE|TYPE)\s+(?:(?:PUBLIC|INTERNAL|ABSTRACT|"
-                          rb"FINAL)\s+)*(\w+)", re.I | re.M)
+_DECLARATION = re.compile(rb"^(?:.*<!\[CDATA\[)?\s*(?:FUNCTION_BLOCK|FUNCTION|PROGRAM|INTERFACE|TYPE)\s+"
+                          rb"(?:(?:PUBLIC|INTERNAL|ABSTRACT|FINAL)\s+)*(\w+)", re.I | re.M)
 
 
 def declared_names(sources):

@@ -206,7 +206,8 @@ class TcUnitTest(unittest.TestCase):
         # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING and IS_TEST_FINISHED
         self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(13 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
-        found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout) if f["test"] == "FB_TypesFailureSuite"]
+        found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
+                 if f["test"] == "FB_TypesFailureSuite"]
         expected = [("'LINT'", "expected -9000000000, got 9000000000"),
                     ("'LWORD'", "expected 16#00000000000000FF, got 16#0000000000000100"),
                     ("'DATE'", "expected D#2026-01-01, got D#2026-01-02"),
@@ -592,7 +593,8 @@ class ProgramRefusalTest(unittest.TestCase):
         for file, text in files.items():
             with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
                 f.write(text)
-        return pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list"), folder
+        run = pac_test(os.path.join(folder, "wiring.json"), os.path.join(folder, "out"), "--no-coverage", "--list")
+        return run, folder
 
     def test_a_word_address(self):
         run, folder = self.listed("word-address", {"GVL_Word.st": "VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n"})
@@ -606,8 +608,8 @@ class ProgramRefusalTest(unittest.TestCase):
                                                                       "Tc2_System.E_TcMemoryArea;\nEND_VAR\n"
                                                                       "END_FUNCTION_BLOCK\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.E_TcMemoryArea': the library "
-                      "Tc2_System has no type or POU 'E_TcMemoryArea': pac-test provides part of the vendor library "
+        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.E_TcMemoryArea': the "
+                      "library Tc2_System has no type or POU 'E_TcMemoryArea': pac-test provides part of the vendor library "
                       "Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); keep the code that needs this name out "
                       "of the program tested", run.stderr)
 
