@@ -151,6 +151,18 @@ public:
         return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
     }
     bool ReferenceSwitch() const;
+    // Position(), NegativeLimitSwitch() and PositiveLimitSwitch() from one evaluation of the actual position:
+    // the axis module's reply asks for the three of every axis in every cycle.
+    struct ActualSample {
+        double position;
+        bool negativeLimitSwitch;
+        bool positiveLimitSwitch;
+    };
+    ActualSample SampleActual() const {
+        const double machine = ActualMachine();
+        return {machine + offset_, config_.negativeLimitSwitch && machine <= *config_.negativeLimitSwitch,
+                config_.positiveLimitSwitch && machine >= *config_.positiveLimitSwitch};
+    }
     double MinRange() const { return config_.minTraverseRange + shift_; }  // with the G29 shift
     double MaxRange() const { return config_.maxTraverseRange + shift_; }
     double Shift() const { return shift_; }                                  // sum of the G29 displacements
