@@ -237,22 +237,26 @@ void PrintThroughput(const std::string& self) {
 }
 
 void PrintScale() {
-    std::printf("### Scale\n\nPA-CONTROLs as above (CMD, CTRL, 8 axes moving, controller cycle 10 ms) in one "
-                "process on one core, scanned one after the other in each 1 ms PLC cycle. Multiple of real "
-                "time: simulated seconds per CPU second.\n\n");
-    std::printf("| PA-CONTROLs | PLC cycles per CPU second | multiple of real time | CPU per controller and "
-                "scan | vs. 1 controller | goal >= %sx at 32 |\n|---:|---:|---:|---:|---:|---|\n",
+    std::printf("### Scale\n\nPA-CONTROLs as above (CMD, CTRL, 8 axes moving) in one process on one core, scanned one "
+                "after the other in each 1 ms PLC cycle, at the goal's controller cycle of 1 ms and at the default "
+                "of 10 ms. Multiple of real time: simulated seconds per CPU second.\n\n");
+    std::printf("| PA-CONTROL cycle | PA-CONTROLs | PLC cycles per CPU second | multiple of real time | CPU per "
+                "controller and scan | vs. 1 controller | goal >= %sx at 32, 1 ms |\n|---|---:|---:|---:|---:|---:|---|\n",
                 Number(kRealTimeGoal).c_str());
-    double single = 0;
-    for (int count : {1, 2, 4, 8, 16, 32}) {
-        auto plants = OnlinePlants(count, milliseconds(10));
-        const double cycles = ScansPerCpuSecond(plants, kPlantScansPerRun / count);
-        const double perController = 1e6 / (cycles * count);  // microseconds
-        if (count == 1) single = perController;
-        const double realTime = cycles / 1000.0;
-        std::printf("| %d | %s | %sx | %s us | %sx | %s |\n", count, Number(cycles).c_str(), Number(realTime, 1).c_str(),
-                    Number(perController, 2).c_str(), Number(perController / single, 2).c_str(),
-                    count == 32 ? Met(realTime >= kRealTimeGoal).c_str() : "");
+    for (int pacMs : {1, 10}) {
+        double single = 0;
+        for (int count : {1, 2, 4, 8, 16, 32}) {
+            auto plants = OnlinePlants(count, milliseconds(pacMs));
+            const double cycles = ScansPerCpuSecond(plants, kPlantScansPerRun / count);
+            const double perController = 1e6 / (cycles * count);  // microseconds
+            if (count == 1) single = perController;
+            const double realTime = cycles / 1000.0;
+            std::string goal;
+            if (count == 32) goal = pacMs == 1 ? Met(realTime >= kRealTimeGoal) : "-";
+            std::printf("| %d ms | %d | %s | %sx | %s us | %sx | %s |\n", pacMs, count, Number(cycles).c_str(),
+                        Number(realTime, 1).c_str(), Number(perController, 2).c_str(),
+                        Number(perController / single, 2).c_str(), goal.c_str());
+        }
     }
     std::printf("\n");
 }

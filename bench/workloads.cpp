@@ -195,11 +195,11 @@ WorkloadResult PlantWorkload(milliseconds pacCycle, int scans) {
     return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone() + plant.CommandsDone(); });
 }
 
-// `count` plants at a controller cycle of 10 ms scanned one after the other in each PLC cycle, as the scale
-// rows run them: `cycles` PLC cycles measured, each plant's scan one scan of the result (the cost per
+// `count` plants at a controller cycle of `pacCycle` scanned one after the other in each PLC cycle, as the
+// scale rows run them: `cycles` PLC cycles measured, each plant's scan one scan of the result (the cost per
 // controller and scan).
-WorkloadResult PlantsWorkload(int count, int cycles) {
-    auto plants = OnlinePlants(count, milliseconds(10));
+WorkloadResult PlantsWorkload(int count, milliseconds pacCycle, int cycles) {
+    auto plants = OnlinePlants(count, pacCycle);
     const auto jobs = [&plants] {
         long done = 0;
         for (const auto& plant : plants) done += plant->MovesDone() + plant->CommandsDone();
@@ -283,8 +283,14 @@ WorkloadResult RunWorkload(const std::string& name, int scans) {
     };
     const std::string plants = "plants-";
     if (name.rfind(plants, 0) == 0) {
-        const int count = std::atoi(name.c_str() + plants.size());
-        if (count >= 1) return PlantsWorkload(count, scans);
+        // "plants-N" at the default controller cycle of 10 ms, "plants-N-pacM" at M ms.
+        char* rest = nullptr;
+        const long count = std::strtol(name.c_str() + plants.size(), &rest, 10);
+        long pacMs = 10;
+        if (std::string(rest).rfind("-pac", 0) == 0) pacMs = std::strtol(rest + 4, &rest, 10);
+        if (count >= 1 && pacMs >= 1 && *rest == '\0') {
+            return PlantsWorkload(static_cast<int>(count), milliseconds(pacMs), scans);
+        }
     }
     auto it = workloads.find(name);
     if (it == workloads.end()) throw std::invalid_argument("no workload '" + name + "'");

@@ -36,7 +36,8 @@ struct WorkloadResult {
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
 // "axis-job", "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans;
-// "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows).
+// "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows);
+// "plants-N-pacM": the same at a controller cycle of M ms.
 // std::invalid_argument for another name.
 WorkloadResult RunWorkload(const std::string& name, int scans);
 

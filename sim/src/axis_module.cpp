@@ -297,6 +297,7 @@ Image12 AxisModule::Reply(const ServoAxis& axis, const AxisModuleContext& contex
 void AxisModule::ReplyInto(const ServoAxis& axis, const AxisModuleContext& context, Image12& module) const {
     using namespace axis_status;
     const DriveState drive = axis.Drive();
+    const ServoAxis::ActualSample actual = axis.SampleActual();
     std::uint32_t status = 0;
     if (drive == DriveState::kEnabled) status |= kDriveEnabled;
     if (drive == DriveState::kHalt || (drive == DriveState::kEnabled && axis.Interrupted())) status |= kHalt;
@@ -307,8 +308,8 @@ void AxisModule::ReplyInto(const ServoAxis& axis, const AxisModuleContext& conte
     if (axis.Fault()) status |= kFault | kAxisError;
     if (active_) status |= kActive;
     if (axis.Referenced()) status |= kReferenced;
-    if (!axis.NegativeLimitSwitch()) status |= kNegativeLimitNotActuated;
-    if (!axis.PositiveLimitSwitch()) status |= kPositiveLimitNotActuated;
+    if (!actual.negativeLimitSwitch) status |= kNegativeLimitNotActuated;
+    if (!actual.positiveLimitSwitch) status |= kPositiveLimitNotActuated;
     if (stoppedByG123_) status |= kStoppedByCondition;
     if (axis.DisplacedDuringOff()) status |= kDisplaced;
     if (axis.DisplacedDuringOff() || context.groupDisplaced) status |= kGroupDisplaced;
@@ -318,7 +319,7 @@ void AxisModule::ReplyInto(const ServoAxis& axis, const AxisModuleContext& conte
     reply.status = status;
     reply.cmdError = cmdError_;
     reply.axisError = axis.AxisError();
-    reply.position = EncodeModulePosition(axis.Position(), context.integerFormat);
+    reply.position = EncodeModulePosition(actual.position, context.integerFormat);
     reply.EncodeInto(module);
 }
 

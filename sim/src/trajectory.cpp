@@ -141,7 +141,7 @@ void Trajectory::Append(double duration, double startSpeed, double endSpeed) {
     distance_ += std::isinf(duration) ? kInfinity : (startSpeed + endSpeed) / 2.0 * duration;
 }
 
-double Trajectory::SegmentDistance(const Segment& s, double tau) const {
+inline double Trajectory::SegmentDistance(const Segment& s, double tau) const {
     if (s.startSpeed == s.endSpeed) return s.startSpeed * tau;
     return s.startSpeed * tau + (s.endSpeed - s.startSpeed) * s.duration * ShareIntegral(ramp_, tau / s.duration);
 }

@@ -39,6 +39,8 @@ TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
 TEST(BenchWorkloads, AnUnknownWorkloadIsRefused) {
     EXPECT_THROW(pac::bench::RunWorkload("no-such-workload", 1), std::invalid_argument);
     EXPECT_THROW(pac::bench::RunWorkload("plants-0", 1), std::invalid_argument);
+    EXPECT_THROW(pac::bench::RunWorkload("plants-2-pac0", 1), std::invalid_argument);
+    EXPECT_THROW(pac::bench::RunWorkload("plants-2x", 1), std::invalid_argument);
 }
 
 // The scale rows' instruction counts divide by every plant's scans: N plants for `cycles` PLC cycles are
@@ -50,6 +52,10 @@ TEST(BenchWorkloads, PlantsWorkloadCountsEveryPlantsScans) {
     EXPECT_EQ(three.scans, 3 * kScans);
     EXPECT_GE(one.jobs, 2);
     EXPECT_EQ(three.jobs, 3 * one.jobs) << "the plants share nothing: each does what one alone does";
+    // The same at the 1 ms controller cycle of the scale goal.
+    const pac::bench::WorkloadResult fast = pac::bench::RunWorkload("plants-3-pac1", kScans);
+    EXPECT_EQ(fast.scans, 3 * kScans);
+    EXPECT_GE(fast.jobs, 3 * one.jobs) << "a 1 ms controller cycle answers sooner: no fewer jobs in as many scans";
 }
 
 // The scan-cost ratio compares the library's CMD interface with the hand-written C only if both write the

@@ -46,7 +46,8 @@ struct JobOptions {
     bool limitSwitchMonitoring = true;
 };
 
-class ServoAxis {
+// Aligned to a cache line, so that the fields of every cycle (first in the object) share as few as possible.
+class alignas(64) ServoAxis {
 public:
     // std::invalid_argument from ServoAxisConfig::Validate(). The axis stands at config.startPosition, Axis ON,
     // drive enabled, referenced as config.referenced, at time 0.
@@ -151,6 +152,18 @@ public:
         return config_.positiveLimitSwitch && ActualMachine() >= *config_.positiveLimitSwitch;
     }
     bool ReferenceSwitch() const;
+    // Position(), NegativeLimitSwitch() and PositiveLimitSwitch() from one evaluation of the actual position:
+    // the axis module's reply asks for the three of every axis in every cycle.
+    struct ActualSample {
+        double position;
+        bool negativeLimitSwitch;
+        bool positiveLimitSwitch;
+    };
+    ActualSample SampleActual() const {
+        const double machine = ActualMachine();
+        return {machine + offset_, config_.negativeLimitSwitch && machine <= *config_.negativeLimitSwitch,
+                config_.positiveLimitSwitch && machine >= *config_.positiveLimitSwitch};
+    }
     double MinRange() const { return config_.minTraverseRange + shift_; }  // with the G29 shift
     double MaxRange() const { return config_.maxTraverseRange + shift_; }
     double Shift() const { return shift_; }                                  // sum of the G29 displacements
@@ -169,7 +182,7 @@ public:
     void RaiseAxisError(std::chrono::nanoseconds now, std::uint16_t number);
 
 private:
-    enum class Activity { kNone, kPositioning, kSettling, kBraking, kHoming };
+    enum class Activity : std::uint8_t { kNone, kPositioning, kSettling, kBraking, kHoming };  // one byte: see now_
     enum class HomingStep { kNone, kSearch, kSearchBrake, kCreep, kCreepBrake };
     enum class EventKind { kFollowingError, kLimitSwitch, kCapture, kHomingPoint, kTrajectoryEnd };
     struct Event {
@@ -238,49 +251,50 @@ private:
     void ChangeRegime(Change change);
     std::optional<std::chrono::nanoseconds> WindowEntry() const;
 
-    ServoAxisConfig config_;
+    // First, in one or two cache lines, what every cycle reads of each of the controller's 16 axes (Update(),
+    // the ONLINE supervision's following error, the group's displaced flag): the other fields of an axis
+    // without a job stay out of the cache.
     std::chrono::nanoseconds now_{0};
     // The time of the last Update() after which nothing changed: a new Update() to it has nothing to do.
-    bool settled_ = false;
     std::chrono::nanoseconds settledAt_{0};
-    mutable bool settledCommandedKnown_ = false;  // settledCommanded_ is CommandedMachine() at settledAt_
-    mutable double settledCommanded_ = 0.0;
     // NextEvent() as last searched, while nothing has changed the axis since (eventKnown_): the times it
     // finds follow from the profile and the settings alone, so a later search would find the same event
     // (RunEventsUntil). Every change comes through Advance() or Handle(), which forget it.
-    bool eventKnown_ = false;
     std::optional<Event> nextEvent_;
-
-    // Motion: the running profile (machine coordinates), its start, the job's target (NaN: none yet).
-    Trajectory trajectory_;
-    std::chrono::nanoseconds trajectoryStart_{0};
-    double target_ = 0.0;
     Activity activity_ = Activity::kNone;
+    bool settled_ = false;
+    bool eventKnown_ = false;
+    mutable bool settledCommandedKnown_ = false;  // settledCommanded_ is CommandedMachine() at settledAt_
+    bool blocked_ = false;    // injected: the actual position stays at blockedAt_
+    bool displaced_ = false;  // "displaced during OFF"
+    double disturbance_ = 0.0;  // injected: actual = commanded + disturbance_
+    mutable double settledCommanded_ = 0.0;
+    // Next, what every cycle reads of an axis with a module (its cycle and its reply).
+    double offset_ = 0.0;  // axis position = machine position + offset_
+    std::chrono::nanoseconds trajectoryStart_{0};  // the time base of trajectory_
+    DriveState drive_ = DriveState::kEnabled;
+    std::uint16_t axisError_ = 0;
+    bool axisOn_ = true;
+    bool driveDisabled_ = false;
+    bool interrupted_ = false;
+    bool referenced_ = false;
+
+    // Motion: the running profile (machine coordinates), its start (above), the job's target (NaN: none yet).
+    Trajectory trajectory_;
+    double target_ = 0.0;
     HomingStep homingStep_ = HomingStep::kNone;
     double homingPoint_ = 0.0;  // machine position the creep run loads the reference at (NaN: none ahead)
     double jobDeceleration_ = 0.0;
     bool monitorLimitSwitches_ = true;
-    bool interrupted_ = false;
     // Start of the current stay inside the tolerance window (possibly still ahead), if there is one.
     std::optional<std::chrono::nanoseconds> windowSince_;
 
-    // Drive.
-    bool axisOn_ = true;
-    bool driveDisabled_ = false;
-    DriveState drive_ = DriveState::kEnabled;
-    double offPosition_ = 0.0;  // actual machine position when the current went off
-    bool displaced_ = false;
+    ServoAxisConfig config_;
+    double offPosition_ = 0.0;  // actual machine position when the current went off (drive state above)
+    double blockedAt_ = 0.0;    // the actual position of a blocked axis
 
-    // Errors and injected disturbances.
-    std::uint16_t axisError_ = 0;
-    double disturbance_ = 0.0;
-    bool blocked_ = false;
-    double blockedAt_ = 0.0;
-
-    // Coordinates: axis position = machine position + offset_; shift_ is the G29 part of it.
-    double offset_ = 0.0;
+    // Coordinates: axis position = machine position + offset_ (above); shift_ is the G29 part of it.
     double shift_ = 0.0;
-    bool referenced_ = false;
     bool captureArmed_ = false;
     double homingCorrection_ = 0.0;
 };

@@ -81,17 +81,18 @@ private:
     const Segment* SegmentAt(double t) const;
     void Append(double duration, double startSpeed, double endSpeed);
 
+    // What PositionAt() reads in every cycle first, before the segments, so that it shares their cache lines.
     double start_ = 0.0;
-    double end_ = 0.0;
     double sign_ = 1.0;
+    double duration_ = 0.0;
+    std::size_t segmentCount_ = 0;
     RampType ramp_ = RampType::kLinear;
+    double end_ = 0.0;
+    double distance_ = 0.0;  // along the direction; infinity for Run
     // A profile has at most three segments (ramp, cruise, ramp): held inline, so that a new or copied profile
     // (every job, every stop) needs no allocation.
     static constexpr std::size_t kMaxSegments = 3;
     std::array<Segment, kMaxSegments> segments_{};
-    std::size_t segmentCount_ = 0;
-    double duration_ = 0.0;
-    double distance_ = 0.0;  // along the direction; infinity for Run
 };
 
 }  // namespace pac::sim
