@@ -13,6 +13,7 @@ import sys
 import unittest
 
 from tree_oracle import REPO, Oracle
+from pacst.fastparse import Decline  # noqa: E402 (tree_oracle puts the translator on the path)
 
 VERDICTS = os.path.join(REPO, "tests", "conformance", "matiec_verdicts", "snippets")
 CORPORA = {
@@ -34,6 +35,13 @@ _ORACLE = None
 # A POU's body alone (statement_list), as TwinCAT files and PLCopen XML keep it: what follows the last
 # END_VAR up to the POU's end, in the conformance suite's accepted files.
 _BODY = re.compile(r"^END_VAR[ \t]*\n(?!.*^END_VAR)(.*)^END_(?:FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.S | re.M)
+# A POU's declaration alone, as the same files keep it: up to its last END_VAR, which blark ends with the
+# POU's end (the start rule of each kind of POU); a TYPE's declaration is the whole file.
+_DECLARATION = re.compile(r"^(.*^END_VAR)[ \t]*\n(?!.*^END_VAR)", re.S | re.M)
+_ELEMENT_RULES = {"FUNCTION_BLOCK": ("function_block_type_declaration", "END_FUNCTION_BLOCK"),
+                  "FUNCTION": ("function_declaration", "END_FUNCTION"),
+                  "PROGRAM": ("program_declaration", "END_PROGRAM"), "TYPE": ("data_type_declaration", "")}
+_FIRST_WORD = re.compile(r"^(FUNCTION_BLOCK|FUNCTION|PROGRAM|TYPE)\b", re.M)
 
 
 def _compare_file(path):
@@ -53,6 +61,28 @@ def _compare_body(path):
     return path, _ORACLE.compare(found.group(1), "statement_list") if found and found.group(1).strip() else None
 
 
+def _declaration(path):
+    """(start rule, text) of the declaration alone of the file's first POU or type, or None."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    kind = _FIRST_WORD.search(text)
+    if kind is None:
+        return None
+    rule, end = _ELEMENT_RULES[kind.group(1)]
+    if not end:
+        return rule, text
+    found = _DECLARATION.search(text)
+    return (rule, f"{found.group(1)}\n{end}\n") if found else None
+
+
+def _compare_declaration(path):
+    global _ORACLE
+    if _ORACLE is None:
+        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+    found = _declaration(path)
+    return path, _ORACLE.compare(found[1], found[0]) + (found[0],) if found else None
+
+
 def _compare_all(paths):
     jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     if jobs <= 1:
@@ -63,9 +93,9 @@ def _compare_all(paths):
         return dict(pool.map(_compare_file, ordered))
 
 
-def _compare_bodies(paths):
+def _compare_bodies(paths, compare=_compare_body):
     with concurrent.futures.ProcessPoolExecutor(max_workers=2) as pool:
-        return {path: result for path, result in pool.map(_compare_body, paths) if result is not None}
+        return {path: result for path, result in pool.map(compare, paths) if result is not None}
 
 
 class Corpus(unittest.TestCase):
@@ -103,6 +133,34 @@ class Corpus(unittest.TestCase):
         for path, (verdict, what) in results.items():
             with self.subTest(path=os.path.relpath(path, REPO)):
                 self.assertEqual(verdict, "same", what)
+
+    def test_declarations_alone_equal_earleys(self):
+        """The declarations the PLCopen and TwinCAT readers parse alone (pacst.parsing.parse_text), each
+        from its POU's or type's rule, in the files of one element (a file of several is declined)."""
+        paths = CORPORA["conformance accept"] + CORPORA["user programs"] + CORPORA["user dialect"]
+        results = _compare_bodies(paths, _compare_declaration)
+        for path, (verdict, what, _) in results.items():
+            with self.subTest(path=os.path.relpath(path, REPO)):
+                self.assertNotEqual(verdict, "different", what)
+        fast = {rule for verdict, _, rule in results.values() if verdict == "same"}
+        self.assertEqual(fast, {rule for rule, _ in _ELEMENT_RULES.values()})  # every rule read alone
+
+    def test_the_librarys_declarations_take_the_fast_path(self):
+        """Their trees are those of the whole files (the same readers, test_every_tree_equals_earleys) but
+        for the empty body, which the test above compares with Earley's."""
+        oracle = Oracle()
+        declined, read = [], 0
+        for path in CORPORA["library"]:
+            found = _declaration(path)
+            if found is None:
+                continue
+            read += 1
+            try:
+                oracle.fast.parse(oracle.processed(found[1]), found[0])
+            except Decline as exc:
+                declined.append(f"{os.path.relpath(path, REPO)}: {exc}")
+        self.assertGreater(read, 100)
+        self.assertEqual(declined, [])
 
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]

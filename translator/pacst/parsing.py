@@ -104,11 +104,10 @@ class _FastFirst:
         return self._earley
 
     def parse(self, text, start):
-        if start in ("iec_source", "statement_list"):
-            try:
-                return self._fast.parse(text, start)
-            except Decline:
-                pass
+        try:
+            return self._fast.parse(text, start)  # declines the start rules it does not read
+        except Decline:
+            pass
         return self._earley_parser().parse(text, start=start)
 
 

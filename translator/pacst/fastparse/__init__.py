@@ -22,16 +22,29 @@ class FastParser:
         expressions = Expressions(vocabulary, Literals(vocabulary))
         self._statements = Statements(expressions)
         self._declarations = Declarations(expressions, self._statements)
+        # A POU's or type's declaration alone, as TwinCAT files and PLCopen XML keep it (blark gives it the
+        # element's end and parses it from the element's own rule).
+        self._elements = self._declarations.elements()
 
     def parse(self, text, start="iec_source"):
-        """blark's tree of `text` from the start rule iec_source, or statement_list (a POU's body alone, as
-        TwinCAT keeps it); raises Decline."""
+        """blark's tree of `text` from the start rule iec_source, statement_list (a POU's body alone, as
+        TwinCAT keeps it) or the rule of one element (a FUNCTION_BLOCK, FUNCTION, PROGRAM or TYPE alone);
+        raises Decline."""
         try:
             if start == "statement_list":
                 s = Scanner(text)
                 tree = self._statements.statement_list(s)
                 if tree is None or not s.at_end():
                     raise Decline("not a statement list alone")
+                return tree
+            if start in self._elements:
+                s = Scanner(text)
+                keyword, reader = self._elements[start]
+                if s.peek_word() != keyword:
+                    raise Decline(f"not a {keyword}")
+                tree = reader(s)
+                if not s.at_end():
+                    raise Decline(f"more than one {keyword}")
                 return tree
             if start != "iec_source":
                 raise Decline(f"start rule {start} not read here")

@@ -23,6 +23,13 @@ class Declarations:
                      "FUNCTION_BLOCK": self._function_block, "VAR_GLOBAL": self._globals,
                      "PROGRAM": self._program}
 
+    def elements(self):
+        """The start rule of each element read alone: its first keyword and its reader."""
+        return {"data_type_declaration": ("TYPE", self._type),
+                "function_declaration": ("FUNCTION", self._function),
+                "function_block_type_declaration": ("FUNCTION_BLOCK", self._function_block),
+                "program_declaration": ("PROGRAM", self._program)}
+
     def source(self, s):
         items = []
         while not s.at_end():
