@@ -4,8 +4,9 @@
  * programmer's Execute, Code, Param and Data in every scan the FB is called (SetPins); whether each FB is called
  * in a scan (a CASE step or an IF branch leaves it out: the calling contract of docs/fb/FB_PAC_Cmd.md); each
  * FB's Timeout and EndTimeout (a few ms); TwoStepWrite; the call order of the callers, anew in every scan; the
- * bus latency (the controller reads a module 0..LAG scans old, skipping any); the controller's reading of the
- * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
+ * bus latency (the controller reads a module 0..LAG scans old, skipping any; with -DCBMC__FREE_TIMING=1 in any
+ * later scan); the controller's reading of the handshake (a new command is SEND <> RECEIVE, or a SEND changed
+ * since the last module it read) and its restart
  * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on (-DCBMC__BLIPS=0 leaves it
  * out), and a PLC restart (the interface and the command FBs back to their cold-start values, the program's
  * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
@@ -37,7 +38,7 @@
 #ifndef CBMC__BLIPS /* a single all-zero scan while the controller runs on */
 #define CBMC__BLIPS 1
 #endif
-#ifndef CBMC__TWOSTEP /* TwoStepWrite: free (-1), or fixed to 0 or 1 to split one run over two CTest tests */
+#ifndef CBMC__TWOSTEP /* TwoStepWrite: free (-1), or fixed to 0 or 1 (a run split in two does not pay) */
 #define CBMC__TWOSTEP (-1)
 #endif
 #ifndef CBMC__FREE_TIMING /* the controller may leave any scan without a read: a controller cycle of any length */
