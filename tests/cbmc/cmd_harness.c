@@ -4,8 +4,9 @@
  * programmer's Execute, Code, Param and Data in every scan the FB is called (SetPins); whether each FB is called
  * in a scan (a CASE step or an IF branch leaves it out: the calling contract of docs/fb/FB_PAC_Cmd.md); each
  * FB's Timeout and EndTimeout (a few ms); TwoStepWrite; the call order of the callers, anew in every scan; the
- * bus latency (the controller reads a module 0..LAG scans old, skipping any); the controller's reading of the
- * handshake (a new command is SEND <> RECEIVE, or a SEND changed since the last module it read) and its restart
+ * bus latency (the controller reads a module 0..LAG scans old, skipping any; with -DCBMC__FREE_TIMING=1 in any
+ * later scan); the controller's reading of the handshake (a new command is SEND <> RECEIVE, or a SEND changed
+ * since the last module it read) and its restart
  * (RECEIVE back to 0 or to the last SEND), a single all-zero scan while it runs on (-DCBMC__BLIPS=0 leaves it
  * out), and a PLC restart (the interface and the command FBs back to their cold-start values, the program's
  * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
@@ -36,6 +37,12 @@
 #endif
 #ifndef CBMC__BLIPS /* a single all-zero scan while the controller runs on */
 #define CBMC__BLIPS 1
+#endif
+#ifndef CBMC__TWOSTEP /* TwoStepWrite: free (-1), or fixed to 0 or 1 (a run split in two does not pay) */
+#define CBMC__TWOSTEP (-1)
+#endif
+#ifndef CBMC__FREE_TIMING /* the controller may leave any scan without a read: a controller cycle of any length */
+#define CBMC__FREE_TIMING 0
 #endif
 
 #define PARKED_CODE 0x190B
@@ -116,9 +123,11 @@ static void ControllerStep(Controller *c, int n, BOOL twoStep, BYTE reply[8]) {
         c->lastSend = c->receive;
         c->downSince = 0;
     }
-    /* The module it reads: 0..LAG scans old, never older than the last one it read. */
+    /* The module it reads: 0..LAG scans old, never older than the last one it read. With CBMC__FREE_TIMING it
+     * may read none in this scan although a newer one is due: its cycle is then free, not at most LAG + 1 scans
+     * (docs/verification.md, "the slowest bus"). */
     const int lag = (int)(nondet_uchar() % (CBMC__LAG + 1));
-    if (n - 1 - lag > c->seen) {
+    if (n - 1 - lag > c->seen && (!CBMC__FREE_TIMING || nondet_bool())) {
         BYTE module[8];
         /* Without module consistency the data may still be those of the module before the flag's. */
         const BOOL torn = twoStep && nondet_bool();
@@ -243,7 +252,7 @@ int main(void) {
     static Watch watch[CBMC__CALLERS];
     Controller ctrl = {0};
     BYTE reply[8] = {0, 0, 0, 0, 0, 1, 0x20, 0}; /* home position, nothing outstanding */
-    const BOOL twoStep = nondet_bool();
+    const BOOL twoStep = CBMC__TWOSTEP < 0 ? nondet_bool() : CBMC__TWOSTEP != 0;
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
     int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
     int reachBlipBusy = 0;
