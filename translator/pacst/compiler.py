@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import system, user
+from . import system, user, varlen
 
 
 
@@ -1239,6 +1239,8 @@ class Compiler:
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
             raise self.err(item, "a function block instance cannot be CONSTANT")
+        if vtype.kind == "vla":
+            varlen.check_section(self, pou, section, item)
         if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
             raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
 
@@ -1247,7 +1249,7 @@ class Compiler:
         # a METHOD's or FUNCTION's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its
         # other VAR
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "var" and (
-            pou.owner is not None or pou.kind == "function")))
+            pou.owner is not None or pou.kind == "function")), in_out=section == "inout")
         value = user.initial_value(item.init)
         spec = getattr(item.init, "spec", None)
         fb_init_args = getattr(spec, "init_parameters", None) if _cls(spec) == "IndirectSimpleSpecification" else None
@@ -1393,6 +1395,8 @@ class Compiler:
             return "NULL"
         if t.kind == "interface":
             return f"(({t.cname}){{NULL, NULL}})"
+        if t.kind == "vla":  # user mode: an FB's ARRAY [*] before its first call
+            return varlen.default_c(t)
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:
