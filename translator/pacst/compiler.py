@@ -540,6 +540,8 @@ class Compiler:
                         user.string_length(self, tok)
                     return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
+            if cls == "DataType" and spec.indirection is not None and self.user:  # ARRAY [0..3] OF POINTER TO T
+                return self.pointer_type(spec, self._resolve_type(tok, True), spec.indirection)
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
@@ -825,8 +827,11 @@ class Compiler:
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
             if kind == "function" and constant_block is not None and not is_constant \
                     and self._SECTIONS.get(_cls(block)) == "var":
-                raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
-                                      "for constants too; put VAR CONSTANT last")
+                if not self.user:
+                    raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
+                                          "for constants too; put VAR CONSTANT last")
+                # user mode: pacst's C keeps each block's own; MATIEC's would not (so it is dialect)
+                self.dialect(block, "VAR after VAR CONSTANT in a FUNCTION (MATIEC takes its variables for constants)")
             if is_constant:
                 constant_block = block
             if not self.user:
