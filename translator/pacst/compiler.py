@@ -297,6 +297,9 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
+        if self.user and up in T.PLATFORM_WIDTH:  # __XINT, __UXINT, __XWORD
+            self.dialect(token, f"TwinCAT's {up}")
+            return T.USER_ELEMENTARY[T.PLATFORM_WIDTH[up]]
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
