@@ -476,6 +476,8 @@ class BodyCompiler:
             raise self.err(target, f"'{r.var.name}' cannot be written: {r.why_not}")
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
+        if r.type.kind == "vla":
+            raise self.err(target, varlen.NOT_WHOLE.format(what="an assignment to"))
         if self.comp.user and system.is_new(node.expression):  # p := __NEW(T)
             return system.new_assignment(self, r, node.expression, ind)
         te = self.ex.expr(node.expression, r.type)

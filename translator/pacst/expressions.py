@@ -693,6 +693,8 @@ class ExprCompiler:
                 return TE(T.BOOL, f"(({r.read()}) != NULL)")
             if getattr(r, "whole", None) is not None:
                 raise self.err(arg, "ADR of a bit: a bit has no address")
+            if r.type.kind == "vla":
+                raise self.err(arg, varlen.NOT_WHOLE.format(what="ADR of"))
             t = self.comp.pointer_to(r.type)
             return TE(t, f"(({t.cname})&({r.read()}))")
         if fn == "SIZEOF":
@@ -702,6 +704,8 @@ class ExprCompiler:
                 t = self.comp._resolve_type(arg.name, allow_fb=True)
                 return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
             r = self.body.ref(arg)
+            if r.type.kind == "vla":  # the caller's array's bytes
+                return TE(T.ELEMENTARY["UDINT"], varlen.size_c(r))
             return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({r.read()}))")
         names = {"MEMSET": ["DESTADDR", "FILLBYTE", "N"], "MEMCMP": ["PBUF1", "PBUF2", "N"]}.get(
             fn, ["DESTADDR", "SRCADDR", "N"])

@@ -26,6 +26,11 @@ class VarArrayType(T.Type):
         self.cname = f"__VLA_{own.replace(' ', '_')}_{dims}"
 
 
+# The refusal of an ARRAY [*] used whole (`what` it is used by): only its elements and bounds are.
+NOT_WHOLE = ("{what} an ARRAY [*] as a whole is not translated: use its elements, from LOWER_BOUND to UPPER_BOUND "
+             "(ADR(a[LOWER_BOUND(a, 1)]) is the address of the first)")
+
+
 def is_var_length(spec):
     """Whether the ARRAY specification `spec` has a `*` for a bound."""
     return any(_cls(sub) == "FullSubrange" for sub in getattr(spec, "subranges", []))
@@ -139,6 +144,13 @@ def bound(ex, node, fn):
         return TE(T.DINT, f"(({r.read()}).bounds[{2 * (te.value - 1) + upper}])")
     low, high = _shape(r.type, te.value)[0][-1]
     return TE(T.DINT, f"((DINT){high if upper else low})")
+
+
+def size_c(r):
+    """SIZEOF of the ARRAY [*] `r`: the bytes of the caller's array, its elements' count times an element's size."""
+    d = r.read()
+    count = " * ".join(f"(UDINT)(({d}).bounds[{2 * k + 1}] - ({d}).bounds[{2 * k}] + 1)" for k in range(r.type.dims))
+    return f"((UDINT)({count} * (UDINT)sizeof({r.type.elem.cname})))"
 
 
 def _dims(t):
