@@ -1248,7 +1248,7 @@ class Compiler:
         if vtype.is_fb and constant:
             raise self.err(item, "a function block instance cannot be CONSTANT")
         if vtype.kind == "vla":
-            varlen.check_section(self, pou, section, item)
+            varlen.check_section(self, pou, item)
         if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
             raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
 

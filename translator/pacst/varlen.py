@@ -31,6 +31,10 @@ NOT_WHOLE = ("{what} an ARRAY [*] as a whole is not translated: use its elements
              "(ADR(a[LOWER_BOUND(a, 1)]) is the address of the first)")
 
 
+ONLY_IN_OUT = ("ARRAY [*] is declared only in a VAR_IN_OUT of a FUNCTION, FUNCTION_BLOCK or METHOD (as in TwinCAT "
+               "and CODESYS): give the bounds here")
+
+
 def is_var_length(spec):
     """Whether the ARRAY specification `spec` has a `*` for a bound."""
     return any(_cls(sub) == "FullSubrange" for sub in getattr(spec, "subranges", []))
@@ -39,12 +43,11 @@ def is_var_length(spec):
 def declare(comp, spec, file, in_out):
     """The type of `ARRAY [*, ...] OF T` (`in_out`: declared in a VAR_IN_OUT, where it may stand)."""
     if not in_out:
-        raise comp.err(spec, "ARRAY [*] is declared only in a VAR_IN_OUT of a FUNCTION, FUNCTION_BLOCK or METHOD "
-                             "(as in TwinCAT and CODESYS): give the bounds here")
+        raise comp.err(spec, ONLY_IN_OUT)
     if not all(_cls(sub) == "FullSubrange" for sub in spec.subranges):
         raise comp.err(spec, "an ARRAY with '*' and bounds mixed: write a '*' for every dimension ([*, *])")
     elem = comp._spec_type(spec.type, allow_fb=True)
-    if elem.is_array or elem.kind == "vla":
+    if elem.is_array:
         raise comp.err(spec.type, "an ARRAY [*] of arrays: declare ARRAY [*, *] OF the element type")
     comp.dialect(spec, "an array of variable length (ARRAY [*])")
     key = ("vla", len(spec.subranges), elem.cname, elem.name)
@@ -56,11 +59,11 @@ def declare(comp, spec, file, in_out):
     return t
 
 
-def check_section(comp, pou, section, item):
-    """A VAR_IN_OUT of ARRAY [*] stands in a FUNCTION, FUNCTION_BLOCK or METHOD, not in a PROGRAM."""
-    if section != "inout" or pou.program:
-        raise comp.err(item, "ARRAY [*] is declared only in a VAR_IN_OUT of a FUNCTION, FUNCTION_BLOCK or METHOD "
-                             "(as in TwinCAT and CODESYS): give the bounds here")
+def check_section(comp, pou, item):
+    """A VAR_IN_OUT of ARRAY [*] stands in a FUNCTION, FUNCTION_BLOCK or METHOD, not in a PROGRAM (`declare` refuses
+    it in the other blocks)."""
+    if pou.program:
+        raise comp.err(item, ONLY_IN_OUT)
 
 
 def c_declaration(t):
