@@ -1178,6 +1178,9 @@ class Compiler:
             elif self.user and str(attrs.name).lower() == "constant" and section == "inout":
                 self.dialect(block, "VAR_IN_OUT CONSTANT")  # read only; a call may pass a value (expressions.py)
                 constant = True
+            elif self.user and str(attrs.name).lower() == "constant" and section == "input":
+                self.dialect(block, "VAR_INPUT CONSTANT")  # an input the POU only reads (TwinCAT, CODESYS)
+                constant = True
             else:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
@@ -1305,7 +1308,7 @@ class Compiler:
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
         v = T.Var(name, section, vtype, value, dv, constant)
-        if constant and value is None and section != "inout":
+        if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
             if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
