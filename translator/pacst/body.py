@@ -5,7 +5,7 @@ import re
 
 from . import literals, system
 from . import types as T
-from . import user
+from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
     inouts_by_reference, located, pos
 from .errors import StError, StErrors
@@ -341,6 +341,8 @@ class BodyCompiler:
                 r = self._pointer_index(r, el)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
                 r = self._string_index(r, el)
+            elif ecls == "SubscriptList" and r.type.kind == "vla":  # user mode: ARRAY [*]
+                r = varlen.index(self, r, el)
             elif ecls == "SubscriptList":
                 if not r.type.is_array:
                     raise self.err(el, f"{r.type.name} is not an array")
@@ -474,6 +476,8 @@ class BodyCompiler:
             raise self.err(target, f"'{r.var.name}' cannot be written: {r.why_not}")
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
+        if r.type.kind == "vla":
+            raise self.err(target, varlen.NOT_WHOLE.format(what="an assignment to"))
         if self.comp.user and system.is_new(node.expression):  # p := __NEW(T)
             return system.new_assignment(self, r, node.expression, ind)
         te = self.ex.expr(node.expression, r.type)
@@ -845,6 +849,8 @@ class BodyCompiler:
                 te = self.ex.expr(p.value, fv.type)
                 value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))
                 pre.append(f"{ind}__PACST_SETP({member}, , {value});")
+            elif fv.type.kind == "vla":  # ARRAY [*] (user mode): the member describes the caller's array
+                pre.append(f"{ind}{member}.value = {varlen.descriptor(self.ex, p.value, fv)};")
             elif fv.constant:  # VAR_IN_OUT CONSTANT (user mode): read only, a value may be passed
                 te = self.ex.expr(p.value, fv.type)
                 pre.append(f"{ind}{member}.value = {self.ex.coerce(te, fv.type, p.value, 'argument')};")

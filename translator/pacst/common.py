@@ -84,11 +84,12 @@ def inouts_by_reference(pou):
     """The VAR_IN_OUTs that the FUNCTION_BLOCK `pou`'s body reaches through pointer parameters, in declaration
     order (docs/translator.md, "VAR_IN_OUT of a function block"): every one not CONSTANT, of an FB with no
     METHOD, ACTION, PROPERTY, INTERFACE or base (those read the FB's variables between its calls, where only
-    the member holds a value). None of a PROGRAM (only its host calls it), a FUNCTION or a standard FB."""
+    the member holds a value); no ARRAY [*], whose member is the descriptor of the caller's array (varlen.py).
+    None of a PROGRAM (only its host calls it), a FUNCTION or a standard FB."""
     if pou is None or pou.kind != "fb" or pou.program or pou.owner is not None or pou.methods \
             or pou.properties or pou.interfaces or pou.base is not None:
         return []
-    return [v for v in pou.vars if v.section == "inout" and not v.constant]
+    return [v for v in pou.vars if v.section == "inout" and not v.constant and v.type.kind != "vla"]
 
 
 def inout_parameter(var):

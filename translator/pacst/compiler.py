@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import system, user
+from . import system, user, varlen
 
 
 
@@ -301,6 +301,9 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
+        if self.user and up in T.PLATFORM_WIDTH:  # __XINT, __UXINT, __XWORD
+            self.dialect(token, f"TwinCAT's {up}")
+            return T.USER_ELEMENTARY[T.PLATFORM_WIDTH[up]]
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
@@ -557,6 +560,8 @@ class Compiler:
                         user.string_length(self, tok)
                     return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
+            if cls == "DataType" and spec.indirection is not None and self.user:  # ARRAY [0..3] OF POINTER TO T
+                return self.pointer_type(spec, self._resolve_type(tok, True), spec.indirection)
             if cls == "DataType" and spec.indirection is not None:
                 raise self.err(spec, "pointers and references are outside the portable subset")
             return self._resolve_type(tok, allow_fb)
@@ -842,8 +847,11 @@ class Compiler:
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
             if kind == "function" and constant_block is not None and not is_constant \
                     and self._SECTIONS.get(_cls(block)) == "var":
-                raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
-                                      "for constants too; put VAR CONSTANT last")
+                if not self.user:
+                    raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
+                                          "for constants too; put VAR CONSTANT last")
+                # user mode: pacst's C keeps each block's own; MATIEC's would not (so it is dialect)
+                self.dialect(block, "VAR after VAR CONSTANT in a FUNCTION (MATIEC takes its variables for constants)")
             if is_constant:
                 constant_block = block
             if not self.user:
@@ -1187,6 +1195,9 @@ class Compiler:
             elif self.user and str(attrs.name).lower() == "constant" and section == "inout":
                 self.dialect(block, "VAR_IN_OUT CONSTANT")  # read only; a call may pass a value (expressions.py)
                 constant = True
+            elif self.user and str(attrs.name).lower() == "constant" and section == "input":
+                self.dialect(block, "VAR_INPUT CONSTANT")  # an input the POU only reads (TwinCAT, CODESYS)
+                constant = True
             else:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
@@ -1256,6 +1267,8 @@ class Compiler:
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
             raise self.err(item, "a function block instance cannot be CONSTANT")
+        if vtype.kind == "vla":
+            varlen.check_section(self, pou, item)
         if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
             raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
 
@@ -1264,7 +1277,7 @@ class Compiler:
         # a METHOD's or FUNCTION's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its
         # other VAR
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "var" and (
-            pou.owner is not None or pou.kind == "function")))
+            pou.owner is not None or pou.kind == "function")), in_out=section == "inout")
         value = user.initial_value(item.init)
         spec = getattr(item.init, "spec", None)
         fb_init_args = getattr(spec, "init_parameters", None) if _cls(spec) == "IndirectSimpleSpecification" else None
@@ -1312,7 +1325,7 @@ class Compiler:
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
         v = T.Var(name, section, vtype, value, dv, constant)
-        if constant and value is None and section != "inout":
+        if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
             if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
@@ -1410,6 +1423,8 @@ class Compiler:
             return "NULL"
         if t.kind == "interface":
             return f"(({t.cname}){{NULL, NULL}})"
+        if t.kind == "vla":  # user mode: an FB's ARRAY [*] before its first call
+            return varlen.default_c(t)
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:

@@ -6,6 +6,7 @@ import shutil
 import tempfile
 
 from . import types as T
+from . import varlen
 from .body import program_instance
 from .common import inout_parameter, inouts_by_reference
 
@@ -77,6 +78,8 @@ class Emitter:
             out.append(f"typedef struct {t.target.cname} *{t.cname};")
         elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
             out.append(f"typedef {t.target.cname} *{t.cname};")
+        elif t.kind == "vla":  # user mode: ARRAY [*], the caller's array's address and bounds
+            out.append(varlen.c_declaration(t))
         elif t.kind == "interface":  # user mode: an FB instance's address and the table of its METHODs
             out.append(f"struct {t.cname}__VT;")
             out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
@@ -91,6 +94,8 @@ class Emitter:
             out.append(f"  *v = {t.cvalue(t.default)};")
         elif t.is_pointer:
             out.append("  *v = NULL;")
+        elif t.kind == "vla":
+            out.append(f"  *v = {varlen.default_c(t)};")
         elif t.kind == "interface":
             out.append("  v->inst = NULL;")
             out.append("  v->vt = NULL;")

@@ -6,7 +6,7 @@ import re
 
 from . import literals, system
 from . import types as T
-from . import user
+from . import user, varlen
 from .common import TE, _cls, _name, pos
 from .names import STANDARD_FUNCTIONS
 
@@ -614,6 +614,8 @@ class ExprCompiler:
         if self.comp.user and up in ("__NEW", "__DELETE"):
             raise self.err(node, f"{up} inside an expression: TwinCAT takes __NEW in an assignment only "
                                  "(p := __NEW(T)), __DELETE as a statement (__DELETE(p);)")
+        if self.comp.user and up in ("LOWER_BOUND", "UPPER_BOUND") and up not in self.comp.pous:
+            return varlen.bound(self, node, up)
         if self.comp.user and up in _MEMORY and up not in self.comp.pous and self.body is not None:
             return self._memory(node, up)
         m = re.fullmatch(r"TO_([A-Z]+)", up)
@@ -691,6 +693,8 @@ class ExprCompiler:
                 return TE(T.BOOL, f"(({r.read()}) != NULL)")
             if getattr(r, "whole", None) is not None:
                 raise self.err(arg, "ADR of a bit: a bit has no address")
+            if r.type.kind == "vla":
+                raise self.err(arg, varlen.NOT_WHOLE.format(what="ADR of"))
             t = self.comp.pointer_to(r.type)
             return TE(t, f"(({t.cname})&({r.read()}))")
         if fn == "SIZEOF":
@@ -700,6 +704,8 @@ class ExprCompiler:
                 t = self.comp._resolve_type(arg.name, allow_fb=True)
                 return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
             r = self.body.ref(arg)
+            if r.type.kind == "vla":  # the caller's array's bytes
+                return TE(T.ELEMENTARY["UDINT"], varlen.size_c(r))
             return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({r.read()}))")
         names = {"MEMSET": ["DESTADDR", "FILLBYTE", "N"], "MEMCMP": ["PBUF1", "PBUF2", "N"]}.get(
             fn, ["DESTADDR", "SRCADDR", "N"])
@@ -1030,6 +1036,9 @@ class ExprCompiler:
                 if v.section == "inout":
                     raise self.err(node, f"VAR_IN_OUT '{v.name}' of {pou.name} must be passed")
                 args.append(f"&({v.type.cname}){{0}}")
+                continue
+            if v.type.kind == "vla":  # ARRAY [*] (user mode): the address of a descriptor of the caller's array
+                args.append(f"&({varlen.descriptor(self, arg, v)})")
                 continue
             if v.section == "inout" and v.constant and self.body is not None:  # VAR_IN_OUT CONSTANT (user mode)
                 args.append(self._constant_inout(arg, v))

@@ -31,6 +31,8 @@ def type_json(t):
         return {"kind": "pointer", "name": t.name, "c_type": t.cname, "target": type_json(t.target)}
     if t.kind == "interface":
         return {"kind": "interface", "name": t.name, "c_type": t.cname}
+    if t.kind == "vla":  # an ARRAY [*]: the descriptor of the array an FB was last given
+        return {"kind": "var_length_array", "name": t.name, "c_type": t.cname, "element": type_json(t.elem)}
     return {"kind": "elementary", "name": t.name, "c_type": t.cname, "size": _C_SIZES[t.cname]}
 
 

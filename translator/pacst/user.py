@@ -11,6 +11,7 @@ import os
 import re
 
 from . import types as T
+from . import varlen
 from .common import _cls, _name, pos
 from .errors import StError
 from .names import reserved_reason
@@ -141,11 +142,12 @@ def string_capacity(comp, spec, n):
     return n
 
 
-def inline_array(comp, spec, file):
+def inline_array(comp, spec, file, in_out=False):
     """The type of an inline `ARRAY [lo..hi] OF T`: one per bounds and element type, named as MATIEC
-    names it (`__ARRAY_OF_BYTE_8`; arrays of equal length share the C type)."""
-    if any(_cls(sub) != "PartialSubrange" for sub in spec.subranges):
-        raise comp.err(spec, "ARRAY [*] is not translated: give the bounds")
+    names it (`__ARRAY_OF_BYTE_8`; arrays of equal length share the C type). `ARRAY [*] OF T` in a VAR_IN_OUT
+    (`in_out`): varlen.py."""
+    if varlen.is_var_length(spec):
+        return varlen.declare(comp, spec, file, in_out)
     elem = comp._spec_type(spec.type, allow_fb=True)
     if len(spec.subranges) > 1:  # ARRAY [0..2, 0..3] OF T: an array of rows, indexed [i, j] or [i][j]
         comp.dialect(spec, "a multi-dimensional array")
@@ -180,14 +182,14 @@ def _array_type(comp, low, high, elem, file):
     return t
 
 
-def var_type(comp, init, allow_fb):
+def var_type(comp, init, allow_fb, in_out=False):
     """(type, STRING length or None) of a user variable's initialisation: inline arrays and sized
-    STRINGs besides what the library's subset declares."""
+    STRINGs besides what the library's subset declares; ARRAY [*] in a VAR_IN_OUT (`in_out`)."""
     cls = _cls(init)
     if cls == "ArrayTypeInitialization":
         if init.indirection is not None:  # POINTER TO ARRAY [0..24] OF I_Logger
             return comp.pointer_type(init, inline_array(comp, init.spec, comp.file), init.indirection), None
-        return inline_array(comp, init.spec, comp.file), None
+        return inline_array(comp, init.spec, comp.file, in_out), None
     if cls == "InitializedStructure":  # p : ST_Point := (X := 1, Y := 2); Delay : TON := (PT := T#1S)
         return comp._resolve_type(init.name, allow_fb=allow_fb), None
     if cls == "StringTypeInitialization" or cls == "TypeInitialization":
