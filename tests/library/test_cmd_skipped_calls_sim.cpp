@@ -677,7 +677,7 @@ TEST_P(CmdSkippedCalls, AControllerRestartDuringTheColdStartsFirstReadHoldsNoSto
 // FB_PAC_CmdInterface.ResyncStep: a PLC cold start whose first read the controller never answers (its replies
 // frozen, the status on). The read goes back to SEND = RECEIVE ResyncStep after its toggle (T#0S: the default
 // 250 ms), is toggled anew as long after that, and each later pair of waits is twice as long: one wait in time,
-// the same after a controller restart (docs/fb/FB_PAC_Cmd.md).
+// whose first step after a controller restart is the settling round trip instead (docs/fb/FB_PAC_Cmd.md).
 TEST_P(CmdSkippedCalls, TheParkedReadsWaitsAreResyncStepThenTwiceAsLong) {
     const auto plcCycle = std::chrono::milliseconds(GetParam().sharing.timing.plcMs);
     for (const auto step : {0ms, 400ms}) {
