@@ -811,7 +811,10 @@ int WrapperCasesFailing(TwoCallerPlc& plc, const Wrapped& w) {
 // FB_PAC_Cmd (docs/fb/FB_PAC_Cmd.md) when the program leaves them out: FB_PAC_ModeCommand (0A81 and 0603 in
 // turn: HOME POSITION and ONLINE, its OpStatus the status reached), FB_PAC_SwitchAxis (0A98 and 0A97 in turn),
 // FB_PAC_SetAxisReference (0A86, ActualPosition the position set), FB_PAC_SetAxisSpeed, FB_PAC_SetAxisAcceleration
-// and FB_PAC_SetMeasuringMode (0AA0 and 0AA1 in turn), on axis 2.
+// and FB_PAC_SetMeasuringMode (0AA0 and 0AA1 in turn), on axis 2. Each FB broken on purpose, of the 8,736 cases
+// (78 on each of the 112 readings and timings): FB_PAC_ModeCommand Done at the acknowledgement, 2,296 failed;
+// FB_PAC_SwitchAxis sending 0A97 for an off, 4,368; FB_PAC_SetAxisReference not taking ActualPosition at Done,
+// 8,736; FB_PAC_SetMeasuringMode sending 0AA0 for a reset, 4,368.
 TEST_P(CmdSkippedCalls, TheModeAndAxisSettingFbsEndDoneForTheirOwnCommandWhateverScansTheyMiss) {
     TwoCallerPlc plc(GetParam());
     plc.Boot();

@@ -264,7 +264,9 @@ FreeCommand WriteNearZeroCheck(std::uint32_t& from, int target) {
 // that verifies one XOR and also takes "0" as "not checked", writes whose text XORs to 0, 1, 2 or 3 (a CHECK of
 // "0", or one spoilt bit from it, under one rule), the FB left out for 1 to 6 scans from 1 to 60 scans after the
 // edge: while AUTO's probe (190B) is on its way, while its reply comes in, while the write's frame goes out and
-// while its reply comes in. No frame is taken on a "0" alone, each write ends Done, carried out once.
+// while its reply comes in. No frame is taken on a "0" alone, each write ends Done, carried out once. With
+// F_PAC_Rs232FrameText's leading zero taken out, 90 of the 360 cases failed on each of the three timings whose
+// controller takes "0" (the texts whose CHECK reads "0" under the rule the probe confirmed).
 TEST_P(Rs232SkippedCalls, AutoBeforeARuleIsConfirmedNeverSendsACheckOfZeroWhateverScansItMisses) {
     FreeRs232Program program(GetParam());
     program.Prepare();
