@@ -174,6 +174,25 @@ Command StartFarMove(TwoCallerPlc& plc, float fraction) {
     return move;
 }
 
+// Scans until FB 0 (`fb0Final`: FB 0 or the FB the program calls in its place) and FB 1, once edged, ended; FB 0
+// left out for `skip` scans from `offset` scans on, FB 1 edged in the first of them. The scans run, and whether
+// FB 1 was edged.
+std::pair<int, bool> RunLeavingFb0Out(TwoCallerPlc& plc, int offset, int skip, const std::function<bool()>& fb0Final) {
+    bool otherEdged = false;
+    int n = 0;
+    for (; n < 30000 && !(fb0Final() && (!otherEdged || plc.Final(1))); ++n) {
+        const bool away = n >= offset && n < offset + skip;
+        plc.Call(0, !away);
+        if (away && !otherEdged) {
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            otherEdged = true;
+        }
+        plc.Scan();
+    }
+    plc.Call(0, true);
+    return {n, otherEdged};
+}
+
 class CmdSkippedCalls : public ::testing::TestWithParam<SkipCase> {};
 
 // PLC scans in one controller cycle.
@@ -202,18 +221,7 @@ TEST_P(CmdSkippedCalls, EachFbEndsDoneForItsOwnCommandWhateverScansItMisses) {
                 plc.Set(0, own);
                 plc.Set(1, other);
                 plc.Fb(0)->EXECUTE.value = TRUE;
-                bool otherEdged = false;
-                int n = 0;
-                for (; n < 30000 && !(plc.Final(0) && (!otherEdged || plc.Final(1))); ++n) {
-                    const bool away = n >= offset && n < offset + skip;
-                    plc.Call(0, !away);
-                    if (away && !otherEdged) {
-                        plc.Fb(1)->EXECUTE.value = TRUE;
-                        otherEdged = true;
-                    }
-                    plc.Scan();
-                }
-                plc.Call(0, true);
+                const auto [n, otherEdged] = RunLeavingFb0Out(plc, offset, skip, [&] { return plc.Final(0); });
                 ASSERT_TRUE(plc.Final(0) && (!otherEdged || plc.Final(1))) << "Busy after " << n << " scans";
                 const auto taken = plc.Taken();
                 EXPECT_TRUE(plc.Fb(0)->DONE.value) << "ErrorID " << std::hex << plc.Fb(0)->ERRORID.value;
@@ -775,18 +783,7 @@ int WrapperCasesFailing(TwoCallerPlc& plc, const Wrapped& w) {
             plc.Taken();
             const Command own = w.aim(run++);
             plc.Set(1, other);
-            bool otherEdged = false;
-            int n = 0;
-            for (; n < 30000 && !((w.done() || w.error()) && (!otherEdged || plc.Final(1))); ++n) {
-                const bool away = n >= offset && n < offset + skip;
-                plc.Call(0, !away);
-                if (away && !otherEdged) {
-                    plc.Fb(1)->EXECUTE.value = TRUE;
-                    otherEdged = true;
-                }
-                plc.Scan();
-            }
-            plc.Call(0, true);
+            const auto [n, otherEdged] = RunLeavingFb0Out(plc, offset, skip, [&] { return w.done() || w.error(); });
             const auto taken = plc.Taken();
             const bool done = w.done();
             const int takenOwn = Count(taken, own);
@@ -814,7 +811,8 @@ int WrapperCasesFailing(TwoCallerPlc& plc, const Wrapped& w) {
 // and FB_PAC_SetMeasuringMode (0AA0 and 0AA1 in turn), on axis 2. Each FB broken on purpose, of the 8,736 cases
 // (78 on each of the 112 readings and timings): FB_PAC_ModeCommand Done at the acknowledgement, 2,296 failed;
 // FB_PAC_SwitchAxis sending 0A97 for an off, 4,368; FB_PAC_SetAxisReference not taking ActualPosition at Done,
-// 8,736; FB_PAC_SetMeasuringMode sending 0AA0 for a reset, 4,368.
+// 8,736; FB_PAC_SetAxisSpeed and FB_PAC_SetAxisAcceleration sending 100.0 whatever their pin, 8,624 each (all but
+// the run that asked for 100.0); FB_PAC_SetMeasuringMode sending 0AA0 for a reset, 4,368.
 TEST_P(CmdSkippedCalls, TheModeAndAxisSettingFbsEndDoneForTheirOwnCommandWhateverScansTheyMiss) {
     TwoCallerPlc plc(GetParam());
     plc.Boot();
