@@ -117,6 +117,9 @@ void SerialPort::OnFrame(const rs232::Rs232Event& frame, std::chrono::nanosecond
         if (config_.answerBadCheck) Send(ack_, now, host);
         return;
     }
+    if (config_.acceptZeroCheck && config_.verify != CheckVerification::kNone && std::atoi(frame.check.c_str()) == 0) {
+        ++counters_.unchecked;  // "0" may be the XOR too: the controller cannot tell, nothing was verified
+    }
     // Any frame is a new request: the command reported so far is no longer followed (as on the CMD
     // interface, docs/sim_cmd.md); its axis goes on.
     pending_ = PendingCommand{};

@@ -86,6 +86,10 @@ public:
         }
     }
 
+    // A PLC restart between commands: a fresh FB (no CHECK rule confirmed); the controller keeps its last reply.
+    void RestartPlc() { cmd_ = PAC_FB(FB_PAC_RS232CMD); }
+    const pac::sim::SerialCounters& Counters() { return rig_.Controller().Serial().Counters(); }
+
     const std::vector<std::string>& Violations() const { return log_.Texts(); }
     const FreeCaller& Caller() const { return caller_; }
     const std::map<std::uint16_t, int>& DoneCodes() const { return doneCodes_; }
@@ -241,8 +245,52 @@ TEST_P(Rs232SkippedCalls, ACommandEndsDoneForItselfWhateverScansItMisses) {
 
 INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkippedCalls,
                          ::testing::Values(Rs232FreeCase{9600, 1, 10}, Rs232FreeCase{38400, 2, 3},
-                                           Rs232FreeCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false}),
+                                           Rs232FreeCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false},
+                                           Rs232FreeCase{9600, 2, 10, pac::sim::CheckVerification::kXorWithEtx, true}),
                          Rs232FreeCaseName);
+
+// A write of N5 whose text XORs to `target` (0..3): under one of the two XOR rules its CHECK would read "0" or be
+// one spoilt bit from it. The value: the first from `from` on.
+FreeCommand WriteNearZeroCheck(std::uint32_t& from, int target) {
+    for (;; ++from) {
+        const std::string text = "0906;5;0;" + std::to_string(from);
+        int sum = 0;
+        for (char ch : text) sum ^= static_cast<unsigned char>(ch);
+        if (sum == target) return {code::kPutIntReg, 5, from++};
+    }
+}
+
+// Issue 32, item 6 with skipped calls: a fresh FB after each PLC restart (AUTO, no rule confirmed), a controller
+// that verifies one XOR and also takes "0" as "not checked", writes whose text XORs to 0, 1, 2 or 3 (a CHECK of
+// "0", or one spoilt bit from it, under one rule), the FB left out for 1 to 6 scans from 1 to 60 scans after the
+// edge: while AUTO's probe (190B) is on its way, while its reply comes in, while the write's frame goes out and
+// while its reply comes in. No frame is taken on a "0" alone, each write ends Done, carried out once. With
+// F_PAC_Rs232FrameText's leading zero taken out, 90 of the 360 cases failed on each of the three timings whose
+// controller takes "0" (the texts whose CHECK reads "0" under the rule the probe confirmed).
+TEST_P(Rs232SkippedCalls, AutoBeforeARuleIsConfirmedNeverSendsACheckOfZeroWhateverScansItMisses) {
+    FreeRs232Program program(GetParam());
+    program.Prepare();
+    ASSERT_FALSE(HasFatalFailure());
+    std::uint32_t value = 1000;
+    int failing = 0;
+    for (int length = 1; length <= 6; ++length) {
+        for (int from = 1; from <= 60; ++from) {
+            const FreeCommand command = WriteNearZeroCheck(value, from % 4);
+            SCOPED_TRACE("0906;5;0;" + std::to_string(command.data) + ", " + std::to_string(length) +
+                         " scans left out from scan " + std::to_string(from) + " after the edge");
+            const auto uncheckedBefore = program.Counters().unchecked;
+            const std::size_t violationsBefore = program.Violations().size();
+            program.RestartPlc();
+            const bool done = program.RunScripted(command, from, length, false) == FreeCaller::Ended::kDone;
+            const bool unchecked = program.Counters().unchecked != uncheckedBefore;
+            EXPECT_TRUE(done);
+            EXPECT_FALSE(unchecked) << "a frame taken on a CHECK of \"0\"";
+            if (!done || unchecked || program.Violations().size() != violationsBefore) ++failing;
+        }
+    }
+    for (const std::string& v : program.Violations()) ADD_FAILURE() << v;
+    RecordProperty("CasesFailing", failing);
+}
 
 std::vector<Rs232FreeCase> Rs232FreeCases() {
     std::vector<Rs232FreeCase> cases;

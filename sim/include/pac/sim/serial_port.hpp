@@ -67,6 +67,7 @@ struct SerialCounters {
     std::uint64_t commands = 0;        // ... carried out
     std::uint64_t polls = 0;
     std::uint64_t checkErrors = 0;     // 16
+    std::uint64_t unchecked = 0;       // ... taken with a CHECK of "0" (acceptZeroCheck): unverified
     std::uint64_t sequenceErrors = 0;  // 17, 18
     std::uint64_t replies = 0;
 };
