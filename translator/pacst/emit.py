@@ -242,13 +242,17 @@ class Emitter:
         out.append("}")
         out.append("")
         by_reference = inouts_by_reference(pou)
+        # The body of an FB that one ST call runs (a part of another FB) goes into that call where the compiler
+        # sees both (one C unit): no entry, exit and argument passing in every scan. It stays a function of
+        # the C interface too.
+        inline = "PACST_INLINE_ONCE " if self.comp.fb_call_sites.get(pou.cname, 0) == 1 and not pou.program else ""
         if by_reference:  # the body works on the caller's variables; from C, on the members
             addresses = ", ".join(f"&data__->{v.cname}.value" for v in by_reference)
             out += [f"void {pou.cname}_body__({pou.cname} *data__) {{",
                     f"  {pou.cname}_body_ref__(data__, {addresses});", "}", ""]
-            out.append(f"void {pou.cname}_body_ref__({self._body_ref_params(pou)}) {{")
+            out.append(f"{inline}void {pou.cname}_body_ref__({self._body_ref_params(pou)}) {{")
         else:
-            out.append(f"void {pou.cname}_body__({pou.cname} *data__) {{")
+            out.append(f"{inline}void {pou.cname}_body__({pou.cname} *data__) {{")
         out.append("  if (!data__->EN.value) {")
         out.append("    data__->ENO.value = FALSE;")
         out.append("    return;")
