@@ -223,8 +223,25 @@ class Emitter:
         for kind, obj, _ in items:
             out += self._decl(kind, obj, emitted)
             out.append("")
-        out += ["#ifdef __cplusplus", "}", "#endif", "", "#endif /* __POUS_H */", ""]
+        out += ["#ifdef __cplusplus", "}", ""]
+        out += self._body_ref_overloads()
+        out += ["#endif", "", "#endif /* __POUS_H */", ""]
         return "\n".join(out)
+
+    def _body_ref_overloads(self):
+        """For C++ callers: `pacst::BodyRef(&fb, &inout, ...)` runs `<FB>_body_ref__` whatever the FB's type, so that
+        a template (the test rig's) can pass its own variable to an FB's VAR_IN_OUT instead of copying it into the
+        member and back."""
+        if not self.by_reference:
+            return []
+        pous = [obj for kind, obj, _ in self.program.items if kind == "pou" and inouts_by_reference(obj)]
+        if not pous:
+            return []
+        out = ["namespace pacst {"]
+        for pou in pous:
+            args = ", ".join(["data__"] + [inout_parameter(v) for v in inouts_by_reference(pou)])
+            out.append(f"inline void BodyRef({self._body_ref_params(pou)}) {{ {pou.cname}_body_ref__({args}); }}")
+        return out + ["}  // namespace pacst", ""]
 
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
