@@ -237,11 +237,11 @@ class Emitter:
         pous = [obj for kind, obj, _ in self.program.items if kind == "pou" and inouts_by_reference(obj)]
         if not pous:
             return []
-        out = ["namespace pacst {"]
+        out = ['extern "C++" {  // also where POUS.h is included inside extern "C" (pac/st_program.hpp)', "namespace pacst {"]
         for pou in pous:
             args = ", ".join(["data__"] + [inout_parameter(v) for v in inouts_by_reference(pou)])
             out.append(f"inline void BodyRef({self._body_ref_params(pou)}) {{ {pou.cname}_body_ref__({args}); }}")
-        return out + ["}  // namespace pacst", ""]
+        return out + ["}  // namespace pacst", "}", ""]
 
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
