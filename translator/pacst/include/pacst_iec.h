@@ -213,8 +213,10 @@ static inline void __pacst_fault(const char *where, const char *what, long value
 
 /* The body of an FB that one ST call of the program runs: inlined into that call where the compiler sees both
  * (the translated library compiled as one C unit), still defined for callers from C (its declaration in
- * POUS.h is not inline, so this is the external definition). The model checker gets the plain function. */
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CPROVER__)
+ * POUS.h is not inline, so this is the external definition). Only where the compiler optimises: an unoptimised
+ * build (the coverage build) keeps one copy of each body, whose counters are the lines' and branches' only
+ * ones. The model checker gets the plain function. */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__CPROVER__)
 #define PACST_INLINE_ONCE __attribute__((always_inline)) inline
 #else
 #define PACST_INLINE_ONCE
