@@ -141,7 +141,7 @@ int PrintScanCost(const std::string& self) {
                 "FB_PAC_CmdInterface plus one FB_PAC_Cmd; the hand-written C (bench/cmd_handshake.c) does the same "
                 "for one caller, without what only sharing needs (ids, tickets, the queue, the owner's "
                 "keep-alive), in plain C without IEC wrappers. Not counted on either side: the bench copying the "
-                "images and the channel in and out.\n\n", kCostScans);
+                "images in and out (the channel too, on MATIEC's C; on pacst's the FB works on it).\n\n", kCostScans);
     int failures = PrintSideBySide();
     if (!ValgrindAvailable()) {
         std::printf("valgrind not found: no scan cost (apt-get install valgrind).\n\n");

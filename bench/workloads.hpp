@@ -17,7 +17,12 @@ struct Workload {
 
 // The functions a workload's rows are measured on.
 namespace measured {
+// The rig runs a command FB on its channel (pacst's C: the body on the channel itself; MATIEC's: through the member).
+#ifdef PACST_BODY_REF
+inline const char* const kCmd = "FB_PAC_CMD_body_ref__";
+#else
 inline const char* const kCmd = "FB_PAC_CMD_body__";
+#endif
 inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";

@@ -871,6 +871,10 @@ class BodyCompiler:
         missing = [fv.name for fv in fbt.vars if fv.section == "inout" and fv.cname not in given]
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
+        # A call through a pointer or reference (user mode) may reach an instance of the caller's own type:
+        # it keeps the body out of line (PACST_INLINE_ONCE must never meet a recursion).
+        direct = "*" not in inst and inst.count("->") <= 1
+        self.comp.fb_call_sites[fbt.cname] = self.comp.fb_call_sites.get(fbt.cname, 0) + (1 if direct else 2)
         if not by_reference:
             return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
         args = "".join(", " + addresses.get(fv.cname, f"&{inst}.{fv.cname}.value") for fv in by_reference)

@@ -149,6 +149,7 @@ class Compiler:
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
+        self.fb_call_sites = {}  # FB type cname -> the ST calls of its body in the program (an inline body: one)
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`

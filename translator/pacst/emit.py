@@ -228,8 +228,25 @@ class Emitter:
         for kind, obj, _ in items:
             out += self._decl(kind, obj, emitted)
             out.append("")
-        out += ["#ifdef __cplusplus", "}", "#endif", "", "#endif /* __POUS_H */", ""]
+        out += ["#ifdef __cplusplus", "}", ""]
+        out += self._body_ref_overloads()
+        out += ["#endif", "", "#endif /* __POUS_H */", ""]
         return "\n".join(out)
+
+    def _body_ref_overloads(self):
+        """For C++ callers: `pacst::BodyRef(&fb, &inout, ...)` runs `<FB>_body_ref__` whatever the FB's type, so that
+        a template (the test rig's) can pass its own variable to an FB's VAR_IN_OUT instead of copying it into the
+        member and back."""
+        if not self.by_reference:
+            return []
+        pous = [obj for kind, obj, _ in self.program.items if kind == "pou" and inouts_by_reference(obj)]
+        if not pous:
+            return []
+        out = ['extern "C++" {  // also where POUS.h is included inside extern "C" (pac/st_program.hpp)', "namespace pacst {"]
+        for pou in pous:
+            args = ", ".join(["data__"] + [inout_parameter(v) for v in inouts_by_reference(pou)])
+            out.append(f"inline void BodyRef({self._body_ref_params(pou)}) {{ {pou.cname}_body_ref__({args}); }}")
+        return out + ["}  // namespace pacst", "}", ""]
 
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
@@ -247,13 +264,17 @@ class Emitter:
         out.append("}")
         out.append("")
         by_reference = inouts_by_reference(pou)
+        # The body of an FB that one ST call runs (a part of another FB) goes into that call where the compiler
+        # sees both (one C unit): no entry, exit and argument passing in every scan. It stays a function of
+        # the C interface too.
+        inline = "PACST_INLINE_ONCE " if self.comp.fb_call_sites.get(pou.cname, 0) == 1 and not pou.program else ""
         if by_reference:  # the body works on the caller's variables; from C, on the members
             addresses = ", ".join(f"&data__->{v.cname}.value" for v in by_reference)
             out += [f"void {pou.cname}_body__({pou.cname} *data__) {{",
                     f"  {pou.cname}_body_ref__(data__, {addresses});", "}", ""]
-            out.append(f"void {pou.cname}_body_ref__({self._body_ref_params(pou)}) {{")
+            out.append(f"{inline}void {pou.cname}_body_ref__({self._body_ref_params(pou)}) {{")
         else:
-            out.append(f"void {pou.cname}_body__({pou.cname} *data__) {{")
+            out.append(f"{inline}void {pou.cname}_body__({pou.cname} *data__) {{")
         out.append("  if (!data__->EN.value) {")
         out.append("    data__->ENO.value = FALSE;")
         out.append("    return;")

@@ -118,18 +118,30 @@ public:
     const pac::sim::ModuleLayout& Layout() const { return bus_.Layout(); }
 
 private:
-    // A command FB: the channel in, the body, the channel out; the module follows the channel.
+    // A command FB on the channel, as an ST call passes it (pacst's C: the body works on the channel itself);
+    // MATIEC's C: the channel into the FB's member, the body, the channel back. The module follows the channel.
     template <class Fb>
     auto CallOnCmd(pac::FbInstance<Fb>& fb, std::function<void()> before, int) -> decltype(fb->CHANNEL, void()) {
         RegisterCmdInterface();
         task_.AddProgram([this, &fb, before] {
             if (before) before();
             ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
-            fb->CHANNEL.value = channel;
-            fb();
-            channel = fb->CHANNEL.value;
+            RunOnChannel(fb, channel, 0);
             CopyChannelToModule();
         });
+    }
+#ifdef PACST_BODY_REF
+    template <class Fb>
+    static auto RunOnChannel(pac::FbInstance<Fb>& fb, ST_PAC_CMDCHANNEL& channel, int)
+        -> decltype(pacst::BodyRef(&fb.Data(), &channel), void()) {
+        pacst::BodyRef(&fb.Data(), &channel);
+    }
+#endif
+    template <class Fb>
+    static void RunOnChannel(pac::FbInstance<Fb>& fb, ST_PAC_CMDCHANNEL& channel, long) {
+        fb->CHANNEL.value = channel;
+        fb();
+        channel = fb->CHANNEL.value;
     }
     template <class Fb>
     void CallOnCmd(pac::FbInstance<Fb>& fb, std::function<void()> before, long) {

@@ -211,6 +211,17 @@ static inline void __pacst_fault(const char *where, const char *what, long value
 #endif
 #define __PACST_SET(var, val) __PACST_SETP(var, , val)
 
+/* The body of an FB that one ST call of the program runs: inlined into that call where the compiler sees both
+ * (the translated library compiled as one C unit), still defined for callers from C (its declaration in
+ * POUS.h is not inline, so this is the external definition). Only where the compiler optimises: an unoptimised
+ * build (the coverage build) keeps one copy of each body, whose counters are the lines' and branches' only
+ * ones. The model checker gets the plain function. */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__) && !defined(__CPROVER__)
+#define PACST_INLINE_ONCE __attribute__((always_inline)) inline
+#else
+#define PACST_INLINE_ONCE
+#endif
+
 /* Offset of an array element; an index outside the declared bounds stops the run with its position. */
 static inline long __pacst_index(long i, long low, long high, const char *where) {
     if (i < low || i > high) __pacst_fault(where, "array index out of bounds", i);
@@ -365,12 +376,13 @@ static inline void TP_init__(TP *d, BOOL retain) { TON_init__(d, retain); }
 /* STATE: 0 idle, 1 timing, 2 elapsed (MATIEC's encoding). While timing, ET follows the time since the
  * start; once PT has passed, STATE becomes 2, ET stays at PT and the caller sets Q. */
 static inline int __pacst_timer_elapsed(TON *d) {
-    if (__time_cmp(__time_add(d->START_TIME.value, d->PT.value), d->CURRENT_TIME.value) <= 0) {
+    const TIME elapsed = __time_sub(d->CURRENT_TIME.value, d->START_TIME.value);
+    if (__time_cmp(elapsed, d->PT.value) >= 0) {  /* START_TIME + PT <= CURRENT_TIME, one subtraction */
         __PACST_SET(d->STATE, 2);
         __PACST_SET(d->ET, d->PT.value);
         return 1;
     }
-    __PACST_SET(d->ET, __time_sub(d->CURRENT_TIME.value, d->START_TIME.value));
+    __PACST_SET(d->ET, elapsed);
     return 0;
 }
 
