@@ -143,6 +143,7 @@ class Compiler:
         self.file = None
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
+        self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
 
@@ -297,6 +298,8 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
+        if self.user and up in T.PSEUDO_TYPES and (up.startswith("__") or up not in self.types):
+            return self._pseudo_type(token, up)
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
@@ -483,20 +486,30 @@ class Compiler:
             return literals.int_value(node)
         if cls == "ParenthesizedExpression":
             return self.constant_int(node.expr, earlier)
-        if cls == "UnaryOperation" and str(node.op) == "-":
+        if cls == "UnaryOperation" and str(node.op) in ("-", "+"):
             inner = self.constant_int(node.expr, earlier)
-            return -inner if inner is not None else None
+            return -inner if inner is not None and str(node.op) == "-" else inner
         if cls == "BinaryOperation" and str(node.op) in ("+", "-", "*"):
             a, b = self.constant_int(node.left, earlier), self.constant_int(node.right, earlier)
             if a is None or b is None:
                 return None
             return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        init = self.named_constant(node, earlier)
+        return self.constant_int(init, earlier) if init is not None else None
+
+    def named_constant(self, node, earlier=False):
+        """User mode: the initial value of the constant `node` names (a POU's or METHOD's VAR CONSTANT, also one of a
+        later block, a global constant, List.Name, Lib.List.Name), or, for an initial value (`earlier`), of a
+        variable of the POU declared before; None when `node` names none of them."""
+        if self.user and _cls(node) == "MultiElementVariable":
+            node = self.unqualify(node)
+        cls = _cls(node)
         var = None
         if cls == "SimpleVariable":
             declaring = self.declaring if earlier else None
             var = declaring.var(_name(node.name)) if declaring is not None else None
             if var is not None and not var.type.is_fb and var.init is not None:
-                return self.constant_int(var.init, earlier)
+                return var.init
             pou = getattr(self, "current_pou", None)
             var = pou.var(_name(node.name)) if pou is not None else None
             if var is None and _name(node.name).upper() in self.globals:
@@ -505,11 +518,10 @@ class Compiler:
                 and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
             var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
         if var is None and cls == "SimpleVariable" and self.user:
-            init = self._later_constant(_name(node.name))
-            return self.constant_int(init, earlier) if init is not None else None
+            return self._later_constant(_name(node.name))
         if var is None or not var.constant or var.init is None:
             return None
-        return self.constant_int(var.init, earlier)
+        return var.init
 
     def _later_constant(self, name):
         """User mode: the initial value of a VAR CONSTANT `name` of the METHOD or POU whose declarations are being
@@ -526,6 +538,12 @@ class Compiler:
                                              for v in getattr(item, "variables", ())):
                     return value
         return None
+
+    def _pseudo_type(self, token, up):
+        """User mode: __XINT, __UXINT, __XWORD (XINT, UXINT, XWORD) and PVOID, the register-wide types TwinCAT and
+        CODESYS make LINT, ULINT, LWORD on a 64-bit target."""
+        self.dialect(token, f"the pseudo type {up}, {T.PSEUDO_TYPES[up]} on a 64-bit target")
+        return T.USER_ELEMENTARY[T.PSEUDO_TYPES[up]]
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -825,8 +843,11 @@ class Compiler:
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
             if kind == "function" and constant_block is not None and not is_constant \
                     and self._SECTIONS.get(_cls(block)) == "var":
-                raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR variables "
-                                      "for constants too; put VAR CONSTANT last")
+                if self.user:  # MATIEC's reason: a user program is refused for it only on its way to MATIEC
+                    self.dialect(block, "VAR after VAR CONSTANT in a FUNCTION")
+                else:
+                    raise self.err(block, "VAR after VAR CONSTANT in a FUNCTION: MATIEC then takes the VAR "
+                                          "variables for constants too; put VAR CONSTANT last")
             if is_constant:
                 constant_block = block
             if not self.user:
@@ -1383,10 +1404,29 @@ class Compiler:
                 pass
             elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):
                 pass
+            elif self.user:
+                return self._user_initial_value(node, want)
             else:
                 raise self.err(node, "initial value must be a literal (MATIEC, CODESYS and TwinCAT differ on "
                                      "constant expressions)")
         return ExprCompiler(self, None).expr(node, want)
+
+    def _user_initial_value(self, node, want):
+        """User mode: an initial value TwinCAT and CODESYS compute when they compile, beyond integer constant
+        expressions: `+127`, and a named constant of any type (`Limit : LREAL := GVL_Limits.LREAL_MAX;`,
+        `Lib.GVL.Name`), typed as its own initial value is."""
+        if _cls(node) == "UnaryOperation" and str(node.op) == "+":
+            self.dialect(node, "a unary + in an initial value")
+            return self.literal_te(node.expr, want)
+        if _cls(node) == "ParenthesizedExpression":
+            return self.literal_te(node.expr, want)
+        init = self.named_inits.get(id(node)) or self.named_constant(node, earlier=True)
+        if init is None:
+            raise self.err(node, "initial value: pacst computes literals, named constants, variables declared before "
+                                 "and integer expressions of them with + - *; assign this one in code")
+        self.dialect(node, "an initial value that is a named constant or a variable declared before")
+        self.named_inits[id(node)] = init  # translated again outside its POU (initial_constant says why)
+        return self.literal_te(init, want)
 
     def default_c(self, t):
         if t.is_pointer:

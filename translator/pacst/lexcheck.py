@@ -53,8 +53,9 @@ class Comment:
         self.end = end
 
 
-# TwinCAT's operators and namespaces starting with '__' that user mode translates (system.py, expressions.py)
-_TWINCAT_TRANSLATED = {"__ISVALIDREF", "__NEW", "__DELETE", "__SYSTEM"}
+# TwinCAT's operators, namespaces and pseudo types starting with '__' that user mode translates (system.py,
+# expressions.py, compiler.py)
+_TWINCAT_TRANSLATED = {"__ISVALIDREF", "__NEW", "__DELETE", "__SYSTEM", "__XINT", "__UXINT", "__XWORD"}
 # and those it does not translate, and why
 _TWINCAT_OPERATORS = {
     "__QUERYINTERFACE": "not translated; assign the instance to a variable of the INTERFACE and call through it",
