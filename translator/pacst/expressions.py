@@ -337,7 +337,7 @@ class ExprCompiler:
         inner = self.expr(node.expr, want)
         if inner.code is None:
             return inner
-        return TE(inner.type, f"({inner.code})", narrow=inner.narrow)
+        return TE(inner.type, f"({inner.code})", narrow=inner.narrow, wide=inner.wide)
 
     def _e_BracketedExpression(self, node, want):
         raise self.err(node, "bracketed expression is outside the portable subset")
@@ -462,7 +462,8 @@ class ExprCompiler:
         if t.is_bit and self.comp.user:  # unsigned, wrapping at the width (no C promotion to a signed int)
             if op in ("/", "MOD"):
                 return TE(t, f"__{'div' if op == '/' else 'mod'}_{t.cname}({ca}, {cb})")
-            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32)
+            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32,
+                      wide=self._wide(a, ca, op, b, cb) if t.bits < 32 else None)
         if t.is_time:
             if op == "+":
                 return TE(t, f"__time_add({ca}, {cb})")
@@ -478,7 +479,14 @@ class ExprCompiler:
             return TE(t, f"__div_{t.cname}({ca}, {cb})")
         if op == "MOD":
             return TE(t, f"__mod_{t.cname}({ca}, {cb})")
-        return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32)
+        return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32,
+                  wide=self._wide(a, ca, op, b, cb) if t.bits < 32 and self.comp.user else None)
+
+    @staticmethod
+    def _wide(a, ca, op, b, cb):
+        """User mode: `a op b` (+ - *) of types narrower than 32 bits computed in 64 bits and not wrapped, as
+        TwinCAT and CODESYS compute intermediate results at the register width (x64)."""
+        return f"((int64_t)({a.wide or ca}) {op} (int64_t)({b.wide or cb}))"
 
     def _date_arithmetic(self, node, op, a, b):
         """User mode: DT, TOD + or - a TIME (DT whole seconds of it), DT - DT, TOD - TOD and DATE - DATE a TIME,
@@ -527,7 +535,14 @@ class ExprCompiler:
     def _compare(self, node, op):
         a = self.expr(node.left)
         b = self.expr(node.right)
+        wide = self._wide_compare(node, op, a, b)
+        if wide is not None:
+            return wide
         for side, te in ((node.left, a), (node.right, b)):
+            if te.narrow and self.comp.user:
+                raise self.err(side, f"comparison of the {te.type.name} result of a negation, NOT or a shift: "
+                                     "TwinCAT and CODESYS compare it unwrapped at the register width, pacst does "
+                                     "so for + - * only; store it in a variable first")
             if te.narrow:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
@@ -551,6 +566,19 @@ class ExprCompiler:
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _wide_compare(self, node, op, a, b):
+        """User mode: a comparison of the result of + - * on types narrower than 32 bits, unwrapped in 64 bits
+        (`(w + 1) = 0` is FALSE for w = 65535, as on TwinCAT x64), or None for any other comparison."""
+        if not self.comp.user or not (a.wide or b.wide):
+            return None
+        if any(te.narrow and not te.wide for te in (a, b)):
+            return None  # a negation, NOT or shift on one side: refused by the caller
+        t, ca, cb = self.unify(a, b, None, node)
+        if not (t.is_int or t.is_bit) or t.bits > 32:
+            return None
+        self.comp.dialect(node.op, "a comparison of small-type arithmetic at the register width")
+        return TE(T.BOOL, f"((int64_t)({a.wide or ca}) {_CMP_C[op]} (int64_t)({b.wide or cb}))")
 
     def _logic(self, node, op, want):
         a = self.expr(node.left, want)
