@@ -815,9 +815,11 @@ class ExprCompiler:
         if all(_cls(p) == "InputParameterAssignment" and p.name is None for p in params):
             return [p.value for p in params]
         by_name = {}
-        for p in params:
-            if _cls(p) != "InputParameterAssignment" or p.name is None:
+        for k, p in enumerate(params):
+            if _cls(p) != "InputParameterAssignment" or p.name is None and not self.comp.user:
                 raise self.err(p, "mix of formal and positional arguments")
+            if p.name is None:  # user mode: FIND(STR1 := s, '.'), as for a FUNCTION of the program's
+                return self._formal_then_positional(node, params, k, by_name, names, vendor_names)
             by_name[_name(p.name.name).upper()] = p.value
         if vendor_names and self.comp.user and set(by_name) == set(vendor_names):
             self.comp.dialect(node, f"the input names {', '.join(vendor_names)} of Tc2_Standard and Standard")
@@ -826,6 +828,20 @@ class ExprCompiler:
             also = f" (or {', '.join(vendor_names)})" if vendor_names and self.comp.user else ""
             raise self.err(node, f"the inputs are {', '.join(names)}{also}")
         return [by_name[n] for n in names]
+
+    def _formal_then_positional(self, node, params, first, by_name, names, vendor_names):
+        """User mode: a standard function's arguments, formal ones then positional ones (`FIND(STR1 := s, '.')`):
+        the positional ones go to the inputs not given yet, in order, as TwinCAT passes them."""
+        order = vendor_names if vendor_names and set(by_name) & set(vendor_names) else names
+        if not set(by_name) <= set(order):
+            raise self.err(node, f"the inputs are {', '.join(order)}")
+        rest = [n for n in order if n not in by_name]
+        for name, p in zip(rest, params[first:]):
+            if _cls(p) != "InputParameterAssignment" or p.name is not None:
+                raise self.err(p, "a formal argument after a positional one: write the formal ones first")
+            by_name[name] = p.value
+        self.comp.dialect(node, "formal arguments followed by positional ones")
+        return [by_name[n] for n in order]
 
     def _conversion(self, node, src, dst):
         if self.comp.user and "BIT" in (src, dst):  # BIT is a BOOL here (BIT_TO_BOOL, BOOL_TO_BIT, BIT_TO_INT)
