@@ -72,6 +72,17 @@ def widens(source, target):
     return source.is_real and target.is_real and target.bits > source.bits
 
 
+def changes_sign(source, target):
+    """Whether a user program converts `source` to `target` implicitly with a warning only (TwinCAT's and CODESYS's
+    C0195, C0196: a possible change of sign): integers and bit strings of the same width or a wider target that
+    differ in sign (DINT to UDINT, UDINT to DINT, BYTE to USINT, DWORD to DINT), two's complement as C casts."""
+    if not (source.is_elementary and target.is_elementary) or source is target:
+        return False
+    if not ((source.is_int or source.is_bit) and (target.is_int or target.is_bit)):
+        return False
+    return target.bits >= source.bits and not widens(source, target)
+
+
 def _ltime_converted(st, dt, code):
     """User mode: LTIME to and from a number of nanoseconds (LTIME_TO_ULINT, LREAL_TO_LTIME), as TwinCAT and
     CODESYS count it, unsigned; TIME_TO_LTIME exact, LTIME_TO_TIME to whole milliseconds, TIME's resolution."""
@@ -151,6 +162,10 @@ class ExprCompiler:
         if self.comp.user and widens(te.type, target):
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
+        if self.comp.user and what != "operand" and changes_sign(te.type, target):  # not `D = UD`: TwinCAT
+            # compares those at the register width
+            self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
+            return f"(({target.cname})({te.code}))"
         hint = ""
         convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
         if te.type.is_string and target.is_string and self.comp.user:
@@ -964,6 +979,10 @@ class ExprCompiler:
         if not t.is_bit:
             raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         ne = self.expr(count, T.INT)
+        if self.comp.user and fn == "SHL" and want is not None and want.is_bit and widens(t, want):
+            # nK := nK XOR SHL(pTail[2], 16): TwinCAT shifts at the register width, the DWORD keeps the bits
+            self.comp.dialect(node, f"SHL of a {t.name} where a {want.name} is expected")
+            te, t = TE(want, self.coerce(te, want, value)), want
         if ne.type is T.ANY_INT:
             if not 0 <= ne.value < t.bits:
                 raise self.err(count, f"shift count {ne.value} outside 0..{t.bits - 1} for {t.name}")
