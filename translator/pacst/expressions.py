@@ -786,12 +786,15 @@ class ExprCompiler:
         if src in ("REAL", "LREAL"):
             raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
                                  f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
-        if src not in _CONVERTIBLE:
+        if src not in _CONVERTIBLE and src not in T.USER_ELEMENTARY:
             raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
                                  "are converted to STRING")
         (arg,) = self._positional(node, 1, ["IN"])
-        st = T.ELEMENTARY[src]
+        st = T.ELEMENTARY.get(src) or T.USER_ELEMENTARY[src]
         code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if src in ("ULINT", "LWORD"):  # above LINT's range too
+            self.comp.dialect(node, name)
+            return TE(T.STRING, f"__pacst_digits_to_string((unsigned long long)({code}), 0)")
         if st.is_bool:
             return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
         return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
