@@ -1088,6 +1088,9 @@ class Compiler:
         m.owner = owner
         m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
         for block in node.declarations:
+            if _cls(block) == "MethodInstanceVariableDeclarations":  # a Get's or Set's VAR_INST, as a METHOD's
+                self._instance_vars(owner, m, block, inherited)
+                continue
             self._var_block(m, block)
         known[kind] = m
         return m
@@ -1138,7 +1141,7 @@ class Compiler:
         too), which the METHOD reads by their names; a name the FB has already is refused."""
         self.dialect(block, "VAR_INST")
         if owner.kind != "fb" or owner.program:
-            raise self.err(block, "VAR_INST belongs to a METHOD of a FUNCTION_BLOCK")
+            raise self.err(block, "VAR_INST belongs to a METHOD or PROPERTY of a FUNCTION_BLOCK")
         for item in block.items:
             names = [_name(dv.variable.name) for dv in item.variables]
             kept = [owner.var(self._instance_name(method, n)) for n in names]
