@@ -448,9 +448,12 @@ class Compiler:
         """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
         reference = bool(indirection.reference)
         depth = indirection.pointer_depth
-        if reference and depth or target.is_pointer or depth > 2:
-            raise self.err(node, "a REFERENCE TO a POINTER, and a POINTER TO POINTER TO POINTER, are not translated")
+        if reference and depth > 1 or target.is_pointer or depth > 2:
+            raise self.err(node, "a REFERENCE TO POINTER TO POINTER, and a POINTER TO POINTER TO POINTER, are not "
+                                 "translated")
         self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        if reference and depth == 1:  # REFERENCE TO POINTER TO T (the collections' FB_Free)
+            return self.pointer_to(self.pointer_to(target), reference)
         if depth == 2:  # POINTER TO POINTER TO T: an array of pointers from __NEW(POINTER TO T, n)
             return self.pointer_to(self.pointer_to(target))
         return self.pointer_to(target, reference)
