@@ -555,9 +555,10 @@ class ExprCompiler:
             return wide
         for side, te in ((node.left, a), (node.right, b)):
             if te.narrow and self.comp.user:
-                raise self.err(side, f"comparison of the {te.type.name} result of a negation, NOT or a shift: "
-                                     "TwinCAT and CODESYS compare it unwrapped at the register width, pacst does "
-                                     "so for + - * only; store it in a variable first")
+                raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, a negation, NOT or "
+                                     "a shift: TwinCAT and CODESYS compare it unwrapped at the register width, "
+                                     "pacst does so for + - * compared with a REAL or an integer of up to 32 bits; "
+                                     "store it in a variable first")
             if te.narrow:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
@@ -590,10 +591,14 @@ class ExprCompiler:
         if any(te.narrow and not te.wide for te in (a, b)):
             return None  # a negation, NOT or shift on one side: refused by the caller
         t, ca, cb = self.unify(a, b, None, node)
-        if not (t.is_int or t.is_bit) or t.bits > 32:
+        if t.is_real:  # (i + 1) > 2.5
+            c = "LREAL"
+        elif (t.is_int or t.is_bit) and t.bits <= 32:
+            c = "int64_t"
+        else:
             return None
         self.comp.dialect(node.op, "a comparison of small-type arithmetic at the register width")
-        return TE(T.BOOL, f"((int64_t)({a.wide or ca}) {_CMP_C[op]} (int64_t)({b.wide or cb}))")
+        return TE(T.BOOL, f"(({c})({a.wide or ca}) {_CMP_C[op]} ({c})({b.wide or cb}))")
 
     def _logic(self, node, op, want):
         a = self.expr(node.left, want)
