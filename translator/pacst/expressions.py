@@ -734,8 +734,10 @@ class ExprCompiler:
             (arg,) = self._positional(node, 1, ["IN"] if fn == "ADR" else ["REF"])
             r = self.body.ref(arg, raw=fn == "__ISVALIDREF")
             if fn == "__ISVALIDREF":
+                if getattr(r.var, "section", None) == "inout" and r.var.type is r.type:
+                    return TE(T.BOOL, "TRUE")  # a VAR_IN_OUT: every call gives one (FsCommon's F_DeallocateMemory)
                 if not (r.type.is_pointer and r.type.reference):
-                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE")
+                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE or a VAR_IN_OUT")
                 return TE(T.BOOL, f"(({r.read()}) != NULL)")
             if getattr(r, "whole", None) is not None:
                 raise self.err(arg, "ADR of a bit: a bit has no address")
