@@ -862,7 +862,7 @@ class Compiler:
                     refused += e.errors if isinstance(e, StErrors) else [e]
             if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout") and self.user:
-                self.dialect(block, f"a FUNCTION returning a STRUCT with a VAR_OUTPUT or VAR_IN_OUT")  # MATIEC's
+                self.dialect(block, "a FUNCTION returning a STRUCT with a VAR_OUTPUT or VAR_IN_OUT")  # pacst's C has it
             elif kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
