@@ -250,9 +250,9 @@ class Compiler:
             raise self.err(item, f"{cls} is outside the portable subset (no METHOD, PROPERTY, ACTION, INTERFACE)")
 
     # ------------------------------------------------------------------ names
-    def _check_ident(self, token, what):
+    def _check_ident(self, token, what, c_name=True):
         name = _name(token)
-        why = reserved_reason(name, self.user)
+        why = reserved_reason(name, self.user, c_name)
         if why:
             raise self.err(token, f"{what} {why}")
         if self.user and ("__" in name or name.endswith("_")):
@@ -686,7 +686,7 @@ class Compiler:
                 vname = _name(ev.name)
                 if "." in vname:
                     raise self.err(ev, "qualified enumeration value")
-                self._check_ident(ev.name, "enumeration value")
+                self._check_ident(ev.name, "enumeration value", c_name=not self.user)  # Auto, Static, EOF
                 up = vname.upper()
                 shared = self.user and (up in self.enum_values or up in self.enum_shared)
                 if not shared and (up in self.enum_values or up in self.types or up in self.pous):
