@@ -255,6 +255,8 @@ class Compiler:
         why = reserved_reason(name, self.user, c_name)
         if why:
             raise self.err(token, f"{what} {why}")
+        if not c_name and reserved_reason(name, self.user):  # MATIEC's C names it alone
+            self.dialect(token, f"the {what} '{name}', a C keyword or macro")
         if self.user and ("__" in name or name.endswith("_")):
             self.dialect(token, f"the name '{name}' (MATIEC refuses '__' in names and a '_' at their end)")
 
