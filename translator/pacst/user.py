@@ -279,6 +279,8 @@ def _global_items(comp, gvl, block, constant):
             if vup in comp.types or vup in comp.pous or shadows_value or vup in comp.gvls:
                 raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
                                       "value or global list")
+            if vup in comp.enum_values:
+                comp.dialect(token, "a global variable of a qualified_only list named like an enumeration value")
             v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
             if value is not None:
                 comp.init_code(v, "x")  # checks the initial value now
