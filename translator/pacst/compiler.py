@@ -1202,6 +1202,8 @@ class Compiler:
             elif self.user and str(attrs.name).lower() == "constant" and section == "inout":
                 self.dialect(block, "VAR_IN_OUT CONSTANT")  # read only; a call may pass a value (expressions.py)
                 constant = True
+            elif self.user and str(attrs.name).lower() == "constant" and section == "input":
+                self.dialect(block, "VAR_INPUT CONSTANT")  # an input as any other here: TwinCAT refuses writing it
             else:
                 raise self.err(block, f"{str(attrs.name).upper()} variables are outside the portable subset")
         if section == "temp" and pou.kind == "function":
