@@ -52,7 +52,10 @@ class BodyCompiler:
         """`THIS^.x` as `x` (user mode: inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION); other nodes as
         they are."""
         if _cls(node) != "MultiElementVariable" or not self.comp.user or _cls(node.name) != "SimpleVariable" \
-                or not node.name.dereferenced or _name(node.name.name).upper() != "THIS":
+                or _name(node.name.name).upper() != "THIS":
+            return node
+        # blark puts THIS's '^' on THIS (THIS^.x) or, in THIS^.x.M, on the selector after it (as in p^.pNext^.Value)
+        if not node.name.dereferenced and not getattr(node.elements[0], "dereferenced", False):
             return node
         if self._fb_of_body() is None:
             raise self.err(node, "THIS^ is used inside a FUNCTION_BLOCK, PROGRAM, METHOD or ACTION")

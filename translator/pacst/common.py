@@ -51,11 +51,12 @@ def _name(token):
 class TE:
     """A typed C expression. For untyped literals `value` holds the exact number and `code` is None."""
 
-    def __init__(self, type_, code=None, value=None, narrow=False):
+    def __init__(self, type_, code=None, value=None, narrow=False, wide=None):
         self.type = type_
         self.code = code
         self.value = value
         self.narrow = narrow  # a small-type arithmetic result that MATIEC compares as a promoted C int
+        self.wide = wide  # user mode: that result's C code not wrapped to its type (int64_t), as TwinCAT compares it
 
 
 class Ref:

@@ -147,6 +147,7 @@ class Compiler:
         self.file = None
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
+        self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
         self.fb_call_sites = {}  # FB type cname -> the ST calls of its body in the program (an inline body: one)
@@ -254,11 +255,13 @@ class Compiler:
             raise self.err(item, f"{cls} is outside the portable subset (no METHOD, PROPERTY, ACTION, INTERFACE)")
 
     # ------------------------------------------------------------------ names
-    def _check_ident(self, token, what):
+    def _check_ident(self, token, what, c_name=True):
         name = _name(token)
-        why = reserved_reason(name, self.user)
+        why = reserved_reason(name, self.user, c_name)
         if why:
             raise self.err(token, f"{what} {why}")
+        if not c_name and reserved_reason(name, self.user):  # MATIEC's C names it alone
+            self.dialect(token, f"the {what} '{name}', a C keyword or macro")
         if self.user and ("__" in name or name.endswith("_")):
             self.dialect(token, f"the name '{name}' (MATIEC refuses '__' in names and a '_' at their end)")
 
@@ -302,9 +305,8 @@ class Compiler:
         if self.user and up in T.USER_ELEMENTARY:
             self.dialect(token, f"the 64-bit type {up}")
             return T.USER_ELEMENTARY[up]
-        if self.user and up in T.PLATFORM_WIDTH:  # __XINT, __UXINT, __XWORD
-            self.dialect(token, f"TwinCAT's {up}")
-            return T.USER_ELEMENTARY[T.PLATFORM_WIDTH[up]]
+        if self.user and up in T.PSEUDO_TYPES and (up.startswith("__") or up not in self.types):
+            return self._pseudo_type(token, up)
         if self.user and up == "LTIME":
             self.dialect(token, "LTIME")
             return T.LTIME
@@ -466,9 +468,12 @@ class Compiler:
         """User mode: the type of POINTER TO target / REFERENCE TO target (one per target, declared once)."""
         reference = bool(indirection.reference)
         depth = indirection.pointer_depth
-        if reference and depth or target.is_pointer or depth > 2:
-            raise self.err(node, "a REFERENCE TO a POINTER, and a POINTER TO POINTER TO POINTER, are not translated")
+        if reference and depth > 1 or target.is_pointer or depth > 2:
+            raise self.err(node, "a REFERENCE TO POINTER TO POINTER, and a POINTER TO POINTER TO POINTER, are not "
+                                 "translated")
         self.dialect(node, "REFERENCE TO" if reference else "POINTER TO")
+        if reference and depth == 1:  # REFERENCE TO POINTER TO T (the collections' FB_Free)
+            return self.pointer_to(self.pointer_to(target), reference)
         if depth == 2:  # POINTER TO POINTER TO T: an array of pointers from __NEW(POINTER TO T, n)
             return self.pointer_to(self.pointer_to(target))
         return self.pointer_to(target, reference)
@@ -504,20 +509,30 @@ class Compiler:
             return literals.int_value(node)
         if cls == "ParenthesizedExpression":
             return self.constant_int(node.expr, earlier)
-        if cls == "UnaryOperation" and str(node.op) == "-":
+        if cls == "UnaryOperation" and str(node.op) in ("-", "+"):
             inner = self.constant_int(node.expr, earlier)
-            return -inner if inner is not None else None
+            return -inner if inner is not None and str(node.op) == "-" else inner
         if cls == "BinaryOperation" and str(node.op) in ("+", "-", "*"):
             a, b = self.constant_int(node.left, earlier), self.constant_int(node.right, earlier)
             if a is None or b is None:
                 return None
             return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        init = self.named_constant(node, earlier)
+        return self.constant_int(init, earlier) if init is not None else None
+
+    def named_constant(self, node, earlier=False):
+        """User mode: the initial value of the constant `node` names (a POU's or METHOD's VAR CONSTANT, also one of a
+        later block, a global constant, List.Name, Lib.List.Name), or, for an initial value (`earlier`), of a
+        variable of the POU declared before; None when `node` names none of them."""
+        if self.user and _cls(node) == "MultiElementVariable":
+            node = self.unqualify(node)
+        cls = _cls(node)
         var = None
         if cls == "SimpleVariable":
             declaring = self.declaring if earlier else None
             var = declaring.var(_name(node.name)) if declaring is not None else None
             if var is not None and not var.type.is_fb and var.init is not None:
-                return self.constant_int(var.init, earlier)
+                return var.init
             pou = getattr(self, "current_pou", None)
             var = pou.var(_name(node.name)) if pou is not None else None
             if var is None and _name(node.name).upper() in self.globals:
@@ -526,11 +541,10 @@ class Compiler:
                 and _name(node.name.name).upper() in self.gvls and _cls(node.elements[0].field) == "SimpleVariable":
             var = self.gvls[_name(node.name.name).upper()].var(_name(node.elements[0].field.name))
         if var is None and cls == "SimpleVariable" and self.user:
-            init = self._later_constant(_name(node.name))
-            return self.constant_int(init, earlier) if init is not None else None
+            return self._later_constant(_name(node.name))
         if var is None or not var.constant or var.init is None:
             return None
-        return self.constant_int(var.init, earlier)
+        return var.init
 
     def _later_constant(self, name):
         """User mode: the initial value of a VAR CONSTANT `name` of the METHOD or POU whose declarations are being
@@ -547,6 +561,12 @@ class Compiler:
                                              for v in getattr(item, "variables", ())):
                     return value
         return None
+
+    def _pseudo_type(self, token, up):
+        """User mode: __XINT, __UXINT, __XWORD (XINT, UXINT, XWORD) and PVOID, the register-wide types TwinCAT and
+        CODESYS make LINT, ULINT, LWORD on a 64-bit target."""
+        self.dialect(token, f"the pseudo type {up}, {T.PSEUDO_TYPES[up]} on a 64-bit target")
+        return T.USER_ELEMENTARY[T.PSEUDO_TYPES[up]]
 
     def _spec_type(self, spec, allow_fb=True):
         cls = _cls(spec)
@@ -688,7 +708,7 @@ class Compiler:
                 vname = _name(ev.name)
                 if "." in vname:
                     raise self.err(ev, "qualified enumeration value")
-                self._check_ident(ev.name, "enumeration value")
+                self._check_ident(ev.name, "enumeration value", c_name=not self.user)  # Auto, Static, EOF
                 up = vname.upper()
                 shared = self.user and (up in self.enum_values or up in self.enum_shared)
                 if not shared and (up in self.enum_values or up in self.types or up in self.pous):
@@ -863,6 +883,9 @@ class Compiler:
                 except (StError, StErrors) as e:
                     refused += e.errors if isinstance(e, StErrors) else [e]
             if kind == "function" and pou.ret is not None and pou.ret.is_struct and \
+                    self._SECTIONS.get(_cls(block)) in ("output", "inout") and self.user:
+                self.dialect(block, "a FUNCTION returning a STRUCT with a VAR_OUTPUT or VAR_IN_OUT")  # pacst's C has it
+            elif kind == "function" and pou.ret is not None and pou.ret.is_struct and \
                     self._SECTIONS.get(_cls(block)) in ("output", "inout"):
                 raise self.err(block, f"a FUNCTION returning the STRUCT {pou.ret.name} has no VAR_OUTPUT or "
                                       "VAR_IN_OUT: iec2c accepts it but writes C that does not compile; "
@@ -1093,6 +1116,9 @@ class Compiler:
         m.owner = owner
         m.cfunc = f"{owner.cname}__{up}__{kind.upper()}"
         for block in node.declarations:
+            if _cls(block) == "MethodInstanceVariableDeclarations":  # a Get's or Set's VAR_INST, as a METHOD's
+                self._instance_vars(owner, m, block, inherited)
+                continue
             self._var_block(m, block)
         known[kind] = m
         return m
@@ -1143,7 +1169,7 @@ class Compiler:
         too), which the METHOD reads by their names; a name the FB has already is refused."""
         self.dialect(block, "VAR_INST")
         if owner.kind != "fb" or owner.program:
-            raise self.err(block, "VAR_INST belongs to a METHOD of a FUNCTION_BLOCK")
+            raise self.err(block, "VAR_INST belongs to a METHOD or PROPERTY of a FUNCTION_BLOCK")
         for item in block.items:
             names = [_name(dv.variable.name) for dv in item.variables]
             kept = [owner.var(self._instance_name(method, n)) for n in names]
@@ -1414,10 +1440,29 @@ class Compiler:
                 pass
             elif cls == "SimpleVariable" and self.shared_enum_value(_name(node.name), node):
                 pass
+            elif self.user:
+                return self._user_initial_value(node, want)
             else:
                 raise self.err(node, "initial value must be a literal (MATIEC, CODESYS and TwinCAT differ on "
                                      "constant expressions)")
         return ExprCompiler(self, None).expr(node, want)
+
+    def _user_initial_value(self, node, want):
+        """User mode: an initial value TwinCAT and CODESYS compute when they compile, beyond integer constant
+        expressions: `+127`, and a named constant of any type (`Limit : LREAL := GVL_Limits.LREAL_MAX;`,
+        `Lib.GVL.Name`), typed as its own initial value is."""
+        if _cls(node) == "UnaryOperation" and str(node.op) == "+":
+            self.dialect(node, "a unary + in an initial value")
+            return self.literal_te(node.expr, want)
+        if _cls(node) == "ParenthesizedExpression":
+            return self.literal_te(node.expr, want)
+        init = self.named_inits.get(id(node)) or self.named_constant(node, earlier=True)
+        if init is None:
+            raise self.err(node, "initial value: pacst computes literals, named constants, variables declared before "
+                                 "and integer expressions of them with + - *; assign this one in code")
+        self.dialect(node, "an initial value that is a named constant or a variable declared before")
+        self.named_inits[id(node)] = init  # translated again outside its POU (initial_constant says why)
+        return self.literal_te(init, want)
 
     def default_c(self, t):
         if t.is_pointer:

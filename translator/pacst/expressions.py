@@ -72,6 +72,17 @@ def widens(source, target):
     return source.is_real and target.is_real and target.bits > source.bits
 
 
+def changes_sign(source, target):
+    """Whether a user program converts `source` to `target` implicitly with a warning only (TwinCAT's and CODESYS's
+    C0195, C0196: a possible change of sign): integers and bit strings of the same width or a wider target that
+    differ in sign (DINT to UDINT, UDINT to DINT, BYTE to USINT, DWORD to DINT), two's complement as C casts."""
+    if not (source.is_elementary and target.is_elementary) or source is target:
+        return False
+    if not ((source.is_int or source.is_bit) and (target.is_int or target.is_bit)):
+        return False
+    return target.bits >= source.bits and not widens(source, target)
+
+
 def _ltime_converted(st, dt, code):
     """User mode: LTIME to and from a number of nanoseconds (LTIME_TO_ULINT, LREAL_TO_LTIME), as TwinCAT and
     CODESYS count it, unsigned; TIME_TO_LTIME exact, LTIME_TO_TIME to whole milliseconds, TIME's resolution."""
@@ -151,6 +162,10 @@ class ExprCompiler:
         if self.comp.user and widens(te.type, target):
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return te.code if target.is_time else f"(({target.cname})({te.code}))"  # TIME to LTIME: one C type
+        if self.comp.user and what != "operand" and changes_sign(te.type, target):  # not `D = UD`: TwinCAT
+            # compares those at the register width
+            self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
+            return f"(({target.cname})({te.code}))"
         hint = ""
         convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
         if te.type.is_string and target.is_string and self.comp.user:
@@ -337,7 +352,7 @@ class ExprCompiler:
         inner = self.expr(node.expr, want)
         if inner.code is None:
             return inner
-        return TE(inner.type, f"({inner.code})", narrow=inner.narrow)
+        return TE(inner.type, f"({inner.code})", narrow=inner.narrow, wide=inner.wide)
 
     def _e_BracketedExpression(self, node, want):
         raise self.err(node, "bracketed expression is outside the portable subset")
@@ -462,7 +477,8 @@ class ExprCompiler:
         if t.is_bit and self.comp.user:  # unsigned, wrapping at the width (no C promotion to a signed int)
             if op in ("/", "MOD"):
                 return TE(t, f"__{'div' if op == '/' else 'mod'}_{t.cname}({ca}, {cb})")
-            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32)
+            return TE(t, f"(({t.cname})((uint64_t)({ca}) {op} (uint64_t)({cb})))", narrow=t.bits < 32,
+                      wide=self._wide(a, ca, op, b, cb) if t.bits < 32 else None)
         if t.is_time:
             if op == "+":
                 return TE(t, f"__time_add({ca}, {cb})")
@@ -478,7 +494,14 @@ class ExprCompiler:
             return TE(t, f"__div_{t.cname}({ca}, {cb})")
         if op == "MOD":
             return TE(t, f"__mod_{t.cname}({ca}, {cb})")
-        return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32)
+        return TE(t, f"(({t.cname})({ca} {op} {cb}))", narrow=t.bits < 32,
+                  wide=self._wide(a, ca, op, b, cb) if t.bits < 32 and self.comp.user else None)
+
+    @staticmethod
+    def _wide(a, ca, op, b, cb):
+        """User mode: `a op b` (+ - *) of types narrower than 32 bits computed in 64 bits and not wrapped, as
+        TwinCAT and CODESYS compute intermediate results at the register width (x64)."""
+        return f"((int64_t)({a.wide or ca}) {op} (int64_t)({b.wide or cb}))"
 
     def _date_arithmetic(self, node, op, a, b):
         """User mode: DT, TOD + or - a TIME (DT whole seconds of it), DT - DT, TOD - TOD and DATE - DATE a TIME,
@@ -527,7 +550,15 @@ class ExprCompiler:
     def _compare(self, node, op):
         a = self.expr(node.left)
         b = self.expr(node.right)
+        wide = self._wide_compare(node, op, a, b)
+        if wide is not None:
+            return wide
         for side, te in ((node.left, a), (node.right, b)):
+            if te.narrow and self.comp.user:
+                raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, a negation, NOT or "
+                                     "a shift: TwinCAT and CODESYS compare it unwrapped at the register width, "
+                                     "pacst does so for + - * compared with a REAL or an integer of up to 32 bits; "
+                                     "store it in a variable first")
             if te.narrow:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
@@ -551,6 +582,23 @@ class ExprCompiler:
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _wide_compare(self, node, op, a, b):
+        """User mode: a comparison of the result of + - * on types narrower than 32 bits, unwrapped in 64 bits
+        (`(w + 1) = 0` is FALSE for w = 65535, as on TwinCAT x64), or None for any other comparison."""
+        if not self.comp.user or not (a.wide or b.wide):
+            return None
+        if any(te.narrow and not te.wide for te in (a, b)):
+            return None  # a negation, NOT or shift on one side: refused by the caller
+        t, ca, cb = self.unify(a, b, None, node)
+        if t.is_real:  # (i + 1) > 2.5
+            c = "LREAL"
+        elif (t.is_int or t.is_bit) and t.bits <= 32:
+            c = "int64_t"
+        else:
+            return None
+        self.comp.dialect(node.op, "a comparison of small-type arithmetic at the register width")
+        return TE(T.BOOL, f"(({c})({a.wide or ca}) {_CMP_C[op]} ({c})({b.wide or cb}))")
 
     def _logic(self, node, op, want):
         a = self.expr(node.left, want)
@@ -688,8 +736,10 @@ class ExprCompiler:
             (arg,) = self._positional(node, 1, ["IN"] if fn == "ADR" else ["REF"])
             r = self.body.ref(arg, raw=fn == "__ISVALIDREF")
             if fn == "__ISVALIDREF":
+                if getattr(r.var, "section", None) == "inout" and r.var.type is r.type:
+                    return TE(T.BOOL, "TRUE")  # a VAR_IN_OUT: every call gives one (FsCommon's F_DeallocateMemory)
                 if not (r.type.is_pointer and r.type.reference):
-                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE")
+                    raise self.err(arg, "__ISVALIDREF takes a REFERENCE or a VAR_IN_OUT")
                 return TE(T.BOOL, f"(({r.read()}) != NULL)")
             if getattr(r, "whole", None) is not None:
                 raise self.err(arg, "ADR of a bit: a bit has no address")
@@ -749,12 +799,15 @@ class ExprCompiler:
         if src in ("REAL", "LREAL"):
             raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
                                  f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
-        if src not in _CONVERTIBLE:
+        if src not in _CONVERTIBLE and src not in T.USER_ELEMENTARY:
             raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
                                  "are converted to STRING")
         (arg,) = self._positional(node, 1, ["IN"])
-        st = T.ELEMENTARY[src]
+        st = T.ELEMENTARY.get(src) or T.USER_ELEMENTARY[src]
         code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        if src in ("ULINT", "LWORD"):  # above LINT's range too
+            self.comp.dialect(node, name)
+            return TE(T.STRING, f"__pacst_digits_to_string((unsigned long long)({code}), 0)")
         if st.is_bool:
             return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
         return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
@@ -793,9 +846,11 @@ class ExprCompiler:
         if all(_cls(p) == "InputParameterAssignment" and p.name is None for p in params):
             return [p.value for p in params]
         by_name = {}
-        for p in params:
-            if _cls(p) != "InputParameterAssignment" or p.name is None:
+        for k, p in enumerate(params):
+            if _cls(p) != "InputParameterAssignment" or p.name is None and not self.comp.user:
                 raise self.err(p, "mix of formal and positional arguments")
+            if p.name is None:  # user mode: FIND(STR1 := s, '.'), as for a FUNCTION of the program's
+                return self._formal_then_positional(node, params, k, by_name, names, vendor_names)
             by_name[_name(p.name.name).upper()] = p.value
         if vendor_names and self.comp.user and set(by_name) == set(vendor_names):
             self.comp.dialect(node, f"the input names {', '.join(vendor_names)} of Tc2_Standard and Standard")
@@ -804,6 +859,20 @@ class ExprCompiler:
             also = f" (or {', '.join(vendor_names)})" if vendor_names and self.comp.user else ""
             raise self.err(node, f"the inputs are {', '.join(names)}{also}")
         return [by_name[n] for n in names]
+
+    def _formal_then_positional(self, node, params, first, by_name, names, vendor_names):
+        """User mode: a standard function's arguments, formal ones then positional ones (`FIND(STR1 := s, '.')`):
+        the positional ones go to the inputs not given yet, in order, as TwinCAT passes them."""
+        order = vendor_names if vendor_names and set(by_name) & set(vendor_names) else names
+        if not set(by_name) <= set(order):
+            raise self.err(node, f"the inputs are {', '.join(order)}")
+        rest = [n for n in order if n not in by_name]
+        for name, p in zip(rest, params[first:]):
+            if _cls(p) != "InputParameterAssignment" or p.name is not None:
+                raise self.err(p, "a formal argument after a positional one: write the formal ones first")
+            by_name[name] = p.value
+        self.comp.dialect(node, "formal arguments followed by positional ones")
+        return [by_name[n] for n in order]
 
     def _conversion(self, node, src, dst):
         if self.comp.user and "BIT" in (src, dst):  # BIT is a BOOL here (BIT_TO_BOOL, BOOL_TO_BIT, BIT_TO_INT)
@@ -926,6 +995,10 @@ class ExprCompiler:
         if not t.is_bit:
             raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         ne = self.expr(count, T.INT)
+        if self.comp.user and fn == "SHL" and want is not None and want.is_bit and widens(t, want):
+            # nK := nK XOR SHL(pTail[2], 16): TwinCAT shifts at the register width, the DWORD keeps the bits
+            self.comp.dialect(node, f"SHL of a {t.name} where a {want.name} is expected")
+            te, t = TE(want, self.coerce(te, want, value)), want
         if ne.type is T.ANY_INT:
             if not 0 <= ne.value < t.bits:
                 raise self.err(count, f"shift count {ne.value} outside 0..{t.bits - 1} for {t.name}")

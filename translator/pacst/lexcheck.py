@@ -53,8 +53,8 @@ class Comment:
         self.end = end
 
 
-# TwinCAT's operators, namespaces and types starting with '__' that user mode translates (system.py, expressions.py,
-# types.PLATFORM_WIDTH)
+# TwinCAT's operators, namespaces and pseudo types starting with '__' that user mode translates (system.py,
+# expressions.py, compiler.py)
 _TWINCAT_TRANSLATED = {"__ISVALIDREF", "__NEW", "__DELETE", "__SYSTEM", "__XINT", "__UXINT", "__XWORD"}
 # and those it does not translate, and why
 _TWINCAT_OPERATORS = {

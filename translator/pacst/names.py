@@ -45,15 +45,17 @@ IEC_KEYWORDS = {
 }
 
 
-def reserved_reason(name, user=False):
+def reserved_reason(name, user=False, c_name=True):
     """Why `name` may not be declared, or None when it may. A user program (`user`) may take the keywords
-    of the other IEC languages (Step, Action...): pacst's C does not mind, only MATIEC's lexer does."""
+    of the other IEC languages (Step, Action...): pacst's C does not mind, only MATIEC's lexer does. A name that
+    is never a C name alone (`c_name` False: a user program's enumeration value, E_TYPE__VALUE in C) may be a C
+    keyword or macro too."""
     up = name.upper()
     if up in IEC_KEYWORDS and not user:
         return f"'{name}' is a keyword of IEC 61131-3 (SFC, IL or configurations) that MATIEC reserves"
-    if up in C_KEYWORDS:
+    if up in C_KEYWORDS and c_name:
         return f"'{name}' is a C keyword in the generated code"
-    if up in C_MACROS:
+    if up in C_MACROS and c_name:
         return f"'{name}' upper-cased is a C macro or a name the generated code uses"
     if up in STANDARD_FUNCTIONS:
         return f"'{name}' is the name of a standard function"

@@ -214,6 +214,8 @@ def delete_statement(body, node, ind):
     if len(args) != 1 or args[0] is None:
         raise comp.err(node, "__DELETE takes one POINTER: __DELETE(p)")
     r = body.ref(args[0], raw=True)
+    if r.type.is_pointer and r.type.reference and r.type.target.is_pointer:  # a REFERENCE TO POINTER: the pointer
+        r = body.ref(args[0])
     if not r.type.is_pointer or r.type.reference:
         raise comp.err(args[0], f"__DELETE's operand is a POINTER, not a {r.type.name} (TwinCAT refuses it too)")
     if not r.writable:

@@ -72,9 +72,10 @@ ELEMENTARY = {
 # The 64-bit types of user programs (pacst --user): TwinCAT and CODESYS have them, MATIEC's C does too.
 USER_ELEMENTARY = {t.name: t for t in [Elementary("LINT", "int", 64, True), Elementary("ULINT", "int", 64),
                                        Elementary("LWORD", "bit", 64)]}
-# TwinCAT's integers of the platform's width (user mode): 64 bits on the 64-bit runtimes pac-test stands for, as on
-# TwinCAT 3 x64 (a 32-bit runtime makes them DINT, UDINT, DWORD); another name of LINT, ULINT and LWORD here.
-PLATFORM_WIDTH = {"__XINT": "LINT", "__UXINT": "ULINT", "__XWORD": "LWORD"}
+# TwinCAT's and CODESYS's register-wide pseudo types, as on a 64-bit target (TwinCAT 3 x64, the test host): PVOID
+# is a __UXINT there, an address held as a number (written as pointer arithmetic's operand and ADR's result).
+PSEUDO_TYPES = {"__XINT": "LINT", "__UXINT": "ULINT", "__XWORD": "LWORD",
+                "XINT": "LINT", "UXINT": "ULINT", "XWORD": "LWORD", "PVOID": "ULINT"}
 # LTIME of user programs: TwinCAT's and CODESYS's nanoseconds in 64 bits. pacst's TIME already counts
 # nanoseconds (two longs), so an LTIME is that C type too; a type of its own for ST's rules and conversions.
 LTIME = Elementary("LTIME", "time", 64)

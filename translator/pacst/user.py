@@ -277,9 +277,12 @@ def _global_items(comp, gvl, block, constant):
             vup = vname.upper()
             if gvl.var(vname) is not None:
                 raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
-            if vup in comp.types or vup in comp.pous or vup in comp.enum_values or vup in comp.gvls:
+            shadows_value = vup in comp.enum_values and not gvl.qualified_only  # List.Name never means the value
+            if vup in comp.types or vup in comp.pous or shadows_value or vup in comp.gvls:
                 raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
                                       "value or global list")
+            if vup in comp.enum_values:
+                comp.dialect(token, "a global variable of a qualified_only list named like an enumeration value")
             v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
             if value is not None:
                 comp.init_code(v, "x")  # checks the initial value now
@@ -321,6 +324,8 @@ def lookup_global(comp, token):
     """The global an unqualified name means in user mode, or None; several lists declaring it is an error, and
     so is the name alone of a list under {attribute 'qualified_only'}."""
     found = comp.globals.get(_name(token).upper(), [])
+    if found and _name(token).upper() in comp.enum_values and all(v.gvl.qualified_only for v in found):
+        return None  # ERR_OK alone is the enumeration value; GVL_Errors.ERR_OK the list's
     if len(found) > 1:
         raise comp.err(token, f"'{_name(token)}' is declared in the global lists "
                               f"{', '.join(v.gvl.name for v in found)}: qualify it (List.Name)")

@@ -132,20 +132,23 @@ static inline STRING __pacst_str_concat(STRING a, STRING b) {
     return a;
 }
 static inline INT __pacst_str_len(STRING s) { return (INT)s.len; }
-/* INT_TO_STRING and the other integer conversions to STRING: decimal, a '-' before a negative value. */
-static inline STRING __pacst_int_to_string(long long v) {
+/* INT_TO_STRING and the other integer conversions to STRING: decimal, a '-' before a negative value (ULINT and
+   LWORD: the magnitude u alone). */
+static inline STRING __pacst_digits_to_string(unsigned long long u, int negative) {
     char digits[24];
     int n = 0, i;
-    unsigned long long u = v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v;
     STRING s;
     do {
         digits[n++] = (char)('0' + u % 10U);
         u /= 10U;
     } while (u != 0U);
-    if (v < 0) digits[n++] = '-';
+    if (negative) digits[n++] = '-';
     s.len = (uint8_t)n;
     for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < n ? digits[n - 1 - i] : 0);
     return s;
+}
+static inline STRING __pacst_int_to_string(long long v) {
+    return __pacst_digits_to_string(v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v, v < 0);
 }
 static inline STRING __pacst_str_limit(STRING s, long n) { return __pacst_str_part(s, 0, n); }
 static inline STRING __pacst_str_left(STRING s, long l) { return __pacst_str_part(s, 0, l); }
