@@ -16,6 +16,20 @@ class WiringError(Exception):
 TOP_KEYS = {"name", "description", "sources", "libraries", "tasks", "bus", "timing", "controller", "tests", "signals"}
 TEST_KEYS = {"prefix", "names", "task", "time_limit_ms", "faults", "expected_to_fail"}
 FAULT_KEYS = {"at_ms", "fault", "link", "number", "input", "value", "note"}
+# The scenario format's description, whose fault steps name the fault kinds the scenario loader knows.
+SCENARIO_SCHEMA = os.path.join(os.path.dirname(__file__), "..", "..", "..", "scenario", "scenario.schema.json")
+
+
+def fault_kinds():
+    """The fault kinds of the scenario format ("power_cycle", ...), read from its schema: `--list` refuses a
+    misspelt one as the run does, without building the host whose loader checks the rest of a fault."""
+    with open(SCENARIO_SCHEMA, encoding="utf-8") as f:
+        definitions = json.load(f).get("definitions", {})
+    kinds = set()
+    for definition in definitions.values():
+        fault = definition.get("properties", {}).get("fault", {})
+        kinds.update([fault["const"]] if "const" in fault else fault.get("enum", []))
+    return sorted(kinds)
 
 
 def _object(value, path, keys):
@@ -190,6 +204,10 @@ class Wiring:
     def _fault(self, item, path):
         _object(item, path, FAULT_KEYS)
         at = _int(item.get("at_ms"), f"{path}.at_ms", 0, 3600000)
+        kinds = fault_kinds()
+        if item.get("fault") not in kinds:
+            raise WiringError(f"{path}.fault", f"unknown fault {json.dumps(item.get('fault'))} (a fault is "
+                                               f"{', '.join(json.dumps(k) for k in kinds)})")
         step = {k: v for k, v in item.items() if k != "at_ms"}
         return at, step
 

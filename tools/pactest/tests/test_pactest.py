@@ -514,8 +514,9 @@ class CliTest(unittest.TestCase):
         with open(os.path.join(HERE, "fixture", "wiring.json"), encoding="utf-8") as f:
             data = json.load(f)
         data["sources"] = [os.path.join(HERE, "fixture", "*.st")]
-        data["tests"]["faults"] = {"FB_TestPasses": [{"at_ms": 0, "fault": "a"}],
-                                   "FB_TestFails": [{"at_ms": 5, "fault": "b"}, {"at_ms": 9, "fault": "c"}]}
+        data["tests"]["faults"] = {"FB_TestPasses": [{"at_ms": 0, "fault": "power_cycle"}],
+                                   "FB_TestFails": [{"at_ms": 5, "fault": "system_error"},
+                                                    {"at_ms": 9, "fault": "thaw_link"}]}
         wiring = Wiring(write_wiring("step_paths", data))
         passes = wiring.step_paths("FB_TestPasses")
         wiring.scenario("FB_TestFails")
@@ -525,7 +526,7 @@ class CliTest(unittest.TestCase):
         self.assertEqual(wiring_path("$.steps[3].fault: unknown", fails),
                          "$.tests.faults.FB_TestFails[1].fault: unknown")
         self.assertEqual([s.get("fault") for s in wiring.scenario("FB_TestFails")["steps"]],
-                         [None, "b", None, "c", None])
+                         [None, "system_error", None, "thaw_link", None])
 
 
 class WiringRefusalTest(unittest.TestCase):
@@ -552,9 +553,12 @@ class WiringRefusalTest(unittest.TestCase):
                       self.refused(lambda d: d.update(controller={"n_registers": {"2000": 1}}), listing=False))
 
     def test_a_fault_the_scenario_format_does_not_know(self):
-        self.assertIn("$.tests.faults.FB_TestPasses[1].fault: unknown fault \"melt_down\"",
-                      self.refused(lambda d: d["tests"].update(faults={"FB_TestPasses": [
-                          {"at_ms": 10, "fault": "power_cycle"}, {"at_ms": 5, "fault": "melt_down"}]}), listing=False))
+        # --list exits as the run would (it once listed the tests and exited 0)
+        for listing in (False, True):
+            self.assertIn("$.tests.faults.FB_TestPasses[1].fault: unknown fault \"melt_down\"",
+                          self.refused(lambda d: d["tests"].update(faults={"FB_TestPasses": [
+                              {"at_ms": 10, "fault": "power_cycle"}, {"at_ms": 5, "fault": "melt_down"}]}),
+                              listing=listing))
 
     def test_an_automatic_module_is_its_axis_modules_image(self):
         self.assertIn("$.bus.automatic[0]: module 1 has one image",
