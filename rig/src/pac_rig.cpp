@@ -51,7 +51,9 @@ void PacRig::RegisterCmdInterface() {
     cmdInterfaceRegistered_ = true;
     task_.AddProgram([this] {
         ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
-        for (std::size_t i = 0; i < 8; ++i) channel.FROMPAC.table[i] = fromPac_[pac::sim::ModuleLayout::kCmdOffset + i];
+        // RequireModule checked the bounds once: a block copy, not 8 checked bytes.
+        static_assert(sizeof channel.FROMPAC.table == 8 && sizeof channel.TOPAC.table == 8, "the CMD module");
+        std::memcpy(channel.FROMPAC.table, fromPac_.Data() + pac::sim::ModuleLayout::kCmdOffset, 8);
         if (cmdInterfaceCalled_) CmdInterface()();
         CopyChannelToModule();
     });
@@ -59,7 +61,7 @@ void PacRig::RegisterCmdInterface() {
 
 void PacRig::CopyChannelToModule() {
     const ST_PAC_CMDCHANNEL& channel = CmdInterface()->CHANNEL.value;
-    for (std::size_t i = 0; i < 8; ++i) toPac_[pac::sim::ModuleLayout::kCmdOffset + i] = channel.TOPAC.table[i];
+    std::memcpy(toPac_.Data() + pac::sim::ModuleLayout::kCmdOffset, channel.TOPAC.table, 8);
 }
 
 void PacRig::CallCmdProgram(std::function<void(ST_PAC_CMDCHANNEL& channel)> program) {

@@ -1,6 +1,7 @@
 // The simulated PA-CONTROL's cycle (see pa_control.hpp and docs/sim_controller.md).
 #include "pac/sim/pa_control.hpp"
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -47,8 +48,9 @@ PaControl::PaControl(Bus& bus, PaControlConfig config)
       log_(config_.logCapacity),
       automaticModule_(config_.automaticModule),
       bootEnd_(config_.bootTime),
-      lastFromPac_(layout_.Bytes()),
-      lastToPac_(layout_.Bytes()) {
+      imageBytes_(layout_.Bytes()),
+      lastFromPac_(imageBytes_),
+      lastToPac_(imageBytes_) {
     state_.axisModules = CheckedAxisModules(layout_, config_);
     modules_.assign(static_cast<std::size_t>(state_.axisModules), AxisModule(config_.axisModule));
     automaticReplies_.assign(modules_.size(), Image12{});
@@ -175,11 +177,22 @@ void PaControl::ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds
 
 void PaControl::ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
     const AxisModuleContext context = ModuleContext(now);
-    // modules_ holds axisModules modules, axis k at k - 1 (the constructor): no range check per call.
-    for (int axis = 1; axis <= state_.axisModules; ++axis) {
-        modules_[static_cast<std::size_t>(axis - 1)].Serve(toPac.Module12(layout_.AxisOffset(axis)),
-                                                           state_.axes.Motion(axis), context);
+    // modules_ holds axisModules modules, axis k at k - 1 (the constructor), and the image has the layout's
+    // size (checked once here): the modules' bytes are copied as blocks, without a range check per module.
+    const std::uint8_t* bytes = AxisModuleBytes(toPac);
+    Image12 module;
+    for (int axis = 1; axis <= state_.axisModules; ++axis, bytes += module.size()) {
+        std::memcpy(module.data(), bytes, module.size());
+        modules_[static_cast<std::size_t>(axis - 1)].Serve(module, state_.axes.Motion(axis), context);
     }
+}
+
+const std::uint8_t* PaControl::AxisModuleBytes(const ProcessImage& image) const {
+    if (image.Size() != imageBytes_) {
+        throw std::logic_error("PaControl: an image of " + std::to_string(image.Size()) + " bytes, the layout has " +
+                               std::to_string(imageBytes_));
+    }
+    return image.Data() + ModuleLayout::kFirstAxisOffset;
 }
 
 void PaControl::PowerCycle(std::chrono::nanoseconds now) {
@@ -279,20 +292,21 @@ void PaControl::AttachSerial(SerialLine& line, SerialPortConfig config) {
 }
 
 void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const {
-    reply = ProcessImage(layout_.Bytes());
+    reply = ProcessImage(imageBytes_);
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
     const AxisModuleContext context = ModuleContext(now);
     Image12 module;
-    for (int axis = 1; axis <= state_.axisModules; ++axis) {
+    std::uint8_t* bytes = reply.Data() + ModuleLayout::kFirstAxisOffset;  // the reply has the layout's size (above)
+    for (int axis = 1; axis <= state_.axisModules; ++axis, bytes += module.size()) {
         const auto k = static_cast<std::size_t>(axis - 1);
         if (automatic) {
             module = automaticReplies_[k];
         } else {
             modules_[k].ReplyInto(state_.axes.Motion(axis), context, module);
         }
-        reply.SetModule12(layout_.AxisOffset(axis), module);
+        std::memcpy(bytes, module.data(), module.size());
     }
 }
 

@@ -183,6 +183,8 @@ private:
     bool AutomaticExchangeNow() const;
     AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
     void ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const;
+    // The first axis module's byte in `image`; std::logic_error unless the image has the layout's size.
+    const std::uint8_t* AxisModuleBytes(const ProcessImage& image) const;
 
     Bus& bus_;
     ModuleLayout layout_;
@@ -208,6 +210,7 @@ private:
     bool communicationActive_ = false;  // a non-zero to-PAC image was seen since power-on
     bool emergencyStop_ = false;
     std::optional<std::chrono::nanoseconds> lastTime_;
+    std::size_t imageBytes_;  // layout_.Bytes(), the size of every image of a cycle
     ProcessImage lastFromPac_;
     ProcessImage lastToPac_;
 };

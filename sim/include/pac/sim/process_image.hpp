@@ -23,6 +23,7 @@ struct ModuleLayout {
     static constexpr int kMaxAxisModules = 8;
     static constexpr std::size_t kCmdOffset = 0;
     static constexpr std::size_t kCtrlOffset = 8;
+    static constexpr std::size_t kFirstAxisOffset = 16;  // axis module k at kFirstAxisOffset + 12 * (k - 1)
 
     bool ctrl = false;
     int axisModules = 0;
@@ -33,7 +34,7 @@ struct ModuleLayout {
     // Byte offset of axis module `module` (1..axisModules); std::out_of_range otherwise.
     std::size_t AxisOffset(int module) const {
         if (module < 1 || module > axisModules) ThrowNoAxisModule(module);
-        return 16 + 12 * static_cast<std::size_t>(module - 1);
+        return kFirstAxisOffset + 12 * static_cast<std::size_t>(module - 1);
     }
 
 private:
@@ -56,6 +57,8 @@ public:
 
     std::size_t Size() const { return size_; }
     const std::uint8_t* Data() const { return bytes_.data(); }
+    // Size() bytes: for the simulator's loops over the axis modules, which check the size once per cycle.
+    std::uint8_t* Data() { return bytes_.data(); }
     // Bytes at 0..Size()-1; another index: std::out_of_range.
     std::uint8_t& operator[](std::size_t i) { return bytes_[CheckedIndex(i)]; }
     std::uint8_t operator[](std::size_t i) const { return bytes_[CheckedIndex(i)]; }
