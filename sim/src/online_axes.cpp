@@ -51,9 +51,10 @@ void OnlineAxes::Supervise(std::chrono::nanoseconds now, AxisGroup& axes, const 
     }
     wasOnline_ = online;
     const int count = std::min(static_cast<int>(axes_.size()), axes.Capacity());
+    Axis* const records = axes_.data();  // count records and axes: neither looked up with a check per axis
     for (int axis = 1; axis <= count; ++axis) {
-        Axis& a = axes_[static_cast<std::size_t>(axis - 1)];
-        ServoAxis& motion = axes.Motion(axis);
+        Axis& a = records[axis - 1];
+        ServoAxis& motion = axes.MotionInRange(axis);
         // Most axes have neither a manual traverse nor a condition: then their motion is not asked.
         if (a.keepAliveUntil || a.activeCondition) {
             const bool running = motion.JobActive() || motion.Moving();

@@ -177,13 +177,13 @@ void PaControl::ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds
 
 void PaControl::ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now) {
     const AxisModuleContext context = ModuleContext(now);
-    // modules_ holds axisModules modules, axis k at k - 1 (the constructor), and the image has the layout's
-    // size (checked once here): the modules' bytes are copied as blocks, without a range check per module.
+    // modules_ holds axisModules modules, axis k at k - 1, no more than the axes (the constructor); the image
+    // has the layout's size (checked once here): the bytes are copied as blocks, without a check per module.
     const std::uint8_t* bytes = AxisModuleBytes(toPac);
     Image12 module;
     for (int axis = 1; axis <= state_.axisModules; ++axis, bytes += module.size()) {
         std::memcpy(module.data(), bytes, module.size());
-        modules_[static_cast<std::size_t>(axis - 1)].Serve(module, state_.axes.Motion(axis), context);
+        modules_[static_cast<std::size_t>(axis - 1)].Serve(module, state_.axes.MotionInRange(axis), context);
     }
 }
 
@@ -292,7 +292,9 @@ void PaControl::AttachSerial(SerialLine& line, SerialPortConfig config) {
 }
 
 void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const {
-    reply = ProcessImage(imageBytes_);
+    // Every byte is written below (CMD, CTRL where the layout has it, each axis module; axis modules need
+    // CTRL): the image is only made the layout's size, not cleared first.
+    if (reply.Size() != imageBytes_) reply = ProcessImage(imageBytes_);
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
@@ -304,7 +306,7 @@ void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) 
         if (automatic) {
             module = automaticReplies_[k];
         } else {
-            modules_[k].ReplyInto(state_.axes.Motion(axis), context, module);
+            modules_[k].ReplyInto(state_.axes.MotionInRange(axis), context, module);
         }
         std::memcpy(bytes, module.data(), module.size());
     }

@@ -26,6 +26,9 @@ public:
     // std::out_of_range outside 1..Capacity().
     ServoAxis& Motion(int axis) { return At(axis).motion; }
     const ServoAxis& Motion(int axis) const { return At(axis).motion; }
+    // Motion(axis) for a loop whose bounds already keep axis within 1..Capacity(): no check.
+    ServoAxis& MotionInRange(int axis) { return axes_[static_cast<std::size_t>(axis - 1)].motion; }
+    const ServoAxis& MotionInRange(int axis) const { return axes_[static_cast<std::size_t>(axis - 1)].motion; }
     ParameterTable& Parameters(int axis) { return At(axis).parameters; }
     const ParameterTable& Parameters(int axis) const { return At(axis).parameters; }
 
