@@ -9,7 +9,9 @@
 namespace pac::sim {
 
 OnlineAxes::OnlineAxes(int capacity, OnlineCommandOptions options)
-    : options_(options), axes_(static_cast<std::size_t>(capacity < 0 ? 0 : capacity)) {
+    : options_(options),
+      axes_(static_cast<std::size_t>(capacity < 0 ? 0 : capacity)),
+      watched_(axes_.size(), 0) {
     if (options_.keepAlive <= std::chrono::nanoseconds::zero()) {
         throw std::invalid_argument("OnlineAxes: the keep-alive time must be > 0");
     }
@@ -34,9 +36,23 @@ void OnlineAxes::ArmConditionOfMove(int axis) {
     a.activeCondition = a.nextCondition;
     a.nextCondition.reset();
     a.conditionSeenMoving = false;
+    Watch(axis);
 }
 
-void OnlineAxes::KeepAlive(int axis, std::chrono::nanoseconds now) { At(axis).keepAliveUntil = now + options_.keepAlive; }
+void OnlineAxes::KeepAlive(int axis, std::chrono::nanoseconds now) {
+    At(axis).keepAliveUntil = now + options_.keepAlive;
+    Watch(axis);
+}
+
+void OnlineAxes::EndManualTraverse(int axis) {
+    At(axis).keepAliveUntil.reset();
+    Watch(axis);
+}
+
+void OnlineAxes::Watch(int axis) {
+    const Axis& a = At(axis);
+    watched_[static_cast<std::size_t>(axis - 1)] = a.keepAliveUntil.has_value() || a.activeCondition.has_value();
+}
 
 bool OnlineAxes::Holds(const MoveCondition& condition, const Elements& elements) {
     const BitBank& bank = condition.type == ElementType::kInput    ? elements.inputs
@@ -53,10 +69,12 @@ void OnlineAxes::Supervise(std::chrono::nanoseconds now, AxisGroup& axes, const 
     const int count = std::min(static_cast<int>(axes_.size()), axes.Capacity());
     Axis* const records = axes_.data();  // count records and axes: neither looked up with a check per axis
     for (int axis = 1; axis <= count; ++axis) {
-        Axis& a = records[axis - 1];
+        const auto k = static_cast<std::size_t>(axis - 1);
         ServoAxis& motion = axes.MotionInRange(axis);
-        // Most axes have neither a manual traverse nor a condition: then their motion is not asked.
-        if (a.keepAliveUntil || a.activeCondition) {
+        // Most axes have neither a manual traverse nor a condition: then neither their record (watched_ says
+        // so, in one cache line for all axes) nor their motion is asked.
+        if (watched_[k]) {
+            Axis& a = records[k];
             const bool running = motion.JobActive() || motion.Moving();
             if (a.keepAliveUntil) {
                 if (!running) {
@@ -78,14 +96,17 @@ void OnlineAxes::Supervise(std::chrono::nanoseconds now, AxisGroup& axes, const 
                     a.activeCondition.reset();
                 }
             }
+            watched_[k] = a.keepAliveUntil.has_value() || a.activeCondition.has_value();
         }
+        // The largest following error is never below 0: an axis without one leaves its record alone.
         const double following = motion.FollowingErrorSize();
-        if (following > a.maxFollowingError) a.maxFollowingError = following;
+        if (following > 0.0 && following > records[k].maxFollowingError) records[k].maxFollowingError = following;
     }
 }
 
 void OnlineAxes::Reset() {
     for (Axis& a : axes_) a = Axis{};
+    watched_.assign(axes_.size(), 0);
     wasOnline_ = false;
 }
 

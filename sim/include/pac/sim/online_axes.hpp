@@ -59,7 +59,7 @@ public:
     void KeepAlive(int axis, std::chrono::nanoseconds now);
     bool ManualTraverse(int axis) const { return At(axis).keepAliveUntil.has_value(); }
     // 0A93 / 0A9A / 0600 and every other end of the traverse.
-    void EndManualTraverse(int axis) { At(axis).keepAliveUntil.reset(); }
+    void EndManualTraverse(int axis);
     double MaxFollowingError(int axis) const { return At(axis).maxFollowingError; }
 
     // Once per controller cycle, axes updated: a manual traverse without keep-alive and a movement whose
@@ -82,9 +82,13 @@ private:
     Axis& At(int axis);
     const Axis& At(int axis) const;
     static bool Holds(const MoveCondition& condition, const Elements& elements);
+    void Watch(int axis);  // watched_ after a change of the axis's keep-alive or active condition
 
     OnlineCommandOptions options_;
     std::vector<Axis> axes_;
+    // Per axis: a keep-alive or an active condition for Supervise() to follow. Kept beside the records, which
+    // the supervision of every cycle then reads only for the axes that have one.
+    std::vector<std::uint8_t> watched_;
     bool wasOnline_ = false;
 };
 
