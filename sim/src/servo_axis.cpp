@@ -38,9 +38,17 @@ nanoseconds After(nanoseconds base, double seconds) {
 
 ServoAxis::ServoAxis(ServoAxisConfig config) : config_(config) {
     config_.Validate();
+    CopyLimitSwitches();
     referenced_ = config_.referenced;
     offPosition_ = config_.startPosition;
     HoldAt(config_.startPosition);
+}
+
+void ServoAxis::CopyLimitSwitches() {
+    hasNegativeLimit_ = config_.negativeLimitSwitch.has_value();
+    hasPositiveLimit_ = config_.positiveLimitSwitch.has_value();
+    negativeLimit_ = config_.negativeLimitSwitch.value_or(0.0);
+    positiveLimit_ = config_.positiveLimitSwitch.value_or(0.0);
 }
 
 // ---- time and positions -------------------------------------------------------------------------------
@@ -588,7 +596,10 @@ void ServoAxis::SetDriveDisabled(nanoseconds now, bool disabled) {
 void ServoAxis::SetConfig(nanoseconds now, const ServoAxisConfig& config) {
     config.Validate();
     Advance(now);
-    ChangeRegime([&] { config_ = config; });
+    ChangeRegime([&] {
+        config_ = config;
+        CopyLimitSwitches();
+    });
     ApplyDriveRequest();
     CheckFollowingError();
     RunEventsUntil(now_);

@@ -161,8 +161,8 @@ public:
     };
     ActualSample SampleActual() const {
         const double machine = ActualMachine();
-        return {machine + offset_, config_.negativeLimitSwitch && machine <= *config_.negativeLimitSwitch,
-                config_.positiveLimitSwitch && machine >= *config_.positiveLimitSwitch};
+        return {machine + offset_, hasNegativeLimit_ && machine <= negativeLimit_,
+                hasPositiveLimit_ && machine >= positiveLimit_};
     }
     double MinRange() const { return config_.minTraverseRange + shift_; }  // with the G29 shift
     double MaxRange() const { return config_.maxTraverseRange + shift_; }
@@ -246,6 +246,7 @@ private:
 
     DriveState WantedDrive() const;
     void ApplyDriveRequest();
+    void CopyLimitSwitches();  // after every change of config_
 
     template <typename Change>
     void ChangeRegime(Change change);
@@ -278,6 +279,11 @@ private:
     bool driveDisabled_ = false;
     bool interrupted_ = false;
     bool referenced_ = false;
+    // config_'s limit switches, copied by CopyLimitSwitches(): every cycle's reply reads them, config_ is lines away.
+    bool hasNegativeLimit_ = false;
+    bool hasPositiveLimit_ = false;
+    double negativeLimit_ = 0.0;
+    double positiveLimit_ = 0.0;
 
     // Motion: the running profile (machine coordinates), its start (above), the job's target (NaN: none yet).
     Trajectory trajectory_;
