@@ -162,6 +162,21 @@ class Corpus(unittest.TestCase):
         self.assertGreater(read, 100)
         self.assertEqual(declined, [])
 
+    def test_pragmas_take_the_fast_path(self):
+        """The export's TwinCAT files carry `{attribute 'hide'}` before a type or a POU, and a program's own
+        files pragmas anywhere: the fast parser skips them as blark's grammar ignores them, with Earley's tree;
+        a pragma followed by `;` is declined (the `;` could end a statement too)."""
+        oracle = _ORACLE or Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+        cases = {"data_type_declaration": "{attribute 'hide'}\nTYPE E_Hidden :\n(\n  A,  (* one *)\n  B\n);\nEND_TYPE\n",
+                 "iec_source": "{attribute 'hide'}\nFUNCTION_BLOCK FB_Hidden\nVAR_INPUT\n  {attribute 'x'} A : BOOL;\n"
+                               "END_VAR\nVAR\n  N : INT;\nEND_VAR\n{region}N := N + 1; {endregion}\nIF A THEN\n  N := 0;\n"
+                               "END_IF;\nEND_FUNCTION_BLOCK\n",
+                 "statement_list": "X := 1;\n{attribute 'x'}\nY := 2;\n"}
+        for rule, text in cases.items():
+            with self.subTest(rule=rule):
+                self.assertEqual(oracle.compare(text, rule), ("same", None))
+        self.assertEqual(oracle.compare("X := 1; {pragma};\nY := 2;\n", "statement_list")[0], "declined")
+
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]
         self.assertTrue(paths)

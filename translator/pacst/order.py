@@ -8,9 +8,11 @@ with the smaller file name (then path) comes first, so the order does not depend
 listed or in which folders they are.
 """
 import dataclasses
+import functools
 import heapq
 import os
 import re
+import weakref
 
 import lark
 
@@ -37,6 +39,15 @@ def declared_names(tree):
     return names
 
 
+@functools.lru_cache(maxsize=None)
+def _fields(cls):
+    """The names of the fields of the AST class `cls` but its meta (positions), or None for a class of no
+    dataclass."""
+    if not dataclasses.is_dataclass(cls):
+        return None
+    return tuple(f.name for f in dataclasses.fields(cls) if f.name != "meta")
+
+
 def mentioned_names(tree):
     """The upper-case identifiers `tree` mentions anywhere (declarations, calls, expressions); a dotted
     or typed name (a.b, E_Type#Value) counts each of its parts."""
@@ -49,9 +60,23 @@ def mentioned_names(tree):
                 words.update(w.upper() for w in _WORD.findall(str(node)))
         elif isinstance(node, (list, tuple)):
             stack.extend(node)
-        elif dataclasses.is_dataclass(node):
-            stack.extend(getattr(node, f.name) for f in dataclasses.fields(node) if f.name != "meta")
+        else:
+            names = _fields(type(node))
+            if names is not None:
+                stack.extend(getattr(node, name) for name in names)
     return words
+
+
+# A parsed file's mentioned names, for as long as the file is held: a tool that orders one library with each
+# of several programs (the dialect page's check, pac-test's corpus) walks the library's trees once.
+_MENTIONED = weakref.WeakKeyDictionary()
+
+
+def _mentioned(src):
+    found = _MENTIONED.get(src)
+    if found is None:
+        found = _MENTIONED[src] = frozenset(mentioned_names(src.tree))
+    return found
 
 
 def _sort_key(path):
@@ -82,7 +107,7 @@ def declaration_order(sources):
     deps = {}  # path -> {path it depends on: a name it uses from there}
     for src in sources:
         uses = {}
-        for word in sorted(mentioned_names(src.tree)):
+        for word in sorted(_mentioned(src)):
             dep, name = owner.get(word, (src.path, None))
             if dep != src.path:
                 uses.setdefault(dep, name)

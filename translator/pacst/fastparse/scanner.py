@@ -84,8 +84,17 @@ class Scanner:
                     raise Decline("unterminated comment")
                 self.pos = end + 2
                 continue
-            if text.startswith("//", self.pos) or text.startswith("{", self.pos):
-                raise Decline("line comment or pragma")
+            if text.startswith("{", self.pos):
+                # blark's grammar ignores a pragma ({attribute 'hide'}, as TwinCAT files carry them) like a
+                # comment: up to the first `}`. Its optional trailing `;`s could also end a statement, so
+                # a pragma followed by one is Earley's to read.
+                end = text.find("}", self.pos + 1)
+                if end < 0 or text.startswith(";", end + 1):
+                    raise Decline("pragma")
+                self.pos = end + 1
+                continue
+            if text.startswith("//", self.pos):
+                raise Decline("line comment")
             return
 
     def at_end(self):
