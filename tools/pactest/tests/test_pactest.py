@@ -257,7 +257,8 @@ class CorpusTest(unittest.TestCase):
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
-        them; without Lib measured, App's use of the namespace counts as needing a library not measured. A POU first refused for a construct (FOR ... BY 0)
+        them; without Lib measured, App's use of the namespace counts as needing a library not measured. The version
+        of Lib App was compiled with (its _Libraries folder) is reported when it is not Lib's. A POU first refused for a construct (FOR ... BY 0)
         is refused for a construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
@@ -269,7 +270,8 @@ class CorpusTest(unittest.TestCase):
         projects = {
             "Lib": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
                     '<Name>Lib</Name><Company>Example</Company><Title>Example Library</Title>'
-                    '<DefaultNamespace>ExLib</DefaultNamespace></PropertyGroup><ItemGroup>'
+                    '<DefaultNamespace>ExLib</DefaultNamespace><ProjectVersion>1.0.0</ProjectVersion></PropertyGroup>'
+                    '<ItemGroup>'
                     '<Compile Include="FB_Tool.TcPOU" /><Compile Include="F_GetVersion.TcPOU"><SystemCall>true'
                     '</SystemCall></Compile></ItemGroup></Project>\n',
                     {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
@@ -294,6 +296,8 @@ class CorpusTest(unittest.TestCase):
             for pou, (declaration, body) in pous.items():
                 with open(os.path.join(folder, pou + ".TcPOU"), "w", encoding="utf-8") as f:
                     f.write(wrap.format(pou, declaration, body))
+        # TwinCAT keeps the library App was compiled with: a later version than the library project measured
+        os.makedirs(os.path.join(top, "App", "_Libraries", "example", "example library", "1.2.0"))
         env = dict(os.environ, PYTHONPATH=TOOL)
 
         def measure(*folders):
@@ -313,6 +317,9 @@ class CorpusTest(unittest.TestCase):
         self.assertIsNone(app["F_GetVersion.TcPOU"], stdout)
         self.assertEqual(app["FB_ForByZero.TcPOU"][0], "refused construct")
         self.assertIn("BY 0", app["FB_ForByZero.TcPOU"][1])
+        self.assertIn("built against Common 1.2.0 (its _Libraries folder), measured with Common 1.0.0", stdout)
+        self.assertEqual(found["App"]["library_versions"], {"Common": {"built against": "1.2.0", "measured": "1.0.0"}})
+        self.assertEqual(found["Lib"]["library_versions"], {})
         stdout, found = measure(os.path.join(top, "App"))
         app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
         self.assertEqual(app["FB_UsesTool.TcPOU"][0], "library not given", stdout)
