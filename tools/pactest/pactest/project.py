@@ -85,7 +85,7 @@ def tcunit_sources():
 
 VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
 # The vendor FUNCTIONs the host implements (pactest_natives.cpp); the other parts are ST, run as they are.
-VENDOR_NATIVES = {"F_GetSystemTime"}
+VENDOR_NATIVES = {"F_GetSystemTime", "PacTestTaskCycles", "PacTestTaskCycleTime"}
 
 
 def vendor_libraries():
@@ -103,13 +103,15 @@ def vendor_sources(sources=()):
 
 
 def vendor_natives(sources=()):
-    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock)."""
+    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock; the running task's cycles)."""
     return [f for f in vendor_sources(sources) if os.path.splitext(os.path.basename(f))[0] in VENDOR_NATIVES]
 
 
 def tcunit_natives():
-    """TcUnit's FUNCTIONs the host implements: TEST, TEST_FINISHED_NAMED, IS_TEST_FINISHED, the asserts."""
-    return [f for f in tcunit_sources() if os.path.basename(f).startswith(("TEST", "IS_TEST", "Assert"))]
+    """TcUnit's FUNCTIONs the host implements: TEST, TEST_FINISHED_NAMED, IS_TEST_FINISHED, the asserts (not the
+    array asserts: ST, each recording through PacTestRecord)."""
+    return [f for f in tcunit_sources() if os.path.basename(f).startswith(("TEST", "IS_TEST", "Assert"))
+            and not os.path.basename(f).startswith("AssertArray")]
 
 
 _TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)

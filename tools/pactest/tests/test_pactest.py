@@ -202,9 +202,10 @@ class TcUnitTest(unittest.TestCase):
                          [("FB_ShowsAFailureSuite", line_of(source, "one edge is not two"),
                            "FailsOnPurpose: one edge is not two: expected 2, got 1")])
 
-    def test_the_asserts_of_the_64_bit_types_the_dates_and_wstring(self):
-        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING and IS_TEST_FINISHED
-        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(13 asserts")
+    def test_the_asserts_of_the_64_bit_types_the_dates_wstring_and_arrays(self):
+        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_ and
+        # IS_TEST_FINISHED
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(16 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
         found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
                  if f["test"] == "FB_TypesFailureSuite"]
@@ -215,8 +216,14 @@ class TcUnitTest(unittest.TestCase):
                     ("'TOD'", "expected TOD#12:30:00.500, got TOD#12:30:00.000"),
                     ("'LTIME'", "expected LTIME#1000002000NS, got LTIME#1000000000NS"),
                     ("'WSTRING'", 'expected "axis 1", got "axis 2"')]
+        # the array asserts (ST, recording through PacTestRecord) print the line of the user's call too
+        arrays = [("'SIZE'", "SIZE, size of arrays not matching: expected SIZE = 3, got SIZE = 2"),
+                  ("'INT'", "INT: expected ARRAY[2] = 2, got ARRAY[1] = 5"),
+                  ("'BOOL'", "BOOL: expected ARRAY[2] = FALSE, got ARRAY[2] = TRUE"),
+                  ("'LREAL'", "LREAL: expected ARRAY[2] = -1.25, got ARRAY[2] = -1.5")]
         self.assertEqual(found, [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {m[1:-1]}: {text}")
-                                 for m, text in expected])
+                                 for m, text in expected] +
+                         [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {text}") for m, text in arrays])
 
 
 class CorpusTest(unittest.TestCase):
