@@ -404,8 +404,11 @@ class BodyCompiler:
                 raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
             idx = f"{te.value - at.low}"
         else:
-            if not te.type.is_int:
+            # user mode: a bit string too, as TwinCAT takes it (_TaskInfo[GETCURTASKINDEXEX()], a BYTE)
+            if not (te.type.is_int or self.comp.user and te.type.is_bit):
                 raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
+            if te.type.is_bit:
+                self.comp.dialect(idx_node, f"an array index of type {te.type.name}")
             line, col = pos(idx_node)
             where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
             idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
