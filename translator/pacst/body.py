@@ -825,7 +825,8 @@ class BodyCompiler:
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
         if self.pou.kind == "function" and any(x is v for x in self.pou.vars):  # in a METHOD's VAR (user mode)
-            return self._fb_call(node, v.cname, v.type, ind)
+            # a VAR_IN_OUT (user mode) is the caller's instance, through its address
+            return self._fb_call(node, f"(*{v.cname})" if v.section == "inout" else v.cname, v.type, ind)
         return self._fb_call(node, f"data__->{v.cname}", v.type, ind)
 
     def _fb_call(self, node, inst, fbt, ind):
