@@ -203,9 +203,9 @@ class TcUnitTest(unittest.TestCase):
                            "FailsOnPurpose: one edge is not two: expected 2, got 1")])
 
     def test_the_asserts_of_the_64_bit_types_the_dates_wstring_and_arrays(self):
-        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_ and
-        # IS_TEST_FINISHED
-        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(16 asserts")
+        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_,
+        # AssertArray2dEquals_, AssertArray3dEquals_, TCUNIT_ADSLOGSTR and IS_TEST_FINISHED
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(17 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
         found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
                  if f["test"] == "FB_TypesFailureSuite"]
@@ -220,7 +220,9 @@ class TcUnitTest(unittest.TestCase):
         arrays = [("'SIZE'", "SIZE, size of arrays not matching: expected SIZE = 3, got SIZE = 2"),
                   ("'INT'", "INT: expected ARRAY[2] = 2, got ARRAY[1] = 5"),
                   ("'BOOL'", "BOOL: expected ARRAY[2] = FALSE, got ARRAY[2] = TRUE"),
-                  ("'LREAL'", "LREAL: expected ARRAY[2] = -1.25, got ARRAY[2] = -1.5")]
+                  ("'LREAL'", "LREAL: expected ARRAY[2] = -1.25, got ARRAY[2] = -1.5"),
+                  ("'SIZE2D'", "SIZE2D, size of arrays not matching: expected SIZE = 2 x 3, got SIZE = 3 x 2"),
+                  ("'REAL3D'", "REAL3D: expected ARRAY[2, 1, 1] = 3, got ARRAY[2, 1, 1] = 3.5")]
         self.assertEqual(found, [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {m[1:-1]}: {text}")
                                  for m, text in expected] +
                          [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {text}") for m, text in arrays])
