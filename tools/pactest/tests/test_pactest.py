@@ -267,8 +267,8 @@ class CorpusTest(unittest.TestCase):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
         them; without Lib measured, App's use of the namespace counts as needing a library not measured. The version
-        of Lib App was compiled with (its _Libraries folder) is reported when it is not Lib's. A POU first refused for a construct (FOR ... BY 0)
-        is refused for a construct, whatever else of it names a vendor library."""
+        of Lib App was compiled with (its _Libraries folder) is reported when it is not Lib's. A POU first refused for
+        a construct (FOR ... BY 0) is refused for a construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
         shutil.rmtree(top, ignore_errors=True)
