@@ -74,7 +74,7 @@ def _given(files):
     if not project.uses_tcunit(files):
         return extra, native, namespaces
     namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)
-    return extra + project.tcunit_sources(), native + project.tcunit_natives(), namespaces
+    return extra + project.tcunit_sources(files), native + project.tcunit_natives(), namespaces
 
 
 def _plcproj(root):

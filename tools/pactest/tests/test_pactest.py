@@ -670,6 +670,19 @@ class VendorLibraryTest(unittest.TestCase):
         self.assertEqual([os.path.basename(p) for p in project.vendor_natives()],
                          ["F_GetSystemTime.st", "PacTestTaskCycleTime.st", "PacTestTaskCycles.st"])
 
+    def test_tcunit_array_asserts_only_for_a_program_calling_one(self):
+        # their file costs a cold parse of about 11 s: a TcUnit program that calls none is given the rest only
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "FB_Suite.st")
+            for text, given in (("AssertEquals_INT(1, 1, 'x');", False), ("AssertArrayEquals_INT(A, B, 'x');", True),
+                                ("TcUnit.AssertArray2dEquals_REAL(A, B, 0.1, 'x');", True)):
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+                names = {os.path.basename(p) for p in project.tcunit_sources([path])}
+                self.assertEqual("AssertArrayEquals.st" in names, given, text)
+                self.assertIn("TEST.st", names)
+
     def test_a_program_naming_a_part_uses_the_vendor_libraries(self):
         import tempfile
         with tempfile.TemporaryDirectory() as folder:
