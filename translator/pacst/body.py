@@ -404,8 +404,11 @@ class BodyCompiler:
                 raise self.err(idx_node, f"index {te.value} outside {at.name}'s bounds {at.low}..{at.high}")
             idx = f"{te.value - at.low}"
         else:
-            if not te.type.is_int:
+            # user mode: a bit string too, as TwinCAT takes it (_TaskInfo[GETCURTASKINDEXEX()], a BYTE)
+            if not (te.type.is_int or self.comp.user and te.type.is_bit):
                 raise self.err(idx_node, f"array index of type {te.type.name}: use an integer type")
+            if te.type.is_bit:
+                self.comp.dialect(idx_node, f"an array index of type {te.type.name}")
             line, col = pos(idx_node)
             where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
             idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
@@ -822,7 +825,8 @@ class BodyCompiler:
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
         if self.pou.kind == "function" and any(x is v for x in self.pou.vars):  # in a METHOD's VAR (user mode)
-            return self._fb_call(node, v.cname, v.type, ind)
+            # a VAR_IN_OUT (user mode) is the caller's instance, through its address
+            return self._fb_call(node, f"(*{v.cname})" if v.section == "inout" else v.cname, v.type, ind)
         return self._fb_call(node, f"data__->{v.cname}", v.type, ind)
 
     def _fb_call(self, node, inst, fbt, ind):

@@ -925,6 +925,9 @@ class Compiler:
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
         for token in implements.interfaces:
+            if _name(token).upper() == f"{system.NAMESPACE}.IQUERYINTERFACE":  # TwinCAT's root: no METHODs
+                self.dialect(token, f"IMPLEMENTS {_name(token)}")
+                continue
             t = self.types.get(self.declared_name(token).upper())
             if t is None or t.kind != "interface":
                 raise self.err(token, f"IMPLEMENTS {_name(token)}: no INTERFACE of that name")
@@ -1290,6 +1293,10 @@ class Compiler:
         if getattr(vtype, "any", False) and section != "input":
             raise self.err(item, "ANY is the type of a VAR_INPUT only (as in TwinCAT); declare a __SYSTEM.AnyType to "
                                  "keep what one was given")
+        if vtype.is_fb and section == "inout" and self.user and pou.kind != "fb":
+            # TwinCAT passes an FB instance to a FUNCTION's or METHOD's VAR_IN_OUT (TcUnit's F_GetCpuCounterAs64bit)
+            self.dialect(item, "an FB instance in a VAR_IN_OUT of a FUNCTION or METHOD")
+            return
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
@@ -1303,8 +1310,9 @@ class Compiler:
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
         # a METHOD's or FUNCTION's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its
         # other VAR
-        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "var" and (
-            pou.owner is not None or pou.kind == "function")), in_out=section == "inout")
+        # (and an FB instance in a FUNCTION's or METHOD's VAR_IN_OUT: the caller's, as TwinCAT passes it)
+        vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "inout" or (
+            section == "var" and (pou.owner is not None or pou.kind == "function"))), in_out=section == "inout")
         value = user.initial_value(item.init)
         spec = getattr(item.init, "spec", None)
         fb_init_args = getattr(spec, "init_parameters", None) if _cls(spec) == "IndirectSimpleSpecification" else None

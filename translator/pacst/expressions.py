@@ -1084,9 +1084,13 @@ class ExprCompiler:
             self.comp.dialect(positional[0], "a positional argument after formal ones")
             given.update((v.cname, p.value) for v, p in zip(rest, positional))
         elif positional:
-            if len(positional) != len(inputs) or any(v.section == "inout" for v in interface):
+            # user mode: the VAR_IN_OUTs too, in the order of declaration, as TwinCAT takes F(Counter)
+            order = [v for v in interface if v.section != "output"] if self.comp.user else inputs
+            if len(positional) != len(order) or not self.comp.user and any(v.section == "inout" for v in interface):
                 raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
-            for v, p in zip(inputs, positional):
+            if any(v.section == "inout" for v in order):
+                self.comp.dialect(positional[0], "a positional argument for a VAR_IN_OUT")
+            for v, p in zip(order, positional):
                 given[v.cname] = p.value
         else:
             for p in node.parameters:

@@ -46,6 +46,8 @@ struct TestRecord {
     // A TcUnit suite (an FB that EXTENDS FB_TestSuite) is one test here: its TEST('name')s, in the order first
     // called, and those that called TEST_FINISHED(); the suite ends once every one has finished.
     nanoseconds now{0};  // the simulated clock in the running scan (F_GetSystemTime)
+    int taskCycleMs = 0;  // the running task's cycle and the cycles it has run (TwinCAT_SystemInfoVarList)
+    std::int64_t taskCycles = 0;
     std::vector<std::string> tcunitTests;
     std::vector<std::string> tcunitFinished;
     std::vector<std::string> tcunitOrdered;  // the TEST_ORDERED('name')s, in the order first called
@@ -206,6 +208,8 @@ int Run(const Options& options, const Project& project) {
         const std::int64_t scan = plc.Task().ScanCount();
         for (const Task& task : project.tasks) {
             if ((scan - 1) % (task.cycleMs / base) != 0) continue;
+            record.taskCycleMs = task.cycleMs;
+            record.taskCycles = (scan - 1) / (task.cycleMs / base) + 1;
             for (auto* program : task.programs) program();
             if (task.name == test->task && !record.finished) {
                 record.scan = scan;
@@ -290,6 +294,14 @@ void RecordFinished() {
 
 std::chrono::nanoseconds Now() {
     return running ? running->now : std::chrono::nanoseconds{0};
+}
+
+std::chrono::milliseconds TaskCycle() {
+    return std::chrono::milliseconds(running ? running->taskCycleMs : 0);
+}
+
+std::int64_t TaskCycles() {
+    return running ? running->taskCycles : 0;
 }
 
 void RecordTest(const std::string& name) {

@@ -54,6 +54,9 @@ void RecordAssert(const char* file, int line, bool passed, const std::string& me
 void RecordFinished();
 // the simulated clock since power-on in the running scan
 std::chrono::nanoseconds Now();
+// the running task's cycle and the cycles it has run, this one included (TwinCAT_SystemInfoVarList._TaskInfo)
+std::chrono::milliseconds TaskCycle();
+std::int64_t TaskCycles();
 // TcUnit's TEST('name'): the asserts and TEST_FINISHED() that follow are that test's (one of a suite's tests)
 void RecordTest(const std::string& name);
 // TcUnit's TEST_FINISHED_NAMED('name')

@@ -184,6 +184,18 @@ ULINT F_GETSYSTEMTIME(const char*, int, BOOL, BOOL* __ENO) {
     return k1601To2026 + static_cast<ULINT>(pactest::Now().count() / 100);
 }
 
+// TwinCAT_SystemInfoVarList._TaskInfo (tools/pactest/vendor/Tc2_System/PacTestTaskInfo.st): the running task's
+// cycle in 100 ns and the cycles it has run
+UDINT PACTESTTASKCYCLETIME(const char*, int, BOOL, BOOL* __ENO) {
+    Ok(__ENO);
+    return static_cast<UDINT>(pactest::TaskCycle().count() * 10000);
+}
+
+UDINT PACTESTTASKCYCLES(const char*, int, BOOL, BOOL* __ENO) {
+    Ok(__ENO);
+    return static_cast<UDINT>(pactest::TaskCycles());
+}
+
 BOOL TEST(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
     Ok(__ENO);
     pactest::RecordTest(Text(TESTNAME));
@@ -204,7 +216,9 @@ BOOL TEST_FINISHED_NAMED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {
 BOOL PACTESTRECORD(const char* file__, int line__, BOOL EN, BOOL* __ENO, BOOL PASSED, STRING MESSAGE) {
     (void)EN;
     Ok(__ENO);
-    pactest::RecordAssert(file__, line__, PASSED != 0, Text(MESSAGE));
+    // TcUnit's AssertArrayEquals_ (ST) record through here: the frame above theirs is the user's test, whose
+    // line pac-test prints (a call from the user's own code is printed at its own line)
+    pactest::RecordAssert(file__, line__, PASSED != 0, Text(MESSAGE), __builtin_return_address(1));
     return PASSED;
 }
 

@@ -80,7 +80,7 @@ class HostBuild:
         tcunit = self.takes_dialect and project.uses_tcunit(theirs)
         vendor = project.vendor_sources(theirs) if dialect else []
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
-            (project.tcunit_sources() if tcunit else []) + self.wiring.sources
+            (project.tcunit_sources(theirs) if tcunit else []) + self.wiring.sources
         natives = [a for f in project.native_sources() + (project.vendor_natives(theirs) if dialect else []) +
                    (project.tcunit_natives() if tcunit else []) for a in ("--native", f)]
         # the library referenced with its namespace, as docs/import.md tells programmers to: PA_CONTROL.MC_Power

@@ -47,10 +47,11 @@ def _where(path):
 
 
 def _caller_location(failure):
-    """For an assert inside the vocabulary's own FBs (FB_AssertWithin): the ST line of the user's test that
-    called the FB, from the return address the host recorded (addr2line reads the #line directives' DWARF
-    lines), or None."""
-    if "caller_module" not in failure or not os.path.abspath(failure["file"]).startswith(project.VOCABULARY + os.sep):
+    """For an assert inside the vocabulary's own FBs (FB_AssertWithin) or TcUnit's ST asserts (AssertArrayEquals_):
+    the ST line of the user's test that called it, from the return address the host recorded (addr2line reads the
+    #line directives' DWARF lines), or None."""
+    own = os.path.abspath(failure["file"]) if "caller_module" in failure else ""
+    if not own.startswith((project.VOCABULARY + os.sep, project.TCUNIT + os.sep)):
         return None
     try:
         text = subprocess.run(["addr2line", "-e", failure["caller_module"], hex(failure["caller_offset"] - 1)],

@@ -74,7 +74,7 @@ def _given(files):
     if not project.uses_tcunit(files):
         return extra, native, namespaces
     namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)
-    return extra + project.tcunit_sources(), native + project.tcunit_natives(), namespaces
+    return extra + project.tcunit_sources(files), native + project.tcunit_natives(), namespaces
 
 
 def _plcproj(root):
@@ -133,6 +133,33 @@ def dependencies(roots):
                 deps.append((namespace, library))
                 todo.append(library)
         found[root] = deps
+    return found
+
+
+def _version(root):
+    """The ProjectVersion of the .plcproj in `root`, or None."""
+    path = _plcproj(root)
+    if path is None:
+        return None
+    with open(path, encoding="utf-8-sig", errors="replace") as f:
+        m = re.search(r"<ProjectVersion>\s*([^<\s]+)\s*</ProjectVersion>", f.read())
+    return m.group(1) if m else None
+
+
+def version_mismatches(root, deps):
+    """[(namespace, version built against, version measured)] of the libraries `deps` [(namespace, folder)] whose
+    version in the project's _Libraries folder (TwinCAT keeps there the library the project was compiled with:
+    _Libraries/<company>/<title>/<version>/) is not the version of the library project measured: the names the
+    project uses that the measured version lacks are counted as a library not given, not as refusals."""
+    found = []
+    for namespace, folder in deps:
+        measured = _version(folder)
+        titles = {n.lower() for n, _ in _project_info(folder)[0]}
+        built = sorted({os.path.basename(d) for d, _, _ in os.walk(root)
+                        if os.path.basename(os.path.dirname(d)).lower() in titles
+                        and "_libraries" in d.lower().split(os.sep)})
+        if measured and built and measured not in built:
+            found.append((namespace, built[-1], measured))
     return found
 
 
@@ -262,8 +289,14 @@ def main(argv=None):
         with_libraries = f" (with {', '.join(f'{n}: {f}' for n, f in libraries[root])})" if libraries[root] else ""
         print(f"{root}{with_libraries}: {len(pous)} POUs, {counts['accepted']} accepted; "
               + ", ".join(f"{n} {k}" for k, n in sorted(counts.items()) if k != "accepted"))
+        mismatches = version_mismatches(root, libraries[root])
+        for namespace, built, measured in mismatches:
+            print(f"  built against {namespace} {built} (its _Libraries folder), measured with {namespace} {measured}: "
+                  "the names that version lacks count as a library not given")
         report["projects"].append({"folder": root, "pous": len(pous), "counts": dict(counts),
                                    "libraries": {n: f for n, f in libraries[root]},
+                                   "library_versions": {n: {"built against": b, "measured": m}
+                                                        for n, b, m in mismatches},
                                    "files": {f: verdict[f] for f in files}})
     share = 100.0 * totals["accepted"] / totals["POUs"] if totals["POUs"] else 0.0
     print(f"total: {totals['POUs']} POUs, {totals['accepted']} accepted ({share:.1f} %), "

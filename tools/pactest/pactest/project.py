@@ -79,13 +79,24 @@ def vocabulary_sources():
     return sorted(glob.glob(os.path.join(VOCABULARY, "*.st")))
 
 
-def tcunit_sources():
-    return sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
+# TcUnit's array asserts: only for sources that call one. Their ARRAY [*] pins are read by blark's slow parser
+# (about 11 s of CPU for the file when pacst's parse cache does not hold it yet), which other programs need not pay.
+_ARRAY_ASSERTS = "AssertArrayEquals.st"
+_ARRAY_ASSERT = re.compile(rb"\bAssertArray\w*Equals_", re.I)
+
+
+def tcunit_sources(sources=None):
+    """TcUnit's part pac-test gives a program that names its suite; the array asserts only when the program's
+    `sources` call one (None: every part)."""
+    every = sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
+    if sources is None or _names(sources, _ARRAY_ASSERT):
+        return every
+    return [f for f in every if os.path.basename(f) != _ARRAY_ASSERTS]
 
 
 VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
 # The vendor FUNCTIONs the host implements (pactest_natives.cpp); the other parts are ST, run as they are.
-VENDOR_NATIVES = {"F_GetSystemTime"}
+VENDOR_NATIVES = {"F_GetSystemTime", "PacTestTaskCycles", "PacTestTaskCycleTime"}
 
 
 def vendor_libraries():
@@ -103,13 +114,15 @@ def vendor_sources(sources=()):
 
 
 def vendor_natives(sources=()):
-    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock)."""
+    """The vendor FUNCTIONs the host implements (F_GetSystemTime: the simulated clock; the running task's cycles)."""
     return [f for f in vendor_sources(sources) if os.path.splitext(os.path.basename(f))[0] in VENDOR_NATIVES]
 
 
 def tcunit_natives():
-    """TcUnit's FUNCTIONs the host implements: TEST, TEST_FINISHED_NAMED, IS_TEST_FINISHED, the asserts."""
-    return [f for f in tcunit_sources() if os.path.basename(f).startswith(("TEST", "IS_TEST", "Assert"))]
+    """TcUnit's FUNCTIONs the host implements: TEST, TEST_FINISHED_NAMED, IS_TEST_FINISHED, the asserts (not the
+    array asserts: ST, each recording through PacTestRecord)."""
+    return [f for f in tcunit_sources() if os.path.basename(f).startswith(("TEST", "IS_TEST", "Assert"))
+            and not os.path.basename(f).startswith("AssertArray")]
 
 
 _TCUNIT = re.compile(rb"\bTcUnit\s*\.|\bFB_TestSuite\b", re.I)

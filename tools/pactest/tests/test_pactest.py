@@ -202,9 +202,10 @@ class TcUnitTest(unittest.TestCase):
                          [("FB_ShowsAFailureSuite", line_of(source, "one edge is not two"),
                            "FailsOnPurpose: one edge is not two: expected 2, got 1")])
 
-    def test_the_asserts_of_the_64_bit_types_the_dates_and_wstring(self):
-        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING and IS_TEST_FINISHED
-        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(13 asserts")
+    def test_the_asserts_of_the_64_bit_types_the_dates_wstring_and_arrays(self):
+        # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_,
+        # AssertArray2dEquals_, AssertArray3dEquals_, TCUNIT_ADSLOGSTR and IS_TEST_FINISHED
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(17 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
         found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
                  if f["test"] == "FB_TypesFailureSuite"]
@@ -215,8 +216,16 @@ class TcUnitTest(unittest.TestCase):
                     ("'TOD'", "expected TOD#12:30:00.500, got TOD#12:30:00.000"),
                     ("'LTIME'", "expected LTIME#1000002000NS, got LTIME#1000000000NS"),
                     ("'WSTRING'", 'expected "axis 1", got "axis 2"')]
+        # the array asserts (ST, recording through PacTestRecord) print the line of the user's call too
+        arrays = [("'SIZE'", "SIZE, size of arrays not matching: expected SIZE = 3, got SIZE = 2"),
+                  ("'INT'", "INT: expected ARRAY[2] = 2, got ARRAY[1] = 5"),
+                  ("'BOOL'", "BOOL: expected ARRAY[2] = FALSE, got ARRAY[2] = TRUE"),
+                  ("'LREAL'", "LREAL: expected ARRAY[2] = -1.25, got ARRAY[2] = -1.5"),
+                  ("'SIZE2D'", "SIZE2D, size of arrays not matching: expected SIZE = 2 x 3, got SIZE = 3 x 2"),
+                  ("'REAL3D'", "REAL3D: expected ARRAY[2, 1, 1] = 3, got ARRAY[2, 1, 1] = 3.5")]
         self.assertEqual(found, [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {m[1:-1]}: {text}")
-                                 for m, text in expected])
+                                 for m, text in expected] +
+                         [(line_of(source, f"Message := {m})"), f"FailsOnPurpose: {text}") for m, text in arrays])
 
 
 class CorpusTest(unittest.TestCase):
@@ -257,8 +266,9 @@ class CorpusTest(unittest.TestCase):
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
-        them; without Lib measured, App's use of the namespace counts as needing a library not measured. A POU first refused for a construct (FOR ... BY 0)
-        is refused for a construct, whatever else of it names a vendor library."""
+        them; without Lib measured, App's use of the namespace counts as needing a library not measured. The version
+        of Lib App was compiled with (its _Libraries folder) is reported when it is not Lib's. A POU first refused for
+        a construct (FOR ... BY 0) is refused for a construct, whatever else of it names a vendor library."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
         shutil.rmtree(top, ignore_errors=True)
@@ -269,7 +279,8 @@ class CorpusTest(unittest.TestCase):
         projects = {
             "Lib": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
                     '<Name>Lib</Name><Company>Example</Company><Title>Example Library</Title>'
-                    '<DefaultNamespace>ExLib</DefaultNamespace></PropertyGroup><ItemGroup>'
+                    '<DefaultNamespace>ExLib</DefaultNamespace><ProjectVersion>1.0.0</ProjectVersion></PropertyGroup>'
+                    '<ItemGroup>'
                     '<Compile Include="FB_Tool.TcPOU" /><Compile Include="F_GetVersion.TcPOU"><SystemCall>true'
                     '</SystemCall></Compile></ItemGroup></Project>\n',
                     {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
@@ -294,6 +305,8 @@ class CorpusTest(unittest.TestCase):
             for pou, (declaration, body) in pous.items():
                 with open(os.path.join(folder, pou + ".TcPOU"), "w", encoding="utf-8") as f:
                     f.write(wrap.format(pou, declaration, body))
+        # TwinCAT keeps the library App was compiled with: a later version than the library project measured
+        os.makedirs(os.path.join(top, "App", "_Libraries", "example", "example library", "1.2.0"))
         env = dict(os.environ, PYTHONPATH=TOOL)
 
         def measure(*folders):
@@ -313,6 +326,9 @@ class CorpusTest(unittest.TestCase):
         self.assertIsNone(app["F_GetVersion.TcPOU"], stdout)
         self.assertEqual(app["FB_ForByZero.TcPOU"][0], "refused construct")
         self.assertIn("BY 0", app["FB_ForByZero.TcPOU"][1])
+        self.assertIn("built against Common 1.2.0 (its _Libraries folder), measured with Common 1.0.0", stdout)
+        self.assertEqual(found["App"]["library_versions"], {"Common": {"built against": "1.2.0", "measured": "1.0.0"}})
+        self.assertEqual(found["Lib"]["library_versions"], {})
         stdout, found = measure(os.path.join(top, "App"))
         app = {os.path.basename(k): v for k, v in found["App"]["files"].items()}
         self.assertEqual(app["FB_UsesTool.TcPOU"][0], "library not given", stdout)
@@ -651,7 +667,21 @@ class VendorLibraryTest(unittest.TestCase):
         self.assertEqual(every - given, {"FLOOR.st"})
 
     def test_the_host_implements_the_named_natives_only(self):
-        self.assertEqual([os.path.basename(p) for p in project.vendor_natives()], ["F_GetSystemTime.st"])
+        self.assertEqual([os.path.basename(p) for p in project.vendor_natives()],
+                         ["F_GetSystemTime.st", "PacTestTaskCycleTime.st", "PacTestTaskCycles.st"])
+
+    def test_tcunit_array_asserts_only_for_a_program_calling_one(self):
+        # their file costs a cold parse of about 11 s: a TcUnit program that calls none is given the rest only
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "FB_Suite.st")
+            for text, given in (("AssertEquals_INT(1, 1, 'x');", False), ("AssertArrayEquals_INT(A, B, 'x');", True),
+                                ("TcUnit.AssertArray2dEquals_REAL(A, B, 0.1, 'x');", True)):
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+                names = {os.path.basename(p) for p in project.tcunit_sources([path])}
+                self.assertEqual("AssertArrayEquals.st" in names, given, text)
+                self.assertIn("TEST.st", names)
 
     def test_a_program_naming_a_part_uses_the_vendor_libraries(self):
         import tempfile
