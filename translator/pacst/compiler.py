@@ -756,6 +756,8 @@ class Compiler:
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
+        elif cls == "UnionTypeDeclaration" and self.user:
+            t = user.union_type(self, decl)
         elif cls == "UnionTypeDeclaration":
             raise self.err(decl, "UNION is outside the portable subset")
         elif cls == "SubrangeTypeDeclaration" and self.user and decl.init.indirection is None \
@@ -1314,12 +1316,18 @@ class Compiler:
         for dv in item.variables:
             location = None
             if dv.location is not None:
-                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
-                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
-                if not (pou.program or linked) or section != "var" or constant:
+                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them. In a
+                # VAR_INPUT or VAR_OUTPUT too (TcUnit's FB_ProtectedVariables), where a caller passes them as pins.
+                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb" and not pou.program
+                if not (pou.program and section == "var" or linked and section in ("var", "input", "output")) \
+                        or constant:
                     # At the name: blark reads `AT %I*` as an enumeration value, which has no position.
                     raise self.err(dv, "located variables (AT %...) are declared in a global list or "
-                                       "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
+                                       "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR, VAR_INPUT or "
+                                       "VAR_OUTPUT too")
+                if linked and section != "var":
+                    self.dialect(dv, f"AT {user.parse_location(self, dv.location, vtype).text} in a "
+                                     f"{'VAR_INPUT' if section == 'input' else 'VAR_OUTPUT'}")
                 location = user.parse_location(self, dv.location, vtype)
             v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
