@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import system, user, varlen
+from . import runinit, system, user, varlen
 
 
 
@@ -149,6 +149,8 @@ class Compiler:
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
+        self.declaring_section = None  # user mode: that variable's section (runinit)
+        self.computed_inits = {}  # user mode: id(node) -> TE of an initial value computed at run time (runinit)
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
         self.fb_call_sites = {}  # FB type cname -> the ST calls of its body in the program (an inline body: one)
 
@@ -1374,10 +1376,11 @@ class Compiler:
                 raise self.err(value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
                                            "from zero in every call; assign it in the body")
             self.declaring = pou  # an initial value may name a variable declared before (user mode)
+            self.declaring_section = section
             try:
                 self._init_code(v, "x")
             finally:
-                self.declaring = None
+                self.declaring = self.declaring_section = None
         pou.vars.append(v)
         return v
 
@@ -1466,8 +1469,12 @@ class Compiler:
             return self.literal_te(node.expr, want)
         init = self.named_inits.get(id(node)) or self.named_constant(node, earlier=True)
         if init is None:
+            te = runinit.computed(self, node, want)
+            if te is not None:
+                return te
             raise self.err(node, "initial value: pacst computes literals, named constants, variables declared before "
-                                 "and integer expressions of them with + - *; assign this one in code")
+                                 "and integer expressions of them with + - * (and, in a VAR of a POU, calls and "
+                                 "variables declared before when the variable is initialised); assign this one in code")
         self.dialect(node, "an initial value that is a named constant or a variable declared before")
         self.named_inits[id(node)] = init  # translated again outside its POU (initial_constant says why)
         return self.literal_te(init, want)

@@ -750,7 +750,9 @@ class ExprCompiler:
         if fn == "SIZEOF":
             (arg,) = self._positional(node, 1, ["IN"])
             name = _name(arg.name) if _cls(arg) == "SimpleVariable" else None
-            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None:
+            own_result = name is not None and self.body.pou.ret is not None and name.upper() == self.body.pou.cname
+            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None \
+                    and not own_result:  # SIZEOF(F_Name) in F_Name: its result's bytes, as TwinCAT reads it
                 t = self.comp._resolve_type(arg.name, allow_fb=True)
                 return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
             r = self.body.ref(arg)
