@@ -9,7 +9,7 @@ from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
     inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -460,6 +460,9 @@ class BodyCompiler:
         return located(method(node, "  " * d, d), pos(node)[0])
 
     # ------------------------------------------------------------------ statements
+    def _s_ChainedFunctionCallStatement(self, node, ind, d):
+        raise self.err(node, CHAINED_CALL)
+
     def _s_AssignmentStatement(self, node, ind, d):
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")
