@@ -323,7 +323,7 @@ class BodyCompiler:
                                        "(w AND WORD#16#8000) <> WORD#0")
                 fname = _name(field.name)
                 if r.type.is_struct:
-                    m = next((m for m in r.type.members if m.cname == fname.upper()), None)
+                    m = T.find_var(r.type.members, fname)
                     if m is None:
                         raise self.err(field, f"{r.type.name} has no member '{fname}'")
                     r = Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,

@@ -798,7 +798,7 @@ class Compiler:
                 if name.upper() in seen:
                     raise self.err(dv, f"member '{name}' is declared twice")
                 seen.add(name.upper())
-                v = T.Var(name, "member", mtype, init.value, dv)
+                v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
                 if init.value is not None:
                     self._init_code(v, "x")  # checks the initial value now
                 t.members.append(v)
@@ -822,7 +822,7 @@ class Compiler:
         if dv.location is not None:
             raise self.err(dv, "located variables (AT %...) are outside the library's subset")
         token = dv.variable.name
-        self._check_ident(token, what)
+        self._check_ident(token, what, c_name=not self.user)  # user mode: a C name of its own (user.c_safe)
         return _name(token)
 
     # ------------------------------------------------------------------ POUs
@@ -1348,7 +1348,7 @@ class Compiler:
         """Check and add one variable of a POU."""
         if may_be_located and _cls(dv) == "DeclaredVariable":
             token = dv.variable.name
-            self._check_ident(token, "variable")
+            self._check_ident(token, "variable", c_name=not self.user)  # user mode: user.c_safe
             name = _name(token)
         else:
             name = self._decl_var_name(dv, "variable")
@@ -1361,7 +1361,7 @@ class Compiler:
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
-        v = T.Var(name, section, vtype, value, dv, constant)
+        v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
@@ -1671,7 +1671,7 @@ class Compiler:
         if pairs is not None:
             out = []
             for name, value in pairs:
-                m = next((m for m in t.members if m.cname == _name(name).upper()), None)
+                m = T.find_var(t.members, _name(name))
                 if m is None:
                     raise self.err(name, f"{t.name} has no member '{_name(name)}'")
                 out += self._element_init(m.type, value, f"{target}.{m.cname}")
