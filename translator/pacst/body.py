@@ -9,7 +9,7 @@ from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
     inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
 
 
 class BodyCompiler:
@@ -323,7 +323,7 @@ class BodyCompiler:
                                        "(w AND WORD#16#8000) <> WORD#0")
                 fname = _name(field.name)
                 if r.type.is_struct:
-                    m = next((m for m in r.type.members if m.cname == fname.upper()), None)
+                    m = T.find_var(r.type.members, fname)
                     if m is None:
                         raise self.err(field, f"{r.type.name} has no member '{fname}'")
                     r = Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
@@ -463,6 +463,9 @@ class BodyCompiler:
         return located(method(node, "  " * d, d), pos(node)[0])
 
     # ------------------------------------------------------------------ statements
+    def _s_ChainedFunctionCallStatement(self, node, ind, d):
+        raise self.err(node, CHAINED_CALL)
+
     def _s_AssignmentStatement(self, node, ind, d):
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")

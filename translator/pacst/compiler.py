@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import system, user, varlen
+from . import runinit, system, user, varlen
 
 
 
@@ -149,6 +149,8 @@ class Compiler:
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
+        self.declaring_section = None  # user mode: that variable's section (runinit)
+        self.computed_inits = {}  # user mode: id(node) -> TE of an initial value computed at run time (runinit)
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
         self.fb_call_sites = {}  # FB type cname -> the ST calls of its body in the program (an inline body: one)
 
@@ -756,6 +758,8 @@ class Compiler:
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
+        elif cls == "UnionTypeDeclaration" and self.user:
+            t = user.union_type(self, decl)
         elif cls == "UnionTypeDeclaration":
             raise self.err(decl, "UNION is outside the portable subset")
         elif cls == "SubrangeTypeDeclaration" and self.user and decl.init.indirection is None \
@@ -794,7 +798,7 @@ class Compiler:
                 if name.upper() in seen:
                     raise self.err(dv, f"member '{name}' is declared twice")
                 seen.add(name.upper())
-                v = T.Var(name, "member", mtype, init.value, dv)
+                v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
                 if init.value is not None:
                     self._init_code(v, "x")  # checks the initial value now
                 t.members.append(v)
@@ -818,7 +822,7 @@ class Compiler:
         if dv.location is not None:
             raise self.err(dv, "located variables (AT %...) are outside the library's subset")
         token = dv.variable.name
-        self._check_ident(token, what)
+        self._check_ident(token, what, c_name=not self.user)  # user mode: a C name of its own (user.c_safe)
         return _name(token)
 
     # ------------------------------------------------------------------ POUs
@@ -1322,12 +1326,18 @@ class Compiler:
         for dv in item.variables:
             location = None
             if dv.location is not None:
-                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them.
-                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb"
-                if not (pou.program or linked) or section != "var" or constant:
+                # TwinCAT links an FB instance's `AT %I*` / `%Q*` variables one by one: the host binds them. In a
+                # VAR_INPUT or VAR_OUTPUT too (TcUnit's FB_ProtectedVariables), where a caller passes them as pins.
+                linked = _cls(dv.location) == "IncompleteLocation" and pou.kind == "fb" and not pou.program
+                if not (pou.program and section == "var" or linked and section in ("var", "input", "output")) \
+                        or constant:
                     # At the name: blark reads `AT %I*` as an enumeration value, which has no position.
                     raise self.err(dv, "located variables (AT %...) are declared in a global list or "
-                                       "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR too")
+                                       "in a PROGRAM's VAR (MATIEC), AT %I* and %Q* in an FB's VAR, VAR_INPUT or "
+                                       "VAR_OUTPUT too")
+                if linked and section != "var":
+                    self.dialect(dv, f"AT {user.parse_location(self, dv.location, vtype).text} in a "
+                                     f"{'VAR_INPUT' if section == 'input' else 'VAR_OUTPUT'}")
                 location = user.parse_location(self, dv.location, vtype)
             v = self._declare_var(pou, section, constant, vtype, value, dv, may_be_located=True)
             v.location = location
@@ -1346,7 +1356,7 @@ class Compiler:
         """Check and add one variable of a POU."""
         if may_be_located and _cls(dv) == "DeclaredVariable":
             token = dv.variable.name
-            self._check_ident(token, "variable")
+            self._check_ident(token, "variable", c_name=not self.user)  # user mode: user.c_safe
             name = _name(token)
         else:
             name = self._decl_var_name(dv, "variable")
@@ -1359,7 +1369,7 @@ class Compiler:
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
         if up == pou.cname:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
-        v = T.Var(name, section, vtype, value, dv, constant)
+        v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
@@ -1374,10 +1384,11 @@ class Compiler:
                 raise self.err(value, "a VAR_TEMP variable has no initial value in MATIEC: it starts "
                                            "from zero in every call; assign it in the body")
             self.declaring = pou  # an initial value may name a variable declared before (user mode)
+            self.declaring_section = section
             try:
                 self._init_code(v, "x")
             finally:
-                self.declaring = None
+                self.declaring = self.declaring_section = None
         pou.vars.append(v)
         return v
 
@@ -1466,8 +1477,12 @@ class Compiler:
             return self.literal_te(node.expr, want)
         init = self.named_inits.get(id(node)) or self.named_constant(node, earlier=True)
         if init is None:
+            te = runinit.computed(self, node, want)
+            if te is not None:
+                return te
             raise self.err(node, "initial value: pacst computes literals, named constants, variables declared before "
-                                 "and integer expressions of them with + - *; assign this one in code")
+                                 "and integer expressions of them with + - * (and, in a VAR of a POU, calls and "
+                                 "variables declared before when the variable is initialised); assign this one in code")
         self.dialect(node, "an initial value that is a named constant or a variable declared before")
         self.named_inits[id(node)] = init  # translated again outside its POU (initial_constant says why)
         return self.literal_te(init, want)
@@ -1664,7 +1679,7 @@ class Compiler:
         if pairs is not None:
             out = []
             for name, value in pairs:
-                m = next((m for m in t.members if m.cname == _name(name).upper()), None)
+                m = T.find_var(t.members, _name(name))
                 if m is None:
                     raise self.err(name, f"{t.name} has no member '{_name(name)}'")
                 out += self._element_init(m.type, value, f"{target}.{m.cname}")

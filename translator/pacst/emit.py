@@ -73,7 +73,8 @@ class Emitter:
             out.append(f"typedef struct {{ {t.elem.cname} table[{t.high - t.low + 1}]; }} {t.cname};")
         elif t.is_struct:
             members = "\n".join(f"  {m.type.cname} {m.cname};" for m in t.members)
-            out.append(f"typedef struct {t.cname} {{\n{members}\n}} {t.cname};")  # tagged: a member may point at it
+            word = "union" if getattr(t, "union", False) else "struct"  # user mode: a UNION's members share memory
+            out.append(f"typedef {word} {t.cname} {{\n{members}\n}} {t.cname};")  # tagged: a member may point at it
         elif t.is_pointer and t.target.is_struct:  # user mode: the struct may be incomplete yet (ST_Node.pNext)
             out.append(f"typedef struct {t.target.cname} *{t.cname};")
         elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
@@ -107,6 +108,8 @@ class Emitter:
             out += ["    " + line for line in self.comp.init_code(T.Var("e", "member", t.elem, None, None),
                                                                    "v->table[i]")]
             out.append("  }")
+        elif getattr(t, "union", False):  # the memory zeroed: every member reads 0
+            out.append("  memset(v, 0, sizeof *v);")
         else:
             for m in t.members:
                 out += ["  " + line for line in self.comp.init_code(m, f"v->{m.cname}")]

@@ -94,6 +94,11 @@ def _ltime_converted(st, dt, code):
     return TE(dt, f"__time_from_ns({ns})")
 
 
+# user mode: `Buffer.Get(i).Dequeue()`, a METHOD called on a call's result (blark's ChainedFunctionCall)
+CHAINED_CALL = ("a METHOD called on the result of a call (Buffer.Get(i).Dequeue()) is not translated: assign the "
+                "result to a variable of its type first (Item := Buffer.Get(i); Item.Dequeue();)")
+
+
 class ExprCompiler:
     """Types and translates expressions inside one POU (or an initial value, with pou None)."""
 
@@ -226,6 +231,9 @@ class ExprCompiler:
                 raise self.err(node, f"{cls} literals are outside the portable subset")
             raise self.err(node, f"{cls} is outside the portable subset")
         return method(node, want)
+
+    def _e_ChainedFunctionCall(self, node, want):
+        raise self.err(node, CHAINED_CALL)
 
     def _typed_int(self, node, value, tname):
         t = self.comp._resolve_type(tname, allow_fb=False)
@@ -750,7 +758,9 @@ class ExprCompiler:
         if fn == "SIZEOF":
             (arg,) = self._positional(node, 1, ["IN"])
             name = _name(arg.name) if _cls(arg) == "SimpleVariable" else None
-            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None:
+            own_result = name is not None and self.body.pou.ret is not None and name.upper() == self.body.pou.cname
+            if name is not None and self.body.lookup(name) is None and user.lookup_global(self.comp, arg.name) is None \
+                    and not own_result:  # SIZEOF(F_Name) in F_Name: its result's bytes, as TwinCAT reads it
                 t = self.comp._resolve_type(arg.name, allow_fb=True)
                 return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({t.cname}))")
             r = self.body.ref(arg)

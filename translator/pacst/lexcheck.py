@@ -176,7 +176,9 @@ def tokenize(text, file, comments=None, user=False):
                 if user and word.upper() in _TWINCAT_OPERATORS:
                     raise StError(file, line, col, f"TwinCAT's {word}: {_TWINCAT_OPERATORS[word.upper()]}")
                 raise StError(file, line, col, f"identifier '{word}' contains '__', which MATIEC reserves"
-                              if not user else f"identifier '{word}' starts with '__', which C reserves")
+                              if not user else f"identifier '{word}' starts with '__', which TwinCAT and CODESYS "
+                              "keep for their own names (__NEW, __SYSTEM) and C for its compiler: rename it without "
+                              f"the leading '__' ({word.lstrip('_')})")
             if word.endswith("_") and not user:
                 raise StError(file, line, col, f"identifier '{word}' ends with '_', which MATIEC refuses")
             tokens.append(Token("ident", word, line, col, i))

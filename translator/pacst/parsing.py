@@ -165,7 +165,21 @@ def _syntax_error(exc, file, text=""):
         m = re.compile(r"[A-Za-z_][A-Za-z0-9_]*").match(text, at) if at is not None else None
         char = m.group(0) if m else getattr(exc, "char", None)
         found = f" at '{char}'" if char else ""
-    return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}{_semicolon_hint(text, line, col)}")
+    hint = _semicolon_hint(text, line, col) or _call_member_hint(text, line, col)
+    return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}{hint}")
+
+
+_CALL_MEMBER = re.compile(r"\)\s*\.\s*[A-Za-z_]\w*\s*$")
+
+
+def _call_member_hint(text, line, col):
+    """When the error follows `F(x).Member` (TwinCAT reads a member of a call's result; blark's grammar does not),
+    what to write instead."""
+    lines = text.split("\n")
+    if not 1 <= line <= len(lines) or not _CALL_MEMBER.search(lines[line - 1][:col - 1]):
+        return ""
+    return (" (a member of a call's result, F(x).Member, is not translated: assign the result to a variable of its "
+            "type first, then read the member)")
 
 
 _NO_STATEMENT_END = re.compile(r"(?i)(?:\b(?:THEN|ELSE|DO|OF|REPEAT|AND|OR|XOR|NOT|MOD|STRUCT|END_VAR|VAR\w*)|"

@@ -206,7 +206,13 @@ class Var:
 def find_var(variables, name):
     """The variable called `name` (case-insensitive), or None."""
     up = name.upper()
-    return next((v for v in variables if v.cname == up), None)
+    return next((v for v in variables if v.cname == up or v.cname == c_safe_name(up)), None)
+
+
+# user mode: the C name of a variable or member named like a C keyword or macro (Register, EOF), which no ST name
+# can be (no user name starts with '__'); messages, symbols.json and the VCD keep the ST name
+def c_safe_name(up):
+    return f"__V_{up}"
 
 
 class PointerType(Type):

@@ -14,7 +14,7 @@ from . import types as T
 from . import varlen
 from .common import _cls, _name, pos
 from .errors import StError
-from .names import reserved_reason
+from .names import C_KEYWORDS, C_MACROS, reserved_reason
 
 # The largest STRING of pacst's C (STR_MAX_LEN of pacst_iec.h): TwinCAT's T_MaxString, the longest string its
 # string functions take. MATIEC's STRING holds 126: a longer STRING(n) or literal is dialect there.
@@ -206,6 +206,47 @@ def var_type(comp, init, allow_fb, in_out=False):
     raise comp.err(init, f"{cls} is outside pacst's user programs")
 
 
+def c_safe(comp, var):
+    """`var` with a C name of its own where its name is a C keyword or macro (`Register`, `EOF`: __V_REGISTER),
+    in user mode; `_check_ident` lets such a name through there and marks it dialect (MATIEC's C names it alone)."""
+    up = var.name.upper()
+    if comp.user and up in ("EN", "ENO"):
+        raise comp.err(var.node, f"'{var.name}' is the name of the EN and ENO pins IEC 61131-3 gives every call: "
+                                 "rename it")
+    if comp.user and (up in C_KEYWORDS or up in C_MACROS):
+        var.cname = T.c_safe_name(up)
+    return var
+
+
+def union_type(comp, decl):
+    """User mode: TYPE U : UNION ... END_UNION END_TYPE, a C union: every member at offset 0, the memory zeroed
+    when a variable of it is initialised (TwinCAT gives a UNION's members no initial values; a declaration's
+    `(Member := value)` sets that member, as CODESYS does)."""
+    comp._declare_global(decl.name, "type")
+    comp.dialect(decl, "UNION")
+    if decl.extends is not None:
+        raise comp.err(decl.extends, "a UNION EXTENDS nothing: declare its members")
+    t = T.StructType(_name(decl.name))
+    t.union = True
+    seen = set()
+    for el in decl.declarations:
+        spec = el.spec
+        if _cls(spec) == "ArraySpecification":
+            mtype = inline_array(comp, spec, comp.file)
+        else:
+            mtype = comp._spec_type(spec, allow_fb=False)
+        if mtype is t or mtype.is_fb or (mtype.is_array and (mtype.elem is t or mtype.elem.is_fb)):
+            raise comp.err(el, f"a member of the UNION {t.name} of the type {mtype.name}: a UNION holds data, "
+                               "not itself or a function block")
+        comp._check_ident(el.name, "member", c_name=False)
+        name = _name(el.name)
+        if name.upper() in seen:
+            raise comp.err(el.name, f"member '{name}' is declared twice")
+        seen.add(name.upper())
+        t.members.append(c_safe(comp, T.Var(name, "member", mtype, None, el.name)))
+    return t
+
+
 def initial_value(init):
     """The initial value node of a declaration's initialisation, or None."""
     if _cls(init) == "InitializedStructure":
@@ -273,7 +314,9 @@ def _global_items(comp, gvl, block, constant):
             raise comp.err(value, "initial values are only for elementary and enumeration variables")
         for token in spec.variables:
             vname = _name(token)
-            comp._check_ident(token, "global variable")
+            # C names it after its list (GVL_LIMITS__UINT_MAX): a C macro's name is free, as TwinCAT's
+            # GVL_TypeValueLimits.UINT_MAX; MATIEC's C names it alone (_check_ident marks it dialect)
+            comp._check_ident(token, "global variable", c_name=False)
             vup = vname.upper()
             if gvl.var(vname) is not None:
                 raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
