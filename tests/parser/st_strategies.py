@@ -58,7 +58,11 @@ def statements(expr):
                 .map(lambda t: f"CASE {t[0]} OF " + " ".join(f"{l}: {b}" for l, b in t[1])
                      + ("" if t[2] is None else f" ELSE {t[2]}") + " END_CASE;")
                 | st.tuples(expr, bodies).map(lambda t: f"WHILE {t[0]} DO {t[1]} END_WHILE;")
-                | st.tuples(bodies, expr).map(lambda t: f"REPEAT {t[0]} UNTIL {t[1]} END_REPEAT;"))
+                | st.tuples(bodies, expr).map(lambda t: f"REPEAT {t[0]} UNTIL {t[1]} END_REPEAT;")
+                | st.tuples(st.sampled_from(NAMES[:8]), expr, expr, st.none() | expr, bodies,
+                            st.sampled_from(["END_FOR;"] * 3 + ["END_FOR", "END_FOR;;"]))
+                .map(lambda t: f"FOR {t[0]} := {t[1]} TO {t[2]} " + ("" if t[3] is None else f"BY {t[3]} ")
+                     + f"DO {t[4]} {t[5]}"))
     return st.recursive(simple, extend, max_leaves=6)
 
 

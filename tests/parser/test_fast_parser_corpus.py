@@ -177,6 +177,22 @@ class Corpus(unittest.TestCase):
                 self.assertEqual(oracle.compare(text, rule), ("same", None))
         self.assertEqual(oracle.compare("X := 1; {pragma};\nY := 2;\n", "statement_list")[0], "declined")
 
+    def test_loops_and_arrays_take_the_fast_path(self):
+        """FOR (with and without BY, nested, EXIT and CONTINUE in it) as user programs and pac-test's TcUnit
+        asserts write it, with Earley's tree; an empty FOR body is declined (the subset has no empty statement)."""
+        oracle = _ORACLE or Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+        cases = {"iec_source": "FUNCTION_BLOCK FB_Loops\nVAR\n  i : DINT;\n  n : INT;\nEND_VAR\n"
+                               "FOR i := 0 TO 10 DO n := n + 1; END_FOR;\n"
+                               "FOR i := UPPER_BOUND(a, 1) TO -1 BY -2 DO\n  IF n > 3 THEN EXIT; END_IF\n"
+                               "  FOR s.k[i] := 1 TO f(x := 2) BY n * 2 DO CONTINUE; END_FOR\nEND_FOR\n"
+                               "CASE n OF 1: FOR i := 1 TO 2 DO n := 0; END_FOR 2: n := 1; END_CASE;\n"
+                               "END_FUNCTION_BLOCK\n",
+                 "statement_list": "FOR i := 1 TO 3 BY 1 DO\n  x := i;\nEND_FOR\n"}
+        for rule, text in cases.items():
+            with self.subTest(rule=rule):
+                self.assertEqual(oracle.compare(text, rule), ("same", None))
+        self.assertEqual(oracle.compare("FOR i := 1 TO 3 DO END_FOR;\n", "statement_list")[0], "declined")
+
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]
         self.assertTrue(paths)
