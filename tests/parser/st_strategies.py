@@ -70,7 +70,10 @@ def statements(expr):
 DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : UINT := 16#FF;", "a, b : DINT := 5;",
                 "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;", "s : STRING;", "s : STRING := 'x';",
                 "r : LREAL := -1.5;", "e : E_Mode := PAC_A;", "arr : T_Arr;", "u : LTIME;"] * 3 + [
-                "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
+                "x : ARRAY[0..3] OF INT;", "x, y : ARRAY [*, *] OF LREAL;", "x : ARRAY[1..N - 1] OF ST_S;",
+                "x : ARRAY[0..1] OF ARRAY[-1..+1] OF STRING;", "x : ARRAY [*] OF TON;"] * 2 + [
+                "x : ARRAY[0..1] OF INT := [1, 2];", "x : ARRAY[0..1] OF STRING(10);", "p AT %IX0.0 : BOOL;",
+                "q : DATE;"]
 BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + [
     "VAR_STAT", "VAR_EXTERNAL", "VAR_EXTERNAL CONSTANT"]
 
