@@ -58,7 +58,11 @@ def statements(expr):
                 .map(lambda t: f"CASE {t[0]} OF " + " ".join(f"{l}: {b}" for l, b in t[1])
                      + ("" if t[2] is None else f" ELSE {t[2]}") + " END_CASE;")
                 | st.tuples(expr, bodies).map(lambda t: f"WHILE {t[0]} DO {t[1]} END_WHILE;")
-                | st.tuples(bodies, expr).map(lambda t: f"REPEAT {t[0]} UNTIL {t[1]} END_REPEAT;"))
+                | st.tuples(bodies, expr).map(lambda t: f"REPEAT {t[0]} UNTIL {t[1]} END_REPEAT;")
+                | st.tuples(st.sampled_from(NAMES[:8]), expr, expr, st.none() | expr, bodies,
+                            st.sampled_from(["END_FOR;"] * 3 + ["END_FOR", "END_FOR;;"]))
+                .map(lambda t: f"FOR {t[0]} := {t[1]} TO {t[2]} " + ("" if t[3] is None else f"BY {t[3]} ")
+                     + f"DO {t[4]} {t[5]}"))
     return st.recursive(simple, extend, max_leaves=6)
 
 
@@ -66,7 +70,10 @@ def statements(expr):
 DECLARATIONS = ["a : INT;", "b : BOOL;", "c : E_Mode;", "w : WORD;", "a, b, c : UINT := 16#FF;", "a, b : DINT := 5;",
                 "t : TON;", "w : WORD := WORD#16#8000;", "d : TIME := T#1S;", "s : STRING;", "s : STRING := 'x';",
                 "r : LREAL := -1.5;", "e : E_Mode := PAC_A;", "arr : T_Arr;", "u : LTIME;"] * 3 + [
-                "x : ARRAY[0..3] OF INT;", "p AT %IX0.0 : BOOL;", "q : DATE;"]
+                "x : ARRAY[0..3] OF INT;", "x, y : ARRAY [*, *] OF LREAL;", "x : ARRAY[1..N - 1] OF ST_S;",
+                "x : ARRAY[0..1] OF ARRAY[-1..+1] OF STRING;", "x : ARRAY [*] OF TON;"] * 2 + [
+                "x : ARRAY[0..1] OF INT := [1, 2];", "x : ARRAY[0..1] OF STRING(10);", "p AT %IX0.0 : BOOL;",
+                "q : DATE;"]
 BLOCKS = ["VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR", "VAR CONSTANT", "VAR RETAIN", "VAR_TEMP"] * 3 + [
     "VAR_STAT", "VAR_EXTERNAL", "VAR_EXTERNAL CONSTANT"]
 

@@ -21,8 +21,8 @@ CORPORA = {
     "conformance accept": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "accept", "*.st"))),
     "conformance refuse": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse", "*.st"))),
     "matiec verdicts": sorted(glob.glob(os.path.join(VERDICTS, "*.st"))),
-    # User programs (pacst --user): PROGRAMs and VAR_EXTERNAL take the fast path; located variables,
-    # inline arrays and sized STRINGs are Earley's.
+    # User programs (pacst --user): PROGRAMs, VAR_EXTERNAL and inline arrays take the fast path; located
+    # variables, array initial values and sized STRINGs are Earley's.
     "user programs": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "user", "**", "*.st"),
                                       recursive=True)),
     "user refusals": sorted(glob.glob(os.path.join(REPO, "tests", "conformance", "refuse_user", "*.st"))),
@@ -176,6 +176,43 @@ class Corpus(unittest.TestCase):
             with self.subTest(rule=rule):
                 self.assertEqual(oracle.compare(text, rule), ("same", None))
         self.assertEqual(oracle.compare("X := 1; {pragma};\nY := 2;\n", "statement_list")[0], "declined")
+
+    def test_loops_and_arrays_take_the_fast_path(self):
+        """FOR (with and without BY, nested, EXIT and CONTINUE in it) and inline ARRAY types (`[*]`, several
+        dimensions, bounds that are expressions, arrays of arrays and of STRING, in every kind of variable block,
+        VAR_EXTERNAL and VAR_GLOBAL, and in a STRUCT) as user programs and pac-test's TcUnit asserts write them,
+        with Earley's tree. An empty FOR body and an array's initial value are declined."""
+        oracle = _ORACLE or Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+        # pac-test's TcUnit array asserts: one of each dimension (the others differ only in the element type).
+        with open(os.path.join(REPO, "tools", "pactest", "tcunit", "AssertArrayEquals.st"), encoding="utf-8") as f:
+            asserts = f.read()
+        for name in ("AssertArrayEquals_LREAL", "AssertArray2dEquals_REAL", "AssertArray3dEquals_LREAL"):
+            found = re.search(rf"^FUNCTION {name} :.*?^END_FUNCTION\n", asserts, re.S | re.M)
+            with self.subTest(name=name):
+                self.assertIsNotNone(found)
+                self.assertEqual(oracle.compare(found.group(0)), ("same", None))
+        cases = {"iec_source": "FUNCTION_BLOCK FB_Loops\nVAR\n  i : DINT;\n  n : INT;\nEND_VAR\n"
+                               "FOR i := 0 TO 10 DO n := n + 1; END_FOR;\n"
+                               "FOR i := UPPER_BOUND(a, 1) TO -1 BY -2 DO\n  IF n > 3 THEN EXIT; END_IF\n"
+                               "  FOR s.k[i] := 1 TO f(x := 2) BY n * 2 DO CONTINUE; END_FOR\nEND_FOR\n"
+                               "CASE n OF 1: FOR i := 1 TO 2 DO n := 0; END_FOR 2: n := 1; END_CASE;\n"
+                               "END_FUNCTION_BLOCK\n",
+                 "statement_list": "FOR i := 1 TO 3 BY 1 DO\n  x := i;\nEND_FOR\n",
+                 "function_declaration": "FUNCTION F_Arrays : BOOL\nVAR_IN_OUT\n  a : ARRAY [*, *] OF LREAL;\nEND_VAR\n"
+                                         "VAR_INPUT\n  b, c : ARRAY [0..N_MAX - 1, 1..GVL_X.Count] OF ST_S;\nEND_VAR\n"
+                                         "VAR\n  d : ARRAY [-1..1] OF ARRAY [0..2] OF STRING;\nEND_VAR\nEND_FUNCTION\n",
+                 "data_type_declaration": "TYPE ST_Arrays :\nSTRUCT\n  a : ARRAY [1..3] OF TIME;\n"
+                                          "  b : ARRAY [*] OF E_Mode;\nEND_STRUCT\nEND_TYPE\n"}
+        cases["iec_source"] += ("VAR_GLOBAL\n  g, h : ARRAY [1..2] OF INT;\nEND_VAR\n"
+                                "FUNCTION_BLOCK FB_Blocks\nVAR_OUTPUT q : ARRAY [1..2] OF BOOL; END_VAR\n"
+                                "VAR_TEMP t : ARRAY [1..2] OF WORD; END_VAR\n"
+                                "VAR_EXTERNAL g : ARRAY [1..2] OF INT; END_VAR\nq[1] := g[2] > 0;\nEND_FUNCTION_BLOCK\n")
+        for rule, text in cases.items():
+            with self.subTest(rule=rule):
+                self.assertEqual(oracle.compare(text, rule), ("same", None))
+        self.assertEqual(oracle.compare("FOR i := 1 TO 3 DO END_FOR;\n", "statement_list")[0], "declined")
+        self.assertEqual(oracle.compare("PROGRAM P\nVAR a : ARRAY [1..2] OF INT := [1, 2]; END_VAR\nEND_PROGRAM\n")[0],
+                         "declined")
 
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]

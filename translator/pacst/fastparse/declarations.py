@@ -62,8 +62,7 @@ class Declarations:
         if word == "STRUCT":
             return self._structure(s, name, colon)
         if word == "ARRAY":
-            spec = node("array_spec_init", [None, self._array(s), None])
-            return node("array_type_declaration", [name, colon, spec])
+            return node("array_type_declaration", [name, colon, self._array_spec_init(s)])
         raise Decline("type declaration not read here")
 
     def _enumeration(self, s):
@@ -90,17 +89,35 @@ class Declarations:
         return node("structure_type_declaration", raw)
 
     def _array(self, s):
+        """array_specification: `ARRAY [a..b, *, ...] OF` an elementary or named type, a STRING or an
+        ARRAY again (an array of arrays nests the specification itself)."""
         raw = [s.keyword("ARRAY"), s.punct("[")]
         while True:
-            low = self._x.expression(s)
-            dots = s.punct("..")
-            raw.append(node("subrange", [low, dots, self._x.expression(s)]))
+            if s.peek_punct() == "*":
+                raw.append(node("full_subrange", [s.punct("*")]))
+            else:
+                low = self._x.expression(s)
+                dots = s.punct("..")
+                raw.append(node("subrange", [low, dots, self._x.expression(s)]))
             if s.peek_punct() != ",":
                 break
             raw.append(s.punct(","))
         raw += [s.punct("]"), s.keyword("OF")]
-        raw.append(node("non_generic_type_name", [None, self._type_token(s)]))
+        word = s.peek_word()
+        if word == "ARRAY":
+            raw.append(self._array(s))
+        elif word == "STRING":
+            raw.append(self._string(s))
+        else:
+            raw.append(node("non_generic_type_name", [None, self._type_token(s)]))
         return node("array_specification", raw)
+
+    def _array_spec_init(self, s):
+        """array_spec_init of an array without an initial value (an array initialiser is blark's)."""
+        spec = node("array_spec_init", [None, self._array(s), None])
+        if s.peek_punct() == ":=":
+            raise Decline("array initialiser")
+        return spec
 
     # Variables
 
@@ -113,17 +130,19 @@ class Declarations:
             raw.append(s.punct(","))
 
     def _specification(self, s):
-        word = s.peek_word()
-        if word == "STRING":
-            tok = s.word_token("STRING")
-            if s.peek_punct() in ("(", "["):
-                raise Decline("sized STRING")
-            return node("simple_specification", [node("string_type_specification", [tok, None])])
+        if s.peek_word() == "STRING":
+            return node("simple_specification", [self._string(s)])
         return node("simple_specification", [self._type_token(s)])
+
+    def _string(self, s):
+        tok = s.word_token("STRING")
+        if s.peek_punct() in ("(", "["):
+            raise Decline("sized STRING")
+        return node("string_type_specification", [tok, None])
 
     def _type_token(self, s):
         """An elementary type's name as its terminal, or a named type's as IDENTIFIER. Anything else
-        (ARRAY, POINTER TO, other date types, dotted names...) is left to blark."""
+        (POINTER TO, other date types, dotted names...) is left to blark; ARRAY is _array's."""
         kind = elementary_type(s.peek_word())
         tok = s.word_token(kind) if kind else self._x.name_token(s)
         if s.peek_punct() in ("(", "[", "."):
@@ -131,6 +150,9 @@ class Declarations:
         return tok
 
     def _spec_init(self, s):
+        """simple_spec_init, or array_spec_init for an ARRAY."""
+        if s.peek_word() == "ARRAY":
+            return self._array_spec_init(s)
         raw = [self._specification(s)]
         if s.peek_punct() == ":=":
             raw.append(s.punct(":="))
@@ -144,7 +166,9 @@ class Declarations:
     def _var_decl(self, s):
         names = self._var1_list(s)
         colon = s.punct(":")
-        return node("var1_init_decl", [names, colon, self._spec_init(s)])
+        spec = self._spec_init(s)
+        rule = "array_var_init_decl" if spec.data == "array_spec_init" else "var1_init_decl"
+        return node(rule, [names, colon, spec])
 
     def _attributes(self, s, rule, kind, words):
         raw = []
@@ -163,7 +187,9 @@ class Declarations:
     def _external_block(self, s):
         raw = [s.keyword("VAR_EXTERNAL"), self._attributes(s, "variable_attributes", "VAR_ATTRIB", _ATTRIBUTES)]
         while s.peek_word() != "END_VAR":
-            decl = [self._identifier(s), s.punct(":"), self._specification(s)]
+            name, colon = self._identifier(s), s.punct(":")
+            spec = self._array(s) if s.peek_word() == "ARRAY" else self._specification(s)
+            decl = [name, colon, spec]
             s.semicolons(decl)
             raw.append(node("external_declaration", decl))
         raw.append(s.keyword("END_VAR"))

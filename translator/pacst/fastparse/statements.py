@@ -5,7 +5,7 @@ from .scanner import Decline, node
 # Words that end a statement list rather than start a statement.
 _LIST_ENDS = frozenset(("END_IF", "ELSIF", "ELSE", "END_CASE", "END_WHILE", "UNTIL", "END_REPEAT",
                         "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR"))
-_DECLINED = frozenset(("FOR", "JMP", "END_FUNCTIONBLOCK", "END_METHOD", "END_ACTION",
+_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK", "END_METHOD", "END_ACTION",
                        "END_PROPERTY"))
 
 
@@ -15,7 +15,7 @@ class Statements:
     def __init__(self, expressions):
         self._x = expressions
         self._keyworded = {"IF": self._if, "CASE": self._case, "WHILE": self._while,
-                           "REPEAT": self._repeat, "EXIT": self._bare("exit_statement", "EXIT"),
+                           "REPEAT": self._repeat, "FOR": self._for, "EXIT": self._bare("exit_statement", "EXIT"),
                            "CONTINUE": self._bare("continue_statement", "CONTINUE"),
                            "RETURN": self._bare("return_statement", "RETURN")}
 
@@ -138,6 +138,19 @@ class Statements:
                s.keyword("END_REPEAT")]
         _end(s, raw, least=0)
         return node("repeat_statement", raw)
+
+    def _for(self, s):
+        # `FOR i := a TO b [BY c] DO ... END_FOR`: the control variable and the three expressions sit in the
+        # statement itself (blark's _for_list is inlined), BY's placeholder None when it is absent.
+        raw = [s.keyword("FOR"), self._x.variable(s), s.punct(":="), self._x.expression(s), s.keyword("TO"),
+               self._x.expression(s)]
+        if s.peek_word() == "BY":
+            raw += [s.keyword("BY"), self._x.expression(s)]
+        else:
+            raw.append(None)
+        raw += [s.keyword("DO"), self._required_list(s), s.keyword("END_FOR")]
+        _end(s, raw, least=0)
+        return node("for_statement", raw)
 
     def _required_list(self, s):
         body = self.statement_list(s)
