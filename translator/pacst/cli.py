@@ -11,7 +11,7 @@ import time
 from .compiler import Compiler
 from . import gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
 from .order import declaration_order
-from .emit import ENUM_NAMES, Emitter, remove_outputs, write_outputs, _stem
+from .emit import ENUM_NAMES, Emitter, remove_outputs, remove_stale_c, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_files
 
@@ -128,6 +128,8 @@ def _build(args):
     if args.user:
         outputs[SYMBOLS] = symbols.symbols(comp, program)
     written = write_outputs(args.out, outputs)
+    if args.user:
+        remove_stale_c(args.out, outputs)
     if args.stamp:
         with open(args.stamp, "w", encoding="utf-8") as f:
             f.write(f"{time.time()}\n")

@@ -6,6 +6,7 @@ PACTEST_OUT a folder for the runs."""
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import unittest
@@ -434,9 +435,10 @@ END_FUNCTION_BLOCK
 class RebuildTest(unittest.TestCase):
     """A second run after an FB's interface changed rebuilds its callers too, whose C text pacst leaves as
     it was: their objects would read the FB's old layout; and the first build's objects leave no lines in
-    the coverage."""
+    the coverage; a renamed file's old C is not linked beside its new one."""
 
     def test_an_interface_change_rebuilds_the_callers(self):
+        shutil.rmtree(os.path.join(OUT, "rebuild"), ignore_errors=True)  # the renamed file of a run before
         folder = os.path.join(OUT, "rebuild", "src")
         os.makedirs(folder, exist_ok=True)
         for name in ("GVL_Plant.st", "PRG_Count.st", "PRG_Slow.st", "wiring.json"):
@@ -461,6 +463,11 @@ class RebuildTest(unittest.TestCase):
         lines = {line["line_number"] for line in files["FB_Counter.st"]["lines"]}
         self.assertIn(body_lines[1], lines)
         self.assertNotIn(body_lines[0], lines)
+        # a renamed ST file: the C of its old name, from the run before, is not linked beside the new one
+        os.rename(os.path.join(folder, "FB_Counter.st"), os.path.join(folder, "FB_CounterRenamed.st"))
+        run = pac_test(os.path.join(folder, "wiring.json"), out)
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn("ok  FB_TestCounter  (1 asserts", run.stdout)
 
 
 class OutInsideTheProjectTest(unittest.TestCase):
