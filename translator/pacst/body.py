@@ -855,6 +855,8 @@ class BodyCompiler:
                 post.append(ind + target.write(_limited(target.var, f"{member}.value", target.suffix)))
             elif fv.section == "input" and getattr(fv.type, "any", False):  # an ANY input (user mode)
                 pre.append(f"{ind}__PACST_SETP({member}, , {system.any_argument(self.ex, p.value, fv)});")
+            elif fv.section == "input" and (bound := self.ex.reference_input(p.value, fv)) is not None:
+                pre.append(f"{ind}__PACST_SETP({member}, , {bound});")
             elif fv.section == "input":
                 te = self.ex.expr(p.value, fv.type)
                 value = _limited(fv, self.ex.coerce(te, fv.type, p.value, "argument"))

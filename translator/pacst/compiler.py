@@ -134,6 +134,7 @@ class Compiler:
         self.namespaces = {k.upper(): v for k, v in (namespaces or {}).items()}
         self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
         self.gvls = {}  # upper list name -> GlobalList
+        self.gvl_declaring = None  # the GlobalList whose variables are being declared (user mode)
         self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
@@ -784,8 +785,8 @@ class Compiler:
             if _cls(el) != "StructureElementDeclaration":
                 raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
             init = el.init
-            if self.user and _cls(init) == "ArrayTypeInitialization":
-                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
+            if self.user and _cls(init) in ("ArrayTypeInitialization", "SubrangeTypeInitialization"):
+                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array, UINT(0..N) (user mode)
             elif _cls(init) != "TypeInitialization":
                 raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
             else:

@@ -7,7 +7,7 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import TE, _cls, _name, pos
+from .common import TE, Ref, _cls, _name, pos
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
@@ -1074,13 +1074,40 @@ class ExprCompiler:
         value = self.coerce(self.expr(arg, v.type), v.type, arg, "argument")
         return f"(({v.type.cname}[]){{{value}}})"
 
+    def reference_input(self, arg, v):
+        """User mode: the C of the argument for the REFERENCE TO T input `v` when `arg` is a variable of type T (the
+        reference is bound to it, as REF= binds it) or a REFERENCE TO T itself (its reference is passed on), as TwinCAT
+        and CODESYS pass `Get_As_String(Index, sItem)`; None for any other argument."""
+        if not (self.comp.user and v.type.is_pointer and v.type.reference) or self.body is None \
+                or _cls(arg) not in ("SimpleVariable", "MultiElementVariable"):
+            return None
+        src = self.body.ref(arg, raw=True)
+        if src.type is v.type or src.type.is_pointer and src.type.reference and src.type.target is v.type.target:
+            return f"(({v.type.cname})({src.read()}))"
+        if src.type is v.type.target and type(src) is Ref:  # not a bit or a byte of a STRING: no address
+            self.comp.dialect(arg, "a variable passed to a REFERENCE TO input")
+            return f"(({v.type.cname})&({src.read()}))"
+        return None
+
     def _user_call(self, node, pou, this=None):
         params = pou.vars
         interface = [v for v in params if v.section in ("input", "output", "inout")]
         inputs = [v for v in interface if v.section == "input"]
         given = {}
         positional = [p for p in node.parameters if _cls(p) == "InputParameterAssignment" and p.name is None]
-        if positional and len(positional) != len(node.parameters):
+        leading = positional and node.parameters[:len(positional)] == positional
+        if positional and len(positional) != len(node.parameters) and leading and self.comp.user:
+            # user mode: TwinCAT's and CODESYS's positional arguments followed by formal ones: the positional ones
+            # take the inputs and VAR_IN_OUTs in the order of declaration, as in an all-positional call, the formal
+            # ones any pin (TwinCAT_DynCollections' Get(Index, Item, bSuccess => bSuccess))
+            order = [v for v in interface if v.section != "output"]
+            if len(positional) > len(order):
+                raise self.err(positional[len(order)], f"{pou.name} has no input left for this argument")
+            self.comp.dialect(node.parameters[len(positional)], "a formal argument after positional ones")
+            given.update((v.cname, p.value) for v, p in zip(order, positional))
+            for p in node.parameters[len(positional):]:
+                given[self.formal_pin(p, pou, given).cname] = p.value
+        elif positional and len(positional) != len(node.parameters):
             # user mode: TwinCAT's and CODESYS's formal arguments followed by positional ones, which take the
             # inputs not given yet in the order of declaration (AssertEquals(Expected := a, Actual := b, 'text'))
             formal = node.parameters[:len(node.parameters) - len(positional)]
@@ -1116,6 +1143,8 @@ class ExprCompiler:
                         args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
                 elif getattr(v.type, "any", False):  # an ANY input (user mode)
                     args.append(system.any_argument(self, arg, v))
+                elif (bound := self.reference_input(arg, v)) is not None:
+                    args.append(bound)
                 else:
                     args.append(self.coerce(self.expr(arg, v.type), v.type, arg, "argument"))
                 continue

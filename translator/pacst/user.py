@@ -287,11 +287,14 @@ def global_list(comp, block, src):
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
+    comp.gvl_declaring = gvl
     try:
         _global_items(comp, gvl, block, constant)
     except StError:
         gvl.refused = True
         raise
+    finally:
+        comp.gvl_declaring = None
 
 
 def _global_items(comp, gvl, block, constant):
@@ -372,7 +375,11 @@ def lookup_global(comp, token):
     if len(found) > 1:
         raise comp.err(token, f"'{_name(token)}' is declared in the global lists "
                               f"{', '.join(v.gvl.name for v in found)}: qualify it (List.Name)")
-    if found and found[0].gvl.qualified_only:
+    if found and found[0].gvl.qualified_only and found[0].gvl is comp.gvl_declaring:
+        # the list's own initial values name its variables alone, as TwinCAT takes them (GVL_TypeValueLimits'
+        # T_SIZE_MIN : T_Size := UDINT_MIN)
+        comp.dialect(token, "a variable of a qualified_only list named alone in the list's own declarations")
+    elif found and found[0].gvl.qualified_only:
         g = found[0]
         raise comp.err(token, f"'{_name(token)}' alone: the global list {g.gvl.name} has {{attribute "
                               f"'qualified_only'}}, as in TwinCAT write {g.gvl.name}.{g.name}")
