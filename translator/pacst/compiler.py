@@ -135,6 +135,8 @@ class Compiler:
         self.globals = {}  # upper name -> [GlobalVar] (one per list that declares the name)
         self.gvls = {}  # upper list name -> GlobalList
         self.gvl_declaring = None  # the GlobalList whose variables are being declared (user mode)
+        self.later_fbs = set()  # upper names of the FUNCTION_BLOCKs of the files compiled (user mode)
+        self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
@@ -196,6 +198,9 @@ class Compiler:
                 elif _cls(item) in ("Method", "Action", "Property") and owner is not None:
                     self.members.setdefault(id(owner), []).append(item)
                     attached.add(id(item))
+        if self.user:
+            self.later_fbs = {self._item_name(item).upper() for src in sources for item in src.tree.items
+                              if _cls(item) == "FunctionBlock"}
         for src, item in self._in_order(sources):
             if id(item) in attached:
                 continue  # declared with its FUNCTION_BLOCK or PROGRAM
@@ -207,18 +212,36 @@ class Compiler:
                 name = self._item_name(item)
                 if name is not None:
                     self.refused.add(name.upper())
+            if _cls(item) == "FunctionBlock":
+                self._pending_globals(self._item_name(item).upper())
+        for fb in list(self.pending_globals):  # their FB was refused: each says so
+            self._pending_globals(fb)
         if self.errors:
             raise StErrors(self.errors)
         return self.program
 
+    def _pending_globals(self, fb):
+        """User mode: declare the global variables that waited for the FUNCTION_BLOCK `fb` (instances of it in a
+        global list, which TwinCAT declares in any order: Tc3_Event's GVL holds an FB_Message)."""
+        file = self.file
+        for gvl, item, constant, path in self.pending_globals.pop(fb, []):
+            self.file = path
+            try:
+                user.global_items(self, gvl, [item], constant)
+            except StError as e:
+                self.errors.append(e)
+                gvl.refused = True
+        self.file = file
+
     def _in_order(self, sources):
-        """(file, item) in the order they are declared: the files' order; in user mode every type first,
-        then the global lists, then the POUs, so that a POU may use a global of any list and a list a type
-        of any file (TwinCAT and CODESYS have no declaration order)."""
+        """(file, item) in the order they are declared: the files' order; in user mode every type and global
+        list first (in the files' order, which declares a list before a type whose array bounds name its
+        constants, as TcUnit's ST_TestSuiteResult names GVL_Param_TcUnit's), then the POUs, so that a POU may
+        use a global of any list (TwinCAT and CODESYS have no declaration order)."""
         items = [(src, item) for src in sources for item in src.tree.items]
         if not self.user:
             return items
-        rank = {"DataTypeDeclaration": 0, "GlobalVariableDeclarations": 1}
+        rank = {"DataTypeDeclaration": 0, "GlobalVariableDeclarations": 0}
         return sorted(items, key=lambda pair: rank.get(_cls(pair[1]), 2))  # stable: file order within a rank
 
     @staticmethod
@@ -500,6 +523,9 @@ class Compiler:
             if value is not None:
                 self.dialect(node, "an array bound that is a named constant")
                 return value
+        if self.user:
+            raise self.err(node, "array bounds must be integer literals or integer constants declared before (a "
+                                 "global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
 
     def constant_int(self, node, earlier=False):

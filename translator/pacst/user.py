@@ -9,12 +9,14 @@ it before a scan and out of it after (symbols.json gives its address).
 """
 import os
 import re
+from types import SimpleNamespace
 
 from . import types as T
 from . import varlen
 from .common import _cls, _name, pos
 from .errors import StError
 from .names import C_KEYWORDS, C_MACROS, reserved_reason
+from .order import mentioned_names
 
 # The largest STRING of pacst's C (STR_MAX_LEN of pacst_iec.h): TwinCAT's T_MaxString, the longest string its
 # string functions take. MATIEC's STRING holds 126: a longer STRING(n) or literal is dialect there.
@@ -287,18 +289,39 @@ def global_list(comp, block, src):
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
-    comp.gvl_declaring = gvl
     try:
-        _global_items(comp, gvl, block, constant)
+        global_items(comp, gvl, block.items, constant)
     except StError:
         gvl.refused = True
         raise
+
+
+def global_items(comp, gvl, items, constant):
+    """Declare the variables `items` of the global list `gvl`; an instance of a FUNCTION_BLOCK declared later waits
+    for it (Compiler._pending_globals)."""
+    comp.gvl_declaring = gvl
+    try:
+        _global_items(comp, gvl, items, constant)
     finally:
         comp.gvl_declaring = None
 
 
-def _global_items(comp, gvl, block, constant):
-    for item in block.items:
+def _later_fb(comp, item):
+    """The upper name of the FUNCTION_BLOCK of the program, not declared yet, that `item`'s type names, or None."""
+    later = comp.later_fbs - set(comp.pous) - comp.refused
+    if not later:
+        return None
+    found = mentioned_names(SimpleNamespace(items=[item.init])) & later
+    return min(found) if found else None
+
+
+def _global_items(comp, gvl, items, constant):
+    for item in items:
+        fb = _later_fb(comp, item)
+        if fb is not None:
+            comp.dialect(item, "a function block instance in a global list")
+            comp.pending_globals.setdefault(fb, []).append((gvl, item, constant, comp.file))
+            continue
         spec = item.spec
         vtype, strlen = var_type(comp, item.init, allow_fb=True)
         value = initial_value(item.init)
