@@ -1328,6 +1328,10 @@ class Compiler:
             # TwinCAT passes an FB instance to a FUNCTION's or METHOD's VAR_IN_OUT (TcUnit's F_GetCpuCounterAs64bit)
             self.dialect(item, "an FB instance in a VAR_IN_OUT of a FUNCTION or METHOD")
             return
+        if vtype.is_fb and section == "input" and self.user and pou.kind != "fb":
+            # TwinCAT copies the caller's instance into a FUNCTION's or METHOD's VAR_INPUT (Tc3_Event's I_Logger.M_Log)
+            self.dialect(item, "an FB instance in a VAR_INPUT of a FUNCTION or METHOD")
+            return
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:
@@ -1342,8 +1346,10 @@ class Compiler:
         # a METHOD's or FUNCTION's VAR may hold FB instances (TwinCAT and CODESYS): fresh in every call, like its
         # other VAR
         # (and an FB instance in a FUNCTION's or METHOD's VAR_IN_OUT: the caller's, as TwinCAT passes it)
+        # (and in a FUNCTION's or METHOD's VAR_INPUT: a copy of the caller's instance, as TwinCAT passes it)
         vtype, strlen = user.var_type(self, item.init, allow_fb=(pou.kind == "fb" or section == "inout" or (
-            section == "var" and (pou.owner is not None or pou.kind == "function"))), in_out=section == "inout")
+            section in ("var", "input") and (pou.owner is not None or pou.kind == "function"))),
+            in_out=section == "inout")
         value = user.initial_value(item.init)
         spec = getattr(item.init, "spec", None)
         fb_init_args = getattr(spec, "init_parameters", None) if _cls(spec) == "IndirectSimpleSpecification" else None

@@ -372,6 +372,9 @@ class ExprCompiler:
         return self._value_of(node)
 
     def _value_of(self, node):
+        if self.comp.user and _cls(node) == "SimpleVariable" and node.dereferenced and _name(node.name).upper() == "THIS" \
+                and (self.body is None or self.body.lookup("THIS") is None):
+            return self._this_instance(node)
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
         known = system.enum_value(self.comp, node) if self.comp.user and (
             self.body is None or self.body.lookup(_name(getattr(node.name, "name", node.name))) is None) else None
@@ -406,6 +409,16 @@ class ExprCompiler:
         if ref.type.is_fb:
             raise self.err(node, f"function block instance '{ref.var.name}' used as a value")
         return TE(ref.type, ref.read())
+
+    def _this_instance(self, node):
+        """User mode: `THIS^` alone, the instance of the FUNCTION_BLOCK whose body or METHOD this is (its address, as
+        an instance's value is here): given to an INTERFACE it implements (`Get := THIS^;` in a METHOD returning
+        one, as TwinCAT_DynCollections' FB_Immutable_List returns itself)."""
+        fb = self.body._fb_of_body() if self.body is not None else None
+        if fb is None or getattr(fb, "fbtype", None) is None:
+            raise self.err(node, "THIS^ is used inside a FUNCTION_BLOCK, its METHODs and ACTIONs")
+        self.comp.dialect(node, "THIS^")
+        return TE(fb.fbtype, "data__")
 
     def _e_UnaryOperation(self, node, want):
         op = str(node.op).upper()
@@ -1136,6 +1149,8 @@ class ExprCompiler:
         for v in interface:
             arg = given.get(v.cname)
             if v.section == "input":
+                if arg is None and v.type.is_fb:
+                    raise self.err(node, f"input '{v.name}' of {pou.name}, an instance of {v.type.name}, must be passed")
                 if arg is None:
                     args.append(self.comp.default_c(v.type) if v.type.is_elementary or v.type.is_enum
                                 else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
@@ -1145,6 +1160,12 @@ class ExprCompiler:
                     args.append(system.any_argument(self, arg, v))
                 elif (bound := self.reference_input(arg, v)) is not None:
                     args.append(bound)
+                elif v.type.is_fb:  # user mode: a copy of the caller's instance (its value here is its address)
+                    te = self.expr(arg, v.type)
+                    if te.type is not v.type:
+                        raise self.err(arg, f"type mismatch: {te.type.name} passed to input '{v.name}' of type "
+                                            f"{v.type.name}")
+                    args.append(f"(*{te.code})")
                 else:
                     args.append(self.coerce(self.expr(arg, v.type), v.type, arg, "argument"))
                 continue
