@@ -41,7 +41,7 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
     if user:
         # A PLC programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
         by_path = {src.path: src for src in sources}
-        sources = [by_path[path] for path in declaration_order(sources)]
+        sources = [by_path[path] for path in declaration_order(sources, user=True)]
     comp = Compiler(user, native, namespaces)
     program = comp.compile(sources)
     constants = {}
@@ -210,7 +210,7 @@ def _matiec(args):
 def _order(args):
     try:
         files = _user_files(args)
-        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)))
+        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)), user=args.user)
     except StErrors as e:
         for err in e.errors:
             print(plcopen_read.at_source(err), file=sys.stderr)

@@ -212,8 +212,6 @@ class Compiler:
                 name = self._item_name(item)
                 if name is not None:
                     self.refused.add(name.upper())
-            if _cls(item) == "FunctionBlock":
-                self._pending_globals(self._item_name(item).upper())
         for fb in list(self.pending_globals):  # their FB was refused: each says so
             self._pending_globals(fb)
         if self.errors:
@@ -928,8 +926,14 @@ class Compiler:
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
         self.pous[pou.cname] = pou
+        after = []  # the types its instances in global lists declare (an array of them): after the FB in POUS.h
+        if kind == "fb" and self.user:  # its instances in global lists, which its body may use (Compiler.compile)
+            mark = len(self.program.items)
+            self._pending_globals(pou.cname)
+            after = self.program.items[mark:]
+            del self.program.items[mark:]
         if pou.native:  # the host implements it: its ST body (if any) is for the other tools
-            self.program.items.append(("pou", pou, self.file))
+            self.program.items += [("pou", pou, self.file)] + after
             return
         members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
         members = [m for m in members if m is not None]  # a PROPERTY's declaration is no code of its own
@@ -951,6 +955,7 @@ class Compiler:
             del self.pous[pou.cname]
             raise
         self.program.items.append(("pou", pou, self.file))
+        self.program.items += after
         self.program.items += [("pou", m, self.file) for m in members]
 
     def _implements(self, pou, implements):

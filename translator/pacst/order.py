@@ -12,6 +12,7 @@ import functools
 import heapq
 import os
 import re
+import types
 import weakref
 
 import lark
@@ -96,14 +97,54 @@ def _cycle(deps, left):
     return path[seen[node]:]
 
 
-def declaration_order(sources):
+def _list_files(sources, owner):
+    """User mode: {path of a file of global lists only: {upper variable name: the paths of the files declaring the
+    types its declaration names}}."""
+    lists = {}
+    for src in sources:
+        items = src.tree.items
+        if not items or any(_cls(item) != "GlobalVariableDeclarations" for item in items):
+            continue
+        found = lists[src.path] = {}
+        for block in items:
+            for item in block.items:
+                words = mentioned_names(types.SimpleNamespace(items=[item.init]))
+                paths = {owner[w][0] for w in words if w in owner and owner[w][0] != src.path}
+                for token in item.spec.variables:
+                    found[_name(token).upper()] = paths
+    return lists
+
+
+def _through_lists(src, uses, lists):
+    """User mode: the uses of the POU file `src` with each global list it names replaced by the files of the types
+    of the list's variables it names: a compiler in user mode declares every list before the POUs, but an
+    instance of an FB of the program only after that FB (TcUnit's GVL_TcUnit holds an FB_TcUnitRunner, whose
+    FB_AdsTestResultLogger reads GVL_TcUnit.AdsMessageQueue)."""
+    if any(_cls(item) in ("DataTypeDeclaration", "GlobalVariableDeclarations") for item in src.tree.items):
+        return uses
+    mentioned = _mentioned(src)
+    kept = {}
+    for dep, name in uses.items():
+        if dep not in lists:
+            kept.setdefault(dep, name)
+            continue
+        for var, paths in lists[dep].items():
+            if var in mentioned:
+                for path in paths - {src.path}:
+                    kept.setdefault(path, name)
+    return kept
+
+
+def declaration_order(sources, user=False):
     """The parsed files `sources` (SourceFiles) in declaration order; raises StErrors naming the files of a
-    cycle, whose files no order can declare before each other."""
+    cycle, whose files no order can declare before each other. `user`: pacst's user mode, which declares the
+    global lists before the POUs (_through_lists)."""
     # A name declared twice is the compiler's to refuse; here the first file (by sort key) owns it.
     owner = {}  # upper name -> (path of the file that declares it, the name as spelled there)
     for src in sorted(sources, key=lambda s: _sort_key(s.path)):
         for name in declared_names(src.tree):
             owner.setdefault(name.upper(), (src.path, name))
+    lists = _list_files(sources, owner) if user else {}
     deps = {}  # path -> {path it depends on: a name it uses from there}
     for src in sources:
         uses = {}
@@ -111,7 +152,7 @@ def declaration_order(sources):
             dep, name = owner.get(word, (src.path, None))
             if dep != src.path:
                 uses.setdefault(dep, name)
-        deps[src.path] = uses
+        deps[src.path] = _through_lists(src, uses, lists) if user else uses
     users = {src.path: [] for src in sources}
     for path, uses in deps.items():
         for dep in uses:

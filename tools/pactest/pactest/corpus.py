@@ -211,7 +211,7 @@ def measure(files, cache, jobs, libraries=()):
             break
         try:
             by_path = {s.path: s for s in sources}
-            ordered = [by_path[p] for p in order.declaration_order(sources)]
+            ordered = [by_path[p] for p in order.declaration_order(sources, user=True)]
             compiler.Compiler(True, native, namespaces).compile(ordered)
             break
         except errors.StErrors as e:
