@@ -441,7 +441,9 @@ class ExprCompiler:
             t = inner.type
             if t.is_bool:
                 return TE(t, f"(!{inner.code})")
-            if t.is_bit:
+            if t.is_int and self.comp.user:  # bit by bit, as TwinCAT and CODESYS take it
+                self.comp.dialect(node, f"NOT on {t.name}")
+            if t.is_bit or t.is_int and self.comp.user:
                 return TE(t, f"(({t.cname})~{inner.code})", narrow=t.bits < 32)
             raise self.err(node, f"NOT on {t.name}: only BOOL, BYTE, WORD and DWORD")
         if op == "+":
@@ -627,13 +629,15 @@ class ExprCompiler:
         if a.type is T.ANY_INT and b.type is T.ANY_INT and (want is None or not want.is_bit):
             raise self.err(node.op, f"{op} of two integer literals: give one a type (WORD#16#FF)")
         for te in (a, b):  # INT AND BOOL is refused for the INT, at the operator
-            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit):
+            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit or self.comp.user and te.type.is_int):
                 raise self.err(node.op, f"{op} on {te.type.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
         t, ca, cb = self.unify(a, b, want, node)
         if t.is_bool:
             c_op = {"AND": "&&", "OR": "||", "XOR": "!="}[op]
             return TE(t, f"({ca} {c_op} {cb})")
-        if t.is_bit:
+        if t.is_int and self.comp.user:  # TwinCAT and CODESYS: bit by bit on an integer too (FsCommon's F_Hash)
+            self.comp.dialect(node.op, f"{op} on {t.name}")
+        if t.is_bit or t.is_int and self.comp.user:
             c_op = {"AND": "&", "OR": "|", "XOR": "^"}[op]
             return TE(t, f"(({t.cname})({ca} {c_op} {cb}))")
         raise self.err(node.op, f"{op} on {t.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
@@ -1015,8 +1019,20 @@ class ExprCompiler:
                 raise self.err(value, f"{fn} of an integer literal needs a typed literal (WORD#16#FF)")
             te = TE(want, self.coerce(te, want, value))
         t = te.type
+        if self.comp.user and t.is_int and not t.is_signed:
+            # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width
+            self.comp.dialect(node, f"{fn} on {t.name}")
+            bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
+                T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
+            shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
+            return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
         if not t.is_bit:
-            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
+            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset), and unsigned "
+                                  "integers in user programs: convert it (INT_TO_WORD)")
+        return self._shift_code(node, fn, te, t, count, want, value)
+
+    def _shift_code(self, node, fn, te, t, count, want=None, value=None):
+        """The C of SHL, SHR, ROL or ROR of `te`, of the bit string type `t`, by `count`."""
         ne = self.expr(count, T.INT)
         if self.comp.user and fn == "SHL" and want is not None and want.is_bit and widens(t, want):
             # nK := nK XOR SHL(pTail[2], 16): TwinCAT shifts at the register width, the DWORD keeps the bits
