@@ -1520,7 +1520,8 @@ class Compiler:
                 return te
             raise self.err(node, "initial value: pacst computes literals, named constants, variables declared before "
                                  "and integer expressions of them with + - * (and, in a VAR of a POU, calls and "
-                                 "variables declared before when the variable is initialised); assign this one in code")
+                                 "variables declared before when the variable is initialised; in a global list, "
+                                 "expressions of literals, constants and calls); assign this one in code")
         self.dialect(node, "an initial value that is a named constant or a variable declared before")
         self.named_inits[id(node)] = init  # translated again outside its POU (initial_constant says why)
         return self.literal_te(init, want)

@@ -4,8 +4,9 @@ of a constant (`Limit : DINT := TO_DINT(MaxCount);`) and a FUNCTION's input (`p 
 
 Taken for a VAR of a FUNCTION_BLOCK, PROGRAM, FUNCTION or METHOD: the expression is translated as in the POU's body
 and runs where the variable gets its initial value, an FB's when the instance is initialised (before the first
-scan), a FUNCTION's and a METHOD's in every call; it reads the variables declared before it. An input's, a struct
-member's or a global list's initial value stays one pacst computes when it translates."""
+scan), a FUNCTION's and a METHOD's in every call; it reads the variables declared before it. A global list's is
+computed when the list is initialised, from literals, named constants and calls (no variables). An input's or a struct
+member's initial value stays one pacst computes when it translates."""
 from .common import _cls
 from .errors import StError
 
@@ -17,6 +18,17 @@ def computed(comp, node, want):
     if id(node) in comp.computed_inits:
         return comp.computed_inits[id(node)]
     pou, section = comp.declaring, comp.declaring_section
+    if pou is None and comp.gvl_declaring is not None and _cls(node) not in ("String", "WideString"):
+        # a global list's: computed in the list's initialisation, before the first scan, from literals, named
+        # constants and calls (TcUnit's HundredNanosecondToSecond : LREAL := 1.0 / 10000000.0)
+        from .expressions import ExprCompiler
+        try:
+            te = ExprCompiler(comp, None).expr(node, want)
+        except StError:
+            return None
+        comp.dialect(node, "an initial value computed when the variable is initialised")
+        comp.computed_inits[id(node)] = te
+        return te
     if pou is None or section != "var" or _cls(node) in ("String", "WideString"):
         return None
     from .body import BodyCompiler  # body imports the compiler's helpers
