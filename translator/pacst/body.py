@@ -426,7 +426,10 @@ class BodyCompiler:
         lines = self.block(statements, 1, pou.node)
         if self.errors:
             raise StErrors(self.errors)
-        if pou.kind == "function" and pou.ret is not None and not self.result_assigned:
+        if pou.kind == "function" and pou.ret is not None and not self.result_assigned and self.comp.user:
+            # TwinCAT and CODESYS return the result type's initial value (FsCommon's FB_init : BOOL, TcUnit's Copy)
+            self.comp.dialect(pou.node, f"the result of {pou.name} never assigned")
+        elif pou.kind == "function" and pou.ret is not None and not self.result_assigned:
             raise self.err(pou.node, f"the result of FUNCTION {pou.name} is never assigned")
         return lines
 
