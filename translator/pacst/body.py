@@ -790,7 +790,7 @@ class BodyCompiler:
                 raise self.err(node, "recursion is outside pacst's user programs")
             return [ind + "(void)" + self.ex._user_call(node, target[1], this=target[0]).code + ";"]
         node = dataclasses.replace(node, name=self.this(node.name))
-        if self.comp.user and (_cls(node.name) != "SimpleVariable" or (
+        if self.comp.user and (_cls(node.name) != "SimpleVariable" or node.name.dereferenced or (
                 self.pou.var(_name(node.name.name)) is None and _name(node.name.name).upper() not in self.comp.pous)):
             if _cls(node.name) == "SimpleVariable" and _name(node.name.name).upper() == "__DELETE":
                 return system.delete_statement(self, node, ind)
@@ -805,6 +805,9 @@ class BodyCompiler:
                 raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
                                      f"'{_name(node.name.name)}'")
             r = self.ref(node.name)
+            if _cls(node.name) == "SimpleVariable" and node.name.dereferenced and r.type.is_fb:
+                # Timer^(IN := TRUE): the instance a POINTER TO TON points at (TcUnit's FB_SkipAssertionsWhenFinished)
+                self.comp.dialect(node, "a call of the FB instance a POINTER points at")
             if not r.type.is_fb:
                 raise self.err(node, f"'{r.var.name}' is a {r.type.name}, not a function block instance")
             if _cls(node.name) != "SimpleVariable":
