@@ -1085,12 +1085,13 @@ class Compiler:
         """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
         for this FB's instance (from the base's text: their errors name the base's lines)."""
         own = set(pou.methods)
+        own_properties = set(pou.properties)  # before the loop: a base's Get and Set are both inherited
         members = []
         saved = self.file
         try:
             self.file = base.file
             for node in self.members.get(id(base.node), []):
-                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in pou.properties \
+                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
                         or _cls(node) != "Property" and _name(node.name).upper() not in own:
                     members.append(self._member(pou, node, inherited=True))
             for node in self.members.get(id(base.node), []):
