@@ -347,11 +347,16 @@ def _global_items(comp, gvl, items, constant):
             if gvl.var(vname) is not None:
                 raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
             shadows_value = vup in comp.enum_values and not gvl.qualified_only  # List.Name never means the value
-            if vup in comp.types or vup in comp.pous or shadows_value or vup in comp.gvls:
+            # in a qualified_only list the name alone never means the variable: TcUnit's GVL_TcUnit declares
+            # GetCpuCounter : GETCPUCOUNTER (in C the variable is named after its list)
+            shadows_type = (vup in comp.types or vup in comp.pous) and not gvl.qualified_only
+            if shadows_type or shadows_value or vup in comp.gvls:
                 raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
                                       "value or global list")
             if vup in comp.enum_values:
                 comp.dialect(token, "a global variable of a qualified_only list named like an enumeration value")
+            if vup in comp.types or vup in comp.pous:
+                comp.dialect(token, "a global variable of a qualified_only list named like a type or POU")
             v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
             if value is not None:
                 comp.init_code(v, "x")  # checks the initial value now
