@@ -1068,6 +1068,11 @@ class ExprCompiler:
         tes = [self.expr(a, want) for a in args]
         concrete = [te.type for te in tes if te.type.kind not in ("anyint", "anyreal")]
         t = concrete[0] if concrete else self.default_type(tes[0], want)
+        if self.comp.user:  # LIMIT(UDINT, LINT, UDINT): the type every argument widens to, as TwinCAT takes it
+            wide = [c for c in concrete if all(o is c or widens(o, c) for o in concrete)]
+            if wide and wide[0] is not t:
+                self.comp.dialect(node, f"{fn} of arguments of different types")
+                t = wide[0]
         codes = [self.coerce(te, t, a, "argument") for te, a in zip(tes, args)]
         if not (t.is_numeric or t.is_bit):
             raise self.err(node, f"{fn} on {t.name}")
