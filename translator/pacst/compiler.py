@@ -761,9 +761,15 @@ class Compiler:
             for v in values:
                 up = v.upper()
                 if up in self.enum_values and self.user or up in self.enum_shared:
-                    # TwinCAT's qualified_only types share names (E_Mode.IDLE, E_Step.IDLE): written E.A only
-                    self.enum_shared.setdefault(up, [self.enum_values.pop(up, None)]).append(t)
-                    self.enum_shared[up] = [e for e in self.enum_shared[up] if e is not None]
+                    # TwinCAT's qualified_only types share names (E_Mode.IDLE, E_Step.IDLE): written E.A only; the
+                    # name alone is the value of the one type among them without qualified_only, if there is one
+                    # (a program's Static beside Tc2_System's E_TcMemoryArea.Static)
+                    every = self.enum_shared[up] = (self.enum_shared.get(up) or [self.enum_values[up]]) + [t]
+                    plain = [e for e in every if not getattr(e, "qualified_only", False)]
+                    if len(plain) == 1:
+                        self.enum_values[up] = plain[0]
+                    else:
+                        self.enum_values.pop(up, None)
                 else:
                     self.enum_values[up] = t
         elif cls == "SimpleTypeDeclaration" and self.user:
@@ -1445,7 +1451,7 @@ class Compiler:
 
     def shared_enum_value(self, name, node):
         """User mode: refuses a value two enumerations share written without its type."""
-        types = self.enum_shared.get(name.upper()) if self.user else None
+        types = self.enum_shared.get(name.upper()) if self.user and name.upper() not in self.enum_values else None
         if types:
             names = sorted(t.name for t in types)
             raise self.err(node, f"'{name}' is a value of {' and '.join(names)}: qualify it ({names[0]}.{name})")

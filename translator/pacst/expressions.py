@@ -23,7 +23,7 @@ _STRING_PINS = {"LEN": ["STR"], "CONCAT": ["STR1", "STR2"], "LEFT": ["STR", "SIZ
 _MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin", "COS": "cos", "TAN": "tan",
          "ASIN": "asin", "ACOS": "acos", "ATAN": "atan", "EXPT": "pow", "TRUNC": "", "TRUNC_INT": "", "MOVE": ""}
 # Pointers and memory (user mode): TwinCAT's operators and Tc2_System's functions, CODESYS's the same.
-_MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF"}
+_MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF", "PACST_MEMORY_AREA"}
 # Functions a user program may call as a statement, its result unused.
 STATEMENT_FUNCTIONS = {"MEMCPY", "MEMMOVE", "MEMSET"}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
@@ -382,7 +382,9 @@ class ExprCompiler:
             return TE(known[0], known[0].cvalue(known[1]))
         name = _name(node.name) if _cls(node) == "SimpleVariable" else None
         if name is not None and (self.body is None or self.body.lookup(name) is None) \
-                and name.upper() in self.comp.enum_values:
+                and name.upper() in self.comp.enum_values and not (
+                    getattr(self.comp.enum_values[name.upper()], "qualified_only", False)
+                    and self.comp.globals.get(name.upper())):  # a global's name, a qualified_only value's too
             et = self.comp.enum_values[name.upper()]
             self.comp.bare_enum_value(et, name, node)
             value = next(v for v in et.values if v.upper() == name.upper())
@@ -784,6 +786,14 @@ class ExprCompiler:
             if r.type.kind == "vla":  # the caller's array's bytes
                 return TE(T.ELEMENTARY["UDINT"], varlen.size_c(r))
             return TE(T.ELEMENTARY["UDINT"], f"((UDINT)sizeof({r.read()}))")
+        if fn == "PACST_MEMORY_AREA":  # pac-test's Tc2_System.F_CheckMemoryArea: 0 unknown, 1 static, 2 __NEW's
+            pdata, nsize = self._positional(node, 2, ["PDATA", "NSIZE"])
+            te, ne = self.expr(pdata, None), self.expr(nsize, T.ELEMENTARY["UDINT"])
+            if not te.type.is_pointer:
+                raise self.err(pdata, f"{fn}'s pData is an address (ADR(x) or a POINTER), not {te.type.name}")
+            ncode = self.coerce(ne, T.ELEMENTARY["UDINT"], nsize, "argument")
+            pcode = f"(const void *)({te.code})"
+            return TE(T.ELEMENTARY["UDINT"], f"__pacst_memory_area({pcode}, (size_t)({ncode}))")
         names = {"MEMSET": ["DESTADDR", "FILLBYTE", "N"], "MEMCMP": ["PBUF1", "PBUF2", "N"]}.get(
             fn, ["DESTADDR", "SRCADDR", "N"])
         args = self._positional(node, 3, names)

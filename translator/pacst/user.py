@@ -346,7 +346,9 @@ def _global_items(comp, gvl, items, constant):
             vup = vname.upper()
             if gvl.var(vname) is not None:
                 raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
-            shadows_value = vup in comp.enum_values and not gvl.qualified_only  # List.Name never means the value
+            # List.Name never means the value; a qualified_only enumeration's value alone is no value
+            shadows_value = vup in comp.enum_values and not gvl.qualified_only \
+                and not getattr(comp.enum_values[vup], "qualified_only", False)
             # in a qualified_only list the name alone never means the variable: TcUnit's GVL_TcUnit declares
             # GetCpuCounter : GETCPUCOUNTER (in C the variable is named after its list)
             shadows_type = (vup in comp.types or vup in comp.pous) and not gvl.qualified_only

@@ -632,11 +632,11 @@ class ProgramRefusalTest(unittest.TestCase):
 
     def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
         run, folder = self.listed("vendor-name", {"FB_TaskIndex.st": "FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : "
-                                                                      "Tc2_System.E_TcMemoryArea;\nEND_VAR\n"
+                                                                      "Tc2_System.T_AmsNetId;\nEND_VAR\n"
                                                                       "END_FUNCTION_BLOCK\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.E_TcMemoryArea': the "
-                      "library Tc2_System has no type or POU 'E_TcMemoryArea': pac-test provides part of the vendor library "
+        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.T_AmsNetId': the "
+                      "library Tc2_System has no type or POU 'T_AmsNetId': pac-test provides part of the vendor library "
                       "Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); keep the code that needs this name out "
                       "of the program tested", run.stderr)
 

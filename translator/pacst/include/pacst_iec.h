@@ -499,6 +499,17 @@ static inline void __pacst_delete(void *p, const char *where) {
     __pacst_heap_used -= b->size;
     free(b);
 }
+/* Tc2_System's F_CheckMemoryArea (pac-test's vendor ST): 2 (Dynamic) for `n` bytes at `p` inside one block __NEW
+ * returned, 0 (Unknown) for a null pointer or bytes reaching past such a block, else 1 (Static). */
+static inline UDINT __pacst_memory_area(const void *p, size_t n) {
+    const __pacst_block *b;
+    if (p == NULL) return 0;
+    for (b = __pacst_heap_blocks; b != NULL; b = b->next) {
+        const char *start = (const char *)(b + 1), *at = (const char *)p;
+        if (at >= start && at < start + b->size) return (size_t)(start + b->size - at) >= n ? 2 : 0;
+    }
+    return 1;
+}
 #endif
 static inline DINT __pacst_memcmp(const void *a, const void *b, size_t n) {
     int c = memcmp(a, b, n);
