@@ -116,12 +116,22 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
                       "END_CASE;\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
     EXPECT_EQ(result.exitCode, 0) << result.output;
-    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it
-    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; END_VAR\nStep := FAULT;\nEND_PROGRAM\n");
-    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, bare});
-    EXPECT_NE(result.output.find(bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
-                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT"), std::string::npos)
-        << result.output;
+    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it; as a CASE label too, and
+    // so is a constant of a qualified_only list (at the label, not at the file's first line)
+    auto limits = Write("GVL_Limits.st", "{attribute 'qualified_only'}\nVAR_GLOBAL CONSTANT\n  MaxSteps : INT := 4;\n"
+                                         "END_VAR\n");
+    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; N : INT; END_VAR\nStep := FAULT;\n"
+                                     "CASE Step OF\n  IDLE: N := 1;\nEND_CASE\nCASE N OF\n  MaxSteps: N := 0;\nEND_CASE\n"
+                                     "END_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, limits, bare});
+    for (const auto& expected : {bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT",
+                                 bare + ":5:3: error: 'IDLE' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.IDLE",
+                                 bare + ":8:3: error: 'MaxSteps' alone: the global list GVL_Limits has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write GVL_Limits.MaxSteps"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
     auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
                                       "END_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});

@@ -664,6 +664,7 @@ class BodyCompiler:
                 self.comp.shared_enum_value(parts[0], node)
                 et = self.comp.enum_values.get(parts[0].upper())
                 if et is sel_type:
+                    self.comp.bare_enum_value(et, parts[0], node)
                     return sel_type.number(parts[0])
                 if et is not None:
                     raise self.err(node, f"'{parts[0]}' is a value of {et.name}, not of {sel_type.name}")
@@ -674,7 +675,7 @@ class BodyCompiler:
             if var is None and parts[0].upper() in self.pou.externals:
                 var = self.pou.externals[parts[0].upper()][0]
             if var is None:
-                var = user.lookup_global(self.comp, parts[0])
+                var = user.lookup_global(self.comp, parts[0], at=node)
         elif len(parts) == 2 and parts[0].upper() in self.comp.gvls:
             var = self.comp.gvls[parts[0].upper()].var(parts[1])
         if var is None or not var.constant or var.init is None:

@@ -363,10 +363,11 @@ def _attribute_before(comp, line, attribute):
     return False
 
 
-def lookup_global(comp, token):
+def lookup_global(comp, token, at=None):
     """The global an unqualified name means in user mode, or None; several lists declaring it is an error, and
-    so is the name alone of a list under {attribute 'qualified_only'}."""
+    so is the name alone of a list under {attribute 'qualified_only'} (at `at`, where `token` is a name only)."""
     found = comp.globals.get(_name(token).upper(), [])
+    token = token if at is None else at
     if found and _name(token).upper() in comp.enum_values and all(v.gvl.qualified_only for v in found):
         return None  # ERR_OK alone is the enumeration value; GVL_Errors.ERR_OK the list's
     if len(found) > 1:
