@@ -273,19 +273,56 @@ TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
 }
 
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
-    // CODESYS exports an application's PROGRAMs and lists into the resource's addData: they are read too.
+    // CODESYS exports an application's PROGRAMs, lists and DUTs (with their attributes) into the resource's
+    // addData, an FB's EXTENDS and IMPLEMENTS into its interface's: they are read too.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/datatype\" handleUnknown=\"implementation\">\n"
+        "<dataType name=\"E_State\"><baseType><enum><values><value name=\"IDLE\" value=\"0\"/><value name=\"RUN\" "
+        "value=\"10\"/></values></enum></baseType><addData><data name=\"http://www.3s-software.com/plcopenxml/"
+        "attributes\" handleUnknown=\"implementation\"><Attributes><Attribute Name=\"qualified_only\" Value=\"\"/>"
+        "</Attributes></data></addData></dataType>\n</data>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"FB_Base\" pouType=\"functionBlock\"><interface><outputVars><variable name=\"N\"><type><INT/>"
+        "</type></variable></outputVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
+        "</xhtml></ST></body></pou>\n</data>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"FB_Twice\" pouType=\"functionBlock\"><interface><addData><data name=\"http://www.3s-software.com/"
+        "plcopenxml/pouinheritance\" handleUnknown=\"implementation\"><Inheritance><Extends>FB_Base</Extends>"
+        "</Inheritance></data></addData></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
+        "SUPER^();\nSUPER^();</xhtml></ST></body></pou>\n</data>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
-        "</variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
+        "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable><variable name=\"Twice\">"
+        "<type><derived name=\"FB_Twice\"/></type></variable></localVars></interface><body><ST>"
+        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.N;\nState := E_State.RUN;"
         "</xhtml></ST></body></pou>\n</data>\n</addData></resource></configuration></configurations></instances>\n"
         "</project>\n");
     auto sources = Out() + "/plcopen";
     auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_TRUE(fs::exists(sources + "/PLC_PRG.st")) << "the application's PROGRAM";
+    EXPECT_NE(ReadFile(sources + "/E_State.st").find("{attribute 'qualified_only'}"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
+}
+
+TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
+    // An object of a kind the reader does not translate (TwinCAT's INTERFACE) is refused at its element, not
+    // dropped; so is a global list it cannot read, at the list's element: both in one run.
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
+        "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\n"
+        "<globalVars name=\"GVL\">\n<variable name=\"P\"><type><struct><variable name=\"A\"><type><INT/></type></variable></struct></type>"
+        "</variable></globalVars>\n</resource></configuration></configurations></instances>\n<addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/interface\" handleUnknown=\"implementation\">\n"
+        "<Interface name=\"I_Run\"/></data></addData>\n</project>\n");
+    auto result = RunTranslator({"check", "--user", xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":5:1: error: cannot read the PLCopen project: GVL: type element <struct> "
+                                        "has no ST form in this reader"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(xml + ":10:1: error: cannot read the PLCopen project: I_Run: an INTERFACE is not "
+                                        "read from PLCopen XML"), std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {

@@ -301,3 +301,6 @@ def main(argv=None):
     except StError as e:  # a project file that cannot be read (.plcproj, PLCopen XML): no traceback
         print(e, file=sys.stderr)
         return 1
+    except StErrors as e:  # a PLCopen XML project several of whose objects cannot be read
+        print("\n".join(str(err) for err in e.errors), file=sys.stderr)
+        return 1

@@ -11,6 +11,7 @@ CODESYS = "http://www.3s-software.com/plcopenxml/"
 PLAIN_TEXT = CODESYS + "interfaceasplaintext"  # the declaration as text, comments and layout kept
 ATTRIBUTES = CODESYS + "attributes"  # {attribute '...'} pragmas
 GLOBAL_VARS = CODESYS + "globalvars"  # a global variable list outside any configuration
+POU_INHERITANCE = CODESYS + "pouinheritance"  # an FB's EXTENDS and IMPLEMENTS, in its interface's addData
 OBJECT_ID = CODESYS + "objectid"  # an object's identity, which projectstructure refers to
 PROJECT_STRUCTURE = CODESYS + "projectstructure"  # the folders of the POUs view
 PROJECT_INFORMATION = CODESYS + "projectinformation"
