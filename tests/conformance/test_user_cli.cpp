@@ -307,6 +307,30 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
 }
 
+TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {
+    // CODESYS's export "into an application" carries the referenced library's objects: where it holds most of a
+    // library given under its namespace, they are left out with one warning, not refused one by one.
+    fs::create_directories(dir_ / "lib");
+    auto lamp = Write("lib/FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nVAR_OUTPUT Lit : BOOL; "
+                                        "END_VAR\nLit := On;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("lib/GVL_Lib.st", "VAR_GLOBAL CONSTANT\n  K_ON : BOOL := TRUE;\nEND_VAR\n");
+    const std::string st = "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">";
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><dataTypes/><pous>\n"
+        "<pou name=\"FB_Lamp\" pouType=\"functionBlock\"><interface><inputVars><variable name=\"On\"><type><BOOL/>"
+        "</type></variable></inputVars><outputVars><variable name=\"Lit\"><type><BOOL/></type></variable></outputVars>"
+        "</interface>" + st + "Lit := On;</xhtml></ST></body></pou>\n"
+        "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"Lamp\"><type>"
+        "<derived name=\"PA_CONTROL.FB_Lamp\"/></type></variable></localVars></interface>" + st +
+        "Lamp(On := PA_CONTROL.GVL_Lib.K_ON);</xhtml></ST></body></pou>\n</pous></types>\n</project>\n");
+    const std::string ns = "PA_CONTROL=" + fs::path(lamp).parent_path().string();
+    auto result = RunTranslator({"build", "--user", "--namespace", ns, "--sources", Out() + "/plcopen", "--out", Out(),
+                                 lamp, list, xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("pacst: warning: " + xml + ": the export holds 1 of the 2 objects of the library "
+                                 "PA_CONTROL (FB_Lamp)"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
     // An object of a kind the reader does not translate (TwinCAT's INTERFACE) is refused at its element, not
     // dropped; so is a global list it cannot read, at the list's element: both in one run.
