@@ -170,9 +170,10 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
 }
 
 TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
-    // Four problems, one run: the declarations of a POU, then (when they are all accepted) its statements.
+    // Five problems, one run: the declarations of a POU, then its statements, but those that use a variable
+    // whose declaration was refused (which cannot be told apart from it).
     auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
-                                       "  C : INT;\nEND_VAR\nC := 1;\nEND_PROGRAM\n");
+                                       "  C : INT;\nEND_VAR\nC := 1;\nA := C;\nC := Nowhere;\nEND_PROGRAM\n");
     auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
                                      "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
     auto result = RunTranslator({"check", "--user", decls, body});
@@ -180,9 +181,11 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
     for (const auto& expected : {decls + ":3:7: error: undeclared type 'NoSuchType'",
                                  decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
                                  body + ":6:6: error: type mismatch: DINT where INT is expected",
-                                 body + ":8:8: error: undeclared name 'Nothing'"}) {
+                                 body + ":8:8: error: undeclared name 'Nothing'",
+                                 decls + ":9:6: error: undeclared name 'Nowhere'"}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
+    EXPECT_EQ(result.output.find(decls + ":8:"), std::string::npos) << "A's use: A's refusal says it\n" << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
@@ -274,7 +277,8 @@ TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
 
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     // CODESYS exports an application's PROGRAMs, lists and DUTs (with their attributes) into the resource's
-    // addData, an FB's EXTENDS and IMPLEMENTS into its interface's: they are read too.
+    // addData, an FB's EXTENDS and IMPLEMENTS into its interface's, a list's CONSTANT block into its
+    // MixedAttrsVarList: they are read too.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
@@ -296,15 +300,23 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
         "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
         "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable><variable name=\"Twice\">"
         "<type><derived name=\"FB_Twice\"/></type></variable></localVars></interface><body><ST>"
-        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.N;\nState := E_State.RUN;"
-        "</xhtml></ST></body></pou>\n</data>\n</addData></resource></configuration></configurations></instances>\n"
-        "</project>\n");
+        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.N;\nState := E_State.RUN;\n"
+        "CASE N OF\n  GVL.MaxCount: N := 0;\nEND_CASE</xhtml></ST></body></pou>\n</data>\n</addData>\n"
+        // a list of a VAR_GLOBAL and a VAR_GLOBAL CONSTANT block: CODESYS keeps the blocks in MixedAttrsVarList
+        "<globalVars name=\"GVL\"><variable name=\"Count\"><type><INT/></type></variable><variable name=\"MaxCount\">"
+        "<type><INT/></type><initialValue><simpleValue value=\"5\"/></initialValue></variable><addData><data "
+        "name=\"http://www.3s-software.com/plcopenxml/mixedattrsvarlist\" handleUnknown=\"implementation\">"
+        "<MixedAttrsVarList><globalVars name=\"GVL\"><variable name=\"Count\"><type><INT/></type></variable>"
+        "</globalVars><globalVars name=\"GVL\" constant=\"true\"><variable name=\"MaxCount\"><type><INT/></type>"
+        "<initialValue><simpleValue value=\"5\"/></initialValue></variable></globalVars></MixedAttrsVarList></data>"
+        "</addData></globalVars>\n</resource></configuration></configurations></instances>\n</project>\n");
     auto sources = Out() + "/plcopen";
     auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_TRUE(fs::exists(sources + "/PLC_PRG.st")) << "the application's PROGRAM";
     EXPECT_NE(ReadFile(sources + "/E_State.st").find("{attribute 'qualified_only'}"), std::string::npos);
     EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/GVL.st").find("VAR_GLOBAL CONSTANT\n  MaxCount : INT := 5;"), std::string::npos);
 }
 
 TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {

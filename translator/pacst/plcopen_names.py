@@ -12,6 +12,7 @@ PLAIN_TEXT = CODESYS + "interfaceasplaintext"  # the declaration as text, commen
 ATTRIBUTES = CODESYS + "attributes"  # {attribute '...'} pragmas
 GLOBAL_VARS = CODESYS + "globalvars"  # a global variable list outside any configuration
 POU_INHERITANCE = CODESYS + "pouinheritance"  # an FB's EXTENDS and IMPLEMENTS, in its interface's addData
+MIXED_ATTRIBUTES = CODESYS + "mixedattrsvarlist"  # the blocks (CONSTANT, RETAIN) of a list of several
 OBJECT_ID = CODESYS + "objectid"  # an object's identity, which projectstructure refers to
 PROJECT_STRUCTURE = CODESYS + "projectstructure"  # the folders of the POUs view
 PROJECT_INFORMATION = CODESYS + "projectinformation"

@@ -13,7 +13,8 @@ from typing import Optional
 from lxml import etree
 
 from .errors import StError, StErrors
-from .plcopen_names import ATTRIBUTES, CODESYS, GLOBAL_VARS, NS, POU_INHERITANCE, POU_KEYWORDS, XHTML, q
+from .plcopen_names import (ATTRIBUTES, CODESYS, GLOBAL_VARS, MIXED_ATTRIBUTES, NS, POU_INHERITANCE, POU_KEYWORDS,
+                            XHTML, q)
 
 # CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
 # CODESYS's extensions of a POU that ST without METHODs and ACTIONs has no place for.
@@ -249,7 +250,8 @@ def _declaration(variable):
 
 
 def _var_list(element, keyword):
-    opener = keyword + (" CONSTANT" if element.get("constant") == "true" else "")
+    opener = keyword + "".join(f" {a.upper()}" for a in ("constant", "retain", "persistent")
+                               if element.get(a) == "true")
     lines = [opener] + [f"  {_declaration(v)};" for v in element.iterfind(q("variable"))] + ["END_VAR"]
     return "\n".join(lines) + "\n"
 
@@ -359,7 +361,11 @@ def _global_list(element):
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
         if data.get("name") == ATTRIBUTES:
             pragmas += [_pragma(a.get("Name"), a.get("Value")) for a in data.iter(q("Attribute"))]
-    text = "".join(pragmas) + _var_list(element, "VAR_GLOBAL")
+    # CODESYS writes a list of several blocks (VAR_GLOBAL, VAR_GLOBAL CONSTANT, RETAIN) as one list of all its
+    # variables, and the blocks, each with its attributes, in its MixedAttrsVarList
+    blocks = [g for data in element.iterfind(f"{q('addData')}/{q('data')}") if data.get("name") == MIXED_ATTRIBUTES
+              for g in data.iterfind(f"{q('MixedAttrsVarList')}/{q('globalVars')}")]
+    text = "".join(pragmas) + "".join(_var_list(b, "VAR_GLOBAL") for b in blocks or [element])
     return StObject("globalVars", element.get("name"), text, None, xml_line=element.sourceline or 0)
 
 
