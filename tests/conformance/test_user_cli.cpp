@@ -278,7 +278,7 @@ TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     // CODESYS exports an application's PROGRAMs, lists and DUTs (with their attributes) into the resource's
     // addData, an FB's EXTENDS and IMPLEMENTS into its interface's, a list's CONSTANT block into its
-    // MixedAttrsVarList: they are read too.
+    // MixedAttrsVarList, an array's initial values as an arrayValue: they are read too.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
@@ -298,7 +298,10 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
         "SUPER^();\nSUPER^();</xhtml></ST></body></pou>\n</data>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
-        "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable><variable name=\"Twice\">"
+        "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable>"
+        "<variable name=\"Table\"><type><array><dimension lower=\"0\" upper=\"3\"/><baseType><INT/></baseType></array>"
+        "</type><initialValue><arrayValue><value><simpleValue value=\"1\"/></value><value repetitionValue=\"3\">"
+        "<simpleValue value=\"7\"/></value></arrayValue></initialValue></variable><variable name=\"Twice\">"
         "<type><derived name=\"FB_Twice\"/></type></variable></localVars></interface><body><ST>"
         "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.N;\nState := E_State.RUN;\n"
         "CASE N OF\n  GVL.MaxCount: N := 0;\nEND_CASE</xhtml></ST></body></pou>\n</data>\n</addData>\n"
@@ -317,6 +320,7 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     EXPECT_NE(ReadFile(sources + "/E_State.st").find("{attribute 'qualified_only'}"), std::string::npos);
     EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
     EXPECT_NE(ReadFile(sources + "/GVL.st").find("VAR_GLOBAL CONSTANT\n  MaxCount : INT := 5;"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Table : ARRAY[0..3] OF INT := [1, 3(7)];"), std::string::npos);
 }
 
 TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {

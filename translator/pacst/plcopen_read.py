@@ -235,10 +235,26 @@ def _initial(element):
     holder = element.find(q("initialValue"))
     if holder is None:
         return None
-    value = _only_child(holder, "initialValue")
-    if _local(value) != "simpleValue":
-        raise PlcopenReadError(f"initial value <{_local(value)}> is not a simpleValue")
-    return value.get("value")
+    return _value(_only_child(holder, "initialValue"))
+
+
+def _value(value):
+    """The ST of a PLCopen value: a simpleValue's text, an arrayValue as `[1, 2(0)]`, a structValue as
+    `(X := 1.0, Y := 2.0)`, as CODESYS exports a variable's initial value."""
+    tag = _local(value)
+    if tag == "simpleValue":
+        return value.get("value")
+    if tag == "arrayValue":
+        items = []
+        for item in value.iterfind(q("value")):
+            text = _value(_only_child(item, "value"))
+            repeat = item.get("repetitionValue")
+            items.append(f"{repeat}({text})" if repeat and repeat != "1" else text)
+        return f"[{', '.join(items)}]"
+    if tag == "structValue":
+        return "(" + ", ".join(f"{item.get('member')} := {_value(_only_child(item, 'value'))}"
+                               for item in value.iterfind(q("value"))) + ")"
+    raise PlcopenReadError(f"initial value <{tag}> is not read")
 
 
 def _declaration(variable):
