@@ -278,7 +278,7 @@ TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     // CODESYS exports an application's PROGRAMs, lists and DUTs (with their attributes) into the resource's
     // addData, an FB's EXTENDS and IMPLEMENTS into its interface's, a list's CONSTANT block into its
-    // MixedAttrsVarList, an array's initial values as an arrayValue: they are read too.
+    // MixedAttrsVarList, an array's initial values as an arrayValue, a PROPERTY in the FB's addData: they are read.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
@@ -290,7 +290,10 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"FB_Base\" pouType=\"functionBlock\"><interface><outputVars><variable name=\"N\"><type><INT/>"
         "</type></variable></outputVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
-        "</xhtml></ST></body></pou>\n</data>\n"
+        "</xhtml></ST></body><addData><data name=\"http://www.3s-software.com/plcopenxml/property\" "
+        "handleUnknown=\"implementation\"><Property name=\"Doubled\"><interface><returnType><INT/></returnType>"
+        "</interface><GetAccessor><interface/><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Doubled := 2 * N;"
+        "</xhtml></ST></body></GetAccessor></Property></data></addData></pou>\n</data>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"FB_Twice\" pouType=\"functionBlock\"><interface><addData><data name=\"http://www.3s-software.com/"
         "plcopenxml/pouinheritance\" handleUnknown=\"implementation\"><Inheritance><Extends>FB_Base</Extends>"
@@ -303,7 +306,7 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
         "</type><initialValue><arrayValue><value><simpleValue value=\"1\"/></value><value repetitionValue=\"3\">"
         "<simpleValue value=\"7\"/></value></arrayValue></initialValue></variable><variable name=\"Twice\">"
         "<type><derived name=\"FB_Twice\"/></type></variable></localVars></interface><body><ST>"
-        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.N;\nState := E_State.RUN;\n"
+        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.Doubled;\nState := E_State.RUN;\n"
         "CASE N OF\n  GVL.MaxCount: N := 0;\nEND_CASE</xhtml></ST></body></pou>\n</data>\n</addData>\n"
         // a list of a VAR_GLOBAL and a VAR_GLOBAL CONSTANT block: CODESYS keeps the blocks in MixedAttrsVarList
         "<globalVars name=\"GVL\"><variable name=\"Count\"><type><INT/></type></variable><variable name=\"MaxCount\">"

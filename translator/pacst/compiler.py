@@ -896,7 +896,7 @@ class Compiler:
                                       "return the struct alone or use a FUNCTION_BLOCK")
         self.constant_blocks = None
         if refused:
-            raise StErrors(refused)
+            raise StErrors(refused + self._body_beside_refusals(pou, node, base))
         if kind == "fb":
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
@@ -925,6 +925,28 @@ class Compiler:
             raise
         self.program.items.append(("pou", pou, self.file))
         self.program.items += [("pou", m, self.file) for m in members]
+
+    def _body_beside_refusals(self, pou, node, base):
+        """User mode: the refusals of the body of a POU some of whose declarations were refused, but those that
+        name a variable not declared (its refusal above says it): as many refusals in one run as can be told
+        apart. A POU with METHODs, a base or interfaces is left unchecked (its body may need what they add)."""
+        if not self.user or pou.native or base is not None or getattr(node, "implements", None) is not None \
+                or self.members.get(id(node)):
+            return []
+        if pou.kind == "fb":
+            pou.fbtype.vars = pou.vars
+        declared = {v.name.upper() for v in pou.vars}
+        lost = {_name(dv.variable.name).upper() for block in node.declarations for item in block.items
+                for dv in getattr(item, "variables", []) if _cls(dv) == "DeclaredVariable"} - declared
+        self.pous[pou.cname] = pou
+        try:
+            BodyCompiler(self, pou).compile()
+            return []
+        except (StError, StErrors) as e:
+            found = e.errors if isinstance(e, StErrors) else [e]
+            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}]
+        finally:
+            del self.pous[pou.cname]
 
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
@@ -1053,12 +1075,13 @@ class Compiler:
         """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
         for this FB's instance (from the base's text: their errors name the base's lines)."""
         own = set(pou.methods)
+        own_properties = set(pou.properties)  # before the base's are added: its PROPERTY X, then X.Get and X.Set
         members = []
         saved = self.file
         try:
             self.file = base.file
             for node in self.members.get(id(base.node), []):
-                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in pou.properties \
+                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
                         or _cls(node) != "Property" and _name(node.name).upper() not in own:
                     members.append(self._member(pou, node, inherited=True))
             for node in self.members.get(id(base.node), []):

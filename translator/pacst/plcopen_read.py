@@ -17,9 +17,8 @@ from .plcopen_names import (ATTRIBUTES, CODESYS, GLOBAL_VARS, MIXED_ATTRIBUTES, 
                             XHTML, q)
 
 # CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
-# CODESYS's extensions of a POU that ST without METHODs and ACTIONs has no place for.
-_POU_EXTENSIONS = {CODESYS + "method": "METHOD", CODESYS + "property": "PROPERTY",
-                   CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
+# CODESYS's extensions of a POU that this reader refuses (its METHODs and PROPERTYs are read).
+_POU_EXTENSIONS = {CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
 
 # PLCopen's variable lists and the ST keyword that opens each.
 SECTION_KEYWORDS = {"inputVars": "VAR_INPUT", "outputVars": "VAR_OUTPUT", "inOutVars": "VAR_IN_OUT",
@@ -282,6 +281,8 @@ def _pou(element):
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
         if data.get("name") == CODESYS + "method":  # CODESYS keeps a POU's METHODs in its addData
             members += [_at(_method, m) for m in data if isinstance(m.tag, str)]
+        elif data.get("name") == CODESYS + "property":  # and its PROPERTYs, each with a Get and a Set
+            members += [_at(_property, p) for p in data if isinstance(p.tag, str)]
         elif data.get("name") in _POU_EXTENSIONS:
             raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
                                    "yet: write a METHOD")
@@ -296,6 +297,20 @@ def _method(element):
     name = element.get("name") or element.get("Name")
     header, blocks = _interface_text(element, f"METHOD {name}", name)
     return f"{header}\n{''.join(blocks)}{_st_body(element, name).rstrip()}\nEND_METHOD\n"
+
+
+def _property(element):
+    """A PROPERTY of CODESYS's export (its type, and a GetAccessor and a SetAccessor with their own interface
+    and ST body) as ST: the PROPERTY, then PROPERTY Name.Get and PROPERTY Name.Set."""
+    name = element.get("name") or element.get("Name")
+    header, blocks = _interface_text(element, f"PROPERTY {name}", name)
+    text = f"{header}\n{''.join(blocks)}END_PROPERTY\n"
+    result = header[len(f"PROPERTY {name}"):]  # ' : T'
+    for tag, accessor in (("GetAccessor", "Get"), ("SetAccessor", "Set")):
+        for part in element.iterfind(q(tag)):
+            part_header, part_blocks = _interface_text(part, f"PROPERTY {name}.{accessor}{result}", name)
+            text += f"{part_header}\n{''.join(part_blocks)}{_st_body(part, name).rstrip()}\nEND_PROPERTY\n"
+    return text
 
 
 def _st_body(element, name):
