@@ -121,7 +121,8 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
     auto limits = Write("GVL_Limits.st", "{attribute 'qualified_only'}\nVAR_GLOBAL CONSTANT\n  MaxSteps : INT := 4;\n"
                                          "END_VAR\n");
     auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; N : INT; END_VAR\nStep := FAULT;\n"
-                                     "CASE Step OF\n  IDLE: N := 1;\nEND_CASE\nCASE N OF\n  MaxSteps: N := 0;\nEND_CASE\n"
+                                     "CASE Step OF\n  IDLE: N := 1;\nEND_CASE\n"
+                                     "CASE N OF\n  MaxSteps: N := 0;\nEND_CASE\n"
                                      "END_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), type, fb, limits, bare});
     for (const auto& expected : {bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
@@ -185,7 +186,8 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
                                  decls + ":9:6: error: undeclared name 'Nowhere'"}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
-    EXPECT_EQ(result.output.find(decls + ":8:"), std::string::npos) << "A's use: A's refusal says it\n" << result.output;
+    EXPECT_EQ(result.output.find(decls + ":8:"), std::string::npos) << "A's use: A's refusal says it\n"
+                                                                     << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
@@ -302,6 +304,8 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
         "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable>"
+        "<variable name=\"Percent\"><type><subrangeSigned><range lower=\"0\" upper=\"100\"/><baseType><INT/></baseType>"
+        "</subrangeSigned></type></variable>"
         "<variable name=\"Table\"><type><array><dimension lower=\"0\" upper=\"3\"/><baseType><INT/></baseType></array>"
         "</type><initialValue><arrayValue><value><simpleValue value=\"1\"/></value><value repetitionValue=\"3\">"
         "<simpleValue value=\"7\"/></value></arrayValue></initialValue></variable><variable name=\"Twice\">"
@@ -324,6 +328,7 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
     EXPECT_NE(ReadFile(sources + "/GVL.st").find("VAR_GLOBAL CONSTANT\n  MaxCount : INT := 5;"), std::string::npos);
     EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Table : ARRAY[0..3] OF INT := [1, 3(7)];"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Percent : INT(0..100);"), std::string::npos);
 }
 
 TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {
@@ -356,7 +361,8 @@ TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\n"
-        "<globalVars name=\"GVL\">\n<variable name=\"P\"><type><struct><variable name=\"A\"><type><INT/></type></variable></struct></type>"
+        "<globalVars name=\"GVL\">\n<variable name=\"P\"><type><struct><variable name=\"A\"><type><INT/></type>"
+        "</variable></struct></type>"
         "</variable></globalVars>\n</resource></configuration></configurations></instances>\n<addData>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/interface\" handleUnknown=\"implementation\">\n"
         "<Interface name=\"I_Run\"/></data></addData>\n</project>\n");

@@ -94,7 +94,8 @@ def read_plcopen(data):
     # after the project's types and POUs (types/, first in the file).
     objects = read(_data_type, root.iter(q("dataType")))
     objects += read(_pou, root.iter(q("pou")))
-    lists = [e for data in root.iter(q("data")) if data.get("name") == GLOBAL_VARS for e in data.iterfind(q("globalVars"))]
+    lists = [e for data in root.iter(q("data")) if data.get("name") == GLOBAL_VARS
+             for e in data.iterfind(q("globalVars"))]
     for holder in root.iterfind(f"{q('instances')}/{q('configurations')}/{q('configuration')}"):
         found = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
         lists += [e for e in found if e.get("name")]
@@ -227,6 +228,9 @@ def type_text(type_holder):
         return f"ARRAY[{dims}] OF {type_text(element.find(q('baseType')))}"
     if tag == "pointer":
         return f"POINTER TO {type_text(element.find(q('baseType')))}"
+    if tag in ("subrangeSigned", "subrangeUnsigned"):
+        bounds = element.find(q("range"))
+        return f"{type_text(element.find(q('baseType')))}({bounds.get('lower')}..{bounds.get('upper')})"
     raise PlcopenReadError(f"type element <{tag}> has no ST form in this reader")
 
 
