@@ -82,22 +82,24 @@ TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
 }
 
 TEST_F(TranslatorUserCli, UseOfAGlobalListWithARefusedDeclarationSaysSo) {
-    // One refused line of a global list must not read, further down, as variables the list lacks.
+    // One refused line of a global list must not read, further down, as a variable the list lacks; the lines
+    // after it are declared (and refused each on its own).
     auto list = Write("GVL_Hmi.st", "VAR_GLOBAL\n  Speed : NoSuchType;\n  Message : STRING(80);\nEND_VAR\n");
-    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Message := 'x';\n"
-                                     "END_PROGRAM\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Speed := 1;\n"
+                                     "GVL_Hmi.Message := 'x';\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), list, main});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(list + ":2:11: error:"), std::string::npos) << result.output;
     EXPECT_EQ(result.output.find("has no variable"), std::string::npos) << result.output;
-    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Message cannot be used: a declaration of the "
+    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Speed cannot be used: a declaration of the "
                                         "global variable list GVL_Hmi was refused (above)"),
               std::string::npos)
         << result.output;
-    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nMessage := 'x';\nEND_PROGRAM\n");
+    EXPECT_EQ(result.output.find(main + ":4:"), std::string::npos) << "Message is declared\n" << result.output;
+    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nSpeed := 1;\nEND_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), list, unqualified});
-    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Message' (or one after a refused "
-                                               "declaration of GVL_Hmi, above)"),
+    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Speed' (or one whose declaration in "
+                                               "GVL_Hmi was refused, above)"),
               std::string::npos)
         << result.output;
 }
@@ -171,15 +173,17 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
 }
 
 TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
-    // Five problems, one run: the declarations of a POU, then its statements, but those that use a variable
-    // whose declaration was refused (which cannot be told apart from it).
+    // Seven problems, one run: the declarations of a POU and of a global list, then the POU's statements, but
+    // those that use a variable whose declaration was refused (which cannot be told apart from it).
     auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
                                        "  C : INT;\nEND_VAR\nC := 1;\nA := C;\nC := Nowhere;\nEND_PROGRAM\n");
     auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
                                      "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
-    auto result = RunTranslator({"check", "--user", decls, body});
+    auto list = Write("GVL_Two.st", "VAR_GLOBAL\n  E : NoSuchType;\n  F : INT := 'text';\nEND_VAR\n");
+    auto result = RunTranslator({"check", "--user", decls, body, list});
     EXPECT_EQ(result.exitCode, 1);
-    for (const auto& expected : {decls + ":3:7: error: undeclared type 'NoSuchType'",
+    for (const auto& expected : {list + ":2:7: error: undeclared type 'NoSuchType'", list + ":3:14: error: ",
+                                 decls + ":3:7: error: undeclared type 'NoSuchType'",
                                  decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
                                  body + ":6:6: error: type mismatch: DINT where INT is expected",
                                  body + ":8:8: error: undeclared name 'Nothing'",

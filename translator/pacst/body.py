@@ -195,7 +195,7 @@ class BodyCompiler:
             if self.comp.user and self.comp.namespace(name) is None and user.namespace_like(name):
                 raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.comp.namespace_names())}")
             refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
-            hint = f" (or one after a refused declaration of {', '.join(refused)}, above)" if refused else ""
+            hint = f" (or one whose declaration in {', '.join(refused)} was refused, above)" if refused else ""
             raise self.err(token, f"undeclared name '{name}'{hint}")
         writable, why = True, ""
         if v.constant:

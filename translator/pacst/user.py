@@ -13,7 +13,7 @@ import re
 from . import types as T
 from . import varlen
 from .common import _cls, _name, pos
-from .errors import StError
+from .errors import StError, StErrors
 from .names import C_KEYWORDS, C_MACROS, reserved_reason
 
 # The largest STRING of pacst's C (STR_MAX_LEN of pacst_iec.h): TwinCAT's T_MaxString, the longest string its
@@ -287,51 +287,54 @@ def global_list(comp, block, src):
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
-    try:
-        _global_items(comp, gvl, block, constant)
-    except StError:
+    refused = []
+    for item in block.items:  # every refused declaration is reported, not only the first
+        try:
+            _global_item(comp, gvl, item, constant)
+        except (StError, StErrors) as e:
+            refused += e.errors if isinstance(e, StErrors) else [e]
+    if refused:
         gvl.refused = True
-        raise
+        raise StErrors(refused)
 
 
-def _global_items(comp, gvl, block, constant):
-    for item in block.items:
-        spec = item.spec
-        vtype, strlen = var_type(comp, item.init, allow_fb=True)
-        value = initial_value(item.init)
-        if vtype.is_fb or vtype.is_array and vtype.elem.is_fb:
-            comp.dialect(item, "a function block instance in a global list")
-            if constant or spec.location is not None:
-                raise comp.err(item, "a function block instance in a global list is neither CONSTANT nor located")
-        location = parse_location(comp, spec.location, vtype) if spec.location is not None else None
-        if constant and value is None:
-            raise comp.err(item, "a global constant needs a value")
-        if constant and location is not None:
-            raise comp.err(spec.location, "a located variable cannot be CONSTANT")
-        if value is not None and (vtype.is_array or vtype.is_struct):
-            comp.dialect(value, "an initial value of an array or a struct")
-        elif value is not None and not (vtype.is_elementary or vtype.is_enum):
-            raise comp.err(value, "initial values are only for elementary and enumeration variables")
-        for token in spec.variables:
-            vname = _name(token)
-            # C names it after its list (GVL_LIMITS__UINT_MAX): a C macro's name is free, as TwinCAT's
-            # GVL_TypeValueLimits.UINT_MAX; MATIEC's C names it alone (_check_ident marks it dialect)
-            comp._check_ident(token, "global variable", c_name=False)
-            vup = vname.upper()
-            if gvl.var(vname) is not None:
-                raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
-            shadows_value = vup in comp.enum_values and not gvl.qualified_only  # List.Name never means the value
-            if vup in comp.types or vup in comp.pous or shadows_value or vup in comp.gvls:
-                raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
-                                      "value or global list")
-            if vup in comp.enum_values:
-                comp.dialect(token, "a global variable of a qualified_only list named like an enumeration value")
-            v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
-            if value is not None:
-                comp.init_code(v, "x")  # checks the initial value now
-                check_string_init(comp, v)
-            gvl.vars.append(v)
-            comp.globals.setdefault(vup, []).append(v)
+def _global_item(comp, gvl, item, constant):
+    spec = item.spec
+    vtype, strlen = var_type(comp, item.init, allow_fb=True)
+    value = initial_value(item.init)
+    if vtype.is_fb or vtype.is_array and vtype.elem.is_fb:
+        comp.dialect(item, "a function block instance in a global list")
+        if constant or spec.location is not None:
+            raise comp.err(item, "a function block instance in a global list is neither CONSTANT nor located")
+    location = parse_location(comp, spec.location, vtype) if spec.location is not None else None
+    if constant and value is None:
+        raise comp.err(item, "a global constant needs a value")
+    if constant and location is not None:
+        raise comp.err(spec.location, "a located variable cannot be CONSTANT")
+    if value is not None and (vtype.is_array or vtype.is_struct):
+        comp.dialect(value, "an initial value of an array or a struct")
+    elif value is not None and not (vtype.is_elementary or vtype.is_enum):
+        raise comp.err(value, "initial values are only for elementary and enumeration variables")
+    for token in spec.variables:
+        vname = _name(token)
+        # C names it after its list (GVL_LIMITS__UINT_MAX): a C macro's name is free, as TwinCAT's
+        # GVL_TypeValueLimits.UINT_MAX; MATIEC's C names it alone (_check_ident marks it dialect)
+        comp._check_ident(token, "global variable", c_name=False)
+        vup = vname.upper()
+        if gvl.var(vname) is not None:
+            raise comp.err(token, f"global variable '{vname}' is declared twice in {gvl.name}")
+        shadows_value = vup in comp.enum_values and not gvl.qualified_only  # List.Name never means the value
+        if vup in comp.types or vup in comp.pous or shadows_value or vup in comp.gvls:
+            raise comp.err(token, f"global variable '{vname}' has the name of a type, POU, enumeration "
+                                  "value or global list")
+        if vup in comp.enum_values:
+            comp.dialect(token, "a global variable of a qualified_only list named like an enumeration value")
+        v = GlobalVar(vname, vtype, value, token, constant, gvl, location, strlen)
+        if value is not None:
+            comp.init_code(v, "x")  # checks the initial value now
+            check_string_init(comp, v)
+        gvl.vars.append(v)
+        comp.globals.setdefault(vup, []).append(v)
 
 
 _QUALIFIED_ONLY = re.compile(r"\{\s*attribute\s+'qualified_only'\s*\}", re.I)
