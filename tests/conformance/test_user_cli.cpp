@@ -173,16 +173,22 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
 }
 
 TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
-    // Seven problems, one run: the declarations of a POU and of a global list, then the POU's statements, but
-    // those that use a variable whose declaration was refused (which cannot be told apart from it).
+    // Eleven problems, one run: the declarations of a POU, a global list, a STRUCT and an FB's METHODs, then the
+    // POU's statements, but those that use a variable whose declaration was refused (which cannot be told apart
+    // from it).
     auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
                                        "  C : INT;\nEND_VAR\nC := 1;\nA := C;\nC := Nowhere;\nEND_PROGRAM\n");
     auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
                                      "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
     auto list = Write("GVL_Two.st", "VAR_GLOBAL\n  E : NoSuchType;\n  F : INT := 'text';\nEND_VAR\n");
-    auto result = RunTranslator({"check", "--user", decls, body, list});
+    auto type = Write("ST_Two.st", "TYPE ST_Two :\nSTRUCT\n  G : NoSuchType;\n  H : NoSuchType;\nEND_STRUCT\nEND_TYPE\n");
+    auto fb = Write("FB_Two.st", "FUNCTION_BLOCK FB_Two\nEND_FUNCTION_BLOCK\nMETHOD M1 : NoSuchType\nEND_METHOD\n"
+                                 "METHOD M2 : NoSuchType\nEND_METHOD\n");
+    auto result = RunTranslator({"check", "--user", decls, body, list, type, fb});
     EXPECT_EQ(result.exitCode, 1);
     for (const auto& expected : {list + ":2:7: error: undeclared type 'NoSuchType'", list + ":3:14: error: ",
+                                 type + ":3:7: error: undeclared type", type + ":4:7: error: undeclared type",
+                                 fb + ":3:13: error: undeclared type", fb + ":5:13: error: undeclared type",
                                  decls + ":3:7: error: undeclared type 'NoSuchType'",
                                  decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
                                  body + ":6:6: error: type mismatch: DINT where INT is expected",

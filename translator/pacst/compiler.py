@@ -780,28 +780,40 @@ class Compiler:
     def _struct_members(self, t, decl):
         """The members of the STRUCT `t`, from its declaration."""
         seen = {m.cname for m in t.members}  # a STRUCT EXTENDS: its base's members
+        refused = []
         for el in decl.declarations:
-            if _cls(el) != "StructureElementDeclaration":
-                raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
-            init = el.init
-            if self.user and _cls(init) == "ArrayTypeInitialization":
-                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
-            elif _cls(init) != "TypeInitialization":
-                raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
-            else:
-                mtype = self._spec_type(init.spec, allow_fb=False)
-            if mtype is t or (mtype.is_array and mtype.elem is t):
-                raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
-                                   "itself, never itself")
-            for dv in el.variables:
-                name = self._decl_var_name(dv, "member")
-                if name.upper() in seen:
-                    raise self.err(dv, f"member '{name}' is declared twice")
-                seen.add(name.upper())
-                v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
-                if init.value is not None:
-                    self._init_code(v, "x")  # checks the initial value now
-                t.members.append(v)
+            if not self.user:
+                self._struct_member(t, el, seen)
+                continue
+            try:  # user mode: every refused member is reported, not only the first
+                self._struct_member(t, el, seen)
+            except (StError, StErrors) as e:
+                refused += e.errors if isinstance(e, StErrors) else [e]
+        if refused:
+            raise StErrors(refused)
+
+    def _struct_member(self, t, el, seen):
+        if _cls(el) != "StructureElementDeclaration":
+            raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
+        init = el.init
+        if self.user and _cls(init) == "ArrayTypeInitialization":
+            mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array (user mode)
+        elif _cls(init) != "TypeInitialization":
+            raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
+        else:
+            mtype = self._spec_type(init.spec, allow_fb=False)
+        if mtype is t or (mtype.is_array and mtype.elem is t):
+            raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
+                               "itself, never itself")
+        for dv in el.variables:
+            name = self._decl_var_name(dv, "member")
+            if name.upper() in seen:
+                raise self.err(dv, f"member '{name}' is declared twice")
+            seen.add(name.upper())
+            v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
+            if init.value is not None:
+                self._init_code(v, "x")  # checks the initial value now
+            t.members.append(v)
 
     def _enum_number(self, node, base):
         """User mode: the number an enumeration value is given (a literal, negative too), checked against the
@@ -904,7 +916,14 @@ class Compiler:
         if pou.native:  # the host implements it: its ST body (if any) is for the other tools
             self.program.items.append(("pou", pou, self.file))
             return
-        members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
+        members, refused = [], []
+        for m in self.members.get(id(node), []) if self.user else []:
+            try:  # every refused METHOD, ACTION or PROPERTY declaration is reported, not only the first
+                members.append(self._member(pou, m))
+            except (StError, StErrors) as e:
+                refused += e.errors if isinstance(e, StErrors) else [e]
+        if refused:
+            raise StErrors(refused)
         members = [m for m in members if m is not None]  # a PROPERTY's declaration is no code of its own
         if base is not None:
             members += self._inherit(pou, base)
