@@ -82,22 +82,24 @@ TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
 }
 
 TEST_F(TranslatorUserCli, UseOfAGlobalListWithARefusedDeclarationSaysSo) {
-    // One refused line of a global list must not read, further down, as variables the list lacks.
+    // One refused line of a global list must not read, further down, as a variable the list lacks; the lines
+    // after it are declared (and refused each on its own).
     auto list = Write("GVL_Hmi.st", "VAR_GLOBAL\n  Speed : NoSuchType;\n  Message : STRING(80);\nEND_VAR\n");
-    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Message := 'x';\n"
-                                     "END_PROGRAM\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nGVL_Hmi.Speed := 1;\n"
+                                     "GVL_Hmi.Message := 'x';\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), list, main});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(list + ":2:11: error:"), std::string::npos) << result.output;
     EXPECT_EQ(result.output.find("has no variable"), std::string::npos) << result.output;
-    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Message cannot be used: a declaration of the "
+    EXPECT_NE(result.output.find(main + ":3:9: error: GVL_Hmi.Speed cannot be used: a declaration of the "
                                         "global variable list GVL_Hmi was refused (above)"),
               std::string::npos)
         << result.output;
-    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nMessage := 'x';\nEND_PROGRAM\n");
+    EXPECT_EQ(result.output.find(main + ":4:"), std::string::npos) << "Message is declared\n" << result.output;
+    auto unqualified = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nSpeed := 1;\nEND_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), list, unqualified});
-    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Message' (or one after a refused "
-                                               "declaration of GVL_Hmi, above)"),
+    EXPECT_NE(result.output.find(unqualified + ":3:1: error: undeclared name 'Speed' (or one whose declaration in "
+                                               "GVL_Hmi was refused, above)"),
               std::string::npos)
         << result.output;
 }
@@ -116,12 +118,23 @@ TEST_F(TranslatorUserCli, QualifiedEnumerationValuesAndVariablesOfTheirNames) {
                       "END_CASE;\nEND_PROGRAM\n");
     auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb, main});
     EXPECT_EQ(result.exitCode, 0) << result.output;
-    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it
-    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; END_VAR\nStep := FAULT;\nEND_PROGRAM\n");
-    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, bare});
-    EXPECT_NE(result.output.find(bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
-                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT"), std::string::npos)
-        << result.output;
+    // written alone, a value of a qualified_only type is refused, as TwinCAT refuses it; as a CASE label too, and
+    // so is a constant of a qualified_only list (at the label, not at the file's first line)
+    auto limits = Write("GVL_Limits.st", "{attribute 'qualified_only'}\nVAR_GLOBAL CONSTANT\n  MaxSteps : INT := 4;\n"
+                                         "END_VAR\n");
+    auto bare = Write("PRG_Bare.st", "PROGRAM PRG_Bare\nVAR Step : E_Step; N : INT; END_VAR\nStep := FAULT;\n"
+                                     "CASE Step OF\n  IDLE: N := 1;\nEND_CASE\n"
+                                     "CASE N OF\n  MaxSteps: N := 0;\nEND_CASE\n"
+                                     "END_PROGRAM\n");
+    result = RunTranslator({"build", "--user", "--out", Out(), type, fb, limits, bare});
+    for (const auto& expected : {bare + ":3:9: error: 'FAULT' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.FAULT",
+                                 bare + ":5:3: error: 'IDLE' alone: the enumeration E_Step has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write E_Step.IDLE",
+                                 bare + ":8:3: error: 'MaxSteps' alone: the global list GVL_Limits has {attribute "
+                                        "'qualified_only'}, as in TwinCAT write GVL_Limits.MaxSteps"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
     auto wrong = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Step : E_Step; END_VAR\nStep := E_Step.RUN;\n"
                                       "END_PROGRAM\n");
     result = RunTranslator({"build", "--user", "--out", Out(), type, fb, wrong});
@@ -160,19 +173,31 @@ TEST_F(TranslatorUserCli, TwoEnumerationsMayShareAValueNameWrittenQualified) {
 }
 
 TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
-    // Four problems, one run: the declarations of a POU, then (when they are all accepted) its statements.
+    // Eleven problems, one run: the declarations of a POU, a global list, a STRUCT and an FB's METHODs, then the
+    // POU's statements, but those that use a variable whose declaration was refused (which cannot be told apart
+    // from it).
     auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
-                                       "  C : INT;\nEND_VAR\nC := 1;\nEND_PROGRAM\n");
+                                       "  C : INT;\nEND_VAR\nC := 1;\nA := C;\nC := Nowhere;\nEND_PROGRAM\n");
     auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
                                      "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
-    auto result = RunTranslator({"check", "--user", decls, body});
+    auto list = Write("GVL_Two.st", "VAR_GLOBAL\n  E : NoSuchType;\n  F : INT := 'text';\nEND_VAR\n");
+    auto type = Write("ST_Two.st", "TYPE ST_Two :\nSTRUCT\n  G : NoSuchType;\n  H : NoSuchType;\nEND_STRUCT\nEND_TYPE\n");
+    auto fb = Write("FB_Two.st", "FUNCTION_BLOCK FB_Two\nEND_FUNCTION_BLOCK\nMETHOD M1 : NoSuchType\nEND_METHOD\n"
+                                 "METHOD M2 : NoSuchType\nEND_METHOD\n");
+    auto result = RunTranslator({"check", "--user", decls, body, list, type, fb});
     EXPECT_EQ(result.exitCode, 1);
-    for (const auto& expected : {decls + ":3:7: error: undeclared type 'NoSuchType'",
+    for (const auto& expected : {list + ":2:7: error: undeclared type 'NoSuchType'", list + ":3:14: error: ",
+                                 type + ":3:7: error: undeclared type", type + ":4:7: error: undeclared type",
+                                 fb + ":3:13: error: undeclared type", fb + ":5:13: error: undeclared type",
+                                 decls + ":3:7: error: undeclared type 'NoSuchType'",
                                  decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
                                  body + ":6:6: error: type mismatch: DINT where INT is expected",
-                                 body + ":8:8: error: undeclared name 'Nothing'"}) {
+                                 body + ":8:8: error: undeclared name 'Nothing'",
+                                 decls + ":9:6: error: undeclared name 'Nowhere'"}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
+    EXPECT_EQ(result.output.find(decls + ":8:"), std::string::npos) << "A's use: A's refusal says it\n"
+                                                                     << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
@@ -263,19 +288,100 @@ TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
 }
 
 TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
-    // CODESYS exports an application's PROGRAMs and lists into the resource's addData: they are read too.
+    // CODESYS exports an application's PROGRAMs, lists and DUTs (with their attributes) into the resource's
+    // addData, an FB's EXTENDS and IMPLEMENTS into its interface's, a list's CONSTANT block into its
+    // MixedAttrsVarList, an array's initial values as an arrayValue, a PROPERTY in the FB's addData: they are read.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\"><addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/datatype\" handleUnknown=\"implementation\">\n"
+        "<dataType name=\"E_State\"><baseType><enum><values><value name=\"IDLE\" value=\"0\"/><value name=\"RUN\" "
+        "value=\"10\"/></values></enum></baseType><addData><data name=\"http://www.3s-software.com/plcopenxml/"
+        "attributes\" handleUnknown=\"implementation\"><Attributes><Attribute Name=\"qualified_only\" Value=\"\"/>"
+        "</Attributes></data></addData></dataType>\n</data>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"FB_Base\" pouType=\"functionBlock\"><interface><outputVars><variable name=\"N\"><type><INT/>"
+        "</type></variable></outputVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
+        "</xhtml></ST></body><addData><data name=\"http://www.3s-software.com/plcopenxml/property\" "
+        "handleUnknown=\"implementation\"><Property name=\"Doubled\"><interface><returnType><INT/></returnType>"
+        "</interface><GetAccessor><interface/><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Doubled := 2 * N;"
+        "</xhtml></ST></body></GetAccessor></Property></data></addData></pou>\n</data>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
+        "<pou name=\"FB_Twice\" pouType=\"functionBlock\"><interface><addData><data name=\"http://www.3s-software.com/"
+        "plcopenxml/pouinheritance\" handleUnknown=\"implementation\"><Inheritance><Extends>FB_Base</Extends>"
+        "</Inheritance></data></addData></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
+        "SUPER^();\nSUPER^();</xhtml></ST></body></pou>\n</data>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\n"
         "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"N\"><type><INT/></type>"
-        "</variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">N := N + 1;"
-        "</xhtml></ST></body></pou>\n</data>\n</addData></resource></configuration></configurations></instances>\n"
-        "</project>\n");
+        "</variable><variable name=\"State\"><type><derived name=\"E_State\"/></type></variable>"
+        "<variable name=\"Percent\"><type><subrangeSigned><range lower=\"0\" upper=\"100\"/><baseType><INT/></baseType>"
+        "</subrangeSigned></type></variable>"
+        "<variable name=\"Table\"><type><array><dimension lower=\"0\" upper=\"3\"/><baseType><INT/></baseType></array>"
+        "</type><initialValue><arrayValue><value><simpleValue value=\"1\"/></value><value repetitionValue=\"3\">"
+        "<simpleValue value=\"7\"/></value></arrayValue></initialValue></variable><variable name=\"Twice\">"
+        "<type><derived name=\"FB_Twice\"/></type></variable></localVars></interface><body><ST>"
+        "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Twice();\nN := Twice.Doubled;\nState := E_State.RUN;\n"
+        "CASE N OF\n  GVL.MaxCount: N := 0;\nEND_CASE</xhtml></ST></body></pou>\n</data>\n</addData>\n"
+        // a list of a VAR_GLOBAL and a VAR_GLOBAL CONSTANT block: CODESYS keeps the blocks in MixedAttrsVarList
+        "<globalVars name=\"GVL\"><variable name=\"Count\"><type><INT/></type></variable><variable name=\"MaxCount\">"
+        "<type><INT/></type><initialValue><simpleValue value=\"5\"/></initialValue></variable><addData><data "
+        "name=\"http://www.3s-software.com/plcopenxml/mixedattrsvarlist\" handleUnknown=\"implementation\">"
+        "<MixedAttrsVarList><globalVars name=\"GVL\"><variable name=\"Count\"><type><INT/></type></variable>"
+        "</globalVars><globalVars name=\"GVL\" constant=\"true\"><variable name=\"MaxCount\"><type><INT/></type>"
+        "<initialValue><simpleValue value=\"5\"/></initialValue></variable></globalVars></MixedAttrsVarList></data>"
+        "</addData></globalVars>\n</resource></configuration></configurations></instances>\n</project>\n");
     auto sources = Out() + "/plcopen";
     auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_TRUE(fs::exists(sources + "/PLC_PRG.st")) << "the application's PROGRAM";
+    EXPECT_NE(ReadFile(sources + "/E_State.st").find("{attribute 'qualified_only'}"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/FB_Twice.st").find("FUNCTION_BLOCK FB_Twice EXTENDS FB_Base"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/GVL.st").find("VAR_GLOBAL CONSTANT\n  MaxCount : INT := 5;"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Table : ARRAY[0..3] OF INT := [1, 3(7)];"), std::string::npos);
+    EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Percent : INT(0..100);"), std::string::npos);
+}
+
+TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {
+    // CODESYS's export "into an application" carries the referenced library's objects: where it holds most of a
+    // library given under its namespace, they are left out with one warning, not refused one by one.
+    fs::create_directories(dir_ / "lib");
+    auto lamp = Write("lib/FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nVAR_OUTPUT Lit : BOOL; "
+                                        "END_VAR\nLit := On;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("lib/GVL_Lib.st", "VAR_GLOBAL CONSTANT\n  K_ON : BOOL := TRUE;\nEND_VAR\n");
+    const std::string st = "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">";
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><dataTypes/><pous>\n"
+        "<pou name=\"FB_Lamp\" pouType=\"functionBlock\"><interface><inputVars><variable name=\"On\"><type><BOOL/>"
+        "</type></variable></inputVars><outputVars><variable name=\"Lit\"><type><BOOL/></type></variable></outputVars>"
+        "</interface>" + st + "Lit := On;</xhtml></ST></body></pou>\n"
+        "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"Lamp\"><type>"
+        "<derived name=\"PA_CONTROL.FB_Lamp\"/></type></variable></localVars></interface>" + st +
+        "Lamp(On := PA_CONTROL.GVL_Lib.K_ON);</xhtml></ST></body></pou>\n</pous></types>\n</project>\n");
+    const std::string ns = "PA_CONTROL=" + fs::path(lamp).parent_path().string();
+    auto result = RunTranslator({"build", "--user", "--namespace", ns, "--sources", Out() + "/plcopen", "--out", Out(),
+                                 lamp, list, xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("pacst: warning: " + xml + ": the export holds 1 of the 2 objects of the library "
+                                 "PA_CONTROL (FB_Lamp)"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
+    // An object of a kind the reader does not translate (TwinCAT's INTERFACE) is refused at its element, not
+    // dropped; so is a global list it cannot read, at the list's element: both in one run.
+    auto xml = Write("App.xml",
+        "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
+        "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\n"
+        "<globalVars name=\"GVL\">\n<variable name=\"P\"><type><struct><variable name=\"A\"><type><INT/></type>"
+        "</variable></struct></type>"
+        "</variable></globalVars>\n</resource></configuration></configurations></instances>\n<addData>\n"
+        "<data name=\"http://www.3s-software.com/plcopenxml/interface\" handleUnknown=\"implementation\">\n"
+        "<Interface name=\"I_Run\"/></data></addData>\n</project>\n");
+    auto result = RunTranslator({"check", "--user", xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":5:1: error: cannot read the PLCopen project: GVL: type element <struct> "
+                                        "has no ST form in this reader"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(xml + ":10:1: error: cannot read the PLCopen project: I_Run: an INTERFACE is not "
+                                        "read from PLCopen XML"), std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {

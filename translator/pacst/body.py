@@ -195,7 +195,7 @@ class BodyCompiler:
             if self.comp.user and self.comp.namespace(name) is None and user.namespace_like(name):
                 raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.comp.namespace_names())}")
             refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
-            hint = f" (or one after a refused declaration of {', '.join(refused)}, above)" if refused else ""
+            hint = f" (or one whose declaration in {', '.join(refused)} was refused, above)" if refused else ""
             raise self.err(token, f"undeclared name '{name}'{hint}")
         writable, why = True, ""
         if v.constant:
@@ -667,6 +667,7 @@ class BodyCompiler:
                 self.comp.shared_enum_value(parts[0], node)
                 et = self.comp.enum_values.get(parts[0].upper())
                 if et is sel_type:
+                    self.comp.bare_enum_value(et, parts[0], node)
                     return sel_type.number(parts[0])
                 if et is not None:
                     raise self.err(node, f"'{parts[0]}' is a value of {et.name}, not of {sel_type.name}")
@@ -677,7 +678,7 @@ class BodyCompiler:
             if var is None and parts[0].upper() in self.pou.externals:
                 var = self.pou.externals[parts[0].upper()][0]
             if var is None:
-                var = user.lookup_global(self.comp, parts[0])
+                var = user.lookup_global(self.comp, parts[0], at=node)
         elif len(parts) == 2 and parts[0].upper() in self.comp.gvls:
             var = self.comp.gvls[parts[0].upper()].var(parts[1])
         if var is None or not var.constant or var.init is None:

@@ -74,10 +74,29 @@ def _user_files(args):
         if args.user and path.lower().endswith(".plcproj"):
             files += twincat.project_files(path)
         elif args.user and path.lower().endswith(".xml"):
-            files += plcopen_read.extract(path, _sources_dir(args))
+            files += _without_libraries(args, path, plcopen_read.extract(path, _sources_dir(args)))
         else:
             files.append(path)
     return list(args.native) + [f for f in files if f not in args.native]
+
+
+def _without_libraries(args, xml, extracted):
+    """The ST files of the PLCopen project `xml` without the objects of a library given under its namespace,
+    where the export holds at least half of that library: CODESYS's export "into an application" carries the
+    objects of the libraries the application references. One warning names them. A few objects named like a
+    library's are the program's own, and are refused as declared twice, with advice."""
+    own = {_stem(f).upper() for f in extracted}
+    for name, (_, folder) in _namespaces(args).items():
+        objects = {os.path.splitext(n)[0].upper(): os.path.splitext(n)[0] for _, _, names in os.walk(folder)
+                   for n in names if n.lower().endswith(libraries.SOURCE_EXTENSIONS)}
+        shared = sorted(objects[n] for n in own & set(objects))
+        if shared and len(shared) * 2 >= len(objects):
+            listed = ", ".join(shared[:5]) + (", ..." if len(shared) > 5 else "")
+            print(f"pacst: warning: {xml}: the export holds {len(shared)} of the {len(objects)} objects of the library "
+                  f"{name} ({listed}): CODESYS exports an application with the libraries it references; they are "
+                  f"left out, and the library given as {name} is used", file=sys.stderr)
+            extracted = [f for f in extracted if _stem(f).upper() not in {n.upper() for n in shared}]
+    return extracted
 
 
 def _namespaces(args):
@@ -300,4 +319,7 @@ def main(argv=None):
         return args.run(args)
     except StError as e:  # a project file that cannot be read (.plcproj, PLCopen XML): no traceback
         print(e, file=sys.stderr)
+        return 1
+    except StErrors as e:  # a PLCopen XML project several of whose objects cannot be read
+        print("\n".join(str(err) for err in e.errors), file=sys.stderr)
         return 1

@@ -811,28 +811,40 @@ class Compiler:
     def _struct_members(self, t, decl):
         """The members of the STRUCT `t`, from its declaration."""
         seen = {m.cname for m in t.members}  # a STRUCT EXTENDS: its base's members
+        refused = []
         for el in decl.declarations:
-            if _cls(el) != "StructureElementDeclaration":
-                raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
-            init = el.init
-            if self.user and _cls(init) in ("ArrayTypeInitialization", "SubrangeTypeInitialization"):
-                mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array, UINT(0..N) (user mode)
-            elif _cls(init) != "TypeInitialization":
-                raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
-            else:
-                mtype = self._spec_type(init.spec, allow_fb=False)
-            if mtype is t or (mtype.is_array and mtype.elem is t):
-                raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
-                                   "itself, never itself")
-            for dv in el.variables:
-                name = self._decl_var_name(dv, "member")
-                if name.upper() in seen:
-                    raise self.err(dv, f"member '{name}' is declared twice")
-                seen.add(name.upper())
-                v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
-                if init.value is not None:
-                    self._init_code(v, "x")  # checks the initial value now
-                t.members.append(v)
+            if not self.user:
+                self._struct_member(t, el, seen)
+                continue
+            try:  # user mode: every refused member is reported, not only the first
+                self._struct_member(t, el, seen)
+            except (StError, StErrors) as e:
+                refused += e.errors if isinstance(e, StErrors) else [e]
+        if refused:
+            raise StErrors(refused)
+
+    def _struct_member(self, t, el, seen):
+        if _cls(el) != "StructureElementDeclaration":
+            raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
+        init = el.init
+        if self.user and _cls(init) in ("ArrayTypeInitialization", "SubrangeTypeInitialization"):
+            mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array, UINT(0..N) (user mode)
+        elif _cls(init) != "TypeInitialization":
+            raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
+        else:
+            mtype = self._spec_type(init.spec, allow_fb=False)
+        if mtype is t or (mtype.is_array and mtype.elem is t):
+            raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
+                               "itself, never itself")
+        for dv in el.variables:
+            name = self._decl_var_name(dv, "member")
+            if name.upper() in seen:
+                raise self.err(dv, f"member '{name}' is declared twice")
+            seen.add(name.upper())
+            v = user.c_safe(self, T.Var(name, "member", mtype, init.value, dv))
+            if init.value is not None:
+                self._init_code(v, "x")  # checks the initial value now
+            t.members.append(v)
 
     def _enum_number(self, node, base):
         """User mode: the number an enumeration value is given (a literal, negative too), checked against the
@@ -927,7 +939,7 @@ class Compiler:
                                       "return the struct alone or use a FUNCTION_BLOCK")
         self.constant_blocks = None
         if refused:
-            raise StErrors(refused)
+            raise StErrors(refused + self._body_beside_refusals(pou, node, base))
         if kind == "fb":
             pou.fbtype.vars = pou.vars
         # Register before the body so that an error message can name it, but refuse recursion below.
@@ -941,7 +953,14 @@ class Compiler:
         if pou.native:  # the host implements it: its ST body (if any) is for the other tools
             self.program.items += [("pou", pou, self.file)] + after
             return
-        members = [self._member(pou, m) for m in self.members.get(id(node), [])] if self.user else []
+        members, refused = [], []
+        for m in self.members.get(id(node), []) if self.user else []:
+            try:  # every refused METHOD, ACTION or PROPERTY declaration is reported, not only the first
+                members.append(self._member(pou, m))
+            except (StError, StErrors) as e:
+                refused += e.errors if isinstance(e, StErrors) else [e]
+        if refused:
+            raise StErrors(refused)
         members = [m for m in members if m is not None]  # a PROPERTY's declaration is no code of its own
         if base is not None:
             members += self._inherit(pou, base)
@@ -963,6 +982,28 @@ class Compiler:
         self.program.items.append(("pou", pou, self.file))
         self.program.items += after
         self.program.items += [("pou", m, self.file) for m in members]
+
+    def _body_beside_refusals(self, pou, node, base):
+        """User mode: the refusals of the body of a POU some of whose declarations were refused, but those that
+        name a variable not declared (its refusal above says it): as many refusals in one run as can be told
+        apart. A POU with METHODs, a base or interfaces is left unchecked (its body may need what they add)."""
+        if not self.user or pou.native or base is not None or getattr(node, "implements", None) is not None \
+                or self.members.get(id(node)):
+            return []
+        if pou.kind == "fb":
+            pou.fbtype.vars = pou.vars
+        declared = {v.name.upper() for v in pou.vars}
+        lost = {_name(dv.variable.name).upper() for block in node.declarations for item in block.items
+                for dv in getattr(item, "variables", []) if _cls(dv) == "DeclaredVariable"} - declared
+        self.pous[pou.cname] = pou
+        try:
+            BodyCompiler(self, pou).compile()
+            return []
+        except (StError, StErrors) as e:
+            found = e.errors if isinstance(e, StErrors) else [e]
+            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}]
+        finally:
+            del self.pous[pou.cname]
 
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""

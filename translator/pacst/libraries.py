@@ -9,7 +9,7 @@ from . import plcopen_read, twincat
 from .errors import StError
 
 # what pacst reads of a folder given as a library without a .plcproj
-_SOURCE_EXTENSIONS = (".st",) + twincat.OBJECT_EXTENSIONS
+SOURCE_EXTENSIONS = (".st",) + twincat.OBJECT_EXTENSIONS
 
 
 class LibraryError(Exception):
@@ -72,7 +72,7 @@ def files(name, path, sources_dir):
         return twincat.project_files(plcproj, generated=False)
     if os.path.isdir(path):
         found = sorted(os.path.join(d, n) for d, _, names in os.walk(path) for n in names
-                       if n.lower().endswith(_SOURCE_EXTENSIONS))
+                       if n.lower().endswith(SOURCE_EXTENSIONS))
         if not found:
             raise StError(path, 1, 1, f"the library {name}: no .plcproj and no ST or TwinCAT file in this folder")
         return [os.path.abspath(f) for f in found]

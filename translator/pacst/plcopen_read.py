@@ -12,13 +12,13 @@ from typing import Optional
 
 from lxml import etree
 
-from .errors import StError
-from .plcopen_names import ATTRIBUTES, CODESYS, GLOBAL_VARS, NS, POU_KEYWORDS, XHTML, q
+from .errors import StError, StErrors
+from .plcopen_names import (ATTRIBUTES, CODESYS, GLOBAL_VARS, MIXED_ATTRIBUTES, NS, POU_INHERITANCE, POU_KEYWORDS,
+                            XHTML, q)
 
 # CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
-# CODESYS's extensions of a POU that ST without METHODs and ACTIONs has no place for.
-_POU_EXTENSIONS = {CODESYS + "method": "METHOD", CODESYS + "property": "PROPERTY",
-                   CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
+# CODESYS's extensions of a POU that this reader refuses (its METHODs and PROPERTYs are read).
+_POU_EXTENSIONS = {CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
 
 # PLCopen's variable lists and the ST keyword that opens each.
 SECTION_KEYWORDS = {"inputVars": "VAR_INPUT", "outputVars": "VAR_OUTPUT", "inOutVars": "VAR_IN_OUT",
@@ -35,15 +35,19 @@ _LANGUAGES = {"NWL": "a network list (LD, FBD or IL)", "LD": "LD", "FBD": "FBD",
 
 class PlcopenReadError(Exception):
     lineno = None  # the line of the XML element refused, where known
+    errors = ()  # read_plcopen's: every object's refusal, this one first
 
 
 def _at(read, element):
-    """`read(element)`, a refusal given the element's line in the XML file."""
+    """`read(element)`, a refusal given the element's line in the XML file and the object's name."""
     try:
         return read(element)
     except PlcopenReadError as exc:
         if exc.lineno is None:
             exc.lineno = element.sourceline
+        name = element.get("name")
+        if name and not str(exc).startswith(name):
+            exc.args = (f"{name}: {exc}",)
         raise
 
 
@@ -68,24 +72,51 @@ class StObject:
 
 
 def read_plcopen(data):
-    """All objects of a PLCopen XML document (bytes), types first, then POUs, then global lists."""
+    """All objects of a PLCopen XML document (bytes), types first, then POUs, then global lists. A refusal is
+    a PlcopenReadError at the refused element's line; where several objects are refused, the first, whose
+    `errors` holds them all."""
     root = etree.fromstring(data)
     if root.tag != q("project"):
         raise PlcopenReadError(f"root element is {root.tag}, not a TC6 project in {NS}")
-    objects = [_at(_data_type, e) for e in root.iterfind(f"{q('types')}/{q('dataTypes')}/{q('dataType')}")]
-    objects += [_at(_pou, e) for e in root.iterfind(f"{q('types')}/{q('pous')}/{q('pou')}")]
-    # A CODESYS export of an application keeps its objects (PLC_PRG, its global lists) in the addData of the
-    # configuration's resource, the project's own lists in the project's addData: all of them are read.
-    objects += [_at(_pou, e) for e in root.iter(q("pou"))
-                if not (e.getparent().tag == q("pous") and e.getparent().getparent() is not None
-                        and e.getparent().getparent().tag == q("types"))]
-    for data in root.iter(q("data")):
-        if data.get("name") == GLOBAL_VARS:
-            objects += [_global_list(e) for e in data.iterfind(q("globalVars"))]
+    errors = []
+
+    def read(reader, elements):
+        found = []
+        for element in elements:
+            try:
+                found.append(_at(reader, element))
+            except PlcopenReadError as exc:
+                errors.append(exc)
+        return found
+
+    # A CODESYS export of an application keeps its objects (PLC_PRG, its DUTs, its global lists) in the addData
+    # of the configuration's resource, the project's own lists in the project's addData: all of them are read,
+    # after the project's types and POUs (types/, first in the file).
+    objects = read(_data_type, root.iter(q("dataType")))
+    objects += read(_pou, root.iter(q("pou")))
+    lists = [e for data in root.iter(q("data")) if data.get("name") == GLOBAL_VARS
+             for e in data.iterfind(q("globalVars"))]
     for holder in root.iterfind(f"{q('instances')}/{q('configurations')}/{q('configuration')}"):
-        lists = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
-        objects += [_global_list(e) for e in lists if e.get("name")]
+        found = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
+        lists += [e for e in found if e.get("name")]
+    objects += read(_global_list, lists)
+    # objects of a kind this reader does not translate are refused, not dropped
+    read(_not_read, [e for data in root.iter(q("data")) if data.get("name") in _OBJECTS_NOT_READ for e in data
+                     if isinstance(e.tag, str)])
+    if errors:
+        errors[0].errors = errors
+        raise errors[0]
     return objects
+
+
+# CODESYS's and TwinCAT's extensions holding objects of their own that this reader does not translate
+_OBJECTS_NOT_READ = {CODESYS + "interface": "an INTERFACE"}
+
+
+def _not_read(element):
+    what = _OBJECTS_NOT_READ[element.getparent().get("name")]
+    raise PlcopenReadError(f"{what} is not read from PLCopen XML: give pac-test its ST as a file of its own "
+                           f"(or the TwinCAT project's .plcproj, which pac-test reads with its .TcIO files)")
 
 
 # Where each ST file written by extract() came from: {ST path: (XML path, StObject)}
@@ -142,7 +173,9 @@ def extract(path, out_dir):
         with open(path, "rb") as f:
             objects = read_plcopen(f.read())
     except (OSError, etree.XMLSyntaxError, PlcopenReadError) as exc:
-        raise StError(path, getattr(exc, "lineno", None) or 1, 1, f"cannot read the PLCopen project: {exc}") from None
+        refused = [StError(path, getattr(e, "lineno", None) or 1, 1, f"cannot read the PLCopen project: {e}")
+                   for e in (getattr(exc, "errors", ()) or [exc])]
+        raise (refused[0] if len(refused) == 1 else StErrors(refused)) from None
     os.makedirs(out_dir, exist_ok=True)
     paths = []
     for obj in objects:
@@ -193,6 +226,11 @@ def type_text(type_holder):
     if tag == "array":
         dims = ", ".join(f"{d.get('lower')}..{d.get('upper')}" for d in element.iterfind(q("dimension")))
         return f"ARRAY[{dims}] OF {type_text(element.find(q('baseType')))}"
+    if tag == "pointer":
+        return f"POINTER TO {type_text(element.find(q('baseType')))}"
+    if tag in ("subrangeSigned", "subrangeUnsigned"):
+        bounds = element.find(q("range"))
+        return f"{type_text(element.find(q('baseType')))}({bounds.get('lower')}..{bounds.get('upper')})"
     raise PlcopenReadError(f"type element <{tag}> has no ST form in this reader")
 
 
@@ -200,10 +238,26 @@ def _initial(element):
     holder = element.find(q("initialValue"))
     if holder is None:
         return None
-    value = _only_child(holder, "initialValue")
-    if _local(value) != "simpleValue":
-        raise PlcopenReadError(f"initial value <{_local(value)}> is not a simpleValue")
-    return value.get("value")
+    return _value(_only_child(holder, "initialValue"))
+
+
+def _value(value):
+    """The ST of a PLCopen value: a simpleValue's text, an arrayValue as `[1, 2(0)]`, a structValue as
+    `(X := 1.0, Y := 2.0)`, as CODESYS exports a variable's initial value."""
+    tag = _local(value)
+    if tag == "simpleValue":
+        return value.get("value")
+    if tag == "arrayValue":
+        items = []
+        for item in value.iterfind(q("value")):
+            text = _value(_only_child(item, "value"))
+            repeat = item.get("repetitionValue")
+            items.append(f"{repeat}({text})" if repeat and repeat != "1" else text)
+        return f"[{', '.join(items)}]"
+    if tag == "structValue":
+        return "(" + ", ".join(f"{item.get('member')} := {_value(_only_child(item, 'value'))}"
+                               for item in value.iterfind(q("value"))) + ")"
+    raise PlcopenReadError(f"initial value <{tag}> is not read")
 
 
 def _declaration(variable):
@@ -215,7 +269,8 @@ def _declaration(variable):
 
 
 def _var_list(element, keyword):
-    opener = keyword + (" CONSTANT" if element.get("constant") == "true" else "")
+    opener = keyword + "".join(f" {a.upper()}" for a in ("constant", "retain", "persistent")
+                               if element.get(a) == "true")
     lines = [opener] + [f"  {_declaration(v)};" for v in element.iterfind(q("variable"))] + ["END_VAR"]
     return "\n".join(lines) + "\n"
 
@@ -230,6 +285,8 @@ def _pou(element):
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
         if data.get("name") == CODESYS + "method":  # CODESYS keeps a POU's METHODs in its addData
             members += [_at(_method, m) for m in data if isinstance(m.tag, str)]
+        elif data.get("name") == CODESYS + "property":  # and its PROPERTYs, each with a Get and a Set
+            members += [_at(_property, p) for p in data if isinstance(p.tag, str)]
         elif data.get("name") in _POU_EXTENSIONS:
             raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
                                    "yet: write a METHOD")
@@ -244,6 +301,20 @@ def _method(element):
     name = element.get("name") or element.get("Name")
     header, blocks = _interface_text(element, f"METHOD {name}", name)
     return f"{header}\n{''.join(blocks)}{_st_body(element, name).rstrip()}\nEND_METHOD\n"
+
+
+def _property(element):
+    """A PROPERTY of CODESYS's export (its type, and a GetAccessor and a SetAccessor with their own interface
+    and ST body) as ST: the PROPERTY, then PROPERTY Name.Get and PROPERTY Name.Set."""
+    name = element.get("name") or element.get("Name")
+    header, blocks = _interface_text(element, f"PROPERTY {name}", name)
+    text = f"{header}\n{''.join(blocks)}END_PROPERTY\n"
+    result = header[len(f"PROPERTY {name}"):]  # ' : T'
+    for tag, accessor in (("GetAccessor", "Get"), ("SetAccessor", "Set")):
+        for part in element.iterfind(q(tag)):
+            part_header, part_blocks = _interface_text(part, f"PROPERTY {name}.{accessor}{result}", name)
+            text += f"{part_header}\n{''.join(part_blocks)}{_st_body(part, name).rstrip()}\nEND_PROPERTY\n"
+    return text
 
 
 def _st_body(element, name):
@@ -271,9 +342,26 @@ def _interface_text(element, header, name):
             header += f" : {type_text(child)}"
         elif tag in SECTION_KEYWORDS:
             blocks.append(_var_list(child, SECTION_KEYWORDS[tag]))
-        elif tag not in ("addData", "documentation"):
+        elif tag == "addData":
+            header += _inheritance(child)
+        elif tag != "documentation":
             raise PlcopenReadError(f"{name}: interface element <{tag}> is not read")
     return header, blocks
+
+
+def _inheritance(add_data):
+    """` EXTENDS Base IMPLEMENTS I_A, I_B` of CODESYS's pouinheritance in an interface's addData, or ''."""
+    text = ""
+    for data in add_data.iterfind(q("data")):
+        if data.get("name") == POU_INHERITANCE:
+            inheritance = data.find(q("Inheritance"))
+            extends = [(e.text or "").strip() for e in inheritance.iterfind(q("Extends"))] if inheritance is not None \
+                else []
+            implements = [(e.text or "").strip() for e in inheritance.iterfind(q("Implements"))] \
+                if inheritance is not None else []
+            text += "".join(f" EXTENDS {e}" for e in extends if e)
+            text += (" IMPLEMENTS " + ", ".join(i for i in implements if i)) if any(implements) else ""
+    return text
 
 
 def _data_type(element):
@@ -293,7 +381,14 @@ def _data_type(element):
         text = f"TYPE {name} :\nSTRUCT\n{members}END_STRUCT\nEND_TYPE\n"
     else:
         text = f"TYPE {name} : {type_text(element.find(q('baseType')))}{suffix};\nEND_TYPE\n"
-    return StObject("dataType", name, text, None)
+    # the attributes pacst reads of a type (a CODESYS application's DUTs are qualified_only by default)
+    pragmas = [_pragma(n, None) for n in _attribute_names(element) if n in ("qualified_only", "strict")]
+    return StObject("dataType", name, "".join(pragmas) + text, None, xml_line=element.sourceline or 0)
+
+
+def _attribute_names(element):
+    return [a.get("Name") for data in element.iterfind(f"{q('addData')}/{q('data')}")
+            if data.get("name") == ATTRIBUTES for a in data.iter(q("Attribute"))]
 
 
 def _global_list(element):
@@ -301,8 +396,12 @@ def _global_list(element):
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
         if data.get("name") == ATTRIBUTES:
             pragmas += [_pragma(a.get("Name"), a.get("Value")) for a in data.iter(q("Attribute"))]
-    text = "".join(pragmas) + _var_list(element, "VAR_GLOBAL")
-    return StObject("globalVars", element.get("name"), text, None)
+    # CODESYS writes a list of several blocks (VAR_GLOBAL, VAR_GLOBAL CONSTANT, RETAIN) as one list of all its
+    # variables, and the blocks, each with its attributes, in its MixedAttrsVarList
+    blocks = [g for data in element.iterfind(f"{q('addData')}/{q('data')}") if data.get("name") == MIXED_ATTRIBUTES
+              for g in data.iterfind(f"{q('MixedAttrsVarList')}/{q('globalVars')}")]
+    text = "".join(pragmas) + "".join(_var_list(b, "VAR_GLOBAL") for b in blocks or [element])
+    return StObject("globalVars", element.get("name"), text, None, xml_line=element.sourceline or 0)
 
 
 def _pragma(name, value):

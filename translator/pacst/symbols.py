@@ -5,6 +5,7 @@ import json
 
 from . import types as T
 from .body import program_instance
+from .common import pos
 
 FORMAT = 1
 # sizeof of pacst_iec.h's elementary types (STRING: a length byte and STR_MAX_LEN bytes; TIME: two longs on
@@ -58,6 +59,9 @@ def _pou(comp, pou):
     entry = {"name": pou.name, "c_type": pou.cname, "init": f"{pou.cname}_init__", "body": f"{pou.cname}_body__",
              "file": pou.file, "line": pou.node.meta.line if pou.node.meta is not None else None,
              "variables": [_variable(comp, v, f"{pou.name}.{v.name}", v.cname) for v in pou.vars]}
+    for v, variable in zip(pou.vars, entry["variables"]):
+        if v.location is not None:  # where a located variable pac-test cannot copy is refused
+            variable["line"] = pos(v.node)[0]
     entry["externals"] = [{"name": g.name, "global": f"{g.gvl.name}.{g.name}", "c_name": g.csym}
                           for g, _ in pou.externals.values()]
     if pou.program:

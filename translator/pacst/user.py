@@ -14,7 +14,7 @@ from types import SimpleNamespace
 from . import types as T
 from . import varlen
 from .common import _cls, _name, pos
-from .errors import StError
+from .errors import StError, StErrors
 from .names import C_KEYWORDS, C_MACROS, reserved_reason
 from .order import mentioned_names
 
@@ -289,11 +289,15 @@ def global_list(comp, block, src):
         comp.program.items.append(("gvl", gvl, src.path))
     elif gvl.file != src.path:
         raise comp.err(block, f"global variable list '{name}' is declared in {gvl.file} too")
-    try:
-        global_items(comp, gvl, block.items, constant)
-    except StError:
+    refused = []
+    for item in block.items:  # every refused declaration is reported, not only the first
+        try:
+            global_items(comp, gvl, [item], constant)
+        except (StError, StErrors) as e:
+            refused += e.errors if isinstance(e, StErrors) else [e]
+    if refused:
         gvl.refused = True
-        raise
+        raise StErrors(refused)
 
 
 def global_items(comp, gvl, items, constant):
@@ -396,10 +400,11 @@ def _attribute_before(comp, line, attribute):
     return False
 
 
-def lookup_global(comp, token):
+def lookup_global(comp, token, at=None):
     """The global an unqualified name means in user mode, or None; several lists declaring it is an error, and
-    so is the name alone of a list under {attribute 'qualified_only'}."""
+    so is the name alone of a list under {attribute 'qualified_only'} (at `at`, where `token` is a name only)."""
     found = comp.globals.get(_name(token).upper(), [])
+    token = token if at is None else at
     if found and _name(token).upper() in comp.enum_values and all(v.gvl.qualified_only for v in found):
         return None  # ERR_OK alone is the enumeration value; GVL_Errors.ERR_OK the list's
     if len(found) > 1:

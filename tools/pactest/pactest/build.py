@@ -16,10 +16,14 @@ class BuildError(Exception):
     pass
 
 
-def _run(command, what, env=None):
+def _run(command, what, env=None, warnings=False):
+    """`command`'s output; BuildError with all it said when it fails. `warnings`: what it says on stderr when it
+    succeeds is shown (pacst's warnings), not dropped."""
     result = subprocess.run(command, capture_output=True, text=True, env=env)
     if result.returncode != 0:
         raise BuildError(f"{what} failed:\n{result.stdout}{result.stderr}".rstrip())
+    if warnings and result.stderr:
+        sys.stderr.write(result.stderr)
     return result.stdout
 
 
@@ -66,7 +70,8 @@ class HostBuild:
         translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
         env = dict(os.environ, PYTHONPATH=translator)
         cache = self.parse_cache or os.path.join(self.out, "pacst-cache")
-        return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env)
+        return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env,
+                    warnings=True)
 
     def user_inputs(self):
         """pacst's arguments for the whole program, in any order (pacst --user finds the declaration order): the

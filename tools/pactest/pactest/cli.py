@@ -218,7 +218,10 @@ def main(argv=None):
     except WiringError as e:
         print(f"pac-test: invalid wiring file {args.wiring}: {e}", file=sys.stderr)
         return EXIT_REFUSED
-    except (build.BuildError, hostgen.ProgramError, project.LibraryError) as e:
+    except hostgen.ProgramError as e:  # one line each, at its file and line
+        print("\n".join(f"pac-test: {line}" for line in str(e).splitlines()), file=sys.stderr)
+        return EXIT_REFUSED
+    except (build.BuildError, project.LibraryError) as e:
         print(f"pac-test: {e}", file=sys.stderr)
         return EXIT_REFUSED
     built = time.monotonic()

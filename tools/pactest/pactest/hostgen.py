@@ -28,7 +28,15 @@ class Symbols:
         return found
 
     def located(self, area):
-        return [g for g in self.table["globals"] if g.get("location") and g["location"]["area"] == area]
+        """The located variables of `area` (I, Q): the globals', then the PROGRAMs' (TwinCAT's MAIN declares its
+        I/O in its VAR), each with the C name of its storage and where it is declared."""
+        files = {gl["name"]: gl["file"] for gl in self.table["global_lists"]}
+        found = [dict(g, file=files.get(g.get("list"))) for g in self.table["globals"]
+                 if g.get("location") and g["location"]["area"] == area]
+        for p in self.table["programs"]:
+            found += [dict(v, c_name=f"{p['instance']}.{v['c_name']}", file=p["file"], line=v.get("line") or p["line"])
+                      for v in p["variables"] if v.get("location") and v["location"]["area"] == area]
+        return found
 
 
 def _location_byte(g):
@@ -114,6 +122,7 @@ def located_copies(symbols, copy_in, copy_out, wiring=None):
     project runs on: TwinCAT and CODESYS on x86 and ARM); an input the bus does not write is left to the
     tests (input_from_bus)."""
     bus_bytes = bus_input_bytes(wiring)
+    refused = []
     for area, side, lines in (("I", "in", copy_in), ("Q", "out", copy_out)):
         image = "inImage" if area == "I" else "outImage"
         for g in symbols.located(area):
@@ -134,12 +143,14 @@ def located_copies(symbols, copy_in, copy_out, wiring=None):
             if loc["size"] != "B":
                 # CODESYS numbers %IW and %ID by word and double word, TwinCAT by byte: rather than guess
                 # which the program was written for, pac-test asks for byte addresses.
-                files = {gl["name"]: gl["file"] for gl in symbols.table["global_lists"]}
-                where = f"{files.get(g.get('list'), g['path'])}:{g.get('line') or 1}"
-                raise ProgramError(f"{where}: {g['path']} located at {loc['address']}: pac-test copies byte (%IB, %QB) "
-                                   "and bit (%IX, %QX) addresses only; declare the image as bytes")
+                refused.append(f"{g.get('file') or g['path']}:{g.get('line') or 1}: {g['path']} located at "
+                               f"{loc['address']}: pac-test copies byte (%IB, %QB) and bit (%IX, %QX) addresses only; "
+                               "declare the image as bytes")
+                continue
             lines.append(f"    static_assert({byte} + sizeof {var} <= 256, \"{g['path']} beyond %{area}B255\");")
             _memcpy(lines, side, f"&{var}", f"{image} + {byte}", f"sizeof {var}")
+    if refused:
+        raise ProgramError("\n".join(refused))
 
 
 def signal_entries(symbols, wanted):

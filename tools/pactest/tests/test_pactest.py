@@ -624,10 +624,16 @@ class ProgramRefusalTest(unittest.TestCase):
         return run, folder
 
     def test_a_word_address(self):
-        run, folder = self.listed("word-address", {"GVL_Word.st": "VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n"})
+        # in a global list and in a PROGRAM's VAR (as TwinCAT's MAIN declares its I/O), each at its line
+        run, folder = self.listed("word-address", {
+            "GVL_Word.st": "VAR_GLOBAL\n  Speed AT %IW64 : WORD;\nEND_VAR\n",
+            "PRG_Word.st": "PROGRAM PRG_Word\nVAR\n  Count : INT;\n  Total AT %QD4 : DINT;\nEND_VAR\nTotal := Count;\n"
+                           "END_PROGRAM\n"})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{os.path.join(folder, 'GVL_Word.st')}:2: GVL_Word.Speed located at %IW64: pac-test copies byte",
-                      run.stderr)
+        self.assertIn(f"pac-test: {os.path.join(folder, 'GVL_Word.st')}:2: GVL_Word.Speed located at %IW64: pac-test "
+                      "copies byte", run.stderr)
+        self.assertIn(f"pac-test: {os.path.join(folder, 'PRG_Word.st')}:4: PRG_Word.Total located at %QD4: pac-test "
+                      "copies byte", run.stderr)
         self.assertNotIn("invalid wiring file", run.stderr)
 
     def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
