@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "pac/sim/command_table.hpp"
 #include "pac/sim/image8.hpp"
@@ -85,6 +86,23 @@ double DecodeModulePosition(std::uint32_t raw, bool integerFormat) {
 // ---- the module ---------------------------------------------------------------------------------------
 
 AxisModule::AxisModule(AxisModuleConfig config) : config_(config) {}
+
+void TakenAxisJobLedger::Add(const TakenAxisJob& job) {
+    if (jobs_.size() < kKept) {
+        jobs_.push_back(job);
+    } else {
+        jobs_[count_ % kKept] = job;
+    }
+    ++count_;
+}
+
+const TakenAxisJob& TakenAxisJobLedger::operator[](std::size_t number) const {
+    if (number < First() || number >= count_) {
+        throw std::out_of_range("TakenAxisJobLedger: job " + std::to_string(number) + " is not kept (kept: " +
+                                std::to_string(First()) + " to " + std::to_string(count_) + ")");
+    }
+    return jobs_[number % kKept];
+}
 
 void AxisModule::Reset() { *this = AxisModule(config_); }
 
@@ -235,7 +253,7 @@ std::uint16_t AxisModule::TakeOver(const AxisModuleCommand& command, ServoAxis& 
     if (result != axis_error::kNone) return result;
 
     job_ = traverse;
-    taken_.push_back({command, now});
+    taken_.Add({command, now});
     interrupted_ = false;
     continued_ = false;
     toContinue_ = false;

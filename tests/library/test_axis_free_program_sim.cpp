@@ -322,7 +322,7 @@ private:
         if (ended == FreeCaller::Ended::kDone) CheckDone();
     }
 
-    const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
+    const pac::sim::TakenAxisJobLedger& Ledger() { return rig_.Controller().Module(1).TakenJobs(); }
 
     static bool Online(int status) { return status >= 30 && status <= 39; }
 

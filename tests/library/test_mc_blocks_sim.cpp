@@ -583,9 +583,11 @@ TEST_P(McSim, InVelocityOnlyForTheBlocksOwnJob) {
         const std::size_t before = taken.size();
         Execute(rig, b.velocity);
         ASSERT_TRUE(rig.WaitFor([&] {
-            const bool own = std::any_of(taken.begin() + static_cast<long>(before), taken.end(), [](const auto& job) {
-                return (job.command.control & (pac::axis_control::kMoveToMax | pac::axis_control::kMoveToMin)) != 0;
-            });
+            constexpr std::uint32_t kVelocityBits = pac::axis_control::kMoveToMax | pac::axis_control::kMoveToMin;
+            bool own = false;
+            for (std::size_t k = before; k < taken.size(); ++k) {
+                own = own || (taken[k].command.control & kVelocityBits) != 0;
+            }
             if (b.velocity->INVELOCITY.value && !own) {
                 ADD_FAILURE() << "InVelocity before the controller took the velocity job (scan " << rig.ScanCount() << ")";
                 return true;

@@ -321,7 +321,7 @@ private:
         }
     }
 
-    const std::vector<pac::sim::TakenAxisJob>& Ledger() { return rig_.Pac().Module(1).TakenJobs(); }
+    const pac::sim::TakenAxisJobLedger& Ledger() { return rig_.Pac().Module(1).TakenJobs(); }
 
     void CheckJob(const Block& b) {
         namespace bit = pac::axis_control;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -1003,6 +1004,41 @@ TEST_F(AxisModuleHandshake, ResetReturnsToThePowerOnState) {
     EXPECT_EQ(module_.ConditionInput(), 1);
     EXPECT_FALSE(module_.Active());
     EXPECT_EQ(Step(kOn | ac::kStart).cmdError, 20);  // Start held through Reset: an edge from power-on 0
+}
+
+// ---- the ledger of the jobs taken over ---------------------------------------------------------------
+
+// A simulation that runs for hours takes jobs without end: the ledger keeps the last kKept, numbered from
+// power-on, and says so for an older one instead of growing.
+TEST(TakenAxisJobLedger, KeepsTheLastJobsByTheirNumberFromPowerOn) {
+    TakenAxisJobLedger ledger;
+    const std::size_t total = TakenAxisJobLedger::kKept * 2 + 5;
+    for (std::size_t n = 0; n < total; ++n) {
+        TakenAxisJob job;
+        job.command.position = static_cast<std::uint32_t>(n);
+        ledger.Add(job);
+        ASSERT_EQ(ledger.size(), n + 1);
+        ASSERT_EQ(ledger[n].command.position, n) << "the job just taken";
+    }
+    EXPECT_EQ(ledger.First(), total - TakenAxisJobLedger::kKept);
+    for (std::size_t n = ledger.First(); n < total; ++n) EXPECT_EQ(ledger[n].command.position, n) << n;
+    EXPECT_THROW(ledger[ledger.First() - 1], std::out_of_range) << "no longer kept";
+    EXPECT_THROW(ledger[total], std::out_of_range) << "not yet taken";
+}
+
+// The module enters each job it takes over on a Start edge, with the bytes it carried.
+TEST_F(AxisModuleSequences, EachJobTakenOverIsInTheLedger) {
+    for (int k = 1; k <= 3; ++k) {
+        Step(kOn | ac::kSetPosition | ac::kStart, 5.0 * k);
+        Step(kOn);
+    }
+    const TakenAxisJobLedger& taken = module_.TakenJobs();
+    ASSERT_EQ(taken.size(), 3u);
+    EXPECT_EQ(taken.First(), 0u);
+    for (std::size_t n = 0; n < 3; ++n) {
+        EXPECT_EQ(taken[n].command.position, EncodeModulePosition(5.0 * static_cast<double>(n + 1), integer_)) << n;
+        EXPECT_EQ(taken[n].command.control & ac::kTraverseBits, ac::kSetPosition) << n;
+    }
 }
 
 }  // namespace

@@ -237,7 +237,8 @@ private:
 class AxisJobClaims {
 public:
     // Claims the first unclaimed job from index `from` on that `matches`; false if there is none.
-    bool Claim(const std::vector<pac::sim::TakenAxisJob>& jobs, std::size_t from,
+    // The ledger must still keep job `from` (std::out_of_range otherwise: the test ran too many jobs between).
+    bool Claim(const pac::sim::TakenAxisJobLedger& jobs, std::size_t from,
                const std::function<bool(const pac::sim::AxisModuleCommand&)>& matches) {
         claimed_.resize(jobs.size(), false);
         for (std::size_t k = from; k < jobs.size(); ++k) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -115,6 +116,26 @@ struct TakenAxisJob {
     std::chrono::nanoseconds at{0};
 };
 
+// The jobs an axis module took over, numbered 0, 1, ... from power-on in the order taken. It keeps the last
+// kKept of them, so that a simulation running for hours holds bounded memory; a test reads a job by its number
+// while it is kept (a test takes far fewer jobs between its edge and its check).
+class TakenAxisJobLedger {
+public:
+    static constexpr std::size_t kKept = 1024;
+
+    void Add(const TakenAxisJob& job);
+    // The number of jobs taken over: the next job's number.
+    std::size_t size() const { return count_; }
+    // The number of the oldest job kept.
+    std::size_t First() const { return count_ > kKept ? count_ - kKept : 0; }
+    // Job `number`; std::out_of_range unless First() <= number < size().
+    const TakenAxisJob& operator[](std::size_t number) const;
+
+private:
+    std::vector<TakenAxisJob> jobs_;  // grows to kKept, then job n is at n % kKept
+    std::size_t count_ = 0;
+};
+
 class AxisModule {
 public:
     // CMD error numbers of the module itself (the axis's refusals come from ServoAxis, axis_error::k...).
@@ -149,8 +170,8 @@ public:
     std::uint16_t AccelerationPerMille() const { return accelerationPerMille_; }
     std::uint16_t CmdError() const { return cmdError_; }
     bool StoppedByCondition() const { return stoppedByG123_; }
-    // Every job taken over since power-on of the simulation, oldest first (Reset keeps them: a ledger).
-    const std::vector<TakenAxisJob>& TakenJobs() const { return taken_; }
+    // The jobs taken over since power-on of the simulation, the last TakenAxisJobLedger::kKept of them.
+    const TakenAxisJobLedger& TakenJobs() const { return taken_; }
 
     // Back to the power-on state (no job, no CMD error, input 1, no edges remembered).
     void Reset();
@@ -187,7 +208,7 @@ private:
     bool stoppedByG123_ = false;
     std::uint16_t cmdError_ = 0;
     std::uint16_t pendingCmdError_ = 0;  // kOneCycleClear: shown from the next cycle
-    std::vector<TakenAxisJob> taken_;
+    TakenAxisJobLedger taken_;
 };
 
 }  // namespace pac::sim
