@@ -16,6 +16,7 @@
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
+#include "stutter.h"
 
 #ifndef CBMC__K
 #define CBMC__K 10
@@ -43,6 +44,12 @@
 #endif
 #ifndef CBMC__FREE_TIMING /* the controller may leave any scan without a read: a controller cycle of any length */
 #define CBMC__FREE_TIMING 0
+#endif
+#ifndef CBMC__STUTTER /* the waiting-scan lemma (stutter.h) checked in every scan, and a stretch after each */
+#define CBMC__STUTTER 0
+#endif
+#ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more waiting scans in one step (a power of 2 less 1) */
+#define CBMC__STRETCH_MAX 15
 #endif
 
 #define PARKED_CODE 0x190B
@@ -255,8 +262,24 @@ int main(void) {
     const BOOL twoStep = CBMC__TWOSTEP < 0 ? nondet_bool() : CBMC__TWOSTEP != 0;
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
     int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
-    int reachBlipBusy = 0;
+    int reachBlipBusy = 0, reachWaiting = 0, reachStretch = 0;
+    long stretched = 0; /* scans the stretches added: the clock is n + stretched ms */
+    long edgeMs[CBMC__CALLERS];   /* the clock at a caller's last Execute edge */
+    int skipRun[CBMC__CALLERS];   /* scans in a row it has been left out while Busy, stretches counted */
+    BOOL longSkip[CBMC__CALLERS]; /* left out two scans or more in a row since its edge */
+    int reachSlowDone = 0;
     BOOL skippedWhileBusy[CBMC__CALLERS];
+    /* The scan before, for the waiting scan (stutter.h). */
+    static FB_PAC_CMDINTERFACE ifaceBefore;
+    static FB_PAC_CMD cmdBefore[CBMC__CALLERS];
+    BYTE prevReply[8] = {0};
+    BOOL prevCalled[CBMC__CALLERS], prevReversed = FALSE, prevStill = FALSE;
+    for (int i = 0; i < CBMC__CALLERS; ++i) {
+        prevCalled[i] = FALSE;
+        edgeMs[i] = 0;
+        skipRun[i] = 0;
+        longSkip[i] = FALSE;
+    }
 
     ctrl.bySendChange = nondet_bool();
     __CURRENT_TIME = __time_make(0, 0);
@@ -284,7 +307,7 @@ int main(void) {
     }
 
     for (int n = 1; n <= CBMC__K; ++n) {
-        __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
         if (n > 1) ControllerStep(&ctrl, n, twoStep, reply);
         /* A PLC cold start: every FB instance and the program's pins back to their initial values. What the
          * controller took before stays in its ledger (P7 counts the edges of the instances before too). */
@@ -302,32 +325,76 @@ int main(void) {
             reachPlcRestart = 1;
         }
         BOOL edge[CBMC__CALLERS], called[CBMC__CALLERS];
+        /* The waiting scan (stutter.h): the reply, the calls, their order and the pins those of the scan before. */
+        BOOL waiting = CBMC__STUTTER && n > 1 && !plcRestart;
+        for (int i = 0; i < 8; ++i) waiting = waiting && reply[i] == prevReply[i];
         for (int i = 0; i < CBMC__CALLERS; ++i) {
             /* A caller left out of a scan keeps its pins: a program assigns them in the call it does not make. */
             called[i] = nondet_bool();
             const BOOL before = cmd[i].EXECUTE.value;
+            const WORD codeBefore = cmd[i].CODE.value, paramBefore = cmd[i].PARAM.value;
+            const DWORD dataBefore = cmd[i].DATA.value;
             if (called[i]) SetPins(&cmd[i]);
+            waiting = waiting && called[i] == prevCalled[i] && cmd[i].EXECUTE.value == before
+                      && cmd[i].CODE.value == codeBefore && cmd[i].PARAM.value == paramBefore
+                      && cmd[i].DATA.value == dataBefore;
+            prevCalled[i] = called[i];
             edge[i] = cmd[i].EXECUTE.value && !before;
             if (!called[i] && cmd[i].BUSY.value) {
                 skippedWhileBusy[i] = TRUE;
                 reachSkippedBusy = 1;
             }
+            if (edge[i]) {
+                edgeMs[i] = n + stretched;
+                longSkip[i] = FALSE;
+            }
+            skipRun[i] = (!called[i] && cmd[i].BUSY.value) ? skipRun[i] + 1 : 0;
         }
         for (int i = 0; i < 8; ++i) iface.CHANNEL.value.FROMPAC.table[i] = reply[i];
         for (int i = 0; i < CBMC__CALLERS; ++i)
             if (ctrl.blip && called[i] && cmd[i].BUSY.value) reachBlipBusy = 1;
+        /* A stretch (stutter.h): after a still scan, d more scans like it in one step, before this one. */
+        if (CBMC__STUTTER && prevStill && waiting) {
+            const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
+            Stretch(&iface, cmd, called, CBMC__CALLERS, d, (long long)(n + stretched + (long)d - 1) * CYCLE_NS);
+            for (int i = 0; i < CBMC__CALLERS; ++i) {
+                if (called[i] && cmd[i].BUSY.value) watch[i].plcopen.busyScans += (int)d; /* P8 counts its calls */
+                if (skipRun[i] > 0) skipRun[i] += (int)d; /* a skip goes on through the stretch */
+            }
+            stretched += (long)d;
+            __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
+            if (d >= 2) reachStretch = 1;
+        }
+        if (CBMC__STUTTER) {
+            ifaceBefore = iface;
+            for (int i = 0; i < CBMC__CALLERS; ++i) cmdBefore[i] = cmd[i];
+            for (int i = 0; i < 8; ++i) prevReply[i] = reply[i];
+        }
         FB_PAC_CMDINTERFACE_body__(&iface);
         /* The call order anew in every scan. Each call with a constant index: a pointer to cmd[symbolic] would
          * split every access in the body. With two callers the second is called before or after the first, the
          * first once in between: three calls to execute symbolically, not the four of two whole orders. */
         const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
         if (reversed) reachReversed = 1;
+        waiting = waiting && reversed == prevReversed;
+        prevReversed = reversed;
 #if CBMC__CALLERS > 2
 #error "the free call order is written for one or two callers"
 #endif
         if (CBMC__CALLERS > 1 && reversed && called[CBMC__CALLERS - 1]) CallCmd(&cmd[CBMC__CALLERS - 1], &iface);
         if (called[0]) CallCmd(&cmd[0], &iface);
         if (CBMC__CALLERS > 1 && !reversed && called[CBMC__CALLERS - 1]) CallCmd(&cmd[CBMC__CALLERS - 1], &iface);
+        if (CBMC__STUTTER) {
+            /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan
+             * after a still one (after a stretch too) is still, unless it passes a limit. */
+            const BOOL noLimit = waiting && NoLimitPasses(&ifaceBefore, &iface, cmdBefore, cmd, CBMC__CALLERS);
+            const BOOL check = prevStill && noLimit;
+            BOOL still = StutterInterface(&ifaceBefore, &iface, check);
+            for (int i = 0; i < CBMC__CALLERS; ++i)
+                still = StutterCmd(&cmdBefore[i], &cmd[i], iface.CHANNEL.value.SCAN, check) && still;
+            if (check) reachWaiting = 1;
+            prevStill = noLimit && still;
+        }
         for (int j = CBMC__LAG + 1; j > 0; --j) {
             for (int i = 0; i < 8; ++i) recent[j][i] = recent[j - 1][i];
         }
@@ -336,6 +403,10 @@ int main(void) {
         for (int i = 0; i < CBMC__CALLERS; ++i) {
             if (cmd[i].DONE.value) reachDone = 1;
             if (cmd[i].DONE.value && skippedWhileBusy[i]) reachDoneAfterSkip = 1;
+            if (skipRun[i] >= 2) longSkip[i] = TRUE;
+            /* The slowest bus of the suites: its reply behind a module up to 15 scans old, so 16 ms or more
+             * from the edge to Done, with a skip of two scans or more since the edge. */
+            if (cmd[i].DONE.value && longSkip[i] && n + stretched - edgeMs[i] >= 16) reachSlowDone = 1;
             if (i == 1 && cmd[i].DONE.value && !IsStop(cmd[i].CODE.value)) reachSecondDone = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
@@ -381,6 +452,15 @@ int main(void) {
     __CPROVER_assert(ctrl.retakenStops == 0, "reach: a stop taken again by a controller back from a restart");
 #else
     (void)reachBlipBusy;
+#endif
+#if CBMC__STUTTER
+    __CPROVER_assert(!reachWaiting, "reach: a waiting scan after a still one");
+    __CPROVER_assert(!reachStretch, "reach: a stretch of two waiting scans or more in one step");
+    __CPROVER_assert(!reachSlowDone, "reach: Done 16 ms or more after its edge, after a skip of two scans or more");
+#else
+    (void)reachSlowDone;
+    (void)reachWaiting;
+    (void)reachStretch;
 #endif
 #if CBMC__PLC_RESTARTS
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");

@@ -6,7 +6,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import results, timeline
+from . import loops, results, timeline
 
 
 SLICE = "--slice-formula"
@@ -34,6 +34,11 @@ def _cbmc(args, cbmc_args):
 
 
 def _run(args) -> int:
+    problems = loops.verify(args.cbmc, args.cbmc_args, args.loop)
+    if problems:
+        for problem in problems:
+            print(f"paccbmc: {args.name}: {problem}", file=sys.stderr)
+        return 2
     start = time.monotonic()
     try:
         proc, props = _cbmc(args, args.cbmc_args)
@@ -88,6 +93,8 @@ def main(argv=None) -> int:
     run.add_argument("--name", required=True, help="the harness's name, for the report")
     run.add_argument("--known-open", action="append", default=[],
                      help="a property (description prefix) that is a known open defect: reported, not failed")
+    run.add_argument("--loop", action="append", default=[], metavar="LOOP=TEXT",
+                     help="a loop of --unwindset and a text of its source line: the run fails if the number moved")
     run.add_argument("--counterexamples", help="folder for each counterexample's free inputs (the replay test)")
     run.add_argument("cbmc_args", nargs=argparse.REMAINDER, help="-- then CBMC's arguments")
     args = parser.parse_args(argv)

@@ -3,7 +3,7 @@ known open failures) and the counterexample table."""
 import json
 import unittest
 
-from paccbmc import cli, results, timeline
+from paccbmc import cli, loops, results, timeline
 
 
 def _assign(lhs, data, hidden=False):
@@ -80,3 +80,49 @@ class TimelineRerun(unittest.TestCase):
         failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
         self.assertIsNone(cli.timeline_rerun_args(["h.c"], failed))
         self.assertIsNone(cli.timeline_rerun_args(["h.c", "--slice-formula"], []))
+
+
+class UnwindsetLoops(unittest.TestCase):
+    """The loops an --unwindset bounds, checked against the text of their source lines (a stale number bounded
+    another loop silently)."""
+
+    def setUp(self):
+        import tempfile
+        from pathlib import Path
+        self.dir = tempfile.TemporaryDirectory()
+        self.source = Path(self.dir.name) / "FB.st"
+        self.source.write_text("Scan := Scan + 1;\nFOR I := 0 TO 3 DO\nEND_FOR;\nWHILE Serving <> NextTicket DO\n")
+        self.found = {"FB_body.0": {"file": str(self.source), "line": "2"},
+                      "FB_body.1": {"file": "FB.st", "line": "4", "workingDirectory": self.dir.name},
+                      "init$link2.0": {"file": str(self.source), "line": "2"}}
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def test_loops_of_every_unwindset(self):
+        args = ["h.c", "--unwindset", "FB_body.1:3,init$link2.0:5", "--unwind", "4", "--unwindset", "main.0:19"]
+        self.assertEqual(loops.unwindset_loops(args), ["FB_body.1", "init$link2.0", "main.0"])
+
+    def test_the_loop_meant_passes(self):
+        self.assertEqual(loops.check(["FB_body.1"], {"FB_body.1": "WHILE Serving"}, self.found), [])
+
+    def test_a_moved_number_fails_naming_the_line_it_bounds_now(self):
+        problems = loops.check(["FB_body.0"], {"FB_body.0": "WHILE Serving"}, self.found)
+        self.assertEqual(len(problems), 1)
+        self.assertIn("FOR I := 0 TO 3 DO", problems[0])
+        self.assertIn("not the loop meant", problems[0])
+
+    def test_a_loop_without_a_pattern_or_unknown_fails(self):
+        self.assertIn("has no --loop", loops.check(["FB_body.1"], {}, self.found)[0])
+        self.assertIn("no such loop", loops.check(["FB_body.7"], {"FB_body.7": "WHILE"}, self.found)[0])
+
+    def test_one_pattern_covers_every_linked_copy(self):
+        self.assertEqual(loops.check(["init$link2.0"], {"init.0": "FOR I"}, self.found), [])
+
+    def test_show_loops_keeps_the_preprocessor_options(self):
+        args = loops.show_loops_args(["-DK=6", "-I", "gen", "h.c", "a.c", "--unwind", "17"], ["a.c"])
+        self.assertEqual(args, ["-DK=6", "-I", "gen", "a.c", "--show-loops", "--json-ui"])
+
+    def test_a_pattern_must_name_its_loop(self):
+        with self.assertRaises(loops.LoopError):
+            loops.parse_patterns(["FB_body.1"])

@@ -1,0 +1,187 @@
+/* The waiting-scan lemma of the CMD harness (-DCBMC__STUTTER=1, docs/verification.md, "the waiting scans"): a
+ * scan in which the reply, the program's pins, the calls and their order equal those of the scan before, and
+ * no limit passes (NoLimitPasses: no timer's Q changes, no scan count crosses its bound) changes nothing of FB_PAC_CmdInterface, its channel and the command FBs but the counters
+ * of time and scans: TON's ET and CURRENT_TIME, Channel.Scan, and an FB's LastScan and the channel's OwnerScan,
+ * which follow Channel.Scan in the scan the FB is called. Each other field is one assertion, so that CBMC names
+ * the field a waiting scan changes. */
+#ifndef PAC_CBMC_STUTTER_H
+#define PAC_CBMC_STUTTER_H
+
+static BOOL SameTime(TIME a, TIME b) { return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec; }
+
+/* A TON's state but its clock: Q unchanged is the waiting scan's condition (no limit passed), checked apart. */
+/* Each comparison either asserted (check) or folded into the result: one list of fields for both. */
+#define STUTTER_CMP(cond, what)                                                                                    \
+    do {                                                                                                           \
+        if (check) __CPROVER_assert(cond, "S1 a waiting scan after a still one changes nothing but counters: " what); \
+        same = same && (cond);                                                                                     \
+    } while (0)
+#define STUTTER_TON(a, b, what)                                                                                    \
+    STUTTER_CMP((a).IN.value == (b).IN.value && SameTime((a).PT.value, (b).PT.value)                              \
+                    && (a).STATE.value == (b).STATE.value && (a).PREV_IN.value == (b).PREV_IN.value                \
+                    && SameTime((a).START_TIME.value, (b).START_TIME.value),                                       \
+                what)
+#define STUTTER_SAME(a, b, field) STUTTER_CMP((a).field == (b).field, #field)
+#define STUTTER_SAMET(a, b, field) STUTTER_CMP(SameTime((a).field, (b).field), #field)
+
+static BOOL TonQSame(const TON *a, const TON *b) { return a->Q.value == b->Q.value; }
+
+/* No timer of the interface or of a command FB passes its limit in the scan: the waiting scan's condition. */
+static BOOL NoTimerPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFACE *i1, const FB_PAC_CMD *c0,
+                          const FB_PAC_CMD *c1, int callers) {
+    BOOL same = TonQSame(&i0->INFLIGHTCOMMAND.WATCHTIMER, &i1->INFLIGHTCOMMAND.WATCHTIMER)
+                && TonQSame(&i0->KEEPINSTEP.STEPTIMER, &i1->KEEPINSTEP.STEPTIMER);
+    for (int k = 0; k < callers; ++k)
+        same = same && TonQSame(&c0[k].WAITTIMER, &c1[k].WAITTIMER) && TonQSame(&c0[k].ACKTIMER, &c1[k].ACKTIMER)
+               && TonQSame(&c0[k].ENDTIMER, &c1[k].ENDTIMER);
+    return same;
+}
+
+static BOOL StutterChannel(const ST_PAC_CMDCHANNEL *a, const ST_PAC_CMDCHANNEL *b, BOOL check) {
+    BOOL same = TRUE;
+    for (int i = 0; i < 8; ++i) STUTTER_CMP(a->TOPAC.table[i] == b->TOPAC.table[i], "Channel.ToPac");
+    STUTTER_SAME(*a, *b, TWOSTEPWRITE);
+    STUTTER_SAME(*a, *b, REPLYFREE);
+    STUTTER_SAME(*a, *b, NEXTTICKET);
+    STUTTER_SAME(*a, *b, SERVING);
+    STUTTER_SAME(*a, *b, CANCELLED);
+    STUTTER_SAME(*a, *b, NEXTID);
+    STUTTER_SAME(*a, *b, INFLIGHT);
+    STUTTER_SAME(*a, *b, INFLIGHTID);
+    STUTTER_SAME(*a, *b, INFLIGHTCODE);
+    STUTTER_SAME(*a, *b, INFLIGHTPARAM);
+    STUTTER_SAME(*a, *b, INFLIGHTDATA);
+    STUTTER_SAME(*a, *b, INFLIGHTNUMBER);
+    STUTTER_SAMET(*a, *b, INFLIGHTTIMEOUT);
+    STUTTER_SAMET(*a, *b, INFLIGHTENDTIMEOUT);
+    STUTTER_SAME(*a, *b, INFLIGHTEDGESCAN);
+    STUTTER_SAME(*a, *b, TOGGLEPENDING);
+    STUTTER_SAME(*a, *b, INFLIGHTSEND);
+    STUTTER_SAME(*a, *b, INFLIGHTSENDSCAN);
+    STUTTER_SAME(*a, *b, INFLIGHTACKED);
+    STUTTER_SAME(*a, *b, INFLIGHTACKDATA);
+    STUTTER_SAME(*a, *b, INFLIGHTSCANSTOACK);
+    STUTTER_SAME(*a, *b, HANDSHAKES);
+    STUTTER_SAME(*a, *b, WITHDRAWN);
+    STUTTER_SAME(*a, *b, WITHDRAWNERROR);
+    STUTTER_SAME(*a, *b, RESYNCS);
+    STUTTER_SAME(*a, *b, RESYNCSCAN);
+    STUTTER_SAME(*a, *b, ROUNDTRIP);
+    STUTTER_SAME(*a, *b, SETTLING);
+    STUTTER_SAME(*a, *b, FIRSTREADSENT);
+    STUTTER_SAME(*a, *b, FIRSTREADDONE);
+    STUTTER_SAME(*a, *b, HISTORYNEXT);
+    STUTTER_SAME(*a, *b, HISTORYCOUNT); /* F_PAC_RecordHandshake counts every entry it writes */
+    /* OwnerScan follows Scan where the owner is called in the scan, else stays. */
+    STUTTER_CMP(b->OWNERSCAN == a->OWNERSCAN || b->OWNERSCAN == b->SCAN, "OWNERSCAN (unchanged or this scan)");
+    return same;
+}
+
+static BOOL StutterInterface(const FB_PAC_CMDINTERFACE *a, const FB_PAC_CMDINTERFACE *b, BOOL check) {
+    BOOL same = TRUE;
+    STUTTER_SAME(*a, *b, OPSTATUS.value);
+    STUTTER_SAME(*a, *b, PACERROR.value);
+    STUTTER_SAME(*a, *b, INFLIGHT.value);
+    STUTTER_SAME(*a, *b, WAITING.value);
+    STUTTER_SAME(*a, *b, RESYNCS.value);
+    STUTTER_SAME(*a, *b, LASTSERVING.value);
+    STUTTER_SAME(*a, *b, LASTOPSTATUS.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.OWNERAWAY.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.ENDS.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.OUTCOME.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.ENDSHOWN.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.RECORDED.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.WATCHNUMBER.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.WATCHACKED.value);
+    STUTTER_SAME(*a, *b, INFLIGHTCOMMAND.WATCHING.value);
+    STUTTER_TON(a->INFLIGHTCOMMAND.WATCHTIMER, b->INFLIGHTCOMMAND.WATCHTIMER, "InFlightCommand.WatchTimer");
+    STUTTER_SAME(*a, *b, KEEPINSTEP.PARKED.value);
+    STUTTER_SAME(*a, *b, KEEPINSTEP.READACKED.value);
+    STUTTER_SAME(*a, *b, KEEPINSTEP.RETRYING.value);
+    STUTTER_SAMET(*a, *b, KEEPINSTEP.STEPTIME.value);
+    STUTTER_SAME(*a, *b, KEEPINSTEP.STEPSCAN.value);
+    STUTTER_TON(a->KEEPINSTEP.STEPTIMER, b->KEEPINSTEP.STEPTIMER, "KeepInStep.StepTimer");
+    return StutterChannel(&a->CHANNEL.value, &b->CHANNEL.value, check) && same;
+}
+
+static BOOL StutterCmd(const FB_PAC_CMD *a, const FB_PAC_CMD *b, UDINT scan, BOOL check) {
+    BOOL same = TRUE;
+    STUTTER_SAME(*a, *b, DONE.value);
+    STUTTER_SAME(*a, *b, BUSY.value);
+    STUTTER_SAME(*a, *b, ERROR.value);
+    STUTTER_SAME(*a, *b, ERRORID.value);
+    STUTTER_SAME(*a, *b, ERRORSOURCE.value);
+    STUTTER_SAME(*a, *b, ACKDATA.value);
+    STUTTER_SAME(*a, *b, ACKNOWLEDGED.value);
+    STUTTER_SAME(*a, *b, OPSTATUS.value);
+    STUTTER_SAME(*a, *b, PACERROR.value);
+    STUTTER_SAME(*a, *b, LASTEXECUTE.value);
+    STUTTER_SAME(*a, *b, EXECUTEEDGE.value);
+    STUTTER_TON(a->WAITTIMER, b->WAITTIMER, "WaitTimer");
+    STUTTER_TON(a->ACKTIMER, b->ACKTIMER, "AckTimer");
+    STUTTER_TON(a->ENDTIMER, b->ENDTIMER, "EndTimer");
+    STUTTER_SAME(*a, *b, STATE.value);
+    STUTTER_SAMET(*a, *b, TIMEOUTINFORCE.value);
+    STUTTER_SAMET(*a, *b, ENDTIMEOUTINFORCE.value);
+    STUTTER_SAME(*a, *b, ID.value);
+    STUTTER_SAME(*a, *b, TICKET.value);
+    STUTTER_SAME(*a, *b, QUEUED.value);
+    STUTTER_SAME(*a, *b, TICKETOFFSET.value);
+    STUTTER_SAME(*a, *b, ISSTOP.value);
+    STUTTER_SAME(*a, *b, CANSEND.value);
+    STUTTER_SAME(*a, *b, MINE.value);
+    STUTTER_SAME(*a, *b, SENT.value);
+    STUTTER_SAME(*a, *b, TOGGLED.value);
+    STUTTER_SAME(*a, *b, FINISHED.value);
+    STUTTER_SAME(*a, *b, RECORDED.value);
+    STUTTER_SAME(*a, *b, NUMBER.value);
+    STUTTER_SAME(*a, *b, SENDFLAG.value);
+    STUTTER_SAME(*a, *b, MODULESENDFLAG.value);
+    STUTTER_SAME(*a, *b, SENTCODE.value);
+    STUTTER_SAME(*a, *b, SENTPARAM.value);
+    STUTTER_SAME(*a, *b, SENTDATA.value);
+    STUTTER_SAME(*a, *b, RECEIVEFLAG.value);
+    STUTTER_SAME(*a, *b, EDGESCAN.value);
+    /* LastScan follows Channel.Scan in a scan the FB is called, else stays. */
+    STUTTER_CMP(b->LASTSCAN.value == a->LASTSCAN.value || b->LASTSCAN.value == scan, "LASTSCAN (unchanged or this scan)");
+    return same;
+}
+
+/* The limits a stretch of waiting scans must not pass (the waiting scan's condition, scan by scan): a running
+ * TON's Q, the owner counted away (FB_PAC_CmdInFlight: two scans without its call), the settling round trip
+ * after a resynchronisation (FB_PAC_CmdInterface, FB_PAC_CmdResync), the scans an unclaimed ticket waits. */
+static long long Ns(TIME t) { return (long long)t.tv_sec * 1000000000LL + t.tv_nsec; }
+static BOOL TonBelowLimit(const TON *t, long long nowNs) {
+    return !t->IN.value || t->Q.value || nowNs - Ns(t->START_TIME.value) < Ns(t->PT.value);
+}
+static BOOL OwnerAway(const ST_PAC_CMDCHANNEL *c) { return c->SCAN - c->OWNERSCAN >= 2; }
+static BOOL Settling(const ST_PAC_CMDCHANNEL *c) { return c->SCAN - c->RESYNCSCAN <= c->ROUNDTRIP; }
+static BOOL NoLimitPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFACE *i1, const FB_PAC_CMD *c0,
+                          const FB_PAC_CMD *c1, int callers) {
+    return NoTimerPasses(i0, i1, c0, c1, callers) && i0->UNCLAIMEDSCANS.value == i1->UNCLAIMEDSCANS.value
+           && OwnerAway(&i0->CHANNEL.value) == OwnerAway(&i1->CHANNEL.value)
+           && Settling(&i0->CHANNEL.value) == Settling(&i1->CHANNEL.value);
+}
+
+/* A stretch of d more waiting scans after the waiting scan just run, in one step (docs/verification.md): the
+ * clock and Channel.Scan advance by d, a caller called in the waiting scan keeps LastScan = Scan (and,
+ * Busy, counts d more Busy calls for P8: the harness), the owner called in it keeps OwnerScan = Scan (one not called stays away); and no limit passes within the stretch: every running TON still below its PT at the stretch's last scan,
+ * OwnerAway and Settling as before. By the lemma each of those d scans changes nothing else. */
+static void Stretch(FB_PAC_CMDINTERFACE *iface, FB_PAC_CMD *cmd, const BOOL *called, int callers, unsigned d,
+                    long long lastNs) {
+    ST_PAC_CMDCHANNEL *c = &iface->CHANNEL.value;
+    const BOOL away = OwnerAway(c), settling = Settling(c);
+    if (c->OWNERSCAN == c->SCAN) c->OWNERSCAN += d;
+    c->SCAN += d;
+    __CPROVER_assume(OwnerAway(c) == away && Settling(c) == settling);
+    __CPROVER_assume(TonBelowLimit(&iface->INFLIGHTCOMMAND.WATCHTIMER, lastNs)
+                     && TonBelowLimit(&iface->KEEPINSTEP.STEPTIMER, lastNs));
+    for (int k = 0; k < callers; ++k) {
+        if (!called[k]) continue; /* its timers run on, read again in its next call: a real event, not passed here */
+        cmd[k].LASTSCAN.value += d;
+        __CPROVER_assume(TonBelowLimit(&cmd[k].WAITTIMER, lastNs) && TonBelowLimit(&cmd[k].ACKTIMER, lastNs)
+                         && TonBelowLimit(&cmd[k].ENDTIMER, lastNs));
+    }
+}
+
+#endif
