@@ -266,7 +266,8 @@ FreeCommand WriteNearZeroCheck(std::uint32_t& from, int target) {
 // edge: while AUTO's probe (190B) is on its way, while its reply comes in, while the write's frame goes out and
 // while its reply comes in. No frame is taken on a "0" alone, each write ends Done, carried out once. With
 // F_PAC_Rs232FrameText's leading zero taken out, 90 of the 360 cases failed on each of the three timings whose
-// controller takes "0" (the texts whose CHECK reads "0" under the rule the probe confirmed).
+// controller takes "0" (the texts whose CHECK reads "0" under the rule the probe confirmed), on pacst's C and on
+// MATIEC's C alike (Rs232BitFlips failed on both too).
 TEST_P(Rs232SkippedCalls, AutoBeforeARuleIsConfirmedNeverSendsACheckOfZeroWhateverScansItMisses) {
     FreeRs232Program program(GetParam());
     program.Prepare();
