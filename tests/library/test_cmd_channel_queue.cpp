@@ -157,6 +157,31 @@ TEST_F(CmdChannelQueue, ATicketWhoseFbIsNoLongerCalledIsPassedOverAfterAScan) {
     EXPECT_TRUE(Done(0)) << "A: " << OutputsOf(fbs_[0]);
 }
 
+// The calling contract's first case (docs/fb/FB_PAC_Cmd.md): A queues behind C's long command, and the program
+// leaves A out until its Timeout (5 ms) has run out. Called again with the interface free, A ends with 16#8006
+// and its command never goes out: its Timeout counts from the Execute edge, not from the call that finds a turn.
+TEST_F(CmdChannelQueue, AnFbLeftOutBeforeItsTurnPastItsTimeoutEndsNeverSent) {
+    Request(2, 0x0A87, 3);
+    Cycle(1);
+    Acknowledge(false);
+    fbs_[0]->TIMEOUT.value = TIME{0, 5'000'000};
+    Request(0, 0x1906, 1);
+    Cycle(1);
+    ASSERT_TRUE(Busy(0));
+    called_[0] = false;
+    Cycle(2);
+    Acknowledge(true);  // C ends; A's ticket is passed over while A is away
+    Cycle(10);
+    ASSERT_EQ(ModuleCode(), kGetStat) << "the interface is free";
+    called_[0] = true;
+    for (int scan = 0; scan < 3; ++scan) {
+        Cycle(1);
+        EXPECT_FALSE(ModuleCode() == 0x1906 && ModuleParam() == 1) << "A's command goes out after its Timeout";
+    }
+    EXPECT_TRUE(OutputsOf(fbs_[0]).error) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "A: never sent";
+}
+
 // A's move is acknowledged and runs; then the program stops calling A (a CASE step left). The interface follows
 // the move to its end in A's absence: the module keeps the move, B waits while the reply shows it processing,
 // B goes in the scan that shows its end, and A, called again after B's command ended too, finds its own outcome
