@@ -682,9 +682,9 @@ TEST_P(CmdSkippedCalls, AControllerRestartDuringTheColdStartsFirstReadHoldsNoSto
 
 // D20: the calling contract's first case (docs/fb/FB_PAC_Cmd.md): FB 1 edges a read of N7 (Timeout 20 ms) while FB
 // 0's move of 100 units processes, and the program leaves FB 1 out from the scan after its edge until the move has
-// ended and the Timeout has run out, and 0 to 3 scans more. Called again with the interface free, FB 1 ends 16#8006 and the
-// controller never took its read. Before the fix FB 1 sent in that call: 112 of the 112 cases failed, on pacst's C
-// and on MATIEC's C alike.
+// ended and the Timeout has run out, and 0 to 3 scans more. Called again with the interface free, FB 1 ends
+// 16#8006 and the controller never took its read. Before the fix FB 1 sent in that call: 112 of the 112 cases
+// failed, on pacst's C and on MATIEC's C alike.
 TEST_P(CmdSkippedCalls, AnFbLeftOutBeforeItsTurnPastItsTimeoutIsNeverSent) {
     TwoCallerPlc plc(GetParam());
     plc.Boot();
@@ -695,7 +695,8 @@ TEST_P(CmdSkippedCalls, AnFbLeftOutBeforeItsTurnPastItsTimeoutIsNeverSent) {
         SCOPED_TRACE("FB 1 called again " + std::to_string(extra) + " scans after its Timeout and the move's end");
         // A move of 100 units (a tenth of a second and more at the axis's traverse speed).
         const double at = plc.Rig().Controller().Axes().Motion(2).Position();
-        const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0))};
+        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
+        const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)};
         plc.Taken();
         plc.Set(0, move);
         plc.Fb(0)->EXECUTE.value = TRUE;
