@@ -157,6 +157,56 @@ TEST_F(CmdChannelQueue, ATicketWhoseFbIsNoLongerCalledIsPassedOverAfterAScan) {
     EXPECT_TRUE(Done(0)) << "A: " << OutputsOf(fbs_[0]);
 }
 
+// The calling contract's first case (docs/fb/FB_PAC_Cmd.md): A queues behind C's long command, and the program
+// leaves A out until its Timeout (5 ms) has run out. Called again with the interface free, A ends with 16#8006
+// and its command never goes out: its Timeout counts from the Execute edge, not from the call that finds a turn.
+TEST_F(CmdChannelQueue, AnFbLeftOutBeforeItsTurnPastItsTimeoutEndsNeverSent) {
+    Request(2, 0x0A87, 3);
+    Cycle(1);
+    Acknowledge(false);
+    fbs_[0]->TIMEOUT.value = TIME{0, 5'000'000};
+    Request(0, 0x1906, 1);
+    Cycle(1);
+    ASSERT_TRUE(Busy(0));
+    called_[0] = false;
+    Cycle(2);
+    Acknowledge(true);  // C ends; A's ticket is passed over while A is away
+    Cycle(10);
+    ASSERT_EQ(ModuleCode(), kGetStat) << "the interface is free";
+    called_[0] = true;
+    for (int scan = 0; scan < 3; ++scan) {
+        Cycle(1);
+        EXPECT_FALSE(ModuleCode() == 0x1906 && ModuleParam() == 1) << "A's command goes out after its Timeout";
+    }
+    EXPECT_TRUE(OutputsOf(fbs_[0]).error) << "A: " << OutputsOf(fbs_[0]);
+    EXPECT_EQ(fbs_[0]->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "A: never sent";
+}
+
+// The calling contract (docs/fb/FB_PAC_Cmd.md): A's read goes out, and while the program leaves A out its Execute
+// falls and rises again, with a new parameter. That is no edge for A: called again, it ends Done for the read it
+// sent, the new parameter never goes out, and its Done holds while Execute stays TRUE.
+TEST_F(CmdChannelQueue, AnExecuteThatFallsAndRisesWhileTheFbIsLeftOutIsNoEdge) {
+    Request(0, 0x1906, 1);
+    Cycle(1);
+    ASSERT_EQ(ModuleParam(), 1);
+    called_[0] = false;
+    fbs_[0]->EXECUTE.value = FALSE;
+    Cycle(1);
+    fbs_[0]->EXECUTE.value = TRUE;
+    fbs_[0]->PARAM.value = 5;
+    Acknowledge(true);
+    Cycle(2);
+    called_[0] = true;
+    for (int scan = 0; scan < 4; ++scan) {
+        Cycle(1);
+        EXPECT_TRUE(Done(0)) << "scan " << scan << ", A: " << OutputsOf(fbs_[0]);
+        EXPECT_FALSE(ModuleCode() == 0x1906 && ModuleParam() == 5) << "a second command went out";
+    }
+    fbs_[0]->EXECUTE.value = FALSE;
+    Cycle(1);
+    EXPECT_FALSE(Done(0)) << "Done clears in the scan that sees Execute FALSE";
+}
+
 // A's move is acknowledged and runs; then the program stops calling A (a CASE step left). The interface follows
 // the move to its end in A's absence: the module keeps the move, B waits while the reply shows it processing,
 // B goes in the scan that shows its end, and A, called again after B's command ended too, finds its own outcome

@@ -680,6 +680,107 @@ TEST_P(CmdSkippedCalls, AControllerRestartDuringTheColdStartsFirstReadHoldsNoSto
     RecordProperty("StopsWithdrawnAtTheirToggle", withdrawnAtTheToggle);
 }
 
+// D20: the calling contract's first case (docs/fb/FB_PAC_Cmd.md): FB 1 edges a read of N7 (Timeout 20 ms) while FB
+// 0's move of 100 units processes, and the program leaves FB 1 out from the scan after its edge until the move has
+// ended and the Timeout has run out, and 0 to 3 scans more. Called again with the interface free, FB 1 ends
+// 16#8006 and the controller never took its read. Before the fix FB 1 sent in that call: 112 of the 112 cases
+// failed, on pacst's C and on MATIEC's C alike.
+TEST_P(CmdSkippedCalls, AnFbLeftOutBeforeItsTurnPastItsTimeoutIsNeverSent) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    const Command read{code::kGetIntReg, 7, 0};
+    const auto timeout = 20ms;
+    for (int extra = 0; extra <= 3; ++extra) {
+        SCOPED_TRACE("FB 1 called again " + std::to_string(extra) + " scans after its Timeout and the move's end");
+        // A move of 100 units (a tenth of a second and more at the axis's traverse speed).
+        const double at = plc.Rig().Controller().Axes().Motion(2).Position();
+        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
+        const Command move{code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)};
+        plc.Taken();
+        plc.Set(0, move);
+        plc.Fb(0)->EXECUTE.value = TRUE;
+        int n = 0;
+        for (; n < 20000 && !plc.Fb(0)->ACKNOWLEDGED.value && !plc.Final(0); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
+        plc.Set(1, read);
+        plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(timeout);
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        plc.Scan();
+        ASSERT_TRUE(plc.Fb(1)->BUSY.value) << "FB 1 queued behind the move";
+        const auto edge = plc.Rig().Now();
+        plc.Call(1, false);
+        for (n = 0; n < 20000 && !(plc.Final(0) && plc.Rig().Now() - edge > timeout); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(0)->DONE.value) << "the move ended";
+        for (n = 0; n < extra; ++n) plc.Scan();
+        plc.Call(1, true);
+        for (n = 0; n < 100 && !plc.Final(1); ++n) plc.Scan();
+        for (n = 0; n < 40; ++n) plc.Scan();
+        EXPECT_TRUE(plc.Fb(1)->ERROR.value) << "Done " << int{plc.Fb(1)->DONE.value};
+        EXPECT_EQ(plc.Fb(1)->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never sent";
+        const auto taken = plc.Taken();
+        EXPECT_EQ(Count(taken, read), 0) << "the controller took FB 1's read";
+        EXPECT_EQ(Count(taken, move), 1);
+        plc.ReleaseBoth();
+        if (HasFailure()) return;
+    }
+}
+
+// D21: FB_PAC_JogAxis's calling contract (docs/commands.md, "Waiting for its start"): the key held (Traverse TRUE,
+// Timeout 20 ms) while FB 1's move of axis 2 holds the interface, and the program leaves the jog out from the scan
+// after the press until the move has ended and the Timeout has run out, and 0 to 3 scans more. Called again with
+// the interface free, the jog ends 16#8006 and its start never goes out. Before the fix the start went out in that
+// call: 112 of the 112 cases failed, on pacst's C and on MATIEC's C alike.
+TEST_P(CmdSkippedCalls, AJogLeftOutWhileItsStartWaitsPastItsTimeoutNeverStarts) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    auto jog = PAC_FB(FB_PAC_JOGAXIS);
+    plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
+        jog->CHANNEL.value = channel;
+        jog();
+        channel = jog->CHANNEL.value;
+    });
+    jog->AXIS.value = 1;
+    jog->TARGET.value = 5000.0F;
+    jog->TIMEOUT.value = pac::ToIecTime(20ms);
+    const auto timeout = 20ms;
+    for (int extra = 0; extra <= 3; ++extra) {
+        SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after its Timeout and the move's end");
+        const double at = plc.Rig().Controller().Axes().Motion(2).Position();
+        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
+        plc.Taken();
+        plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        int n = 0;
+        for (; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value) << "the move processing";
+        jog->TRAVERSE.value = TRUE;
+        plc.Scan();
+        ASSERT_TRUE(jog->BUSY.value && !jog->ACTIVE.value) << "the jog's start waits";
+        const auto press = plc.Rig().Now();
+        plc.Call(0, false);
+        for (n = 0; n < 20000 && !(plc.Final(1) && plc.Rig().Now() - press > timeout); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(1)->DONE.value) << "the move ended";
+        for (n = 0; n < extra; ++n) plc.Scan();
+        const double jogAxisAt = plc.Rig().Controller().Axes().Motion(1).Position();
+        plc.Call(0, true);
+        for (n = 0; n < 100 && jog->BUSY.value; ++n) plc.Scan();
+        EXPECT_TRUE(jog->ERROR.value) << "Done " << int{jog->DONE.value} << ", Active " << int{jog->ACTIVE.value};
+        EXPECT_EQ(jog->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never started";
+        jog->TRAVERSE.value = FALSE;
+        for (n = 0; n < 300; ++n) plc.Scan();
+        int starts = 0;
+        for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
+        EXPECT_EQ(starts, 0) << "the controller took the jog's start";
+        EXPECT_EQ(plc.Rig().Controller().Axes().Motion(1).Position(), jogAxisAt) << "axis 1 moved";
+        plc.Fb(1)->EXECUTE.value = FALSE;
+        plc.Scan();
+        plc.Scan();
+        if (HasFailure()) return;
+    }
+}
+
 // FB_PAC_CmdInterface.ResyncStep: a PLC cold start whose first read the controller never answers (its replies
 // frozen, the status on). The read goes back to SEND = RECEIVE ResyncStep after its toggle (T#0S: the default
 // 250 ms), is toggled anew as long after that, and each later pair of waits is twice as long: one wait in time,
