@@ -77,6 +77,13 @@ TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
     result = RunTranslator({"build", "--user", "--out", Out(), fb, bad});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    // the other files are checked in the same run, but for what may need the file that could not be read
+    auto other = Write("PRG_Other.st", "PROGRAM PRG_Other\nVAR N : INT; M : PRG_Gone; END_VAR\nN := 'text';\n"
+                                       "N := Gone;\n");
+    result = RunTranslator({"check", "--user", fb, bad, other});
+    EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(other + ":3:6: error: type mismatch"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("undeclared"), std::string::npos) << result.output;
     result = RunTranslator({"build", "--out", Out(), fb, main});
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps the IEC end keywords";
 }
