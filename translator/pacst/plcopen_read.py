@@ -384,14 +384,13 @@ def _inheritance(add_data):
     """` EXTENDS Base IMPLEMENTS I_A, I_B` of CODESYS's pouinheritance in an interface's addData, or ''."""
     text = ""
     for data in add_data.iterfind(q("data")):
-        if data.get("name") == POU_INHERITANCE:
-            inheritance = data.find(q("Inheritance"))
-            extends = [(e.text or "").strip() for e in inheritance.iterfind(q("Extends"))] if inheritance is not None \
-                else []
-            implements = [(e.text or "").strip() for e in inheritance.iterfind(q("Implements"))] \
-                if inheritance is not None else []
-            text += "".join(f" EXTENDS {e}" for e in extends if e)
-            text += (" IMPLEMENTS " + ", ".join(i for i in implements if i)) if any(implements) else ""
+        inheritance = data.find(q("Inheritance")) if data.get("name") == POU_INHERITANCE else None
+        if inheritance is None:
+            continue
+        extends = [(e.text or "").strip() for e in inheritance.iterfind(q("Extends"))]
+        implements = [(e.text or "").strip() for e in inheritance.iterfind(q("Implements"))]
+        text += "".join(f" EXTENDS {e}" for e in extends if e)
+        text += (" IMPLEMENTS " + ", ".join(i for i in implements if i)) if any(implements) else ""
     return text
 
 
