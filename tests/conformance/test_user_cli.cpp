@@ -77,6 +77,13 @@ TEST_F(TranslatorUserCli, PlainStFileMayLeaveOutItsPousEndKeyword) {
     result = RunTranslator({"build", "--user", "--out", Out(), fb, bad});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    // the other files are checked in the same run, but for what may need the file that could not be read
+    auto other = Write("PRG_Other.st", "PROGRAM PRG_Other\nVAR N : INT; M : PRG_Gone; END_VAR\nN := 'text';\n"
+                                       "N := Gone;\n");
+    result = RunTranslator({"check", "--user", fb, bad, other});
+    EXPECT_NE(result.output.find(bad + ":4:1: error: syntax error"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(other + ":3:6: error: type mismatch"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("undeclared"), std::string::npos) << result.output;
     result = RunTranslator({"build", "--out", Out(), fb, main});
     EXPECT_EQ(result.exitCode, 1) << "the library's subset keeps the IEC end keywords";
 }
@@ -257,10 +264,17 @@ TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
                                     "<interface><localVars><variable name=\"n\"><type><INT/></type></variable>"
                                     "</localVars></interface>\n"
                                     "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;\n"
-                                    "n := Nope;</xhtml></ST></body>\n</pou>\n</pous></types></project>\n");
+                                    "n := Nope;</xhtml></ST></body>\n<addData><data name=\"http://www.3s-software.com/"
+                                    "plcopenxml/method\" handleUnknown=\"implementation\">\n<Method name=\"Step\">"
+                                    "<interface/>\n<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := 1;\n"
+                                    "n := Nowhere;</xhtml></ST></body></Method></data></addData>\n"
+                                    "</pou>\n</pous></types></project>\n");
     auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(xml + ":7:6: error: undeclared name 'Nope' (in FB_A)"), std::string::npos)
+        << result.output;
+    // in a METHOD's body too, at its line (a TcUnit test's asserts are in METHODs)
+    EXPECT_NE(result.output.find(xml + ":11:6: error: undeclared name 'Nowhere' (in FB_A)"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("FB_A.st"), std::string::npos) << result.output;
 }

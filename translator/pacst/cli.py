@@ -4,6 +4,7 @@ only checks; `pacst order` prints files in the declaration order the others need
 import argparse
 import json
 import os
+import re
 import sys
 import tempfile
 import time
@@ -34,8 +35,23 @@ def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native
     return _translate_parsed(results[:len(files)], results[len(files):], user, native, namespaces)
 
 
+# What a refusal may owe to a declaration pacst could not read: left out beside a file's syntax error
+_MAY_DEPEND = re.compile(r"undeclared|declaration was refused|cannot be used|before its declaration|"
+                         r"has no (variable|member|METHOD|PROPERTY|value)", re.I)
+
+
 def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None):
     # A fault in a POU file is reported before any in a global list.
+    unread = [r for r in file_results if isinstance(r, StError)]
+    if user and unread and len(unread) < len(file_results):
+        # user mode: the files that were read are checked too, in the same run, but for the refusals that
+        # may be owed to a declaration in a file that could not be read
+        try:
+            _translate_parsed([r for r in file_results if not isinstance(r, StError)], [], user, native,
+                              namespaces)
+        except StErrors as e:
+            unread += [err for err in e.errors if not _MAY_DEPEND.search(err.message)]
+        raise StErrors(unread)
     sources = _parsed(file_results)
     lists = _parsed(list_results)
     if user:

@@ -967,12 +967,13 @@ class Compiler:
         if kind == "fb" and getattr(node, "implements", None) is not None:
             self._implements(pou, node.implements)
         try:
-            pou.body_c = BodyCompiler(self, pou).compile()
             errors = []
-            for m in members:
+            for p in [pou] + members:  # the body's refusals and its METHODs' in one run
                 try:
-                    m.body_c = BodyCompiler(self, m).compile()
+                    p.body_c = BodyCompiler(self, p).compile()
                 except (StError, StErrors) as e:
+                    if not self.user:
+                        raise
                     errors += e.errors if isinstance(e, StErrors) else [e]
             if errors:
                 raise StErrors(errors)

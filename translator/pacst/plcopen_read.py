@@ -62,6 +62,8 @@ class StObject:
     # same objects read from two layouts of one export compare equal.
     xml_line: int = field(default=0, compare=False)  # the object's element in the XML file
     body_xml_line: int = field(default=0, compare=False)  # the line where its ST body starts (0: none)
+    # each member body's (first line in `members`, line where it starts in the XML file, its lines)
+    member_lines: tuple = field(default=(), compare=False)
 
     def st(self):
         """The object as the text of one ST file."""
@@ -136,20 +138,26 @@ def at_source(err):
 
 def xml_position(xml, obj, st_line, col=1):
     """(line, column) in the XML file `xml` of line `st_line` of the ST file written from its object `obj`: the
-    body's line, or the object's element for its declaration and members."""
+    line in the body or in a METHOD's, ACTION's or PROPERTY accessor's body, else the object's element."""
     first = obj.declaration.count("\n") + 1  # the body's first line in the ST file
-    in_body = obj.body is not None and first <= st_line < first + obj.body.rstrip().count("\n") + 1
-    if not (in_body and obj.body_xml_line):
-        return obj.xml_line or 1, col
-    line = obj.body_xml_line + st_line - first
-    if st_line == first:  # the body's first line follows <xhtml ...> on its XML line
-        try:
-            with open(xml, encoding="utf-8", errors="replace") as f:
-                text = f.read().splitlines()[line - 1]
-            col += text.index(">", text.index("<xhtml")) + 1
-        except (OSError, IndexError, ValueError):
-            pass
-    return line, col
+    spans = []
+    if obj.body is not None:
+        lines = obj.body.rstrip().count("\n") + 1
+        spans.append((first, obj.body_xml_line, lines))
+        members = first + lines + 1  # after END_<POU>
+        spans += [(members + start - 1, xml_line, n) for start, xml_line, n in obj.member_lines]
+    for start, xml_line, n in spans:
+        if xml_line and start <= st_line < start + n:
+            line = xml_line + st_line - start
+            if st_line == start:  # a body's first line follows <xhtml ...> on its XML line
+                try:
+                    with open(xml, encoding="utf-8", errors="replace") as f:
+                        text = f.read().splitlines()[line - 1]
+                    col += text.index(">", text.index("<xhtml")) + 1
+                except (OSError, IndexError, ValueError):
+                    pass
+            return line, col
+    return obj.xml_line or 1, col
 
 
 def origins(xml_paths):
@@ -279,28 +287,49 @@ def _pou(element):
     name, kind = element.get("name"), element.get("pouType")
     if element.find(f"{q('transitions')}/{q('transition')}") is not None:
         raise PlcopenReadError(f"{name}: TRANSITIONs are not read")
-    members = []
+    members, spans = [], []
+
+    def add(read, member):
+        text, found = _at(read, member)
+        offset = sum(m.count("\n") for m in members)
+        spans.extend((offset + start, xml_line, n) for start, xml_line, n in found)
+        members.append(text)
+
     for action in element.iterfind(f"{q('actions')}/{q('action')}"):  # a user program's ACTIONs
-        members.append(_at(lambda a: f"ACTION {a.get('name')} :\n{_st_body(a, name)}\nEND_ACTION\n", action))
+        add(lambda a: _member_text(f"ACTION {a.get('name')} :", [], a, name, "END_ACTION"), action)
     for data in element.iterfind(f"{q('addData')}/{q('data')}"):
         if data.get("name") == CODESYS + "method":  # CODESYS keeps a POU's METHODs in its addData
-            members += [_at(_method, m) for m in data if isinstance(m.tag, str)]
+            for m in data:
+                if isinstance(m.tag, str):
+                    add(_method, m)
         elif data.get("name") == CODESYS + "property":  # and its PROPERTYs, each with a Get and a Set
-            members += [_at(_property, p) for p in data if isinstance(p.tag, str)]
+            for p in data:
+                if isinstance(p.tag, str):
+                    add(_property, p)
         elif data.get("name") in _POU_EXTENSIONS:
             raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
                                    "yet: write a METHOD")
     header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
     xhtml = element.find(f"{q('body')}/{q('ST')}/{{{XHTML}}}xhtml")
     return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members),
-                    element.sourceline or 0, xhtml.sourceline if xhtml is not None else 0)
+                    element.sourceline or 0, xhtml.sourceline if xhtml is not None else 0, tuple(spans))
+
+
+def _member_text(header, blocks, holder, name, end):
+    """(the ST of a METHOD, ACTION or PROPERTY accessor whose ST body `holder` holds, [(its body's first line in
+    that text, the line where the body starts in the XML file, its lines)])."""
+    body = _st_body(holder, name).rstrip()
+    text = f"{header}\n{''.join(blocks)}{body}\n{end}\n"
+    xhtml = holder.find(f"{q('body')}/{q('ST')}/{{{XHTML}}}xhtml")
+    first = header.count("\n") + "".join(blocks).count("\n") + 2
+    return text, [(first, xhtml.sourceline, body.count("\n") + 1)] if xhtml is not None and xhtml.sourceline else []
 
 
 def _method(element):
-    """A METHOD of CODESYS's export (its own interface and ST body) as ST."""
+    """A METHOD of CODESYS's export (its own interface and ST body) as ST, and where its body is."""
     name = element.get("name") or element.get("Name")
     header, blocks = _interface_text(element, f"METHOD {name}", name)
-    return f"{header}\n{''.join(blocks)}{_st_body(element, name).rstrip()}\nEND_METHOD\n"
+    return _member_text(header, blocks, element, name, "END_METHOD")
 
 
 def _property(element):
@@ -308,13 +337,15 @@ def _property(element):
     and ST body) as ST: the PROPERTY, then PROPERTY Name.Get and PROPERTY Name.Set."""
     name = element.get("name") or element.get("Name")
     header, blocks = _interface_text(element, f"PROPERTY {name}", name)
-    text = f"{header}\n{''.join(blocks)}END_PROPERTY\n"
+    text, spans = f"{header}\n{''.join(blocks)}END_PROPERTY\n", []
     result = header[len(f"PROPERTY {name}"):]  # ' : T'
     for tag, accessor in (("GetAccessor", "Get"), ("SetAccessor", "Set")):
         for part in element.iterfind(q(tag)):
             part_header, part_blocks = _interface_text(part, f"PROPERTY {name}.{accessor}{result}", name)
-            text += f"{part_header}\n{''.join(part_blocks)}{_st_body(part, name).rstrip()}\nEND_PROPERTY\n"
-    return text
+            part_text, found = _member_text(part_header, part_blocks, part, name, "END_PROPERTY")
+            spans += [(text.count("\n") + start, xml_line, n) for start, xml_line, n in found]
+            text += part_text
+    return text, spans
 
 
 def _st_body(element, name):
@@ -353,14 +384,13 @@ def _inheritance(add_data):
     """` EXTENDS Base IMPLEMENTS I_A, I_B` of CODESYS's pouinheritance in an interface's addData, or ''."""
     text = ""
     for data in add_data.iterfind(q("data")):
-        if data.get("name") == POU_INHERITANCE:
-            inheritance = data.find(q("Inheritance"))
-            extends = [(e.text or "").strip() for e in inheritance.iterfind(q("Extends"))] if inheritance is not None \
-                else []
-            implements = [(e.text or "").strip() for e in inheritance.iterfind(q("Implements"))] \
-                if inheritance is not None else []
-            text += "".join(f" EXTENDS {e}" for e in extends if e)
-            text += (" IMPLEMENTS " + ", ".join(i for i in implements if i)) if any(implements) else ""
+        inheritance = data.find(q("Inheritance")) if data.get("name") == POU_INHERITANCE else None
+        if inheritance is None:
+            continue
+        extends = [(e.text or "").strip() for e in inheritance.iterfind(q("Extends"))]
+        implements = [(e.text or "").strip() for e in inheritance.iterfind(q("Implements"))]
+        text += "".join(f" EXTENDS {e}" for e in extends if e)
+        text += (" IMPLEMENTS " + ", ".join(i for i in implements if i)) if any(implements) else ""
     return text
 
 
