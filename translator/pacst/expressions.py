@@ -1037,9 +1037,12 @@ class ExprCompiler:
                 T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
             shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
+        if not t.is_bit and self.comp.user and t.is_int:  # TwinCAT's manual leaves a signed shift's sign bits open
+            word = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}[t.bits]
+            raise self.err(value, f"{fn} on {t.name}: the manuals leave open how a signed integer shifts; convert it "
+                                  f"to the bit string of its width ({fn}({t.name}_TO_{word}(x), n))")
         if not t.is_bit:
-            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset), and unsigned "
-                                  "integers in user programs: convert it (INT_TO_WORD)")
+            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         return self._shift_code(node, fn, te, t, count, want, value)
 
     def _shift_code(self, node, fn, te, t, count, want=None, value=None):
