@@ -1386,6 +1386,10 @@ class Compiler:
             # TwinCAT copies the caller's instance into a FUNCTION's or METHOD's VAR_INPUT (Tc3_Event's I_Logger.M_Log)
             self.dialect(item, "an FB instance in a VAR_INPUT of a FUNCTION or METHOD")
             return
+        if vtype.is_fb and section == "temp" and self.user and pou.kind == "fb":
+            # TwinCAT initialises an FB's VAR_TEMP in every call, an FB instance too (TcUnit's FB_TestResults)
+            self.dialect(item, "an FB instance in a VAR_TEMP")
+            return
         if vtype.is_fb and section != "var":
             raise self.err(item, "function block instances are only allowed in VAR")
         if vtype.is_fb and constant:

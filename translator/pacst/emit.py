@@ -285,7 +285,10 @@ class Emitter:
         out.append("  }")
         out.append("  data__->ENO.value = TRUE;")
         for v in pou.vars:
-            if v.section == "temp":  # VAR_TEMP starts from its initial value in every call
+            if v.section == "temp" and v.type.is_fb:  # an FB instance in VAR_TEMP (user mode): initialised too
+                out += ["  " + line.replace(", retain);", ", FALSE);")
+                        for line in self.comp.init_code(v, f"data__->{v.cname}")]
+            elif v.section == "temp":  # VAR_TEMP starts from its initial value in every call
                 out += ["  " + line for line in self.comp.init_code(v, f"data__->{v.cname}.value")]
         out += self._body(pou)
         out += ["  goto __end;", "__end:", "  return;", "}", ""]

@@ -372,8 +372,8 @@ class ExprCompiler:
         return self._value_of(node)
 
     def _value_of(self, node):
-        if self.comp.user and _cls(node) == "SimpleVariable" and node.dereferenced and _name(node.name).upper() == "THIS" \
-                and (self.body is None or self.body.lookup("THIS") is None):
+        if self.comp.user and _cls(node) == "SimpleVariable" and node.dereferenced \
+                and _name(node.name).upper() == "THIS" and (self.body is None or self.body.lookup("THIS") is None):
             return self._this_instance(node)
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
         known = system.enum_value(self.comp, node) if self.comp.user and (
@@ -631,7 +631,8 @@ class ExprCompiler:
         if a.type is T.ANY_INT and b.type is T.ANY_INT and (want is None or not want.is_bit):
             raise self.err(node.op, f"{op} of two integer literals: give one a type (WORD#16#FF)")
         for te in (a, b):  # INT AND BOOL is refused for the INT, at the operator
-            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit or self.comp.user and te.type.is_int):
+            if te.type is not T.ANY_INT and not (te.type.is_bool or te.type.is_bit
+                                                 or self.comp.user and te.type.is_int):
                 raise self.err(node.op, f"{op} on {te.type.name}: only BOOL, BYTE, WORD and DWORD (portable subset)")
         t, ca, cb = self.unify(a, b, want, node)
         if t.is_bool:
@@ -1036,9 +1037,12 @@ class ExprCompiler:
                 T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
             shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
+        if not t.is_bit and self.comp.user and t.is_int:  # TwinCAT's manual leaves a signed shift's sign bits open
+            word = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}[t.bits]
+            raise self.err(value, f"{fn} on {t.name}: the manuals leave open how a signed integer shifts; convert it "
+                                  f"to the bit string of its width ({fn}({t.name}_TO_{word}(x), n))")
         if not t.is_bit:
-            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset), and unsigned "
-                                  "integers in user programs: convert it (INT_TO_WORD)")
+            raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         return self._shift_code(node, fn, te, t, count, want, value)
 
     def _shift_code(self, node, fn, te, t, count, want=None, value=None):
@@ -1128,7 +1132,8 @@ class ExprCompiler:
         src = self.body.ref(arg, raw=True)
         if src.type is v.type or src.type.is_pointer and src.type.reference and src.type.target is v.type.target:
             return f"(({v.type.cname})({src.read()}))"
-        if src.type is v.type.target and type(src) is Ref:  # not a bit or a byte of a STRING: no address
+        if (src.type is v.type.target or system.same_struct(src.type, v.type.target)) and type(src) is Ref:
+            # not a bit or a byte of a STRING (no address); an ANY input to a REFERENCE TO __SYSTEM.AnyType as it is
             self.comp.dialect(arg, "a variable passed to a REFERENCE TO input")
             return f"(({v.type.cname})&({src.read()}))"
         return None
@@ -1181,7 +1186,8 @@ class ExprCompiler:
             arg = given.get(v.cname)
             if v.section == "input":
                 if arg is None and v.type.is_fb:
-                    raise self.err(node, f"input '{v.name}' of {pou.name}, an instance of {v.type.name}, must be passed")
+                    raise self.err(node, f"input '{v.name}' of {pou.name}, an instance of {v.type.name}, must be "
+                                         "passed")
                 if arg is None:
                     args.append(self.comp.default_c(v.type) if v.type.is_elementary or v.type.is_enum
                                 else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
