@@ -11,7 +11,8 @@ that verdict: an accepted snippet translates, and `pacst matiec` would
 refuse it (a construct of the dialect, MATIEC compiles the portable subset only) unless the row says MATIEC
 takes it; a refused one is refused at its line and column with that text. The page's table of standard
 functions gives a call and its result type in each row: each accepted call is assigned to a variable of
-that type in a PROGRAM and translates, each refused one is refused. Exit status 1 names every mismatch."""
+that type in a PROGRAM and translates (the accepted calls in one PROGRAM, each alone when that one is
+refused), each refused one is refused. Exit status 1 names every mismatch."""
 import argparse
 import glob
 import os
@@ -121,20 +122,31 @@ def main(argv=None):
                 problems.append(f"{name}: expected {want}..., got {error or 'no error'}")
 
     with tempfile.TemporaryDirectory() as tmp:
+        def call_error(calls):
+            """The first error of a PROGRAM assigning each (call, type) of `calls` to a variable of its own."""
+            path = os.path.join(tmp, "Dialect_Call.st")
+            with open(path, "w", encoding="utf-8") as f:
+                f.write("PROGRAM Dialect_Call\nVAR\n" + "".join(f"  X{i} : {t};\n" for i, (_, t) in enumerate(calls))
+                        + "  S : STRING;\n  W : WORD;\nEND_VAR\n"
+                        + "".join(f"X{i} := {c};\n" for i, (c, _) in enumerate(calls)) + "END_PROGRAM\n")
+            return translate(path)[0]
+
+        accepted = []
         for cells in table_rows(text, "## Standard functions"):
             call = CALL.match(cells[0])
             if call is None or not re.fullmatch(r"\w+", cells[2]):
                 problems.append(f"{page}: the row '{cells[0]}' is no `call` with a result type")
-                continue
-            path = os.path.join(tmp, "Dialect_Call.st")
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(f"PROGRAM Dialect_Call\nVAR\n  X : {cells[2]};\n  S : STRING;\n  W : WORD;\nEND_VAR\n"
-                        f"X := {call.group(1)};\nEND_PROGRAM\n")
-            error, _ = translate(path)
-            if cells[1].lower().startswith("accepted") and error is not None:
-                problems.append(f"{page}: {cells[0]} is accepted on the page, refused: {error}")
-            if not cells[1].lower().startswith("accepted") and error is None:
+            elif cells[1].lower().startswith("accepted"):
+                accepted.append((cells[0], call.group(1), cells[2]))
+            elif call_error([(call.group(1), cells[2])]) is None:
                 problems.append(f"{page}: {cells[0]} is refused on the page, but translates")
+        # The accepted calls in one PROGRAM, each assignment checked on its own by the translator: when it
+        # translates, each call alone does; when not, each is translated alone to name the refused ones.
+        if accepted and call_error([(c, t) for _, c, t in accepted]) is not None:
+            for row, c, t in accepted:
+                error = call_error([(c, t)])
+                if error is not None:
+                    problems.append(f"{page}: {row} is accepted on the page, refused: {error}")
     for p in problems:
         print(p)
     print(f"check_user_dialect: {len(named)} constructs, {len(problems)} problem(s)")

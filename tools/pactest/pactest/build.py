@@ -134,7 +134,9 @@ class HostBuild:
         flags += ["-std=c99", "-fwrapv", "-w"]
         return flags + (["--coverage", "-O0", "-DPACST_NO_FORCING"] if self.coverage else ["-O1"])
 
-    def _compile(self, source, cxx, shared=False):
+    def _compile(self, source, cxx, shared=False, included=()):
+        """`source`'s object, compiled unless one with the same command and POUS.h is newer than it (and than
+        the files it `included`)."""
         compiler = os.environ.get("CXX" if cxx else "CC", "c++" if cxx else "cc")
         declared = self.pac.library_c if shared else self.st_out
         includes = ([] if shared else [self.st_out]) + [project.HOST] + self.pac.include_dirs() + [self.pac.library_c]
@@ -148,11 +150,25 @@ class HostBuild:
         os.makedirs(folder, exist_ok=True)
         obj = os.path.join(folder, f"{os.path.splitext(os.path.basename(source))[0]}-{key}.o")
         # the shared host object is also older than a rebuilt library (a rig header may have changed) or host header
-        sources = [source] + ([os.path.join(project.HOST, "pactest_host.hpp")] + self.pac.libraries if shared else [])
+        sources = [source, *included] + \
+            ([os.path.join(project.HOST, "pactest_host.hpp")] + self.pac.libraries if shared else [])
         if os.path.exists(obj) and os.path.getmtime(obj) >= max(os.path.getmtime(f) for f in sources):
             return obj
         compile_to(command, obj, f"compiling {os.path.basename(source)}", whole=shared)
         return obj
+
+    def _unit(self, c_files):
+        """OUT/pactest_st.c, which includes the C of every ST file of the program: compiled as one unit, as the
+        build compiles the library (PAC_ST_UNITY), it reads POUS.h and compiles pacst_iec.h's helpers once, not once
+        per file (half the compiler's time); the #line directives still name each statement's ST line, and a
+        line outside them its own C file. Written only when the list changes, so an unchanged program is not
+        compiled again."""
+        unit = os.path.join(self.out, "pactest_st.c")
+        text = "/* pac-test: the program's C as one unit */\n" + "".join(f'#include "{c}"\n' for c in c_files)
+        if not os.path.exists(unit) or open(unit, encoding="utf-8").read() != text:
+            with open(unit, "w", encoding="utf-8") as f:
+                f.write(text)
+        return unit
 
     def build(self, symbols, tests):
         os.makedirs(self.obj, exist_ok=True)
@@ -166,10 +182,12 @@ class HostBuild:
                    if n.endswith(".c") and os.path.splitext(n)[0] not in library]
         cxx_files = [generated, os.path.join(project.HOST, "pactest_natives.cpp")]
         host = os.path.join(project.HOST, "pactest_host.cpp")
+        unit = self._unit(c_files)
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             shared = pool.submit(self._compile, host, True, True)
-            objects = list(pool.map(lambda s: self._compile(s, s.endswith(".cpp")), c_files + cxx_files))
-            objects.append(shared.result())
+            program = pool.submit(self._compile, unit, False, False, c_files)
+            objects = list(pool.map(lambda s: self._compile(s, True), cxx_files))
+            objects += [program.result(), shared.result()]
         # An earlier build's objects (another key) would add their old lines to the coverage counts.
         keep = {os.path.splitext(o)[0] for o in objects}
         for name in os.listdir(self.obj):
