@@ -27,11 +27,14 @@
 
 #include "bus_timing.hpp"
 #include "free_caller.hpp"
+#include "gvl_constants.hpp"
 #include "pac/axis_module_bits.hpp"
 #include "pac/fb_instance.hpp"
+#include "pac/iec_time.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/sim/axis_module.hpp"
 #include "pac/sim/pa_control.hpp"
+#include "plcopen_pins.hpp"
 #include "real_bits.hpp"
 #include "rig_timing.hpp"
 
@@ -148,6 +151,19 @@ public:
     void PressResetError() { pressReset_ = true; }
     std::chrono::nanoseconds Now() const { return rig_.Now(); }
     std::size_t JobsTaken() { return Ledger().size(); }
+    // Outside the free program (Prepare(false)): the job the next calls carry, Execute, and whether the program
+    // leaves the FB out of its scans.
+    void Drive(const Job& job, bool execute) {
+        job_ = job;
+        axis_->EXECUTE.value = execute ? TRUE : FALSE;
+    }
+    void LeaveOut(bool out) { leftOut_ = out; }
+    pac::FbInstance<FB_PAC_AXIS>& Axis() { return axis_; }
+    // ACTIVE in the axis module the program read in its last scan, whether it called the FB or not.
+    bool ActiveOnBus() const { return activeOnBus_; }
+    std::uint32_t ControlOnBus() const {
+        return pac::sim::ReadDword(rig_.ToPac().Module12(layout_.AxisOffset(1)), 0);
+    }
 
     void Scan(int n = 1) {
         for (int i = 0; i < n; ++i) {
@@ -238,6 +254,8 @@ private:
 
     void Program(const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
         if (free_) WatchAxisError();
+        const std::uint32_t status = pac::sim::ReadDword(fromPac.Module12(layout_.AxisOffset(1)), 0);
+        activeOnBus_ = (status & pac::axis_status::kActive) != 0;
         const bool called = !free_ || caller_.Plan(scans_, rig_.Now());
         if (free_ && caller_.NewCommand()) job_ = scripted_ ? scriptedJob_ : NextJob();
         if (free_ && !scripted_) {
@@ -296,7 +314,7 @@ private:
             for (std::size_t i = 0; i < 12; ++i) toPac[offset + i] = axis_->TOPAC.value.table[i];
         };
         if (!free_) {
-            call();
+            if (!leftOut_) call();
             return;
         }
         const auto ended = pac::test::CallFree(caller_, axis_, BusyBound(), call, [this] {
@@ -477,6 +495,8 @@ private:
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
     bool free_ = false;
+    bool leftOut_ = false;  // outside the free program: the FB is not called
+    bool activeOnBus_ = false;
     pac::test::StatusBlips blips_;
     bool scripted_ = false;
     Job scriptedJob_;
@@ -629,6 +649,58 @@ TEST_P(AxisSkippedCalls, AResetPressedAgainAfterTheCauseIsGoneClearsTheError) {
     axes.SetDisturbance(1, program.Now(), 0.0);
     press();
     EXPECT_FALSE(axes.Motion(1).Fault()) << "the first press after the cause is gone";
+}
+
+// D22: the calling contract (docs/fb/FB_PAC_Axis.md, "Calling contract": the waits run on the clock, a wait that
+// ran out meanwhile ends the job in the next call, 16#8006 before Start). A move runs at full speed; a new Execute
+// edge with another job ends it (CommandAborted) and the new job, with Timeout 20 ms, waits for the braking axis.
+// The program leaves the FB out from the call after that until the Timeout has run out and the bus shows the axis
+// free (ACTIVE 0), and `extra` scans more. Called again, the job ends 16#8006 and the controller's ledger holds no
+// job taken over after its edge.
+void LeaveOutAJobWaitingForTheAxisPastItsTimeout(FreeAxisProgram& program, const AxisFreeCase& c, int extra) {
+    auto& axis = program.Axis();
+    const auto timeout = 20ms;
+    constexpr auto kAbsolute = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
+    const Job first{kAbsolute, 70.0F};
+    program.Drive(first, true);
+    int n = 0;
+    for (; n < 20000 && !axis->RUNNING.value && !pac::test::IsFinal(axis); ++n) program.Scan();
+    ASSERT_TRUE(axis->RUNNING.value) << "the first move runs";
+    program.Scan(c.timing.ScansFor(10ms));
+    program.Drive(first, false);
+    program.Scan();
+    const Job next{kAbsolute, 40.0F + 0.0625F * static_cast<float>(extra)};
+    axis->TIMEOUT.value = pac::ToIecTime(timeout);
+    const std::size_t taken = program.JobsTaken();
+    program.Drive(next, true);
+    program.Scan();
+    ASSERT_TRUE(axis->COMMANDABORTED.value) << "the first move, in the edge scan";
+    program.Scan();
+    ASSERT_TRUE(axis->BUSY.value && program.ActiveOnBus() && (program.ControlOnBus() & pac::axis_control::kStart) == 0)
+        << "the new job waits for the braking axis";
+    const auto waitFrom = program.Now();
+    program.LeaveOut(true);
+    for (n = 0; n < 20000 && (program.ActiveOnBus() || program.Now() - waitFrom <= timeout); ++n) program.Scan();
+    program.Scan(extra);
+    program.LeaveOut(false);
+    program.Scan();
+    EXPECT_TRUE(axis->ERROR.value) << "Busy " << int{axis->BUSY.value} << ", Done " << int{axis->DONE.value};
+    EXPECT_EQ(axis->ERRORID.value, pac::test::GvlConstants{}["PAC_LIB_ERR_INTERFACE_BUSY"]) << "Start not sent";
+    program.Drive(next, false);
+    program.Scan(c.timing.ScansFor(50ms));
+    EXPECT_EQ(program.JobsTaken(), taken) << "the controller took the job over";
+}
+
+// D22 on each bus timing, called again 0 to 3 scans after the Timeout and the axis free. Before the fix Start went
+// out in that call: 16 of the 16 cases failed, on pacst's C and on MATIEC's C alike.
+TEST_P(AxisSkippedCalls, AJobLeftOutWhileItWaitsForTheAxisPastItsTimeoutIsNeverStarted) {
+    for (int extra = 0; extra <= 3; ++extra) {
+        SCOPED_TRACE("called again " + std::to_string(extra) + " scans after its Timeout and the axis free");
+        FreeAxisProgram program(GetParam());
+        program.Prepare(false);  // the case decides every call
+        ASSERT_FALSE(HasFatalFailure());
+        LeaveOutAJobWaitingForTheAxisPastItsTimeout(program, GetParam(), extra);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, AxisSkippedCalls,
