@@ -12,7 +12,9 @@
  * pins too; -DCBMC__PLC_RESTARTS=0 leaves it out). With CALLERS = 2 the second FB sends any command too. The
  * controller keeps a ledger of the commands it took; P5 matches every Done with an entry of its own. The channel
  * starts past its first handshake (a program running since its cold start), so that the K scans go to commands;
- * a PLC restart starts a fresh channel, whose first handshake is then checked.
+ * a PLC restart starts a fresh channel, whose first handshake is then checked. With -DCBMC__STUTTER=1 the scans
+ * in which the PLC only waits are compressed (stutter.h: after a still scan up to CBMC__STRETCH_MAX more in one
+ * step, and S1, that this loses nothing, checked in the same run).
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
@@ -356,7 +358,7 @@ int main(void) {
         /* A stretch (stutter.h): after a still scan, d more scans like it in one step, before this one. */
         if (CBMC__STUTTER && prevStill && waiting) {
             const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
-            Stretch(&iface, cmd, called, CBMC__CALLERS, d, (long long)(n + stretched + (long)d - 1) * CYCLE_NS);
+            Stretch(&iface, cmd, called, CBMC__CALLERS, d, (long long)(n - 1 + stretched) * CYCLE_NS);
             for (int i = 0; i < CBMC__CALLERS; ++i) {
                 if (called[i] && cmd[i].BUSY.value) watch[i].plcopen.busyScans += (int)d; /* P8 counts its calls */
                 if (skipRun[i] > 0) skipRun[i] += (int)d; /* a skip goes on through the stretch */

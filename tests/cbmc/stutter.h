@@ -1,15 +1,16 @@
-/* The waiting-scan lemma of the CMD harness (-DCBMC__STUTTER=1, docs/verification.md, "the waiting scans"): a
- * scan in which the reply, the program's pins, the calls and their order equal those of the scan before, and
- * no limit passes (NoLimitPasses: no timer's Q changes, no scan count crosses its bound) changes nothing of FB_PAC_CmdInterface, its channel and the command FBs but the counters
- * of time and scans: TON's ET and CURRENT_TIME, Channel.Scan, and an FB's LastScan and the channel's OwnerScan,
- * which follow Channel.Scan in the scan the FB is called. Each other field is one assertion, so that CBMC names
- * the field a waiting scan changes. */
+/* The waiting scans of the CMD harness (-DCBMC__STUTTER=1, docs/verification.md, "the waiting scans"). A scan is
+ * waiting when the reply, the calls, their order and the pins are those of the scan before and it passes no limit
+ * (NoLimitPasses: no TON's Q changes, no scan count crosses its threshold); still when, besides, it changes
+ * nothing of FB_PAC_CmdInterface, its channel and the command FBs but the counters of time and scans (TON's ET
+ * and CURRENT_TIME, Channel.Scan, an FB's LastScan and the channel's OwnerScan, which follow Channel.Scan in a
+ * scan the FB is called). S1: a waiting scan after a still one is still; each field one assertion, so that CBMC
+ * names the field that breaks it. On S1 rests Stretch, which puts up to CBMC__STRETCH_MAX still scans in a step. */
 #ifndef PAC_CBMC_STUTTER_H
 #define PAC_CBMC_STUTTER_H
 
 static BOOL SameTime(TIME a, TIME b) { return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec; }
 
-/* A TON's state but its clock: Q unchanged is the waiting scan's condition (no limit passed), checked apart. */
+/* A TON's state but its clock (Q unchanged is the waiting scan's condition, NoTimerPasses). */
 /* Each comparison either asserted (check) or folded into the result: one list of fields for both. */
 #define STUTTER_CMP(cond, what)                                                                                    \
     do {                                                                                                           \
@@ -143,7 +144,8 @@ static BOOL StutterCmd(const FB_PAC_CMD *a, const FB_PAC_CMD *b, UDINT scan, BOO
     STUTTER_SAME(*a, *b, RECEIVEFLAG.value);
     STUTTER_SAME(*a, *b, EDGESCAN.value);
     /* LastScan follows Channel.Scan in a scan the FB is called, else stays. */
-    STUTTER_CMP(b->LASTSCAN.value == a->LASTSCAN.value || b->LASTSCAN.value == scan, "LASTSCAN (unchanged or this scan)");
+    STUTTER_CMP(b->LASTSCAN.value == a->LASTSCAN.value || b->LASTSCAN.value == scan,
+                "LASTSCAN (unchanged or this scan)");
     return same;
 }
 
@@ -151,8 +153,12 @@ static BOOL StutterCmd(const FB_PAC_CMD *a, const FB_PAC_CMD *b, UDINT scan, BOO
  * TON's Q, the owner counted away (FB_PAC_CmdInFlight: two scans without its call), the settling round trip
  * after a resynchronisation (FB_PAC_CmdInterface, FB_PAC_CmdResync), the scans an unclaimed ticket waits. */
 static long long Ns(TIME t) { return (long long)t.tv_sec * 1000000000LL + t.tv_nsec; }
-static BOOL TonBelowLimit(const TON *t, long long nowNs) {
-    return !t->IN.value || t->Q.value || nowNs - Ns(t->START_TIME.value) < Ns(t->PT.value);
+/* A TON timing (STATE 1) that the still scan ran (its CURRENT_TIME that scan's, stillNs) runs in each scan of
+ * the stretch too, so it must still be below PT at the stretch's last scan (lastNs); one the still scan did
+ * not run is not run in the stretch either (the same inputs, the same state). */
+static BOOL TonBelowLimit(const TON *t, long long stillNs, long long lastNs) {
+    return t->STATE.value != 1 || Ns(t->CURRENT_TIME.value) != stillNs
+           || lastNs - Ns(t->START_TIME.value) < Ns(t->PT.value);
 }
 static BOOL OwnerAway(const ST_PAC_CMDCHANNEL *c) { return c->SCAN - c->OWNERSCAN >= 2; }
 static BOOL Settling(const ST_PAC_CMDCHANNEL *c) { return c->SCAN - c->RESYNCSCAN <= c->ROUNDTRIP; }
@@ -163,24 +169,28 @@ static BOOL NoLimitPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFA
            && Settling(&i0->CHANNEL.value) == Settling(&i1->CHANNEL.value);
 }
 
-/* A stretch of d more waiting scans after the waiting scan just run, in one step (docs/verification.md): the
- * clock and Channel.Scan advance by d, a caller called in the waiting scan keeps LastScan = Scan (and,
- * Busy, counts d more Busy calls for P8: the harness), the owner called in it keeps OwnerScan = Scan (one not called stays away); and no limit passes within the stretch: every running TON still below its PT at the stretch's last scan,
- * OwnerAway and Settling as before. By the lemma each of those d scans changes nothing else. */
+/* A stretch: d more scans like the still scan just run (same inputs), in one step before the next waiting scan
+ * (docs/verification.md, "the waiting scans"): the clock and Channel.Scan advance by d, a caller called in the
+ * still scan keeps LastScan = Scan (the harness counts d more Busy calls for P8), the owner called in it keeps
+ * OwnerScan = Scan (one not called stays away); and no limit passes within the stretch: each TON the still scan
+ * ran below its PT at the stretch's last scan, OwnerAway and Settling as before. stillNs: the still scan's
+ * clock. By S1 each of those d scans changes nothing else. */
 static void Stretch(FB_PAC_CMDINTERFACE *iface, FB_PAC_CMD *cmd, const BOOL *called, int callers, unsigned d,
-                    long long lastNs) {
+                    long long stillNs) {
+    const long long lastNs = stillNs + (long long)d * CYCLE_NS;
     ST_PAC_CMDCHANNEL *c = &iface->CHANNEL.value;
     const BOOL away = OwnerAway(c), settling = Settling(c);
     if (c->OWNERSCAN == c->SCAN) c->OWNERSCAN += d;
     c->SCAN += d;
     __CPROVER_assume(OwnerAway(c) == away && Settling(c) == settling);
-    __CPROVER_assume(TonBelowLimit(&iface->INFLIGHTCOMMAND.WATCHTIMER, lastNs)
-                     && TonBelowLimit(&iface->KEEPINSTEP.STEPTIMER, lastNs));
+    __CPROVER_assume(TonBelowLimit(&iface->INFLIGHTCOMMAND.WATCHTIMER, stillNs, lastNs)
+                     && TonBelowLimit(&iface->KEEPINSTEP.STEPTIMER, stillNs, lastNs));
     for (int k = 0; k < callers; ++k) {
         if (!called[k]) continue; /* its timers run on, read again in its next call: a real event, not passed here */
         cmd[k].LASTSCAN.value += d;
-        __CPROVER_assume(TonBelowLimit(&cmd[k].WAITTIMER, lastNs) && TonBelowLimit(&cmd[k].ACKTIMER, lastNs)
-                         && TonBelowLimit(&cmd[k].ENDTIMER, lastNs));
+        __CPROVER_assume(TonBelowLimit(&cmd[k].WAITTIMER, stillNs, lastNs)
+                         && TonBelowLimit(&cmd[k].ACKTIMER, stillNs, lastNs)
+                         && TonBelowLimit(&cmd[k].ENDTIMER, stillNs, lastNs));
     }
 }
 
