@@ -1016,23 +1016,25 @@ StopAfterRestart StopAfterARestartDuringTheFirstRead(const SkipCase& c, int tear
     return o;
 }
 
-// D19, open (docs/verification.md, "Defects found"): D18's case on the jittered buses. A PLC cold start, a controller
-// restart 1 to a controller cycle + 2 scans later, a stop edged 0 to 3 scans after the controller is ready, with
-// none or half of the controller's first reads of a new image torn; every reading, one- and two-step write. The
-// stop ends, and the controller took it once (in HOME POSITION it answers 0600 with its command error 20: the stop
-// ran). Fails in 128 of the 3,840 runs, the same on pacst's C and on MATIEC's C, all on "SEND changed" with
-// "RECEIVE 0 after restart", torn reads or not, on two of the six jittered buses: one-step, the stop Done although
-// the controller never took it (PLC 1 ms, controller 3 ms, latency 1, jitter 2.5 ms: 32; PLC 2 ms, controller 10 ms,
-// latency 2, jitter 6 ms: 64); two-step, 16#8003 without having gone out (the first bus: 32). The read after the
-// restart goes back to SEND = RECEIVE after the settling wait, the round trip measured on the few handshakes since
-// the cold start and far below this bus's longest, and is toggled anew; the controller takes each change of SEND
-// as a command, and its late answers pass for the later handshakes' acknowledgements.
-TEST(CmdColdStartOnJitteredBuses, DISABLED_AStopAfterAControllerRestartDuringTheFirstReadIsTakenOnce) {
+// D19 (docs/verification.md, "Defects found"): D18's case on the jittered buses. A PLC cold start, a controller
+// restart 1 to a controller cycle + 2 scans later, a stop edged 0 to 3 scans after the controller is ready, every
+// reading, one- and two-step write, with none or half of the controller's first reads of a new image torn (torn
+// only with the two-step write: a one-step write needs a bus with module consistency, and on a tearing bus the
+// controller may take a torn command, test_cmd_torn_bus_sim.cpp). The stop ends, and the controller took it once
+// (in HOME POSITION it answers 0600 with its command error 20: the stop ran). Before the fix 128 of the 3,840 runs
+// failed, the same on pacst's C and on MATIEC's C, all on "SEND changed" with "RECEIVE 0 after restart", on two
+// of the six jittered buses: one-step, the stop Done although the controller never took it (PLC 1 ms, controller
+// 3 ms, latency 1, jitter 2.5 ms: 32; PLC 2 ms, controller 10 ms, latency 2, jitter 6 ms: 64); two-step, 16#8003
+// without having gone out (the first bus: 32). The read after the restart went back to SEND = RECEIVE and was
+// toggled anew faster than the controller answered; the controller took each change of SEND as a command, and
+// the answer to the read's first toggle passed for the last one's, the answer to its way back for the stop's.
+TEST(CmdColdStartOnJitteredBuses, AStopAfterAControllerRestartDuringTheFirstReadIsTakenOnce) {
     int runs = 0;
     int failing = 0;
     for (const SkipCase& c : pac::test::ChannelCases(pac::test::JitteredBusTimings(), false)) {
         const int phases = CycleScans(c) + 2;
         for (const int tear : {0, 50}) {
+            if (tear > 0 && !c.twoStepWrite) continue;
             for (int phase = 1; phase <= phases; ++phase) {
                 for (int delay = 0; delay <= 3; ++delay) {
                     SCOPED_TRACE(::testing::PrintToString(c) + "; " + std::to_string(tear) +
