@@ -101,6 +101,10 @@ static BOOL StutterInterface(const FB_PAC_CMDINTERFACE *a, const FB_PAC_CMDINTER
     STUTTER_SAME(*a, *b, KEEPINSTEP.RETRYING.value);
     STUTTER_SAMET(*a, *b, KEEPINSTEP.STEPTIME.value);
     STUTTER_SAME(*a, *b, KEEPINSTEP.STEPSCAN.value);
+    /* FirstToggleScan follows Scan while the status is 0 (a restarted controller answers no toggle from before) */
+    STUTTER_CMP(b->KEEPINSTEP.FIRSTTOGGLESCAN.value == a->KEEPINSTEP.FIRSTTOGGLESCAN.value
+                    || b->KEEPINSTEP.FIRSTTOGGLESCAN.value == b->CHANNEL.value.SCAN,
+                "KeepInStep.FIRSTTOGGLESCAN (unchanged or this scan)");
     STUTTER_TON(a->KEEPINSTEP.STEPTIMER, b->KEEPINSTEP.STEPTIMER, "KeepInStep.StepTimer");
     return StutterChannel(&a->CHANNEL.value, &b->CHANNEL.value, check) && same;
 }
@@ -172,15 +176,17 @@ static BOOL NoLimitPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFA
 /* A stretch: d more scans like the still scan just run (same inputs), in one step before the next waiting scan
  * (docs/verification.md, "the waiting scans"): the clock and Channel.Scan advance by d, a caller called in the
  * still scan keeps LastScan = Scan (the harness counts d more Busy calls for P8), the owner called in it keeps
- * OwnerScan = Scan (one not called stays away); and no limit passes within the stretch: each TON the still scan
- * ran below its PT at the stretch's last scan, OwnerAway and Settling as before. stillNs: the still scan's
- * clock. By S1 each of those d scans changes nothing else. */
+ * OwnerScan = Scan (one not called stays away), a FirstToggleScan set in it (status 0) keeps = Scan; and no
+ * limit passes within the stretch: each TON the still scan ran below its PT at the stretch's last scan,
+ * OwnerAway and Settling as before. stillNs: the still scan's clock. By S1 each of those d scans changes nothing
+ * else. */
 static void Stretch(FB_PAC_CMDINTERFACE *iface, FB_PAC_CMD *cmd, const BOOL *called, int callers, unsigned d,
                     long long stillNs) {
     const long long lastNs = stillNs + (long long)d * CYCLE_NS;
     ST_PAC_CMDCHANNEL *c = &iface->CHANNEL.value;
     const BOOL away = OwnerAway(c), settling = Settling(c);
     if (c->OWNERSCAN == c->SCAN) c->OWNERSCAN += d;
+    if (iface->KEEPINSTEP.FIRSTTOGGLESCAN.value == c->SCAN) iface->KEEPINSTEP.FIRSTTOGGLESCAN.value += d;
     c->SCAN += d;
     __CPROVER_assume(OwnerAway(c) == away && Settling(c) == settling);
     __CPROVER_assume(TonBelowLimit(&iface->INFLIGHTCOMMAND.WATCHTIMER, stillNs, lastNs)
