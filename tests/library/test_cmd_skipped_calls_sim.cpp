@@ -289,6 +289,30 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
     }
 }
 
+// Issue 32, item 10, 0A41 (cmd_abort_auto, 5.2.5.1): a stop like 0A81 (F_PAC_IsStopOver), so edged while a 0A87
+// processes it goes out at once instead of waiting behind the move until 16#8006. A 0A87 runs only in ONLINE, where
+// the PA-CONTROL refuses 0A41 (admissible in AUTOMATIC only): the 0A41's FB ends with the controller's error number
+// unchanged, within a few round trips, while the move still processes.
+TEST_P(CmdSkippedCalls, AnAbortAutoBehindARunningMoveGoesOutAtOnce) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    const Command abort{code::kAbortAuto, 0, 0};
+    const Command move = StartFarMove(plc, 0.5F);
+    ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
+    plc.Set(1, abort);
+    plc.Fb(1)->EXECUTE.value = TRUE;
+    int n = 0;
+    for (; n < 20000 && !plc.Final(1); ++n) plc.Scan();
+    ASSERT_TRUE(plc.Final(1));
+    const auto taken = plc.Taken();
+    EXPECT_EQ(Count(taken, abort), 1) << "the controller took the 0A41 once";
+    EXPECT_TRUE(plc.Fb(1)->ERROR.value);
+    EXPECT_EQ(plc.Fb(1)->ERRORID.value, pac::sim::error::kInadmissibleCommand) << "the controller's number";
+    EXPECT_TRUE(plc.Rig().Controller().Axes().Motion(2).Moving()) << "the refused 0A41 stopped nothing";
+    EXPECT_LT(n, 100) << "the 0A41 did not wait for the move's end";
+}
+
 // Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
 // matter here) edged `lag` scans apart, in either call order. The
 // stop may take the interface between FB 0's data and its toggle; then FB 0's command never went out and FB 0
@@ -769,6 +793,60 @@ TEST_P(CmdSkippedCalls, AJogLeftOutWhileItsStartWaitsPastItsTimeoutNeverStarts) 
         EXPECT_TRUE(jog->ERROR.value) << "Done " << int{jog->DONE.value} << ", Active " << int{jog->ACTIVE.value};
         EXPECT_EQ(jog->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never started";
         jog->TRAVERSE.value = FALSE;
+        for (n = 0; n < 300; ++n) plc.Scan();
+        int starts = 0;
+        for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
+        EXPECT_EQ(starts, 0) << "the controller took the jog's start";
+        EXPECT_EQ(plc.Rig().Controller().Axes().Motion(1).Position(), jogAxisAt) << "axis 1 moved";
+        plc.Fb(1)->EXECUTE.value = FALSE;
+        plc.Scan();
+        plc.Scan();
+        if (HasFailure()) return;
+    }
+}
+
+// Issue 32, item 9 with skipped calls (docs/commands.md, "Manual traverse": a released key never starts the axis):
+// the key pressed while FB 1's move of axis 2 holds the interface (the jog's Timeout 2 s, longer than the move), the
+// jog left out from the scan after the press, the key released while it is left out, and the jog called again 0 to 3
+// scans after the move has ended. The jog ends Done in that call, its start never goes out, axis 1 never moves.
+TEST_P(CmdSkippedCalls, AJogReleasedWhileLeftOutWithItsStartWaitingNeverStarts) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    ASSERT_TRUE(plc.GoOnline());
+    auto jog = PAC_FB(FB_PAC_JOGAXIS);
+    plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
+        jog->CHANNEL.value = channel;
+        jog();
+        channel = jog->CHANNEL.value;
+    });
+    jog->AXIS.value = 1;
+    jog->TARGET.value = 5000.0F;
+    jog->TIMEOUT.value = pac::ToIecTime(2s);
+    for (int extra = 0; extra <= 3; ++extra) {
+        SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after the move's end");
+        const double at = plc.Rig().Controller().Axes().Motion(2).Position();
+        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
+        plc.Taken();
+        plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
+        plc.Fb(1)->EXECUTE.value = TRUE;
+        int n = 0;
+        for (; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value) << "the move processing";
+        const double jogAxisAt = plc.Rig().Controller().Axes().Motion(1).Position();
+        jog->TRAVERSE.value = TRUE;
+        plc.Scan();
+        ASSERT_TRUE(jog->BUSY.value && !jog->ACTIVE.value) << "the jog's start waits";
+        plc.Call(0, false);
+        plc.Scan();
+        jog->TRAVERSE.value = FALSE;
+        for (n = 0; n < 20000 && !plc.Final(1); ++n) plc.Scan();
+        ASSERT_TRUE(plc.Fb(1)->DONE.value) << "the move ended";
+        for (n = 0; n < extra; ++n) plc.Scan();
+        plc.Call(0, true);
+        plc.Scan();
+        EXPECT_TRUE(jog->DONE.value) << "Busy " << int{jog->BUSY.value} << ", ErrorID 16#" << std::hex
+                                     << jog->ERRORID.value;
+        EXPECT_FALSE(jog->BUSY.value || jog->ACTIVE.value || jog->ERROR.value);
         for (n = 0; n < 300; ++n) plc.Scan();
         int starts = 0;
         for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
