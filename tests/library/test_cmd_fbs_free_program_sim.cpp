@@ -420,7 +420,7 @@ private:
         if (int{busy} + int{done} + int{jogFb_->ERROR.value != 0} > 1 || (jogFb_->ACTIVE.value && !busy)) {
             log_.Add(scans_, rig_.Now(), "FB_PAC_JogAxis shows Busy, Done, Error or Active together");
         }
-        // FB_PAC_JogAxis.md: MaxTime, the waits for the interface and the acknowledgements of the start and the stop.
+        // docs/commands.md, "Manual traverse": MaxTime, the waits for the interface and the acknowledgements of the start and the stop.
         if (busy && rig_.Now() - j.pressedAt > kJogMaxTime + 4 * kJogTimeout + 7 * case_.sharing.timing.PlcCycle() + 100ms) {
             log_.Add(scans_, rig_.Now(), "FB_PAC_JogAxis still Busy " +
                                              std::to_string((rig_.Now() - j.pressedAt) / std::chrono::milliseconds(1)) +
