@@ -207,6 +207,23 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
                                                                      << result.output;
 }
 
+TEST_F(TranslatorUserCli, CallOfARefusedFunctionSaysSoAsAStatementToo) {
+    // A FUNCTION whose declaration was refused is declared: a call of it, for its effect or in an expression,
+    // points back at that refusal instead of calling the FUNCTION undeclared.
+    auto function = Write("F_Bad.st", "FUNCTION F_Bad : INT\nVAR_INPUT X : NoSuchType; END_VAR\nF_Bad := 1;\n"
+                                      "END_FUNCTION\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR N : INT; END_VAR\nF_Bad(X := 1);\nN := F_Bad(X := 2);\n"
+                                     "END_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", function, main});
+    EXPECT_EQ(result.exitCode, 1);
+    for (const auto& expected : {function + ":2:15: error: undeclared type 'NoSuchType'",
+                                 main + ":3:1: error: FUNCTION F_Bad cannot be called: its declaration was refused",
+                                 main + ":4:6: error: FUNCTION F_Bad cannot be called: its declaration was refused"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+    EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
     // docs/import.md: the library referenced with the namespace PA_CONTROL; --namespace says which files hold it.
     fs::create_directories(dir_ / "lib");

@@ -803,6 +803,9 @@ class BodyCompiler:
             if _cls(node.name) == "SimpleVariable" and self.lookup(_name(node.name.name)) is None \
                     and _name(node.name.name).upper() not in self.pou.externals \
                     and user.lookup_global(self.comp, node.name.name) is None:
+                if _name(node.name.name).upper() in self.comp.refused:  # as in an expression: point at the refusal
+                    raise self.err(node, f"FUNCTION {_name(node.name.name)} cannot be called: its declaration "
+                                         "was refused (above)")
                 raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
                                      f"'{_name(node.name.name)}'")
             r = self.ref(node.name)
