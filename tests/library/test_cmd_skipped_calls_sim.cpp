@@ -298,7 +298,7 @@ TEST_P(CmdSkippedCalls, AnAbortAutoBehindARunningMoveGoesOutAtOnce) {
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     const Command abort{code::kAbortAuto, 0, 0};
-    const Command move = StartFarMove(plc, 0.5F);
+    StartFarMove(plc, 0.5F);
     ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
     plc.Set(1, abort);
     plc.Fb(1)->EXECUTE.value = TRUE;
@@ -452,7 +452,9 @@ TEST_P(CmdSkippedCalls, AfterAPlcRestartTheFirstCommandIsNotDoneOnTheOldOnesAckn
         for (int old = 0; old < 2; ++old) {  // an odd and an even number of commands before: either SEND flag
             SCOPED_TRACE("PLC restart " + std::to_string(after) + " scans after the old command's edge, SEND " +
                          std::to_string(old));
-            if (old == 1) ASSERT_TRUE(plc.RunAlone(0, {code::kPutIntReg, 3, serial++}));
+            if (old == 1) {
+                ASSERT_TRUE(plc.RunAlone(0, {code::kPutIntReg, 3, serial++}));
+            }
             const Command before{code::kPutIntReg, 1, serial++};
             const Command own{code::kPutIntReg, 2, serial++};
             plc.Taken();
