@@ -174,6 +174,30 @@ Command StartFarMove(TwoCallerPlc& plc, float fraction) {
     return move;
 }
 
+// FB_PAC_JogAxis for axis 1 (target 5000.0, `timeout`) on the channel in FB 0's place, for the jog tests.
+void PutJogInFb0sPlace(TwoCallerPlc& plc, pac::FbInstance<FB_PAC_JOGAXIS>& jog, std::chrono::milliseconds timeout) {
+    plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
+        jog->CHANNEL.value = channel;
+        jog();
+        channel = jog->CHANNEL.value;
+    });
+    jog->AXIS.value = 1;
+    jog->TARGET.value = 5000.0F;
+    jog->TIMEOUT.value = pac::ToIecTime(timeout);
+}
+
+// FB 1 edges a move of axis 2 by 100.0 toward the middle of its range, the taken commands cleared first; scans until
+// the controller acknowledged it. Whether FB 1 is then Acknowledged and Busy (the move processing).
+bool StartShortMoveOnFb1(TwoCallerPlc& plc) {
+    const double at = plc.Rig().Controller().Axes().Motion(2).Position();
+    const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
+    plc.Taken();
+    plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
+    plc.Fb(1)->EXECUTE.value = TRUE;
+    for (int n = 0; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
+    return plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value;
+}
+
 // Scans until FB 0 (`fb0Final`: FB 0 or the FB the program calls in its place) and FB 1, once edged, ended; FB 0
 // left out for `skip` scans from `offset` scans on, FB 1 edged in the first of them. The scans run, and whether
 // FB 1 was edged.
@@ -762,25 +786,12 @@ TEST_P(CmdSkippedCalls, AJogLeftOutWhileItsStartWaitsPastItsTimeoutNeverStarts) 
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     auto jog = PAC_FB(FB_PAC_JOGAXIS);
-    plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
-        jog->CHANNEL.value = channel;
-        jog();
-        channel = jog->CHANNEL.value;
-    });
-    jog->AXIS.value = 1;
-    jog->TARGET.value = 5000.0F;
-    jog->TIMEOUT.value = pac::ToIecTime(20ms);
     const auto timeout = 20ms;
+    PutJogInFb0sPlace(plc, jog, timeout);
     for (int extra = 0; extra <= 3; ++extra) {
         SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after its Timeout and the move's end");
-        const double at = plc.Rig().Controller().Axes().Motion(2).Position();
-        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
-        plc.Taken();
-        plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
-        plc.Fb(1)->EXECUTE.value = TRUE;
+        ASSERT_TRUE(StartShortMoveOnFb1(plc)) << "the move processing";
         int n = 0;
-        for (; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
-        ASSERT_TRUE(plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value) << "the move processing";
         jog->TRAVERSE.value = TRUE;
         plc.Scan();
         ASSERT_TRUE(jog->BUSY.value && !jog->ACTIVE.value) << "the jog's start waits";
@@ -816,24 +827,11 @@ TEST_P(CmdSkippedCalls, AJogReleasedWhileLeftOutWithItsStartWaitingNeverStarts) 
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     auto jog = PAC_FB(FB_PAC_JOGAXIS);
-    plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
-        jog->CHANNEL.value = channel;
-        jog();
-        channel = jog->CHANNEL.value;
-    });
-    jog->AXIS.value = 1;
-    jog->TARGET.value = 5000.0F;
-    jog->TIMEOUT.value = pac::ToIecTime(2s);
+    PutJogInFb0sPlace(plc, jog, 2s);
     for (int extra = 0; extra <= 3; ++extra) {
         SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after the move's end");
-        const double at = plc.Rig().Controller().Axes().Motion(2).Position();
-        const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
-        plc.Taken();
-        plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
-        plc.Fb(1)->EXECUTE.value = TRUE;
+        ASSERT_TRUE(StartShortMoveOnFb1(plc)) << "the move processing";
         int n = 0;
-        for (; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
-        ASSERT_TRUE(plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value) << "the move processing";
         const double jogAxisAt = plc.Rig().Controller().Axes().Motion(1).Position();
         jog->TRAVERSE.value = TRUE;
         plc.Scan();
