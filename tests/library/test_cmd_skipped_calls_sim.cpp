@@ -198,6 +198,19 @@ bool StartShortMoveOnFb1(TwoCallerPlc& plc) {
     return plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value;
 }
 
+// 300 scans more: the controller took no start of the jog, and axis 1 stands at `jogAxisAt`; then FB 1's Execute
+// falls, for the next case.
+void ExpectTheJogNeverStartedAndEndTheMove(TwoCallerPlc& plc, double jogAxisAt) {
+    for (int n = 0; n < 300; ++n) plc.Scan();
+    int starts = 0;
+    for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
+    EXPECT_EQ(starts, 0) << "the controller took the jog's start";
+    EXPECT_EQ(plc.Rig().Controller().Axes().Motion(1).Position(), jogAxisAt) << "axis 1 moved";
+    plc.Fb(1)->EXECUTE.value = FALSE;
+    plc.Scan();
+    plc.Scan();
+}
+
 // Scans until FB 0 (`fb0Final`: FB 0 or the FB the program calls in its place) and FB 1, once edged, ended; FB 0
 // left out for `skip` scans from `offset` scans on, FB 1 edged in the first of them. The scans run, and whether
 // FB 1 was edged.
@@ -806,14 +819,7 @@ TEST_P(CmdSkippedCalls, AJogLeftOutWhileItsStartWaitsPastItsTimeoutNeverStarts) 
         EXPECT_TRUE(jog->ERROR.value) << "Done " << int{jog->DONE.value} << ", Active " << int{jog->ACTIVE.value};
         EXPECT_EQ(jog->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]) << "never started";
         jog->TRAVERSE.value = FALSE;
-        for (n = 0; n < 300; ++n) plc.Scan();
-        int starts = 0;
-        for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
-        EXPECT_EQ(starts, 0) << "the controller took the jog's start";
-        EXPECT_EQ(plc.Rig().Controller().Axes().Motion(1).Position(), jogAxisAt) << "axis 1 moved";
-        plc.Fb(1)->EXECUTE.value = FALSE;
-        plc.Scan();
-        plc.Scan();
+        ExpectTheJogNeverStartedAndEndTheMove(plc, jogAxisAt);
         if (HasFailure()) return;
     }
 }
@@ -847,14 +853,7 @@ TEST_P(CmdSkippedCalls, AJogReleasedWhileLeftOutWithItsStartWaitingNeverStarts) 
         EXPECT_TRUE(jog->DONE.value) << "Busy " << int{jog->BUSY.value} << ", ErrorID 16#" << std::hex
                                      << jog->ERRORID.value;
         EXPECT_FALSE(jog->BUSY.value || jog->ACTIVE.value || jog->ERROR.value);
-        for (n = 0; n < 300; ++n) plc.Scan();
-        int starts = 0;
-        for (const Command& c : plc.Taken()) starts += c.code == code::kStartManualAbsolute ? 1 : 0;
-        EXPECT_EQ(starts, 0) << "the controller took the jog's start";
-        EXPECT_EQ(plc.Rig().Controller().Axes().Motion(1).Position(), jogAxisAt) << "axis 1 moved";
-        plc.Fb(1)->EXECUTE.value = FALSE;
-        plc.Scan();
-        plc.Scan();
+        ExpectTheJogNeverStartedAndEndTheMove(plc, jogAxisAt);
         if (HasFailure()) return;
     }
 }
