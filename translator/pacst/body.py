@@ -9,7 +9,7 @@ from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
     inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call
 
 
 class BodyCompiler:
@@ -804,8 +804,7 @@ class BodyCompiler:
                     and _name(node.name.name).upper() not in self.pou.externals \
                     and user.lookup_global(self.comp, node.name.name) is None:
                 if _name(node.name.name).upper() in self.comp.refused:  # as in an expression: point at the refusal
-                    raise self.err(node, f"FUNCTION {_name(node.name.name)} cannot be called: its declaration "
-                                         "was refused (above)")
+                    raise self.err(node, refused_call(_name(node.name.name)))
                 raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
                                      f"'{_name(node.name.name)}'")
             r = self.ref(node.name)

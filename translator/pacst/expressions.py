@@ -99,6 +99,11 @@ CHAINED_CALL = ("a METHOD called on the result of a call (Buffer.Get(i).Dequeue(
                 "result to a variable of its type first (Item := Buffer.Get(i); Item.Dequeue();)")
 
 
+def refused_call(name):
+    """The refusal of a call of the FUNCTION `name` whose declaration was refused: statement or expression alike."""
+    return f"FUNCTION {name} cannot be called: its declaration was refused (above)"
+
+
 class ExprCompiler:
     """Types and translates expressions inside one POU (or an initial value, with pou None)."""
 
@@ -723,7 +728,7 @@ class ExprCompiler:
             raise self.err(node, f"function block instance '{name}' called inside an expression: call it as a "
                                  "statement and read its outputs")
         if up in self.comp.refused:
-            raise self.err(node, f"FUNCTION {name} cannot be called: its declaration was refused (above)")
+            raise self.err(node, refused_call(name))
         if up in self.comp.declared_at:
             file, line = self.comp.declared_at[up]
             raise self.err(node, f"'{name}' is called before its declaration ({file}:{line}): declare before use")
