@@ -1,6 +1,6 @@
 // Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
 // `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
-// hand-written C CMD handshake, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
+// hand-written C CMD handshake and axis, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
 // to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
 // `bench_table --only throughput,scale` prints only those sections.
 #include <sys/utsname.h>
@@ -103,8 +103,9 @@ std::string Cell(const std::optional<CallgrindCount>& c) { return c ? Number(c->
 
 std::string Jobs(const std::optional<CallgrindCount>& c) { return c ? std::to_string(c->jobs) : "-"; }
 
-// The library's CMD interface for one caller and the hand-written C agree on every scan, on timings that
-// make the waits differ: a cost comparison of two programs that do different things would say nothing.
+// The library's CMD interface for one caller and FB_PAC_Axis agree with their hand-written C on every scan,
+// on timings that make the waits differ: a cost comparison of two programs that do different things would
+// say nothing.
 int PrintSideBySide() {
     int failures = 0;
     int timings = 0;
@@ -115,11 +116,13 @@ int PrintSideBySide() {
                 timing.plcCycle = milliseconds(plcMs);
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;
-                const std::string difference = CompareWithHandWritten(timing, kCostScans);
                 timings++;
-                if (!difference.empty()) {
-                    std::printf("The hand-written C and the FBs differ (PLC %d ms, controller %d ms, latency %d): %s.\n\n",
-                                plcMs, pacMs, latency, difference.c_str());
+                for (const auto& [what, difference] :
+                     {std::pair<const char*, std::string>{"the CMD FBs", CompareWithHandWritten(timing, kCostScans)},
+                      {"FB_PAC_Axis", CompareAxisWithHandWritten(timing, kCostScans)}}) {
+                    if (difference.empty()) continue;
+                    std::printf("The hand-written C and %s differ (PLC %d ms, controller %d ms, latency %d): %s.\n\n",
+                                what, plcMs, pacMs, latency, difference.c_str());
                     failures++;
                 }
             }
@@ -127,9 +130,12 @@ int PrintSideBySide() {
     }
     if (failures == 0) {
         std::printf("Side by side on %d timings (PLC cycle 1, 2, 5 ms x controller cycle 1, 3, 10 ms x bus latency "
-                    "0, 2 cycles), %d scans each, with writes, reads and a refused code: the hand-written C writes "
-                    "the same CMD module and gives the same outputs and handshake history as the FBs in every "
-                    "scan.\n\n", timings, kCostScans);
+                    "0, 2 cycles), %d scans each: the hand-written C of the CMD interface, with writes, reads and a "
+                    "refused code, writes the same CMD module and gives the same outputs and handshake history as "
+                    "the FBs in every scan; the hand-written C of the axis, with absolute and relative moves, resets "
+                    "of \"displaced\", a refused velocity, Abort, Axis OFF, DISABLE DRIVE and superseded jobs, "
+                    "writes the same axis module and gives the same outputs as FB_PAC_Axis in every scan.\n\n",
+                    timings, kCostScans);
     }
     return failures;
 }
@@ -140,7 +146,8 @@ int PrintScanCost(const std::string& self) {
                 "scan between them). The CMD interface of a program with one command caller is "
                 "FB_PAC_CmdInterface plus one FB_PAC_Cmd; the hand-written C (bench/cmd_handshake.c) does the same "
                 "for one caller, without what only sharing needs (ids, tickets, the queue, the owner's "
-                "keep-alive), in plain C without IEC wrappers. Not counted on either side: the bench copying the "
+                "keep-alive), in plain C without IEC wrappers; bench/axis_hand.c does what FB_PAC_Axis does for one "
+                "axis, without jog, ChangeDynamics and ResetError. Each / hand-written C is against its own. Not counted on either side: the bench copying the "
                 "images in and out (the channel too, on MATIEC's C; on pacst's the FB works on it).\n\n", kCostScans);
     int failures = PrintSideBySide();
     if (!ValgrindAvailable()) {
@@ -153,12 +160,14 @@ int PrintScanCost(const std::string& self) {
     const CostPair hand = Cost(self, "c", {measured::kHandWritten});
     const CostPair ctrl = Cost(self, "ctrl", {measured::kCtrl});
     const CostPair axis = Cost(self, "axis", {measured::kAxis});
+    const CostPair axisHand = Cost(self, "axis-c", {measured::kAxisHandWritten});
     const CostPair automatic = Cost(self, "automatic", {measured::kAutomatic});
     std::printf("| function block | idle | during a job | the job | jobs done | / hand-written C (job) | goal |\n"
                 "|---|---:|---:|---|---:|---:|---|\n");
-    const auto ratio = [&hand](const std::optional<CallgrindCount>& c) {
-        return c && hand.job ? Number(c->instructionsPerScan / hand.job->instructionsPerScan, 2) + "x" : std::string("-");
+    const auto ratioTo = [](const std::optional<CallgrindCount>& c, const std::optional<CallgrindCount>& by) {
+        return c && by ? Number(c->instructionsPerScan / by->instructionsPerScan, 2) + "x" : std::string("-");
     };
+    const auto ratio = [&](const std::optional<CallgrindCount>& c) { return ratioTo(c, hand.job); };
     std::string goal = "-";
     if (both.job && hand.job) {
         const double r = both.job->instructionsPerScan / hand.job->instructionsPerScan;
@@ -168,6 +177,11 @@ int PrintScanCost(const std::string& self) {
                         hand.job->jobs, both.job->jobs);
             failures++;
         }
+    }
+    if (axis.job && axisHand.job && axis.job->jobs != axisHand.job->jobs) {
+        std::printf("The hand-written axis finished %ld moves, FB_PAC_Axis %ld: they differ.\n\n", axisHand.job->jobs,
+                    axis.job->jobs);
+        failures++;
     }
     std::printf("| FB_PAC_CmdInterface + FB_PAC_Cmd (one caller) | %s | %s | write / read N1 | %s | %s | %s |\n",
                 Cell(both.idle).c_str(), Cell(both.job).c_str(), Jobs(both.job).c_str(), ratio(both.job).c_str(),
@@ -180,8 +194,11 @@ int PrintScanCost(const std::string& self) {
                 Cell(hand.idle).c_str(), Cell(hand.job).c_str(), Jobs(hand.job).c_str());
     std::printf("| FB_PAC_Ctrl | %s | %s | STOP / START ONLINE | %s | - | - |\n", Cell(ctrl.idle).c_str(),
                 Cell(ctrl.job).c_str(), Jobs(ctrl.job).c_str());
-    std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | - | - |\n",
-                Cell(axis.idle).c_str(), Cell(axis.job).c_str(), Jobs(axis.job).c_str());
+    std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | %s | - |\n",
+                Cell(axis.idle).c_str(), Cell(axis.job).c_str(), Jobs(axis.job).c_str(),
+                ratioTo(axis.job, axisHand.job).c_str());
+    std::printf("| FB_PAC_Axis by hand in C, one axis | %s | %s | absolute moves 0 / 20 | %s | 1.00x | - |\n",
+                Cell(axisHand.idle).c_str(), Cell(axisHand.job).c_str(), Jobs(axisHand.job).c_str());
     std::printf("| FB_PAC_AutomaticModule (one module) | %s | %s | HOME POSITION / AUTOMATIC, new N1 each scan, "
                 "N17 back | %s | - | - |\n\n", Cell(automatic.idle).c_str(), Cell(automatic.job).c_str(),
                 Jobs(automatic.job).c_str());

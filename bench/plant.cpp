@@ -18,6 +18,7 @@ pac::RigTiming TimingOf(const PlantOptions& o) {
     pac::RigTiming timing;
     timing.plcCycle = o.plcCycle;
     timing.pacCycle = o.pacCycle;
+    timing.latencyCycles = o.latencyCycles;
     return timing;
 }
 
@@ -38,7 +39,18 @@ Plant::Plant(const PlantOptions& options)
     pac.Io().inputs.Set(kExternalStopInput, true);
     plc_.Call(cmd_, [this] { NextCommand(); });
     plc_.CallCtrl(ctrl_, [this] { CtrlProgram(); });
-    for (int k = 1; k <= options.axes; ++k) {
+    for (int k = 1; k <= options.axes && options.handWrittenAxes; ++k) {
+        handAxes_.push_back(std::make_unique<AxisHand>());
+        AxisHandInit(&HandAxis(k));
+        HandAxis(k).enable = 1;
+        HandAxis(k).command = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
+        const std::size_t offset = plc_.Layout().AxisOffset(k);
+        plc_.CallImage([this, k, offset](const pac::sim::ProcessImage& fromPac, pac::sim::ProcessImage& toPac) {
+            NextHandMove(k);
+            AxisHandScan(&HandAxis(k), toPac.Data() + offset, fromPac.Data() + offset, plc_.Now().count());
+        });
+    }
+    for (int k = 1; k <= options.axes && !options.handWrittenAxes; ++k) {
         axes_.push_back(std::make_unique<pac::FbInstance<FB_PAC_AXIS>>(PAC_FB(FB_PAC_AXIS)));
         Axis(k)->ENABLE.value = TRUE;
         Axis(k)->COMMAND.value = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
@@ -113,14 +125,28 @@ void Plant::NextMove(int k) {
     // leaves the module alone and no axis moves) and FB_PAC_Ctrl's ModeChange.
     axis->OPSTATUS.value = plc_.CmdInterface()->OPSTATUS.value;
     axis->MODECHANGE.value = ctrl_->MODECHANGE.value;
-    if (axis->EXECUTE.value) {
-        if (!Final(axis) && !axis->COMMANDABORTED.value) return;
-        movesDone_ += axis->DONE.value ? 1 : 0;
-        axis->EXECUTE.value = FALSE;
-    } else if (moves_) {
-        axis->POSITION.value = axis->ACTUALPOSITION.value < (kTargetA + kTargetB) / 2 ? kTargetB : kTargetA;
-        axis->EXECUTE.value = TRUE;
+    axis->EXECUTE.value = NextExecute(axis->EXECUTE.value, axis->DONE.value,
+                                      Final(axis) || axis->COMMANDABORTED.value, axis->ACTUALPOSITION.value,
+                                      axis->POSITION.value);
+}
+
+void Plant::NextHandMove(int k) {
+    AxisHand& axis = HandAxis(k);
+    axis.opStatus = plc_.CmdInterface()->OPSTATUS.value;
+    axis.modeChange = ctrl_->MODECHANGE.value;
+    axis.execute = NextExecute(axis.execute != 0, axis.done != 0, axis.done || axis.error || axis.commandAborted,
+                               axis.actualPosition, axis.position);
+}
+
+bool Plant::NextExecute(bool execute, bool done, bool final, float actualPosition, float& position) {
+    if (execute) {
+        if (!final) return true;
+        movesDone_ += done ? 1 : 0;
+        return false;
     }
+    if (!moves_) return false;
+    position = actualPosition < (kTargetA + kTargetB) / 2 ? kTargetB : kTargetA;
+    return true;
 }
 
 std::vector<std::unique_ptr<Plant>> OnlinePlants(int count, std::chrono::nanoseconds pacCycle) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "axis_hand.h"
 #include "pac/fb_instance.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/st_program.hpp"
@@ -20,8 +21,10 @@ struct PlantOptions {
     int axes = 8;  // 0..8 axis modules
     std::chrono::nanoseconds plcCycle{std::chrono::milliseconds(1)};
     std::chrono::nanoseconds pacCycle{std::chrono::milliseconds(10)};
+    int latencyCycles = 0;  // bus latency each way, in PLC cycles
     bool commands = true;  // FB_PAC_Cmd sends one command after the other
     bool moves = true;     // every axis moves back and forth
+    bool handWrittenAxes = false;  // the axes driven by the hand-written C (bench/axis_hand.c), not FB_PAC_Axis
 };
 
 class Plant {
@@ -45,6 +48,8 @@ public:
     pac::FbInstance<FB_PAC_CMD>& Cmd() { return cmd_; }
     pac::FbInstance<FB_PAC_CTRL>& Ctrl() { return ctrl_; }
     pac::FbInstance<FB_PAC_AXIS>& Axis(int k) { return *axes_.at(static_cast<std::size_t>(k - 1)); }
+    // With handWrittenAxes: the hand-written C of axis module k.
+    AxisHand& HandAxis(int k) { return *handAxes_.at(static_cast<std::size_t>(k - 1)); }
     pac::PacRig& Plc() { return plc_; }
     // Jobs that ended with Done since construction: commands and axis moves.
     long CommandsDone() const { return commandsDone_; }
@@ -56,6 +61,9 @@ private:
     void CtrlProgram();
     void NextCommand();
     void NextMove(int k);
+    void NextHandMove(int k);
+    // The program's next Execute of an axis (Position set for a new move), counting the moves Done.
+    bool NextExecute(bool execute, bool done, bool final, float actualPosition, float& position);
     int ScansFor(std::chrono::milliseconds time) const;
 
     PlantOptions options_;
@@ -63,6 +71,7 @@ private:
     pac::FbInstance<FB_PAC_CMD> cmd_ = PAC_FB(FB_PAC_CMD);
     pac::FbInstance<FB_PAC_CTRL> ctrl_ = PAC_FB(FB_PAC_CTRL);
     std::vector<std::unique_ptr<pac::FbInstance<FB_PAC_AXIS>>> axes_;
+    std::vector<std::unique_ptr<AxisHand>> handAxes_;
     Phase phase_ = Phase::kBoot;
     int phaseScans_ = 0;  // scans left in a settle phase
     bool commands_ = false;

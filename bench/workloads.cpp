@@ -1,6 +1,7 @@
 #include "workloads.hpp"
 
 #include <chrono>
+#include <cstring>
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -132,11 +133,12 @@ WorkloadResult CtrlWorkload(bool job, int scans) {
     }, scans, [&] { return done; });
 }
 
-WorkloadResult AxisWorkload(bool job, int scans) {
+WorkloadResult AxisWorkload(bool job, bool handWritten, int scans) {
     PlantOptions options;
     options.axes = 1;
     options.commands = false;
     options.moves = job;
+    options.handWrittenAxes = handWritten;
     Plant plant(options);
     plant.GoOnline();
     return Measure([&] { plant.Scan(); }, scans, [&] { return plant.MovesDone(); });
@@ -226,7 +228,111 @@ void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
     }
 }
 
+// What the side-by-side check of the axis adds to the plant's moves back and forth, by scan: relative moves
+// (by 0 from 20 back: a job that may stand still), resets of "displaced" (no traverse, no ACTIVE), a refused
+// velocity, Abort, Enable falling (Axis OFF), DISABLE DRIVE and a new Execute edge while a job is busy (the
+// running job superseded).
+struct AxisInputs {
+    int command;
+    std::uint16_t velocity;
+    bool abort;
+    bool enable;
+    bool disableDrive;
+    bool dropExecute;
+};
+
+AxisInputs CheckedAxisInputs(int scan, bool busy) {
+    static const int kCommands[] = {E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE,
+                                    E_PAC_AXISCOMMAND__PAC_AX_MOVE_RELATIVE, E_PAC_AXISCOMMAND__PAC_AX_CLEAR_DISPLACED};
+    AxisInputs in{};
+    in.command = kCommands[(scan / 250) % 4];
+    in.velocity = (scan / 150) % 9 == 4 ? 0 : 1000;
+    in.abort = scan % 250 >= 100 && scan % 250 < 103;
+    in.enable = !(scan % 900 >= 500 && scan % 900 < 504);
+    in.disableDrive = scan % 1000 >= 700 && scan % 1000 < 706;
+    in.dropExecute = scan % 400 == 200 && busy;
+    return in;
+}
+
+// The first difference between FB_PAC_Axis and the hand-written C in a scan; empty if none.
+std::string AxisDifference(Plant& library, Plant& hand) {
+    auto& fb = library.Axis(1);
+    const AxisHand& a = hand.HandAxis(1);
+    const std::size_t offset = library.Plc().Layout().AxisOffset(1);
+    if (std::memcmp(library.Plc().ToPac().Data() + offset, hand.Plc().ToPac().Data() + offset, 12) != 0) {
+        return "the module differs";
+    }
+    const bool bits[] = {fb->ENABLED.value != 0, fb->HALTED.value != 0, fb->DRIVEDISABLED.value != 0,
+                         fb->SAFE.value != 0, fb->IDLE.value != 0, fb->DISABLED.value != 0, fb->FAULT.value != 0,
+                         fb->ACTIVE.value != 0, fb->REFERENCED.value != 0};
+    for (int bit = 0; bit < 9; ++bit) {
+        if (bits[bit] != (AxisHandBit(&a, bit) != 0)) return "status bit " + std::to_string(bit) + " differs";
+    }
+    const bool valid = a.status.valid != 0;
+    const bool same =
+        (fb->DONE.value != 0) == (a.done != 0) && (fb->BUSY.value != 0) == (a.busy != 0) &&
+        (fb->ERROR.value != 0) == (a.error != 0) && (fb->COMMANDABORTED.value != 0) == (a.commandAborted != 0) &&
+        fb->ERRORID.value == a.errorId && static_cast<int>(fb->ERRORSOURCE.value) == a.errorSource &&
+        (fb->STATUSVALID.value != 0) == valid && (fb->RUNNING.value != 0) == (a.running != 0) &&
+        (fb->ACTIVEWITHOUTJOB.value != 0) == (a.activeWithoutJob != 0) &&
+        (fb->OWNSMODULE.value != 0) == (a.ownsModule != 0) &&
+        (fb->NEGATIVELIMITACTUATED.value != 0) == (valid && !AxisHandBit(&a, 9)) &&
+        (fb->POSITIVELIMITACTUATED.value != 0) == (valid && !AxisHandBit(&a, 10)) &&
+        (fb->STOPPEDBYCONDITION.value != 0) == (AxisHandBit(&a, 11) != 0) &&
+        (fb->DISPLACEDWHILEOFF.value != 0) == (AxisHandBit(&a, 12) != 0) &&
+        (fb->GROUPDISPLACEDWHILEOFF.value != 0) == (AxisHandBit(&a, 13) != 0) &&
+        (fb->CMDERROR.value != 0) == (AxisHandBit(&a, 14) != 0) && (fb->AXISERROR.value != 0) == (AxisHandBit(&a, 15) != 0) &&
+        fb->STATUSWORD.value == a.status.statusWord && fb->CMDERRORNUMBER.value == a.status.cmdErrorNumber &&
+        fb->AXISERRORNUMBER.value == a.status.axisErrorNumber && fb->ACTUALPOSITION.value == a.actualPosition &&
+        fb->STATUS.value.POSITION == a.status.position && fb->STATUS.value.STATUSWORD == a.status.statusWord;
+    return same ? "" : "an output differs";
+}
+
 }  // namespace
+
+std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans) {
+    PlantOptions options;
+    options.axes = 1;
+    options.commands = false;
+    options.plcCycle = timing.plcCycle;
+    options.pacCycle = timing.pacCycle;
+    options.latencyCycles = timing.latencyCycles;
+    Plant library(options);
+    options.handWrittenAxes = true;
+    Plant hand(options);
+    library.GoOnline();
+    hand.GoOnline();
+    long events = 0;
+    for (int scan = 1; scan <= scans; ++scan) {
+        auto& fb = library.Axis(1);
+        AxisHand& a = hand.HandAxis(1);
+        const AxisInputs in = CheckedAxisInputs(scan, fb->BUSY.value != 0);
+        fb->COMMAND.value = static_cast<E_PAC_AXISCOMMAND>(in.command);
+        fb->VELOCITY.value = in.velocity;
+        fb->ABORT.value = in.abort;
+        fb->ENABLE.value = in.enable;
+        fb->DISABLEDRIVE.value = in.disableDrive;
+        // A dropped Execute stays low for this scan: the plant's program raises it again in the next.
+        library.SetMoves(!in.dropExecute);
+        hand.SetMoves(!in.dropExecute);
+        if (in.dropExecute) fb->EXECUTE.value = FALSE;
+        a.command = in.command;
+        a.velocity = in.velocity;
+        a.abort = in.abort;
+        a.enable = in.enable;
+        a.disableDrive = in.disableDrive;
+        if (in.dropExecute) a.execute = 0;
+        library.Scan();
+        hand.Scan();
+        const std::string difference = AxisDifference(library, hand);
+        if (!difference.empty()) return "scan " + std::to_string(scan) + ": " + difference;
+        events += (fb->COMMANDABORTED.value || fb->ERROR.value) ? 1 : 0;
+    }
+    if (library.MovesDone() < 3 || events < 3) {
+        return "fewer than three moves Done or three ends other than Done in " + std::to_string(scans) + " scans";
+    }
+    return "";
+}
 
 std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans) {
     pac::PacRig library(timing);
@@ -274,8 +380,10 @@ WorkloadResult RunWorkload(const std::string& name, int scans) {
         {"c-job", [](int n) { return HandWrittenWorkload(true, n); }},
         {"ctrl-idle", [](int n) { return CtrlWorkload(false, n); }},
         {"ctrl-job", [](int n) { return CtrlWorkload(true, n); }},
-        {"axis-idle", [](int n) { return AxisWorkload(false, n); }},
-        {"axis-job", [](int n) { return AxisWorkload(true, n); }},
+        {"axis-idle", [](int n) { return AxisWorkload(false, false, n); }},
+        {"axis-job", [](int n) { return AxisWorkload(true, false, n); }},
+        {"axis-c-idle", [](int n) { return AxisWorkload(false, true, n); }},
+        {"axis-c-job", [](int n) { return AxisWorkload(true, true, n); }},
         {"automatic-idle", [](int n) { return AutomaticWorkload(false, n); }},
         {"automatic-job", [](int n) { return AutomaticWorkload(true, n); }},
         {"plant-pac1", [](int n) { return PlantWorkload(milliseconds(1), n); }},

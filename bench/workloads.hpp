@@ -25,6 +25,7 @@ inline const char* const kCmd = "FB_PAC_CMD_body__";
 #endif
 inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
+inline const char* const kAxisHandWritten = "AxisHandScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";
 inline const char* const kAxis = "FB_PAC_AXIS_body__";
 inline const char* const kAutomatic = "FB_PAC_AUTOMATICMODULE_body__";
@@ -40,7 +41,7 @@ struct WorkloadResult {
 };
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
-// "axis-job", "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans;
+// "axis-job", "axis-c-idle", "axis-c-job" (the hand-written C of the axis), "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans;
 // "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows);
 // "plants-N-pacM": the same at a controller cycle of M ms.
 // std::invalid_argument for another name.
@@ -50,5 +51,10 @@ WorkloadResult RunWorkload(const std::string& name, int scans);
 // same timing, the same jobs (writes, reads and a refused code) for `scans` scans: the first scan where
 // the CMD module or an output differs, described; empty if they agree on every scan.
 std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans);
+
+// FB_PAC_Axis and the hand-written C of one axis (bench/axis_hand.c) in two plants of the same timing, with
+// the same moves, aborts, Axis OFF, refused and superseded jobs for `scans` scans after ONLINE: the first
+// scan where the axis module or an output differs, described; empty if they agree on every scan.
+std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans);
 
 }  // namespace pac::bench

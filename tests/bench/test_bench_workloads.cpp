@@ -20,7 +20,7 @@ constexpr int kScans = 2000;
 TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
     // At a 1 ms PLC cycle a command, a mode request or an automatic-module job ends within tens of scans and
     // an axis move within hundreds, so 2000 scans hold several of each.
-    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "axis-job", "automatic-job", "plant-pac1",
+    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "axis-job", "axis-c-job", "automatic-job", "plant-pac1",
                              "plant-pac10"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
@@ -29,7 +29,7 @@ TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
 }
 
 TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
-    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "axis-idle", "automatic-idle"}) {
+    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "axis-idle", "axis-c-idle", "automatic-idle"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
         EXPECT_EQ(result.jobs, 0) << name;
@@ -69,6 +69,23 @@ TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;
                 EXPECT_EQ(pac::bench::CompareWithHandWritten(timing, kScans), "")
+                    << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
+            }
+        }
+    }
+}
+
+// The same for FB_PAC_Axis and its hand-written C: the same module and outputs in every scan, through moves,
+// aborts, Axis OFF, refused and superseded jobs.
+TEST(BenchWorkloads, HandWrittenAxisAgreesWithTheFbOnEveryScan) {
+    for (int plcMs : {1, 5}) {
+        for (int pacMs : {1, 10}) {
+            for (int latency : {0, 2}) {
+                pac::RigTiming timing;
+                timing.plcCycle = milliseconds(plcMs);
+                timing.pacCycle = milliseconds(pacMs);
+                timing.latencyCycles = latency;
+                EXPECT_EQ(pac::bench::CompareAxisWithHandWritten(timing, kScans), "")
                     << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
             }
         }
