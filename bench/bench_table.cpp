@@ -1,6 +1,6 @@
 // Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
 // `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
-// hand-written C CMD handshake and axis, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
+// hand-written C of the CMD handshake, the axis and the CTRL module, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
 // to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
 // `bench_table --only throughput,scale` prints only those sections.
 #include <sys/utsname.h>
@@ -119,7 +119,8 @@ int PrintSideBySide() {
                 timings++;
                 for (const auto& [what, difference] :
                      {std::pair<const char*, std::string>{"the CMD FBs", CompareWithHandWritten(timing, kCostScans)},
-                      {"FB_PAC_Axis", CompareAxisWithHandWritten(timing, kCostScans)}}) {
+                      {"FB_PAC_Axis", CompareAxisWithHandWritten(timing, kCostScans)},
+                      {"FB_PAC_Ctrl", CompareCtrlWithHandWritten(timing, kCostScans)}}) {
                     if (difference.empty()) continue;
                     std::printf("The hand-written C and %s differ (PLC %d ms, controller %d ms, latency %d): %s.\n\n",
                                 what, plcMs, pacMs, latency, difference.c_str());
@@ -134,7 +135,10 @@ int PrintSideBySide() {
                     "refused code, writes the same CMD module and gives the same outputs and handshake history as "
                     "the FBs in every scan; the hand-written C of the axis, with absolute and relative moves, resets "
                     "of \"displaced\", a refused velocity, Abort, Axis OFF, DISABLE DRIVE and superseded jobs, "
-                    "writes the same axis module and gives the same outputs as FB_PAC_Axis in every scan.\n\n",
+                    "writes the same axis module and gives the same outputs as FB_PAC_Axis in every scan; the hand-written C "
+                    "of FB_PAC_Ctrl, with every request in turn (ONLINE, a STOP, a start from stopped, CANCEL, RESET "
+                    "ERROR, AUTOMATIC, a STOP that does not apply, none) and both number formats, writes the same CTRL "
+                    "module and gives the same outputs as the FB in every scan.\n\n",
                     timings, kCostScans);
     }
     return failures;
@@ -147,7 +151,8 @@ int PrintScanCost(const std::string& self) {
                 "FB_PAC_CmdInterface plus one FB_PAC_Cmd; the hand-written C (bench/cmd_handshake.c) does the same "
                 "for one caller, without what only sharing needs (ids, tickets, the queue, the owner's "
                 "keep-alive), in plain C without IEC wrappers; bench/axis_hand.c does what FB_PAC_Axis does for one "
-                "axis, without jog, ChangeDynamics and ResetError. Each / hand-written C is against its own. Not counted on either side: the bench copying the "
+                "axis, without jog, ChangeDynamics and ResetError, and bench/ctrl_hand.c what FB_PAC_Ctrl does. Each "
+                "/ hand-written C is against its own. Not counted on either side: the bench copying the "
                 "images in and out (the channel too, on MATIEC's C; on pacst's the FB works on it).\n\n", kCostScans);
     int failures = PrintSideBySide();
     if (!ValgrindAvailable()) {
@@ -159,6 +164,7 @@ int PrintScanCost(const std::string& self) {
     const CostPair interface = Cost(self, "cmd", {measured::kCmdInterface});
     const CostPair hand = Cost(self, "c", {measured::kHandWritten});
     const CostPair ctrl = Cost(self, "ctrl", {measured::kCtrl});
+    const CostPair ctrlHand = Cost(self, "ctrl-c", {measured::kCtrlHandWritten});
     const CostPair axis = Cost(self, "axis", {measured::kAxis});
     const CostPair axisHand = Cost(self, "axis-c", {measured::kAxisHandWritten});
     const CostPair automatic = Cost(self, "automatic", {measured::kAutomatic});
@@ -178,6 +184,11 @@ int PrintScanCost(const std::string& self) {
             failures++;
         }
     }
+    if (ctrl.job && ctrlHand.job && ctrl.job->jobs != ctrlHand.job->jobs) {
+        std::printf("The hand-written CTRL finished %ld requests, FB_PAC_Ctrl %ld: they differ.\n\n", ctrlHand.job->jobs,
+                    ctrl.job->jobs);
+        failures++;
+    }
     if (axis.job && axisHand.job && axis.job->jobs != axisHand.job->jobs) {
         std::printf("The hand-written axis finished %ld moves, FB_PAC_Axis %ld: they differ.\n\n", axisHand.job->jobs,
                     axis.job->jobs);
@@ -192,8 +203,10 @@ int PrintScanCost(const std::string& self) {
                 Cell(interface.job).c_str(), ratio(interface.job).c_str());
     std::printf("| CMD interface by hand in C, one caller | %s | %s | write / read N1 | %s | 1.00x | - |\n",
                 Cell(hand.idle).c_str(), Cell(hand.job).c_str(), Jobs(hand.job).c_str());
-    std::printf("| FB_PAC_Ctrl | %s | %s | STOP / START ONLINE | %s | - | - |\n", Cell(ctrl.idle).c_str(),
-                Cell(ctrl.job).c_str(), Jobs(ctrl.job).c_str());
+    std::printf("| FB_PAC_Ctrl | %s | %s | STOP / START ONLINE | %s | %s | - |\n", Cell(ctrl.idle).c_str(),
+                Cell(ctrl.job).c_str(), Jobs(ctrl.job).c_str(), ratioTo(ctrl.job, ctrlHand.job).c_str());
+    std::printf("| FB_PAC_Ctrl by hand in C | %s | %s | STOP / START ONLINE | %s | 1.00x | - |\n",
+                Cell(ctrlHand.idle).c_str(), Cell(ctrlHand.job).c_str(), Jobs(ctrlHand.job).c_str());
     std::printf("| FB_PAC_Axis (one axis) | %s | %s | absolute moves 0 / 20 | %s | %s | - |\n",
                 Cell(axis.idle).c_str(), Cell(axis.job).c_str(), Jobs(axis.job).c_str(),
                 ratioTo(axis.job, axisHand.job).c_str());

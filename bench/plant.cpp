@@ -31,12 +31,7 @@ bool Final(const pac::FbInstance<Fb>& fb) {
 
 Plant::Plant(const PlantOptions& options)
     : options_(options), plc_(TimingOf(options), {}, pac::sim::ModuleLayout{true, options.axes}) {
-    auto& pac = plc_.Controller();
-    if (pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput) !=
-        pac::sim::ParameterTable::SetResult::kOk) {
-        throw std::runtime_error("Plant: the simulator refuses the external stop input");
-    }
-    pac.Io().inputs.Set(kExternalStopInput, true);
+    AllowOnline(plc_.Controller());
     plc_.Call(cmd_, [this] { NextCommand(); });
     plc_.CallCtrl(ctrl_, [this] { CtrlProgram(); });
     for (int k = 1; k <= options.axes && options.handWrittenAxes; ++k) {
@@ -147,6 +142,14 @@ bool Plant::NextExecute(bool execute, bool done, bool final, float actualPositio
     if (!moves_) return false;
     position = actualPosition < (kTargetA + kTargetB) / 2 ? kTargetB : kTargetA;
     return true;
+}
+
+void AllowOnline(pac::sim::PaControl& pac) {
+    if (pac.SystemParameters().Set(pac::sim::sysparam::kStopInput, kExternalStopInput) !=
+        pac::sim::ParameterTable::SetResult::kOk) {
+        throw std::runtime_error("the simulator refuses the external stop input");
+    }
+    pac.Io().inputs.Set(kExternalStopInput, true);
 }
 
 std::vector<std::unique_ptr<Plant>> OnlinePlants(int count, std::chrono::nanoseconds pacCycle) {

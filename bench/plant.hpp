@@ -80,6 +80,10 @@ private:
     long movesDone_ = 0;
 };
 
+// The controller's set-up for ONLINE as the plant has it: system parameter 4 names an external stop input
+// (5.2.1.3), and that input is high. std::runtime_error if the simulator refuses it.
+void AllowOnline(pac::sim::PaControl& pac);
+
 // `count` plants with a controller cycle of `pacCycle` brought to ONLINE scan for scan, as in one runtime,
 // then 200 scans more so that every axis is under way. std::runtime_error if one does not reach ONLINE.
 std::vector<std::unique_ptr<Plant>> OnlinePlants(int count, std::chrono::nanoseconds pacCycle);

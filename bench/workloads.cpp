@@ -18,6 +18,8 @@
 #endif
 
 #include "cmd_handshake.h"
+#include "ctrl_hand.h"
+#include "pac/iec_time.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/sim/automatic_program.hpp"
 #include "plant.hpp"
@@ -108,28 +110,87 @@ WorkloadResult HandWrittenWorkload(bool job, int scans) {
     return Measure([&] { plc.Scan(); }, scans, [&] { return in.done; });
 }
 
-WorkloadResult CtrlWorkload(bool job, int scans) {
-    PlantOptions options;
-    options.axes = 0;
-    options.commands = false;
-    Plant plant(options);
-    plant.GoOnline();
-    auto& ctrl = plant.Ctrl();
+// FB_PAC_Ctrl or its hand-written C (bench/ctrl_hand.c) alone on the CTRL module, the controller set up for
+// ONLINE as in the plant: the same pins on either, so that one PLC program drives both.
+class CtrlBench {
+public:
+    CtrlBench(const pac::RigTiming& timing, bool handWritten)
+        : handWritten_(handWritten), plc_(timing, {}, pac::sim::ModuleLayout{true, 0}) {
+        AllowOnline(plc_.Controller());
+        if (handWritten_) {
+            CtrlHandInit(&hand_);
+            plc_.CallRaw8(pac::sim::ModuleLayout::kCtrlOffset,
+                          [this](const pac::sim::Image8& fromPac, pac::sim::Image8& toPac) {
+                              CtrlHandScan(&hand_, toPac.data(), fromPac.data(), plc_.Now().count());
+                          });
+        } else {
+            plc_.CallCtrl(fb_);
+        }
+        plc_.Start();
+    }
+
+    void Set(bool execute, int request, bool integerMode, std::chrono::nanoseconds timeout) {
+        if (handWritten_) {
+            hand_.execute = execute;
+            hand_.request = request;
+            hand_.integerMode = integerMode;
+            hand_.timeoutNs = timeout.count();
+        } else {
+            fb_->EXECUTE.value = execute;
+            fb_->REQUEST.value = static_cast<E_PAC_CTRLREQUEST>(request);
+            fb_->INTEGERMODE.value = integerMode;
+            fb_->TIMEOUT.value = pac::ToIecTime(timeout);
+        }
+    }
+    bool Execute() const { return handWritten_ ? hand_.execute != 0 : fb_->EXECUTE.value != 0; }
+    bool Done() const { return handWritten_ ? hand_.done != 0 : fb_->DONE.value != 0; }
+    bool Error() const { return handWritten_ ? hand_.error != 0 : fb_->ERROR.value != 0; }
+    bool Ready() const { return handWritten_ ? hand_.ready != 0 : fb_->READY.value != 0; }
+    void Scan() { plc_.Scan(); }
+    pac::PacRig& Plc() { return plc_; }
+    const CtrlHand& Hand() const { return hand_; }
+    pac::FbInstance<FB_PAC_CTRL>& Fb() { return fb_; }
+
+    // Scans until Ready, 20 ms more (the first control word is only the reference for the edges), then
+    // START ONLINE until it is Done and one scan with Execute low. std::runtime_error if ONLINE is not reached.
+    void GoOnline() {
+        const std::chrono::nanoseconds ten = std::chrono::seconds(10);
+        if (plc_.ScanUntil([this] { return Ready(); }, 2000) < 0) throw std::runtime_error("CtrlBench: not Ready");
+        plc_.Scan(static_cast<int>(milliseconds(20) / plc_.Timing().plcCycle) + 1);
+        Set(true, E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, false, ten);
+        if (plc_.ScanUntil([this] { return Done() || Error(); }, 2000) < 0 || !Done()) {
+            throw std::runtime_error("CtrlBench: ONLINE not reached");
+        }
+        Set(false, E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, false, ten);
+        plc_.Scan();
+    }
+
+private:
+    bool handWritten_;
+    pac::PacRig plc_;
+    pac::FbInstance<FB_PAC_CTRL> fb_ = PAC_FB(FB_PAC_CTRL);
+    CtrlHand hand_{};
+};
+
+WorkloadResult CtrlWorkload(bool job, bool handWritten, int scans) {
+    CtrlBench bench({}, handWritten);
+    bench.GoOnline();
     bool online = true;
     long done = 0;
     return Measure([&] {
         if (job) {
             // STOP ONLINE and START ONLINE in turn, each held until its final output, then one scan low.
-            if (ctrl->EXECUTE.value && (ctrl->DONE.value || ctrl->ERROR.value)) {
-                done += ctrl->DONE.value ? 1 : 0;
-                ctrl->EXECUTE.value = FALSE;
+            if (bench.Execute() && (bench.Done() || bench.Error())) {
+                done += bench.Done() ? 1 : 0;
+                bench.Set(false, online ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
+                          false, std::chrono::seconds(10));
                 online = !online;
-            } else if (!ctrl->EXECUTE.value) {
-                ctrl->REQUEST.value = online ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
-                ctrl->EXECUTE.value = TRUE;
+            } else if (!bench.Execute()) {
+                bench.Set(true, online ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE,
+                          false, std::chrono::seconds(10));
             }
         }
-        plant.Scan();
+        bench.Scan();
     }, scans, [&] { return done; });
 }
 
@@ -334,6 +395,60 @@ std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans) 
     return "";
 }
 
+std::string CompareCtrlWithHandWritten(const pac::RigTiming& timing, int scans) {
+    // Every request from the states it meets in this order: ONLINE and back, a start from "stopped", CANCEL,
+    // RESET ERROR, AUTOMATIC, a STOP that does not apply in home position, no request; the number format
+    // switched at every second request; a short Timeout, so that a request that hangs ends within the run.
+    static const int kRequests[] = {
+        E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, E_PAC_CTRLREQUEST__PAC_REQ_STOP,
+        E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE, E_PAC_CTRLREQUEST__PAC_REQ_STOP,
+        E_PAC_CTRLREQUEST__PAC_REQ_CANCEL,       E_PAC_CTRLREQUEST__PAC_REQ_RESET_ERROR,
+        E_PAC_CTRLREQUEST__PAC_REQ_START_AUTOMATIC, E_PAC_CTRLREQUEST__PAC_REQ_CANCEL,
+        E_PAC_CTRLREQUEST__PAC_REQ_STOP,         E_PAC_CTRLREQUEST__PAC_REQ_NONE};
+    constexpr int kCount = sizeof kRequests / sizeof kRequests[0];
+    CtrlBench library(timing, false);
+    CtrlBench hand(timing, true);
+    int started = 0;
+    long done = 0;
+    long errors = 0;
+    for (int scan = 1; scan <= scans; ++scan) {
+        // One program for both, on the library's outputs: the check below keeps the two the same.
+        const bool integerMode = (started / 2) % 2 == 1;
+        if (library.Execute() && (library.Done() || library.Error())) {
+            done += library.Done() ? 1 : 0;
+            errors += library.Error() ? 1 : 0;
+            for (CtrlBench* bench : {&library, &hand}) bench->Set(false, kRequests[0], integerMode, milliseconds(300));
+        } else if (!library.Execute() && library.Ready()) {
+            const int request = kRequests[started++ % kCount];
+            for (CtrlBench* bench : {&library, &hand}) bench->Set(true, request, integerMode, milliseconds(300));
+        }
+        library.Scan();
+        hand.Scan();
+        auto& fb = library.Fb();
+        const CtrlHand& c = hand.Hand();
+        const auto offset = pac::sim::ModuleLayout::kCtrlOffset;
+        if (library.Plc().ToPac().Module8(offset) != hand.Plc().ToPac().Module8(offset)) {
+            return "scan " + std::to_string(scan) + ": the module differs";
+        }
+        const bool same =
+            (fb->DONE.value != 0) == (c.done != 0) && (fb->BUSY.value != 0) == (c.busy != 0) &&
+            (fb->ERROR.value != 0) == (c.error != 0) && fb->ERRORID.value == c.errorId &&
+            static_cast<int>(fb->ERRORSOURCE.value) == c.errorSource && (fb->READY.value != 0) == (c.ready != 0) &&
+            (fb->BATTERYOK.value != 0) == (c.batteryOk != 0) && (fb->SYSTEMERROR.value != 0) == (c.systemError != 0) &&
+            (fb->AUTOMATICACTIVE.value != 0) == (c.automaticActive != 0) &&
+            (fb->AUTOMATICSTOPPED.value != 0) == (c.automaticStopped != 0) &&
+            (fb->ONLINEACTIVE.value != 0) == (c.onlineActive != 0) &&
+            (fb->ONLINESTOPPED.value != 0) == (c.onlineStopped != 0) &&
+            (fb->INTEGERMODEACTIVE.value != 0) == (c.integerModeActive != 0) &&
+            fb->SYSTEMERRORNUMBER.value == c.systemErrorNumber && (fb->MODECHANGE.value != 0) == (c.modeChange != 0);
+        if (!same) return "scan " + std::to_string(scan) + ": an output differs";
+    }
+    if (started < kCount || done < 3 || errors < 2) {
+        return "fewer than every request, three Done and two errors in " + std::to_string(scans) + " scans";
+    }
+    return "";
+}
+
 std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans) {
     pac::PacRig library(timing);
     auto cmd = PAC_FB(FB_PAC_CMD);
@@ -378,8 +493,10 @@ WorkloadResult RunWorkload(const std::string& name, int scans) {
         {"cmd-job", [](int n) { return CmdWorkload(true, n); }},
         {"c-idle", [](int n) { return HandWrittenWorkload(false, n); }},
         {"c-job", [](int n) { return HandWrittenWorkload(true, n); }},
-        {"ctrl-idle", [](int n) { return CtrlWorkload(false, n); }},
-        {"ctrl-job", [](int n) { return CtrlWorkload(true, n); }},
+        {"ctrl-idle", [](int n) { return CtrlWorkload(false, false, n); }},
+        {"ctrl-job", [](int n) { return CtrlWorkload(true, false, n); }},
+        {"ctrl-c-idle", [](int n) { return CtrlWorkload(false, true, n); }},
+        {"ctrl-c-job", [](int n) { return CtrlWorkload(true, true, n); }},
         {"axis-idle", [](int n) { return AxisWorkload(false, false, n); }},
         {"axis-job", [](int n) { return AxisWorkload(true, false, n); }},
         {"axis-c-idle", [](int n) { return AxisWorkload(false, true, n); }},

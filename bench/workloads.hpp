@@ -27,6 +27,7 @@ inline const char* const kCmdInterface = "FB_PAC_CMDINTERFACE_body__";
 inline const char* const kHandWritten = "CmdHandshakeScan";
 inline const char* const kAxisHandWritten = "AxisHandScan";
 inline const char* const kCtrl = "FB_PAC_CTRL_body__";
+inline const char* const kCtrlHandWritten = "CtrlHandScan";
 inline const char* const kAxis = "FB_PAC_AXIS_body__";
 inline const char* const kAutomatic = "FB_PAC_AUTOMATICMODULE_body__";
 inline const char* const kScan = "pac::PlcTask::Scan()";
@@ -40,7 +41,8 @@ struct WorkloadResult {
     long jobs = 0;  // jobs that ended with Done in the measured scans
 };
 
-// Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "axis-idle",
+// Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "ctrl-c-idle",
+// "ctrl-c-job" (the hand-written C of FB_PAC_Ctrl), "axis-idle",
 // "axis-job", "axis-c-idle", "axis-c-job" (the hand-written C of the axis), "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans;
 // "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows);
 // "plants-N-pacM": the same at a controller cycle of M ms.
@@ -56,5 +58,10 @@ std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans);
 // the same moves, aborts, Axis OFF, refused and superseded jobs for `scans` scans after ONLINE: the first
 // scan where the axis module or an output differs, described; empty if they agree on every scan.
 std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans);
+
+// FB_PAC_Ctrl and its hand-written C (bench/ctrl_hand.c) on two benches of the same timing, with every request
+// in turn for `scans` scans: the first scan where the CTRL module or an output differs, described; empty if
+// they agree on every scan.
+std::string CompareCtrlWithHandWritten(const pac::RigTiming& timing, int scans);
 
 }  // namespace pac::bench

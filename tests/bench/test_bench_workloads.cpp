@@ -20,7 +20,7 @@ constexpr int kScans = 2000;
 TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
     // At a 1 ms PLC cycle a command, a mode request or an automatic-module job ends within tens of scans and
     // an axis move within hundreds, so 2000 scans hold several of each.
-    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "axis-job", "axis-c-job", "automatic-job", "plant-pac1",
+    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "ctrl-c-job", "axis-job", "axis-c-job", "automatic-job", "plant-pac1",
                              "plant-pac10"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
@@ -29,7 +29,7 @@ TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
 }
 
 TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
-    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "axis-idle", "axis-c-idle", "automatic-idle"}) {
+    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "ctrl-c-idle", "axis-idle", "axis-c-idle", "automatic-idle"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
         EXPECT_EQ(result.jobs, 0) << name;
@@ -75,9 +75,9 @@ TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
     }
 }
 
-// The same for FB_PAC_Axis and its hand-written C: the same module and outputs in every scan, through moves,
-// aborts, Axis OFF, refused and superseded jobs.
-TEST(BenchWorkloads, HandWrittenAxisAgreesWithTheFbOnEveryScan) {
+// The same for FB_PAC_Axis and FB_PAC_Ctrl and their hand-written C: the same module and outputs in every scan,
+// through moves, aborts, Axis OFF, refused and superseded jobs, and through every CTRL request.
+TEST(BenchWorkloads, HandWrittenAxisAndCtrlAgreeWithTheFbsOnEveryScan) {
     for (int plcMs : {1, 5}) {
         for (int pacMs : {1, 10}) {
             for (int latency : {0, 2}) {
@@ -86,6 +86,8 @@ TEST(BenchWorkloads, HandWrittenAxisAgreesWithTheFbOnEveryScan) {
                 timing.pacCycle = milliseconds(pacMs);
                 timing.latencyCycles = latency;
                 EXPECT_EQ(pac::bench::CompareAxisWithHandWritten(timing, kScans), "")
+                    << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
+                EXPECT_EQ(pac::bench::CompareCtrlWithHandWritten(timing, kScans), "")
                     << "PLC " << plcMs << " ms, controller " << pacMs << " ms, latency " << latency;
             }
         }
