@@ -25,7 +25,8 @@ enum { COND_NONE, COND_WHILE_INPUT_1 };
 enum { SOURCE_NONE, SOURCE_COMMAND, SOURCE_SYSTEM, SOURCE_LIBRARY };
 enum { STATUS_ONLINE = 31 };
 /* status word bits (2.7.4) */
-enum { ST_HALTED = 0x2, ST_ACTIVE = 0x80, ST_STOPPED_BY_CONDITION = 0x800, ST_CMD_ERROR = 0x4000, ST_AXIS_ERROR = 0x8000 };
+enum { ST_HALTED = 0x2, ST_ACTIVE = 0x80, ST_STOPPED_BY_CONDITION = 0x800, ST_CMD_ERROR = 0x4000,
+       ST_AXIS_ERROR = 0x8000 };
 
 #define MS 1000000LL
 #define UPDATE_TIME (10 * MS) /* 2.3.4: the PA-CONTROL's update time in ONLINE */
@@ -108,7 +109,8 @@ static void Encode(AxisHand *a, AxisHandJob *j) {
     const int c = a->command;
     j->command = c;
     j->bits = c >= 0 && c <= CMD_CLEAR_DISPLACED ? kBits[c] : 0;
-    j->isMove = !(c == CMD_SET_REFERENCED || c == CMD_SET_POSITION || c == CMD_CLEAR_OFFSET || c == CMD_CLEAR_DISPLACED);
+    j->isMove =
+        !(c == CMD_SET_REFERENCED || c == CMD_SET_POSITION || c == CMD_CLEAR_OFFSET || c == CMD_CLEAR_DISPLACED);
     j->hasCondition = (c == CMD_MOVE_ABSOLUTE || c == CMD_MOVE_RELATIVE) && a->condition != COND_NONE;
     if (j->hasCondition) j->bits |= a->condition == COND_WHILE_INPUT_1 ? 0x100 : 0x200;
     j->velocity = a->velocity;
@@ -191,7 +193,8 @@ static void Stop(AxisHand *a) {
 static void Handshake(AxisHand *a, const uint8_t from[12], int admitted, int stopRequest, int abortRequest,
                       int64_t bound, int startLow, int onlineLeft, int64_t timeout, int64_t stopTimeout, int64_t now) {
     const uint32_t sw = a->status.statusWord;
-    const int active = (sw & ST_ACTIVE) != 0, cmdError = (sw & ST_CMD_ERROR) != 0, axisError = (sw & ST_AXIS_ERROR) != 0;
+    const int active = (sw & ST_ACTIVE) != 0, cmdError = (sw & ST_CMD_ERROR) != 0;
+    const int axisError = (sw & ST_AXIS_ERROR) != 0;
     a->activeSeen = (a->activeSeen || active) && a->ownsModule;
     a->takenOver |= a->startRaised && a->activeSeen;
     a->answered = 0;

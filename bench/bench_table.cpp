@@ -1,7 +1,7 @@
 // Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
 // `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
-// hand-written C of the CMD handshake, the axis and the CTRL module, simulation throughput, scale to 32 PA-CONTROLs, and scans from Execute
-// to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
+// hand-written C of the CMD handshake, the axis and the CTRL module, simulation throughput, scale to 32
+// PA-CONTROLs, and scans from Execute to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
 // `bench_table --only throughput,scale` prints only those sections.
 #include <sys/utsname.h>
 #include <unistd.h>
@@ -134,11 +134,12 @@ int PrintSideBySide() {
                     "0, 2 cycles), %d scans each: the hand-written C of the CMD interface, with writes, reads and a "
                     "refused code, writes the same CMD module and gives the same outputs and handshake history as "
                     "the FBs in every scan; the hand-written C of the axis, with absolute and relative moves, resets "
-                    "of \"displaced\", a refused velocity, Abort, Axis OFF, DISABLE DRIVE and superseded jobs, "
-                    "writes the same axis module and gives the same outputs as FB_PAC_Axis in every scan; the hand-written C "
-                    "of FB_PAC_Ctrl, with every request in turn (ONLINE, a STOP, a start from stopped, CANCEL, RESET "
-                    "ERROR, AUTOMATIC, a STOP that does not apply, none) and both number formats, writes the same CTRL "
-                    "module and gives the same outputs as the FB in every scan.\n\n",
+                    "of \"displaced\", a refused velocity, Abort, Axis OFF, DISABLE DRIVE, superseded jobs and a "
+                    "lost link, writes the same axis module and gives the same outputs as FB_PAC_Axis in every scan; "
+                    "the hand-written C of FB_PAC_Ctrl, with every request in turn (ONLINE, a STOP, a start from "
+                    "stopped, CANCEL, RESET ERROR, AUTOMATIC, a STOP that does not apply, none), both number formats "
+                    "and a lost link, writes the same CTRL module and gives the same outputs as the FB in every "
+                    "scan.\n\n",
                     timings, kCostScans);
     }
     return failures;

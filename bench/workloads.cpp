@@ -290,9 +290,8 @@ void CycleCheckedCommand(CommandInputs& in, bool done, bool error) {
 }
 
 // What the side-by-side check of the axis adds to the plant's moves back and forth, by scan: relative moves
-// (by 0 from 20 back: a job that may stand still), resets of "displaced" (no traverse, no ACTIVE), a refused
-// velocity, Abort, Enable falling (Axis OFF), DISABLE DRIVE and a new Execute edge while a job is busy (the
-// running job superseded).
+// (by 0 from 20 back: a job that may stand still), resets of "displaced", a refused velocity, Abort, Enable
+// falling (Axis OFF), DISABLE DRIVE and a new Execute edge while a job is busy (the running job superseded).
 struct AxisInputs {
     int command;
     std::uint16_t velocity;
@@ -313,6 +312,13 @@ AxisInputs CheckedAxisInputs(int scan, bool busy) {
     in.disableDrive = scan % 1000 >= 700 && scan % 1000 < 706;
     in.dropExecute = scan % 400 == 200 && busy;
     return in;
+}
+
+// A lost link in the last 100 of `scans` scans, for 30 scans: whatever runs then ends as the FBs end it
+// (late, so that the runs before it are not cut short by what the controller does after it).
+void PullCableNearTheEnd(pac::PacRig& plc, int scan, int scans) {
+    if (scan == scans - 100) plc.Bus().Disconnect(plc.Now());
+    if (scan == scans - 70) plc.Bus().Reconnect(plc.Now());
 }
 
 // The first difference between FB_PAC_Axis and the hand-written C in a scan; empty if none.
@@ -342,7 +348,8 @@ std::string AxisDifference(Plant& library, Plant& hand) {
         (fb->STOPPEDBYCONDITION.value != 0) == (AxisHandBit(&a, 11) != 0) &&
         (fb->DISPLACEDWHILEOFF.value != 0) == (AxisHandBit(&a, 12) != 0) &&
         (fb->GROUPDISPLACEDWHILEOFF.value != 0) == (AxisHandBit(&a, 13) != 0) &&
-        (fb->CMDERROR.value != 0) == (AxisHandBit(&a, 14) != 0) && (fb->AXISERROR.value != 0) == (AxisHandBit(&a, 15) != 0) &&
+        (fb->CMDERROR.value != 0) == (AxisHandBit(&a, 14) != 0) &&
+        (fb->AXISERROR.value != 0) == (AxisHandBit(&a, 15) != 0) &&
         fb->STATUSWORD.value == a.status.statusWord && fb->CMDERRORNUMBER.value == a.status.cmdErrorNumber &&
         fb->AXISERRORNUMBER.value == a.status.axisErrorNumber && fb->ACTUALPOSITION.value == a.actualPosition &&
         fb->STATUS.value.POSITION == a.status.position && fb->STATUS.value.STATUSWORD == a.status.statusWord;
@@ -383,6 +390,7 @@ std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans) 
         a.enable = in.enable;
         a.disableDrive = in.disableDrive;
         if (in.dropExecute) a.execute = 0;
+        for (Plant* plant : {&library, &hand}) PullCableNearTheEnd(plant->Plc(), scan, scans);
         library.Scan();
         hand.Scan();
         const std::string difference = AxisDifference(library, hand);
@@ -422,6 +430,7 @@ std::string CompareCtrlWithHandWritten(const pac::RigTiming& timing, int scans) 
             const int request = kRequests[started++ % kCount];
             for (CtrlBench* bench : {&library, &hand}) bench->Set(true, request, integerMode, milliseconds(300));
         }
+        for (CtrlBench* bench : {&library, &hand}) PullCableNearTheEnd(bench->Plc(), scan, scans);
         library.Scan();
         hand.Scan();
         auto& fb = library.Fb();

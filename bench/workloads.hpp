@@ -43,7 +43,8 @@ struct WorkloadResult {
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "ctrl-c-idle",
 // "ctrl-c-job" (the hand-written C of FB_PAC_Ctrl), "axis-idle",
-// "axis-job", "axis-c-idle", "axis-c-job" (the hand-written C of the axis), "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans` measured scans;
+// "axis-job", "axis-c-idle", "axis-c-job" (the hand-written C of the axis), "automatic-idle", "automatic-job",
+// "plant-pac1", "plant-pac10") with `scans` measured scans;
 // "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows);
 // "plants-N-pacM": the same at a controller cycle of M ms.
 // std::invalid_argument for another name.
@@ -55,13 +56,13 @@ WorkloadResult RunWorkload(const std::string& name, int scans);
 std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans);
 
 // FB_PAC_Axis and the hand-written C of one axis (bench/axis_hand.c) in two plants of the same timing, with
-// the same moves, aborts, Axis OFF, refused and superseded jobs for `scans` scans after ONLINE: the first
-// scan where the axis module or an output differs, described; empty if they agree on every scan.
+// the same moves, aborts, Axis OFF, refused and superseded jobs and a lost link for `scans` scans after ONLINE:
+// the first scan where the axis module or an output differs, described; empty if they agree on every scan.
 std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans);
 
 // FB_PAC_Ctrl and its hand-written C (bench/ctrl_hand.c) on two benches of the same timing, with every request
-// in turn for `scans` scans: the first scan where the CTRL module or an output differs, described; empty if
-// they agree on every scan.
+// in turn and a lost link for `scans` scans: the first scan where the CTRL module or an output differs,
+// described; empty if they agree on every scan.
 std::string CompareCtrlWithHandWritten(const pac::RigTiming& timing, int scans);
 
 }  // namespace pac::bench

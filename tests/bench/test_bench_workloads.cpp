@@ -20,8 +20,8 @@ constexpr int kScans = 2000;
 TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
     // At a 1 ms PLC cycle a command, a mode request or an automatic-module job ends within tens of scans and
     // an axis move within hundreds, so 2000 scans hold several of each.
-    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "ctrl-c-job", "axis-job", "axis-c-job", "automatic-job", "plant-pac1",
-                             "plant-pac10"}) {
+    for (const char* name : {"cmd-job", "c-job", "ctrl-job", "ctrl-c-job", "axis-job", "axis-c-job", "automatic-job",
+                             "plant-pac1", "plant-pac10"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
         EXPECT_GE(result.jobs, 2) << name;
@@ -29,7 +29,8 @@ TEST(BenchWorkloads, EveryJobWorkloadFinishesJobs) {
 }
 
 TEST(BenchWorkloads, IdleWorkloadsFinishNoJob) {
-    for (const char* name : {"cmd-idle", "c-idle", "ctrl-idle", "ctrl-c-idle", "axis-idle", "axis-c-idle", "automatic-idle"}) {
+    for (const char* name :
+         {"cmd-idle", "c-idle", "ctrl-idle", "ctrl-c-idle", "axis-idle", "axis-c-idle", "automatic-idle"}) {
         const pac::bench::WorkloadResult result = pac::bench::RunWorkload(name, kScans);
         EXPECT_EQ(result.scans, kScans) << name;
         EXPECT_EQ(result.jobs, 0) << name;
