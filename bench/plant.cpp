@@ -22,6 +22,9 @@ pac::RigTiming TimingOf(const PlantOptions& o) {
     return timing;
 }
 
+// The other of the two targets: the one farther from where the axis is.
+float NextTarget(float actualPosition) { return actualPosition < (kTargetA + kTargetB) / 2 ? kTargetB : kTargetA; }
+
 template <class Fb>
 bool Final(const pac::FbInstance<Fb>& fb) {
     return fb->DONE.value || fb->ERROR.value;
@@ -120,28 +123,29 @@ void Plant::NextMove(int k) {
     // leaves the module alone and no axis moves) and FB_PAC_Ctrl's ModeChange.
     axis->OPSTATUS.value = plc_.CmdInterface()->OPSTATUS.value;
     axis->MODECHANGE.value = ctrl_->MODECHANGE.value;
-    axis->EXECUTE.value = NextExecute(axis->EXECUTE.value, axis->DONE.value,
-                                      Final(axis) || axis->COMMANDABORTED.value, axis->ACTUALPOSITION.value,
-                                      axis->POSITION.value);
+    if (axis->EXECUTE.value) {
+        if (!Final(axis) && !axis->COMMANDABORTED.value) return;
+        movesDone_ += axis->DONE.value ? 1 : 0;
+        axis->EXECUTE.value = FALSE;
+    } else if (moves_) {
+        axis->POSITION.value = NextTarget(axis->ACTUALPOSITION.value);
+        axis->EXECUTE.value = TRUE;
+    }
 }
 
 void Plant::NextHandMove(int k) {
     AxisHand& axis = HandAxis(k);
     axis.opStatus = plc_.CmdInterface()->OPSTATUS.value;
     axis.modeChange = ctrl_->MODECHANGE.value;
-    axis.execute = NextExecute(axis.execute != 0, axis.done != 0, axis.done || axis.error || axis.commandAborted,
-                               axis.actualPosition, axis.position);
-}
-
-bool Plant::NextExecute(bool execute, bool done, bool final, float actualPosition, float& position) {
-    if (execute) {
-        if (!final) return true;
-        movesDone_ += done ? 1 : 0;
-        return false;
+    // The same program as NextMove's, on the hand-written C's pins.
+    if (axis.execute) {
+        if (!axis.done && !axis.error && !axis.commandAborted) return;
+        movesDone_ += axis.done ? 1 : 0;
+        axis.execute = 0;
+    } else if (moves_) {
+        axis.position = NextTarget(axis.actualPosition);
+        axis.execute = 1;
     }
-    if (!moves_) return false;
-    position = actualPosition < (kTargetA + kTargetB) / 2 ? kTargetB : kTargetA;
-    return true;
 }
 
 void AllowOnline(pac::sim::PaControl& pac) {

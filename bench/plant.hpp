@@ -62,8 +62,6 @@ private:
     void NextCommand();
     void NextMove(int k);
     void NextHandMove(int k);
-    // The program's next Execute of an axis (Position set for a new move), counting the moves Done.
-    bool NextExecute(bool execute, bool done, bool final, float actualPosition, float& position);
     int ScansFor(std::chrono::milliseconds time) const;
 
     PlantOptions options_;
