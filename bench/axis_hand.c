@@ -1,28 +1,15 @@
-/* FB_PAC_Axis's scan for one axis by hand (see axis_hand.h). Library error codes as in FB_PAC_Axis. */
+/* FB_PAC_Axis's scan for one axis by hand (see axis_hand.h). */
 #include "axis_hand.h"
 
 #include <math.h>
 #include <string.h>
 
-enum {
-    ERR_ACK_TIMEOUT = 0x8001,
-    ERR_NOT_READY = 0x8003,
-    ERR_INTERFACE_BUSY = 0x8006,
-    ERR_NOT_ALLOWED = 0x8008,
-    ERR_AXIS_ERROR = 0x800A,
-    ERR_INVALID_VELOCITY = 0x800B,
-    ERR_INVALID_ACCELERATION = 0x800C,
-    ERR_INVALID_POSITION = 0x800D,
-    ERR_NO_COMMAND = 0x800E,
-    ERR_WRONG_MODE = 0x8021,
-    ERR_STOP_TIMEOUT = 0x8022,
-    ERR_NOT_ONLINE = 0x8025
-};
-/* E_PAC_AxisCommand, E_PAC_MoveCondition, E_PAC_ErrorSource */
+#include "hand_c.h"
+
+/* E_PAC_AxisCommand, E_PAC_MoveCondition */
 enum { CMD_NONE, CMD_HOME, CMD_MOVE_ABSOLUTE, CMD_MOVE_RELATIVE, CMD_MOVE_TO_MAX, CMD_MOVE_TO_MIN,
        CMD_SET_REFERENCED, CMD_SET_POSITION, CMD_CLEAR_OFFSET, CMD_CLEAR_DISPLACED };
 enum { COND_NONE, COND_WHILE_INPUT_1 };
-enum { SOURCE_NONE, SOURCE_COMMAND, SOURCE_SYSTEM, SOURCE_LIBRARY };
 enum { STATUS_ONLINE = 31 };
 /* status word bits (2.7.4) */
 enum { ST_HALTED = 0x2, ST_ACTIVE = 0x80, ST_STOPPED_BY_CONDITION = 0x800, ST_CMD_ERROR = 0x4000,
@@ -71,10 +58,6 @@ static void Restart(AxisHandTimer *t, int64_t now) {
 static void Reset(AxisHandTimer *t) {
     t->state = t->q = t->prevIn = 0;
     t->et = 0;
-}
-
-static uint32_t Dword(const uint8_t *b) {
-    return ((uint32_t)b[0] << 24) | ((uint32_t)b[1] << 16) | ((uint32_t)b[2] << 8) | b[3];
 }
 
 /* A position field (2.5.3): IEEE REAL (a NaN reads as 0) or DINT x 1000. */
@@ -139,7 +122,7 @@ static void Module(AxisHand *a, const uint8_t from[12], int *inOnline) {
     tailChanged = memcmp(from + 8, a->decodedImage + 8, 4) != 0;
     if (tailChanged && sameHead && a->ownsModule && a->status.statusWord != 0) {
         memcpy(a->decodedImage, from, 12);
-        a->status.position = DecodeReal(Dword(from + 8), a->integerMode);
+        a->status.position = DecodeReal(HandGetDword(from + 8), a->integerMode);
         a->actualPosition = a->status.position;
     } else if (!sameHead || tailChanged) {
         a->decoded = 1;
@@ -148,10 +131,10 @@ static void Module(AxisHand *a, const uint8_t from[12], int *inOnline) {
         memcpy(a->decodedImage, from, 12);
         memset(&a->status, 0, sizeof a->status);
         if (a->ownsModule) {
-            const uint32_t raw = Dword(from + 8);
-            a->status.statusWord = Dword(from);
-            a->status.cmdErrorNumber = (uint16_t)((from[4] << 8) | from[5]);
-            a->status.axisErrorNumber = (uint16_t)((from[6] << 8) | from[7]);
+            const uint32_t raw = HandGetDword(from + 8);
+            a->status.statusWord = HandGetDword(from);
+            a->status.cmdErrorNumber = HandGetWord(from + 4);
+            a->status.axisErrorNumber = HandGetWord(from + 6);
             a->status.valid = a->status.statusWord != 0 || a->status.cmdErrorNumber != 0 ||
                               a->status.axisErrorNumber != 0 || raw != 0;
             a->status.position = DecodeReal(raw, a->integerMode);
@@ -213,7 +196,7 @@ static void Handshake(AxisHand *a, const uint8_t from[12], int admitted, int sto
         } else if (a->stepTimer.q) {
             Fail(a, ERR_INTERFACE_BUSY);
         } else if (!active && (a->activeSeen || startLow)) {
-            const uint32_t standsAt = Dword(from + 8);
+            const uint32_t standsAt = HandGetDword(from + 8);
             const AxisHandJob *j = &a->job;
             a->sent = a->job;
             a->mayStandStill = !j->isMove || j->hasCondition || j->command == CMD_HOME ||
@@ -284,18 +267,10 @@ static void Handshake(AxisHand *a, const uint8_t from[12], int admitted, int sto
 }
 
 static void Fields(uint8_t to[12], uint32_t word, uint16_t acceleration, uint16_t velocity, uint32_t position) {
-    to[0] = (uint8_t)(word >> 24);
-    to[1] = (uint8_t)(word >> 16);
-    to[2] = (uint8_t)(word >> 8);
-    to[3] = (uint8_t)word;
-    to[4] = (uint8_t)(acceleration >> 8);
-    to[5] = (uint8_t)acceleration;
-    to[6] = (uint8_t)(velocity >> 8);
-    to[7] = (uint8_t)velocity;
-    to[8] = (uint8_t)(position >> 24);
-    to[9] = (uint8_t)(position >> 16);
-    to[10] = (uint8_t)(position >> 8);
-    to[11] = (uint8_t)position;
+    HandPutDword(to, word);
+    HandPutWord(to + 4, acceleration);
+    HandPutWord(to + 6, velocity);
+    HandPutDword(to + 8, position);
 }
 
 void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int64_t nowNs) {

@@ -1,19 +1,11 @@
-/* The CMD handshake of one caller by hand (see cmd_handshake.h). Library error codes as in FB_PAC_Cmd. */
+/* The CMD handshake of one caller by hand (see cmd_handshake.h). */
 #include "cmd_handshake.h"
 
 #include <string.h>
 
-enum {
-    ERR_ACK_TIMEOUT = 0x8001,
-    ERR_END_TIMEOUT = 0x8002,
-    ERR_NOT_READY = 0x8003,
-    ERR_CONNECTION_LOST = 0x8004,
-    ERR_INVALID_CODE = 0x8005,
-    ERR_INTERFACE_BUSY = 0x8006,
-    ERR_SUPERSEDED = 0x8007,
-    ERR_NO_ERROR_NUMBER = 0x800F
-};
-enum { GET_STAT = 0x190B, SOURCE_NONE = 0, SOURCE_COMMAND = 1, SOURCE_LIBRARY = 3 };
+#include "hand_c.h"
+
+enum { GET_STAT = 0x190B };
 
 void CmdHandshakeInit(CmdHandshake *hs) {
     memset(hs, 0, sizeof *hs);
@@ -28,14 +20,9 @@ static void Fail(CmdHandshake *hs, uint16_t errorId) {
 }
 
 static void Write(uint8_t toPac[8], uint32_t data, uint16_t param, uint16_t codeAndFlag) {
-    toPac[0] = (uint8_t)(data >> 24);
-    toPac[1] = (uint8_t)(data >> 16);
-    toPac[2] = (uint8_t)(data >> 8);
-    toPac[3] = (uint8_t)data;
-    toPac[4] = (uint8_t)(param >> 8);
-    toPac[5] = (uint8_t)param;
-    toPac[6] = (uint8_t)(codeAndFlag >> 8);
-    toPac[7] = (uint8_t)codeAndFlag;
+    HandPutDword(toPac, data);
+    HandPutWord(toPac + 4, param);
+    HandPutWord(toPac + 6, codeAndFlag);
 }
 
 static void Park(uint8_t toPac[8], int sendFlag) { Write(toPac, 0, 0, (uint16_t)(GET_STAT | (sendFlag ? 0x8000 : 0))); }
@@ -73,10 +60,9 @@ static void FollowReply(CmdHandshake *hs, uint16_t reply, uint32_t replyData) {
 }
 
 void CmdHandshakeScan(CmdHandshake *hs, uint8_t toPac[8], const uint8_t fromPac[8], int64_t nowNs) {
-    const uint16_t reply = (uint16_t)((fromPac[6] << 8) | fromPac[7]);
+    const uint16_t reply = HandGetWord(fromPac + 6);
     const int receive = (reply & 0x8000) != 0;
-    const uint32_t replyData = ((uint32_t)fromPac[0] << 24) | ((uint32_t)fromPac[1] << 16) |
-                               ((uint32_t)fromPac[2] << 8) | fromPac[3];
+    const uint32_t replyData = HandGetDword(fromPac);
     const int64_t timeout = hs->timeoutNs > 0 ? hs->timeoutNs : 1000000000LL;
     const int64_t endTimeout = hs->endTimeoutNs > 0 ? hs->endTimeoutNs : 60000000000LL;
     const int edge = hs->execute && !hs->executeBefore;

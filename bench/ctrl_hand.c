@@ -1,19 +1,13 @@
-/* FB_PAC_Ctrl's scan by hand (see ctrl_hand.h). Library error codes as in FB_PAC_Ctrl. */
+/* FB_PAC_Ctrl's scan by hand (see ctrl_hand.h). */
 #include "ctrl_hand.h"
 
 #include <string.h>
 
-enum {
-    ERR_NOT_READY = 0x8003,
-    ERR_CONNECTION_LOST = 0x8004,
-    ERR_NOT_ALLOWED = 0x8008,
-    ERR_REQUEST_TIMEOUT = 0x8009,
-    ERR_NO_COMMAND = 0x800E
-};
+#include "hand_c.h"
+
 /* control word bits (2.5.1); Stop, Cancel and Error reset are low-active */
 enum { BIT_ERROR_RESET = 0x1, BIT_STOP = 0x2, BIT_CANCEL = 0x4, BIT_START_AUTOMATIC = 0x8, BIT_START_ONLINE = 0x10,
        BIT_INTEGER_MODE = 0x8000 };
-enum { SOURCE_NONE = 0, SOURCE_SYSTEM = 2, SOURCE_LIBRARY = 3 };
 /* The controller reads a bit within its cycle in home position (2.3.4) after it arrived: the bit and its answer
  * each take at most 3 scans or 30 ms, whichever is longer. */
 #define READ_TIME_NS 70000000LL
@@ -31,7 +25,7 @@ static void Fail(CtrlHand *c, uint16_t errorId) {
 }
 
 void CtrlHandScan(CtrlHand *c, uint8_t toPac[8], const uint8_t fromPac[8], int64_t nowNs) {
-    const uint16_t status = (uint16_t)((fromPac[0] << 8) | fromPac[1]);
+    const uint16_t status = HandGetWord(fromPac);
     const int64_t timeout = c->timeoutNs > 0 ? c->timeoutNs : 10000000000LL;
     const int edge = c->execute && !c->executeBefore;
     const int noModeShown = (status & 0x0F00) == 0;
@@ -46,7 +40,7 @@ void CtrlHandScan(CtrlHand *c, uint8_t toPac[8], const uint8_t fromPac[8], int64
     c->onlineStopped = (status & 0x800) != 0;
     c->onlineActive = (status & 0x400) && !c->onlineStopped;
     c->integerModeActive = (status & 0x8000) != 0;
-    c->systemErrorNumber = (uint16_t)((fromPac[4] << 8) | fromPac[5]);
+    c->systemErrorNumber = HandGetWord(fromPac + 4);
     cpuError = c->systemErrorNumber >= 1 && c->systemErrorNumber <= 99; /* class 1: only a power cycle clears it */
 
     if ((c->state == CTRL_HAND_DONE || c->state == CTRL_HAND_ERROR) && (!c->execute || edge)) {
@@ -134,8 +128,7 @@ void CtrlHandScan(CtrlHand *c, uint8_t toPac[8], const uint8_t fromPac[8], int64
         }
     }
     if (c->integerMode) word |= BIT_INTEGER_MODE;
-    toPac[0] = (uint8_t)(word >> 8);
-    toPac[1] = (uint8_t)word;
+    HandPutWord(toPac, word);
     memset(toPac + 2, 0, 6);
     c->errorSource = !c->error ? SOURCE_NONE : c->errorId >= 0x8000 ? SOURCE_LIBRARY : SOURCE_SYSTEM;
 }
