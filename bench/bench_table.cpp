@@ -1,8 +1,8 @@
 // Benchmark (not a test): the one table of docs/benchmarks.md, printed as Markdown by
 // `cmake --build build --target bench`: scan cost of the library's FBs (callgrind instructions) next to a
 // hand-written C of the CMD handshake, the axis and the CTRL module, simulation throughput, scale to 32
-// PA-CONTROLs, and scans from Execute to Done against the protocol minimum. `bench_table --workload W --scans N` runs one workload for callgrind;
-// `bench_table --only throughput,scale` prints only those sections.
+// PA-CONTROLs, and scans from Execute to Done against the protocol minimum. `bench_table --workload W
+// --scans N` runs one workload for callgrind; `bench_table --only throughput,scale` prints only those sections.
 #include <sys/utsname.h>
 #include <unistd.h>
 
@@ -103,8 +103,8 @@ std::string Cell(const std::optional<CallgrindCount>& c) { return c ? Number(c->
 
 std::string Jobs(const std::optional<CallgrindCount>& c) { return c ? std::to_string(c->jobs) : "-"; }
 
-// The library's CMD interface for one caller and FB_PAC_Axis agree with their hand-written C on every scan,
-// on timings that make the waits differ: a cost comparison of two programs that do different things would
+// The library's CMD interface for one caller, FB_PAC_Axis and FB_PAC_Ctrl agree with their hand-written C on
+// every scan, on timings that make the waits differ: a cost comparison of two programs that do different things would
 // say nothing.
 int PrintSideBySide() {
     int failures = 0;

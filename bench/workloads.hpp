@@ -42,9 +42,9 @@ struct WorkloadResult {
 };
 
 // Runs workload `name` ("cmd-idle", "cmd-job", "c-idle", "c-job", "ctrl-idle", "ctrl-job", "ctrl-c-idle",
-// "ctrl-c-job" (the hand-written C of FB_PAC_Ctrl), "axis-idle",
-// "axis-job", "axis-c-idle", "axis-c-job" (the hand-written C of the axis), "automatic-idle", "automatic-job",
-// "plant-pac1", "plant-pac10") with `scans` measured scans;
+// "ctrl-c-job" (the hand-written C of FB_PAC_Ctrl), "axis-idle", "axis-job", "axis-c-idle", "axis-c-job" (the
+// hand-written C of the axis), "automatic-idle", "automatic-job", "plant-pac1", "plant-pac10") with `scans`
+// measured scans;
 // "plants-N": N plants at a 10 ms controller cycle, `scans` PLC cycles of N scans each (the scale rows);
 // "plants-N-pacM": the same at a controller cycle of M ms.
 // std::invalid_argument for another name.
