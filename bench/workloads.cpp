@@ -321,6 +321,18 @@ void PullCableNearTheEnd(pac::PacRig& plc, int scan, int scans) {
     if (scan == scans - 70) plc.Bus().Reconnect(plc.Now());
 }
 
+// STOP ONLINE 380 scans before the end of `scans`, START ONLINE 80 scans later, each request's Execute low
+// once it is final: a move that runs then ends with HALT, and jobs are refused until ONLINE runs again.
+void StopAndRestartOnline(Plant& plant, int scan, int scans) {
+    auto& ctrl = plant.Ctrl();
+    if (ctrl->EXECUTE.value && (ctrl->DONE.value || ctrl->ERROR.value)) ctrl->EXECUTE.value = FALSE;
+    if (scan == scans - 380 || scan == scans - 300) {
+        ctrl->REQUEST.value =
+            scan == scans - 380 ? E_PAC_CTRLREQUEST__PAC_REQ_STOP : E_PAC_CTRLREQUEST__PAC_REQ_START_ONLINE;
+        ctrl->EXECUTE.value = TRUE;
+    }
+}
+
 // The first difference between FB_PAC_Axis and the hand-written C in a scan; empty if none.
 std::string AxisDifference(Plant& library, Plant& hand) {
     auto& fb = library.Axis(1);
@@ -390,7 +402,10 @@ std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans) 
         a.enable = in.enable;
         a.disableDrive = in.disableDrive;
         if (in.dropExecute) a.execute = 0;
-        for (Plant* plant : {&library, &hand}) PullCableNearTheEnd(plant->Plc(), scan, scans);
+        for (Plant* plant : {&library, &hand}) {
+            StopAndRestartOnline(*plant, scan, scans);
+            PullCableNearTheEnd(plant->Plc(), scan, scans);
+        }
         library.Scan();
         hand.Scan();
         const std::string difference = AxisDifference(library, hand);

@@ -56,7 +56,8 @@ WorkloadResult RunWorkload(const std::string& name, int scans);
 std::string CompareWithHandWritten(const pac::RigTiming& timing, int scans);
 
 // FB_PAC_Axis and the hand-written C of one axis (bench/axis_hand.c) in two plants of the same timing, with
-// the same moves, aborts, Axis OFF, refused and superseded jobs and a lost link for `scans` scans after ONLINE:
+// the same moves, aborts, Axis OFF, refused and superseded jobs, ONLINE stopped and started again and a lost
+// link for `scans` scans after ONLINE:
 // the first scan where the axis module or an output differs, described; empty if they agree on every scan.
 std::string CompareAxisWithHandWritten(const pac::RigTiming& timing, int scans);
 

@@ -83,7 +83,7 @@ TEST(BenchWorkloads, HandWrittenCAgreesWithTheFbsOnEveryScan) {
 }
 
 // The same for FB_PAC_Axis and its hand-written C, through moves, aborts, Axis OFF, refused and superseded
-// jobs and a lost link.
+// jobs, ONLINE stopped and started again and a lost link.
 TEST(BenchWorkloads, HandWrittenAxisAgreesWithTheFbOnEveryScan) {
     ExpectAgreementOnEveryTiming(pac::bench::CompareAxisWithHandWritten);
 }
