@@ -40,7 +40,10 @@ include("${CMAKE_CURRENT_LIST_DIR}/PacPythonVenv.cmake")
 pac_python_venv("${PACST_VENV}" REQUIREMENTS "${PACST_SOURCE_DIR}/requirements.txt")
 file(GLOB_RECURSE PACST_TOOL_FILES CONFIGURE_DEPENDS "${PACST_SOURCE_DIR}/pacst/*.py"
      "${PACST_SOURCE_DIR}/pacst/include/*.h")
-set(PACST_COMMAND env "PYTHONPATH=${PACST_SOURCE_DIR}" "${PACST_PYTHON}" -m pacst CACHE INTERNAL "")
+# Its bytecode is kept in the build tree (never beside the sources), so that the build's and the tests' many runs
+# of pacst load it instead of compiling every module again (PYTHONDONTWRITEBYTECODE would forbid it).
+set(PACST_COMMAND env -u PYTHONDONTWRITEBYTECODE "PYTHONPYCACHEPREFIX=${CMAKE_BINARY_DIR}/pycache"
+    "PYTHONPATH=${PACST_SOURCE_DIR}" "${PACST_PYTHON}" -m pacst CACHE INTERNAL "")
 if(PAC_ST_COMPILER STREQUAL "matiec")
   if(NOT EXISTS "${IEC2C}" OR NOT EXISTS "${MATIEC_LIB}/C/iec_std_lib.h")
     message(FATAL_ERROR "PAC_ST_COMPILER=matiec needs -DIEC2C=<path to iec2c> and "

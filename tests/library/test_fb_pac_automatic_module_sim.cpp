@@ -21,6 +21,7 @@
 #include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
+#include "log_follower.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/pac_rig.hpp"
 #include "pac/sim/automatic_module.hpp"
@@ -258,10 +259,7 @@ private:
     // Every controller cycle that ended in an AUTOMATIC status copied module k into FW k / N k / R k: the bytes
     // must be zeros or what FB_PAC_AutomaticModule k was told to send (never an axis FB's).
     void CheckControllerCycles() {
-        for (const pac::sim::ExchangeRecord& r : plc_.Controller().Log().Records()) {
-            if (seenAny_ && r.time <= lastTime_) continue;
-            seenAny_ = true;
-            lastTime_ = r.time;
+        follower_.ForEachNew(plc_.Controller().Log(), [this](const pac::sim::ExchangeRecord& r) {
             const std::uint8_t status = r.fromPac[kOpStatusByte];
             if (!options_.axisFbs && status >= 30 && status <= 39) {
                 // ONLINE acts on the module as a control word (2.7.1): with no axis FB it must be all zero.
@@ -272,7 +270,7 @@ private:
                     }
                 }
             }
-            if (!InAutomatic(status) || r.toPac.AllZero()) continue;
+            if (!InAutomatic(status) || r.toPac.AllZero()) return;
             ++automaticCycles_;
             for (int k = 1; k <= kModules; ++k) {
                 const AutomaticModuleData d =
@@ -282,7 +280,7 @@ private:
                                   << pac::sim::FormatTime(r.time) << ": " << pac::sim::ToHex(r.toPac, layout_);
                 }
             }
-        }
+        });
     }
     bool Acceptable(int k, const AutomaticModuleData& d) {
         const bool integer = plc_.Controller().IntegerFormat();
@@ -308,8 +306,7 @@ private:
     std::vector<std::unique_ptr<AutoFb>> autos_;
     std::vector<Sent> sent_;
     std::vector<Allowed> allowed_;
-    bool seenAny_ = false;
-    nanoseconds lastTime_{0};
+    pac::test::LogFollower follower_;
     int automaticCycles_ = 0;
     int violations_ = 0;
     std::uint8_t statusBefore_ = 0;

@@ -23,6 +23,7 @@
 #include "rig_timing.hpp"
 #include "bus_timing.hpp"
 #include "gvl_constants.hpp"
+#include "log_follower.hpp"
 #include "pac/rig_trace.hpp"
 #include "pac/fb_instance.hpp"
 #include "pac/sim/axis_module.hpp"
@@ -146,10 +147,7 @@ public:
         : layout_(layout), last_(static_cast<std::size_t>(layout.axisModules) + 1) {}
 
     void Follow(const pac::sim::ExchangeLog& log) {
-        for (const pac::sim::ExchangeRecord& r : log.Records()) {
-            if (seenAny_ && r.time <= lastTime_) continue;
-            seenAny_ = true;
-            lastTime_ = r.time;
+        follower_.ForEachNew(log, [this](const pac::sim::ExchangeRecord& r) {
             for (int k = 1; k <= layout_.axisModules; ++k) {
                 Module& m = last_[static_cast<std::size_t>(k)];
                 const std::size_t offset = layout_.AxisOffset(k);
@@ -164,7 +162,7 @@ public:
                 }
                 m.status = pac::sim::ReadDword(r.fromPac.Module12(offset), 0);
             }
-        }
+        });
     }
     int StartEdges(int k) const { return last_[static_cast<std::size_t>(k)].edges; }
     int LostEdges(int k) const { return last_[static_cast<std::size_t>(k)].lostEdges; }
@@ -183,8 +181,7 @@ private:
     };
     pac::sim::ModuleLayout layout_;
     std::vector<Module> last_;
-    bool seenAny_ = false;
-    nanoseconds lastTime_{0};
+    pac::test::LogFollower follower_;
 };
 
 // ---------------------------------------------------------------------------------------------------
