@@ -290,6 +290,8 @@ class BodyCompiler:
                 raise self.err(node, "pointers are outside the portable subset")
             r = self._root(node.name)
             return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
+        if self.comp.user and (cls == "ChainedFunctionCall" or cls == "FunctionCall" and node.dereferenced):
+            return self._through(self.call_result(node), node, raw)
         if cls != "MultiElementVariable":
             raise self.err(node, "a variable is expected here")
         if (node.dereferenced or node.name.dereferenced) and not self.comp.user:
@@ -321,25 +323,7 @@ class BodyCompiler:
                 if _cls(field) != "SimpleVariable":
                     raise self.err(el, "bit access (w.15) is outside the portable subset: use "
                                        "(w AND WORD#16#8000) <> WORD#0")
-                fname = _name(field.name)
-                if r.type.is_struct:
-                    m = T.find_var(r.type.members, fname)
-                    if m is None:
-                        raise self.err(field, f"{r.type.name} has no member '{fname}'")
-                    r = Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
-                            r.subscripted)
-                elif r.type.is_fb:
-                    fv = r.type.var(fname)
-                    if fv is None:
-                        raise self.err(field, f"{r.type.name} has no variable '{fname}'")
-                    if fv.section not in ("input", "output"):
-                        raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
-                                              "another FB's private variables")
-                    writable = fv.section == "input"
-                    r = Ref(f"{r.read()}.{fv.cname}", True, fv.type, r.var, "", writable,
-                            "an FB's outputs are written only by the FB itself")
-                else:
-                    raise self.err(field, f"'{fname}': {r.type.name} has no members")
+                r = self._member(r, field)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
                 r = self._pointer_index(r, el)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
@@ -364,6 +348,48 @@ class BodyCompiler:
         if node.dereferenced:
             r = self._deref(r, node)
         return self._through(r, node, raw)
+
+    def _member(self, r, field):
+        """The member `field` (a SimpleVariable) of the struct or FB instance `r`."""
+        fname = _name(field.name)
+        if r.type.is_struct:
+            m = T.find_var(r.type.members, fname)
+            if m is None:
+                raise self.err(field, f"{r.type.name} has no member '{fname}'")
+            return Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
+                       r.subscripted)
+        if r.type.is_fb:
+            fv = r.type.var(fname)
+            if fv is None:
+                raise self.err(field, f"{r.type.name} has no variable '{fname}'")
+            if fv.section not in ("input", "output"):
+                raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
+                                      "another FB's private variables")
+            writable = fv.section == "input"
+            return Ref(f"{r.read()}.{fv.cname}", True, fv.type, r.var, "", writable,
+                       "an FB's outputs are written only by the FB itself")
+        raise self.err(field, f"'{fname}': {r.type.name} has no members")
+
+    def call_result(self, node):
+        """User mode: what a call's result gives, as a Ref: `F(x)^` (a FunctionCall read through its POINTER
+        result), `F(x).Member`, `Get(i)^.Data` (a ChainedFunctionCall whose later calls are members rewritten
+        before parsing, rewrite.CALL_MEMBER). The result itself is read only; where a POINTER result points is
+        read and written. A METHOD called on a call's result is refused."""
+        calls = node.invocations if _cls(node) == "ChainedFunctionCall" else [node]
+        for member in calls[1:]:
+            if (self.comp.file, *pos(member)) not in self.comp.call_members:
+                raise self.err(node, CHAINED_CALL)
+        first = calls[0]
+        te = self.ex.expr(dataclasses.replace(first, dereferenced=False))
+        result = T.Var(str(dataclasses.replace(first, dereferenced=False)), "result", te.type, None, first)
+        r = Ref(te.code, False, te.type, result, writable=False, why_not="it is a call's result")
+        if first.dereferenced:
+            r = self._deref(r, first)
+        for member in calls[1:]:
+            r = self._member(self._through(r, member, False), member.name)
+            if member.dereferenced:
+                r = self._deref(r, member)
+        return r
 
     def _pointer_index(self, r, el):
         """User mode: `p[i]`, the i-th element of p's target type from where p points, as TwinCAT reads it

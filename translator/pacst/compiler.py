@@ -12,7 +12,7 @@ import dataclasses
 import os
 import re
 
-from . import literals
+from . import literals, rewrite
 from . import types as T
 from .body import BodyCompiler
 from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
@@ -148,6 +148,7 @@ class Compiler:
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
+        self.call_members = set()  # (file, line, column) of each member of a call's result (rewrite.CALL_MEMBER)
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
@@ -182,8 +183,10 @@ class Compiler:
         self.sources = sources
         for src in sources:
             self.file = src.path
-            for line, col, what in getattr(src, "rewrites", ()):  # rewrite.user_text's
+            for line, col, what, parsed_col in getattr(src, "rewrites", ()):  # rewrite.user_text's
                 self.dialect_at(src.path, line, col, what)
+                if what == rewrite.CALL_MEMBER:
+                    self.call_members.add((src.path, line, parsed_col))
             for item in src.tree.items:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:

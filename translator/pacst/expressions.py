@@ -238,7 +238,9 @@ class ExprCompiler:
         return method(node, want)
 
     def _e_ChainedFunctionCall(self, node, want):
-        raise self.err(node, CHAINED_CALL)
+        if not self.comp.user or self.body is None:
+            raise self.err(node, CHAINED_CALL)
+        return self._read(self.body.call_result(node), node)
 
     def _typed_int(self, node, value, tname):
         t = self.comp._resolve_type(tname, allow_fb=False)
@@ -410,7 +412,10 @@ class ExprCompiler:
             if p["get"] is None:
                 raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
             return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
-        ref = self.body.ref(node)
+        return self._read(self.body.ref(node), node)
+
+    def _read(self, ref, node):
+        """The value of the variable `ref` (an FB instance's address in user mode)."""
         if ref.type.is_fb and self.comp.user:  # its address: an INTERFACE variable may take it (coerce)
             return TE(ref.type, f"&({ref.read()})")
         if ref.type.is_fb:
@@ -672,6 +677,8 @@ class ExprCompiler:
         return dataclasses.replace(node, name=dataclasses.replace(node.name, name=f"AssertEquals_{name}"))
 
     def _e_FunctionCall(self, node, want):
+        if node.dereferenced and self.comp.user and self.body is not None:  # F(x)^
+            return self._read(self.body.call_result(node), node)
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.body.lookup if self.body else None))
         node = self.generic_assert(node)
         target = self.body.method_target(node.name) if self.body is not None else None
@@ -1131,10 +1138,13 @@ class ExprCompiler:
         """User mode: the C of the argument for the REFERENCE TO T input `v` when `arg` is a variable of type T (the
         reference is bound to it, as REF= binds it) or a REFERENCE TO T itself (its reference is passed on), as TwinCAT
         and CODESYS pass `Get_As_String(Index, sItem)`; None for any other argument."""
+        call = _cls(arg) == "ChainedFunctionCall" or _cls(arg) == "FunctionCall" and arg.dereferenced
         if not (self.comp.user and v.type.is_pointer and v.type.reference) or self.body is None \
-                or _cls(arg) not in ("SimpleVariable", "MultiElementVariable"):
+                or _cls(arg) not in ("SimpleVariable", "MultiElementVariable") and not call:
             return None
         src = self.body.ref(arg, raw=True)
+        if call and not src.writable:  # F(x).Member: a member of a value, which has no address
+            return None
         if src.type is v.type or src.type.is_pointer and src.type.reference and src.type.target is v.type.target:
             return f"(({v.type.cname})({src.read()}))"
         if (src.type is v.type.target or system.same_struct(src.type, v.type.target)) and type(src) is Ref:
