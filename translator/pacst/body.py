@@ -228,11 +228,26 @@ class BodyCompiler:
             raise self.err(first.field, f"{gvl.name}.{_name(first.field.name)} cannot be used: a declaration of the "
                                         f"global variable list {gvl.name} was refused (above)")
         if g is None:
+            self._refused_pending(gvl, first.field)
             raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
         if all(e is not g for e, _ in self.pou.externals.values()):
             self.pou.globals_used[g.csym] = g
         self.pou.qualifiers.append((node.name.name.start_pos, first.field.name.start_pos, g))
         return self._global_ref(g, False), node.elements[1:]
+
+    def _refused_pending(self, gvl, field):
+        """Refuses `List.Name`, a variable of the global list `gvl` that waits for a FUNCTION_BLOCK whose declaration
+        was refused (Compiler.pending_globals), as a use of that FB's type is refused."""
+        name = _name(field.name).upper()
+        for fb, waiting in self.comp.pending_globals.items():
+            if fb not in self.comp.refused:
+                continue
+            for list_, item, _, _ in waiting:
+                if list_ is gvl and any(_name(t).upper() == name for t in item.spec.variables):
+                    spelled = re.search(re.escape(fb), str(item.init), re.I)
+                    raise self.err(field, f"{gvl.name}.{_name(field.name)} cannot be used: its type names "
+                                          f"{spelled.group(0) if spelled else fb}, whose declaration was refused "
+                                          "(above)")
 
     def _program_variable(self, node):
         """`MAIN.x` in user mode: (the Ref of a PROGRAM's variable, the elements after it), or None. TwinCAT and

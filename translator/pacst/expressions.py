@@ -689,6 +689,8 @@ class ExprCompiler:
                 raise self.err(node, "recursion is outside pacst's user programs")
             return self._user_call(node, target[1], this=target[0])
         if _cls(node.name) != "SimpleVariable":
+            if self.comp.user and self.body is not None:
+                self.body.ref(node.name)  # what is wrong with the instance it names (a list's variable refused)
             raise self.err(node, "only plain function names can be called")
         name = _name(node.name.name)
         up = name.upper()
