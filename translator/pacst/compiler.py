@@ -904,14 +904,15 @@ class Compiler:
         if kind == "fb":
             pou.fbtype = T.FbType(pou.name)
             pou.fbtype.pou = pou
-        elif node.return_type is None:
-            if not pou.native and not self.user:  # TwinCAT and CODESYS take a FUNCTION without a result
-                raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
-        else:
-            pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
-                else self._resolve_type(node.return_type, allow_fb=False)
-        constant_block = None
+        elif node.return_type is None and not pou.native and not self.user:
+            raise self.err(node, "a FUNCTION needs a return type (MATIEC)")  # TwinCAT and CODESYS take one without
         refused = []
+        if kind != "fb" and node.return_type is not None:
+            read = self._spec_type if _cls(node.return_type) != "Token" else self._resolve_type
+            # user mode: a refused result hides no refusal of the pins
+            pou.ret = self._refusals(refused, read, node.return_type, False) if self.user else \
+                read(node.return_type, False)
+        constant_block = None
         self.constant_blocks = node.declarations
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
@@ -999,6 +1000,8 @@ class Compiler:
         declared = {v.name.upper() for v in pou.vars}
         lost = {_name(dv.variable.name).upper() for block in node.declarations for item in block.items
                 for dv in getattr(item, "variables", []) if _cls(dv) == "DeclaredVariable"} - declared
+        if pou.kind == "function" and getattr(node, "return_type", None) is not None and pou.ret is None:
+            lost.add(pou.name.upper())  # its result's type was refused
         self.pous[pou.cname] = pou
         try:
             BodyCompiler(self, pou).compile()
@@ -1076,25 +1079,45 @@ class Compiler:
             raise
         self.program.items.append(("type", t, self.file))
 
+    @staticmethod
+    def _refusals(refused, declare, *args):
+        """declare(*args); its refusals (user mode: every refused declaration is reported, not only the first) are
+        added to `refused`."""
+        try:
+            return declare(*args)
+        except (StError, StErrors) as e:
+            refused += e.errors if isinstance(e, StErrors) else [e]
+            return None
+
+    def _result_type(self, rt):
+        """The type of a METHOD's result `rt`."""
+        return self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+
     def _interface_members(self, t, node):
-        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`."""
+        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`; every refusal of a result, a pin or a
+        PROPERTY is reported."""
+        refused = []
         for m in self.members.get(id(node), []):
             if _cls(m) == "Property":
-                self._interface_property(t, m)
+                self._refusals(refused, self._interface_property, t, m)
                 continue
             if _cls(m) != "Method":
-                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE: an INTERFACE declares METHODs and PROPERTYs")
+                refused.append(self.err(m, f"{_cls(m).upper()} in an INTERFACE: an INTERFACE declares METHODs and "
+                                           "PROPERTYs"))
+                continue
             proto = Pou("function", _name(m.name), self.file, m)
             if m.return_type is not None:
-                rt = m.return_type
-                proto.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-                    self._resolve_type(rt, allow_fb=False)
+                proto.ret = self._refusals(refused, self._result_type, m.return_type)
             for block in m.declarations:
-                self._var_block(proto, block)
+                self._refusals(refused, self._var_block, proto, block)
             if proto.cname in t.protos:
-                raise self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its bases')")
+                refused.append(self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its "
+                                                "bases')"))
             t.methods.append(proto.name)
             t.protos[proto.cname] = proto
+        if refused:
+            raise StErrors(refused)
 
     def _interface_property(self, t, node):
         """User mode: a PROPERTY of an INTERFACE: `X` its type, `X.Get` and `X.Set` its accessors (TwinCAT's
@@ -1235,25 +1258,29 @@ class Compiler:
         m.owner = owner
         m.cfunc = f"{owner.cname}__{prefix}{name.upper()}"
         m.action = is_action
+        refused = []  # every refusal of its result and pins is reported
         if not is_action and node.return_type is not None:
-            rt = node.return_type
-            m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-                self._resolve_type(rt, allow_fb=False)
+            m.ret = self._refusals(refused, self._result_type, node.return_type)
         self.constant_blocks = [] if is_action else node.declarations  # its own constants, then its FB's
         for block in ([] if is_action else node.declarations):
             if _cls(block) == "MethodInstanceVariableDeclarations":
-                self._instance_vars(owner, m, block, inherited)
-                continue
-            if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
-                for item in block.items:
-                    vtype = self._spec_type(item.init.spec, allow_fb=False)
-                    for dv in item.variables:
-                        self._declare_var(m, "var", False, vtype, item.init.value, dv)
-                continue
-            self._var_block(m, block)
+                self._refusals(refused, self._instance_vars, owner, m, block, inherited)
+            elif _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
+                self._refusals(refused, self._method_temps, m, block)
+            else:
+                self._refusals(refused, self._var_block, m, block)
         self.constant_blocks = None
+        if refused:
+            raise StErrors(refused)
         owner.methods[prefix + name.upper()] = m
         return m
+
+    def _method_temps(self, m, block):
+        """A METHOD's VAR_TEMP: locals of its call."""
+        for item in block.items:
+            vtype = self._spec_type(item.init.spec, allow_fb=False)
+            for dv in item.variables:
+                self._declare_var(m, "var", False, vtype, item.init.value, dv)
 
     def _instance_vars(self, owner, method, block, inherited):
         """User mode: a METHOD's VAR_INST, kept from call to call: variables of its FUNCTION_BLOCK (FB instances
