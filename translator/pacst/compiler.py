@@ -1644,20 +1644,33 @@ class Compiler:
         if extra is None or any(v.section in ("output", "inout") for v in method.vars):
             raise self.err(var.node, f"the METHOD FB_init of {var.type.name} is not TwinCAT's: it begins with the "
                                      "inputs bInitRetains and bInCopyCode (BOOL) and has no outputs")
-        given = [getattr(p, "value", p) for p in getattr(var, "fb_init_args", None) or [] if p is not None]
-        if len(given) > len(extra):
-            raise self.err(var.node, f"{len(given)} FB_init arguments for the {len(extra)} inputs of "
+        params = [p for p in getattr(var, "fb_init_args", None) or [] if p is not None]
+        if len(params) > len(extra):
+            raise self.err(var.node, f"{len(params)} FB_init arguments for the {len(extra)} inputs of "
                                      f"{var.type.name}.FB_init after bInitRetains and bInCopyCode")
+        given = {}  # the inputs' upper names -> the values given: by position, or by name (`tTn := LTIME#1S`)
+        for v, p in zip(extra, params):
+            name = getattr(p, "name", None)
+            if name is not None:
+                v = T.find_var(extra, _name(name))
+                if v is None or v.cname in given:
+                    raise self.err(p, f"FB_init argument '{_name(name)}' of {var.type.name}: "
+                                      + ("given twice" if v is not None else "FB_init has no such input after "
+                                         "bInitRetains and bInCopyCode"))
+            given[v.cname] = getattr(p, "value", p)
         args = ["FALSE", "FALSE"]
-        for v, value in zip(extra, given + [None] * (len(extra) - len(given))):
+        for v in extra:
+            value = given.get(v.cname)
             if value is None:
                 args.append(self.default_c(v.type) if v.init is None else
                             ExprCompiler(self, None).coerce(self.literal_te(v.init, v.type), v.type, v.init))
-            elif self.initial_constant(value) is None and _cls(value) not in _INT_LITERALS | _BIT_LITERALS | {
-                    "Real", "Boolean", "Duration", "String"}:
-                args.append(self._fb_init_variable(var, value, v))
             else:
-                args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
+                try:  # a literal or a constant (`E_Mode.Hold`, `Lib.GVL_Limits.LREAL_MAX`), as an initial value
+                    args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
+                except StError:
+                    if _cls(value) not in ("SimpleVariable", "MultiElementVariable"):
+                        raise
+                    args.append(self._fb_init_variable(var, value, v))
         return f"{method.cfunc}(&{target}, TRUE, NULL, {', '.join(args)});"
 
     def _fb_init_variable(self, var, value, pin):
