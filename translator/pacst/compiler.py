@@ -1653,10 +1653,10 @@ class Compiler:
             name = getattr(p, "name", None)
             if name is not None:
                 v = T.find_var(extra, _name(name))
-                if v is None or v.cname in given:
-                    raise self.err(p, f"FB_init argument '{_name(name)}' of {var.type.name}: "
-                                      + ("given twice" if v is not None else "FB_init has no such input after "
-                                         "bInitRetains and bInCopyCode"))
+            if v is None or v.cname in given:
+                raise self.err(p, f"FB_init argument '{_name(name) if v is None else v.name}' of {var.type.name}: "
+                                  + ("given twice" if v is not None else "FB_init has no such input after "
+                                     "bInitRetains and bInCopyCode"))
             given[v.cname] = getattr(p, "value", p)
         args = ["FALSE", "FALSE"]
         for v in extra:
