@@ -320,7 +320,7 @@ class Compiler:
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
         if self.user and system.is_system(name) and "." in name:  # __SYSTEM.TYPE_CLASS, __SYSTEM.AnyType
-            return system.system_type(self, name.split(".", 1)[1], token)
+            return system.system_type(self, system.canonical(name.split("."))[1], token)
         if self.user and name.upper() == "ANY":  # a VAR_INPUT of any type: a __SYSTEM.AnyType
             return system.any_type(self, token)
         if self.user and "." in name:
@@ -456,11 +456,14 @@ class Compiler:
         if not self.user or _cls(node) != "MultiElementVariable" or node.name.dereferenced:
             return node
         first = _name(node.name.name)
+        head = node.elements[0]
+        if _cls(head) == "FieldSelector" and _cls(head.field) == "SimpleVariable" \
+                and system.is_system(f"{first}.{_name(head.field.name)}"):  # __SYSTEM.x, IBaseLibrary.TypeClass
+            return node
         if local is not None and self.namespace(first) is None and not local(first) and self._nothing_named(first):
             self._unknown_head(node.name, first)  # Other.F_X(), Other.GVL.x: no variable, list, POU or namespace
         if self.namespace(first) is None or (local is not None and local(first)):
             return node
-        head = node.elements[0]
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
         if not self.in_namespace(first, _name(head.field.name)):

@@ -29,9 +29,21 @@ _TYPE_CLASSES = (
 TYPES = ("TYPE_CLASS", "ANYTYPE")
 
 
+# CODESYS's library Base Interfaces, referenced under the namespace IBaseLibrary (as TcUnit references it), declares
+# the type classes as TypeClass: `IBaseLibrary.TypeClass` is __SYSTEM.TYPE_CLASS here
+BASE_INTERFACES = "IBASELIBRARY"
+
+
+def canonical(parts):
+    """The parts of a dotted name, `IBaseLibrary.TypeClass...` as `__SYSTEM.TYPE_CLASS...`."""
+    if len(parts) >= 2 and parts[0].upper() == BASE_INTERFACES and parts[1].upper() == "TYPECLASS":
+        return [NAMESPACE, "TYPE_CLASS"] + list(parts[2:])
+    return list(parts)
+
+
 def is_system(name):
-    """Whether the dotted `name` starts with the namespace __SYSTEM."""
-    return name.upper().split(".")[0] == NAMESPACE
+    """Whether the dotted `name` starts with the namespace __SYSTEM (or is IBaseLibrary.TypeClass...)."""
+    return canonical(name.split("."))[0].upper() == NAMESPACE
 
 
 def system_type(comp, name, node):
@@ -136,10 +148,13 @@ def _descriptor(comp, pin, address, t):
 
 def enum_value(comp, node):
     """(EnumType, value) of `__SYSTEM.TYPE_CLASS.TYPE_INT` (a MultiElementVariable), or None for another name."""
-    if _cls(node) != "MultiElementVariable" or node.name.dereferenced or not is_system(_name(node.name.name)):
+    if _cls(node) != "MultiElementVariable" or node.name.dereferenced:
         return None
     names = [el for el in node.elements if _cls(el) == "FieldSelector" and _cls(el.field) == "SimpleVariable"]
-    if len(names) != len(node.elements) or len(names) != 2 or _name(names[0].field.name).upper() != "TYPE_CLASS":
+    head = canonical([_name(node.name.name)] + [_name(el.field.name) for el in names[:1]])
+    if head[0].upper() != NAMESPACE:
+        return None
+    if len(names) != len(node.elements) or len(names) != 2 or head[1].upper() != "TYPE_CLASS":
         raise comp.err(node, f"'{NAMESPACE}' names its TYPE_CLASS's values here: {NAMESPACE}.TYPE_CLASS.TYPE_INT")
     t = system_type(comp, "TYPE_CLASS", node)
     return t, comp.enum_value_of(t, _name(names[1].field.name), names[1].field)
@@ -147,6 +162,7 @@ def enum_value(comp, node):
 
 def case_label(comp, parts, node):
     """(EnumType, value) of a CASE label written `__SYSTEM.TYPE_CLASS.TYPE_INT` (split at its dots), or None."""
+    parts = canonical(parts)
     if not parts or parts[0].upper() != NAMESPACE:
         return None
     if len(parts) != 3 or parts[1].upper() != "TYPE_CLASS":
