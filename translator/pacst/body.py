@@ -174,7 +174,7 @@ class BodyCompiler:
         v = pou.var(name)
         static = T.find_var((pou.owner or pou).statics, name) if v is None else None
         if static is not None:  # VAR_STAT (user mode): one C variable for every instance
-            return Ref(static.csym, True, static.type, static)
+            return Ref(static.csym, not static.type.is_fb, static.type, static)
         ov = self._owner_var(name) if v is None and static is None else None
         if ov is not None:  # a METHOD's or ACTION's access to its FB's variables
             why = "it is a CONSTANT" if ov.constant else ""

@@ -1393,7 +1393,11 @@ class Compiler:
         holder = pou.owner or pou  # a FUNCTION's: kept from call to call (emit.py initialises them in the first)
         self.dialect(block, "VAR_STAT" if pou.kind == "fb" or pou.owner is not None else "VAR_STAT in a FUNCTION")
         for item in block.items:
-            vtype, strlen = user.var_type(self, item.init, allow_fb=False)
+            # an FB instance too (FsCommon's F_GetCpuCycleCounter keeps its GETCPUCOUNTER so): one for every call
+            # and instance
+            vtype, strlen = user.var_type(self, item.init, allow_fb=True)
+            if vtype.is_fb and getattr(getattr(item.init, "spec", None), "init_parameters", None):
+                raise self.err(item, "FB_init arguments of an FB instance in VAR_STAT: declare it alone")
             for dv in item.variables:
                 self._check_ident(dv.variable.name, "variable")
                 name = _name(dv.variable.name)
@@ -1402,8 +1406,8 @@ class Compiler:
                 v = T.Var(name, "stat", vtype, user.initial_value(item.init), dv)
                 v.strlen = strlen
                 v.csym = f"{holder.cname}__STAT__{name.upper()}"
-                if v.init is not None:
-                    self._init_code(v, "x")  # checks the initial value now
+                if v.init is not None or vtype.is_fb:
+                    self._init_code(v, "x")  # checks the initial value (an FB's FB_init) now
                 holder.statics.append(v)
 
     def _check_section(self, pou, section, constant, vtype, item):
