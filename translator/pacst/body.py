@@ -511,6 +511,13 @@ class BodyCompiler:
         raise self.err(node, CHAINED_CALL)
 
     def _s_AssignmentStatement(self, node, ind, d):
+        if len(node.variables) != 1 and self.comp.user:
+            # `a := b := 0;` (TwinCAT, CODESYS): the last variable first, then each from the one after it, as C reads
+            # `a = b = 0` (the value each assignment left)
+            self.comp.dialect(node, "a chained assignment (a := b := 0)")
+            last = dataclasses.replace(node, variables=node.variables[-1:])
+            return self._s_AssignmentStatement(last, ind, d) + self._s_AssignmentStatement(
+                dataclasses.replace(node, variables=node.variables[:-1], expression=node.variables[-1]), ind, d)
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")
         target = node.variables[0]
