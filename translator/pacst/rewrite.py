@@ -31,8 +31,7 @@ _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
 
 def user_text(text, path):
     """(`text` with the rewrites above, [(line, column, construct, column in the rewritten text) of each]); `text` as
-    it is when it has none,
-    or when its tokens are refused (the lexical check names what is wrong)."""
+    it is when it has none, or when its tokens are refused (the lexical check names what is wrong)."""
     try:
         tokens = lexcheck.tokenize(text, path, user=True)
     except StError:
