@@ -1091,6 +1091,10 @@ class ExprCompiler:
             return TE(te.type, f"__abs_{te.type.cname}({te.code})")
         if fn == "LIMIT":
             args = self._positional(node, 3, ["MN", "IN", "MX"])
+        elif self.comp.user and len(node.parameters) > 2:  # MIN(a, b, c): IEC's MIN and MAX take any number
+            n = len(node.parameters)
+            args = self._positional(node, n, [f"IN{i}" for i in range(1, n + 1)])
+            self.comp.dialect(node, f"{fn} of more than two inputs")
         else:
             args = self._positional(node, 2, ["IN1", "IN2"])
         tes = [self.expr(a, want) for a in args]
@@ -1104,6 +1108,11 @@ class ExprCompiler:
         codes = [self.coerce(te, t, a, "argument") for te, a in zip(tes, args)]
         if not (t.is_numeric or t.is_bit):
             raise self.err(node, f"{fn} on {t.name}")
+        if fn != "LIMIT":  # one input after another: MIN(MIN(a, b), c)
+            code = codes[0]
+            for c in codes[1:]:
+                code = f"__{fn.lower()}_{t.cname}({code}, {c})"
+            return TE(t, code)
         return TE(t, f"__{fn.lower()}_{t.cname}({', '.join(codes)})")
 
     def formal_pin(self, p, callee, given):
