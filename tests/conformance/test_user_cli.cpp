@@ -224,6 +224,48 @@ TEST_F(TranslatorUserCli, CallOfARefusedFunctionSaysSoAsAStatementToo) {
     EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
 }
 
+TEST_F(TranslatorUserCli, MethodThroughAListsPointerToARefusedFbPointsAtTheRefusal) {
+    // TcUnit's GVL_TcUnit.TestSuiteAddresses[i]^.AreAllTestsFinished() in an expression, when FB_TestSuite was
+    // refused: the list's variable waits for the FB, so the call points back at the FB's refusal (it said "only plain
+    // function names can be called", hiding the cause).
+    auto fb = Write("FB_Suite.st", "FUNCTION_BLOCK FB_Suite\nVAR Count : NoSuchType; END_VAR\nEND_FUNCTION_BLOCK\n"
+                                   "METHOD Finished : BOOL\nFinished := TRUE;\nEND_METHOD\n");
+    auto list = Write("GVL_Suites.st", "{attribute 'qualified_only'}\nVAR_GLOBAL\n"
+                                       "  Addresses : ARRAY [1..2] OF POINTER TO FB_Suite;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Done : BOOL; END_VAR\n"
+                                     "Done := GVL_Suites.Addresses[1]^.Finished();\nEND_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", fb, list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    const auto expected = main + ":3:20: error: GVL_Suites.Addresses cannot be used: its type names FB_Suite, whose "
+                                 "declaration was refused (above)";
+    EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    EXPECT_EQ(result.output.find("only plain function names"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, ARefusedResultTypeHidesNoRefusalOfThePins) {
+    // FsCommon's I_PlcTaskInformation: a METHOD or PROPERTY of an INTERFACE whose type is a vendor's hid the refusals
+    // of its pins and of the INTERFACE's later METHODs; every one is reported, in an FB's METHOD and a FUNCTION too.
+    auto itf = Write("I_Thing.st", "INTERFACE I_Thing\nEND_INTERFACE\n\nMETHOD Get : NoSuchType\nVAR_INPUT\n"
+                                   "  Index : NoSuchIndex;\nEND_VAR\nEND_METHOD\n\nMETHOD Put : BOOL\nVAR_INPUT\n"
+                                   "  Item : NoSuchItem;\nEND_VAR\nEND_METHOD\n");
+    auto fb = Write("FB_Thing.st", "FUNCTION_BLOCK FB_Thing\nVAR X : INT; END_VAR\nEND_FUNCTION_BLOCK\n\n"
+                                   "METHOD Get : NoSuchType\nVAR_INPUT\n  Index : NoSuchIndex;\nEND_VAR\nEND_METHOD\n");
+    auto function = Write("F_Thing.st", "FUNCTION F_Thing : NoSuchType\nVAR_INPUT\n  Index : NoSuchIndex;\nEND_VAR\n"
+                                        "F_Thing := 1;\nEND_FUNCTION\n");
+    auto result = RunTranslator({"check", "--user", itf, fb, function});
+    EXPECT_EQ(result.exitCode, 1);
+    for (const auto& expected : {itf + ":4:14: error: undeclared type 'NoSuchType'",
+                                 itf + ":6:11: error: undeclared type 'NoSuchIndex'",
+                                 itf + ":12:10: error: undeclared type 'NoSuchItem'",
+                                 fb + ":5:14: error: undeclared type 'NoSuchType'",
+                                 fb + ":7:11: error: undeclared type 'NoSuchIndex'",
+                                 function + ":1:20: error: undeclared type 'NoSuchType'",
+                                 function + ":3:11: error: undeclared type 'NoSuchIndex'"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+    EXPECT_EQ(result.output.find("undeclared name 'F_Thing'"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
     // docs/import.md: the library referenced with the namespace PA_CONTROL; --namespace says which files hold it.
     fs::create_directories(dir_ / "lib");

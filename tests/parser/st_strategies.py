@@ -14,7 +14,8 @@ NAMES = ["a", "b", "Counter", "x_1", "fb.Q", "arr[i]", "arr[i, 2]", "s.Data[3].F
 BINARY = ["OR_ELSE", "AND_THEN", "OR", "XOR", "AND", "&", "=", "<>", "<", ">", "<=", ">=", "+", "-", "*",
           "/", "MOD", "**"]
 UNARY = ["-", "+", "NOT ", "NOT", "- "]
-SPACES = st.sampled_from(["", " ", "  ", "\n", " (* c *) "])
+# a line comment too (user programs), one holding what would open a block comment
+SPACES = st.sampled_from(["", " ", "  ", "\n", " (* c *) ", " // c\n", "// (* c\n"])
 
 
 def _call(args):

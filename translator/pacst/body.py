@@ -174,7 +174,7 @@ class BodyCompiler:
         v = pou.var(name)
         static = T.find_var((pou.owner or pou).statics, name) if v is None else None
         if static is not None:  # VAR_STAT (user mode): one C variable for every instance
-            return Ref(static.csym, True, static.type, static)
+            return Ref(static.csym, not static.type.is_fb, static.type, static)
         ov = self._owner_var(name) if v is None and static is None else None
         if ov is not None:  # a METHOD's or ACTION's access to its FB's variables
             why = "it is a CONSTANT" if ov.constant else ""
@@ -228,11 +228,26 @@ class BodyCompiler:
             raise self.err(first.field, f"{gvl.name}.{_name(first.field.name)} cannot be used: a declaration of the "
                                         f"global variable list {gvl.name} was refused (above)")
         if g is None:
+            self._refused_pending(gvl, first.field)
             raise self.err(first.field, f"global variable list {gvl.name} has no variable '{_name(first.field.name)}'")
         if all(e is not g for e, _ in self.pou.externals.values()):
             self.pou.globals_used[g.csym] = g
         self.pou.qualifiers.append((node.name.name.start_pos, first.field.name.start_pos, g))
         return self._global_ref(g, False), node.elements[1:]
+
+    def _refused_pending(self, gvl, field):
+        """Refuses `List.Name`, a variable of the global list `gvl` that waits for a FUNCTION_BLOCK whose declaration
+        was refused (Compiler.pending_globals), as a use of that FB's type is refused."""
+        name = _name(field.name).upper()
+        for fb, waiting in self.comp.pending_globals.items():
+            if fb not in self.comp.refused:
+                continue
+            for list_, item, _, _ in waiting:
+                if list_ is gvl and any(_name(t).upper() == name for t in item.spec.variables):
+                    spelled = re.search(re.escape(fb), str(item.init), re.I)
+                    raise self.err(field, f"{gvl.name}.{_name(field.name)} cannot be used: its type names "
+                                          f"{spelled.group(0) if spelled else fb}, whose declaration was refused "
+                                          "(above)")
 
     def _program_variable(self, node):
         """`MAIN.x` in user mode: (the Ref of a PROGRAM's variable, the elements after it), or None. TwinCAT and
@@ -290,6 +305,8 @@ class BodyCompiler:
                 raise self.err(node, "pointers are outside the portable subset")
             r = self._root(node.name)
             return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
+        if self.comp.user and (cls == "ChainedFunctionCall" or cls == "FunctionCall" and node.dereferenced):
+            return self._through(self.call_result(node), node, raw)
         if cls != "MultiElementVariable":
             raise self.err(node, "a variable is expected here")
         if (node.dereferenced or node.name.dereferenced) and not self.comp.user:
@@ -321,25 +338,7 @@ class BodyCompiler:
                 if _cls(field) != "SimpleVariable":
                     raise self.err(el, "bit access (w.15) is outside the portable subset: use "
                                        "(w AND WORD#16#8000) <> WORD#0")
-                fname = _name(field.name)
-                if r.type.is_struct:
-                    m = T.find_var(r.type.members, fname)
-                    if m is None:
-                        raise self.err(field, f"{r.type.name} has no member '{fname}'")
-                    r = Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
-                            r.subscripted)
-                elif r.type.is_fb:
-                    fv = r.type.var(fname)
-                    if fv is None:
-                        raise self.err(field, f"{r.type.name} has no variable '{fname}'")
-                    if fv.section not in ("input", "output"):
-                        raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
-                                              "another FB's private variables")
-                    writable = fv.section == "input"
-                    r = Ref(f"{r.read()}.{fv.cname}", True, fv.type, r.var, "", writable,
-                            "an FB's outputs are written only by the FB itself")
-                else:
-                    raise self.err(field, f"'{fname}': {r.type.name} has no members")
+                r = self._member(r, field)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
                 r = self._pointer_index(r, el)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
@@ -364,6 +363,48 @@ class BodyCompiler:
         if node.dereferenced:
             r = self._deref(r, node)
         return self._through(r, node, raw)
+
+    def _member(self, r, field):
+        """The member `field` (a SimpleVariable) of the struct or FB instance `r`."""
+        fname = _name(field.name)
+        if r.type.is_struct:
+            m = T.find_var(r.type.members, fname)
+            if m is None:
+                raise self.err(field, f"{r.type.name} has no member '{fname}'")
+            return Ref(r.base, r.wrapped, m.type, r.var, r.suffix + "." + m.cname, r.writable, r.why_not,
+                       r.subscripted)
+        if r.type.is_fb:
+            fv = r.type.var(fname)
+            if fv is None:
+                raise self.err(field, f"{r.type.name} has no variable '{fname}'")
+            if fv.section not in ("input", "output"):
+                raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
+                                      "another FB's private variables")
+            writable = fv.section == "input"
+            return Ref(f"{r.read()}.{fv.cname}", True, fv.type, r.var, "", writable,
+                       "an FB's outputs are written only by the FB itself")
+        raise self.err(field, f"'{fname}': {r.type.name} has no members")
+
+    def call_result(self, node):
+        """User mode: what a call's result gives, as a Ref: `F(x)^` (a FunctionCall read through its POINTER
+        result), `F(x).Member`, `Get(i)^.Data` (a ChainedFunctionCall whose later calls are members rewritten
+        before parsing, rewrite.CALL_MEMBER). The result itself is read only; where a POINTER result points is
+        read and written. A METHOD called on a call's result is refused."""
+        calls = node.invocations if _cls(node) == "ChainedFunctionCall" else [node]
+        for member in calls[1:]:
+            if (self.comp.file, *pos(member)) not in self.comp.call_members:
+                raise self.err(node, CHAINED_CALL)
+        first = calls[0]
+        te = self.ex.expr(dataclasses.replace(first, dereferenced=False))
+        result = T.Var(str(dataclasses.replace(first, dereferenced=False)), "result", te.type, None, first)
+        r = Ref(te.code, False, te.type, result, writable=False, why_not="it is a call's result")
+        if first.dereferenced:
+            r = self._deref(r, first)
+        for member in calls[1:]:
+            r = self._member(self._through(r, member, False), member.name)
+            if member.dereferenced:
+                r = self._deref(r, member)
+        return r
 
     def _pointer_index(self, r, el):
         """User mode: `p[i]`, the i-th element of p's target type from where p points, as TwinCAT reads it
@@ -470,6 +511,13 @@ class BodyCompiler:
         raise self.err(node, CHAINED_CALL)
 
     def _s_AssignmentStatement(self, node, ind, d):
+        if len(node.variables) != 1 and self.comp.user:
+            # `a := b := 0;` (TwinCAT, CODESYS): the last variable first, then each from the one after it, as C reads
+            # `a = b = 0` (the value each assignment left)
+            self.comp.dialect(node, "a chained assignment (a := b := 0)")
+            last = dataclasses.replace(node, variables=node.variables[-1:])
+            return self._s_AssignmentStatement(last, ind, d) + self._s_AssignmentStatement(
+                dataclasses.replace(node, variables=node.variables[:-1], expression=node.variables[-1]), ind, d)
         if len(node.variables) != 1:
             raise self.err(node, "chained assignment is outside the portable subset")
         target = node.variables[0]

@@ -12,7 +12,7 @@ import dataclasses
 import os
 import re
 
-from . import literals
+from . import literals, rewrite
 from . import types as T
 from .body import BodyCompiler
 from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
@@ -148,6 +148,7 @@ class Compiler:
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
+        self.call_members = set()  # (file, line, column) of each member of a call's result (rewrite.CALL_MEMBER)
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
@@ -182,8 +183,10 @@ class Compiler:
         self.sources = sources
         for src in sources:
             self.file = src.path
-            for line, col, what in getattr(src, "rewrites", ()):  # rewrite.user_text's
+            for line, col, what, parsed_col in getattr(src, "rewrites", ()):  # rewrite.user_text's
                 self.dialect_at(src.path, line, col, what)
+                if what == rewrite.CALL_MEMBER:
+                    self.call_members.add((src.path, line, parsed_col))
             for item in src.tree.items:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
@@ -317,7 +320,7 @@ class Compiler:
     def _resolve_type(self, token, allow_fb=True):
         name = _name(token)
         if self.user and system.is_system(name) and "." in name:  # __SYSTEM.TYPE_CLASS, __SYSTEM.AnyType
-            return system.system_type(self, name.split(".", 1)[1], token)
+            return system.system_type(self, system.canonical(name.split("."))[1], token)
         if self.user and name.upper() == "ANY":  # a VAR_INPUT of any type: a __SYSTEM.AnyType
             return system.any_type(self, token)
         if self.user and "." in name:
@@ -453,11 +456,14 @@ class Compiler:
         if not self.user or _cls(node) != "MultiElementVariable" or node.name.dereferenced:
             return node
         first = _name(node.name.name)
+        head = node.elements[0]
+        if _cls(head) == "FieldSelector" and _cls(head.field) == "SimpleVariable" \
+                and system.is_system(f"{first}.{_name(head.field.name)}"):  # __SYSTEM.x, IBaseLibrary.TypeClass
+            return node
         if local is not None and self.namespace(first) is None and not local(first) and self._nothing_named(first):
             self._unknown_head(node.name, first)  # Other.F_X(), Other.GVL.x: no variable, list, POU or namespace
         if self.namespace(first) is None or (local is not None and local(first)):
             return node
-        head = node.elements[0]
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
         if not self.in_namespace(first, _name(head.field.name)):
@@ -901,14 +907,15 @@ class Compiler:
         if kind == "fb":
             pou.fbtype = T.FbType(pou.name)
             pou.fbtype.pou = pou
-        elif node.return_type is None:
-            if not pou.native and not self.user:  # TwinCAT and CODESYS take a FUNCTION without a result
-                raise self.err(node, "a FUNCTION needs a return type (MATIEC)")
-        else:
-            pou.ret = self._spec_type(node.return_type, allow_fb=False) if _cls(node.return_type) != "Token" \
-                else self._resolve_type(node.return_type, allow_fb=False)
-        constant_block = None
+        elif node.return_type is None and not pou.native and not self.user:
+            raise self.err(node, "a FUNCTION needs a return type (MATIEC)")  # TwinCAT and CODESYS take one without
         refused = []
+        if kind != "fb" and node.return_type is not None:
+            read = self._spec_type if _cls(node.return_type) != "Token" else self._resolve_type
+            # user mode: a refused result hides no refusal of the pins
+            pou.ret = self._refusals(refused, read, node.return_type, False) if self.user else \
+                read(node.return_type, False)
+        constant_block = None
         self.constant_blocks = node.declarations
         for block in node.declarations:
             attrs = getattr(block, "attrs", None)
@@ -996,6 +1003,8 @@ class Compiler:
         declared = {v.name.upper() for v in pou.vars}
         lost = {_name(dv.variable.name).upper() for block in node.declarations for item in block.items
                 for dv in getattr(item, "variables", []) if _cls(dv) == "DeclaredVariable"} - declared
+        if pou.kind == "function" and getattr(node, "return_type", None) is not None and pou.ret is None:
+            lost.add(pou.name.upper())  # its result's type was refused
         self.pous[pou.cname] = pou
         try:
             BodyCompiler(self, pou).compile()
@@ -1073,25 +1082,45 @@ class Compiler:
             raise
         self.program.items.append(("type", t, self.file))
 
+    @staticmethod
+    def _refusals(refused, declare, *args):
+        """declare(*args); its refusals (user mode: every refused declaration is reported, not only the first) are
+        added to `refused`."""
+        try:
+            return declare(*args)
+        except (StError, StErrors) as e:
+            refused += e.errors if isinstance(e, StErrors) else [e]
+            return None
+
+    def _result_type(self, rt):
+        """The type of a METHOD's result `rt`."""
+        return self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=False)
+
     def _interface_members(self, t, node):
-        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`."""
+        """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`; every refusal of a result, a pin or a
+        PROPERTY is reported."""
+        refused = []
         for m in self.members.get(id(node), []):
             if _cls(m) == "Property":
-                self._interface_property(t, m)
+                self._refusals(refused, self._interface_property, t, m)
                 continue
             if _cls(m) != "Method":
-                raise self.err(m, f"{_cls(m).upper()} in an INTERFACE: an INTERFACE declares METHODs and PROPERTYs")
+                refused.append(self.err(m, f"{_cls(m).upper()} in an INTERFACE: an INTERFACE declares METHODs and "
+                                           "PROPERTYs"))
+                continue
             proto = Pou("function", _name(m.name), self.file, m)
             if m.return_type is not None:
-                rt = m.return_type
-                proto.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-                    self._resolve_type(rt, allow_fb=False)
+                proto.ret = self._refusals(refused, self._result_type, m.return_type)
             for block in m.declarations:
-                self._var_block(proto, block)
+                self._refusals(refused, self._var_block, proto, block)
             if proto.cname in t.protos:
-                raise self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its bases')")
+                refused.append(self.err(m.name, f"INTERFACE {t.name} has two METHODs {proto.name} (with its "
+                                                "bases')"))
             t.methods.append(proto.name)
             t.protos[proto.cname] = proto
+        if refused:
+            raise StErrors(refused)
 
     def _interface_property(self, t, node):
         """User mode: a PROPERTY of an INTERFACE: `X` its type, `X.Get` and `X.Set` its accessors (TwinCAT's
@@ -1232,25 +1261,29 @@ class Compiler:
         m.owner = owner
         m.cfunc = f"{owner.cname}__{prefix}{name.upper()}"
         m.action = is_action
+        refused = []  # every refusal of its result and pins is reported
         if not is_action and node.return_type is not None:
-            rt = node.return_type
-            m.ret = self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-                self._resolve_type(rt, allow_fb=False)
+            m.ret = self._refusals(refused, self._result_type, node.return_type)
         self.constant_blocks = [] if is_action else node.declarations  # its own constants, then its FB's
         for block in ([] if is_action else node.declarations):
             if _cls(block) == "MethodInstanceVariableDeclarations":
-                self._instance_vars(owner, m, block, inherited)
-                continue
-            if _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
-                for item in block.items:
-                    vtype = self._spec_type(item.init.spec, allow_fb=False)
-                    for dv in item.variables:
-                        self._declare_var(m, "var", False, vtype, item.init.value, dv)
-                continue
-            self._var_block(m, block)
+                self._refusals(refused, self._instance_vars, owner, m, block, inherited)
+            elif _cls(block) == "TemporaryVariableDeclarations":  # a METHOD's VAR_TEMP: locals of the call
+                self._refusals(refused, self._method_temps, m, block)
+            else:
+                self._refusals(refused, self._var_block, m, block)
         self.constant_blocks = None
+        if refused:
+            raise StErrors(refused)
         owner.methods[prefix + name.upper()] = m
         return m
+
+    def _method_temps(self, m, block):
+        """A METHOD's VAR_TEMP: locals of its call."""
+        for item in block.items:
+            vtype = self._spec_type(item.init.spec, allow_fb=False)
+            for dv in item.variables:
+                self._declare_var(m, "var", False, vtype, item.init.value, dv)
 
     def _instance_vars(self, owner, method, block, inherited):
         """User mode: a METHOD's VAR_INST, kept from call to call: variables of its FUNCTION_BLOCK (FB instances
@@ -1360,7 +1393,11 @@ class Compiler:
         holder = pou.owner or pou  # a FUNCTION's: kept from call to call (emit.py initialises them in the first)
         self.dialect(block, "VAR_STAT" if pou.kind == "fb" or pou.owner is not None else "VAR_STAT in a FUNCTION")
         for item in block.items:
-            vtype, strlen = user.var_type(self, item.init, allow_fb=False)
+            # an FB instance too (FsCommon's F_GetCpuCycleCounter keeps its GETCPUCOUNTER so): one for every call
+            # and instance
+            vtype, strlen = user.var_type(self, item.init, allow_fb=True)
+            if vtype.is_fb and getattr(getattr(item.init, "spec", None), "init_parameters", None):
+                raise self.err(item, "FB_init arguments of an FB instance in VAR_STAT: declare it alone")
             for dv in item.variables:
                 self._check_ident(dv.variable.name, "variable")
                 name = _name(dv.variable.name)
@@ -1369,8 +1406,8 @@ class Compiler:
                 v = T.Var(name, "stat", vtype, user.initial_value(item.init), dv)
                 v.strlen = strlen
                 v.csym = f"{holder.cname}__STAT__{name.upper()}"
-                if v.init is not None:
-                    self._init_code(v, "x")  # checks the initial value now
+                if v.init is not None or vtype.is_fb:
+                    self._init_code(v, "x")  # checks the initial value (an FB's FB_init) now
                 holder.statics.append(v)
 
     def _check_section(self, pou, section, constant, vtype, item):
@@ -1614,20 +1651,33 @@ class Compiler:
         if extra is None or any(v.section in ("output", "inout") for v in method.vars):
             raise self.err(var.node, f"the METHOD FB_init of {var.type.name} is not TwinCAT's: it begins with the "
                                      "inputs bInitRetains and bInCopyCode (BOOL) and has no outputs")
-        given = [getattr(p, "value", p) for p in getattr(var, "fb_init_args", None) or [] if p is not None]
-        if len(given) > len(extra):
-            raise self.err(var.node, f"{len(given)} FB_init arguments for the {len(extra)} inputs of "
+        params = [p for p in getattr(var, "fb_init_args", None) or [] if p is not None]
+        if len(params) > len(extra):
+            raise self.err(var.node, f"{len(params)} FB_init arguments for the {len(extra)} inputs of "
                                      f"{var.type.name}.FB_init after bInitRetains and bInCopyCode")
+        given = {}  # the inputs' upper names -> the values given: by position, or by name (`tTn := LTIME#1S`)
+        for v, p in zip(extra, params):
+            name = getattr(p, "name", None)
+            if name is not None:
+                v = T.find_var(extra, _name(name))
+            if v is None or v.cname in given:
+                raise self.err(p, f"FB_init argument '{_name(name) if v is None else v.name}' of {var.type.name}: "
+                                  + ("given twice" if v is not None else "FB_init has no such input after "
+                                     "bInitRetains and bInCopyCode"))
+            given[v.cname] = getattr(p, "value", p)
         args = ["FALSE", "FALSE"]
-        for v, value in zip(extra, given + [None] * (len(extra) - len(given))):
+        for v in extra:
+            value = given.get(v.cname)
             if value is None:
                 args.append(self.default_c(v.type) if v.init is None else
                             ExprCompiler(self, None).coerce(self.literal_te(v.init, v.type), v.type, v.init))
-            elif self.initial_constant(value) is None and _cls(value) not in _INT_LITERALS | _BIT_LITERALS | {
-                    "Real", "Boolean", "Duration", "String"}:
-                args.append(self._fb_init_variable(var, value, v))
             else:
-                args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
+                try:  # a literal or a constant (`E_Mode.Hold`, `Lib.GVL_Limits.LREAL_MAX`), as an initial value
+                    args.append(ExprCompiler(self, None).coerce(self.literal_te(value, v.type), v.type, value))
+                except StError:
+                    if _cls(value) not in ("SimpleVariable", "MultiElementVariable"):
+                        raise
+                    args.append(self._fb_init_variable(var, value, v))
         return f"{method.cfunc}(&{target}, TRUE, NULL, {', '.join(args)});"
 
     def _fb_init_variable(self, var, value, pin):

@@ -145,7 +145,7 @@ class Emitter:
             if pou.program:  # its one instance, which the host runs and other POUs may read (MAIN.x)
                 out.append(f"extern {pou.cname} {program_instance(pou)};")
             out += [f"extern const {t.cname}__VT {t.vtable(pou.cname)};" for t in pou.interfaces]
-            out += [f"extern __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]  # VAR_STAT
+            out += [f"extern {static_c(v)};" for v in pou.statics]  # VAR_STAT
         else:
             out.append(self._function_signature(pou) + ";")
         return out
@@ -255,13 +255,13 @@ class Emitter:
     # ------------------------------------------------------------------ bodies
     def _fb_code(self, pou):
         out = [f"{pou.cname} {program_instance(pou)};", ""] if pou.program else []
-        out += [f"__IEC_{v.type.cname}_t {v.csym};" for v in pou.statics]
+        out += [f"{static_c(v)};" for v in pou.statics]
         out += [f"void {pou.cname}_init__({pou.cname} *data__, BOOL retain) {{",
                "  (void)retain;",
                "  data__->EN.value = TRUE;",
                "  data__->ENO.value = TRUE;"]
         for v in pou.statics:
-            out += ["  " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
+            out += ["  " + line for line in self.comp.init_code(v, static_target(v))]
         for v in pou.vars:
             target = f"data__->{v.cname}" if v.type.is_fb else f"data__->{v.cname}.value"
             out += ["  " + line for line in self.comp.init_code(v, target)]
@@ -300,10 +300,12 @@ class Emitter:
         if not pou.statics or pou.owner is not None:
             return [], []
         first = f"{pou.cname}__STAT__INITIALISED"
-        out = [f"static __IEC_{v.type.cname}_t {v.csym};" for v in pou.statics] + [f"static BOOL {first};"]
+        out = [f"static {static_c(v)};" for v in pou.statics] + [f"static BOOL {first};"]
         init = [f"  if (!{first}) {{", f"    {first} = TRUE;"]
+        if any(v.type.is_fb for v in pou.statics):  # an FB instance's initialisation is told whether it is retained
+            init.append("    BOOL retain = FALSE;")
         for v in pou.statics:
-            init += ["    " + line for line in self.comp.init_code(v, f"{v.csym}.value")]
+            init += ["    " + line for line in self.comp.init_code(v, static_target(v))]
         return out, init + ["  }"]
 
     def _function_code(self, pou):
@@ -449,3 +451,13 @@ def remove_outputs(out_dir, names):
             shutil.rmtree(path)
         elif os.path.exists(path):
             os.remove(path)
+
+
+def static_c(var):
+    """The C declaration of the VAR_STAT `var` (user mode): an FB instance as it is, another in its wrapper."""
+    return f"{var.type.cname} {var.csym}" if var.type.is_fb else f"__IEC_{var.type.cname}_t {var.csym}"
+
+
+def static_target(var):
+    """The C lvalue the VAR_STAT `var`'s initial value goes to."""
+    return var.csym if var.type.is_fb else f"{var.csym}.value"

@@ -238,7 +238,9 @@ class ExprCompiler:
         return method(node, want)
 
     def _e_ChainedFunctionCall(self, node, want):
-        raise self.err(node, CHAINED_CALL)
+        if not self.comp.user or self.body is None:
+            raise self.err(node, CHAINED_CALL)
+        return self._read(self.body.call_result(node), node)
 
     def _typed_int(self, node, value, tname):
         t = self.comp._resolve_type(tname, allow_fb=False)
@@ -410,7 +412,10 @@ class ExprCompiler:
             if p["get"] is None:
                 raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
             return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
-        ref = self.body.ref(node)
+        return self._read(self.body.ref(node), node)
+
+    def _read(self, ref, node):
+        """The value of the variable `ref` (an FB instance's address in user mode)."""
         if ref.type.is_fb and self.comp.user:  # its address: an INTERFACE variable may take it (coerce)
             return TE(ref.type, f"&({ref.read()})")
         if ref.type.is_fb:
@@ -672,6 +677,8 @@ class ExprCompiler:
         return dataclasses.replace(node, name=dataclasses.replace(node.name, name=f"AssertEquals_{name}"))
 
     def _e_FunctionCall(self, node, want):
+        if node.dereferenced and self.comp.user and self.body is not None:  # F(x)^
+            return self._read(self.body.call_result(node), node)
         node = dataclasses.replace(node, name=self.comp.unqualify(node.name, self.body.lookup if self.body else None))
         node = self.generic_assert(node)
         target = self.body.method_target(node.name) if self.body is not None else None
@@ -682,6 +689,8 @@ class ExprCompiler:
                 raise self.err(node, "recursion is outside pacst's user programs")
             return self._user_call(node, target[1], this=target[0])
         if _cls(node.name) != "SimpleVariable":
+            if self.comp.user and self.body is not None:
+                self.body.ref(node.name)  # what is wrong with the instance it names (a list's variable refused)
             raise self.err(node, "only plain function names can be called")
         name = _name(node.name.name)
         up = name.upper()
@@ -1082,6 +1091,10 @@ class ExprCompiler:
             return TE(te.type, f"__abs_{te.type.cname}({te.code})")
         if fn == "LIMIT":
             args = self._positional(node, 3, ["MN", "IN", "MX"])
+        elif self.comp.user and len(node.parameters) > 2:  # MIN(a, b, c): IEC's MIN and MAX take any number
+            n = len(node.parameters)
+            args = self._positional(node, n, [f"IN{i}" for i in range(1, n + 1)])
+            self.comp.dialect(node, f"{fn} of more than two inputs")
         else:
             args = self._positional(node, 2, ["IN1", "IN2"])
         tes = [self.expr(a, want) for a in args]
@@ -1095,6 +1108,11 @@ class ExprCompiler:
         codes = [self.coerce(te, t, a, "argument") for te, a in zip(tes, args)]
         if not (t.is_numeric or t.is_bit):
             raise self.err(node, f"{fn} on {t.name}")
+        if fn != "LIMIT":  # one input after another: MIN(MIN(a, b), c)
+            code = codes[0]
+            for c in codes[1:]:
+                code = f"__{fn.lower()}_{t.cname}({code}, {c})"
+            return TE(t, code)
         return TE(t, f"__{fn.lower()}_{t.cname}({', '.join(codes)})")
 
     def formal_pin(self, p, callee, given):
@@ -1131,10 +1149,13 @@ class ExprCompiler:
         """User mode: the C of the argument for the REFERENCE TO T input `v` when `arg` is a variable of type T (the
         reference is bound to it, as REF= binds it) or a REFERENCE TO T itself (its reference is passed on), as TwinCAT
         and CODESYS pass `Get_As_String(Index, sItem)`; None for any other argument."""
+        call = _cls(arg) == "ChainedFunctionCall" or _cls(arg) == "FunctionCall" and arg.dereferenced
         if not (self.comp.user and v.type.is_pointer and v.type.reference) or self.body is None \
-                or _cls(arg) not in ("SimpleVariable", "MultiElementVariable"):
+                or _cls(arg) not in ("SimpleVariable", "MultiElementVariable") and not call:
             return None
         src = self.body.ref(arg, raw=True)
+        if call and not src.writable:  # F(x).Member: a member of a value, which has no address
+            return None
         if src.type is v.type or src.type.is_pointer and src.type.reference and src.type.target is v.type.target:
             return f"(({v.type.cname})({src.read()}))"
         if (src.type is v.type.target or system.same_struct(src.type, v.type.target)) and type(src) is Ref:

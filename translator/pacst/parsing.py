@@ -169,17 +169,17 @@ def _syntax_error(exc, file, text=""):
     return StError(file, line, col, f"syntax error{found}{_expected_keywords(exc)}{hint}")
 
 
-_CALL_MEMBER = re.compile(r"\)\s*\.\s*[A-Za-z_]\w*\s*$")
+_CALL_MEMBER = re.compile(r"\)\s*\^?\s*(?:\.\s*[A-Za-z_]\w*\s*(?:\(\s*\)\s*)?\^?\s*)+(?:\[[^\]]*\]\s*)?$")
 
 
 def _call_member_hint(text, line, col):
-    """When the error follows `F(x).Member` (TwinCAT reads a member of a call's result; blark's grammar does not),
-    what to write instead."""
+    """When the error follows `F(x).Member` or `F(x)^.Member` (rewrite.py makes it `.Member()` where it is read;
+    written to or indexed, blark's grammar reads it nowhere), what to write instead."""
     lines = text.split("\n")
     if not 1 <= line <= len(lines) or not _CALL_MEMBER.search(lines[line - 1][:col - 1]):
         return ""
-    return (" (a member of a call's result, F(x).Member, is not translated: assign the result to a variable of its "
-            "type first, then read the member)")
+    return (" (a member of a call's result, F(x).Member, is read but not indexed or assigned to here: assign the "
+            "result to a variable of its type first, then index or assign its member)")
 
 
 _NO_STATEMENT_END = re.compile(r"(?i)(?:\b(?:THEN|ELSE|DO|OF|REPEAT|AND|OR|XOR|NOT|MOD|STRUCT|END_VAR|VAR\w*)|"
@@ -210,7 +210,8 @@ class SourceFile:
         self.path = path
         self.text = text
         self.tree = tree
-        self.rewrites = rewrites  # user mode: (line, column, construct) of each rewrite.user_text made
+        # user mode: (line, column, construct, column in the parsed text) of each rewrite.user_text made
+        self.rewrites = rewrites
 
 
 def _read(path, user=False):

@@ -13,25 +13,32 @@ its column, so that errors, `#line` directives and coverage still name the user'
   condition): `       Init := T <= 0 ; IF Init THEN RETURN; END_IF;`;
 - `__NEW(POINTER TO T, n)` (n pointers, a type blark's grammar does not read as an argument): `POINTER TO `
   written over by `__PTRTO____`, one name with T's that system.new_assignment reads back;
-- `LTIME#1S2US44NS` (microseconds and nanoseconds after another unit): durations.py.
+- `LTIME#1S2US44NS` (microseconds and nanoseconds after another unit): durations.py;
+- `F(x).Member`, `Get(i)^.Data.Count` (a member of a call's result, read): `()` after each member, which blark
+  reads as a METHOD called on the result (`F(x).Member()`); the translator knows the member by its place
+  (CALL_MEMBER among the file's rewrites). A member followed by an index, a `:=` or a bit number is left as it
+  is: the syntax error says what to write instead.
 """
 from . import durations, lexcheck
 from .errors import StError
 
 # the prefix of `__NEW(POINTER TO T, n)`'s type, rewritten (the name blark reads: __PTRTO____T)
 NEW_POINTER = "__PTRTO"
+# the construct of a rewritten `F(x).Member`: its member's (line, column) among a file's rewrites
+CALL_MEMBER = "a member of a call's result"
 _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
 
 
 def user_text(text, path):
-    """(`text` with the rewrites above, [(line, column, construct) of each]); `text` as it is when it has none,
-    or when its tokens are refused (the lexical check names what is wrong)."""
+    """(`text` with the rewrites above, [(line, column, construct, column in the rewritten text) of each]); `text` as
+    it is when it has none, or when its tokens are refused (the lexical check names what is wrong)."""
     try:
         tokens = lexcheck.tokenize(text, path, user=True)
     except StError:
         return text, []
     edits = []  # (start, end, replacement) in the text, in order, not overlapping
     uses = []
+    opening = _openings(tokens)
     for k, tok in enumerate(tokens):
         up = tok.upper if tok.kind == "ident" else tok.text
         nxt = tokens[k + 1] if k + 1 < len(tokens) else None
@@ -79,10 +86,16 @@ def user_text(text, path):
                     name = text[tokens[k + 2].start:tokens[target].start].strip()
                     edits.append((tok.start, nxt.end, ""))
                     edits.append((tokens[close].start, tokens[close + 1].end, f"; IF {name} THEN RETURN; END_IF;"))
+        elif tok.text == ")" and k in opening and opening[k] > 0 and tokens[opening[k] - 1].kind == "ident" \
+                and tokens[opening[k] - 1].upper not in _NO_CALL:
+            members = _result_members(tokens, k)
+            uses += [(m.line, m.col, CALL_MEMBER) for m in members]
+            edits += [(m.end, m.end, "()") for m in members]
     more, used = durations.long_time_edits(tokens)  # LTIME#1S2US44NS
     edits, uses = sorted(edits + more), uses + used
     if not edits:
         return text, []
+    uses = _parsed_columns(text, edits, uses)
     out, at = [], 0
     for start, end, word in edits:
         out.append(text[at:start])
@@ -91,6 +104,18 @@ def user_text(text, path):
         at = end
     out.append(text[at:])
     return "".join(out), uses
+
+
+def _parsed_columns(text, edits, uses):
+    """(line, column, construct, column in the rewritten text) of each use: a longer replacement before it on its
+    line moves it there, where blark's tree has it."""
+    grown = []  # (line, column, characters added) of each longer replacement
+    for start, end, word in edits:
+        if len(word) > end - start:
+            line = text.count("\n", 0, start) + 1
+            grown.append((line, start - text.rfind("\n", 0, start), len(word) - (end - start)))
+    return [(line, col, what, col + sum(n for at_line, at_col, n in grown if at_line == line and at_col < col))
+            for line, col, what in uses]
 
 
 _INTEGERS = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD"}
@@ -114,6 +139,41 @@ def _assigned(tokens, k, close):
     while j < close and (tokens[j].kind == "ident" or tokens[j].text in (".", "^")):
         j += 1
     return j if k + 1 < j < close and tokens[j].text == ":=" else None
+
+
+# words before a `(` that opens no call
+_NO_CALL = {"IF", "ELSIF", "WHILE", "UNTIL", "CASE", "RETURN", "THEN", "DO", "OF", "TO", "BY", "AND", "OR", "XOR",
+            "NOT", "MOD", "AND_THEN", "OR_ELSE"}
+
+
+def _openings(tokens):
+    """{index of a `)`: index of the `(` it closes}."""
+    pairs, stack = {}, []
+    for j, tok in enumerate(tokens):
+        if tok.text == "(":
+            stack.append(j)
+        elif tok.text == ")" and stack:
+            pairs[j] = stack.pop()
+    return pairs
+
+
+def _result_members(tokens, k):
+    """The member names read after the call that tokens[k] (a `)`) closes: `.A`, `^.A`, `.A.B`, up to a METHOD
+    called on them (`.A.M(...)`) or the end of the chain; none when the chain goes on with what the rewrite cannot
+    give blark (an index, a bit number) or is written to (`:=`)."""
+    members, j = [], k + 1
+    while True:
+        d = j + 1 if j < len(tokens) and tokens[j].text == "^" else j
+        if not (d + 1 < len(tokens) and tokens[d].text == "." and tokens[d + 1].kind == "ident"):
+            break
+        if d + 2 < len(tokens) and tokens[d + 2].text == "(":
+            return members  # a METHOD called on the member: blark reads the chain on from there
+        members.append(tokens[d + 1])
+        j = d + 2
+    after = [t.text for t in tokens[j:j + 2]]
+    if after[:1] in (["["], [":="], ["."]) or after[:1] == ["^"] and after[1:] in (["["], [":="], ["."]):
+        return []
+    return members
 
 
 def _closing(tokens, k):

@@ -3,7 +3,8 @@
 - `__SYSTEM.TYPE_CLASS`, the enumeration of the type classes (`__SYSTEM.TYPE_CLASS.TYPE_INT`), with the numbers
   of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48) and base type UDINT, as TwinCAT
   programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
-  TypeClass). Both are declared in the program the first time a program names them.
+  TypeClass). Both are declared in the program the first time a program names them. `IBaseLibrary.TypeClass` (the
+  library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
 - A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
   gives.
 - `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
@@ -29,9 +30,21 @@ _TYPE_CLASSES = (
 TYPES = ("TYPE_CLASS", "ANYTYPE")
 
 
+# CODESYS's library Base Interfaces, referenced under the namespace IBaseLibrary (as TcUnit references it), declares
+# the type classes as TypeClass: `IBaseLibrary.TypeClass` is __SYSTEM.TYPE_CLASS here
+BASE_INTERFACES = "IBASELIBRARY"
+
+
+def canonical(parts):
+    """The parts of a dotted name, `IBaseLibrary.TypeClass...` as `__SYSTEM.TYPE_CLASS...`."""
+    if len(parts) >= 2 and parts[0].upper() == BASE_INTERFACES and parts[1].upper() == "TYPECLASS":
+        return [NAMESPACE, "TYPE_CLASS"] + list(parts[2:])
+    return list(parts)
+
+
 def is_system(name):
-    """Whether the dotted `name` starts with the namespace __SYSTEM."""
-    return name.upper().split(".")[0] == NAMESPACE
+    """Whether the dotted `name` starts with the namespace __SYSTEM (or is IBaseLibrary.TypeClass...)."""
+    return canonical(name.split("."))[0].upper() == NAMESPACE
 
 
 def system_type(comp, name, node):
@@ -136,10 +149,13 @@ def _descriptor(comp, pin, address, t):
 
 def enum_value(comp, node):
     """(EnumType, value) of `__SYSTEM.TYPE_CLASS.TYPE_INT` (a MultiElementVariable), or None for another name."""
-    if _cls(node) != "MultiElementVariable" or node.name.dereferenced or not is_system(_name(node.name.name)):
+    if _cls(node) != "MultiElementVariable" or node.name.dereferenced:
         return None
     names = [el for el in node.elements if _cls(el) == "FieldSelector" and _cls(el.field) == "SimpleVariable"]
-    if len(names) != len(node.elements) or len(names) != 2 or _name(names[0].field.name).upper() != "TYPE_CLASS":
+    head = canonical([_name(node.name.name)] + [_name(el.field.name) for el in names[:1]])
+    if head[0].upper() != NAMESPACE:
+        return None
+    if len(names) != len(node.elements) or len(names) != 2 or head[1].upper() != "TYPE_CLASS":
         raise comp.err(node, f"'{NAMESPACE}' names its TYPE_CLASS's values here: {NAMESPACE}.TYPE_CLASS.TYPE_INT")
     t = system_type(comp, "TYPE_CLASS", node)
     return t, comp.enum_value_of(t, _name(names[1].field.name), names[1].field)
@@ -147,6 +163,7 @@ def enum_value(comp, node):
 
 def case_label(comp, parts, node):
     """(EnumType, value) of a CASE label written `__SYSTEM.TYPE_CLASS.TYPE_INT` (split at its dots), or None."""
+    parts = canonical(parts)
     if not parts or parts[0].upper() != NAMESPACE:
         return None
     if len(parts) != 3 or parts[1].upper() != "TYPE_CLASS":

@@ -72,7 +72,7 @@ class Scanner:
         self.skip()
 
     def skip(self):
-        """Moves past white space and `(* *)` comments; declines on what lark ignores otherwise."""
+        """Moves past white space, `(* *)` and `//` comments and pragmas; declines on what lark ignores otherwise."""
         text = self.text
         while True:
             m = _SPACE.match(text, self.pos)
@@ -93,8 +93,10 @@ class Scanner:
                     raise Decline("pragma")
                 self.pos = end + 1
                 continue
-            if text.startswith("//", self.pos):
-                raise Decline("line comment")
+            if text.startswith("//", self.pos):  # a line comment (user mode), which lark ignores to the end of the line
+                end = text.find("\n", self.pos)
+                self.pos = len(text) if end < 0 else end
+                continue
             return
 
     def at_end(self):
