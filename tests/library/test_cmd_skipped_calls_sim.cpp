@@ -7,9 +7,9 @@
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
-// either FB left out (item 10), a stop on its way through an all-zero scan with its FB left out (item 7), and the
-// command a stop overtook between its data and its toggle left out (item 2). And the mode and axis-setting FBs
-// built on FB_PAC_Cmd, each left out the same way.
+// either FB left out (item 10), 0A41 in ONLINE leaving a running move its end (D23), a stop on its way through an
+// all-zero scan with its FB left out (item 7), and the command a stop overtook between its data and its toggle left
+// out (item 2). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left out the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -376,8 +376,7 @@ TEST_P(CmdSkippedCalls, AnAbortAutoInOnlineNeverEndsARunningMove) {
     EXPECT_LE(abortTaken, 1) << "the controller took the 0A41 once at most";
     const std::uint32_t expected = abortTaken == 1 ? static_cast<std::uint32_t>(pac::sim::error::kInadmissibleCommand)
                                                    : static_cast<std::uint32_t>(kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]);
-    EXPECT_EQ(abortError, expected)
-        << "the controller's number if it went out, else never sent";
+    EXPECT_EQ(abortError, expected) << "the controller's number if it went out, else never sent";
     EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
     EXPECT_EQ(writeTaken, 1) << "the write went out, once";
 }
