@@ -286,6 +286,8 @@ TEST_F(CmdChannelQueue, AnAbsentFbsUnacknowledgedCommandIsHeldAfterItsTimeout) {
 // once. It records the code of every command it took over.
 class CmdChannelOvertaking : public CmdChannelQueue {
 protected:
+    CmdChannelOvertaking() { status_ = 31; }  // ONLINE: where moves run and stops may overtake them (5.2.6)
+
     void ControllerCycle(int n) {
         for (int i = 0; i < n; ++i) {
             Cycle(1);
@@ -364,6 +366,7 @@ TEST_F(CmdChannelQueue, AStopWhoseFbIsNoLongerCalledIsNeverWithdrawn) {
 // stop stays in the module under its SEND flag: a controller that was only briefly not ready takes it when it
 // reads the module, and nothing is parked over it meanwhile.
 TEST_F(CmdChannelQueue, AStatusZeroBlipNeverWithdrawsAStop) {
+    status_ = 31;  // ONLINE: where the move runs and the stop of its axis may overtake it
     Request(0, 0x0A87, 1);
     Cycle(1);
     Acknowledge(false);
@@ -375,7 +378,7 @@ TEST_F(CmdChannelQueue, AStatusZeroBlipNeverWithdrawsAStop) {
     ASSERT_NE(stopSend, rf_);
     status_ = 0;
     Cycle(1);
-    status_ = 1;
+    status_ = 31;
     EXPECT_TRUE(OutputsOf(fbs_[1]).error) << "B: " << OutputsOf(fbs_[1]);
     EXPECT_EQ(fbs_[1]->ERRORID.value, kGvl["PAC_LIB_ERR_CONNECTION_LOST"]);
     for (int scan = 0; scan < 5; ++scan) {
@@ -392,6 +395,7 @@ TEST_F(CmdChannelQueue, AStatusZeroBlipNeverWithdrawsAStop) {
 // comes within B's Timeout (16#8001). The stop stays in the module and the interface stays held: C's read
 // does not go out, nor is a read parked over the stop, until the reply shows the stop taken over and ended.
 TEST_F(CmdChannelQueue, AStopWhoseAcknowledgementIsLostHoldsTheInterfaceUntilTheReplyShowsIt) {
+    status_ = 31;  // ONLINE: where the reference run runs and the stop of its axis may overtake it
     Request(0, 0x0A84, 1);
     Cycle(1);
     Acknowledge(false);

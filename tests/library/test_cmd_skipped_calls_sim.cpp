@@ -7,9 +7,9 @@
 // it or before it: the command that never went out ends at once with 16#8016, not after its Timeout, and no two
 // commands are on their way at once (issue 32, items 1 and 2). And D8: a PLC restart while the program's last module is
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
-// either FB left out (item 10), a stop on its way through an all-zero scan with its FB left out (item 7), and the
-// command a stop overtook between its data and its toggle left out (item 2). And the mode and axis-setting FBs
-// built on FB_PAC_Cmd, each left out the same way.
+// either FB left out (item 10), 0A41 in ONLINE leaving a running move its end (D23), a stop on its way through an
+// all-zero scan with its FB left out (item 7), and the command a stop overtook between its data and its toggle left
+// out (item 2). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left out the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -186,16 +186,16 @@ void PutJogInFb0sPlace(TwoCallerPlc& plc, pac::FbInstance<FB_PAC_JOGAXIS>& jog, 
     jog->TIMEOUT.value = pac::ToIecTime(timeout);
 }
 
-// FB 1 edges a move of axis 2 by 100.0 toward the middle of its range, the taken commands cleared first; scans until
-// the controller acknowledged it. Whether FB 1 is then Acknowledged and Busy (the move processing).
-bool StartShortMoveOnFb1(TwoCallerPlc& plc) {
+// FB `i` edges a move of axis 2 by 100.0 toward the middle of its range, the taken commands cleared first; scans
+// until the controller acknowledged it. Whether FB `i` is then Acknowledged and Busy (the move processing).
+bool StartShortMove(TwoCallerPlc& plc, int i) {
     const double at = plc.Rig().Controller().Axes().Motion(2).Position();
     const auto target = static_cast<float>(at < 5000.0 ? at + 100.0 : at - 100.0);
     plc.Taken();
-    plc.Set(1, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
-    plc.Fb(1)->EXECUTE.value = TRUE;
-    for (int n = 0; n < 20000 && !plc.Fb(1)->ACKNOWLEDGED.value && !plc.Final(1); ++n) plc.Scan();
-    return plc.Fb(1)->ACKNOWLEDGED.value && plc.Fb(1)->BUSY.value;
+    plc.Set(i, {code::kPosAxisAbsolute, 2, pac::test::BitsOf(target)});
+    plc.Fb(i)->EXECUTE.value = TRUE;
+    for (int n = 0; n < 20000 && !plc.Fb(i)->ACKNOWLEDGED.value && !plc.Final(i); ++n) plc.Scan();
+    return plc.Fb(i)->ACKNOWLEDGED.value && plc.Fb(i)->BUSY.value;
 }
 
 // 300 scans more: the controller took no start of the jog, and axis 1 stands at `jogAxisAt`; then FB 1's Execute
@@ -326,28 +326,59 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
     }
 }
 
-// Issue 32, item 10, 0A41 (cmd_abort_auto, 5.2.5.1): a stop like 0A81 (F_PAC_IsStopOver), so edged while a 0A87
-// processes it goes out at once instead of waiting behind the move until 16#8006. A 0A87 runs only in ONLINE, where
-// the PA-CONTROL refuses 0A41 (admissible in AUTOMATIC only): the 0A41's FB ends with the controller's error number
-// unchanged, within a few round trips, while the move still processes.
-TEST_P(CmdSkippedCalls, AnAbortAutoBehindARunningMoveGoesOutAtOnce) {
+// D23, 0A41 (cmd_abort_auto, 5.2.5.1) edged in ONLINE behind a running 0A87: the PA-CONTROL would refuse it
+// (admissible in AUTOMATIC only; a command error is "recognised but not processed", 2.4), so the move goes on. Its
+// FB ends only with the move's end (Done, the target), never while axis 2 still moves; a register write edged on
+// the 0A41's FB once that one ended is taken only after the move's end. The 0A41 ends with the controller's
+// number (20) if it went out, or 16#8006 if it found no free interface within its Timeout.
+TEST_P(CmdSkippedCalls, AnAbortAutoInOnlineNeverEndsARunningMove) {
     TwoCallerPlc plc(GetParam());
     plc.Boot();
     ASSERT_TRUE(plc.GoOnline());
     const Command abort{code::kAbortAuto, 0, 0};
-    StartFarMove(plc, 0.5F);
-    ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value) << "the move processing";
+    const Command write{code::kPutIntReg, 3, 2323};
+    ASSERT_TRUE(StartShortMove(plc, 0)) << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+    const std::uint32_t target = plc.Fb(0)->DATA.value;
     plc.Set(1, abort);
     plc.Fb(1)->EXECUTE.value = TRUE;
+    int phase = 0;  // FB 1: 0 the 0A41, 1 its Execute low, 2 the write
+    std::uint32_t abortError = 0;
+    int abortTaken = 0;
+    int writeTaken = 0;
+    int endedWhileMoving = -1;  // the first scan in which the move's FB had ended while the axis moved
+    int writtenWhileMoving = -1;  // the scan in which the controller took the write while the axis moved
     int n = 0;
-    for (; n < 20000 && !plc.Final(1); ++n) plc.Scan();
-    ASSERT_TRUE(plc.Final(1));
-    const auto taken = plc.Taken();
-    EXPECT_EQ(Count(taken, abort), 1) << "the controller took the 0A41 once";
-    EXPECT_TRUE(plc.Fb(1)->ERROR.value);
-    EXPECT_EQ(plc.Fb(1)->ERRORID.value, pac::sim::error::kInadmissibleCommand) << "the controller's number";
-    EXPECT_TRUE(plc.Rig().Controller().Axes().Motion(2).Moving()) << "the refused 0A41 stopped nothing";
-    EXPECT_LT(n, 100) << "the 0A41 did not wait for the move's end";
+    for (; n < 20000 && !(plc.Final(0) && phase == 2 && plc.Final(1)); ++n) {
+        if (phase == 0 && plc.Final(1)) {
+            abortError = plc.Fb(1)->ERRORID.value;
+            plc.Fb(1)->EXECUTE.value = FALSE;
+            phase = 1;
+        } else if (phase == 1) {
+            plc.Set(1, write);
+            plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(30s);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            phase = 2;
+        }
+        plc.Scan();
+        const bool moving = plc.Rig().Controller().Axes().Motion(2).Moving();
+        const auto taken = plc.Taken();
+        abortTaken += Count(taken, abort);
+        writeTaken += Count(taken, write);
+        if (plc.Final(0) && moving && endedWhileMoving < 0) endedWhileMoving = n;
+        if (Count(taken, write) > 0 && moving) writtenWhileMoving = n;
+    }
+    EXPECT_LT(endedWhileMoving, 0) << "the move's FB ended (ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value
+                                   << ") while axis 2 still moved, scan " << std::dec << endedWhileMoving;
+    EXPECT_LT(writtenWhileMoving, 0) << "the write was taken while the move ran, scan " << writtenWhileMoving;
+    ASSERT_TRUE(plc.Final(0) && phase == 2 && plc.Final(1)) << "Busy after " << n << " scans";
+    EXPECT_TRUE(plc.Fb(0)->DONE.value) << "the move: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+    EXPECT_EQ(plc.Fb(0)->ACKDATA.value, target) << "the end position";
+    EXPECT_LE(abortTaken, 1) << "the controller took the 0A41 once at most";
+    const std::uint32_t expected = abortTaken == 1 ? static_cast<std::uint32_t>(pac::sim::error::kInadmissibleCommand)
+                                                   : static_cast<std::uint32_t>(kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]);
+    EXPECT_EQ(abortError, expected) << "the controller's number if it went out, else never sent";
+    EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+    EXPECT_EQ(writeTaken, 1) << "the write went out, once";
 }
 
 // Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
@@ -803,7 +834,7 @@ TEST_P(CmdSkippedCalls, AJogLeftOutWhileItsStartWaitsPastItsTimeoutNeverStarts) 
     PutJogInFb0sPlace(plc, jog, timeout);
     for (int extra = 0; extra <= 3; ++extra) {
         SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after its Timeout and the move's end");
-        ASSERT_TRUE(StartShortMoveOnFb1(plc)) << "the move processing";
+        ASSERT_TRUE(StartShortMove(plc, 1)) << "the move processing";
         int n = 0;
         jog->TRAVERSE.value = TRUE;
         plc.Scan();
@@ -836,7 +867,7 @@ TEST_P(CmdSkippedCalls, AJogReleasedWhileLeftOutWithItsStartWaitingNeverStarts) 
     PutJogInFb0sPlace(plc, jog, 2s);
     for (int extra = 0; extra <= 3; ++extra) {
         SCOPED_TRACE("the jog called again " + std::to_string(extra) + " scans after the move's end");
-        ASSERT_TRUE(StartShortMoveOnFb1(plc)) << "the move processing";
+        ASSERT_TRUE(StartShortMove(plc, 1)) << "the move processing";
         int n = 0;
         const double jogAxisAt = plc.Rig().Controller().Axes().Motion(1).Position();
         jog->TRAVERSE.value = TRUE;
