@@ -331,7 +331,8 @@ static inline uint64_t __real_to_u64(double r) {
 }
 
 /* Standard function blocks with MATIEC's member names and timing: TON/TOF/TP read __CURRENT_TIME;
- * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE. */
+ * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE.
+ * <FB>_body_lean__ is the body without the EN test and ENO write: the library's calls, whose EN no ST can reach. */
 typedef struct {
     __IEC_BOOL_t EN, ENO, CLK, Q, M;
 } R_TRIG;
