@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -179,6 +180,50 @@ TEST_F(TranslatorCli, LineDirectivesPutEachStatementOnItsStLineAndChangeNothingE
             EXPECT_EQ(with.where[i].second, number + 1);
         }
     }
+}
+
+// No ST of the library's subset names an instance's EN or ENO, so EN stays the TRUE _init__ gives it: the calls of
+// the standard FBs skip the EN test and the ENO write. In user mode (memory functions, pointers) the full form stays;
+// the C interface keeps both members and `<FB>_body__` with its test.
+std::string ReadAll(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST_F(TranslatorCli, StandardFbCallsSkipTheEnTestNoStCanMakeFalse) {
+    const char* body =
+        "FUNCTION_BLOCK FB_Pulse\n"
+        "VAR_INPUT Go : BOOL; END_VAR\n"
+        "VAR_OUTPUT Done : BOOL; END_VAR\n"
+        "VAR Delay : TON; Edge : R_TRIG; END_VAR\n"
+        "Delay(IN := Go, PT := T#2MS);\n"
+        "Edge(CLK := Delay.Q);\n"
+        "Done := Edge.Q;\n";
+    auto source = Write("FB_Pulse.st", std::string(body) + "END_FUNCTION_BLOCK\n");
+    auto result = RunTranslator({"build", "--out", Out(), source});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string lean = ReadAll(dir_ / "out" / "FB_Pulse.c");
+    EXPECT_NE(lean.find("TON_body_lean__(&data__->DELAY);"), std::string::npos) << lean;
+    EXPECT_NE(lean.find("R_TRIG_body_lean__(&data__->EDGE);"), std::string::npos) << lean;
+    const std::string header = ReadAll(dir_ / "out" / "pacst_iec.h");
+    EXPECT_NE(header.find("static inline void TON_body__(TON *d) {\n    if (!d->EN.value)"), std::string::npos);
+    EXPECT_NE(header.find("__IEC_BOOL_t EN, ENO, IN;"), std::string::npos);
+
+    // The premise: a call's EN or ENO, and the members, are refused in the library's subset.
+    for (const char* use : {"Delay(EN := FALSE, IN := Go, PT := T#2MS);\n", "Edge(CLK := Go, ENO => Done);\n",
+                            "Done := Delay.ENO;\n", "Delay.EN := FALSE;\n"}) {
+        auto changed = Write("FB_Pulse.st", std::string(body) + use + "END_FUNCTION_BLOCK\n");
+        EXPECT_EQ(RunTranslator({"check", changed}).exitCode, 1) << use;
+    }
+
+    // User mode keeps the EN test: there memory functions could reach EN.
+    auto user = Write("FB_Pulse.st", std::string(body) + "END_FUNCTION_BLOCK\n");
+    const std::string userOut = (dir_ / "user").string();
+    result = RunTranslator({"build", "--user", "--out", userOut, user});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string full = ReadAll(fs::path(userOut) / "FB_Pulse.c");
+    EXPECT_NE(full.find("TON_body__(&data__->DELAY);"), std::string::npos) << full;
+    EXPECT_EQ(full.find("_body_lean__"), std::string::npos) << full;
 }
 
 // --gvl: the global constant list is checked, POU constants named like its constants must repeat them

@@ -889,6 +889,12 @@ class BodyCompiler:
             return self._fb_call(node, f"(*{v.cname})" if v.section == "inout" else v.cname, v.type, ind)
         return self._fb_call(node, f"data__->{v.cname}", v.type, ind)
 
+    def _lean(self, fbt):
+        """"_lean" where a call of a standard FB may skip the EN test and the ENO write: in the library's subset no
+        ST names an instance's EN or ENO (a call's `EN :=` or `ENO =>`, `inst.EN` are refused) nor takes its address,
+        so EN keeps the TRUE its _init__ gives it and ENO the TRUE; C code keeps both members and `<FB>_body__`."""
+        return "_lean" if fbt.standard and not self.comp.user else ""
+
     def _fb_call(self, node, inst, fbt, ind):
         """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`."""
         pre, post = [], []
@@ -945,7 +951,7 @@ class BodyCompiler:
         direct = "*" not in inst and inst.count("->") <= 1
         self.comp.fb_call_sites[fbt.cname] = self.comp.fb_call_sites.get(fbt.cname, 0) + (1 if direct else 2)
         if not by_reference:
-            return pre + [f"{ind}{fbt.cname}_body__(&{inst});"] + post
+            return pre + [f"{ind}{fbt.cname}_body{self._lean(fbt)}__(&{inst});"] + post
         args = "".join(", " + addresses.get(fv.cname, f"&{inst}.{fv.cname}.value") for fv in by_reference)
         return pre + [f"{ind}{fbt.cname}_body_ref__(&{inst}{args});"] + post
 

@@ -331,7 +331,8 @@ static inline uint64_t __real_to_u64(double r) {
 }
 
 /* Standard function blocks with MATIEC's member names and timing: TON/TOF/TP read __CURRENT_TIME;
- * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE. */
+ * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE.
+ * <FB>_body_lean__ is the body without the EN test and ENO write: the library's calls, whose EN no ST can reach. */
 typedef struct {
     __IEC_BOOL_t EN, ENO, CLK, Q, M;
 } R_TRIG;
@@ -353,17 +354,23 @@ static inline void R_TRIG_init__(R_TRIG *d, BOOL retain) {
     d->EN.value = TRUE; d->ENO.value = TRUE; d->CLK.value = FALSE; d->Q.value = FALSE; d->M.value = FALSE;
 }
 static inline void F_TRIG_init__(F_TRIG *d, BOOL retain) { R_TRIG_init__(d, retain); }
+static inline void R_TRIG_body_lean__(R_TRIG *d) {
+    __PACST_SET(d->Q, d->CLK.value && !d->M.value);
+    __PACST_SET(d->M, d->CLK.value);
+}
 static inline void R_TRIG_body__(R_TRIG *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
-    __PACST_SET(d->Q, d->CLK.value && !d->M.value);
-    __PACST_SET(d->M, d->CLK.value);
+    R_TRIG_body_lean__(d);
+}
+static inline void F_TRIG_body_lean__(F_TRIG *d) {
+    __PACST_SET(d->Q, !d->CLK.value && !d->M.value);
+    __PACST_SET(d->M, !d->CLK.value);
 }
 static inline void F_TRIG_body__(F_TRIG *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
-    __PACST_SET(d->Q, !d->CLK.value && !d->M.value);
-    __PACST_SET(d->M, !d->CLK.value);
+    F_TRIG_body_lean__(d);
 }
 
 static inline void TON_init__(TON *d, BOOL retain) {
@@ -389,10 +396,8 @@ static inline int __pacst_timer_elapsed(TON *d) {
     return 0;
 }
 
-static inline void TON_body__(TON *d) {
+static inline void TON_body_lean__(TON *d) {
     const TIME zero = {0, 0};
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
     __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
     if (d->STATE.value == 0 && !d->PREV_IN.value && d->IN.value) {
         __PACST_SET(d->STATE, 1);
@@ -407,11 +412,14 @@ static inline void TON_body__(TON *d) {
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
-
-static inline void TOF_body__(TOF *d) {
-    const TIME zero = {0, 0};
+static inline void TON_body__(TON *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
+    TON_body_lean__(d);
+}
+
+static inline void TOF_body_lean__(TOF *d) {
+    const TIME zero = {0, 0};
     __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
     if (d->STATE.value == 0 && d->PREV_IN.value && !d->IN.value) {
         __PACST_SET(d->STATE, 1);
@@ -425,11 +433,14 @@ static inline void TOF_body__(TOF *d) {
     __PACST_SET(d->Q, d->IN.value || d->STATE.value == 1);
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
-
-static inline void TP_body__(TP *d) {
-    const TIME zero = {0, 0};
+static inline void TOF_body__(TOF *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
+    TOF_body_lean__(d);
+}
+
+static inline void TP_body_lean__(TP *d) {
+    const TIME zero = {0, 0};
     __PACST_SET(d->CURRENT_TIME, __CURRENT_TIME);
     if (d->STATE.value == 0 && !d->PREV_IN.value && d->IN.value) {
         __PACST_SET(d->STATE, 1);
@@ -443,6 +454,11 @@ static inline void TP_body__(TP *d) {
         __PACST_SET(d->STATE, 0);
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
+}
+static inline void TP_body__(TP *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    TP_body_lean__(d);
 }
 
 /* User programs (pacst --user): TIME as milliseconds (TIME_TO_DINT, DINT_TO_TIME, as CODESYS and
@@ -602,9 +618,7 @@ static inline void CTU_init__(CTU *d, BOOL retain) {
     d->CU.value = FALSE; d->RESET.value = FALSE; d->PV.value = 0; d->Q.value = FALSE; d->CV.value = 0;
     d->MU.value = FALSE;
 }
-static inline void CTU_body__(CTU *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
+static inline void CTU_body_lean__(CTU *d) {
     if (d->RESET.value) {
         __PACST_SET(d->CV, 0);
     } else if (d->CU.value && !d->MU.value && d->CV.value < 0xFFFF) {
@@ -612,6 +626,11 @@ static inline void CTU_body__(CTU *d) {
     }
     __PACST_SET(d->Q, d->CV.value >= d->PV.value);
     __PACST_SET(d->MU, d->CU.value);
+}
+static inline void CTU_body__(CTU *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    CTU_body_lean__(d);
 }
 typedef struct {
     __IEC_BOOL_t EN, ENO, CD, LOAD;
@@ -626,9 +645,7 @@ static inline void CTD_init__(CTD *d, BOOL retain) {
     d->CD.value = FALSE; d->LOAD.value = FALSE; d->PV.value = 0; d->Q.value = FALSE; d->CV.value = 0;
     d->MD.value = FALSE;
 }
-static inline void CTD_body__(CTD *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
+static inline void CTD_body_lean__(CTD *d) {
     if (d->LOAD.value) {
         __PACST_SET(d->CV, d->PV.value);
     } else if (d->CD.value && !d->MD.value && d->CV.value > 0) {
@@ -636,6 +653,11 @@ static inline void CTD_body__(CTD *d) {
     }
     __PACST_SET(d->Q, d->CV.value == 0);
     __PACST_SET(d->MD, d->CD.value);
+}
+static inline void CTD_body__(CTD *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    CTD_body_lean__(d);
 }
 typedef struct {
     __IEC_BOOL_t EN, ENO, CU, CD, RESET, LOAD;
@@ -650,9 +672,7 @@ static inline void CTUD_init__(CTUD *d, BOOL retain) {
     d->CU.value = FALSE; d->CD.value = FALSE; d->RESET.value = FALSE; d->LOAD.value = FALSE; d->PV.value = 0;
     d->QU.value = FALSE; d->QD.value = FALSE; d->CV.value = 0; d->MU.value = FALSE; d->MD.value = FALSE;
 }
-static inline void CTUD_body__(CTUD *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
+static inline void CTUD_body_lean__(CTUD *d) {
     if (d->RESET.value) {
         __PACST_SET(d->CV, 0);
     } else if (d->LOAD.value) {
@@ -666,6 +686,11 @@ static inline void CTUD_body__(CTUD *d) {
     __PACST_SET(d->MU, d->CU.value);
     __PACST_SET(d->MD, d->CD.value);
 }
+static inline void CTUD_body__(CTUD *d) {
+    if (!d->EN.value) { d->ENO.value = FALSE; return; }
+    d->ENO.value = TRUE;
+    CTUD_body_lean__(d);
+}
 typedef struct {
     __IEC_BOOL_t EN, ENO, SET1, RESET, Q1;
 } SR;
@@ -673,10 +698,13 @@ static inline void SR_init__(SR *d, BOOL retain) {
     (void)retain;
     d->EN.value = TRUE; d->ENO.value = TRUE; d->SET1.value = FALSE; d->RESET.value = FALSE; d->Q1.value = FALSE;
 }
+static inline void SR_body_lean__(SR *d) {
+    __PACST_SET(d->Q1, d->SET1.value || (!d->RESET.value && d->Q1.value));
+}
 static inline void SR_body__(SR *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
-    __PACST_SET(d->Q1, d->SET1.value || (!d->RESET.value && d->Q1.value));
+    SR_body_lean__(d);
 }
 typedef struct {
     __IEC_BOOL_t EN, ENO, SET, RESET1, Q1;
@@ -685,10 +713,13 @@ static inline void RS_init__(RS *d, BOOL retain) {
     (void)retain;
     d->EN.value = TRUE; d->ENO.value = TRUE; d->SET.value = FALSE; d->RESET1.value = FALSE; d->Q1.value = FALSE;
 }
+static inline void RS_body_lean__(RS *d) {
+    __PACST_SET(d->Q1, !d->RESET1.value && (d->SET.value || d->Q1.value));
+}
 static inline void RS_body__(RS *d) {
     if (!d->EN.value) { d->ENO.value = FALSE; return; }
     d->ENO.value = TRUE;
-    __PACST_SET(d->Q1, !d->RESET1.value && (d->SET.value || d->Q1.value));
+    RS_body_lean__(d);
 }
 
 #ifdef __cplusplus
