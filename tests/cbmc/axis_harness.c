@@ -58,6 +58,10 @@ int main(void) {
     BOOL leftSinceStart = FALSE;   /* a known status other than ONLINE running (31) seen since then */
     int reachRefusedNotOnline = 0, reachSkippedBusy = 0, reachPlcRestart = 0, reachDoneAfterSkip = 0;
     BOOL skippedWhileBusy = FALSE;
+    int edgeScan = -1000;     /* the scan the job's wait began: its Execute edge, or the call after a superseding one */
+    BOOL superseding = FALSE; /* the last edge superseded a running job; its wait begins in the next call */
+    int reachTimedOutAfterSkip = 0;
+    BOOL skippedSinceEdge = FALSE;
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
@@ -72,11 +76,14 @@ int main(void) {
             abortScans = waitScans = 0;
             takenOver = activeSinceStart = leftSinceStart = FALSE;
             skippedWhileBusy = FALSE;
+            edgeScan = -1000;
+            superseding = FALSE;
             reachPlcRestart = 1;
         }
         if (!nondet_bool()) { /* left out of this scan: nothing of it runs, its module stays as it is */
             if (axis.BUSY.value) reachSkippedBusy = 1;
             if (axis.BUSY.value) skippedWhileBusy = TRUE;
+            if (axis.BUSY.value) skippedSinceEdge = TRUE;
             tl_scan = n;
             continue;
         }
@@ -134,6 +141,23 @@ int main(void) {
          * known operating status is 31, ONLINE running. */
         const BOOL startBefore = (module[3] & 0x04u) != 0, startNow = (out[3] & 0x04u) != 0;
         __CPROVER_assert(!(startNow && !startBefore) || lastStatus == 31, "A6 Start rises only in ONLINE running");
+        /* A8: no Start after Timeout: the wait for the axis counts Timeout from the job's Execute edge, and a
+         * call that finds it run out (also the first call after the FB was left out past it) ends the job with
+         * 16#8006, never raises Start (FB_PAC_Axis.md, "Calling contract"; D22). */
+        if (axis.EXECUTE.value && !before) {
+            /* An edge while a job runs supersedes it: that job ends CommandAborted in this scan and the new one
+             * is admitted in the next call, its wait counted from there (FB_PAC_Axis.md; docs/verification.md,
+             * D24: open for a call left out after such an edge). */
+            superseding = wasBusy;
+            if (!superseding) edgeScan = n;
+            skippedSinceEdge = FALSE;
+        } else if (superseding) {
+            superseding = FALSE;
+            edgeScan = n;
+        }
+        __CPROVER_assert(!(startNow && !startBefore) || n - edgeScan < (int)t,
+                         "A8 no Start once the job's Timeout since its edge ran out");
+        if (axis.ERROR.value && axis.ERRORID.value == 0x8006 && skippedSinceEdge) reachTimedOutAfterSkip = 1;
         /* A7: never Done on silence outside ONLINE running: a job that saw no ACTIVE since its Start ends Done
          * only if no known status but 31 was seen since then. */
         if (startNow && !startBefore) {
@@ -191,6 +215,7 @@ int main(void) {
 #else
     (void)reachDoneAfterSkip;
 #endif
+    __CPROVER_assert(!reachTimedOutAfterSkip, "reach: 16#8006 for a job left out while it waited for the axis");
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart"); /* CBMC__PLC_RESTARTS=0 is for the replay only */
     return 0;
 }
