@@ -158,6 +158,8 @@ public:
         axis_->EXECUTE.value = execute ? TRUE : FALSE;
     }
     void LeaveOut(bool out) { leftOut_ = out; }
+    // The next call is given operating status 0 (a blip: the CMD reply not valid in that scan).
+    void BlankOpStatus() { blankOpStatus_ = true; }
     pac::FbInstance<FB_PAC_AXIS>& Axis() { return axis_; }
     // ACTIVE in the axis module the program read in its last scan, whether it called the FB or not.
     bool ActiveOnBus() const { return activeOnBus_; }
@@ -305,7 +307,8 @@ private:
             axis_->ACCELERATION.value = static_cast<UINT>(changeDynamics ? change_->acceleration : job_.acceleration);
             axis_->INTEGERMODE.value = ctrl_->INTEGERMODEACTIVE.value;
             axis_->MODECHANGE.value = ctrl_->MODECHANGE.value;
-            axis_->OPSTATUS.value = fromPac[kOpStatusByte];
+            axis_->OPSTATUS.value = blankOpStatus_ ? 0 : fromPac[kOpStatusByte];
+            blankOpStatus_ = false;
             for (std::size_t i = 0; i < 12; ++i) {
                 axis_->FROMPAC.value.table[i] = fromPac[offset + i];
                 axis_->TOPAC.value.table[i] = toPac[offset + i];
@@ -496,6 +499,7 @@ private:
     pac::FbInstance<FB_PAC_AXIS> axis_ = PAC_FB(FB_PAC_AXIS);
     bool free_ = false;
     bool leftOut_ = false;  // outside the free program: the FB is not called
+    bool blankOpStatus_ = false;
     bool activeOnBus_ = false;
     pac::test::StatusBlips blips_;
     bool scripted_ = false;
@@ -651,56 +655,131 @@ TEST_P(AxisSkippedCalls, AResetPressedAgainAfterTheCauseIsGoneClearsTheError) {
     EXPECT_FALSE(axes.Motion(1).Fault()) << "the first press after the cause is gone";
 }
 
-// D22: the calling contract (docs/fb/FB_PAC_Axis.md, "Calling contract": the waits run on the clock, a wait that
-// ran out meanwhile ends the job in the next call, 16#8006 before Start). A move runs at full speed; a new Execute
-// edge with another job ends it (CommandAborted) and the new job, with Timeout 20 ms, waits for the braking axis.
-// The program leaves the FB out from the call after that until the Timeout has run out and the bus shows the axis
-// free (ACTIVE 0), and `extra` scans more. Called again, the job ends 16#8006 and the controller's ledger holds no
-// job taken over after its edge.
-void LeaveOutAJobWaitingForTheAxisPastItsTimeout(FreeAxisProgram& program, const AxisFreeCase& c, int extra) {
+// A move runs at full speed; a new Execute edge with another job (`next`, with `timeout`) ends it: CommandAborted
+// in the edge scan, and the new job waits for the braking axis. `taken`: the controller's ledger size before the edge.
+void SupersedeARunningMove(FreeAxisProgram& program, const AxisFreeCase& c, const Job& next,
+                           std::chrono::nanoseconds timeout, std::size_t& taken, bool blankAtEdge = false) {
     auto& axis = program.Axis();
-    const auto timeout = 20ms;
-    constexpr auto kAbsolute = E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE;
-    const Job first{kAbsolute, 70.0F};
+    const Job first{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 70.0F};
     program.Drive(first, true);
-    int n = 0;
-    for (; n < 20000 && !axis->RUNNING.value && !pac::test::IsFinal(axis); ++n) program.Scan();
+    for (int n = 0; n < 20000 && !axis->RUNNING.value && !pac::test::IsFinal(axis); ++n) program.Scan();
     ASSERT_TRUE(axis->RUNNING.value) << "the first move runs";
     program.Scan(c.timing.ScansFor(10ms));
     program.Drive(first, false);
     program.Scan();
-    const Job next{kAbsolute, 40.0F + 0.0625F * static_cast<float>(extra)};
     axis->TIMEOUT.value = pac::ToIecTime(timeout);
-    const std::size_t taken = program.JobsTaken();
+    taken = program.JobsTaken();
     program.Drive(next, true);
+    if (blankAtEdge) program.BlankOpStatus();
     program.Scan();
-    ASSERT_TRUE(axis->COMMANDABORTED.value) << "the first move, in the edge scan";
-    program.Scan();
-    ASSERT_TRUE(axis->BUSY.value && program.ActiveOnBus() && (program.ControlOnBus() & pac::axis_control::kStart) == 0)
-        << "the new job waits for the braking axis";
-    const auto waitFrom = program.Now();
-    program.LeaveOut(true);
-    for (n = 0; n < 20000 && (program.ActiveOnBus() || program.Now() - waitFrom <= timeout); ++n) program.Scan();
-    program.Scan(extra);
-    program.LeaveOut(false);
-    program.Scan();
+    ASSERT_TRUE(axis->COMMANDABORTED.value && program.ActiveOnBus()) << "the first move, in the edge scan";
+}
+
+// The job ended with `errorId` in the last call, nothing of it taken by the controller after its edge.
+void ExpectEndedUnsent(FreeAxisProgram& program, const AxisFreeCase& c, const Job& next, std::size_t taken,
+                       const char* errorId) {
+    auto& axis = program.Axis();
     EXPECT_TRUE(axis->ERROR.value) << "Busy " << int{axis->BUSY.value} << ", Done " << int{axis->DONE.value};
-    EXPECT_EQ(axis->ERRORID.value, pac::test::GvlConstants{}["PAC_LIB_ERR_INTERFACE_BUSY"]) << "Start not sent";
+    EXPECT_EQ(axis->ERRORID.value, pac::test::GvlConstants{}[errorId]) << "Start not sent";
     program.Drive(next, false);
     program.Scan(c.timing.ScansFor(50ms));
     EXPECT_EQ(program.JobsTaken(), taken) << "the controller took the job over";
 }
 
+// D22: the calling contract (docs/fb/FB_PAC_Axis.md, "Calling contract": the waits run on the clock, a wait that
+// ran out meanwhile ends the job in the next call, 16#8006 before Start). The new job of SupersedeARunningMove, with
+// Timeout 20 ms: the program leaves the FB out from the call after its admission (D24, `fromEdge`: from the call
+// after its edge, as its Timeout counts from the edge) until the Timeout has run out and the bus shows the axis
+// free (ACTIVE 0), and `extra` scans more. Called again, the job ends 16#8006 and the controller's ledger holds no
+// job taken over after its edge.
+void LeaveOutAJobWaitingForTheAxisPastItsTimeout(FreeAxisProgram& program, const AxisFreeCase& c, int extra,
+                                                 bool fromEdge) {
+    auto& axis = program.Axis();
+    const auto timeout = 20ms;
+    const Job next{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 40.0F + 0.0625F * static_cast<float>(extra)};
+    std::size_t taken = 0;
+    SupersedeARunningMove(program, c, next, timeout, taken);
+    ASSERT_FALSE(::testing::Test::HasFatalFailure());
+    auto waitFrom = program.Now();
+    if (!fromEdge) {
+        program.Scan();
+        ASSERT_TRUE(axis->BUSY.value && program.ActiveOnBus() &&
+                    (program.ControlOnBus() & pac::axis_control::kStart) == 0)
+            << "the new job waits for the braking axis";
+        waitFrom = program.Now();
+    }
+    program.LeaveOut(true);
+    for (int n = 0; n < 20000 && (program.ActiveOnBus() || program.Now() - waitFrom <= timeout); ++n) program.Scan();
+    program.Scan(extra);
+    program.LeaveOut(false);
+    program.Scan();
+    ExpectEndedUnsent(program, c, next, taken, "PAC_LIB_ERR_INTERFACE_BUSY");
+}
+
+void LeaveOutPastTimeoutCases(const AxisFreeCase& c, bool fromEdge) {
+    for (int extra = 0; extra <= 3; ++extra) {
+        SCOPED_TRACE("called again " + std::to_string(extra) + " scans after its Timeout and the axis free");
+        FreeAxisProgram program(c);
+        program.Prepare(false);  // the case decides every call
+        ASSERT_FALSE(::testing::Test::HasFatalFailure());
+        LeaveOutAJobWaitingForTheAxisPastItsTimeout(program, c, extra, fromEdge);
+    }
+}
+
 // D22 on each bus timing, called again 0 to 3 scans after the Timeout and the axis free. Before the fix Start went
 // out in that call: 16 of the 16 cases failed, on pacst's C and on MATIEC's C alike.
 TEST_P(AxisSkippedCalls, AJobLeftOutWhileItWaitsForTheAxisPastItsTimeoutIsNeverStarted) {
-    for (int extra = 0; extra <= 3; ++extra) {
-        SCOPED_TRACE("called again " + std::to_string(extra) + " scans after its Timeout and the axis free");
+    LeaveOutPastTimeoutCases(GetParam(), false);
+}
+
+// D24: the same for the FB left out from the call after the edge. Before the fix the job was admitted in the first
+// call after the skip and its wait began there, so Start went out.
+TEST_P(AxisSkippedCalls, ASupersedingJobLeftOutPastItsTimeoutSinceItsEdgeIsNeverStarted) {
+    LeaveOutPastTimeoutCases(GetParam(), true);
+}
+
+// D24 with the FB called in every scan: a first run with the default Timeout measures the time from the edge to the
+// call that raised the new job's Start; with that Timeout the job's wait, counted from its edge, runs out in that
+// call: 16#8006, never Start.
+TEST_P(AxisSkippedCalls, ASupersedingJobCalledInEveryScanNeverStartsPastItsTimeoutSinceItsEdge) {
+    const Job next{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 40.0F};
+    std::chrono::nanoseconds wait{1s};
+    for (bool measure : {true, false}) {
+        SCOPED_TRACE(measure ? "measuring the wait" : "Timeout as long as the wait");
         FreeAxisProgram program(GetParam());
-        program.Prepare(false);  // the case decides every call
+        program.Prepare(false);
         ASSERT_FALSE(HasFatalFailure());
-        LeaveOutAJobWaitingForTheAxisPastItsTimeout(program, GetParam(), extra);
+        auto& axis = program.Axis();
+        std::size_t taken = 0;
+        SupersedeARunningMove(program, GetParam(), next, wait, taken);
+        ASSERT_FALSE(HasFatalFailure());
+        const auto edgeAt = program.Now();
+        program.Scan();  // the new job's first call: CommandAborted of the edge scan is over
+        for (int n = 0; n < 20000 && !pac::test::IsFinal(axis) &&
+                        (program.ControlOnBus() & pac::axis_control::kStart) == 0; ++n) {
+            program.Scan();
+        }
+        if (measure) {
+            ASSERT_NE(program.ControlOnBus() & pac::axis_control::kStart, 0U) << "Start after the braking";
+            wait = program.Now() - edgeAt;
+        } else {
+            ExpectEndedUnsent(program, GetParam(), next, taken, "PAC_LIB_ERR_INTERFACE_BUSY");
+        }
     }
+}
+
+// D24: operating status 0 in the scan of an edge that supersedes a running job ends the new job 16#8003 in the next
+// call, as at a fresh edge, whatever status that call sees; nothing is sent.
+TEST_P(AxisSkippedCalls, ASupersedingEdgeInAStatusZeroScanEndsNotReady) {
+    FreeAxisProgram program(GetParam());
+    program.Prepare(false);
+    ASSERT_FALSE(HasFatalFailure());
+    const Job next{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 40.0F};
+    std::size_t taken = 0;
+    SupersedeARunningMove(program, GetParam(), next, 1s, taken, true);
+    ASSERT_FALSE(HasFatalFailure());
+    program.Scan();
+    ExpectEndedUnsent(program, GetParam(), next, taken, "PAC_LIB_ERR_NOT_READY");
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, AxisSkippedCalls,
