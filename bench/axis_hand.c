@@ -183,6 +183,7 @@ static void Handshake(AxisHand *a, const uint8_t from[12], int admitted, int sto
     a->answered = 0;
     if (admitted) {
         Reset(&a->stepTimer);
+        Timer(&a->stepTimer, 1, timeout, now);
         a->stopIsAbort = a->startRaised = a->takenOver = 0;
     }
     if (a->state == AXIS_HAND_WAIT_FREE) {
@@ -273,11 +274,33 @@ static void Fields(uint8_t to[12], uint32_t word, uint16_t acceleration, uint16_
     HandPutDword(to + 8, position);
 }
 
+/* Where a job goes when it leaves IDLE (F_PAC_AxisAdmission). */
+static AxisHandState Admission(const AxisHand *a, const AxisHandJob *job, uint16_t *errorId) {
+    *errorId = 0;
+    if (a->opStatus == 0 || (a->ownsModule && !a->status.valid)) {
+        *errorId = ERR_NOT_READY;
+    } else if (!a->ownsModule || a->modeChange) {
+        *errorId = ERR_WRONG_MODE;
+    } else if (a->opStatus != STATUS_ONLINE) {
+        *errorId = ERR_NOT_ONLINE;
+    } else if (a->abort) {
+        return AXIS_HAND_ABORTED;
+    } else if (job->errorId != 0) {
+        *errorId = job->errorId;
+    } else if (a->status.statusWord & ST_AXIS_ERROR) {
+        *errorId = ERR_AXIS_ERROR;
+    } else {
+        return AXIS_HAND_WAIT_FREE;
+    }
+    return AXIS_HAND_ERROR;
+}
+
 void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int64_t nowNs) {
     const int64_t timeout = a->timeoutNs > 0 ? a->timeoutNs : 1000 * MS;
     const int64_t stopTimeout = a->stopTimeoutNs > 0 ? a->stopTimeoutNs : 10000 * MS;
     const int edge = a->execute && !a->executeBefore;
     const int abortRequest = a->abort || (a->enableBefore && !a->enable);
+    const int waitBegun = a->superseded;
     int inOnline, startLow, superseded = 0, admitted = 0;
     int64_t bound;
     Module(a, fromPac, &inOnline);
@@ -289,8 +312,16 @@ void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int
         Encode(a, &a->next);
         a->requestPending = 1;
         superseded = Busy(a->state);
-        if (superseded) a->state = AXIS_HAND_ABORTED; /* the running job ends, CommandAborted for one scan */
+        if (superseded) {
+            /* The running job ends, CommandAborted for one scan; the new one is admitted on this scan's status
+             * and its wait counts from here (D24). */
+            uint16_t edgeError = 0;
+            a->state = AXIS_HAND_ABORTED;
+            (void)Admission(a, &a->next, &edgeError);
+            if (edgeError != 0) a->next.errorId = edgeError;
+        }
     }
+    a->superseded = superseded;
     if (!Busy(a->state) && a->state != AXIS_HAND_IDLE && !superseded && (!a->execute || a->requestPending)) {
         a->state = AXIS_HAND_IDLE;
         a->errorId = 0;
@@ -299,27 +330,11 @@ void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int
         a->requestPending = 0;
         a->job = a->next;
         a->errorIsSystem = 0;
-        a->errorId = 0;
-        a->state = AXIS_HAND_ERROR;
-        if (a->opStatus == 0 || (a->ownsModule && !a->status.valid)) {
-            a->errorId = ERR_NOT_READY;
-        } else if (!a->ownsModule || a->modeChange) {
-            a->errorId = ERR_WRONG_MODE;
-        } else if (a->opStatus != STATUS_ONLINE) {
-            a->errorId = ERR_NOT_ONLINE;
-        } else if (a->abort) {
-            a->state = AXIS_HAND_ABORTED;
-        } else if (a->job.errorId != 0) {
-            a->errorId = a->job.errorId;
-        } else if (a->status.statusWord & ST_AXIS_ERROR) {
-            a->errorId = ERR_AXIS_ERROR;
-        } else {
-            a->state = AXIS_HAND_WAIT_FREE;
-            admitted = 1;
-        }
+        a->state = Admission(a, &a->job, &a->errorId);
+        admitted = a->state == AXIS_HAND_WAIT_FREE && !waitBegun;
     }
     if ((!a->status.valid || a->modeChange) && Busy(a->state)) a->state = AXIS_HAND_ABORTED;
-    Handshake(a, fromPac, admitted, abortRequest, abortRequest, bound, startLow,
+    Handshake(a, fromPac, admitted || superseded, abortRequest, abortRequest, bound, startLow,
               a->opStatus != 0 && a->opStatus != STATUS_ONLINE, timeout, stopTimeout, nowNs);
 
     a->busy = Busy(a->state);

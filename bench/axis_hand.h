@@ -76,6 +76,7 @@ typedef struct {
     /* the job */
     AxisHandState state;
     int executeBefore, enableBefore, requestPending, errorIsSystem;
+    int superseded; /* the last scan's edge superseded a running job: the new job's wait began there */
     AxisHandJob next, job, sent;
     /* the handshake */
     AxisHandTimer stepTimer;

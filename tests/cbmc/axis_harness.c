@@ -58,8 +58,7 @@ int main(void) {
     BOOL leftSinceStart = FALSE;   /* a known status other than ONLINE running (31) seen since then */
     int reachRefusedNotOnline = 0, reachSkippedBusy = 0, reachPlcRestart = 0, reachDoneAfterSkip = 0;
     BOOL skippedWhileBusy = FALSE;
-    int edgeScan = -1000;     /* the scan the job's wait began: its Execute edge, or the call after a superseding one */
-    BOOL superseding = FALSE; /* the last edge superseded a running job; its wait begins in the next call */
+    int edgeScan = -1000;     /* the scan of the job's Execute edge, where its wait began */
     int reachTimedOutAfterSkip = 0;
     BOOL skippedSinceEdge = FALSE;
 
@@ -77,7 +76,6 @@ int main(void) {
             takenOver = activeSinceStart = leftSinceStart = FALSE;
             skippedWhileBusy = FALSE;
             edgeScan = -1000;
-            superseding = FALSE;
             reachPlcRestart = 1;
         }
         if (!nondet_bool()) { /* left out of this scan: nothing of it runs, its module stays as it is */
@@ -141,19 +139,13 @@ int main(void) {
          * known operating status is 31, ONLINE running. */
         const BOOL startBefore = (module[3] & 0x04u) != 0, startNow = (out[3] & 0x04u) != 0;
         __CPROVER_assert(!(startNow && !startBefore) || lastStatus == 31, "A6 Start rises only in ONLINE running");
-        /* A8: no Start after Timeout: the wait for the axis counts Timeout from the job's Execute edge, and a
-         * call that finds it run out (also the first call after the FB was left out past it) ends the job with
-         * 16#8006, never raises Start (FB_PAC_Axis.md, "Calling contract"; D22). */
+        /* A8: no Start after Timeout: the wait for the axis counts Timeout from the job's Execute edge, also for
+         * an edge that supersedes a running job (admitted in the next call, D24), and a call that finds it run out
+         * (also the first call after the FB was left out past it) ends the job with 16#8006, never raises Start
+         * (FB_PAC_Axis.md, "Calling contract"; D22). */
         if (axis.EXECUTE.value && !before) {
-            /* An edge while a job runs supersedes it: that job ends CommandAborted in this scan and the new one
-             * is admitted in the next call, its wait counted from there (FB_PAC_Axis.md; docs/verification.md,
-             * D24: open for a call left out after such an edge). */
-            superseding = wasBusy;
-            if (!superseding) edgeScan = n;
-            skippedSinceEdge = FALSE;
-        } else if (superseding) {
-            superseding = FALSE;
             edgeScan = n;
+            skippedSinceEdge = FALSE;
         }
         __CPROVER_assert(!(startNow && !startBefore) || n - edgeScan < (int)t,
                          "A8 no Start once the job's Timeout since its edge ran out");
