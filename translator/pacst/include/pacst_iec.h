@@ -352,6 +352,13 @@ static inline uint64_t __real_to_u64(double r) {
 /* Standard function blocks with MATIEC's member names and timing: TON/TOF/TP read __CURRENT_TIME;
  * TON never sets Q in the call that sees IN rise, F_TRIG gives Q on its first call with CLK FALSE.
  * <FB>_body_lean__ is the body without the EN test and ENO write: the library's calls, whose EN no ST can reach. */
+/* <FB>_body__: the EN test and ENO write of IEC 61131-3 around <FB>_body_lean__, for calls whose EN may be FALSE. */
+#define __PACST_EN_BODY(FB)                                           \
+    static inline void FB##_body__(FB *d) {                           \
+        if (!d->EN.value) { d->ENO.value = FALSE; return; }           \
+        d->ENO.value = TRUE;                                          \
+        FB##_body_lean__(d);                                          \
+    }
 typedef struct {
     __IEC_BOOL_t EN, ENO, CLK, Q, M;
 } R_TRIG;
@@ -377,20 +384,12 @@ static inline void R_TRIG_body_lean__(R_TRIG *d) {
     __PACST_SET(d->Q, d->CLK.value && !d->M.value);
     __PACST_SET(d->M, d->CLK.value);
 }
-static inline void R_TRIG_body__(R_TRIG *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    R_TRIG_body_lean__(d);
-}
+__PACST_EN_BODY(R_TRIG)
 static inline void F_TRIG_body_lean__(F_TRIG *d) {
     __PACST_SET(d->Q, !d->CLK.value && !d->M.value);
     __PACST_SET(d->M, !d->CLK.value);
 }
-static inline void F_TRIG_body__(F_TRIG *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    F_TRIG_body_lean__(d);
-}
+__PACST_EN_BODY(F_TRIG)
 
 static inline void TON_init__(TON *d, BOOL retain) {
     const TIME zero = {0, 0};
@@ -431,11 +430,7 @@ static inline void TON_body_lean__(TON *d) {
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
-static inline void TON_body__(TON *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    TON_body_lean__(d);
-}
+__PACST_EN_BODY(TON)
 
 static inline void TOF_body_lean__(TOF *d) {
     const TIME zero = {0, 0};
@@ -452,11 +447,7 @@ static inline void TOF_body_lean__(TOF *d) {
     __PACST_SET(d->Q, d->IN.value || d->STATE.value == 1);
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
-static inline void TOF_body__(TOF *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    TOF_body_lean__(d);
-}
+__PACST_EN_BODY(TOF)
 
 static inline void TP_body_lean__(TP *d) {
     const TIME zero = {0, 0};
@@ -474,11 +465,7 @@ static inline void TP_body_lean__(TP *d) {
     }
     __PACST_SET(d->PREV_IN, d->IN.value);
 }
-static inline void TP_body__(TP *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    TP_body_lean__(d);
-}
+__PACST_EN_BODY(TP)
 
 /* User programs (pacst --user): TIME as milliseconds (TIME_TO_DINT, DINT_TO_TIME, as CODESYS and
  * TwinCAT count it), TIME * and / a number, TRUNC, and the counters and bistables with the pin names of
@@ -646,11 +633,7 @@ static inline void CTU_body_lean__(CTU *d) {
     __PACST_SET(d->Q, d->CV.value >= d->PV.value);
     __PACST_SET(d->MU, d->CU.value);
 }
-static inline void CTU_body__(CTU *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    CTU_body_lean__(d);
-}
+__PACST_EN_BODY(CTU)
 typedef struct {
     __IEC_BOOL_t EN, ENO, CD, LOAD;
     __IEC_WORD_t PV;
@@ -673,11 +656,7 @@ static inline void CTD_body_lean__(CTD *d) {
     __PACST_SET(d->Q, d->CV.value == 0);
     __PACST_SET(d->MD, d->CD.value);
 }
-static inline void CTD_body__(CTD *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    CTD_body_lean__(d);
-}
+__PACST_EN_BODY(CTD)
 typedef struct {
     __IEC_BOOL_t EN, ENO, CU, CD, RESET, LOAD;
     __IEC_WORD_t PV;
@@ -705,11 +684,7 @@ static inline void CTUD_body_lean__(CTUD *d) {
     __PACST_SET(d->MU, d->CU.value);
     __PACST_SET(d->MD, d->CD.value);
 }
-static inline void CTUD_body__(CTUD *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    CTUD_body_lean__(d);
-}
+__PACST_EN_BODY(CTUD)
 typedef struct {
     __IEC_BOOL_t EN, ENO, SET1, RESET, Q1;
 } SR;
@@ -720,11 +695,7 @@ static inline void SR_init__(SR *d, BOOL retain) {
 static inline void SR_body_lean__(SR *d) {
     __PACST_SET(d->Q1, d->SET1.value || (!d->RESET.value && d->Q1.value));
 }
-static inline void SR_body__(SR *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    SR_body_lean__(d);
-}
+__PACST_EN_BODY(SR)
 typedef struct {
     __IEC_BOOL_t EN, ENO, SET, RESET1, Q1;
 } RS;
@@ -735,11 +706,7 @@ static inline void RS_init__(RS *d, BOOL retain) {
 static inline void RS_body_lean__(RS *d) {
     __PACST_SET(d->Q1, !d->RESET1.value && (d->SET.value || d->Q1.value));
 }
-static inline void RS_body__(RS *d) {
-    if (!d->EN.value) { d->ENO.value = FALSE; return; }
-    d->ENO.value = TRUE;
-    RS_body_lean__(d);
-}
+__PACST_EN_BODY(RS)
 
 #ifdef __cplusplus
 }
