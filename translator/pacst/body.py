@@ -6,8 +6,8 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, inout_parameter, \
-    inouts_by_reference, located, pos
+from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, chained_dispatcher, \
+    inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
 from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call
 
@@ -387,24 +387,65 @@ class BodyCompiler:
 
     def call_result(self, node):
         """User mode: what a call's result gives, as a Ref: `F(x)^` (a FunctionCall read through its POINTER
-        result), `F(x).Member`, `Get(i)^.Data` (a ChainedFunctionCall whose later calls are members rewritten
-        before parsing, rewrite.CALL_MEMBER). The result itself is read only; where a POINTER result points is
-        read and written. A METHOD called on a call's result is refused."""
-        calls = node.invocations if _cls(node) == "ChainedFunctionCall" else [node]
-        for member in calls[1:]:
-            if (self.comp.file, *pos(member)) not in self.comp.call_members:
-                raise self.err(node, CHAINED_CALL)
-        first = calls[0]
-        te = self.ex.expr(dataclasses.replace(first, dereferenced=False))
-        result = T.Var(str(dataclasses.replace(first, dereferenced=False)), "result", te.type, None, first)
-        r = Ref(te.code, False, te.type, result, writable=False, why_not="it is a call's result")
-        if first.dereferenced:
-            r = self._deref(r, first)
-        for member in calls[1:]:
-            r = self._member(self._through(r, member, False), member.name)
-            if member.dereferenced:
-                r = self._deref(r, member)
+        result), `F(x).Member`, `Get(i)^.Data` (a ChainedFunctionCall whose members are rewritten before parsing,
+        rewrite.CALL_MEMBER), `Buffer.Get(i).Dequeue()` (a METHOD called on the result before it). The result itself
+        is read only; where a POINTER result points is read and written."""
+        return self._chain(node.invocations if _cls(node) == "ChainedFunctionCall" else [node], False)
+
+    def _chain(self, calls, statement):
+        """The Ref of the last of `calls` (a call, then members and METHODs of the result before each), or as a
+        `statement` the C call of the last METHOD. Each call is made once, left to right: an INTERFACE result is
+        given by value to its METHOD's dispatcher (emit), an instance returned by value is a C object."""
+        r = None
+        for k, call in enumerate(calls):
+            last = k == len(calls) - 1
+            if k and (self.comp.file, *pos(call)) in self.comp.call_members:  # F(x).Member, rewritten F(x).Member()
+                r = self._member(self._through(r, call, False), call.name)
+            else:
+                plain = dataclasses.replace(call, dereferenced=False)
+                if k:
+                    this, method = self._chained_target(r, call)
+                    if method.ret is None and not (statement and last):
+                        raise self.err(call, f"METHOD {method.name} returns nothing: call it as a statement")
+                    te = self.ex._user_call(plain, method, this=this)
+                    if statement and last:
+                        return te.code if method.ret is None else f"(void){te.code}"
+                else:
+                    te = self.ex.expr(plain)
+                result = T.Var(str(plain), "result", te.type, None, call)
+                code = f"(*{te.code})" if te.type.is_fb else te.code  # an instance's value is its address
+                r = Ref(code, False, te.type, result, writable=False, why_not="it is a call's result")
+            if call.dereferenced:
+                r = self._deref(r, call)
+        if statement:
+            raise self.err(calls[-1], "a member of a call's result is no statement: call a METHOD")
         return r
+
+    def _chained_target(self, r, call):
+        """(the C arguments before EN, the METHOD) of `call`, a METHOD called on the result `r` of the call before
+        it: on an instance, its address; on an INTERFACE, the value and the ST position, given to the dispatcher
+        that reads the instance's table once (emit, chained_dispatcher)."""
+        r = self._through(r, call, False)
+        if _cls(call.name) != "SimpleVariable":
+            raise self.err(call, CHAINED_CALL)
+        name = _name(call.name.name)
+        if r.type.kind == "interface":
+            proto = r.type.protos.get(name.upper())
+            if proto is None:
+                raise self.err(call, f"INTERFACE {r.type.name} has no METHOD '{name}'")
+            line, col = pos(call)
+            where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+            through = copy.copy(proto)
+            through.cfunc = chained_dispatcher(r.type, proto)
+            return f"{r.read()}, \"{where}\"", through
+        pou = getattr(r.type, "pou", None) if r.type.is_fb else None
+        if pou is None:
+            raise self.err(call, f"METHOD {name} called on a {r.type.name}: a METHOD is called on a function block "
+                                 "instance or an INTERFACE")
+        m = pou.methods.get(name.upper())
+        if m is None:
+            raise self.err(call, f"{r.type.name} has no METHOD '{name}'")
+        return f"&({r.read()})", m
 
     def _pointer_index(self, r, el):
         """User mode: `p[i]`, the i-th element of p's target type from where p points, as TwinCAT reads it
@@ -508,7 +549,10 @@ class BodyCompiler:
 
     # ------------------------------------------------------------------ statements
     def _s_ChainedFunctionCallStatement(self, node, ind, d):
-        raise self.err(node, CHAINED_CALL)
+        if not self.comp.user:
+            raise self.err(node, CHAINED_CALL)
+        self.comp.dialect(node, "a METHOD called on a call's result")
+        return [f"{ind}{self._chain(node.invocations, True)};"]
 
     def _s_AssignmentStatement(self, node, ind, d):
         if len(node.variables) != 1 and self.comp.user:
@@ -534,6 +578,8 @@ class BodyCompiler:
             self.result_assigned = True
         if not r.writable:
             raise self.err(target, f"'{r.var.name}' cannot be written: {r.why_not}")
+        if r.type.is_fb and self.comp.user:  # `Stored := Suite.GetTestByPosition(1);`, `Other := Stored;`
+            return self._instance_assignment(r, node.expression, ind)
         if r.type.is_fb:
             raise self.err(target, "function block instances cannot be assigned")
         if r.type.kind == "vla":
@@ -543,6 +589,16 @@ class BodyCompiler:
         te = self.ex.expr(node.expression, r.type)
         value = self.ex.coerce(te, r.type, node.expression)
         return [ind + r.write(value if isinstance(r, StringByteRef) else _limited(r.var, value, r.suffix))]
+
+    def _instance_assignment(self, r, expression, ind):
+        """User mode: an instance assigned to the instance `r` of its own function block, a copy of its memory as
+        TwinCAT makes it (no FB_init); the value of an instance is its address here."""
+        self.comp.dialect(expression, f"an instance of {r.type.name} assigned")
+        te = self.ex.expr(expression, r.type)
+        if te.type is not r.type:
+            raise self.err(expression, f"type mismatch: {te.type.name} assigned to an instance of {r.type.name}; an "
+                                       "instance is copied to one of its own type")
+        return [f"{ind}{r.read()} = *({te.code});"]
 
     def _s_ReferenceAssignmentStatement(self, node, ind, d):
         """User mode: `R REF= X`: the REFERENCE R now stands for X (REF= 0: for nothing)."""

@@ -97,3 +97,9 @@ def inout_parameter(var):
     """The C parameter of the body that holds the address of the VAR_IN_OUT `var` (lower case: no ST name
     becomes it)."""
     return f"inout__{var.cname}"
+
+
+def chained_dispatcher(itf, proto):
+    """The C function through which a METHOD `proto` of the INTERFACE `itf` is called on a call's result (user
+    mode: `Buffer.Get(i).Dequeue()`): it takes the INTERFACE by value, so that the call giving it is made once."""
+    return f"{itf.cname}__{proto.cname}__CHAIN"

@@ -1093,9 +1093,10 @@ class Compiler:
             return None
 
     def _result_type(self, rt):
-        """The type of a METHOD's result `rt`."""
-        return self._spec_type(rt.spec, allow_fb=False) if _cls(rt) == "TypeInitialization" else \
-            self._resolve_type(rt, allow_fb=False)
+        """The type of a METHOD's result `rt` (user mode: also a function block, returned by value, as TcUnit's
+        FB_TestSuite.GetTestByPosition returns an FB_Test)."""
+        return self._spec_type(rt.spec, allow_fb=self.user) if _cls(rt) == "TypeInitialization" else \
+            self._resolve_type(rt, allow_fb=self.user)
 
     def _interface_members(self, t, node):
         """The METHODs' and PROPERTYs' prototypes of the INTERFACE `t`; every refusal of a result, a pin or a

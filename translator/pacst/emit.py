@@ -8,7 +8,7 @@ import tempfile
 from . import types as T
 from . import varlen
 from .body import program_instance
-from .common import inout_parameter, inouts_by_reference
+from .common import chained_dispatcher, inout_parameter, inouts_by_reference
 
 _HEADER_NAME = "pacst_iec.h"
 ENUM_NAMES = "pacst_enum_names.h"
@@ -90,6 +90,7 @@ class Emitter:
             slots += [f"  const struct {b.cname}__VT *{b.cname}__BASE;" for b in t.bases]  # INTERFACE EXTENDS
             out.append(f"typedef struct {t.cname}__VT {{\n" + "\n".join(slots or ["  char none;"]) +
                        f"\n}} {t.cname}__VT;")
+            out += self._chained_dispatchers(t)
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
@@ -155,6 +156,22 @@ class Emitter:
         """The C parameters of an FB's body that works on its VAR_IN_OUTs through their addresses."""
         return ", ".join([f"{pou.cname} *data__"] +
                          [f"{v.type.cname} *{inout_parameter(v)}" for v in inouts_by_reference(pou)])
+
+    def _chained_dispatchers(self, t):
+        """For each METHOD of the INTERFACE `t`, the function a call on a call's result goes through (user mode:
+        `Buffer.Get(i).Dequeue()`): the INTERFACE by value, its table read once, a null one stopping the run with
+        the ST position."""
+        out = []
+        for p in t.protos.values():
+            if p.accessor is not None:  # a PROPERTY's Get or Set
+                continue
+            params = self._params(p)
+            names = ["EN", "__ENO"] + [v.cname for v in p.vars if v.section in ("input", "output", "inout")]
+            out += [f"static inline {_ret(p)} {chained_dispatcher(t, p)}({t.cname} itf, const char *where, "
+                    f"{', '.join(params)}) {{",
+                    f"  {'return ' if p.ret is not None else ''}((const {t.cname}__VT *)__pacst_ptr((void *)itf.vt, "
+                    f"where))->{p.cname}({', '.join(['itf.inst'] + names)});", "}"]
+        return out
 
     @staticmethod
     def _params(pou):
@@ -314,12 +331,13 @@ class Emitter:
         statics, init = self._function_statics(pou)
         out = statics + [self._function_signature(pou) + " {",
                          "  BOOL ENO = TRUE;",
-                         f"  {pou.ret.cname} {pou.cname};"] + init
+                         self._local(T.Var(pou.name, "result", pou.ret, None, None), pou.cname)] + init
         for v in pou.vars:
             if v.section == "var":
                 out.append(self._local(v))
-        out += ["  " + line for line in self.comp.init_code(T.Var(pou.name, "result", pou.ret, None, None),
-                                                             pou.cname)]
+        # a function block result (user mode) is initialised as an FB instance of a METHOD's VAR
+        out += ["  " + line.replace(", retain);", ", FALSE);")
+                for line in self.comp.init_code(T.Var(pou.name, "result", pou.ret, None, None), pou.cname)]
         for v in pou.vars:
             if v.section == "var":  # an FB instance of a METHOD's VAR: initialised in every call (user mode)
                 out += ["  " + line.replace(", retain);", ", FALSE);") for line in self.comp.init_code(v, v.cname)]
@@ -333,11 +351,12 @@ class Emitter:
         out += ["  goto __end;", "__end:", "  if (__ENO != NULL) *__ENO = ENO;", f"  return {pou.cname};", "}", ""]
         return out
 
-    def _local(self, v):
-        """The C declaration of a FUNCTION's or METHOD's VAR; in user mode one of a compound type (an FB instance
-        in a METHOD) starts all zero, the flags of its IEC variables (forcing) too, before its init."""
+    def _local(self, v, cname=None):
+        """The C declaration of a FUNCTION's or METHOD's VAR (or, named `cname`, its result); in user mode one of a
+        compound type (an FB instance in a METHOD) starts all zero, the flags of its IEC variables (forcing) too,
+        before its init."""
         compound = v.type.is_fb or v.type.is_struct or v.type.is_array
-        return f"  {v.type.cname} {v.cname}{' = {0}' if self.comp.user and compound else ''};"
+        return f"  {v.type.cname} {cname or v.cname}{' = {0}' if self.comp.user and compound else ''};"
 
     def _procedure_code(self, pou):
         statics, init = self._function_statics(pou)

@@ -1258,4 +1258,9 @@ class ExprCompiler:
         # __FILE__ and __LINE__ are the ST file and line of the call (docs/translator.md).
         where = "__FILE__, __LINE__, " if pou.native else ""
         first = f"{this}, " if this is not None else ""
-        return TE(pou.ret, f"{pou.cfunc}({first}{where}TRUE, NULL{''.join(', ' + a for a in args)})")
+        call = f"{pou.cfunc}({first}{where}TRUE, NULL{''.join(', ' + a for a in args)})"
+        if pou.ret is not None and pou.ret.is_fb:  # user mode: an instance returned by value, read by its address
+            # as every instance's value here (_read), the address of a C object holding the result (a compound
+            # literal lives to the end of the C block: the statement)
+            return TE(pou.ret, f"(&((struct {{ {pou.ret.cname} v; }}){{ {call} }}).v)")
+        return TE(pou.ret, call)
