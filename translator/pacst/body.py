@@ -9,7 +9,7 @@ from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, chained_dispatcher, \
     inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call, widens
 
 
 class BodyCompiler:
@@ -400,7 +400,8 @@ class BodyCompiler:
         for k, call in enumerate(calls):
             last = k == len(calls) - 1
             if k and (self.comp.file, *pos(call)) in self.comp.call_members:  # F(x).Member, rewritten F(x).Member()
-                r = self._member(self._through(r, call, False), call.name)
+                r = self._through(r, call, False)
+                r = self._result_property(r, call) if r.type.kind == "interface" else self._member(r, call.name)
             else:
                 plain = dataclasses.replace(call, dereferenced=False)
                 if k:
@@ -420,6 +421,21 @@ class BodyCompiler:
         if statement:
             raise self.err(calls[-1], "a member of a call's result is no statement: call a METHOD")
         return r
+
+    def _result_property(self, r, call):
+        """User mode: `F(x).Index`, a PROPERTY of the INTERFACE `r` a call returns, read through its Get's dispatcher
+        (emit), so that the call is made once."""
+        name = _name(call.name.name)
+        prop = r.type.properties.get(name.upper())
+        if prop is None:
+            raise self.err(call, f"INTERFACE {r.type.name} has no PROPERTY '{name}'")
+        if prop["get"] is None:
+            raise self.err(call, f"PROPERTY {prop['name']} has no Get: it is write only")
+        line, col = pos(call)
+        where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
+        code = f"{chained_dispatcher(r.type, prop['get'])}({r.read()}, \"{where}\", TRUE, NULL)"
+        result = T.Var(f"{r.var.name}.{name}", "result", prop["type"], None, call)
+        return Ref(code, False, prop["type"], result, writable=False, why_not="it is a call's result")
 
     def _chained_target(self, r, call):
         """(the C arguments before EN, the METHOD) of `call`, a METHOD called on the result `r` of the call before
@@ -968,10 +984,15 @@ class BodyCompiler:
                 target = self.ref(p.value)
                 if not target.writable:
                     raise self.err(p.value, f"'{target.var.name}' cannot be written: {target.why_not}")
-                if target.type is not fv.type:
+                value = f"{member}.value"
+                if target.type is not fv.type and self.comp.user and widens(fv.type, target.type):
+                    # user mode: an output to a wider variable, as TwinCAT converts it (Index => DintVariable)
+                    self.comp.dialect(p.value, f"the implicit conversion of {fv.type.name} to {target.type.name}")
+                    value = f"(({target.type.cname})({value}))"
+                elif target.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
-                post.append(ind + target.write(_limited(target.var, f"{member}.value", target.suffix)))
+                post.append(ind + target.write(_limited(target.var, value, target.suffix)))
             elif fv.section == "input" and getattr(fv.type, "any", False):  # an ANY input (user mode)
                 pre.append(f"{ind}__PACST_SETP({member}, , {system.any_argument(self.ex, p.value, fv)});")
             elif fv.section == "input" and (bound := self.ex.reference_input(p.value, fv)) is not None:

@@ -158,13 +158,11 @@ class Emitter:
                          [f"{v.type.cname} *{inout_parameter(v)}" for v in inouts_by_reference(pou)])
 
     def _chained_dispatchers(self, t):
-        """For each METHOD of the INTERFACE `t`, the function a call on a call's result goes through (user mode:
-        `Buffer.Get(i).Dequeue()`): the INTERFACE by value, its table read once, a null one stopping the run with
-        the ST position."""
+        """For each METHOD and PROPERTY accessor of the INTERFACE `t`, the function a call on a call's result goes
+        through (user mode: `Buffer.Get(i).Dequeue()`, `F(x).Index`): the INTERFACE by value, its table read once,
+        a null one stopping the run with the ST position."""
         out = []
-        for p in t.protos.values():
-            if p.accessor is not None:  # a PROPERTY's Get or Set
-                continue
+        for p in t.protos.values():  # a PROPERTY's Get and Set too (`F(x).Index`)
             params = self._params(p)
             names = ["EN", "__ENO"] + [v.cname for v in p.vars if v.section in ("input", "output", "inout")]
             out += [f"static inline {_ret(p)} {chained_dispatcher(t, p)}({t.cname} itf, const char *where, "
@@ -398,8 +396,8 @@ class Emitter:
                 out += self._fb_code(obj) if obj.kind == "fb" else self._function_code(obj)
                 if obj.owner is not None and obj is _last_member(self.program, obj.owner):
                     out += self._vtables(obj.owner)  # after the FB's METHODs
-                elif obj.kind == "fb" and obj.interfaces and not obj.methods:
-                    out += self._vtables(obj)
+                elif obj.kind == "fb" and obj.interfaces and _last_member(self.program, obj) is None:
+                    out += self._vtables(obj)  # an FB without METHODs and PROPERTYs: after the FB
         if self.line_directives_dir is not None:
             c_file = _c_string(os.path.abspath(os.path.join(self.line_directives_dir, _stem(path) + ".c")))
             # The directive is on line i + 1, so the line after it is line i + 2 of the file.

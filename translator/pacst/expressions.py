@@ -50,7 +50,8 @@ def _converted(st, dt, code):
 def widens(source, target):
     """Whether a user program converts `source` to `target` implicitly (TwinCAT and CODESYS do, without a
     warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
-    an unsigned integer to a bit string as wide or wider (UINT to WORD), any integer to REAL or LREAL, REAL
+    an unsigned integer to a bit string as wide or wider (UINT to WORD), a bit string to an integer that holds its
+    values (BYTE to DINT, WORD to UDINT), any integer to REAL or LREAL, REAL
     to LREAL, an enumeration to an integer (its number; TwinCAT's types without {attribute 'strict'})."""
     if source.is_enum and target.is_int:  # its base type's (INT without one)
         base = getattr(source, "base", None)
@@ -65,6 +66,8 @@ def widens(source, target):
         return target.bits >= source.bits
     if source.is_int and target.is_bit:
         return not source.is_signed and target.bits >= source.bits
+    if source.is_bit and target.is_int:  # TwinCAT takes an assignment whose source range lies within the target's
+        return target.bits > source.bits if target.is_signed else target.bits >= source.bits
     if source.is_int and target.is_real:
         return True
     if source.is_time and target.is_time:  # TIME to LTIME
