@@ -30,7 +30,7 @@ def _digest(rule_and_source):
     rule, source = rule_and_source
     try:
         text = Oracle.processed(source)
-        return text_key(text, rule), tree_digest(_ORACLE._earley_tree(text, rule))
+        return text_key(text, rule), tree_digest(_ORACLE.earley_tree(text, rule))
     except Exception:  # blark's comment pass or Earley refuses the text: nothing to record
         return None
 

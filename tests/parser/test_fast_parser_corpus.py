@@ -39,7 +39,7 @@ _ORACLE = None
 
 def audited(key):
     """The recorded texts Earley parses all the same: those whose key starts with 0 (one in 16, a different
-    sample as the texts change), so that a record not written by Earley cannot pass."""
+    sample as the texts change), so that a record not written by Earley is found out."""
     return key.startswith("0")
 
 
