@@ -3,8 +3,11 @@ which must all take the fast path), the conformance suite's accepted and refused
 programs' too), the MATIEC
 verdict snippets and the damaged-input tests' own inputs. Each file's tree must equal Earley's
 exactly, or the file is declined (blark's parser then parses it). Run by ctest as FastParser.Corpus;
-the files are spread over the cores, since Earley needs several milliseconds per line, and Earley's
-trees are kept in the build tree ($PAC_ORACLE_CACHE) so that a second run parses only changed files."""
+the files are spread over the cores, since Earley needs several milliseconds per line. Earley's tree of a
+text is the one recorded in earley_digests.txt (a digest of every node and position, written by
+record_earley.py) when the fast tree has that digest; every text the record lacks, and one in 16 of those
+it holds (audited()), is parsed by Earley, and a recorded digest that is not Earley's fails. Earley's trees
+are kept in the build tree ($PAC_ORACLE_CACHE) so that a second run parses only changed files."""
 import concurrent.futures
 import glob
 import os
@@ -12,7 +15,7 @@ import re
 import sys
 import unittest
 
-from tree_oracle import REPO, Oracle
+from tree_oracle import RECORD, REPO, read_record, Oracle
 from pacst.fastparse import Decline  # noqa: E402 (tree_oracle puts the translator on the path)
 
 VERDICTS = os.path.join(REPO, "tests", "conformance", "matiec_verdicts", "snippets")
@@ -32,6 +35,21 @@ CORPORA = {
 }
 
 _ORACLE = None
+
+
+def audited(key):
+    """The recorded texts Earley parses all the same: those whose key starts with 0 (one in 16, a different
+    sample as the texts change), so that a record not written by Earley is found out."""
+    return key.startswith("0")
+
+
+def _oracle():
+    global _ORACLE
+    if _ORACLE is None:
+        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"), read_record(), audited)
+    return _ORACLE
+
+
 # A POU's body alone (statement_list), as TwinCAT files and PLCopen XML keep it: what follows the last
 # END_VAR up to the POU's end, in the conformance suite's accepted files.
 _BODY = re.compile(r"^END_VAR[ \t]*\n(?!.*^END_VAR)(.*)^END_(?:FUNCTION_BLOCK|FUNCTION|PROGRAM)\b", re.S | re.M)
@@ -44,21 +62,24 @@ _ELEMENT_RULES = {"FUNCTION_BLOCK": ("function_block_type_declaration", "END_FUN
 _FIRST_WORD = re.compile(r"^(FUNCTION_BLOCK|FUNCTION|PROGRAM|TYPE)\b", re.M)
 
 
-def _compare_file(path):
-    global _ORACLE
-    if _ORACLE is None:
-        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+def _body(path):
+    """(start rule, text) of the body alone of the file's POU, or None."""
     with open(path, encoding="utf-8") as f:
-        return path, _ORACLE.compare(f.read())
+        found = _BODY.search(f.read())
+    return ("statement_list", found.group(1)) if found and found.group(1).strip() else None
+
+
+def _compare_file(path):
+    """(path, verdict, whether Earley parsed it)."""
+    oracle = _oracle()
+    before = oracle.earley_parses
+    with open(path, encoding="utf-8") as f:
+        return path, oracle.compare(f.read()), oracle.earley_parses > before
 
 
 def _compare_body(path):
-    global _ORACLE
-    if _ORACLE is None:
-        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
-    with open(path, encoding="utf-8") as f:
-        found = _BODY.search(f.read())
-    return path, _ORACLE.compare(found.group(1), "statement_list") if found and found.group(1).strip() else None
+    found = _body(path)
+    return path, _oracle().compare(found[1], found[0]) if found else None
 
 
 def _declaration(path):
@@ -76,21 +97,43 @@ def _declaration(path):
 
 
 def _compare_declaration(path):
-    global _ORACLE
-    if _ORACLE is None:
-        _ORACLE = Oracle(os.environ.get("PAC_ORACLE_CACHE"))
     found = _declaration(path)
-    return path, _ORACLE.compare(found[1], found[0]) + (found[0],) if found else None
+    return path, _oracle().compare(found[1], found[0]) + (found[0],) if found else None
+
+
+def _body_paths():
+    return CORPORA["conformance accept"]
+
+
+def _declaration_paths():
+    return CORPORA["conformance accept"] + CORPORA["user programs"] + CORPORA["user dialect"]
+
+
+def corpus_texts():
+    """(start rule, source) of every text the tests below compare from the corpora's files: what
+    record_earley.py records."""
+    texts = []
+    for path in sorted({p for paths in CORPORA.values() for p in paths}):
+        with open(path, encoding="utf-8") as f:
+            texts.append(("iec_source", f.read()))
+    texts += [found for found in map(_body, _body_paths()) if found]
+    texts += [found for found in map(_declaration, _declaration_paths()) if found]
+    return texts
 
 
 def _compare_all(paths):
     jobs = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     if jobs <= 1:
-        return dict(map(_compare_file, paths))
-    with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
-        # Longest first, so that no worker is left with a long file at the end.
-        ordered = sorted(paths, key=os.path.getsize, reverse=True)
-        return dict(pool.map(_compare_file, ordered))
+        compared = list(map(_compare_file, paths))
+    else:
+        with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
+            # Longest first, so that no worker is left with a long file at the end.
+            ordered = sorted(paths, key=os.path.getsize, reverse=True)
+            compared = list(pool.map(_compare_file, ordered))
+    # A record that lacks many files costs Earley's time: record_earley.py writes it again.
+    print(f"{sum(parsed for _, _, parsed in compared)} of {len(compared)} files given to Earley (not in "
+          f"{os.path.basename(RECORD)}, audited, or another tree than recorded)", file=sys.stderr)
+    return {path: result for path, result, _ in compared}
 
 
 def _compare_bodies(paths, compare=_compare_body):
@@ -128,7 +171,7 @@ class Corpus(unittest.TestCase):
 
     def test_bodies_alone_equal_earleys(self):
         """The bodies the PLCopen and TwinCAT readers parse alone (pacst.parsing.parse_text)."""
-        results = _compare_bodies(CORPORA["conformance accept"])
+        results = _compare_bodies(_body_paths())
         self.assertGreater(len(results), 30)
         for path, (verdict, what) in results.items():
             with self.subTest(path=os.path.relpath(path, REPO)):
@@ -137,8 +180,7 @@ class Corpus(unittest.TestCase):
     def test_declarations_alone_equal_earleys(self):
         """The declarations the PLCopen and TwinCAT readers parse alone (pacst.parsing.parse_text), each
         from its POU's or type's rule, in the files of one element (a file of several is declined)."""
-        paths = CORPORA["conformance accept"] + CORPORA["user programs"] + CORPORA["user dialect"]
-        results = _compare_bodies(paths, _compare_declaration)
+        results = _compare_bodies(_declaration_paths(), _compare_declaration)
         for path, (verdict, what, _) in results.items():
             with self.subTest(path=os.path.relpath(path, REPO)):
                 self.assertNotEqual(verdict, "different", what)
@@ -148,7 +190,7 @@ class Corpus(unittest.TestCase):
     def test_the_librarys_declarations_take_the_fast_path(self):
         """Their trees are those of the whole files (the same readers, test_every_tree_equals_earleys) but
         for the empty body, which the test above compares with Earley's."""
-        oracle = Oracle()
+        oracle = _oracle()  # its fast parser alone
         declined, read = [], 0
         for path in CORPORA["library"]:
             found = _declaration(path)
@@ -166,7 +208,7 @@ class Corpus(unittest.TestCase):
         """The export's TwinCAT files carry `{attribute 'hide'}` before a type or a POU, and a program's own
         files pragmas anywhere: the fast parser skips them as blark's grammar ignores them, with Earley's tree;
         a pragma followed by `;` is declined (the `;` could end a statement too)."""
-        oracle = _ORACLE or Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+        oracle = _oracle()
         cases = {"data_type_declaration": "{attribute 'hide'}\nTYPE E_Hidden :\n(\n  A,  (* one *)\n  B\n);\nEND_TYPE\n",
                  "iec_source": "{attribute 'hide'}\nFUNCTION_BLOCK FB_Hidden\nVAR_INPUT\n  {attribute 'x'} A : BOOL;\n"
                                "END_VAR\nVAR\n  N : INT;\nEND_VAR\n{region}N := N + 1; {endregion}\nIF A THEN\n  N := 0;\n"
@@ -182,7 +224,7 @@ class Corpus(unittest.TestCase):
         dimensions, bounds that are expressions, arrays of arrays and of STRING, in every kind of variable block,
         VAR_EXTERNAL and VAR_GLOBAL, and in a STRUCT) as user programs and pac-test's TcUnit asserts write them,
         with Earley's tree. An empty FOR body and an array's initial value are declined."""
-        oracle = _ORACLE or Oracle(os.environ.get("PAC_ORACLE_CACHE"))
+        oracle = _oracle()
         # pac-test's TcUnit array asserts: one of each dimension (the others differ only in the element type).
         with open(os.path.join(REPO, "tools", "pactest", "tcunit", "AssertArrayEquals.st"), encoding="utf-8") as f:
             asserts = f.read()

@@ -1,6 +1,8 @@
 """The oracle of the fast parser: blark's Earley parser on the same text. Shared by the corpus and
-the generated-input tests (test_fast_parser_*.py)."""
+the generated-input tests (test_fast_parser_*.py), and by record_earley.py, which writes the record of
+Earley's trees the corpus test reads (earley_digests.txt)."""
 import hashlib
+import json
 import os
 import pickle
 import sys
@@ -76,6 +78,42 @@ def _from_plain(plain):
     return lark.Tree(data, [_from_plain(c) for c in children], meta)
 
 
+def tree_digest(tree):
+    """A digest of the whole tree as _plain keeps it: every rule, token type and value, every position.
+    Equal digests mean equal plain trees, which difference() finds no difference in."""
+    return hashlib.sha256(json.dumps(_plain(tree), separators=(",", ":")).encode("utf-8")).hexdigest()[:32]
+
+
+def text_key(text, start="iec_source"):
+    """The record's key of a processed text parsed from the rule `start`."""
+    return hashlib.sha256(f"{start}|{text}".encode("utf-8")).hexdigest()[:32]
+
+
+def record_grammar():
+    """What Earley's trees depend on: blark's grammar and the versions of blark and lark."""
+    h = hashlib.sha256(f"{blark.__version__}|{lark.__version__}|".encode())
+    with open(blark.GRAMMAR_FILENAME, "rb") as f:
+        h.update(f.read())
+    return h.hexdigest()[:32]
+
+
+RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "earley_digests.txt")
+
+
+def read_record(path=RECORD):
+    """{text key: digest of Earley's tree} of the record, or {} when it was written for another grammar or
+    other versions of blark and lark (every text is then parsed by Earley)."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            lines = f.read().splitlines()
+    except OSError:
+        return {}
+    entries = [line.split() for line in lines if line and not line.startswith("#")]
+    if not entries or entries[0] != ["grammar", record_grammar()]:
+        return {}
+    return dict(entries[1:])
+
+
 def _grammar_version():
     h = hashlib.sha256(f"{blark.__version__}|{lark.__version__}|{sys.version}|".encode())
     with open(blark.GRAMMAR_FILENAME, "rb") as f:
@@ -86,15 +124,23 @@ def _grammar_version():
 class Oracle:
     """Both parsers on blark's processed text of an ST source. With `cache_dir`, Earley's trees are
     kept there (the build tree, never the repository), keyed by the text and blark's grammar and
-    versions: a second run of the tests parses only what changed with Earley."""
+    versions: a second run of the tests parses only what changed with Earley. With `record` ({text key:
+    digest}, read_record()), a fast tree whose digest is the one recorded for its text is Earley's tree
+    without parsing the text again; a text the record lacks, or whose fast tree has another digest, is
+    parsed by Earley as without it. `audit(key)` True: that text is parsed by Earley even when recorded, and
+    a record that differs from Earley's tree is a failure (the record is not Earley's)."""
 
-    def __init__(self, cache_dir=None):
+    def __init__(self, cache_dir=None, record=None, audit=None):
         self.earley = new_parser()
         self.fast = FastParser(grammar_facts(self.earley))
         self._cache_dir = cache_dir
         self._grammar = _grammar_version() if cache_dir else None
+        self._record = record or {}
+        self._audit = audit or (lambda key: False)
+        self.earley_parses = 0  # texts given to Earley (or to the build tree's cache of its trees)
 
-    def _earley_tree(self, text, start="iec_source"):
+    def earley_tree(self, text, start="iec_source"):
+        self.earley_parses += 1
         if not self._cache_dir:
             return self.earley.parse(text, start=start)
         rule = "" if start == "iec_source" else f"{start}|"
@@ -128,9 +174,16 @@ class Oracle:
             fast = self.fast.parse(text, start)
         except Decline:
             return "declined", None
+        key = text_key(text, start) if self._record else None
+        recorded = self._record.get(key) if key else None
+        if recorded is not None and not self._audit(key) and tree_digest(fast) == recorded:
+            return "same", None
         try:
-            earley = self._earley_tree(text, start)
+            earley = self.earley_tree(text, start)
         except lark.exceptions.LarkError as exc:
             return "different", f"the fast parser accepted what Earley refuses: {exc}"
+        if recorded is not None and tree_digest(earley) != recorded:
+            return "different", (f"the record {os.path.basename(RECORD)} holds another tree than Earley's for "
+                                 f"this text (key {key}): write it again with record_earley.py")
         found = difference(fast, earley)
         return ("different", found) if found else ("same", None)

@@ -204,9 +204,14 @@ class Var:
 
 
 def find_var(variables, name):
-    """The variable called `name` (case-insensitive), or None."""
+    """The variable called `name` (case-insensitive), or None. A plain loop with both spellings made once: the
+    checks call it millions of times in a program's translation."""
     up = name.upper()
-    return next((v for v in variables if v.cname == up or v.cname == c_safe_name(up)), None)
+    safe = c_safe_name(up)
+    for v in variables:
+        if v.cname == up or v.cname == safe:
+            return v
+    return None
 
 
 # user mode: the C name of a variable or member named like a C keyword or macro (Register, EOF), which no ST name
