@@ -7,9 +7,10 @@
  * DynamicsChangeable, Timeout and StopTimeout (1..TMAX ms). Free too whether the FB is called in a scan (a CASE
  * step or an IF branch leaves it out: its pins and images then unchanged, and what it knows of the operating
  * status is what it saw when called; FB_PAC_Axis.md, "Calling contract"), and a PLC restart (the FB and its
- * module back to their cold-start values). With -DCBMC__STUTTER=1 the scans in which the PLC only waits are
- * compressed (stutter_ton.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same
- * run), and so are the scans the FB is left out of (nothing of it runs: up to CBMC__STRETCH_MAX more in one step);
+ * module back to their cold-start values). With -DCBMC__LONG_SKIPS=1 a step the FB is left out of stands for up to
+ * CBMC__STRETCH_MAX + 1 scans (nothing of it runs in them: the clock alone goes on); with -DCBMC__STUTTER=1 besides,
+ * the scans in which the PLC only waits are compressed (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX
+ * more in one step, S1 checked in the same run);
  * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well, long enough for the take-over on the
  * slowest bus of the suites. Properties "P<n>"/"A<n>", reachability checks "reach: ..." (which must FAIL), as
  * in cmd_harness.c. */
@@ -25,8 +26,11 @@
 #ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
 #define CBMC__PLC_RESTARTS 1
 #endif
-#ifndef CBMC__STUTTER /* the waiting scans and the scans left out compressed (stutter_ton.h) */
+#ifndef CBMC__STUTTER /* the waiting scans compressed, S1 checked (stutter_axis.h) */
 #define CBMC__STUTTER 0
+#endif
+#ifndef CBMC__LONG_SKIPS /* a step left out stands for 1 .. STRETCH_MAX + 1 scans left out (STUTTER: too) */
+#define CBMC__LONG_SKIPS CBMC__STUTTER
 #endif
 #ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more scans in one step (a power of 2 less 1) */
 #define CBMC__STRETCH_MAX 15
@@ -127,7 +131,7 @@ int main(void) {
     long edgeMs = -1000;      /* the clock at the job's Execute edge, where its wait began */
     int reachTimedOutAfterSkip = 0;
     BOOL skippedSinceEdge = FALSE;
-    /* The waiting scans and the scans left out (CBMC__STUTTER): the clock is n + stretched ms. */
+    /* The waiting scans and the scans left out (CBMC__LONG_SKIPS, CBMC__STUTTER): the clock is n + stretched ms. */
     long stretched = 0;
     static FB_PAC_AXIS before;    /* the FB before this scan's call */
     Inputs prevInputs = InputsOf(&axis); /* the inputs of the last scan the FB was called in */
@@ -161,8 +165,8 @@ int main(void) {
             if (axis.BUSY.value) reachSkippedBusy = 1;
             if (axis.BUSY.value) skippedWhileBusy = TRUE;
             if (axis.BUSY.value) skippedSinceEdge = TRUE;
-            /* With CBMC__STUTTER up to STRETCH_MAX more scans left out in this step: nothing runs in them. */
-            const unsigned d = CBMC__STUTTER ? (nondet_uchar() & CBMC__STRETCH_MAX) : 0;
+            /* With CBMC__LONG_SKIPS up to STRETCH_MAX more scans left out in this step: nothing runs in them. */
+            const unsigned d = CBMC__LONG_SKIPS ? (nondet_uchar() & CBMC__STRETCH_MAX) : 0;
             stretched += (long)d;
             skipRun = axis.BUSY.value ? skipRun + 1 + (int)d : 0;
             if (skipRun >= 2) longSkip = TRUE;
@@ -326,22 +330,29 @@ int main(void) {
     __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
     __CPROVER_assert(!reachRefusedNotOnline, "reach: a job refused outside ONLINE running (16#8025)");
     __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
-#if CBMC__K >= 6 || CBMC__STUTTER /* edge, Start, ACTIVE, its fall, and a scan left out between (a skip of 2 in one step) */
+#if CBMC__K >= 6 || CBMC__LONG_SKIPS /* edge, Start, ACTIVE, its fall, and a scan left out between (a skip of 2 in one step) */
     __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
 #else
     (void)reachDoneAfterSkip;
 #endif
     __CPROVER_assert(!reachTimedOutAfterSkip, "reach: 16#8006 for a job left out while it waited for the axis");
-    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart"); /* CBMC__PLC_RESTARTS=0 is for the replay only */
+#if CBMC__PLC_RESTARTS /* 0: the replay of counterexamples recorded before it, and the hand runs with STUTTER */
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
+#else
+    (void)reachPlcRestart;
+#endif
 #if CBMC__STUTTER
     __CPROVER_assert(!reachWaiting, "reach: a waiting scan after a still one");
     __CPROVER_assert(!reachStretch, "reach: a stretch of two waiting scans or more in one step");
+#else
+    (void)reachWaiting;
+    (void)reachStretch;
+#endif
+#if CBMC__LONG_SKIPS
     __CPROVER_assert(!reachLongSkip, "reach: the FB left out of two scans or more in a row while Busy");
     __CPROVER_assert(!reachSlowDone,
                      "reach: Done after a take-over 16 ms after Start, after a skip of two scans or more");
 #else
-    (void)reachWaiting;
-    (void)reachStretch;
     (void)reachLongSkip;
     (void)reachSlowDone;
 #endif
