@@ -26,22 +26,9 @@
 #ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
 #define CBMC__PLC_RESTARTS 1
 #endif
-#ifndef CBMC__STUTTER /* the waiting scans compressed, S1 checked (stutter_axis.h) */
-#define CBMC__STUTTER 0
-#endif
 #ifndef CBMC__LONG_SKIPS /* a step left out stands for 1 .. STRETCH_MAX + 1 scans left out (STUTTER: too) */
 #define CBMC__LONG_SKIPS CBMC__STUTTER
 #endif
-#ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more scans in one step (a power of 2 less 1) */
-#define CBMC__STRETCH_MAX 15
-#endif
-#ifndef CBMC__TSLOW /* 0: Timeout 1 .. TMAX ms only */
-#define CBMC__TSLOW 0
-#endif
-/* The slowest bus of the suites (tests/support/bus_timing.hpp: a 1 ms PLC cycle, a 10 ms controller cycle, 3 scans
- * of latency each way): ACTIVE answers a Start up to 3 + 9 + 3 scans after the scan that wrote it, read in the
- * scan after: 16 ms. */
-#define SLOW_TAKEOVER_MS 16
 
 /* The traverse bits of the control word (2.7.1): 3..7 and 12..15 the jobs, 10 and 11 the jogs. */
 #define TRAVERSE_BITS 0xFCF8u
@@ -140,7 +127,8 @@ int main(void) {
     BOOL longSkip = FALSE;        /* a skip of two scans or more since the job's edge */
     long startMs = -1000;         /* the clock when Start last rose on the wire */
     long takeoverMs = 0;          /* ... and when the FB first saw ACTIVE since */
-    int reachWaiting = 0, reachStretch = 0, reachLongSkip = 0, reachSlowDone = 0;
+    int reachLongSkip = 0, reachSlowDone = 0;
+    StutterReach stutterReach = {FALSE, FALSE};
 
     for (int n = 1; n <= CBMC__K; ++n) {
         __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
@@ -212,7 +200,7 @@ int main(void) {
             if (axis.BUSY.value && !takenOver) waitScans += (int)d;
             stretched += (long)d;
             __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
-            if (d >= 2) reachStretch = 1;
+            if (d >= 2) stutterReach.stretch = TRUE;
         }
         if (CBMC__STUTTER) before = axis;
         /* A job starts with an Execute edge or a jog button's edge. */
@@ -230,7 +218,7 @@ int main(void) {
             const BOOL still = noLimit && StillAxis(&before, &axis, nowNs - CYCLE_NS, nowNs);
             __CPROVER_assert(!(prevStill && noLimit) || still,
                              "S1 a waiting scan after a still one changes nothing but the TONs' counters");
-            if (prevStill && noLimit) reachWaiting = 1;
+            if (prevStill && noLimit) stutterReach.waiting = TRUE;
             prevStill = still;
         }
         const long nowMs = n + stretched;
@@ -335,18 +323,16 @@ int main(void) {
 #else
     (void)reachDoneAfterSkip;
 #endif
-    __CPROVER_assert(!reachTimedOutAfterSkip, "reach: 16#8006 for a job left out while it waited for the axis");
 #if CBMC__PLC_RESTARTS /* 0: the replay of counterexamples recorded before it, and the hand runs with STUTTER */
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
 #else
     (void)reachPlcRestart;
 #endif
+    __CPROVER_assert(!reachTimedOutAfterSkip, "reach: 16#8006 for a job left out while it waited for the axis");
 #if CBMC__STUTTER
-    __CPROVER_assert(!reachWaiting, "reach: a waiting scan after a still one");
-    __CPROVER_assert(!reachStretch, "reach: a stretch of two waiting scans or more in one step");
+    AssertStutterReached(&stutterReach);
 #else
-    (void)reachWaiting;
-    (void)reachStretch;
+    (void)stutterReach;
 #endif
 #if CBMC__LONG_SKIPS
     __CPROVER_assert(!reachLongSkip, "reach: the FB left out of two scans or more in a row while Busy");

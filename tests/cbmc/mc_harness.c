@@ -24,16 +24,6 @@
 #ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
 #define CBMC__PLC_RESTARTS 1
 #endif
-#ifndef CBMC__STUTTER /* the waiting scans compressed (stutter_axis.h) */
-#define CBMC__STUTTER 0
-#endif
-#ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more scans in one step (a power of 2 less 1) */
-#define CBMC__STRETCH_MAX 15
-#endif
-#ifndef CBMC__TSLOW /* 0: Timeout 1 .. TMAX ms only */
-#define CBMC__TSLOW 0
-#endif
-#define SLOW_TAKEOVER_MS 16 /* the slowest bus of the suites' take-over (axis_harness.c) */
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
 static unsigned long long tl_from_pac, tl_to_pac;
@@ -186,7 +176,8 @@ int main(void) {
     long stretched = 0;
     Inputs prevInputs;
     BOOL prevStill = FALSE;
-    int reachWaiting = 0, reachStretch = 0, reachSlowDone = 0;
+    int reachSlowDone = 0;
+    StutterReach stutterReach = {FALSE, FALSE};
     int moveSkipRun = 0;      /* scans in a row MC_MoveAbsolute has been left out while Busy */
     BOOL moveLongSkip = FALSE; /* a skip of two scans or more since its edge */
     long startMs = -1000, takeoverMs = 0; /* the clock when Start last rose, and when ACTIVE first showed since */
@@ -271,7 +262,7 @@ int main(void) {
             if (moveSkipRun > 0) moveSkipRun += (int)d;
             stretched += (long)d;
             __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
-            if (d >= 2) reachStretch = 1;
+            if (d >= 2) stutterReach.stretch = TRUE;
         }
         if (moveSkipRun >= 2) moveLongSkip = TRUE;
         if (CBMC__STUTTER) Snapshot(&before);
@@ -305,7 +296,7 @@ int main(void) {
             const BOOL still = noLimit && StillMc(nowNs - CYCLE_NS, nowNs);
             __CPROVER_assert(!(prevStill && noLimit) || still,
                              "S1 a waiting scan after a still one changes nothing but the TONs' counters");
-            if (prevStill && noLimit) reachWaiting = 1;
+            if (prevStill && noLimit) stutterReach.waiting = TRUE;
             prevStill = still;
         }
         /* The slowest bus's handshake: ACTIVE 16 ms or more after Start rose, MC_MoveAbsolute Done after it was
@@ -420,13 +411,11 @@ int main(void) {
     (void)reachPlcRestart;
 #endif
 #if CBMC__STUTTER
-    __CPROVER_assert(!reachWaiting, "reach: a waiting scan after a still one");
-    __CPROVER_assert(!reachStretch, "reach: a stretch of two waiting scans or more in one step");
+    AssertStutterReached(&stutterReach);
     __CPROVER_assert(!reachSlowDone,
                      "reach: MC_MoveAbsolute Done after a take-over 16 ms after Start, after a skip of two scans or more");
 #else
-    (void)reachWaiting;
-    (void)reachStretch;
+    (void)stutterReach;
     (void)reachSlowDone;
 #endif
     return 0;

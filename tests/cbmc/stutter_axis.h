@@ -6,6 +6,20 @@
 
 #include "stutter_ton.h"
 
+#ifndef CBMC__STUTTER /* the waiting scans compressed, S1 checked in the same run */
+#define CBMC__STUTTER 0
+#endif
+#ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more scans in one step (a power of 2 less 1) */
+#define CBMC__STRETCH_MAX 15
+#endif
+#ifndef CBMC__TSLOW /* 0: Timeout 1 .. TMAX ms only; else TSLOW .. TSLOW + TMAX - 1 ms as well */
+#define CBMC__TSLOW 0
+#endif
+/* The slowest bus of the suites (tests/support/bus_timing.hpp: a 1 ms PLC cycle, a 10 ms controller cycle, 3 scans
+ * of latency each way): ACTIVE answers a Start up to 3 + 9 + 3 scans after the scan that wrote it, read in the
+ * scan after: 16 ms. */
+#define SLOW_TAKEOVER_MS 16
+
 /* The FB's TONs (the S1 check fails on a TON left out here: its counters then differ). */
 #define AXIS_TONS 5
 static TON *AxisTons(FB_PAC_AXIS *a, int k) {

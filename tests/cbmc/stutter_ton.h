@@ -59,4 +59,14 @@ static void TonStretch(TON *t, long long stillNs, long long lastNs) {
     if (t->STATE.value == 1) t->ET.value = __time_make(0, lastNs - Ns(t->START_TIME.value));
 }
 
+/* The waiting scans' reachability checks (S1 is not vacuous, a stretch is taken), for -DCBMC__STUTTER=1 runs. */
+typedef struct {
+    BOOL waiting; /* S1 was asserted: a waiting scan after a still one */
+    BOOL stretch; /* a stretch of two scans or more was taken */
+} StutterReach;
+static void AssertStutterReached(const StutterReach *r) {
+    __CPROVER_assert(!r->waiting, "reach: a waiting scan after a still one");
+    __CPROVER_assert(!r->stretch, "reach: a stretch of two waiting scans or more in one step");
+}
+
 #endif
