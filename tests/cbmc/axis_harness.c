@@ -318,7 +318,7 @@ int main(void) {
     __CPROVER_assert(!reachAbortEnded, "reach: a job ended by Abort");
     __CPROVER_assert(!reachRefusedNotOnline, "reach: a job refused outside ONLINE running (16#8025)");
     __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
-#if CBMC__K >= 6 || CBMC__LONG_SKIPS /* edge, Start, ACTIVE, its fall, and a scan left out between (a skip of 2 in one step) */
+#if CBMC__K >= 6 || CBMC__LONG_SKIPS /* edge, Start, ACTIVE, its fall, a scan left out between (or a long skip) */
     __CPROVER_assert(!reachDoneAfterSkip, "reach: Done after a scan left out while Busy");
 #else
     (void)reachDoneAfterSkip;

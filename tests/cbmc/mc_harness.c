@@ -250,7 +250,8 @@ int main(void) {
         prevInputs = inputs;
         if (CBMC__STUTTER && waiting && prevStill) {
             const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
-            const long long stillNs = (long long)(n - 1 + stretched) * CYCLE_NS, lastNs = stillNs + (long long)d * CYCLE_NS;
+            const long long stillNs = (long long)(n - 1 + stretched) * CYCLE_NS;
+            const long long lastNs = stillNs + (long long)d * CYCLE_NS;
             AxisStretch(&mcAxis.MODULE, d, stillNs);
             TonStretch(&mcAxis.HALTTIMER, stillNs, lastNs);
             TonStretch(&reset.RESETTIMER, stillNs, lastNs);
@@ -412,8 +413,8 @@ int main(void) {
 #endif
 #if CBMC__STUTTER
     AssertStutterReached(&stutterReach);
-    __CPROVER_assert(!reachSlowDone,
-                     "reach: MC_MoveAbsolute Done after a take-over 16 ms after Start, after a skip of two scans or more");
+    __CPROVER_assert(!reachSlowDone, "reach: MC_MoveAbsolute Done after a take-over 16 ms after Start, after a skip "
+                                     "of two scans or more");
 #else
     (void)stutterReach;
     (void)reachSlowDone;
