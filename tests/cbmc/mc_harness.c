@@ -6,11 +6,14 @@
  * MC_blocks.md), their Execute, and the order in which they are called (as listed or the reverse, so every two
  * of them edged in one scan meet in either order; FB_PAC_McAxis last); per run IntegerMode, Timeout and
  * StopTimeout (1..TMAX ms). Free too a PLC restart: every block, FB_PAC_McAxis and the axis reference back to
- * their cold-start values.
+ * their cold-start values. With -DCBMC__STUTTER=1 the scans in which the PLC only waits are compressed
+ * (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same run);
+ * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
 #include "harness.h"
+#include "stutter_axis.h"
 
 #ifndef CBMC__K
 #define CBMC__K 4
@@ -47,6 +50,54 @@ static MC_MOVEABSOLUTE moveFresh;
 static MC_HALT haltFresh;
 static MC_RESET resetFresh;
 static FB_PAC_MCAXIS mcAxisFresh;
+
+/* Everything the harness runs, for the waiting scans (stutter_axis.h): the state before a scan's calls, and a
+ * copy after them with the counters set to the state before's. */
+typedef struct {
+    ST_PAC_AXISREF ref;
+    MC_POWER power;
+    MC_STOP stop;
+    MC_MOVEABSOLUTE move;
+    MC_HALT halt;
+    MC_RESET reset;
+    FB_PAC_MCAXIS mcAxis;
+} McState;
+static McState before, normalised;
+static void Snapshot(McState *s) {
+    s->ref = ref;
+    s->power = power;
+    s->stop = stop;
+    s->move = move;
+    s->halt = halt;
+    s->reset = reset;
+    s->mcAxis = mcAxis;
+}
+/* What the program and the controller hand the blocks in a scan: a waiting scan's are those of the scan before. */
+typedef struct {
+    BYTE fromPac[8], opStatus;
+    BOOL modeChange, enable, stopFirst, called[4], execute[4];
+} Inputs;
+static BOOL SameInputs(const Inputs *a, const Inputs *b) {
+    BOOL same = a->opStatus == b->opStatus && a->modeChange == b->modeChange && a->enable == b->enable
+                && a->stopFirst == b->stopFirst;
+    for (int i = 0; i < 8; ++i) same = same && a->fromPac[i] == b->fromPac[i];
+    for (int i = 0; i < 4; ++i) same = same && a->called[i] == b->called[i] && a->execute[i] == b->execute[i];
+    return same;
+}
+/* Still: every instance after the scan (at nowNs) as before it (at beforeNs), but for the counters of the TONs
+ * (FB_PAC_Axis's, FB_PAC_McAxis's HaltTimer, MC_Reset's ResetTimer) and the take-over's AnswerTime. */
+static BOOL StillMc(long long beforeNs, long long nowNs) {
+    Snapshot(&normalised);
+    BOOL along = AxisCountersAlong(&before.mcAxis.MODULE, &normalised.mcAxis.MODULE, beforeNs, nowNs);
+    along = TonCountersAlong(&before.mcAxis.HALTTIMER, &normalised.mcAxis.HALTTIMER, beforeNs, nowNs) && along;
+    along = TonCountersAlong(&before.reset.RESETTIMER, &normalised.reset.RESETTIMER, beforeNs, nowNs) && along;
+    return along && SameWords(&normalised, &before, sizeof normalised);
+}
+static BOOL McNoLimitPasses(void) {
+    return AxisNoLimitPasses(&before.mcAxis.MODULE, &mcAxis.MODULE)
+           && before.mcAxis.HALTTIMER.Q.value == mcAxis.HALTTIMER.Q.value
+           && before.reset.RESETTIMER.Q.value == reset.RESETTIMER.Q.value;
+}
 
 static BOOL stopCalled;
 static void CallStop(void) {
@@ -95,7 +146,9 @@ int main(void) {
     MC_HALT_init__(&halt, FALSE);
     MC_RESET_init__(&reset, FALSE);
     FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
-    const unsigned t = 1 + nondet_uchar() % CBMC__TMAX, st = 1 + nondet_uchar() % CBMC__TMAX;
+    unsigned t = 1 + nondet_uchar() % CBMC__TMAX;
+    const unsigned st = 1 + nondet_uchar() % CBMC__TMAX;
+    if (CBMC__TSLOW > 0 && nondet_bool()) t += CBMC__TSLOW - 1; /* the slowest bus's take-over fits */
     /* P8, the Busy bounds of MC_blocks.md: a halt or stop ends by StopTimeout after the scan FB_PAC_McAxis took
      * it (the scan of the edge here, the blocks called before it), shown one call later; MC_Reset by
      * 2 x Timeout after its edge scan. A move has no bound: it takes as long as the axis moves. */
@@ -119,9 +172,20 @@ int main(void) {
     resetFresh = reset;
     mcAxisFresh = mcAxis;
     const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
+    /* The waiting scans (CBMC__STUTTER): the clock is n + stretched ms. */
+    long stretched = 0;
+    Inputs prevInputs;
+    BOOL prevStill = FALSE;
+    int reachSlowDone = 0;
+    StutterReach stutterReach = {FALSE, FALSE};
+    int moveSkipRun = 0;      /* scans in a row MC_MoveAbsolute has been left out while Busy */
+    BOOL moveLongSkip = FALSE; /* a skip of two scans or more since its edge */
+    long startMs = -1000, takeoverMs = 0; /* the clock when Start last rose, and when ACTIVE first showed since */
+    BOOL activeSinceStart = FALSE;
 
     for (int n = 1; n <= CBMC__K; ++n) {
-        __CURRENT_TIME = __time_make(0, (long)n * CYCLE_NS);
+        __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
+        BOOL restarted = FALSE;
         /* A PLC cold start: every instance back to its initial values; what the harness knows starts anew. */
         if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
             ref = refFresh;
@@ -137,6 +201,10 @@ int main(void) {
             resetWatch = resetWatch0;
             stopHeld = lastWasStop = braking = FALSE;
             resetBusySeen = 0;
+            moveSkipRun = 0;
+            startMs = -1000;
+            activeSinceStart = FALSE;
+            restarted = TRUE;
             reachPlcRestart = 1;
         }
         for (int i = 0; i < 8; ++i) mcAxis.FROMPAC.value.table[i] = nondet_uchar();
@@ -160,6 +228,46 @@ int main(void) {
         const BOOL stopEdge = stop.EXECUTE.value && !stopBefore, moveEdge = move.EXECUTE.value && !moveBefore;
         const BOOL haltEdge = halt.EXECUTE.value && !haltBefore, resetEdge = reset.EXECUTE.value && !resetBefore;
         const BOOL stopFirst = nondet_bool();
+        moveSkipRun = (!moveCalled && move.BUSY.value) ? moveSkipRun + 1 : 0;
+        if (moveEdge) moveLongSkip = FALSE;
+        /* The waiting scan (stutter_axis.h): the inputs, the calls and their order those of the scan before. After
+         * a still scan, d more like it go in one step before this one. */
+        Inputs inputs;
+        for (int i = 0; i < 8; ++i) inputs.fromPac[i] = mcAxis.FROMPAC.value.table[i];
+        inputs.opStatus = mcAxis.OPSTATUS.value;
+        inputs.modeChange = mcAxis.MODECHANGE.value;
+        inputs.enable = power.ENABLE.value;
+        inputs.stopFirst = stopFirst;
+        inputs.called[0] = stopCalled;
+        inputs.called[1] = moveCalled;
+        inputs.called[2] = haltCalled;
+        inputs.called[3] = resetCalled;
+        inputs.execute[0] = stop.EXECUTE.value;
+        inputs.execute[1] = move.EXECUTE.value;
+        inputs.execute[2] = halt.EXECUTE.value;
+        inputs.execute[3] = reset.EXECUTE.value;
+        const BOOL waiting = CBMC__STUTTER && n > 1 && !restarted && SameInputs(&inputs, &prevInputs);
+        prevInputs = inputs;
+        if (CBMC__STUTTER && waiting && prevStill) {
+            const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
+            const long long stillNs = (long long)(n - 1 + stretched) * CYCLE_NS;
+            const long long lastNs = stillNs + (long long)d * CYCLE_NS;
+            AxisStretch(&mcAxis.MODULE, d, stillNs);
+            TonStretch(&mcAxis.HALTTIMER, stillNs, lastNs);
+            TonStretch(&reset.RESETTIMER, stillNs, lastNs);
+            /* P8 counts d more calls of each block called Busy in the still scan; a skip goes on through it. */
+            if (stopCalled && stop.BUSY.value) stopWatch.busyScans += (int)d;
+            if (moveCalled && move.BUSY.value) moveWatch.busyScans += (int)d;
+            if (haltCalled && halt.BUSY.value) haltWatch.busyScans += (int)d;
+            if (resetCalled && reset.BUSY.value) resetWatch.busyScans += (int)d;
+            if (moveSkipRun > 0) moveSkipRun += (int)d;
+            stretched += (long)d;
+            __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
+            if (d >= 2) stutterReach.stretch = TRUE;
+        }
+        if (moveSkipRun >= 2) moveLongSkip = TRUE;
+        if (CBMC__STUTTER) Snapshot(&before);
+        const BOOL startBefore = (mcAxis.TOPAC.value.table[3] & 0x04u) != 0;
         /* Held from an earlier scan: the stop's Execute is still TRUE in this one. */
         const BOOL heldBefore = stopHeld && stop.EXECUTE.value;
 
@@ -180,6 +288,28 @@ int main(void) {
         mcAxis.AXIS.value = ref;
         FB_PAC_MCAXIS_body__(&mcAxis);
         ref = mcAxis.AXIS.value;
+        const long nowMs = n + stretched;
+        if (CBMC__STUTTER) {
+            /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan
+             * after a still one (after a stretch too) is still, unless it passes a limit. */
+            const long long nowNs = (long long)nowMs * CYCLE_NS;
+            const BOOL noLimit = waiting && McNoLimitPasses();
+            const BOOL still = noLimit && StillMc(nowNs - CYCLE_NS, nowNs);
+            __CPROVER_assert(!(prevStill && noLimit) || still,
+                             "S1 a waiting scan after a still one changes nothing but the TONs' counters");
+            if (prevStill && noLimit) stutterReach.waiting = TRUE;
+            prevStill = still;
+        }
+        /* The slowest bus's handshake: ACTIVE 16 ms or more after Start rose, MC_MoveAbsolute Done after it was
+         * left out of two scans or more since its edge. */
+        if ((mcAxis.TOPAC.value.table[3] & 0x04u) != 0 && !startBefore) {
+            startMs = nowMs;
+            activeSinceStart = FALSE;
+        }
+        if (!activeSinceStart && mcAxis.MODULE.ACTIVE.value) takeoverMs = nowMs;
+        activeSinceStart = activeSinceStart || mcAxis.MODULE.ACTIVE.value;
+        if (move.DONE.value && activeSinceStart && takeoverMs - startMs >= SLOW_TAKEOVER_MS && moveLongSkip)
+            reachSlowDone = 1;
 
         tl_from_pac = Bytes8(mcAxis.FROMPAC.value.table);
         tl_op_status = mcAxis.OPSTATUS.value;
@@ -276,6 +406,18 @@ int main(void) {
     __CPROVER_assert(!reachHaltDone, "reach: MC_Halt Done");
     __CPROVER_assert(!reachResetDone, "reach: MC_Reset Done after Busy");
     __CPROVER_assert(!reachSkippedBusy, "reach: a block left out of a scan while Busy");
-    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart"); /* CBMC__PLC_RESTARTS=0 is for the replay only */
+#if CBMC__PLC_RESTARTS /* 0: the replay of counterexamples recorded before it, and the hand runs with STUTTER */
+    __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
+#else
+    (void)reachPlcRestart;
+#endif
+#if CBMC__STUTTER
+    AssertStutterReached(&stutterReach);
+    __CPROVER_assert(!reachSlowDone, "reach: MC_MoveAbsolute Done after a take-over 16 ms after Start, after a skip "
+                                     "of two scans or more");
+#else
+    (void)stutterReach;
+    (void)reachSlowDone;
+#endif
     return 0;
 }
