@@ -131,7 +131,6 @@ static BOOL StutterCmd(const FB_PAC_CMD *a, const FB_PAC_CMD *b, UDINT scan, BOO
     STUTTER_SAME(*a, *b, ID.value);
     STUTTER_SAME(*a, *b, TICKET.value);
     STUTTER_SAME(*a, *b, QUEUED.value);
-    STUTTER_SAME(*a, *b, TICKETOFFSET.value);
     STUTTER_SAME(*a, *b, ISSTOP.value);
     STUTTER_SAME(*a, *b, CANSEND.value);
     STUTTER_SAME(*a, *b, MINE.value);
@@ -141,11 +140,9 @@ static BOOL StutterCmd(const FB_PAC_CMD *a, const FB_PAC_CMD *b, UDINT scan, BOO
     STUTTER_SAME(*a, *b, RECORDED.value);
     STUTTER_SAME(*a, *b, NUMBER.value);
     STUTTER_SAME(*a, *b, SENDFLAG.value);
-    STUTTER_SAME(*a, *b, MODULESENDFLAG.value);
     STUTTER_SAME(*a, *b, SENTCODE.value);
     STUTTER_SAME(*a, *b, SENTPARAM.value);
     STUTTER_SAME(*a, *b, SENTDATA.value);
-    STUTTER_SAME(*a, *b, RECEIVEFLAG.value);
     STUTTER_SAME(*a, *b, EDGESCAN.value);
     /* LastScan follows Channel.Scan in a scan the FB is called, else stays. */
     STUTTER_CMP(b->LASTSCAN.value == a->LASTSCAN.value || b->LASTSCAN.value == scan,
