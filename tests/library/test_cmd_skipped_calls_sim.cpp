@@ -9,7 +9,9 @@
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
 // either FB left out (item 10), 0A41 in ONLINE leaving a running move its end (D23), a stop on its way through an
 // all-zero scan with its FB left out (item 7), and the command a stop overtook between its data and its toggle left
-// out (item 2). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left out the same way.
+// out (item 2). And a stop outside its mode: behind a move longer than its Timeout (16#8006, never sent), and 0A81
+// refused in AUTOMATIC (the controller's number). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left
+// out the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
