@@ -176,6 +176,15 @@ Command StartFarMove(TwoCallerPlc& plc, float fraction) {
     return move;
 }
 
+// ONLINE, then the `serial`th far move of FB 0 (StartFarMove), acknowledged and processing: the move's command.
+Command StartFarMoveInOnline(TwoCallerPlc& plc, std::uint32_t serial) {
+    EXPECT_TRUE(plc.GoOnline());
+    const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
+    EXPECT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
+        << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+    return move;
+}
+
 // FB_PAC_JogAxis for axis 1 (target 5000.0, `timeout`) on the channel in FB 0's place, for the jog tests.
 void PutJogInFb0sPlace(TwoCallerPlc& plc, pac::FbInstance<FB_PAC_JOGAXIS>& jog, std::chrono::milliseconds timeout) {
     plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
@@ -300,11 +309,8 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
                 SCOPED_TRACE((away == 1 ? "the 0A81's FB" : "the move's FB") + std::string(" left out for ") +
                              std::to_string(skip) + " scans from scan " + std::to_string(offset) +
                              " after the 0A81's edge");
-                ASSERT_TRUE(plc.GoOnline());
-                ++serial;
-                const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
-                ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
-                    << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+                const Command move = StartFarMoveInOnline(plc, ++serial);
+                if (HasFailure()) return;
                 plc.Set(1, abort);
                 plc.Fb(1)->EXECUTE.value = TRUE;
                 int n = 0;
@@ -404,11 +410,8 @@ TEST_P(CmdSkippedCalls, AStopOutsideItsModeBehindALongerMoveEndsNeverSentAtItsTi
             if (skip == 0 && from != 1) continue;
             SCOPED_TRACE("the 0A41's FB left out for " + std::to_string(skip) + " scans from scan " +
                          std::to_string(from) + " after its edge");
-            ASSERT_TRUE(plc.GoOnline());
-            ++serial;
-            const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
-            ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
-                << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+            const Command move = StartFarMoveInOnline(plc, ++serial);
+            if (HasFailure()) return;
             plc.Set(1, abortAuto);
             plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(timeout);
             plc.Fb(1)->EXECUTE.value = TRUE;
