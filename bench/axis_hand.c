@@ -274,7 +274,7 @@ static void Fields(uint8_t to[12], uint32_t word, uint16_t acceleration, uint16_
     HandPutDword(to + 8, position);
 }
 
-/* Where a job goes when it leaves IDLE (F_PAC_AxisAdmission). */
+/* A request's verdict at its edge (F_PAC_AxisAdmission). */
 static AxisHandState Admission(const AxisHand *a, const AxisHandJob *job, uint16_t *errorId) {
     *errorId = 0;
     if (a->opStatus == 0 || (a->ownsModule && !a->status.valid)) {
@@ -300,8 +300,7 @@ void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int
     const int64_t stopTimeout = a->stopTimeoutNs > 0 ? a->stopTimeoutNs : 10000 * MS;
     const int edge = a->execute && !a->executeBefore;
     const int abortRequest = a->abort || (a->enableBefore && !a->enable);
-    const int waitBegun = a->superseded;
-    int inOnline, startLow, superseded = 0, admitted = 0;
+    int inOnline, startLow, superseded = 0, accepted = 0;
     int64_t bound;
     Module(a, fromPac, &inOnline);
     bound = Takeover(a, (toPac[3] & 0x04) != 0, nowNs, &startLow);
@@ -309,19 +308,15 @@ void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int
     a->enableBefore = a->enable;
 
     if (edge) {
+        /* Admitted once, at its edge, on this scan's status; its wait counts from here. A running job ends,
+         * CommandAborted for one scan, and the new one takes the outputs over in the next. */
         Encode(a, &a->next);
+        a->verdict = Admission(a, &a->next, &a->verdictErrorId);
+        accepted = a->verdict == AXIS_HAND_WAIT_FREE;
         a->requestPending = 1;
         superseded = Busy(a->state);
-        if (superseded) {
-            /* The running job ends, CommandAborted for one scan; the new one is admitted on this scan's status
-             * and its wait counts from here (D24). */
-            uint16_t edgeError = 0;
-            a->state = AXIS_HAND_ABORTED;
-            (void)Admission(a, &a->next, &edgeError);
-            if (edgeError != 0) a->next.errorId = edgeError;
-        }
+        if (superseded) a->state = AXIS_HAND_ABORTED;
     }
-    a->superseded = superseded;
     if (!Busy(a->state) && a->state != AXIS_HAND_IDLE && !superseded && (!a->execute || a->requestPending)) {
         a->state = AXIS_HAND_IDLE;
         a->errorId = 0;
@@ -330,11 +325,11 @@ void AxisHandScan(AxisHand *a, uint8_t toPac[12], const uint8_t fromPac[12], int
         a->requestPending = 0;
         a->job = a->next;
         a->errorIsSystem = 0;
-        a->state = Admission(a, &a->job, &a->errorId);
-        admitted = a->state == AXIS_HAND_WAIT_FREE && !waitBegun;
+        a->state = a->verdict;
+        a->errorId = a->verdictErrorId;
     }
     if ((!a->status.valid || a->modeChange) && Busy(a->state)) a->state = AXIS_HAND_ABORTED;
-    Handshake(a, fromPac, admitted || superseded, abortRequest, abortRequest, bound, startLow,
+    Handshake(a, fromPac, accepted, abortRequest, abortRequest, bound, startLow,
               a->opStatus != 0 && a->opStatus != STATUS_ONLINE, timeout, stopTimeout, nowNs);
 
     a->busy = Busy(a->state);

@@ -76,8 +76,9 @@ typedef struct {
     /* the job */
     AxisHandState state;
     int executeBefore, enableBefore, requestPending, errorIsSystem;
-    int superseded; /* the last scan's edge superseded a running job: the new job's wait began there */
     AxisHandJob next, job, sent;
+    AxisHandState verdict; /* next's admission, taken once at its edge (FB_PAC_AxisRequest)... */
+    uint16_t verdictErrorId; /* ...and why it may not start */
     /* the handshake */
     AxisHandTimer stepTimer;
     int activeSeen, mayStandStill, stopIsAbort, startRaised, takenOver, cmdErrorSeenClear, leftOnline;

@@ -160,6 +160,8 @@ public:
     void LeaveOut(bool out) { leftOut_ = out; }
     // The next call is given operating status 0 (a blip: the CMD reply not valid in that scan).
     void BlankOpStatus() { blankOpStatus_ = true; }
+    // Outside the free program: Abort in the calls from now on.
+    void HoldAbort(bool abort) { abortLeft_ = abort ? 1 : 0; }
     pac::FbInstance<FB_PAC_AXIS>& Axis() { return axis_; }
     // ACTIVE in the axis module the program read in its last scan, whether it called the FB or not.
     bool ActiveOnBus() const { return activeOnBus_; }
@@ -657,8 +659,10 @@ TEST_P(AxisSkippedCalls, AResetPressedAgainAfterTheCauseIsGoneClearsTheError) {
 
 // A move runs at full speed; a new Execute edge with another job (`next`, with `timeout`) ends it: CommandAborted
 // in the edge scan, and the new job waits for the braking axis. `taken`: the controller's ledger size before the edge.
+// `blankAtEdge`: operating status 0 in the edge scan; `abortAtEdge`: Abort TRUE in the edge scan only.
 void SupersedeARunningMove(FreeAxisProgram& program, const AxisFreeCase& c, const Job& next,
-                           std::chrono::nanoseconds timeout, std::size_t& taken, bool blankAtEdge = false) {
+                           std::chrono::nanoseconds timeout, std::size_t& taken, bool blankAtEdge = false,
+                           bool abortAtEdge = false) {
     auto& axis = program.Axis();
     const Job first{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 70.0F};
     program.Drive(first, true);
@@ -671,7 +675,9 @@ void SupersedeARunningMove(FreeAxisProgram& program, const AxisFreeCase& c, cons
     taken = program.JobsTaken();
     program.Drive(next, true);
     if (blankAtEdge) program.BlankOpStatus();
+    program.HoldAbort(abortAtEdge);
     program.Scan();
+    program.HoldAbort(false);
     ASSERT_TRUE(axis->COMMANDABORTED.value && program.ActiveOnBus()) << "the first move, in the edge scan";
 }
 
@@ -780,6 +786,43 @@ TEST_P(AxisSkippedCalls, ASupersedingEdgeInAStatusZeroScanEndsNotReady) {
     ASSERT_FALSE(HasFatalFailure());
     program.Scan();
     ExpectEndedUnsent(program, GetParam(), next, taken, "PAC_LIB_ERR_NOT_READY");
+}
+
+// One admission at every edge (docs/fb/FB_PAC_Axis.md, "Calling contract"): Abort TRUE in the scan of an edge that
+// supersedes a running job refuses the new job as it refuses a job edged on an idle axis ("while TRUE ... none
+// starts"), whatever Abort is in the calls after. Abort FALSE from the next call on, the FB left out for 0 to 3
+// scans after the edge: in every call while Execute stays TRUE (the braking, a round trip, 50 ms more) the new job
+// shows CommandAborted and never Busy, and the controller takes no job after the edge; Execute falling, the output
+// ends in the next call. Before the fix the next call admitted the job and Start went out after the braking.
+TEST_P(AxisSkippedCalls, ASupersedingEdgeWithAbortInForceNeverStartsItsJob) {
+    for (int skip = 0; skip <= 3; ++skip) {
+        SCOPED_TRACE("left out for " + std::to_string(skip) + " scans after the edge");
+        FreeAxisProgram program(GetParam());
+        program.Prepare(false);
+        ASSERT_FALSE(HasFatalFailure());
+        auto& axis = program.Axis();
+        const Job next{E_PAC_AXISCOMMAND__PAC_AX_MOVE_ABSOLUTE, 40.0F + 0.0625F * static_cast<float>(skip)};
+        std::size_t taken = 0;
+        SupersedeARunningMove(program, GetParam(), next, 1s, taken, false, true);
+        ASSERT_FALSE(HasFatalFailure());
+        program.LeaveOut(true);
+        program.Scan(skip);
+        program.LeaveOut(false);
+        int calls = 0;
+        for (int n = 0; n < 20000 && (program.ActiveOnBus() || calls < GetParam().timing.ScansFor(50ms)); ++n) {
+            program.Scan();
+            ++calls;
+            EXPECT_TRUE(axis->COMMANDABORTED.value && !axis->BUSY.value && !axis->DONE.value && !axis->ERROR.value)
+                << "call " << calls << " after the skip: Busy " << int{axis->BUSY.value} << ", Error "
+                << int{axis->ERROR.value} << " (16#" << std::hex << axis->ERRORID.value << ")";
+            if (HasFailure()) break;
+        }
+        program.Scan(GetParam().timing.ScansFor(50ms));
+        EXPECT_EQ(program.JobsTaken(), taken) << "the controller took the refused job over";
+        program.Drive(next, false);
+        program.Scan();
+        EXPECT_FALSE(axis->COMMANDABORTED.value || axis->BUSY.value) << "Execute fell";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, AxisSkippedCalls,

@@ -9,7 +9,9 @@
 // still on its way, and a single all-zero scan while a move is on its way. And 0A81 overtaking a running move with
 // either FB left out (item 10), 0A41 in ONLINE leaving a running move its end (D23), a stop on its way through an
 // all-zero scan with its FB left out (item 7), and the command a stop overtook between its data and its toggle left
-// out (item 2). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left out the same way.
+// out (item 2). And a stop outside its mode: behind a move longer than its Timeout (16#8006, never sent), and 0A81
+// refused in AUTOMATIC (the controller's number). And the mode and axis-setting FBs built on FB_PAC_Cmd, each left
+// out the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -174,6 +176,15 @@ Command StartFarMove(TwoCallerPlc& plc, float fraction) {
     return move;
 }
 
+// ONLINE, then the `serial`th far move of FB 0 (StartFarMove), acknowledged and processing: the move's command.
+Command StartFarMoveInOnline(TwoCallerPlc& plc, std::uint32_t serial) {
+    EXPECT_TRUE(plc.GoOnline());
+    const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
+    EXPECT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
+        << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+    return move;
+}
+
 // FB_PAC_JogAxis for axis 1 (target 5000.0, `timeout`) on the channel in FB 0's place, for the jog tests.
 void PutJogInFb0sPlace(TwoCallerPlc& plc, pac::FbInstance<FB_PAC_JOGAXIS>& jog, std::chrono::milliseconds timeout) {
     plc.PutInFb0sPlace([&jog](ST_PAC_CMDCHANNEL& channel) {
@@ -298,11 +309,8 @@ TEST_P(CmdSkippedCalls, AnAbortOnlineOvertakesARunningMoveWhicheverFbIsLeftOut) 
                 SCOPED_TRACE((away == 1 ? "the 0A81's FB" : "the move's FB") + std::string(" left out for ") +
                              std::to_string(skip) + " scans from scan " + std::to_string(offset) +
                              " after the 0A81's edge");
-                ASSERT_TRUE(plc.GoOnline());
-                ++serial;
-                const Command move = StartFarMove(plc, 0.0625F * static_cast<float>(serial % 16));
-                ASSERT_TRUE(plc.Fb(0)->ACKNOWLEDGED.value && plc.Fb(0)->BUSY.value)
-                    << "the move processing: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+                const Command move = StartFarMoveInOnline(plc, ++serial);
+                if (HasFailure()) return;
                 plc.Set(1, abort);
                 plc.Fb(1)->EXECUTE.value = TRUE;
                 int n = 0;
@@ -379,6 +387,126 @@ TEST_P(CmdSkippedCalls, AnAbortAutoInOnlineNeverEndsARunningMove) {
     EXPECT_EQ(abortError, expected) << "the controller's number if it went out, else never sent";
     EXPECT_TRUE(plc.Fb(1)->DONE.value) << "the write: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
     EXPECT_EQ(writeTaken, 1) << "the write went out, once";
+}
+
+// A stop outside its mode behind a command that runs longer than the stop's Timeout (docs/fb/FB_PAC_Cmd.md, "The
+// stops", "The two timers"): 0A41 (cmd_abort_auto, 5.2.5.1: AUTOMATIC only) edged in ONLINE with a Timeout of
+// 100 ms while a 0A87 of thousands of units processes (seconds), its FB left out for 1 to 6 scans from the scan after
+// its edge or across the end of its Timeout, or called in every scan. It waits for the move's end like any command
+// (refused by the controller it would hide that end, 2.4), and the end does not come within its Timeout: it ends
+// with 16#8006 in the first call at or after its Timeout since its edge (the calling contract: a wait that ran out
+// meanwhile ends the command in the next call), Busy in every call before, and never sent; all the while the move's
+// FB stays Busy and axis 2 moves. Then a 0A81 on the same FB ends the move (16#8007) for the next case.
+TEST_P(CmdSkippedCalls, AStopOutsideItsModeBehindALongerMoveEndsNeverSentAtItsTimeout) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const auto timeout = 100ms;
+    const int timeoutScans = static_cast<int>(timeout / std::chrono::milliseconds(GetParam().sharing.timing.plcMs));
+    const Command abortAuto{code::kAbortAuto, 0, 0};
+    const Command abortOnline{code::kAbortOnline, 0, 0};
+    std::uint32_t serial = 0;
+    for (int skip = 0; skip <= 6; ++skip) {
+        for (const int from : {1, timeoutScans - 3}) {
+            if (skip == 0 && from != 1) continue;
+            SCOPED_TRACE("the 0A41's FB left out for " + std::to_string(skip) + " scans from scan " +
+                         std::to_string(from) + " after its edge");
+            const Command move = StartFarMoveInOnline(plc, ++serial);
+            if (HasFailure()) return;
+            plc.Set(1, abortAuto);
+            plc.Fb(1)->TIMEOUT.value = pac::ToIecTime(timeout);
+            plc.Fb(1)->EXECUTE.value = TRUE;
+            plc.Scan();
+            const auto edge = plc.Rig().Now();
+            ASSERT_TRUE(plc.Fb(1)->BUSY.value) << "the 0A41 waits behind the move";
+            int callsPastTimeout = 0;  // calls at or after the Timeout since the edge, the one that ends it too
+            int abortTaken = 0;
+            int moveTaken = 0;
+            int n = 1;
+            for (; n < 20000 && !plc.Final(1); ++n) {
+                const bool called = n < from || n >= from + skip;
+                plc.Call(1, called);
+                plc.Scan();
+                if (called && plc.Rig().Now() - edge >= timeout) ++callsPastTimeout;
+                const auto taken = plc.Taken();
+                abortTaken += Count(taken, abortAuto);
+                moveTaken += Count(taken, move);
+                ASSERT_TRUE(plc.Fb(0)->BUSY.value && plc.Rig().Controller().Axes().Motion(2).Moving())
+                    << "the move ended, scan " << n << ": ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+            }
+            plc.Call(1, true);
+            ASSERT_TRUE(plc.Final(1)) << "Busy after " << n << " scans";
+            EXPECT_TRUE(plc.Fb(1)->ERROR.value);
+            EXPECT_EQ(plc.Fb(1)->ERRORID.value, kGvl["PAC_LIB_ERR_INTERFACE_BUSY"]);
+            EXPECT_EQ(abortTaken, 0) << "the controller took the 0A41";
+            EXPECT_GE(plc.Rig().Now() - edge, timeout) << "ended before its Timeout";
+            EXPECT_EQ(callsPastTimeout, 1) << "not in the first call at or after its Timeout";
+            plc.Fb(1)->EXECUTE.value = FALSE;
+            plc.Scan();
+            ASSERT_TRUE(plc.RunAlone(1, abortOnline)) << "the 0A81: ErrorID 16#" << std::hex << plc.Fb(1)->ERRORID.value;
+            EXPECT_EQ(plc.Fb(0)->ERRORID.value, kGvl["PAC_LIB_ERR_SUPERSEDED"]) << "the move stopped by the 0A81";
+            EXPECT_EQ(moveTaken + Count(plc.Taken(), move), 1) << "the controller took the move once";
+            plc.ReleaseBoth();
+            if (HasFailure()) return;
+        }
+    }
+}
+
+// A stop refused outside its mode (docs/fb/FB_PAC_Cmd.md, "The stops"): 0A81 (cmd_abort_online, 5.2.6.1: ONLINE
+// only) edged 1 to 2 round trips after a 0602 (cmd_start_auto, 5.2.1) from HOME POSITION, while the start is on its
+// way, processing or over, its FB left out for 0, 1, 3 or 6 scans from the scan after its edge. Over the processing
+// start it is not admitted (a refusal would hide the start's end), so it waits for that end; then it goes out, and
+// the controller refuses it: its command error number (6.5) passes through unchanged, never a library code, and it
+// is taken once. The start ends Done, never 16#8007 (a refused stop stops nothing), taken once, AUTOMATIC runs on,
+// and a 0A41 returns to HOME POSITION for the next case; or, with the two-step write, the stop took the interface
+// between the start's data and its SEND flag: 16#8016, the start never taken.
+TEST_P(CmdSkippedCalls, AnAbortOnlineInAutomaticEndsWithTheControllersRefusal) {
+    TwoCallerPlc plc(GetParam());
+    plc.Boot();
+    const auto& t = GetParam().sharing.timing;
+    const int roundTrip = 2 * (t.latency + 1) + CycleScans(GetParam()) + 1;  // scans from a module to its reply
+    const Command start{code::kStartAuto, 0, 0};
+    const Command abort{code::kAbortOnline, 0, 0};
+    for (const int skip : {0, 1, 3, 6}) {
+        for (int lag = 1; lag <= 2 * roundTrip; ++lag) {
+            SCOPED_TRACE("the 0A81 edged " + std::to_string(lag) + " scans after the 0602, its FB left out for " +
+                         std::to_string(skip) + " scans after its edge");
+            ASSERT_EQ(plc.Rig().Controller().OperatingStatus(), pac::sim::status::kHome);
+            plc.Taken();
+            plc.Set(0, start);
+            plc.Set(1, abort);
+            plc.Fb(0)->EXECUTE.value = TRUE;
+            int n = 0;
+            for (; n < 20000 && !(plc.Final(0) && plc.Final(1)); ++n) {
+                if (n == lag) plc.Fb(1)->EXECUTE.value = TRUE;
+                plc.Call(1, n <= lag || n > lag + skip);
+                plc.Scan();
+            }
+            plc.Call(1, true);
+            ASSERT_TRUE(plc.Final(0) && plc.Final(1)) << "Busy after " << n << " scans";
+            const auto taken = plc.Taken();
+            EXPECT_TRUE(plc.Fb(1)->ERROR.value);
+            EXPECT_EQ(plc.Fb(1)->ERRORID.value, pac::sim::error::kInadmissibleCommand) << "the controller's number";
+            EXPECT_EQ(plc.Fb(1)->ERRORSOURCE.value, E_PAC_ERRORSOURCE__PAC_ERRSRC_COMMAND);
+            EXPECT_EQ(Count(taken, abort), 1) << "the controller took the 0A81 once";
+            if (plc.Fb(0)->ERRORID.value == kGvl["PAC_LIB_ERR_OVERTAKEN"]) {
+                // The stop took the interface between the 0602's data and its SEND flag (two-step write): the 0602
+                // never went out ("A stop overtakes a command that is about to go out, too").
+                EXPECT_TRUE(GetParam().twoStepWrite) << "16#8016 with a one-step write";
+                EXPECT_EQ(Count(taken, start), 0) << "the controller took the 0602";
+                EXPECT_EQ(plc.Rig().Controller().OperatingStatus(), pac::sim::status::kHome);
+                plc.ReleaseBoth();
+                if (HasFailure()) return;
+                continue;
+            }
+            EXPECT_TRUE(plc.Fb(0)->DONE.value) << "the 0602: ErrorID 16#" << std::hex << plc.Fb(0)->ERRORID.value;
+            EXPECT_EQ(Count(taken, start), 1);
+            EXPECT_EQ(plc.Rig().Controller().OperatingStatus(), pac::sim::status::kAuto) << "AUTOMATIC runs on";
+            plc.ReleaseBoth();
+            ASSERT_TRUE(plc.RunAlone(1, {code::kAbortAuto, 0, 0})) << "the 0A41 back to HOME POSITION";
+            plc.Rig().Scan(2 * (t.latency + 1));
+            if (HasFailure()) return;
+        }
+    }
 }
 
 // Two-step write: FB 0's command and FB 1's mode stop 0600 (a command error in HOME POSITION, which does not
