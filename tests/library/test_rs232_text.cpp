@@ -22,6 +22,21 @@ T_PAC_RS232TEXT TextOf(const std::string& s) {
     return text;
 }
 
+// A seeded xorshift32: the same numbers on every platform; each test prints its seed with a failure.
+class XorShift {
+public:
+    explicit XorShift(std::uint32_t seed) : state_(seed) {}
+    std::uint32_t Next() {
+        state_ ^= state_ << 13;
+        state_ ^= state_ >> 17;
+        state_ ^= state_ << 5;
+        return state_;
+    }
+
+private:
+    std::uint32_t state_;
+};
+
 bool IsNumber(const std::string& s, bool allowFraction) {
     T_PAC_RS232TEXT text = TextOf(s);
     return F_PAC_RS232ISNUMBER(1, nullptr, 0, static_cast<INT>(s.size()), allowFraction, &text);
@@ -148,13 +163,8 @@ TEST(Rs232Reply, WholeFieldsTakeTheDintRangeExactly) {
 // random values just outside the range: the first come back exactly, the second are refused.
 TEST(Rs232Reply, RandomWholeNumbersComeBackExactly) {
     const std::uint32_t seed = 20261207;
-    std::uint32_t state = seed;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return state;
-    };
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
     T_PAC_RS232REPLY reply{};
     for (int i = 0; i < 20000; ++i) {
         const std::int64_t magnitude = (next() >> (next() % 32)) % 2147483649LL;
@@ -176,13 +186,8 @@ TEST(Rs232Reply, RandomWholeNumbersComeBackExactly) {
 // of 0.0 (F_PAC_RealToDword); digits past the ninth, leading zeros and a longer exponent change nothing.
 TEST(Rs232Reply, RealQParGivesTheRealBack) {
     const std::uint32_t seed = 20261208;
-    std::uint32_t state = seed;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return state;
-    };
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
     T_PAC_RS232REPLY reply{};
     auto bitsOf = [](float f) {
         std::uint32_t b;
@@ -254,13 +259,8 @@ TEST(Rs232Real, TheFewestDecimalsThatGiveTheRealBack) {
 // most nine decimals does and the REAL is refused.
 TEST(Rs232Real, ExactOrRefusedForRandomReals) {
     const std::uint32_t seed = 20261202;
-    std::uint32_t state = seed;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return state;
-    };
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
     int sent = 0;
     for (int i = 0; i < 20000; ++i) {
         // exponents 2^-40 .. 2^30, any mantissa and sign
