@@ -246,9 +246,9 @@ static void Receive(Frames *f, unsigned char byte, E_PAC_RS232CHECK rule) {
 }
 
 /* The init functions write the rings' and texts' bytes with 0 one by one (a loop per array): in the formula an
- * array of 301 writes, each one compared with every read at a free index. The bytes are 0 already (a static
- * instance); given them again as one zero constant, the same value, the loops' writes are unused and sliced
- * off. The rings of the inner FBs are their VAR_IN_OUT members, which the FBs reach by reference. */
+ * array built by 301 writes. The bytes are 0 already (a static instance); given them again as one zero constant,
+ * the same value, the loops' writes are unused and sliced off, and a PLC restart copies that constant. The rings
+ * of the inner FBs are their VAR_IN_OUT members, which the FBs reach by reference. */
 static void ZeroBytes(FB_PAC_RS232CMD *fb) {
     static const FB_PAC_RS232CMD zero; /* never written: every byte 0 */
     fb->TXBUFFER.value.BUFFER = zero.TXBUFFER.value.BUFFER;
