@@ -245,23 +245,6 @@ static void Receive(Frames *f, unsigned char byte, E_PAC_RS232CHECK rule) {
     }
 }
 
-/* The init functions write the rings' and texts' bytes with 0 one by one (a loop per array): in the formula an
- * array built by 301 writes. The bytes are 0 already (a static instance); given them again as one zero constant,
- * the same value, the loops' writes are unused and sliced off, and a PLC restart copies that constant. The rings
- * of the inner FBs are their VAR_IN_OUT members, which the FBs reach by reference. */
-static void ZeroBytes(FB_PAC_RS232CMD *fb) {
-    static const FB_PAC_RS232CMD zero; /* never written: every byte 0 */
-    fb->TXBUFFER.value.BUFFER = zero.TXBUFFER.value.BUFFER;
-    fb->RXBUFFER.value.BUFFER = zero.RXBUFFER.value.BUFFER;
-    fb->LINE.RXBUFFER.value.BUFFER = zero.LINE.RXBUFFER.value.BUFFER;
-    fb->LINE.RECEIVER.RXBUFFER.value.BUFFER = zero.LINE.RECEIVER.RXBUFFER.value.BUFFER;
-    fb->COMMANDTEXT.value = zero.COMMANDTEXT.value;
-    fb->RULES.TEXT.value = zero.RULES.TEXT.value;
-    fb->RULES.SAVEDTEXT.value = zero.RULES.SAVEDTEXT.value;
-    fb->LINE.REPLYTEXT.value = zero.LINE.REPLYTEXT.value;
-    fb->LINE.RECEIVER.TEXT.value = zero.LINE.RECEIVER.TEXT.value;
-}
-
 int main(void) {
     static FB_PAC_RS232CMD cmd, fresh;
     Controller ctrl = {0};
@@ -281,7 +264,6 @@ int main(void) {
     ctrl.entry = -1;
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_RS232CMD_init__(&fresh, FALSE);
-    ZeroBytes(&fresh);
     const int t = 1 + nondet_uchar() % CBMC__TMAX, e = 1 + nondet_uchar() % CBMC__TMAX, q = 1 + nondet_uchar() % CBMC__TMAX;
     fresh.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
     fresh.ENDTIMEOUT.value = __time_make(0, (long)e * CYCLE_NS);
