@@ -22,6 +22,21 @@ T_PAC_RS232TEXT TextOf(const std::string& s) {
     return text;
 }
 
+// A seeded xorshift32: the same numbers on every platform; each test prints its seed with a failure.
+class XorShift {
+public:
+    explicit XorShift(std::uint32_t seed) : state_(seed) {}
+    std::uint32_t Next() {
+        state_ ^= state_ << 13;
+        state_ ^= state_ >> 17;
+        state_ ^= state_ << 5;
+        return state_;
+    }
+
+private:
+    std::uint32_t state_;
+};
+
 bool IsNumber(const std::string& s, bool allowFraction) {
     T_PAC_RS232TEXT text = TextOf(s);
     return F_PAC_RS232ISNUMBER(1, nullptr, 0, static_cast<INT>(s.size()), allowFraction, &text);
@@ -110,6 +125,118 @@ TEST(Rs232Reply, AnyFieldOutOfItsFormRefusesTheWholeReply) {
     EXPECT_FALSE(Parse(std::string(65, '1'), reply)) << "longer than a frame's text";
 }
 
+// The whole fields (QUIT, BE, STATUS, ERROR, TYP_QUIT, and Q_PAR with TYP_QUIT 0) as itoa() writes them (3.1):
+// every DINT, with a sign and any number of leading zeros, and nothing outside the DINT range, also where the
+// digits of a value past it are those of a value in it plus a multiple of 2^32.
+TEST(Rs232Reply, WholeFieldsTakeTheDintRangeExactly) {
+    T_PAC_RS232REPLY reply{};
+    const struct {
+        const char* qpar;
+        std::int64_t value;
+    } whole[] = {{"2147483647", 2147483647}, {"-2147483648", -2147483648LL}, {"+2147483647", 2147483647},
+                 {"-0", 0}, {"+0", 0}, {"0000000000000000000000000000000000000042", 42},
+                 {"-0002147483648", -2147483648LL}, {"214748364", 214748364}, {"-214748365", -214748365}};
+    for (const auto& w : whole) {
+        ASSERT_TRUE(Parse(std::string("0;1;1;0;0;") + w.qpar, reply)) << w.qpar;
+        EXPECT_EQ(reply.DATA, static_cast<DWORD>(static_cast<std::int32_t>(w.value))) << w.qpar;
+    }
+    for (const char* qpar : {"2147483648", "-2147483649", "+2147483648", "4294967296", "4294967338", "-4294967338",
+                             "21474836470", "99999999999999999999", "0000000000000000000000000000002147483648"}) {
+        EXPECT_FALSE(Parse(std::string("0;1;1;0;0;") + qpar, reply)) << qpar;
+    }
+    ASSERT_TRUE(Parse("2147483647;1;0002147483647;2147483647;0;1", reply));
+    EXPECT_EQ(reply.QUIT, 2147483647);
+    EXPECT_EQ(reply.STATUS, 2147483647);
+    EXPECT_EQ(reply.PACERRORNUMBER, 2147483647);
+    // BE and TYP_QUIT are 0 or 1 in any spelling of the number; QUIT, STATUS and ERROR 0 to 2^31-1.
+    for (const char* s : {"0;01;1;0;00;1", "0;-0;1;0;0;1", "-0;1;1;0;0;1", "0;+1;1;0;0;1", "0;1;1;0;+1;1.5",
+                          "0;1;1;0;-0;1"}) {
+        EXPECT_TRUE(Parse(s, reply)) << s;
+    }
+    for (const char* s : {"2147483648;1;1;0;0;1", "0;1;4294967297;0;0;1", "0;1;1;4294967296;0;1",
+                          "0;4294967297;1;0;0;1", "0;1;1;0;4294967296;1", "0;-1;1;0;0;1"}) {
+        EXPECT_FALSE(Parse(s, reply)) << s;
+    }
+}
+
+// Seeded random DINTs of every magnitude, each written with a sign or none and 0 to 20 leading zeros, and
+// random values just outside the range: the first come back exactly, the second are refused.
+TEST(Rs232Reply, RandomWholeNumbersComeBackExactly) {
+    const std::uint32_t seed = 20261207;
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
+    T_PAC_RS232REPLY reply{};
+    for (int i = 0; i < 20000; ++i) {
+        const std::int64_t magnitude = (next() >> (next() % 32)) % 2147483649LL;
+        const bool negative = (next() & 1U) != 0 || magnitude == 2147483648LL;
+        const std::int64_t value = negative ? -magnitude : magnitude;
+        const std::string zeros(next() % 21, '0');
+        const char* sign = negative ? "-" : (next() & 1U) != 0 ? "+" : "";
+        const std::string qpar = sign + zeros + std::to_string(magnitude);
+        ASSERT_TRUE(Parse("0;1;1;0;0;" + qpar, reply)) << qpar << ", seed " << seed;
+        ASSERT_EQ(reply.DATA, static_cast<DWORD>(static_cast<std::int32_t>(value))) << qpar << ", seed " << seed;
+        const std::int64_t past = 1 + static_cast<std::int64_t>(next() % 1000000000U) * (1 + next() % 8);
+        const std::int64_t outside = negative ? -2147483648LL - past : 2147483647LL + past;
+        ASSERT_FALSE(Parse("0;1;1;0;0;" + std::to_string(outside), reply)) << outside << ", seed " << seed;
+    }
+}
+
+// A REAL's Q_PAR (TYP_QUIT 1) as ftoa() may write it: every finite REAL written with nine significant digits,
+// in fixed or exponent form, gives the REAL itself back (nine digits tell any two REALs apart), -0.0 the bits
+// of 0.0 (F_PAC_RealToDword); digits past the ninth, leading zeros and a longer exponent change nothing.
+TEST(Rs232Reply, RealQParGivesTheRealBack) {
+    const std::uint32_t seed = 20261208;
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
+    T_PAC_RS232REPLY reply{};
+    auto bitsOf = [](float f) {
+        std::uint32_t b;
+        std::memcpy(&b, &f, sizeof b);
+        return b;
+    };
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const std::uint32_t bits = next();
+        float value;
+        std::memcpy(&value, &bits, sizeof value);
+        if (!std::isfinite(value) || value == 0.0F) continue;
+        char text[64];
+        if (i % 2 == 0) {
+            std::snprintf(text, sizeof text, "%.8e", static_cast<double>(value));
+        } else {
+            std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+        }
+        const std::string s = std::string("0;1;1;0;1;") + text;
+        if (s.size() > 64) continue;
+        ASSERT_TRUE(Parse(s, reply)) << s << ", seed " << seed;
+        ASSERT_EQ(reply.DATA, bitsOf(value)) << s << ", seed " << seed;
+        ++checked;
+    }
+    EXPECT_GT(checked, 15000) << "seed " << seed;
+    for (const char* qpar : {"-0.0", "0", "-0", "0.000", "0E0", "0000.0000"}) {
+        ASSERT_TRUE(Parse(std::string("0;1;1;0;1;") + qpar, reply)) << qpar;
+        EXPECT_EQ(reply.DATA, 0u) << qpar;
+    }
+    const struct {
+        const char* qpar;
+        float value;
+    } same[] = {{"12.5", 12.5F}, {"0012.500000000000000000000000", 12.5F}, {"125E-1", 12.5F}, {"1.25e+001", 12.5F},
+                {"1255.000", 1255.0F}, {"-2634.750", -2634.75F}, {"123456789012", 123456789012.0F},
+                {"0.0000000000000000000000000000000000000000000014", 1.4e-45F}, {"1E-45", 1.4e-45F},
+                {"3.40282346E38", 3.40282347e38F}, {"16777217", 16777216.0F}, {"-7.125E+002", -712.5F},
+                {"123456789012345678901234567890", std::strtof("123456789012345678901234567890", nullptr)},
+                {"0.000000000000000000000000000000000000011754944", std::strtof("1.1754944E-38", nullptr)}};
+    for (const auto& x : same) {
+        const std::string s = std::string("0;1;1;0;1;") + x.qpar;
+        ASSERT_TRUE(Parse(s, reply)) << x.qpar;
+        EXPECT_EQ(reply.DATA, bitsOf(x.value)) << x.qpar;
+    }
+    for (const char* qpar : {"3.5E38", "-3.5E38", "1E39", "1E999", "1.5.2", "1E", "1E1234", ".",
+                             "1234567890123456789012345678901234567890"}) {
+        EXPECT_FALSE(Parse(std::string("0;1;1;0;1;") + qpar, reply)) << qpar;
+    }
+}
+
 // The fewest decimals (one at least, nine at most) whose number is the REAL itself: what the controller reads
 // (3.1: ftoa, then a float) is what Data held.
 TEST(Rs232Real, TheFewestDecimalsThatGiveTheRealBack) {
@@ -132,13 +259,8 @@ TEST(Rs232Real, TheFewestDecimalsThatGiveTheRealBack) {
 // most nine decimals does and the REAL is refused.
 TEST(Rs232Real, ExactOrRefusedForRandomReals) {
     const std::uint32_t seed = 20261202;
-    std::uint32_t state = seed;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return state;
-    };
+    XorShift random(seed);
+    auto next = [&random] { return random.Next(); };
     int sent = 0;
     for (int i = 0; i < 20000; ++i) {
         // exponents 2^-40 .. 2^30, any mantissa and sign
