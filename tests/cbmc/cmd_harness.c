@@ -264,6 +264,8 @@ int main(void) {
     const BOOL twoStep = CBMC__TWOSTEP < 0 ? nondet_bool() : CBMC__TWOSTEP != 0;
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
     int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
+    int reachInOrder = 0, reachOrderSwapped = 0;
+    BOOL prevBoth = FALSE; /* both callers called in the scan before */
     int reachBlipBusy = 0, reachWaiting = 0, reachStretch = 0;
     long stretched = 0; /* scans the stretches added: the clock is n + stretched ms */
     long edgeMs[CBMC__CALLERS];   /* the clock at a caller's last Execute edge */
@@ -377,7 +379,13 @@ int main(void) {
          * split every access in the body. With two callers the second is called before or after the first, the
          * first once in between: three calls to execute symbolically, not the four of two whole orders. */
         const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
-        if (reversed) reachReversed = 1;
+        /* Both orders, each with both callers called, and the order changed from one such scan to the next: the
+         * order is free in every scan, not chosen once per run. */
+        const BOOL both = CBMC__CALLERS > 1 && called[0] && called[CBMC__CALLERS - 1];
+        if (both && reversed) reachReversed = 1;
+        if (both && !reversed) reachInOrder = 1;
+        if (both && prevBoth && reversed != prevReversed) reachOrderSwapped = 1;
+        prevBoth = both;
         waiting = waiting && reversed == prevReversed;
         prevReversed = reversed;
 #if CBMC__CALLERS > 2
@@ -409,7 +417,7 @@ int main(void) {
             /* The slowest bus of the suites: its reply behind a module up to 15 scans old, so 16 ms or more
              * from the edge to Done, with a skip of two scans or more since the edge. */
             if (cmd[i].DONE.value && longSkip[i] && n + stretched - edgeMs[i] >= 16) reachSlowDone = 1;
-            if (i == 1 && cmd[i].DONE.value && !IsStop(cmd[i].CODE.value)) reachSecondDone = 1;
+            if (i == 1 && cmd[i].DONE.value && !IsStop(watch[i].code)) reachSecondDone = 1; /* the code latched at its edge */
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value == SUPERSEDED) reachSuperseded = 1;
@@ -471,11 +479,16 @@ int main(void) {
 #endif
 #if CBMC__CALLERS > 1
     __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
-    __CPROVER_assert(!reachReversed, "reach: the second caller called first");
+    __CPROVER_assert(!reachReversed, "reach: both callers called, the second first");
+    __CPROVER_assert(!reachInOrder, "reach: both callers called, the first first");
+    __CPROVER_assert(!reachOrderSwapped, "reach: the call order swapped between two scans that call both");
     __CPROVER_assert(!reachSecondDone, "reach: the second caller Done with a command other than a stop");
 #else
     (void)reachSuperseded;
     (void)reachReversed;
+    (void)reachInOrder;
+    (void)reachOrderSwapped;
+    (void)prevBoth;
     (void)reachSecondDone;
 #endif
     return 0;
