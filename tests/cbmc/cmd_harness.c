@@ -435,7 +435,8 @@ int main(void) {
             /* The slowest bus of the suites: its reply behind a module up to 15 scans old, so 16 ms or more
              * from the edge to Done, with a skip of two scans or more since the edge. */
             if (cmd[i].DONE.value && longSkip[i] && n + stretched - edgeMs[i] >= 16) reachSlowDone = 1;
-            if (i == 1 && cmd[i].DONE.value && !IsStop(watch[i].code)) reachSecondDone = 1; /* the code latched at its edge */
+            /* The second caller's ordinary command: the code latched at its edge, not the pin as changed since. */
+            if (i == 1 && cmd[i].DONE.value && !IsStop(watch[i].code)) reachSecondDone = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value == SUPERSEDED) reachSuperseded = 1;
