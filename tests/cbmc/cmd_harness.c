@@ -255,6 +255,15 @@ static void CallCmd(FB_PAC_CMD *fb, FB_PAC_CMDINTERFACE *iface) {
 #endif
 }
 
+#if CBMC__CALLERS > 1
+/* Two command FBs trade places: their whole state, pins and all (the free call order below). */
+static void SwapCallers(FB_PAC_CMD *a, FB_PAC_CMD *b) {
+    const FB_PAC_CMD t = *a;
+    *a = *b;
+    *b = t;
+}
+#endif
+
 int main(void) {
     static FB_PAC_CMDINTERFACE iface, ifaceFresh;
     static FB_PAC_CMD cmd[CBMC__CALLERS], cmdFresh[CBMC__CALLERS];
@@ -264,6 +273,8 @@ int main(void) {
     const BOOL twoStep = CBMC__TWOSTEP < 0 ? nondet_bool() : CBMC__TWOSTEP != 0;
     int reachLibError = 0, reachPacError = 0, reachDone = 0, reachSuperseded = 0;
     int reachSkippedBusy = 0, reachReversed = 0, reachSecondDone = 0, reachDoneAfterSkip = 0, reachPlcRestart = 0;
+    int reachInOrder = 0, reachOrderSwapped = 0;
+    BOOL prevBoth = FALSE; /* both callers called in the scan before */
     int reachBlipBusy = 0, reachWaiting = 0, reachStretch = 0;
     long stretched = 0; /* scans the stretches added: the clock is n + stretched ms */
     long edgeMs[CBMC__CALLERS];   /* the clock at a caller's last Execute edge */
@@ -374,18 +385,33 @@ int main(void) {
         }
         FB_PAC_CMDINTERFACE_body__(&iface);
         /* The call order anew in every scan. Each call with a constant index: a pointer to cmd[symbolic] would
-         * split every access in the body. With two callers the second is called before or after the first, the
-         * first once in between: three calls to execute symbolically, not the four of two whole orders. */
+         * split every access in the body. */
         const BOOL reversed = CBMC__CALLERS > 1 && nondet_bool();
-        if (reversed) reachReversed = 1;
+        /* Both orders, each with both callers called, and the order changed from one such scan to the next: the
+         * order is free in every scan, not chosen once per run. */
+        const BOOL both = CBMC__CALLERS > 1 && called[0] && called[CBMC__CALLERS - 1];
+        if (both && reversed) reachReversed = 1;
+        if (both && !reversed) reachInOrder = 1;
+        if (both && prevBoth && reversed != prevReversed) reachOrderSwapped = 1;
+        prevBoth = both;
         waiting = waiting && reversed == prevReversed;
         prevReversed = reversed;
 #if CBMC__CALLERS > 2
 #error "the free call order is written for one or two callers"
 #endif
-        if (CBMC__CALLERS > 1 && reversed && called[CBMC__CALLERS - 1]) CallCmd(&cmd[CBMC__CALLERS - 1], &iface);
+#if CBMC__CALLERS > 1
+        /* Two calls, not three (the second before the first, the first, the second after it): in the reversed
+         * order the two instances trade places (an FB's body reads nothing but its instance and the channel)
+         * for the two calls in the fixed order, and trade back. A swap is one choice per field, cheaper than a
+         * third body to execute symbolically (docs/verification.md, "two callers on the slowest bus"). */
+        const BOOL firstSlot = reversed ? called[1] : called[0], secondSlot = reversed ? called[0] : called[1];
+        if (reversed) SwapCallers(&cmd[0], &cmd[1]);
+        if (firstSlot) CallCmd(&cmd[0], &iface);
+        if (secondSlot) CallCmd(&cmd[1], &iface);
+        if (reversed) SwapCallers(&cmd[0], &cmd[1]);
+#else
         if (called[0]) CallCmd(&cmd[0], &iface);
-        if (CBMC__CALLERS > 1 && !reversed && called[CBMC__CALLERS - 1]) CallCmd(&cmd[CBMC__CALLERS - 1], &iface);
+#endif
         if (CBMC__STUTTER) {
             /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan
              * after a still one (after a stretch too) is still, unless it passes a limit. */
@@ -409,7 +435,8 @@ int main(void) {
             /* The slowest bus of the suites: its reply behind a module up to 15 scans old, so 16 ms or more
              * from the edge to Done, with a skip of two scans or more since the edge. */
             if (cmd[i].DONE.value && longSkip[i] && n + stretched - edgeMs[i] >= 16) reachSlowDone = 1;
-            if (i == 1 && cmd[i].DONE.value && !IsStop(cmd[i].CODE.value)) reachSecondDone = 1;
+            /* The second caller's ordinary command: the code latched at its edge, not the pin as changed since. */
+            if (i == 1 && cmd[i].DONE.value && !IsStop(watch[i].code)) reachSecondDone = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value >= 0x8000) reachLibError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value < 0x8000) reachPacError = 1;
             if (cmd[i].ERROR.value && cmd[i].ERRORID.value == SUPERSEDED) reachSuperseded = 1;
@@ -471,11 +498,16 @@ int main(void) {
 #endif
 #if CBMC__CALLERS > 1
     __CPROVER_assert(!reachSuperseded, "reach: a command superseded by a stop (16#8007)");
-    __CPROVER_assert(!reachReversed, "reach: the second caller called first");
+    __CPROVER_assert(!reachReversed, "reach: both callers called, the second first");
+    __CPROVER_assert(!reachInOrder, "reach: both callers called, the first first");
+    __CPROVER_assert(!reachOrderSwapped, "reach: the call order swapped between two scans that call both");
     __CPROVER_assert(!reachSecondDone, "reach: the second caller Done with a command other than a stop");
 #else
     (void)reachSuperseded;
     (void)reachReversed;
+    (void)reachInOrder;
+    (void)reachOrderSwapped;
+    (void)prevBoth;
     (void)reachSecondDone;
 #endif
     return 0;
