@@ -90,6 +90,10 @@ TEST(Rs232Number, ValuesAreTheNearestDoubles) {
     EXPECT_EQ(ValueOf("1E23"), 1e23) << "10^22 is exact, times 10 rounds once";
     EXPECT_DOUBLE_EQ(ValueOf("1E-30"), 1e-30) << "divided by 10^22, then by 10^8";
     EXPECT_EQ(ValueOf("123456789012345"), 123456789012345.0) << "15 significant digits";
+    // A point or an exponent after the ninth significant digit: the digits gathered past the DINT go on in LREAL.
+    EXPECT_EQ(ValueOf("1234567890.5"), 1234567890.5) << "a point after the tenth digit";
+    EXPECT_EQ(ValueOf("-000123456789.25"), -123456789.25) << "leading zeros count for nothing";
+    EXPECT_EQ(ValueOf("123456789.5E1"), 1234567895.0) << "decimals and an exponent past the ninth digit";
 }
 
 // A reply's text (3.3): Q_PAR error number; BE; status; system error; data type; data. Whatever does not
