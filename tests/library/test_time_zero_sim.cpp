@@ -81,6 +81,38 @@ TEST(TimeZero, CmdEndTimeoutZeroIsSixtySeconds) {
     }
 }
 
+// EndTimeout is taken when the command takes the interface: FB_PAC_CmdInterface bounds the wait of an FB left
+// out with that value, so the FB called in every scan bounds it with the same, whatever the program writes to
+// the pin afterwards.
+TEST(TimeZero, CmdEndTimeoutIsTakenWithTheInterface) {
+    for (const BusTiming& t : Timings()) {
+        SCOPED_TRACE(Describe(t));
+        pac::PacRig plc(pac::test::RigTimingOf(t));
+        auto cmd = PAC_FB(FB_PAC_CMD);
+        plc.Call(cmd);
+        plc.Start();
+        plc.Scan(5 + 2 * t.latency + 3);
+        plc.Controller().Io().inputs.Set(7, true);
+        ASSERT_TRUE(RunCommand(plc, cmd, 0x0700, 4, 7));
+        ASSERT_TRUE(RunCommand(plc, cmd, 0x0603, 0, 0));
+        plc.Scan(3 + 2 * t.latency);
+        ASSERT_EQ(plc.Controller().OperatingStatus(), 31);
+        cmd->CODE.value = 0x0A87;
+        cmd->PARAM.value = 1;
+        cmd->DATA.value = pac::test::BitsOf(5000.0F);
+        cmd->ENDTIMEOUT.value = pac::ToIecTime(200ms);
+        cmd->EXECUTE.value = TRUE;
+        ASSERT_GT(plc.ScanUntil([&] { return cmd->ACKNOWLEDGED.value != 0; }, 10000), 0) << "the move runs";
+        plc.Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+        cmd->ENDTIMEOUT.value = pac::ToIecTime(5s);  // too late for this command: it took the interface
+        const nanoseconds waited = TimeToFinal(plc, cmd, 10s);
+        EXPECT_EQ(cmd->ERRORID.value, kLibEndTimeout);
+        // The wait began in the scan that saw the acknowledgement, the scan before this one.
+        EXPECT_LE(waited, 200ms + t.PlcCycle()) << waited.count() << " ns";
+        EXPECT_GE(waited, 200ms - t.PlcCycle()) << waited.count() << " ns";
+    }
+}
+
 TEST(TimeZero, CtrlTimeoutZeroIsTenSeconds) {
     for (const BusTiming& t : Timings()) {
         SCOPED_TRACE(Describe(t));
