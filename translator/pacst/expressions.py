@@ -1047,17 +1047,17 @@ class ExprCompiler:
                 raise self.err(value, f"{fn} of an integer literal needs a typed literal (WORD#16#FF)")
             te = TE(want, self.coerce(te, want, value))
         t = te.type
-        if self.comp.user and t.is_int and not t.is_signed:
-            # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width
+        if self.comp.user and t.is_int:
+            # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width; SHR
+            # on a signed one (FB_Array_List's SHR(THIS^._Count, 1)) fills with the sign bit, as CODESYS's help says
             self.comp.dialect(node, f"{fn} on {t.name}")
             bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
                 T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
+            if t.is_signed and fn == "SHR":
+                ncode = self.coerce(self.expr(count, T.INT), T.INT, count, "shift count")
+                return TE(t, f"__sar_{t.cname}({te.code}, (long){ncode})")
             shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
-        if not t.is_bit and self.comp.user and t.is_int:  # TwinCAT's manual leaves a signed shift's sign bits open
-            word = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}[t.bits]
-            raise self.err(value, f"{fn} on {t.name}: the manuals leave open how a signed integer shifts; convert it "
-                                  f"to the bit string of its width ({fn}({t.name}_TO_{word}(x), n))")
         if not t.is_bit:
             raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         return self._shift_code(node, fn, te, t, count, want, value)

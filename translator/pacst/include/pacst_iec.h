@@ -305,6 +305,14 @@ __PACST_SHIFT(BYTE, 8)
 __PACST_SHIFT(WORD, 16)
 __PACST_SHIFT(DWORD, 32)
 __PACST_SHIFT(LWORD, 64)
+/* SHR of a signed integer (user programs): the sign bit shifted in, as CODESYS describes SHR on signed types; a
+ * count of the width or more leaves the sign bits alone (-1 or 0). The complement keeps the C shift unsigned. */
+#define __PACST_SAR(T, W)                                                                                \
+    static inline T __sar_##T(T v, long n) { return v < 0 ? (T)~__shr_##W((W)~v, n) : (T)__shr_##W((W)v, n); }
+__PACST_SAR(SINT, BYTE)
+__PACST_SAR(INT, WORD)
+__PACST_SAR(DINT, DWORD)
+__PACST_SAR(LINT, LWORD)
 
 /* ABS for signed types (unsigned ones are their own ABS); MIN, MAX and LIMIT for every numeric and
  * bit-string type. */
