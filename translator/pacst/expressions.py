@@ -847,13 +847,17 @@ class ExprCompiler:
 
     def _string_conversion(self, node, src, dst):
         """User mode: an integer, bit string or BOOL to STRING, in decimal ('TRUE', 'FALSE'), as CODESYS,
-        TwinCAT and MATIEC write them; the other conversions with STRING are refused with the reason."""
+        TwinCAT and MATIEC write them, and a REAL as TwinCAT does; the other conversions with STRING are refused
+        with the reason."""
         name = f"{src}_TO_{dst}"
         if dst != "STRING":
             raise self.err(node, f"{name} is outside pacst's user programs: the tools parse a STRING differently")
-        if src in ("REAL", "LREAL"):
-            raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
-                                 f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
+        if src in ("REAL", "LREAL"):  # as TwinCAT writes them in TcUnit's messages: 1234.4, -23.0
+            (arg,) = self._positional(node, 1, ["IN"])
+            st = T.ELEMENTARY[src]
+            code = self.coerce(self.expr(arg, st), st, arg, "argument")
+            self.comp.dialect(node, name)
+            return TE(T.STRING, f"__pacst_real_to_string((double)({code}), {7 if src == 'REAL' else 16})")
         if src not in _CONVERTIBLE and src not in T.USER_ELEMENTARY:
             raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
                                  "are converted to STRING")

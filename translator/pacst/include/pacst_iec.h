@@ -150,6 +150,17 @@ static inline STRING __pacst_digits_to_string(unsigned long long u, int negative
 static inline STRING __pacst_int_to_string(long long v) {
     return __pacst_digits_to_string(v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v, v < 0);
 }
+/* User mode: REAL_TO_STRING (7 significant digits) and LREAL_TO_STRING (16), as TwinCAT writes them in TcUnit's
+ * messages: trailing zeros dropped, a whole number with ".0" (-23.0); an exponent as C writes it (1e+20). */
+static inline STRING __pacst_real_to_string(double v, int digits) {
+    char text[40];
+    int n = snprintf(text, sizeof text - 2, "%.*g", digits, v);
+    if (isfinite(v) && strpbrk(text, ".e") == NULL) {
+        text[n++] = '.';
+        text[n++] = '0';
+    }
+    return __pacst_string(text, n);
+}
 static inline STRING __pacst_str_limit(STRING s, long n) { return __pacst_str_part(s, 0, n); }
 static inline STRING __pacst_str_left(STRING s, long l) { return __pacst_str_part(s, 0, l); }
 static inline STRING __pacst_str_right(STRING s, long l) {
