@@ -1,8 +1,8 @@
 """User mode: TwinCAT's operators starting with `__` (docs/user_dialect.md).
 
 - `__SYSTEM.TYPE_CLASS`, the enumeration of the type classes (`__SYSTEM.TYPE_CLASS.TYPE_INT`), with the numbers
-  of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48) and base type UDINT, as TwinCAT
-  programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
+  of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48, TYPE_INTERFACE 16#F000) and base type
+  UDINT, as TwinCAT programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
   TypeClass). Both are declared in the program the first time a program names them. `IBaseLibrary.TypeClass` (the
   library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
 - A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
@@ -27,6 +27,9 @@ _TYPE_CLASSES = (
     "TYPE_USERDEF TYPE_NONE TYPE_ANY TYPE_ANYBIT TYPE_ANYDATE TYPE_ANYINT TYPE_ANYNUM TYPE_ANYREAL TYPE_LAZY "
     "TYPE_LTIME TYPE_BITCONST TYPE_UXINT TYPE_XWORD TYPE_XINT TYPE_XSTRING TYPE_VARLENARRAY TYPE_ANYSTRING "
     "TYPE_VECTOR TYPE_LDATE TYPE_LDATEANDTIME TYPE_LTIMEOFDAY").split()
+# and one value out of that order: TYPE_INTERFACE, which the library Base Interfaces keeps at 16#F000 for programs
+# of CODESYS 3.1 (TcUnit's F_AnyToUnionValue names it as a CASE label)
+_TYPE_CLASS_NUMBERS = list(range(len(_TYPE_CLASSES))) + [0xF000]
 TYPES = ("TYPE_CLASS", "ANYTYPE")
 
 
@@ -59,7 +62,7 @@ def system_type(comp, name, node):
     if t is not None:
         return t
     if up == "TYPE_CLASS":
-        t = T.EnumType(f"{NAMESPACE}.TYPE_CLASS", list(_TYPE_CLASSES), list(range(len(_TYPE_CLASSES))),
+        t = T.EnumType(f"{NAMESPACE}.TYPE_CLASS", list(_TYPE_CLASSES) + ["TYPE_INTERFACE"], _TYPE_CLASS_NUMBERS,
                        T.ELEMENTARY["UDINT"])
     else:
         t = T.StructType(f"{NAMESPACE}.AnyType")
