@@ -3,8 +3,8 @@
 - `__SYSTEM.TYPE_CLASS`, the enumeration of the type classes (`__SYSTEM.TYPE_CLASS.TYPE_INT`), with the numbers
   of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48, TYPE_INTERFACE 16#F000) and base type
   UDINT, as TwinCAT programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input
-  (pValue, diSize, TypeClass). Both are declared in the program the first time a program names them. `IBaseLibrary.TypeClass` (the
-  library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
+  (pValue, diSize, TypeClass). Both are declared in the program the first time a program names them.
+  `IBaseLibrary.TypeClass` (the library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
 - A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
   gives.
 - `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
