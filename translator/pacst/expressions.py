@@ -224,6 +224,14 @@ class ExprCompiler:
             t = b.type
         elif self.comp.user and b.type is not a.type and widens(a.type, b.type):
             t = b.type
+        elif self.comp.user and a.type.is_int and b.type.is_int and a.type.is_signed != b.type.is_signed \
+                and not widens(b.type, a.type):
+            # DINT * UDINT (F_Malloc_Generic's SIZEOF(T_Generic) * Count): in the smallest signed type that holds
+            # both, as TwinCAT computes at the register width; LINT with ULINT stays a mismatch
+            t = next((w for w in (T.ELEMENTARY["INT"], T.DINT, T.USER_ELEMENTARY.get("LINT"))
+                      if w is not None and widens(a.type, w) and widens(b.type, w)), a.type)
+            if t is not a.type:
+                self.comp.dialect(node, f"{a.type.name} and {b.type.name} in one operation")
         else:
             t = a.type
         # A mismatch is reported at the operand that does not fit (a binary operation has left/right).
