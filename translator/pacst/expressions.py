@@ -727,6 +727,8 @@ class ExprCompiler:
             if te.type.is_enum:
                 src = "DINT"
             self.comp.dialect(node, f"the generic conversion {up}")
+            if te.type.is_pointer and up == "TO_STRING":  # F_Generic_To_String: the address, as TwinCAT writes it
+                return TE(T.STRING, f"__pacst_digits_to_string((unsigned long long)(uintptr_t)({te.code}), 0)")
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
