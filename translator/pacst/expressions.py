@@ -861,7 +861,7 @@ class ExprCompiler:
         with the reason."""
         name = f"{src}_TO_{dst}"
         if dst != "STRING":
-            raise self.err(node, f"{name} is outside pacst's user programs: the tools parse a STRING differently")
+            return self._string_to_number(node, src, dst)
         if src in ("REAL", "LREAL"):  # as TwinCAT writes them in TcUnit's messages: 1234.4, -23.0
             (arg,) = self._positional(node, 1, ["IN"])
             st = T.ELEMENTARY[src]
@@ -880,6 +880,24 @@ class ExprCompiler:
         if st.is_bool:
             return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
         return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
+
+    def _string_to_number(self, node, src, dst):
+        """User mode: a STRING or WSTRING to a number or BOOL as TwinCAT's and CODESYS's help describe it: a literal
+        of the type after spaces, text after it ignored, text before it 0, an integer cut to its type's bits."""
+        name = f"{src}_TO_{dst}"
+        t = T.ELEMENTARY.get(dst) or T.USER_ELEMENTARY.get(dst)
+        if t is None or not (t.is_int or t.is_bit or t.is_real or t.is_bool):
+            raise self.err(node, f"{name} is outside pacst's user programs: a STRING is converted to the integers, "
+                                 "bit strings, REAL, LREAL and BOOL only")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.WSTRING if src == "WSTRING" else T.STRING
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, name)
+        if t.is_bool:
+            return TE(t, f"__pacst_string_to_bool({code})")
+        if t.is_real:
+            return TE(t, f"(({t.cname})__pacst_string_to_real({code}))")
+        return TE(t, f"(({t.cname})__pacst_string_to_bits({code}))")
 
     def _string_function(self, node, fn):
         """The standard string functions (user mode): positions count from 1, results keep at most the
@@ -959,6 +977,8 @@ class ExprCompiler:
             (arg,) = self._positional(node, 1, ["IN"])
             st, dt = (T.STRING, T.WSTRING) if src == "STRING" else (T.WSTRING, T.STRING)
             return TE(dt, self.coerce(self.expr(arg, st), st, arg, "argument"))
+        if self.comp.user and src == "WSTRING" and dst not in ("TIME", "LTIME"):  # WSTRING_TO_LREAL: as a STRING
+            return self._string_to_number(node, src, dst)
         if self.comp.user and "WSTRING" in (src, dst):
             raise self.err(node, f"{src}_TO_{dst} is outside pacst's user programs: of the WSTRING conversions, "
                                  "WSTRING_TO_STRING and STRING_TO_WSTRING are translated; convert through a STRING")

@@ -150,6 +150,64 @@ static inline STRING __pacst_digits_to_string(unsigned long long u, int negative
 static inline STRING __pacst_int_to_string(long long v) {
     return __pacst_digits_to_string(v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v, v < 0);
 }
+/* User mode: STRING_TO_<integer> as TwinCAT's and CODESYS's help describe it: spaces skipped, a sign, digits with
+ * '_' between them and a base (16#FF); text after the number ignored, text before it 0. The value wraps to 64 bits;
+ * the caller cuts it to its type (STRING_TO_BYTE('500') is 244). */
+static inline unsigned long long __pacst_string_to_bits(STRING s) {
+    unsigned long long v = 0ULL, base = 10ULL;
+    int i = 0, negative = 0, digits = 0;
+    while (i < s.len && s.body[i] == ' ') i++;
+    if (i < s.len && (s.body[i] == '+' || s.body[i] == '-')) negative = s.body[i++] == '-';
+    for (; i < s.len; i++) {
+        int c = s.body[i], d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                             : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+        if (c == '_' && digits > 0) continue;
+        if (c == '#' && base == 10ULL && digits > 0 && (v == 2ULL || v == 8ULL || v == 16ULL)) {
+            base = v;
+            v = 0ULL;
+            digits = 0;
+            continue;
+        }
+        if (d < 0 || (unsigned long long)d >= base) break;
+        v = v * base + (unsigned long long)d;
+        digits++;
+    }
+    return negative ? 0ULL - v : v;
+}
+/* STRING_TO_REAL and _LREAL: a REAL literal (digits with '_', a point, an exponent) after spaces and a sign; text
+ * after it ignored, text before it 0. Only those characters reach strtod, so its hex and "inf" forms never do. */
+static inline double __pacst_string_to_real(STRING s) {
+    char text[STR_MAX_LEN + 1];
+    int i = 0, n = 0, digits = 0;
+    while (i < s.len && s.body[i] == ' ') i++;
+    if (i < s.len && (s.body[i] == '+' || s.body[i] == '-')) text[n++] = (char)s.body[i++];
+    for (; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || (s.body[i] == '_' && digits)); i++)
+        if (s.body[i] != '_') text[n++] = (char)s.body[i], digits++;
+    if (i + 1 < s.len && s.body[i] == '.' && s.body[i + 1] >= '0' && s.body[i + 1] <= '9' && digits) {
+        text[n++] = '.';
+        for (i++; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || s.body[i] == '_'); i++)
+            if (s.body[i] != '_') text[n++] = (char)s.body[i];
+    }
+    if (digits && i + 1 < s.len && (s.body[i] == 'e' || s.body[i] == 'E')) {
+        int j = i + 1, m = n;
+        text[m++] = 'e';
+        if (s.body[j] == '+' || s.body[j] == '-') text[m++] = (char)s.body[j++];
+        if (j < s.len && s.body[j] >= '0' && s.body[j] <= '9') {
+            for (n = m; j < s.len && s.body[j] >= '0' && s.body[j] <= '9'; j++) text[n++] = (char)s.body[j];
+        }
+    }
+    text[n] = 0;
+    return digits ? strtod(text, NULL) : 0.0;
+}
+/* STRING_TO_BOOL: TRUE for "TRUE" in any case (after spaces) or a number not 0. */
+static inline BOOL __pacst_string_to_bool(STRING s) {
+    int i = 0, k;
+    static const char word[] = "TRUE";
+    while (i < s.len && s.body[i] == ' ') i++;
+    for (k = 0; k < 4 && i + k < s.len && (s.body[i + k] & 0xDF) == word[k]; k++) {
+    }
+    return k == 4 || __pacst_string_to_bits(s) != 0ULL;
+}
 /* User mode: REAL_TO_STRING (7 significant digits) and LREAL_TO_STRING (16), as TwinCAT writes them in TcUnit's
  * messages: trailing zeros dropped, a whole number with ".0" (-23.0); an exponent as C writes it (1e+20). */
 static inline STRING __pacst_real_to_string(double v, int digits) {
