@@ -727,8 +727,13 @@ class ExprCompiler:
             if te.type.is_enum:
                 src = "DINT"
             self.comp.dialect(node, f"the generic conversion {up}")
-            if te.type.is_pointer and up == "TO_STRING":  # F_Generic_To_String: the address, as TwinCAT writes it
-                return TE(T.STRING, f"__pacst_digits_to_string((unsigned long long)(uintptr_t)({te.code}), 0)")
+            if te.type.is_pointer:  # F_Generic_To_String, _To_LREAL: the address, a ULINT on TwinCAT's 64-bit targets
+                address = f"((ULINT)(uintptr_t)({te.code}))"
+                if up == "TO_STRING":
+                    return TE(T.STRING, f"__pacst_digits_to_string({address}, 0)")
+                dt = T.ELEMENTARY.get(m.group(1)) or T.USER_ELEMENTARY.get(m.group(1))
+                if dt is not None and (dt.is_int or dt.is_bit or dt.is_real or dt.is_bool):
+                    return _converted(T.USER_ELEMENTARY["ULINT"], dt, address)
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
