@@ -52,10 +52,13 @@ def widens(source, target):
     warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
     an unsigned integer to a bit string as wide or wider (UINT to WORD), a bit string to an integer that holds its
     values (BYTE to DINT, WORD to UDINT), any integer to REAL or LREAL, REAL
-    to LREAL, an enumeration to an integer (its number; TwinCAT's types without {attribute 'strict'})."""
-    if source.is_enum and target.is_int:  # its base type's (INT without one)
-        base = getattr(source, "base", None)
-        return base is target or widens(base, target) if base is not None and base.is_int else target.bits >= 16
+    to LREAL, an enumeration to an integer or a bit string (its number; TwinCAT's types without {attribute
+    'strict'})."""
+    if source.is_enum and (target.is_int or target.is_bit):  # its base type's (INT without one); a bit string as
+        base = getattr(source, "base", None)  # wide as that base (FB_ValueChangeDetector's TypeClass to a DWORD)
+        if base is not None and base.is_int:
+            return base is target or widens(base, target) or target.is_bit and target.bits >= base.bits
+        return target.bits >= 16
     if not (source.is_elementary and target.is_elementary) or source is target:
         return False
     if source.is_int and target.is_int:
