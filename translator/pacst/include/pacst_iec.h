@@ -175,12 +175,25 @@ static inline unsigned long long __pacst_string_to_bits(STRING s) {
     return negative ? 0ULL - v : v;
 }
 /* STRING_TO_REAL and _LREAL: a REAL literal (digits with '_', a point, an exponent) after spaces and a sign; text
- * after it ignored, text before it 0. Only those characters reach strtod, so its hex and "inf" forms never do. */
+ * after it ignored, text before it 0, but "#INF" and "#NAN" / "#QNAN" in any case infinity and NaN. Only those
+ * characters reach strtod, so its hex and "inf" forms never do. */
+/* Whether the upper-case `word` stands at s[i], in any case. */
+static inline int __pacst_string_word(STRING s, int i, const char *word) {
+    int k;
+    for (k = 0; word[k] != 0 && i + k < s.len; k++) {
+        int c = s.body[i + k];
+        if ((c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c) != word[k]) break;
+    }
+    return word[k] == 0;
+}
 static inline double __pacst_string_to_real(STRING s) {
     char text[STR_MAX_LEN + 1];
     int i = 0, n = 0, digits = 0;
     while (i < s.len && s.body[i] == ' ') i++;
     if (i < s.len && (s.body[i] == '+' || s.body[i] == '-')) text[n++] = (char)s.body[i++];
+    if (__pacst_string_word(s, i, "#INF")) /* as LREAL_TO_FMTSTR writes them (FsCommon's F_GetInf reads them) */
+        return n > 0 && text[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+    if (__pacst_string_word(s, i, "#NAN") || __pacst_string_word(s, i, "#QNAN")) return NAN;
     for (; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || (s.body[i] == '_' && digits)); i++)
         if (s.body[i] != '_') text[n++] = (char)s.body[i], digits++;
     if (i + 1 < s.len && s.body[i] == '.' && s.body[i + 1] >= '0' && s.body[i + 1] <= '9' && digits) {
@@ -201,12 +214,9 @@ static inline double __pacst_string_to_real(STRING s) {
 }
 /* STRING_TO_BOOL: TRUE for "TRUE" in any case (after spaces) or a number not 0. */
 static inline BOOL __pacst_string_to_bool(STRING s) {
-    int i = 0, k;
-    static const char word[] = "TRUE";
+    int i = 0;
     while (i < s.len && s.body[i] == ' ') i++;
-    for (k = 0; k < 4 && i + k < s.len && (s.body[i + k] & 0xDF) == word[k]; k++) {
-    }
-    return k == 4 || __pacst_string_to_bits(s) != 0ULL;
+    return __pacst_string_word(s, i, "TRUE") || __pacst_string_to_bits(s) != 0ULL;
 }
 /* User mode: REAL_TO_STRING (7 significant digits) and LREAL_TO_STRING (16), as TwinCAT writes them in TcUnit's
  * messages: trailing zeros dropped, a whole number with ".0" (-23.0); an exponent as C writes it (1e+20). */
