@@ -685,7 +685,10 @@ class BodyCompiler:
             st = self.ex.expr(node.step, r.type)
             if st.type is T.ANY_INT and st.value == 0:
                 raise self.err(node.step, "FOR ... BY 0 never ends")
-            step = self.ex.coerce(st, r.type, node.step)
+            if st.type is T.ANY_INT and st.value < 0 and not r.type.is_signed and r.type.bits < 64:
+                step = str(st.value)  # F_Murmur3_Hash's UDINT counted down BY -1: added below in the counter's bits
+            else:
+                step = self.ex.coerce(st, r.type, node.step)
         self.counter += 1
         k = self.counter
         wide = "long long" if r.type.is_signed or r.type.bits < 64 else "unsigned long long"
