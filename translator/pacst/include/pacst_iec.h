@@ -174,9 +174,6 @@ static inline unsigned long long __pacst_string_to_bits(STRING s) {
     }
     return negative ? 0ULL - v : v;
 }
-/* STRING_TO_REAL and _LREAL: a REAL literal (digits with '_', a point, an exponent) after spaces and a sign; text
- * after it ignored, text before it 0, but "#INF" and "#NAN" / "#QNAN" in any case infinity and NaN. Only those
- * characters reach strtod, so its hex and "inf" forms never do. */
 /* Whether the upper-case `word` stands at s[i], in any case. */
 static inline int __pacst_string_word(STRING s, int i, const char *word) {
     int k;
@@ -186,6 +183,9 @@ static inline int __pacst_string_word(STRING s, int i, const char *word) {
     }
     return word[k] == 0;
 }
+/* STRING_TO_REAL and _LREAL: a REAL literal (digits with '_', a point, an exponent) after spaces and a sign; text
+ * after it ignored, text before it 0, but "#INF" and "#NAN" / "#QNAN" in any case infinity and NaN. Only those
+ * characters reach strtod, so its hex and "inf" forms never do. */
 static inline double __pacst_string_to_real(STRING s) {
     char text[STR_MAX_LEN + 1];
     int i = 0, n = 0, digits = 0;
