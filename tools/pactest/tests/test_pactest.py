@@ -696,6 +696,21 @@ class VendorLibraryTest(unittest.TestCase):
                 self.assertEqual("AssertArrayEquals.st" in names, given, text)
                 self.assertIn("TEST.st", names)
 
+    def test_a_leaf_function_only_for_a_program_naming_it(self):
+        # LREAL_TO_FMTSTR and WSTRNCPY, which no other part calls, cost every program CPU to translate and compile
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "MAIN.st")
+            for text, given in (("s := CONCAT(s, 'x');", False), ("s := LREAL_TO_FMTSTR(x, 2, TRUE);", True),
+                                ("ok := Tc2_Utilities.WSTRNCPY(ADR(a), ADR(b), SIZEOF(a));", True)):
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(text)
+                names = {os.path.basename(p) for p in project.vendor_sources([path], named_only=True)}
+                self.assertEqual("LREAL_TO_FMTSTR.st" in names, "LREAL_TO_FMTSTR" in text, text)
+                self.assertEqual("WSTRNCPY.st" in names, "WSTRNCPY" in text, text)
+                self.assertIn("STRNCPY.st", names)
+                self.assertEqual(given, "LREAL_TO_FMTSTR.st" in names or "WSTRNCPY.st" in names, text)
+
     def test_a_program_naming_a_part_uses_the_vendor_libraries(self):
         import tempfile
         with tempfile.TemporaryDirectory() as folder:
