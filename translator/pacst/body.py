@@ -685,7 +685,10 @@ class BodyCompiler:
             st = self.ex.expr(node.step, r.type)
             if st.type is T.ANY_INT and st.value == 0:
                 raise self.err(node.step, "FOR ... BY 0 never ends")
-            step = self.ex.coerce(st, r.type, node.step)
+            if st.type is T.ANY_INT and st.value < 0 and not r.type.is_signed and r.type.bits < 64:
+                step = str(st.value)  # F_Murmur3_Hash's UDINT counted down BY -1: added below in the counter's bits
+            else:
+                step = self.ex.coerce(st, r.type, node.step)
         self.counter += 1
         k = self.counter
         wide = "long long" if r.type.is_signed or r.type.bits < 64 else "unsigned long long"
@@ -746,6 +749,9 @@ class BodyCompiler:
                 raise self.err(node, f"CASE label must be a value of {sel_type.name}")
             value = literals.int_value(node)
         elif cls in ("EnumeratedValue", "SimpleVariable", "MultiElementVariable"):
+            value = None if sel_type.is_enum else self._enum_label_number(node)
+            if value is not None:  # never matches where the selector's type cannot hold it (16#F000 on an INT)
+                return value
             value = self._named_label(node, sel_type)
         else:
             raise self.err(node, "a CASE label is a literal, a named constant or an enumeration value")
@@ -754,6 +760,26 @@ class BodyCompiler:
             if not lo <= value <= hi:
                 raise self.err(node, f"CASE label {value} outside {sel_type.name}'s range")
         return value
+
+    def _enum_label_number(self, node):
+        """User mode: the number of a qualified enumeration value as a label on an integer selector
+        (`IBaseLibrary.TypeClass.TYPE_BOOL` in TcUnit's F_AnyTypeClassToString, `E_Level.HIGH`), as TwinCAT compares
+        an enumeration without {attribute 'strict'}; None for any other label."""
+        if _cls(node) == "EnumeratedValue" and node.type_name is None:
+            parts = _name(node.name).split(".")
+        elif _cls(node) == "MultiElementVariable" and all(
+                _cls(e) == "FieldSelector" and _cls(e.field) == "SimpleVariable" for e in node.elements):
+            parts = [_name(node.name.name)] + [_name(e.field.name) for e in node.elements]
+        else:
+            return None
+        if len(parts) < 2 or self.lookup(parts[0]) is not None:
+            return None
+        known = system.case_label(self.comp, parts, node)
+        t = known[0] if known is not None else self.comp.types.get(parts[0].upper()) if len(parts) == 2 else None
+        if t is None or not t.is_enum:
+            return None
+        self.comp.dialect(node, "an enumeration value as a CASE label on an integer")
+        return t.number(known[1] if known is not None else self.comp.enum_value_of(t, parts[1], node))
 
     def _named_label(self, node, sel_type):
         if _cls(node) == "EnumeratedValue":

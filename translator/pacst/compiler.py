@@ -1408,7 +1408,11 @@ class Compiler:
                 v.strlen = strlen
                 v.csym = f"{holder.cname}__STAT__{name.upper()}"
                 if v.init is not None or vtype.is_fb:
-                    self._init_code(v, "x")  # checks the initial value (an FB's FB_init) now
+                    self.declaring, self.declaring_section = pou, "stat"  # runinit: literals, constants and calls
+                    try:
+                        self._init_code(v, "x")  # checks the initial value (an FB's FB_init) now
+                    finally:
+                        self.declaring = self.declaring_section = None
                 holder.statics.append(v)
 
     def _check_section(self, pou, section, constant, vtype, item):

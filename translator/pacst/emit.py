@@ -77,7 +77,8 @@ class Emitter:
             word = "union" if getattr(t, "union", False) else "struct"  # user mode: a UNION's members share memory
             out.append(f"typedef {word} {t.cname} {{\n{members}\n}} {t.cname};")  # tagged: a member may point at it
         elif t.is_pointer and t.target.is_struct:  # user mode: the struct may be incomplete yet (ST_Node.pNext)
-            out.append(f"typedef struct {t.target.cname} *{t.cname};")
+            word = "union" if getattr(t.target, "union", False) else "struct"  # U_Pointer.pNested
+            out.append(f"typedef {word} {t.target.cname} *{t.cname};")
         elif t.is_pointer:  # user mode: POINTER TO / REFERENCE TO
             out.append(f"typedef {t.target.cname} *{t.cname};")
         elif t.kind == "vla":  # user mode: ARRAY [*], the caller's array's address and bounds

@@ -52,10 +52,13 @@ def widens(source, target):
     warning): to a wider integer that holds every value (INT to DINT, USINT to INT), to a wider bit string,
     an unsigned integer to a bit string as wide or wider (UINT to WORD), a bit string to an integer that holds its
     values (BYTE to DINT, WORD to UDINT), any integer to REAL or LREAL, REAL
-    to LREAL, an enumeration to an integer (its number; TwinCAT's types without {attribute 'strict'})."""
-    if source.is_enum and target.is_int:  # its base type's (INT without one)
-        base = getattr(source, "base", None)
-        return base is target or widens(base, target) if base is not None and base.is_int else target.bits >= 16
+    to LREAL, an enumeration to an integer or a bit string (its number; TwinCAT's types without {attribute
+    'strict'})."""
+    if source.is_enum and (target.is_int or target.is_bit):  # its base type's (INT without one); a bit string as
+        base = getattr(source, "base", None)  # wide as that base (FB_ValueChangeDetector's TypeClass to a DWORD)
+        if base is not None and base.is_int:
+            return base is target or widens(base, target) or target.is_bit and target.bits >= base.bits
+        return target.bits >= 16
     if not (source.is_elementary and target.is_elementary) or source is target:
         return False
     if source.is_int and target.is_int:
@@ -224,6 +227,14 @@ class ExprCompiler:
             t = b.type
         elif self.comp.user and b.type is not a.type and widens(a.type, b.type):
             t = b.type
+        elif self.comp.user and a.type.is_int and b.type.is_int and a.type.is_signed != b.type.is_signed \
+                and not widens(b.type, a.type):
+            # DINT * UDINT (F_Malloc_Generic's SIZEOF(T_Generic) * Count): in the smallest signed type that holds
+            # both, as TwinCAT computes at the register width; LINT with ULINT stays a mismatch
+            t = next((w for w in (T.ELEMENTARY["INT"], T.DINT, T.USER_ELEMENTARY.get("LINT"))
+                      if w is not None and widens(a.type, w) and widens(b.type, w)), a.type)
+            if t is not a.type:
+                self.comp.dialect(node, f"{a.type.name} and {b.type.name} in one operation")
         else:
             t = a.type
         # A mismatch is reported at the operand that does not fit (a binary operation has left/right).
@@ -719,6 +730,13 @@ class ExprCompiler:
             if te.type.is_enum:
                 src = "DINT"
             self.comp.dialect(node, f"the generic conversion {up}")
+            if te.type.is_pointer:  # F_Generic_To_String, _To_LREAL: the address, a ULINT on TwinCAT's 64-bit targets
+                address = f"((ULINT)(uintptr_t)({te.code}))"
+                if up == "TO_STRING":
+                    return TE(T.STRING, f"__pacst_digits_to_string({address}, 0)")
+                dt = T.ELEMENTARY.get(m.group(1)) or T.USER_ELEMENTARY.get(m.group(1))
+                if dt is not None and (dt.is_int or dt.is_bit or dt.is_real or dt.is_bool):
+                    return _converted(T.USER_ELEMENTARY["ULINT"], dt, address)
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
@@ -847,13 +865,17 @@ class ExprCompiler:
 
     def _string_conversion(self, node, src, dst):
         """User mode: an integer, bit string or BOOL to STRING, in decimal ('TRUE', 'FALSE'), as CODESYS,
-        TwinCAT and MATIEC write them; the other conversions with STRING are refused with the reason."""
+        TwinCAT and MATIEC write them, and a REAL as TwinCAT does; the other conversions with STRING are refused
+        with the reason."""
         name = f"{src}_TO_{dst}"
         if dst != "STRING":
-            raise self.err(node, f"{name} is outside pacst's user programs: the tools parse a STRING differently")
-        if src in ("REAL", "LREAL"):
-            raise self.err(node, f"{name} is outside pacst's user programs: CODESYS, TwinCAT and MATIEC write a "
-                                 f"REAL differently; convert a scaled value ({src}_TO_DINT) instead")
+            return self._string_to_number(node, src, dst)
+        if src in ("REAL", "LREAL"):  # as TwinCAT writes them in TcUnit's messages: 1234.4, -23.0
+            (arg,) = self._positional(node, 1, ["IN"])
+            st = T.ELEMENTARY[src]
+            code = self.coerce(self.expr(arg, st), st, arg, "argument")
+            self.comp.dialect(node, name)
+            return TE(T.STRING, f"__pacst_real_to_string((double)({code}), {7 if src == 'REAL' else 16})")
         if src not in _CONVERTIBLE and src not in T.USER_ELEMENTARY:
             raise self.err(node, f"{name} is outside pacst's user programs: only integers, bit strings and BOOL "
                                  "are converted to STRING")
@@ -866,6 +888,24 @@ class ExprCompiler:
         if st.is_bool:
             return TE(T.STRING, f'(({code}) ? __pacst_string("TRUE", 4) : __pacst_string("FALSE", 5))')
         return TE(T.STRING, f"__pacst_int_to_string((long long)({code}))")
+
+    def _string_to_number(self, node, src, dst):
+        """User mode: a STRING or WSTRING to a number or BOOL as TwinCAT's and CODESYS's help describe it: a literal
+        of the type after spaces, text after it ignored, text before it 0, an integer cut to its type's bits."""
+        name = f"{src}_TO_{dst}"
+        t = T.ELEMENTARY.get(dst) or T.USER_ELEMENTARY.get(dst)
+        if t is None or not (t.is_int or t.is_bit or t.is_real or t.is_bool):
+            raise self.err(node, f"{name} is outside pacst's user programs: a STRING is converted to the integers, "
+                                 "bit strings, REAL, LREAL and BOOL only")
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.WSTRING if src == "WSTRING" else T.STRING
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, name)
+        if t.is_bool:
+            return TE(t, f"__pacst_string_to_bool({code})")
+        if t.is_real:
+            return TE(t, f"(({t.cname})__pacst_string_to_real({code}))")
+        return TE(t, f"(({t.cname})__pacst_string_to_bits({code}))")
 
     def _string_function(self, node, fn):
         """The standard string functions (user mode): positions count from 1, results keep at most the
@@ -945,6 +985,8 @@ class ExprCompiler:
             (arg,) = self._positional(node, 1, ["IN"])
             st, dt = (T.STRING, T.WSTRING) if src == "STRING" else (T.WSTRING, T.STRING)
             return TE(dt, self.coerce(self.expr(arg, st), st, arg, "argument"))
+        if self.comp.user and src == "WSTRING" and dst not in ("TIME", "LTIME"):  # WSTRING_TO_LREAL: as a STRING
+            return self._string_to_number(node, src, dst)
         if self.comp.user and "WSTRING" in (src, dst):
             raise self.err(node, f"{src}_TO_{dst} is outside pacst's user programs: of the WSTRING conversions, "
                                  "WSTRING_TO_STRING and STRING_TO_WSTRING are translated; convert through a STRING")
@@ -1047,17 +1089,17 @@ class ExprCompiler:
                 raise self.err(value, f"{fn} of an integer literal needs a typed literal (WORD#16#FF)")
             te = TE(want, self.coerce(te, want, value))
         t = te.type
-        if self.comp.user and t.is_int and not t.is_signed:
-            # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width
+        if self.comp.user and t.is_int:
+            # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width; SHR
+            # on a signed one (FB_Array_List's SHR(THIS^._Count, 1)) fills with the sign bit, as CODESYS's help says
             self.comp.dialect(node, f"{fn} on {t.name}")
             bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
                 T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
+            if t.is_signed and fn == "SHR":
+                ncode = self.coerce(self.expr(count, T.INT), T.INT, count, "shift count")
+                return TE(t, f"__sar_{t.cname}({te.code}, (long){ncode})")
             shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
-        if not t.is_bit and self.comp.user and t.is_int:  # TwinCAT's manual leaves a signed shift's sign bits open
-            word = {8: "BYTE", 16: "WORD", 32: "DWORD", 64: "LWORD"}[t.bits]
-            raise self.err(value, f"{fn} on {t.name}: the manuals leave open how a signed integer shifts; convert it "
-                                  f"to the bit string of its width ({fn}({t.name}_TO_{word}(x), n))")
         if not t.is_bit:
             raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
         return self._shift_code(node, fn, te, t, count, want, value)

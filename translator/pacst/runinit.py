@@ -5,8 +5,9 @@ of a constant (`Limit : DINT := TO_DINT(MaxCount);`) and a FUNCTION's input (`p 
 Taken for a VAR of a FUNCTION_BLOCK, PROGRAM, FUNCTION or METHOD: the expression is translated as in the POU's body
 and runs where the variable gets its initial value, an FB's when the instance is initialised (before the first
 scan), a FUNCTION's and a METHOD's in every call; it reads the variables declared before it. A global list's is
-computed when the list is initialised, from literals, named constants and calls (no variables). An input's or a struct
-member's initial value stays one pacst computes when it translates."""
+computed when the list is initialised, from literals, named constants and calls (no variables), and a VAR_STAT's
+likewise when it gets its initial value. An input's or a struct member's initial value stays one pacst computes when
+it translates."""
 from .common import _cls
 from .errors import StError
 
@@ -18,9 +19,11 @@ def computed(comp, node, want):
     if id(node) in comp.computed_inits:
         return comp.computed_inits[id(node)]
     pou, section = comp.declaring, comp.declaring_section
-    if pou is None and comp.gvl_declaring is not None and _cls(node) not in ("String", "WideString"):
+    if (pou is None and comp.gvl_declaring is not None or section == "stat") and \
+            _cls(node) not in ("String", "WideString"):
         # a global list's: computed in the list's initialisation, before the first scan, from literals, named
-        # constants and calls (TcUnit's HundredNanosecondToSecond : LREAL := 1.0 / 10000000.0)
+        # constants and calls (TcUnit's HundredNanosecondToSecond : LREAL := 1.0 / 10000000.0); a VAR_STAT's
+        # likewise where it gets its initial value (FsCommon's F_GetInf: fInf : LREAL := TO_LREAL('#Inf'))
         from .expressions import ExprCompiler
         try:
             te = ExprCompiler(comp, None).expr(node, want)

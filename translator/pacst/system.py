@@ -1,10 +1,11 @@
 """User mode: TwinCAT's operators starting with `__` (docs/user_dialect.md).
 
 - `__SYSTEM.TYPE_CLASS`, the enumeration of the type classes (`__SYSTEM.TYPE_CLASS.TYPE_INT`), with the numbers
-  of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48) and base type UDINT, as TwinCAT
-  programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input (pValue, diSize,
-  TypeClass). Both are declared in the program the first time a program names them. `IBaseLibrary.TypeClass` (the
-  library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
+  of CODESYS's and TwinCAT's TypeClass (TYPE_BOOL 0 ... TYPE_LTIMEOFDAY 48, TYPE_INTERFACE 16#F000) and base type
+  UDINT, as TwinCAT programs convert it (`UDINT_TO_INT(Class)`); `__SYSTEM.AnyType`, the struct of an ANY input
+  (pValue, diSize, TypeClass). Both are declared in the program the first time a program names them.
+  `IBaseLibrary.TypeClass` (the library Base Interfaces under its namespace) is `__SYSTEM.TYPE_CLASS`.
+  `__SYSTEM.IQueryInterface`, TwinCAT's root INTERFACE, is one without METHODs.
 - A VAR_INPUT of type ANY: a __SYSTEM.AnyType the call fills with the address, size and type class of what it
   gives.
 - `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
@@ -27,7 +28,10 @@ _TYPE_CLASSES = (
     "TYPE_USERDEF TYPE_NONE TYPE_ANY TYPE_ANYBIT TYPE_ANYDATE TYPE_ANYINT TYPE_ANYNUM TYPE_ANYREAL TYPE_LAZY "
     "TYPE_LTIME TYPE_BITCONST TYPE_UXINT TYPE_XWORD TYPE_XINT TYPE_XSTRING TYPE_VARLENARRAY TYPE_ANYSTRING "
     "TYPE_VECTOR TYPE_LDATE TYPE_LDATEANDTIME TYPE_LTIMEOFDAY").split()
-TYPES = ("TYPE_CLASS", "ANYTYPE")
+# and one value out of that order: TYPE_INTERFACE, which the library Base Interfaces keeps at 16#F000 for programs
+# of CODESYS 3.1 (TcUnit's F_AnyToUnionValue names it as a CASE label)
+_TYPE_CLASS_NUMBERS = list(range(len(_TYPE_CLASSES))) + [0xF000]
+TYPES = ("TYPE_CLASS", "ANYTYPE", "IQUERYINTERFACE")
 
 
 # CODESYS's library Base Interfaces, referenced under the namespace IBaseLibrary (as TcUnit references it), declares
@@ -48,18 +52,21 @@ def is_system(name):
 
 
 def system_type(comp, name, node):
-    """The type `__SYSTEM.<name>` (TYPE_CLASS or AnyType), declared in the program at its first use."""
+    """The type `__SYSTEM.<name>` (TYPE_CLASS, AnyType or IQueryInterface), declared in the program at its first
+    use."""
     up = name.upper()
     if up not in TYPES:
-        raise comp.err(node, f"'{NAMESPACE}.{name}': pacst provides {NAMESPACE}.TYPE_CLASS and {NAMESPACE}.AnyType "
-                             "of TwinCAT's __SYSTEM (not its exception codes or IQueryInterface)")
+        raise comp.err(node, f"'{NAMESPACE}.{name}': pacst provides {NAMESPACE}.TYPE_CLASS, {NAMESPACE}.AnyType and "
+                             f"{NAMESPACE}.IQueryInterface of TwinCAT's __SYSTEM (not its exception codes)")
     comp.dialect(node, f"TwinCAT's {NAMESPACE}.{name}")
     key = f"{NAMESPACE}__{up}"
     t = comp.types.get(key)
     if t is not None:
         return t
-    if up == "TYPE_CLASS":
-        t = T.EnumType(f"{NAMESPACE}.TYPE_CLASS", list(_TYPE_CLASSES), list(range(len(_TYPE_CLASSES))),
+    if up == "IQUERYINTERFACE":  # TwinCAT's root INTERFACE: no METHODs (FsCommon's T_QueryInterface, U_Pointer)
+        t = T.InterfaceType(f"{NAMESPACE}.IQueryInterface")
+    elif up == "TYPE_CLASS":
+        t = T.EnumType(f"{NAMESPACE}.TYPE_CLASS", list(_TYPE_CLASSES) + ["TYPE_INTERFACE"], _TYPE_CLASS_NUMBERS,
                        T.ELEMENTARY["UDINT"])
     else:
         t = T.StructType(f"{NAMESPACE}.AnyType")

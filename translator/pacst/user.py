@@ -230,6 +230,17 @@ def union_type(comp, decl):
         raise comp.err(decl.extends, "a UNION EXTENDS nothing: declare its members")
     t = T.StructType(_name(decl.name))
     t.union = True
+    comp.types[t.cname] = t  # a member may point at the UNION itself (FsCommon's U_Pointer.pNested)
+    try:
+        _union_members(comp, t, decl)
+    except (StError, StErrors):
+        del comp.types[t.cname]
+        raise
+    return t
+
+
+def _union_members(comp, t, decl):
+    """The members of the UNION `t`."""
     seen = set()
     for el in decl.declarations:
         spec = el.spec
@@ -246,7 +257,6 @@ def union_type(comp, decl):
             raise comp.err(el.name, f"member '{name}' is declared twice")
         seen.add(name.upper())
         t.members.append(c_safe(comp, T.Var(name, "member", mtype, None, el.name)))
-    return t
 
 
 def initial_value(init):

@@ -83,7 +83,7 @@ class HostBuild:
         theirs = self.wiring.sources + [path for _, path, _ in self.wiring.libraries]
         dialect = self.takes_dialect or project.uses_vendor(theirs)
         tcunit = self.takes_dialect and project.uses_tcunit(theirs)
-        vendor = project.vendor_sources(theirs) if dialect else []
+        vendor = project.vendor_sources(theirs, named_only=True) if dialect else []
         files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + vendor + \
             (project.tcunit_sources(theirs) if tcunit else []) + self.wiring.sources
         natives = [a for f in project.native_sources() + (project.vendor_natives(theirs) if dialect else []) +

@@ -68,8 +68,8 @@ def _given(files):
     names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
     namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
     if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names, Tc2_System's parts
-        return project.vendor_sources(files), project.vendor_natives(files), namespaces
-    extra = project.vocabulary_sources() + project.vendor_sources(files)
+        return project.vendor_sources(files, named_only=True), project.vendor_natives(files), namespaces
+    extra = project.vocabulary_sources() + project.vendor_sources(files, named_only=True)
     native = project.native_sources() + project.vendor_natives(files)
     if not project.uses_tcunit(files):
         return extra, native, namespaces

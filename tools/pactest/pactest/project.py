@@ -105,12 +105,22 @@ def vendor_libraries():
             if os.path.isdir(os.path.join(VENDOR, name))}
 
 
-def vendor_sources(sources=()):
+# Vendor FUNCTIONs no other part calls, given (named_only) only to a program whose sources name them: each part
+# given costs every program CPU to translate and compile (these two, 0.5 s of user CPU for examples/pick_and_place
+# on 7 December 2026).
+_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY")
+
+
+def vendor_sources(sources=(), named_only=False):
     """The vendor parts' files, but those declaring a name the user's `sources` declare themselves (a program's
-    own TIMESTRUCT or FLOOR stays the program's)."""
+    own TIMESTRUCT or FLOOR stays the program's); `named_only`: and _ON_DEMAND's only where the sources name them."""
     theirs = declared_names(sources)
-    return [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))
-            if os.path.splitext(os.path.basename(f))[0].upper() not in theirs]
+    files = [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))
+             if os.path.splitext(os.path.basename(f))[0].upper() not in theirs]
+    if not named_only:
+        return files
+    named = {n for n in _ON_DEMAND if _names(sources, re.compile(rb"\b" + n.encode() + rb"\b", re.I))}
+    return [f for f in files if os.path.splitext(os.path.basename(f))[0] not in set(_ON_DEMAND) - named]
 
 
 def vendor_natives(sources=()):

@@ -683,18 +683,32 @@ class VendorLibraryTest(unittest.TestCase):
         self.assertEqual([os.path.basename(p) for p in project.vendor_natives()],
                          ["F_GetSystemTime.st", "PacTestTaskCycleTime.st", "PacTestTaskCycles.st"])
 
-    def test_tcunit_array_asserts_only_for_a_program_calling_one(self):
-        # their file costs a cold parse of about 11 s: a TcUnit program that calls none is given the rest only
+    @staticmethod
+    def given_for(text, name, parts):
+        """The file names parts([path]) gives a program whose one source file `name` holds `text`."""
         import tempfile
         with tempfile.TemporaryDirectory() as folder:
-            path = os.path.join(folder, "FB_Suite.st")
-            for text, given in (("AssertEquals_INT(1, 1, 'x');", False), ("AssertArrayEquals_INT(A, B, 'x');", True),
-                                ("TcUnit.AssertArray2dEquals_REAL(A, B, 0.1, 'x');", True)):
-                with open(path, "w", encoding="utf-8") as f:
-                    f.write(text)
-                names = {os.path.basename(p) for p in project.tcunit_sources([path])}
-                self.assertEqual("AssertArrayEquals.st" in names, given, text)
-                self.assertIn("TEST.st", names)
+            path = os.path.join(folder, name)
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
+            return {os.path.basename(p) for p in parts([path])}
+
+    def test_tcunit_array_asserts_only_for_a_program_calling_one(self):
+        # their file costs a cold parse of about 11 s: a TcUnit program that calls none is given the rest only
+        for text, given in (("AssertEquals_INT(1, 1, 'x');", False), ("AssertArrayEquals_INT(A, B, 'x');", True),
+                            ("TcUnit.AssertArray2dEquals_REAL(A, B, 0.1, 'x');", True)):
+            names = self.given_for(text, "FB_Suite.st", project.tcunit_sources)
+            self.assertEqual("AssertArrayEquals.st" in names, given, text)
+            self.assertIn("TEST.st", names)
+
+    def test_a_leaf_function_only_for_a_program_naming_it(self):
+        # LREAL_TO_FMTSTR and WSTRNCPY, which no other part calls, cost every program CPU to translate and compile
+        for text in ("s := CONCAT(s, 'x');", "s := LREAL_TO_FMTSTR(x, 2, TRUE);",
+                     "ok := Tc2_Utilities.WSTRNCPY(ADR(a), ADR(b), SIZEOF(a));"):
+            names = self.given_for(text, "MAIN.st", lambda sources: project.vendor_sources(sources, named_only=True))
+            self.assertEqual("LREAL_TO_FMTSTR.st" in names, "LREAL_TO_FMTSTR" in text, text)
+            self.assertEqual("WSTRNCPY.st" in names, "WSTRNCPY" in text, text)
+            self.assertIn("STRNCPY.st", names)
 
     def test_a_program_naming_a_part_uses_the_vendor_libraries(self):
         import tempfile

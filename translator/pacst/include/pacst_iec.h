@@ -150,6 +150,85 @@ static inline STRING __pacst_digits_to_string(unsigned long long u, int negative
 static inline STRING __pacst_int_to_string(long long v) {
     return __pacst_digits_to_string(v < 0 ? 0ULL - (unsigned long long)v : (unsigned long long)v, v < 0);
 }
+/* User mode: STRING_TO_<integer> as TwinCAT's and CODESYS's help describe it: spaces skipped, a sign, digits with
+ * '_' between them and a base (16#FF); text after the number ignored, text before it 0. The value wraps to 64 bits;
+ * the caller cuts it to its type (STRING_TO_BYTE('500') is 244). */
+static inline unsigned long long __pacst_string_to_bits(STRING s) {
+    unsigned long long v = 0ULL, base = 10ULL;
+    int i = 0, negative = 0, digits = 0;
+    while (i < s.len && s.body[i] == ' ') i++;
+    if (i < s.len && (s.body[i] == '+' || s.body[i] == '-')) negative = s.body[i++] == '-';
+    for (; i < s.len; i++) {
+        int c = s.body[i], d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                             : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+        if (c == '_' && digits > 0) continue;
+        if (c == '#' && base == 10ULL && digits > 0 && (v == 2ULL || v == 8ULL || v == 16ULL)) {
+            base = v;
+            v = 0ULL;
+            digits = 0;
+            continue;
+        }
+        if (d < 0 || (unsigned long long)d >= base) break;
+        v = v * base + (unsigned long long)d;
+        digits++;
+    }
+    return negative ? 0ULL - v : v;
+}
+/* Whether the upper-case `word` stands at s[i], in any case. */
+static inline int __pacst_string_word(STRING s, int i, const char *word) {
+    int k;
+    for (k = 0; word[k] != 0 && i + k < s.len; k++) {
+        int c = s.body[i + k];
+        if ((c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c) != word[k]) break;
+    }
+    return word[k] == 0;
+}
+/* STRING_TO_REAL and _LREAL: a REAL literal (digits with '_', a point, an exponent) after spaces and a sign; text
+ * after it ignored, text before it 0, but "#INF" and "#NAN" / "#QNAN" in any case infinity and NaN. Only those
+ * characters reach strtod, so its hex and "inf" forms never do. */
+static inline double __pacst_string_to_real(STRING s) {
+    char text[STR_MAX_LEN + 1];
+    int i = 0, n = 0, digits = 0;
+    while (i < s.len && s.body[i] == ' ') i++;
+    if (i < s.len && (s.body[i] == '+' || s.body[i] == '-')) text[n++] = (char)s.body[i++];
+    if (__pacst_string_word(s, i, "#INF")) /* as LREAL_TO_FMTSTR writes them (FsCommon's F_GetInf reads them) */
+        return n > 0 && text[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+    if (__pacst_string_word(s, i, "#NAN") || __pacst_string_word(s, i, "#QNAN")) return NAN;
+    for (; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || (s.body[i] == '_' && digits)); i++)
+        if (s.body[i] != '_') text[n++] = (char)s.body[i], digits++;
+    if (i + 1 < s.len && s.body[i] == '.' && s.body[i + 1] >= '0' && s.body[i + 1] <= '9' && digits) {
+        text[n++] = '.';
+        for (i++; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || s.body[i] == '_'); i++)
+            if (s.body[i] != '_') text[n++] = (char)s.body[i];
+    }
+    if (digits && i + 1 < s.len && (s.body[i] == 'e' || s.body[i] == 'E')) {
+        int j = i + 1, m = n;
+        text[m++] = 'e';
+        if (s.body[j] == '+' || s.body[j] == '-') text[m++] = (char)s.body[j++];
+        if (j < s.len && s.body[j] >= '0' && s.body[j] <= '9') {
+            for (n = m; j < s.len && s.body[j] >= '0' && s.body[j] <= '9'; j++) text[n++] = (char)s.body[j];
+        }
+    }
+    text[n] = 0;
+    return digits ? strtod(text, NULL) : 0.0;
+}
+/* STRING_TO_BOOL: TRUE for "TRUE" in any case (after spaces) or a number not 0. */
+static inline BOOL __pacst_string_to_bool(STRING s) {
+    int i = 0;
+    while (i < s.len && s.body[i] == ' ') i++;
+    return __pacst_string_word(s, i, "TRUE") || __pacst_string_to_bits(s) != 0ULL;
+}
+/* User mode: REAL_TO_STRING (7 significant digits) and LREAL_TO_STRING (16), as TwinCAT writes them in TcUnit's
+ * messages: trailing zeros dropped, a whole number with ".0" (-23.0); an exponent as C writes it (1e+20). */
+static inline STRING __pacst_real_to_string(double v, int digits) {
+    char text[40];
+    int n = snprintf(text, sizeof text - 2, "%.*g", digits, v);
+    if (isfinite(v) && strpbrk(text, ".e") == NULL) {
+        text[n++] = '.';
+        text[n++] = '0';
+    }
+    return __pacst_string(text, n);
+}
 static inline STRING __pacst_str_limit(STRING s, long n) { return __pacst_str_part(s, 0, n); }
 static inline STRING __pacst_str_left(STRING s, long l) { return __pacst_str_part(s, 0, l); }
 static inline STRING __pacst_str_right(STRING s, long l) {
@@ -305,6 +384,14 @@ __PACST_SHIFT(BYTE, 8)
 __PACST_SHIFT(WORD, 16)
 __PACST_SHIFT(DWORD, 32)
 __PACST_SHIFT(LWORD, 64)
+/* SHR of a signed integer (user programs): the sign bit shifted in, as CODESYS describes SHR on signed types; a
+ * count of the width or more leaves the sign bits alone (-1 or 0). The complement keeps the C shift unsigned. */
+#define __PACST_SAR(T, W)                                                                                \
+    static inline T __sar_##T(T v, long n) { return v < 0 ? (T)~__shr_##W((W)~v, n) : (T)__shr_##W((W)v, n); }
+__PACST_SAR(SINT, BYTE)
+__PACST_SAR(INT, WORD)
+__PACST_SAR(DINT, DWORD)
+__PACST_SAR(LINT, LWORD)
 
 /* ABS for signed types (unsigned ones are their own ABS); MIN, MAX and LIMIT for every numeric and
  * bit-string type. */
