@@ -5,7 +5,7 @@
  * Blocked, whether the request written in the scan reaches the controller or the line loses it, how many of the
  * controller's bytes on their way reach RxBuffer (0..BYTES_PER_SCAN) and whether the line drops the rest,
  * whether the FB is called (a CASE step or an IF branch leaves it out: the driver still moves bytes, the FB's
- * pins stay), a PLC restart (the FB and its rings back to their cold-start values; the controller runs on), and
+ * pins stay; with CBMC__LONG_SKIPS it is called in every step, after a free gap of scans left out), a PLC restart (the FB and its rings back to their cold-start values; the controller runs on), and
  * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
  * Retries (0 or 1) and the controller's reading of the CHECK; the command (Code, Param, Data) a constant of the
  * run. Properties "P<n>"/"R<n>"/"L<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
