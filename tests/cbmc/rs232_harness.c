@@ -5,8 +5,9 @@
  * Blocked, whether the request written in the scan reaches the controller or the line loses it, how many of the
  * controller's bytes on their way reach RxBuffer (0..BYTES_PER_SCAN) and whether the line drops the rest,
  * whether the FB is called (a CASE step or an IF branch leaves it out: the driver still moves bytes, the FB's
- * pins stay; with CBMC__LONG_SKIPS it is called in every step, after a free gap of scans left out), a PLC restart (the FB and its rings back to their cold-start values; the controller runs on), and
- * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
+ * pins stay; with CBMC__LONG_SKIPS it is called in every step, after a free gap of scans left out), a PLC
+ * restart (the FB and its rings back to their cold-start values; the controller runs on), and the programmer's
+ * Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
  * Retries (0 or 1) and the controller's reading of the CHECK; the command (Code, Param, Data) a constant of the
  * run. Properties "P<n>"/"R<n>"/"L<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
@@ -325,9 +326,9 @@ int main(void) {
     /* The scans left out (CBMC__LONG_SKIPS): each step calls the FB after a gap of 0 to STRETCH_MAX scans it was
      * left out of, in which nothing of it runs and the clock goes on; step n is scan s = n + the gaps so far, the
      * clock s + TMAX ms. The bytes of a step arrive in its own scan, after the gap (the FB, left out, would read
-     * them in this call all the same). Where the FB is called in some steps only
-     * (CBMC__SKIPS), its whole instance is merged after each call under a free condition, the rings' arrays
-     * too: this costs several times more than the gaps (docs/verification.md). */
+     * them in this call all the same). Where the FB is called in some steps only (CBMC__SKIPS), its whole
+     * instance is merged after each call under a free condition, the rings' arrays too: this costs several times
+     * more than the gaps (docs/verification.md). */
     int stretched = 0;
     BOOL skippedReply = FALSE; /* since the last request: a gap of two scans or more while Busy */
     int reachSkippedReply = 0;
@@ -376,7 +377,8 @@ int main(void) {
         int received = nondet_uchar();
         __CPROVER_assume(received <= CBMC__BYTES_PER_SCAN);
         const int length0 = ctrl.line[0].length;
-        const int waiting = ctrl.pending == 0 ? 0 : length0 - ctrl.outPos + (ctrl.pending == 2 ? ctrl.line[1].length : 0);
+        const int waiting =
+            ctrl.pending == 0 ? 0 : length0 - ctrl.outPos + (ctrl.pending == 2 ? ctrl.line[1].length : 0);
 #if CBMC__NOISE
         const int spoilt = nondet_uchar();
         const unsigned char noise = nondet_uchar();
