@@ -289,6 +289,11 @@ int main(void) {
     static FB_PAC_RS232CMD cmd, fresh;
     Controller ctrl = {0};
     PlcOpenWatch watch = {0};
+    /* D26 (open): since the job's first call after a gap, that call having taken a reply or its absence and begun
+     * a new wait (a request to send again after a refused frame or a reply whose Timeout ran out in the gap, the
+     * command after AUTO's probe, or the wait for END OF PROCESSING after an acknowledgement that came in the
+     * gap). P8 is asserted apart on these paths, so that CI holds P8 on every other path while D26 is known open. */
+    BOOL againAfterGap = FALSE;
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
     int requests = 0, lastRequest = 0, lastByte = -1000, edgeScan = 0;
@@ -445,9 +450,18 @@ int main(void) {
 
         /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
         if (!called && watch.busy) watch.busyScans++;
-        if (called)
+        if (called && gap > 0 && cmd.REPLIED.value && cmd.BUSY.value) againAfterGap = TRUE;
+        if (called) {
+            const int bound = watch.bound;
+            if (againAfterGap) watch.bound = 1 << 20;
             CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
-                     cmd.ERRORID.value);
+                         cmd.ERRORID.value);
+            watch.bound = bound;
+            if (againAfterGap)
+                __CPROVER_assert(watch.busyScans <= bound,
+                                 "P8 (D26) Busy within the bound after a new wait begun after a gap");
+            if (!cmd.BUSY.value) againAfterGap = FALSE;
+        }
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
         const unsigned char first = tx->BUFFER.table[Ring(wrIdx0)];
