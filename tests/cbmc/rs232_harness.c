@@ -5,8 +5,9 @@
  * Blocked, whether the request written in the scan reaches the controller or the line loses it, how many of the
  * controller's bytes on their way reach RxBuffer (0..BYTES_PER_SCAN) and whether the line drops the rest,
  * whether the FB is called (a CASE step or an IF branch leaves it out: the driver still moves bytes, the FB's
- * pins stay), a PLC restart (the FB and its rings back to their cold-start values; the controller runs on), and
- * the programmer's Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
+ * pins stay; with CBMC__LONG_SKIPS it is called in every step, after a free gap of scans left out), a PLC
+ * restart (the FB and its rings back to their cold-start values; the controller runs on), and the programmer's
+ * Execute and CheckRule; per run Timeout, EndTimeout, PollInterval, QuietTime (1..TMAX ms),
  * Retries (0 or 1) and the controller's reading of the CHECK; the command (Code, Param, Data) a constant of the
  * run. Properties "P<n>"/"R<n>"/"L<n>", reachability checks "reach: ..." (which must FAIL), as in cmd_harness.c. */
 #include "harness.h"
@@ -22,6 +23,12 @@
 #endif
 #ifndef CBMC__SKIPS /* 0: the FB called in every scan (CI: at K = 2 a scan left out leaves one call, at a high cost) */
 #define CBMC__SKIPS 1
+#endif
+#ifndef CBMC__LONG_SKIPS /* 1: the FB called in every step, after 0 .. STRETCH_MAX scans it was left out of */
+#define CBMC__LONG_SKIPS 0
+#endif
+#ifndef CBMC__STRETCH_MAX /* a power of 2 less 1 */
+#define CBMC__STRETCH_MAX 15
 #endif
 #ifndef CBMC__BYTES_PER_SCAN /* bytes of the controller's that reach RxBuffer per scan at most: a whole reply */
 #define CBMC__BYTES_PER_SCAN 18
@@ -59,13 +66,19 @@
 enum { REQ_POLL = 1, REQ_COMMAND, REQ_PROBE, REQ_OTHER }; /* a request as the controller reads it */
 enum { TOOK_NOTHING, TOOK_COMMAND, TOOK_PROBE, TOOK_POLL, TOOK_REFUSED, TOOK_CHECK_16, TOOK_IGNORED, TOOK_LOST };
 
-#define OUT_MAX 40   /* the controller's bytes on their way: two replies (more are lost on the line) */
+#define FRAME_MAX 19 /* the controller's longest acknowledgement: QUIT 16 or 20 and a CHECK of 3 digits */
 #define LEDGER CBMC__K /* one request per scan at most (R1, R2) */
 
 /* What the controller executed: which text, in which scan, and what it answered (STATUS, Q_PAR). */
 typedef struct {
     int kind, scan, status, data;
 } Entry;
+
+/* A reply on its way: its bytes at fixed places (the formula then holds no write at a free index). */
+typedef struct {
+    unsigned char byte[FRAME_MAX];
+    int length;
+} Reply;
 
 /* The controller (manual 3.3, 3.3.1): it executes a frame whose CHECK it accepts and answers it with
  * SOH STX QUIT;BE;STATUS;ERROR;TYP_QUIT;Q_PAR ETX CHECK EOT; an EOT poll gets its last reply again, with BE 1
@@ -75,13 +88,13 @@ typedef struct {
  * answered with QUIT 16 (6.5) or ignored, and the XOR of its own replies with or without ETX. A frame it
  * accepts it may refuse with a command error (20, 6.5: not carried out); the probe, a read, it always carries
  * out. STATUS and Q_PAR are free digits of each execution (the probe's Q_PAR is STATUS, as 190B reads it): two
- * executions answer differently. */
+ * executions answer differently. Two replies at most are on their way: a third is lost on the line whole. */
 typedef struct {
     BOOL checkEtx, zeroUnchecked, ignoreBad, replyEtx;
     BOOL answered, running;
     int quit, be, status, data, entry; /* the last reply; entry: the ledger entry it answers, -1 none */
-    unsigned char out[OUT_MAX];
-    int outLen, outPos;
+    Reply line[2];                     /* the replies on their way, line[0] first */
+    int pending, outPos;               /* replies on their way; bytes of line[0] already on RxBuffer */
     Entry ledger[LEDGER];
     int entries;
 } Controller;
@@ -92,49 +105,72 @@ static int TextXor(const char *text, int length) {
     return x;
 }
 
+/* The controller's last reply as a frame: QUIT has one or two digits, CHECK one to three, so the frame has one
+ * of six layouts, each written at fixed places. */
+static void ReplyFrame(const Controller *c, Reply *r) {
+    const int q = c->quit >= 10 ? 2 : 1, text = q + 10; /* QUIT ; BE ; STATUS ; 0 ; 0 ; Q_PAR */
+    const unsigned char tens = (unsigned char)('0' + c->quit / 10), ones = (unsigned char)('0' + c->quit % 10);
+    const unsigned char be = (unsigned char)('0' + c->be), status = (unsigned char)('0' + c->status);
+    const unsigned char data = (unsigned char)('0' + c->data);
+    const int check = (c->replyEtx ? 0x03 : 0) ^ (q == 2 ? tens : 0) ^ ones ^ ';' ^ be ^ ';' ^ status ^ ';' ^ '0' ^ ';'
+                      ^ '0' ^ ';' ^ data;
+    const int digits = check >= 100 ? 3 : check >= 10 ? 2 : 1;
+    r->byte[0] = 0x01;
+    r->byte[1] = 0x02;
+    if (q == 2) {
+        r->byte[2] = tens;
+        r->byte[3] = ones;
+    } else {
+        r->byte[2] = ones;
+    }
+    const unsigned char rest[] = {';', be, ';', status, ';', '0', ';', '0', ';', data, 0x03};
+    for (int i = 0; i < 11; ++i) {
+        if (q == 2) r->byte[4 + i] = rest[i];
+        else r->byte[3 + i] = rest[i];
+    }
+    const unsigned char d100 = (unsigned char)('0' + check / 100), d10 = (unsigned char)('0' + check / 10 % 10);
+    const unsigned char d1 = (unsigned char)('0' + check % 10);
+    for (int k = 1; k <= 2; ++k) { /* the text ends at 2 + text - 1; ETX at 2 + text; CHECK from 3 + text */
+        if (q != k) continue;
+        const int at = 3 + (k + 10);
+        if (digits == 3) {
+            r->byte[at] = d100;
+            r->byte[at + 1] = d10;
+            r->byte[at + 2] = d1;
+            r->byte[at + 3] = 0x04;
+        } else if (digits == 2) {
+            r->byte[at] = d10;
+            r->byte[at + 1] = d1;
+            r->byte[at + 2] = 0x04;
+        } else {
+            r->byte[at] = d1;
+            r->byte[at + 1] = 0x04;
+        }
+    }
+    r->length = 4 + text + digits;
+}
+
 /* The controller's reply on the line: its last reply, as a frame, after the bytes still on their way. */
 static void Answer(Controller *c) {
-    unsigned char text[12];
-    int length = 0;
-    if (c->quit >= 10) text[length++] = (unsigned char)('0' + c->quit / 10);
-    text[length++] = (unsigned char)('0' + c->quit % 10);
-    text[length++] = ';';
-    text[length++] = (unsigned char)('0' + c->be);
-    text[length++] = ';';
-    text[length++] = (unsigned char)('0' + c->status);
-    text[length++] = ';';
-    text[length++] = '0'; /* ERROR */
-    text[length++] = ';';
-    text[length++] = '0'; /* TYP_QUIT */
-    text[length++] = ';';
-    text[length++] = (unsigned char)('0' + c->data);
-    int check = c->replyEtx ? 0x03 : 0;
-    for (int i = 0; i < 12; ++i)
-        if (i < length) check ^= text[i];
-    unsigned char frame[19];
-    int n = 0;
-    frame[n++] = 0x01;
-    frame[n++] = 0x02;
-    for (int i = 0; i < 12; ++i)
-        if (i < length) frame[n++] = text[i];
-    frame[n++] = 0x03;
-    if (check >= 100) frame[n++] = (unsigned char)('0' + check / 100);
-    if (check >= 10) frame[n++] = (unsigned char)('0' + check / 10 % 10);
-    frame[n++] = (unsigned char)('0' + check % 10);
-    frame[n++] = 0x04;
-    if (c->outPos == c->outLen) c->outPos = c->outLen = 0;
-    for (int i = 0; i < 19; ++i)
-        if (i < n && c->outLen < OUT_MAX) c->out[c->outLen++] = frame[i];
+    Reply r;
+    ReplyFrame(c, &r);
+    if (c->pending == 0) {
+        c->line[0] = r;
+        c->outPos = 0;
+        c->pending = 1;
+    } else if (c->pending == 1) {
+        c->line[1] = r;
+        c->pending = 2;
+    }
     c->answered = TRUE;
 }
 
-/* The controller takes a request the line brought it (in the scan the FB wrote it): returns what it did. */
-static int Take(Controller *c, int kind, BOOL zeroForm, int check, int n) {
+/* What the controller does with a request the line brought it (in the scan the FB wrote it). */
+static int Decide(Controller *c, int kind, BOOL zeroForm, int check, int n) {
     if (kind == REQ_POLL) {
         if (!c->answered) return TOOK_NOTHING;
         if (c->running && nondet_bool()) c->running = FALSE; /* the command ended since the last reply */
         if (c->entry >= 0) c->be = !c->running;
-        Answer(c);
         return TOOK_POLL;
     }
     const int sum = kind == REQ_PROBE ? TextXor(PROBE_TEXT, sizeof PROBE_TEXT - 1)
@@ -145,12 +181,10 @@ static int Take(Controller *c, int kind, BOOL zeroForm, int check, int n) {
     if (!(check == (c->checkEtx ? sum ^ 0x03 : sum) || (check == 0 && c->zeroUnchecked))) {
         if (c->ignoreBad) return TOOK_IGNORED;
         c->quit = 16, c->be = 1, c->data = 0, c->entry = -1;
-        Answer(c);
         return TOOK_CHECK_16;
     }
     if (kind == REQ_COMMAND && nondet_bool()) {
         c->quit = 20, c->be = 1, c->data = 0, c->entry = -1;
-        Answer(c);
         return TOOK_REFUSED;
     }
     c->quit = 0;
@@ -167,8 +201,14 @@ static int Take(Controller *c, int kind, BOOL zeroForm, int check, int n) {
         c->ledger[c->entries].data = c->data;
         ++c->entries;
     }
-    Answer(c);
     return kind == REQ_PROBE ? TOOK_PROBE : TOOK_COMMAND;
+}
+
+/* The controller takes the request and answers it: one reply frame per call, whatever it decided. */
+static int Take(Controller *c, int kind, BOOL zeroForm, int check, int n) {
+    const int took = Decide(c, kind, zeroForm, check, n);
+    if (took != TOOK_NOTHING && took != TOOK_IGNORED) Answer(c);
+    return took;
 }
 
 /* i modulo RING for -RING <= i < 3 x RING, without a division: a % by 300 of a free value is a divider circuit
@@ -249,6 +289,11 @@ int main(void) {
     static FB_PAC_RS232CMD cmd, fresh;
     Controller ctrl = {0};
     PlcOpenWatch watch = {0};
+    /* D26 (open): since the job's first call after a gap, that call having taken a reply or its absence and begun
+     * a new wait (a request to send again after a refused frame or a reply whose Timeout ran out in the gap, the
+     * command after AUTO's probe, or the wait for END OF PROCESSING after an acknowledgement that came in the
+     * gap). P8 is asserted apart on these paths, so that CI holds P8 on every other path while D26 is known open. */
+    BOOL againAfterGap = FALSE;
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
     int requests = 0, lastRequest = 0, lastByte = -1000, edgeScan = 0;
@@ -283,8 +328,26 @@ int main(void) {
      * restart below is not called before its scan. */
     FB_PAC_RS232CMD_body__(&cmd);
 
+    /* The scans left out (CBMC__LONG_SKIPS): each step calls the FB after a gap of 0 to STRETCH_MAX scans it was
+     * left out of, in which nothing of it runs and the clock goes on; step n is scan s = n + the gaps so far, the
+     * clock s + TMAX ms. The bytes of a step arrive in its own scan, after the gap (the FB, left out, would read
+     * them in this call all the same). Where the FB is called in some steps only (CBMC__SKIPS), its whole
+     * instance is merged after each call under a free condition, the rings' arrays too: this costs several times
+     * more than the gaps (docs/verification.md). */
+    int stretched = 0;
+    BOOL skippedReply = FALSE; /* since the last request: a gap of two scans or more while Busy */
+    int reachSkippedReply = 0;
     for (int n = 1; n <= CBMC__K; ++n) {
-        __CURRENT_TIME = __time_make(0, (long)(n + CBMC__TMAX) * CYCLE_NS);
+        const int gap = CBMC__LONG_SKIPS ? (int)(nondet_uchar() & CBMC__STRETCH_MAX) : 0;
+        stretched += gap;
+        const int s = n + stretched;
+        if (gap > 0 && s - 1 - lastByte >= q) quietSeen = TRUE; /* the line quiet until the gap's end */
+        if (gap > 0 && cmd.BUSY.value) {
+            reachSkippedBusy = 1;
+            watch.busyScans += gap; /* P8 counts the scans, not the calls */
+        }
+        if (gap >= 2 && cmd.BUSY.value && requests > 0) skippedReply = TRUE;
+        __CURRENT_TIME = __time_make(0, (long)(s + CBMC__TMAX) * CYCLE_NS);
         /* A PLC cold start: the FB instance and its rings back to their initial values; what the controller
          * still sends for a request of the instance before goes into the new RxBuffer. The request history of
          * R2 starts anew (the new instance cannot know of the old request). */
@@ -301,9 +364,14 @@ int main(void) {
             frames = (Frames){0};
             reachPlcRestart = 1;
         }
-        /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. */
+        /* TxBuffer: the driver sent any number of the bytes, or the line is stuck: any free space. The FB keeps
+         * no index of it from one call to the next and writes at WrIdx whatever it is, so the place of its
+         * bytes in the ring matters to it only where they wrap round the ring's end (F_PAC_ComPut): the driver
+         * here leaves WrIdx RING - 10 in every scan, where a frame wraps and a poll does not, and the harness
+         * reads the request at places it knows, not at free ones. */
         const int held = nondet_ushort();
         __CPROVER_assume(held <= RING);
+        tx->WRIDX = RING - 10;
         tx->COUNT = (INT)held;
         tx->FREEBYTE = (INT)(RING - held);
         tx->RDIDX = (INT)Ring(tx->WRIDX + RING - held);
@@ -313,32 +381,48 @@ int main(void) {
         rx->BLOCKED = nondet_bool();
         int received = nondet_uchar();
         __CPROVER_assume(received <= CBMC__BYTES_PER_SCAN);
-        if (received > ctrl.outLen - ctrl.outPos) received = ctrl.outLen - ctrl.outPos;
+        const int length0 = ctrl.line[0].length;
+        const int waiting =
+            ctrl.pending == 0 ? 0 : length0 - ctrl.outPos + (ctrl.pending == 2 ? ctrl.line[1].length : 0);
 #if CBMC__NOISE
         const int spoilt = nondet_uchar();
         const unsigned char noise = nondet_uchar();
 #endif
         unsigned long long fromPac = 0;
-        for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
-            unsigned char byte = ctrl.out[ctrl.outPos + i];
+        if (waiting == 0) { /* a known 0 where no reply is on its way: no byte to deliver in the formula */
+            received = 0;
+        } else {
+            if (received > waiting) received = waiting;
+            for (int i = 0; i < CBMC__BYTES_PER_SCAN && i < received; ++i) {
+                const int at = ctrl.outPos + i;
+                unsigned char byte = at < length0 ? ctrl.line[0].byte[at] : ctrl.line[1].byte[at - length0];
 #if CBMC__NOISE
-            if (i == spoilt) byte = noise;
+                if (i == spoilt) byte = noise;
 #endif
-            if (i < 8) fromPac |= (unsigned long long)byte << (8 * (7 - i));
-            Receive(&frames, byte, rule);
-            if (rx->COUNT < RING) {
-                rx->BUFFER.table[rx->WRIDX] = byte;
-                rx->WRIDX = (INT)Ring(rx->WRIDX + 1);
-                ++rx->COUNT;
-                rx->FREEBYTE = (INT)(RING - rx->COUNT);
+                if (i < 8) fromPac |= (unsigned long long)byte << (8 * (7 - i));
+                Receive(&frames, byte, rule);
+                if (rx->COUNT < RING) {
+                    rx->BUFFER.table[rx->WRIDX] = byte;
+                    rx->WRIDX = (INT)Ring(rx->WRIDX + 1);
+                    ++rx->COUNT;
+                    rx->FREEBYTE = (INT)(RING - rx->COUNT);
+                }
             }
+            /* The replies delivered whole leave the line; the line may drop the rest. */
+            ctrl.outPos += received;
+            for (int k = 0; k < 2; ++k) {
+                if (ctrl.pending > 0 && ctrl.outPos >= ctrl.line[0].length) {
+                    ctrl.outPos -= ctrl.line[0].length;
+                    ctrl.line[0] = ctrl.line[1];
+                    --ctrl.pending;
+                }
+            }
+            if (ctrl.pending > 0 && nondet_bool()) ctrl.pending = ctrl.outPos = 0;
+            if (received > 0) lastByte = s;
         }
-        ctrl.outPos += received;
-        if (ctrl.outPos < ctrl.outLen && nondet_bool()) ctrl.outPos = ctrl.outLen;
-        if (received > 0) lastByte = n;
-        if (n - lastByte >= q) quietSeen = TRUE;
+        if (s - lastByte >= q) quietSeen = TRUE;
 
-        const BOOL called = CBMC__SKIPS ? nondet_bool() : 1;
+        const BOOL called = CBMC__SKIPS && !CBMC__LONG_SKIPS ? nondet_bool() : 1;
         const BOOL before = cmd.EXECUTE.value;
         if (called) {
             cmd.EXECUTE.value = nondet_bool();
@@ -352,7 +436,7 @@ int main(void) {
         const BOOL edge = called && cmd.EXECUTE.value && !before;
         if (edge && !cmd.BUSY.value) {
             rule = cmd.CHECKRULE.value;
-            edgeScan = n; /* the FB takes this edge: L1 counts the executions from this scan on */
+            edgeScan = s; /* the FB takes this edge: L1 counts the executions from this scan on */
         }
         const BOOL doneBefore = cmd.DONE.value;
         const int count0 = tx->COUNT, wrIdx0 = tx->WRIDX;
@@ -366,9 +450,18 @@ int main(void) {
 
         /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
         if (!called && watch.busy) watch.busyScans++;
-        if (called)
+        if (called && gap > 0 && cmd.REPLIED.value && cmd.BUSY.value) againAfterGap = TRUE;
+        if (called) {
+            const int bound = watch.bound;
+            if (againAfterGap) watch.bound = 1 << 20;
             CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
-                     cmd.ERRORID.value);
+                         cmd.ERRORID.value);
+            watch.bound = bound;
+            if (againAfterGap)
+                __CPROVER_assert(watch.busyScans <= bound,
+                                 "P8 (D26) Busy within the bound after a new wait begun after a gap");
+            if (!cmd.BUSY.value) againAfterGap = FALSE;
+        }
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
         const unsigned char first = tx->BUFFER.table[Ring(wrIdx0)];
@@ -384,10 +477,11 @@ int main(void) {
         int took = TOOK_NOTHING;
         if (written > 0) {
             __CPROVER_assert(requests == 0 || frames.checked
-                                 || ((frames.damaged || frames.frame || n - lastRequest >= t) && quietSeen),
+                                 || ((frames.damaged || frames.frame || s - lastRequest >= t) && quietSeen),
                              "R2 no request while the one before it awaits its reply");
             ++requests;
-            lastRequest = n;
+            lastRequest = s;
+            skippedReply = FALSE;
             quietSeen = FALSE;
             frames = (Frames){0};
             /* R4: a frame carries the command's text or the probe's, nothing else (the controller would run it). */
@@ -408,7 +502,7 @@ int main(void) {
                     check = check * 10 + (tx->BUFFER.table[Ring(wrIdx0 + 3 + textLength + i)] - '0');
             /* The line brings the request to the controller in this scan, or loses it. */
             polled = kind == REQ_POLL;
-            took = nondet_bool() ? TOOK_LOST : Take(&ctrl, kind, zeroForm, check, n);
+            took = nondet_bool() ? TOOK_LOST : Take(&ctrl, kind, zeroForm, check, s);
         }
         /* R3: Done only after a reply that checks: since the last request a frame came whose CHECK the
          * command's rule accepts; a serial link is never left unchecked. */
@@ -432,6 +526,7 @@ int main(void) {
                              "L1 Done only if the controller executed the command's text once since the edge");
             __CPROVER_assert(runs != 1 || own, "L2 Done carries the answer of the command's own execution");
             if (runs == 1 && own) reachDoneExecuted = 1;
+            if (runs == 1 && own && skippedReply) reachSkippedReply = 1;
             if (polled) reachDoneAfterPoll = 1;
         }
 
@@ -469,8 +564,14 @@ int main(void) {
 #else
     (void)reachDoneAfterPoll;
 #endif
-#if CBMC__SKIPS
+#if CBMC__SKIPS || CBMC__LONG_SKIPS
     __CPROVER_assert(!reachSkippedBusy, "reach: the FB left out of a scan while Busy");
+#endif
+#if CBMC__LONG_SKIPS
+    __CPROVER_assert(!reachSkippedReply, "reach: Done with the command's own answer after the FB was left out of two "
+                                         "scans or more while the reply came in");
+#else
+    (void)reachSkippedReply;
 #endif
 #if CBMC__PLC_RESTARTS
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");

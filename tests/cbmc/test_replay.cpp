@@ -30,6 +30,7 @@ int pac_cbmc_automatic_main(void);
 int pac_cbmc_mc_main(void);
 int pac_cbmc_mc_no_plc_restart_main(void);
 int pac_cbmc_rs232_main(void);
+int pac_cbmc_rs232_no_gaps_main(void);
 int pac_cbmc_rs232_restarts_main(void);
 int pac_cbmc_rs232_deep_main(void);
 
@@ -85,6 +86,7 @@ void Replay(const Counterexample& c) {
         {"Mc", pac_cbmc_mc_main},
         {"Mc.NoPlcRestart", pac_cbmc_mc_no_plc_restart_main},
         {"Rs232Cmd", pac_cbmc_rs232_main},
+        {"Rs232Cmd.NoGaps", pac_cbmc_rs232_no_gaps_main},
         {"Rs232Cmd.Restarts", pac_cbmc_rs232_restarts_main},
         {"Rs232Cmd.Deep", pac_cbmc_rs232_deep_main},
     };
