@@ -48,14 +48,30 @@ static MC_MOVEABSOLUTE move;
 static MC_HALT halt;
 static MC_RESET reset;
 static FB_PAC_MCAXIS mcAxis;
-/* The cold-start values, for a PLC restart. */
-static ST_PAC_AXISREF refFresh;
-static MC_POWER powerFresh;
-static MC_STOP stopFresh;
-static MC_MOVEABSOLUTE moveFresh;
-static MC_HALT haltFresh;
-static MC_RESET resetFresh;
-static FB_PAC_MCAXIS mcAxisFresh;
+/* The pins a run sets once. */
+typedef struct {
+    TIME timeout, stopTimeout;
+    BOOL integerMode;
+} RunPins;
+/* A PLC cold start, the first and every restart: each instance from its init function and the run's pins (the
+ * init functions again, not a copy of the first cold start kept aside: the same values without a second
+ * instance of every FB for CBMC to write field by field). */
+static void ColdStart(const RunPins *pins) {
+    __pacst_init_ST_PAC_AXISREF(&ref);
+    MC_POWER_init__(&power, FALSE);
+    MC_STOP_init__(&stop, FALSE);
+    MC_MOVEABSOLUTE_init__(&move, FALSE);
+    MC_HALT_init__(&halt, FALSE);
+    MC_RESET_init__(&reset, FALSE);
+    FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
+    mcAxis.TIMEOUT.value = pins->timeout;
+    mcAxis.STOPTIMEOUT.value = pins->stopTimeout;
+    mcAxis.INTEGERMODE.value = pins->integerMode;
+    mcAxis.MAXVELOCITY.value = 100.0f;
+    mcAxis.MAXACCELERATION.value = 100.0f;
+    move.POSITION.value = 10.5f;
+    move.VELOCITY.value = 50.0f;
+}
 
 /* Everything the harness runs, for the waiting scans (stutter_axis.h): the state before a scan's calls, and a
  * copy after them with the counters set to the state before's. */
@@ -68,16 +84,6 @@ typedef struct {
     MC_RESET reset;
     FB_PAC_MCAXIS mcAxis;
 } McState;
-static McState before, normalised;
-static void Snapshot(McState *s) {
-    s->ref = ref;
-    s->power = power;
-    s->stop = stop;
-    s->move = move;
-    s->halt = halt;
-    s->reset = reset;
-    s->mcAxis = mcAxis;
-}
 /* What the program and the controller hand the blocks in a scan: a waiting scan's are those of the scan before. */
 typedef struct {
     BYTE fromPac[8], opStatus;
@@ -90,6 +96,17 @@ static BOOL SameInputs(const Inputs *a, const Inputs *b) {
     for (int i = 0; i < 4; ++i) same = same && a->called[i] == b->called[i] && a->execute[i] == b->execute[i];
     return same;
 }
+#if CBMC__STUTTER /* only where compared: every field an assignment of CBMC's at the start */
+static McState before, normalised;
+static void Snapshot(McState *s) {
+    s->ref = ref;
+    s->power = power;
+    s->stop = stop;
+    s->move = move;
+    s->halt = halt;
+    s->reset = reset;
+    s->mcAxis = mcAxis;
+}
 /* Still: every instance after the scan (at nowNs) as before it (at beforeNs), but for the counters of the TONs
  * (FB_PAC_Axis's, FB_PAC_McAxis's HaltTimer, MC_Reset's ResetTimer) and the take-over's AnswerTime. */
 static BOOL StillMc(long long beforeNs, long long nowNs) {
@@ -97,13 +114,20 @@ static BOOL StillMc(long long beforeNs, long long nowNs) {
     BOOL along = AxisCountersAlong(&before.mcAxis.MODULE, &normalised.mcAxis.MODULE, beforeNs, nowNs);
     along = TonCountersAlong(&before.mcAxis.HALTTIMER, &normalised.mcAxis.HALTTIMER, beforeNs, nowNs) && along;
     along = TonCountersAlong(&before.reset.RESETTIMER, &normalised.reset.RESETTIMER, beforeNs, nowNs) && along;
+#ifdef __CPROVER__
+    /* CBMC compares two structs with == (its C extension) member by member; word by word through a pointer each
+     * word is a byte extraction from the whole state, the work growing with its square. */
+    return along && normalised == before;
+#else
     return along && SameWords(&normalised, &before, sizeof normalised);
+#endif
 }
 static BOOL McNoLimitPasses(void) {
     return AxisNoLimitPasses(&before.mcAxis.MODULE, &mcAxis.MODULE)
            && before.mcAxis.HALTTIMER.Q.value == mcAxis.HALTTIMER.Q.value
            && before.reset.RESETTIMER.Q.value == reset.RESETTIMER.Q.value;
 }
+#endif
 
 /* A block's call as an ST program makes it: on the axis reference itself (VAR_IN_OUT) where pacst's C passes it by
  * reference; in, the body, out where it copies (MATIEC's C, in the replay of a MATIEC build). By reference the
@@ -143,13 +167,6 @@ int main(void) {
     int reachPlcRestart = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
-    __pacst_init_ST_PAC_AXISREF(&ref);
-    MC_POWER_init__(&power, FALSE);
-    MC_STOP_init__(&stop, FALSE);
-    MC_MOVEABSOLUTE_init__(&move, FALSE);
-    MC_HALT_init__(&halt, FALSE);
-    MC_RESET_init__(&reset, FALSE);
-    FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
     unsigned t = 1 + nondet_uchar() % CBMC__TMAX;
     const unsigned st = 1 + nondet_uchar() % CBMC__TMAX;
     if (CBMC__TSLOW > 0 && (CBMC__ONLY_MOVE || nondet_bool())) t += CBMC__TSLOW - 1; /* the slowest bus's take-over */
@@ -161,20 +178,11 @@ int main(void) {
     moveWatch.bound = 1000;
     /* FB_PAC_McCommand posts every edge, also one while Busy: a new job, whose Busy counts from its edge. */
     stopWatch.edgeRestarts = haltWatch.edgeRestarts = resetWatch.edgeRestarts = moveWatch.edgeRestarts = TRUE;
-    mcAxis.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-    mcAxis.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
-    mcAxis.INTEGERMODE.value = !CBMC__ONLY_MOVE && nondet_bool();
-    mcAxis.MAXVELOCITY.value = 100.0f;
-    mcAxis.MAXACCELERATION.value = 100.0f;
-    move.POSITION.value = 10.5f;
-    move.VELOCITY.value = 50.0f;
-    refFresh = ref;
-    powerFresh = power;
-    stopFresh = stop;
-    moveFresh = move;
-    haltFresh = halt;
-    resetFresh = reset;
-    mcAxisFresh = mcAxis;
+    RunPins pins;
+    pins.timeout = __time_make(0, (long)t * CYCLE_NS);
+    pins.stopTimeout = __time_make(0, (long)st * CYCLE_NS);
+    pins.integerMode = !CBMC__ONLY_MOVE && nondet_bool();
+    ColdStart(&pins);
     const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
     /* The waiting scans (CBMC__STUTTER): the clock is n + stretched ms. */
     long stretched = 0;
@@ -192,13 +200,7 @@ int main(void) {
         BOOL restarted = FALSE;
         /* A PLC cold start: every instance back to its initial values; what the harness knows starts anew. */
         if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
-            ref = refFresh;
-            power = powerFresh;
-            stop = stopFresh;
-            move = moveFresh;
-            halt = haltFresh;
-            reset = resetFresh;
-            mcAxis = mcAxisFresh;
+            ColdStart(&pins);
             stopWatch = stopWatch0;
             moveWatch = moveWatch0;
             haltWatch = haltWatch0;
@@ -270,7 +272,9 @@ int main(void) {
             if (d >= 2) stutterReach.stretch = TRUE;
         }
         if (moveSkipRun >= 2) moveLongSkip = TRUE;
-        if (CBMC__STUTTER) Snapshot(&before);
+#if CBMC__STUTTER
+        Snapshot(&before);
+#endif
         const BOOL startBefore = (mcAxis.TOPAC.value.table[3] & 0x04u) != 0;
         /* Held from an earlier scan: the stop's Execute is still TRUE in this one. */
         const BOOL heldBefore = stopHeld && stop.EXECUTE.value;
@@ -295,7 +299,8 @@ int main(void) {
         CALL_ON_REF(FB_PAC_MCAXIS, mcAxis);
 #endif
         const long nowMs = n + stretched;
-        if (CBMC__STUTTER) {
+#if CBMC__STUTTER
+        {
             /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan
              * after a still one (after a stretch too) is still, unless it passes a limit. */
             const long long nowNs = (long long)nowMs * CYCLE_NS;
@@ -306,6 +311,7 @@ int main(void) {
             if (prevStill && noLimit) stutterReach.waiting = TRUE;
             prevStill = still;
         }
+#endif
         /* The slowest bus's handshake: ACTIVE 16 ms or more after Start rose, MC_MoveAbsolute Done after it was
          * left out of two scans or more since its edge. */
         if ((mcAxis.TOPAC.value.table[3] & 0x04u) != 0 && !startBefore) {
