@@ -8,7 +8,8 @@
  * StopTimeout (1..TMAX ms). Free too a PLC restart: every block, FB_PAC_McAxis and the axis reference back to
  * their cold-start values. With -DCBMC__STUTTER=1 the scans in which the PLC only waits are compressed
  * (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same run);
- * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over).
+ * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over);
+ * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -24,7 +25,7 @@
 #ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
 #define CBMC__PLC_RESTARTS 1
 #endif
-/* 1: only what the slowest bus's move needs is free (Cbmc.McSlowBus): MC_Stop, MC_Halt and MC_Reset are never
+/* 1: only what the slowest bus's move needs is free (a hand run, docs/verification.md): MC_Stop, MC_Halt and MC_Reset are never
  * called, MC_Power.Enable is TRUE, ModeChange and IntegerMode FALSE, Timeout only TSLOW .. TSLOW + TMAX - 1 ms;
  * MC_MoveAbsolute's calls and Execute, the operating status and the module's bytes stay free in every scan. */
 #ifndef CBMC__ONLY_MOVE
@@ -96,7 +97,7 @@ static BOOL SameInputs(const Inputs *a, const Inputs *b) {
     for (int i = 0; i < 4; ++i) same = same && a->called[i] == b->called[i] && a->execute[i] == b->execute[i];
     return same;
 }
-#if CBMC__STUTTER /* only where compared: every field an assignment of CBMC's at the start */
+#if CBMC__STUTTER /* declared only where compared: CBMC initialises every field of a global, a step each */
 static McState before, normalised;
 static void Snapshot(McState *s) {
     s->ref = ref;
