@@ -8,7 +8,8 @@
  * StopTimeout (1..TMAX ms). Free too a PLC restart: every block, FB_PAC_McAxis and the axis reference back to
  * their cold-start values. With -DCBMC__STUTTER=1 the scans in which the PLC only waits are compressed
  * (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same run);
- * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over).
+ * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over);
+ * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -23,6 +24,12 @@
 #endif
 #ifndef CBMC__PLC_RESTARTS /* 0: no PLC restart (the counterexamples recorded before it was free replay so) */
 #define CBMC__PLC_RESTARTS 1
+#endif
+/* 1: only what the slowest bus's move needs is free (a hand run, docs/verification.md): MC_Stop, MC_Halt and MC_Reset are never
+ * called, MC_Power.Enable is TRUE, ModeChange and IntegerMode FALSE, Timeout only TSLOW .. TSLOW + TMAX - 1 ms;
+ * MC_MoveAbsolute's calls and Execute, the operating status and the module's bytes stay free in every scan. */
+#ifndef CBMC__ONLY_MOVE
+#define CBMC__ONLY_MOVE 0
 #endif
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
@@ -42,14 +49,30 @@ static MC_MOVEABSOLUTE move;
 static MC_HALT halt;
 static MC_RESET reset;
 static FB_PAC_MCAXIS mcAxis;
-/* The cold-start values, for a PLC restart. */
-static ST_PAC_AXISREF refFresh;
-static MC_POWER powerFresh;
-static MC_STOP stopFresh;
-static MC_MOVEABSOLUTE moveFresh;
-static MC_HALT haltFresh;
-static MC_RESET resetFresh;
-static FB_PAC_MCAXIS mcAxisFresh;
+/* The pins a run sets once. */
+typedef struct {
+    TIME timeout, stopTimeout;
+    BOOL integerMode;
+} RunPins;
+/* A PLC cold start, the first and every restart: each instance from its init function and the run's pins (the
+ * init functions again, not a copy of the first cold start kept aside: the same values without a second
+ * instance of every FB for CBMC to write field by field). */
+static void ColdStart(const RunPins *pins) {
+    __pacst_init_ST_PAC_AXISREF(&ref);
+    MC_POWER_init__(&power, FALSE);
+    MC_STOP_init__(&stop, FALSE);
+    MC_MOVEABSOLUTE_init__(&move, FALSE);
+    MC_HALT_init__(&halt, FALSE);
+    MC_RESET_init__(&reset, FALSE);
+    FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
+    mcAxis.TIMEOUT.value = pins->timeout;
+    mcAxis.STOPTIMEOUT.value = pins->stopTimeout;
+    mcAxis.INTEGERMODE.value = pins->integerMode;
+    mcAxis.MAXVELOCITY.value = 100.0f;
+    mcAxis.MAXACCELERATION.value = 100.0f;
+    move.POSITION.value = 10.5f;
+    move.VELOCITY.value = 50.0f;
+}
 
 /* Everything the harness runs, for the waiting scans (stutter_axis.h): the state before a scan's calls, and a
  * copy after them with the counters set to the state before's. */
@@ -62,16 +85,6 @@ typedef struct {
     MC_RESET reset;
     FB_PAC_MCAXIS mcAxis;
 } McState;
-static McState before, normalised;
-static void Snapshot(McState *s) {
-    s->ref = ref;
-    s->power = power;
-    s->stop = stop;
-    s->move = move;
-    s->halt = halt;
-    s->reset = reset;
-    s->mcAxis = mcAxis;
-}
 /* What the program and the controller hand the blocks in a scan: a waiting scan's are those of the scan before. */
 typedef struct {
     BYTE fromPac[8], opStatus;
@@ -84,6 +97,17 @@ static BOOL SameInputs(const Inputs *a, const Inputs *b) {
     for (int i = 0; i < 4; ++i) same = same && a->called[i] == b->called[i] && a->execute[i] == b->execute[i];
     return same;
 }
+#if CBMC__STUTTER /* declared only where compared: CBMC initialises every field of a global, a step each */
+static McState before, normalised;
+static void Snapshot(McState *s) {
+    s->ref = ref;
+    s->power = power;
+    s->stop = stop;
+    s->move = move;
+    s->halt = halt;
+    s->reset = reset;
+    s->mcAxis = mcAxis;
+}
 /* Still: every instance after the scan (at nowNs) as before it (at beforeNs), but for the counters of the TONs
  * (FB_PAC_Axis's, FB_PAC_McAxis's HaltTimer, MC_Reset's ResetTimer) and the take-over's AnswerTime. */
 static BOOL StillMc(long long beforeNs, long long nowNs) {
@@ -91,41 +115,46 @@ static BOOL StillMc(long long beforeNs, long long nowNs) {
     BOOL along = AxisCountersAlong(&before.mcAxis.MODULE, &normalised.mcAxis.MODULE, beforeNs, nowNs);
     along = TonCountersAlong(&before.mcAxis.HALTTIMER, &normalised.mcAxis.HALTTIMER, beforeNs, nowNs) && along;
     along = TonCountersAlong(&before.reset.RESETTIMER, &normalised.reset.RESETTIMER, beforeNs, nowNs) && along;
+#ifdef __CPROVER__
+    /* CBMC compares two structs with == (its C extension) member by member; word by word through a pointer each
+     * word is a byte extraction from the whole state, the work growing with its square. */
+    return along && normalised == before;
+#else
     return along && SameWords(&normalised, &before, sizeof normalised);
+#endif
 }
 static BOOL McNoLimitPasses(void) {
     return AxisNoLimitPasses(&before.mcAxis.MODULE, &mcAxis.MODULE)
            && before.mcAxis.HALTTIMER.Q.value == mcAxis.HALTTIMER.Q.value
            && before.reset.RESETTIMER.Q.value == reset.RESETTIMER.Q.value;
 }
+#endif
 
-static BOOL stopCalled;
+/* A block's call as an ST program makes it: on the axis reference itself (VAR_IN_OUT) where pacst's C passes it by
+ * reference; in, the body, out where it copies (MATIEC's C, in the replay of a MATIEC build). By reference the
+ * blocks' own Axis members keep their initial values, out of the formula, also through a PLC restart. */
+#ifdef PACST_BODY_REF
+#define CALL_ON_REF(NAME, fb) NAME##_body_ref__(&(fb), &ref)
+#else
+#define CALL_ON_REF(NAME, fb)                                                                                      \
+    do {                                                                                                           \
+        (fb).AXIS.value = ref;                                                                                     \
+        NAME##_body__(&(fb));                                                                                      \
+        ref = (fb).AXIS.value;                                                                                     \
+    } while (0)
+#endif
+static BOOL stopCalled, moveCalled, haltCalled, resetCalled;
 static void CallStop(void) {
-    if (!stopCalled) return;
-    stop.AXIS.value = ref;
-    MC_STOP_body__(&stop);
-    ref = stop.AXIS.value;
+    if (stopCalled) CALL_ON_REF(MC_STOP, stop);
 }
-static BOOL moveCalled;
 static void CallMove(void) {
-    if (!moveCalled) return;
-    move.AXIS.value = ref;
-    MC_MOVEABSOLUTE_body__(&move);
-    ref = move.AXIS.value;
+    if (moveCalled) CALL_ON_REF(MC_MOVEABSOLUTE, move);
 }
-static BOOL haltCalled;
 static void CallHalt(void) {
-    if (!haltCalled) return;
-    halt.AXIS.value = ref;
-    MC_HALT_body__(&halt);
-    ref = halt.AXIS.value;
+    if (haltCalled) CALL_ON_REF(MC_HALT, halt);
 }
-static BOOL resetCalled;
 static void CallReset(void) {
-    if (!resetCalled) return;
-    reset.AXIS.value = ref;
-    MC_RESET_body__(&reset);
-    ref = reset.AXIS.value;
+    if (resetCalled) CALL_ON_REF(MC_RESET, reset);
 }
 
 int main(void) {
@@ -139,16 +168,9 @@ int main(void) {
     int reachPlcRestart = 0;
 
     __CURRENT_TIME = __time_make(0, 0);
-    __pacst_init_ST_PAC_AXISREF(&ref);
-    MC_POWER_init__(&power, FALSE);
-    MC_STOP_init__(&stop, FALSE);
-    MC_MOVEABSOLUTE_init__(&move, FALSE);
-    MC_HALT_init__(&halt, FALSE);
-    MC_RESET_init__(&reset, FALSE);
-    FB_PAC_MCAXIS_init__(&mcAxis, FALSE);
     unsigned t = 1 + nondet_uchar() % CBMC__TMAX;
     const unsigned st = 1 + nondet_uchar() % CBMC__TMAX;
-    if (CBMC__TSLOW > 0 && nondet_bool()) t += CBMC__TSLOW - 1; /* the slowest bus's take-over fits */
+    if (CBMC__TSLOW > 0 && (CBMC__ONLY_MOVE || nondet_bool())) t += CBMC__TSLOW - 1; /* the slowest bus's take-over */
     /* P8, the Busy bounds of MC_blocks.md: a halt or stop ends by StopTimeout after the scan FB_PAC_McAxis took
      * it (the scan of the edge here, the blocks called before it), shown one call later; MC_Reset by
      * 2 x Timeout after its edge scan. A move has no bound: it takes as long as the axis moves. */
@@ -157,20 +179,11 @@ int main(void) {
     moveWatch.bound = 1000;
     /* FB_PAC_McCommand posts every edge, also one while Busy: a new job, whose Busy counts from its edge. */
     stopWatch.edgeRestarts = haltWatch.edgeRestarts = resetWatch.edgeRestarts = moveWatch.edgeRestarts = TRUE;
-    mcAxis.TIMEOUT.value = __time_make(0, (long)t * CYCLE_NS);
-    mcAxis.STOPTIMEOUT.value = __time_make(0, (long)st * CYCLE_NS);
-    mcAxis.INTEGERMODE.value = nondet_bool();
-    mcAxis.MAXVELOCITY.value = 100.0f;
-    mcAxis.MAXACCELERATION.value = 100.0f;
-    move.POSITION.value = 10.5f;
-    move.VELOCITY.value = 50.0f;
-    refFresh = ref;
-    powerFresh = power;
-    stopFresh = stop;
-    moveFresh = move;
-    haltFresh = halt;
-    resetFresh = reset;
-    mcAxisFresh = mcAxis;
+    RunPins pins;
+    pins.timeout = __time_make(0, (long)t * CYCLE_NS);
+    pins.stopTimeout = __time_make(0, (long)st * CYCLE_NS);
+    pins.integerMode = !CBMC__ONLY_MOVE && nondet_bool();
+    ColdStart(&pins);
     const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
     /* The waiting scans (CBMC__STUTTER): the clock is n + stretched ms. */
     long stretched = 0;
@@ -188,13 +201,7 @@ int main(void) {
         BOOL restarted = FALSE;
         /* A PLC cold start: every instance back to its initial values; what the harness knows starts anew. */
         if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
-            ref = refFresh;
-            power = powerFresh;
-            stop = stopFresh;
-            move = moveFresh;
-            halt = haltFresh;
-            reset = resetFresh;
-            mcAxis = mcAxisFresh;
+            ColdStart(&pins);
             stopWatch = stopWatch0;
             moveWatch = moveWatch0;
             haltWatch = haltWatch0;
@@ -210,14 +217,14 @@ int main(void) {
         for (int i = 0; i < 8; ++i) mcAxis.FROMPAC.value.table[i] = nondet_uchar();
         for (int i = 8; i < 12; ++i) mcAxis.FROMPAC.value.table[i] = 0;
         mcAxis.OPSTATUS.value = nondet_uchar();
-        mcAxis.MODECHANGE.value = nondet_bool();
-        power.ENABLE.value = nondet_bool();
+        mcAxis.MODECHANGE.value = !CBMC__ONLY_MOVE && nondet_bool();
+        power.ENABLE.value = CBMC__ONLY_MOVE || nondet_bool();
         const BOOL stopBefore = stop.EXECUTE.value, moveBefore = move.EXECUTE.value;
         const BOOL haltBefore = halt.EXECUTE.value, resetBefore = reset.EXECUTE.value;
-        stopCalled = nondet_bool();
+        stopCalled = !CBMC__ONLY_MOVE && nondet_bool();
         moveCalled = nondet_bool();
-        haltCalled = nondet_bool();
-        resetCalled = nondet_bool();
+        haltCalled = !CBMC__ONLY_MOVE && nondet_bool();
+        resetCalled = !CBMC__ONLY_MOVE && nondet_bool();
         if ((!stopCalled && stop.BUSY.value) || (!moveCalled && move.BUSY.value) || (!haltCalled && halt.BUSY.value)
             || (!resetCalled && reset.BUSY.value))
             reachSkippedBusy = 1;
@@ -227,7 +234,7 @@ int main(void) {
         if (resetCalled) reset.EXECUTE.value = nondet_bool();
         const BOOL stopEdge = stop.EXECUTE.value && !stopBefore, moveEdge = move.EXECUTE.value && !moveBefore;
         const BOOL haltEdge = halt.EXECUTE.value && !haltBefore, resetEdge = reset.EXECUTE.value && !resetBefore;
-        const BOOL stopFirst = nondet_bool();
+        const BOOL stopFirst = !CBMC__ONLY_MOVE && nondet_bool();
         moveSkipRun = (!moveCalled && move.BUSY.value) ? moveSkipRun + 1 : 0;
         if (moveEdge) moveLongSkip = FALSE;
         /* The waiting scan (stutter_axis.h): the inputs, the calls and their order those of the scan before. After
@@ -266,30 +273,35 @@ int main(void) {
             if (d >= 2) stutterReach.stretch = TRUE;
         }
         if (moveSkipRun >= 2) moveLongSkip = TRUE;
-        if (CBMC__STUTTER) Snapshot(&before);
+#if CBMC__STUTTER
+        Snapshot(&before);
+#endif
         const BOOL startBefore = (mcAxis.TOPAC.value.table[3] & 0x04u) != 0;
         /* Held from an earlier scan: the stop's Execute is still TRUE in this one. */
         const BOOL heldBefore = stopHeld && stop.EXECUTE.value;
 
-        power.AXIS.value = ref;
-        MC_POWER_body__(&power);
-        ref = power.AXIS.value;
-        if (stopFirst) {
-            CallStop();
-            CallMove();
-            CallHalt();
-            CallReset();
-        } else {
+        CALL_ON_REF(MC_POWER, power);
+        /* Stop, MoveAbsolute, Halt, Reset or the reverse: seven guarded calls hold both orders, where two whole
+         * orders in an IF would have CBMC execute each block's body twice per scan. */
+        if (!stopFirst) {
             CallReset();
             CallHalt();
             CallMove();
-            CallStop();
         }
-        mcAxis.AXIS.value = ref;
-        FB_PAC_MCAXIS_body__(&mcAxis);
-        ref = mcAxis.AXIS.value;
+        CallStop();
+        if (stopFirst) {
+            CallMove();
+            CallHalt();
+            CallReset();
+        }
+#ifdef PACST_BODY_REF
+        FB_PAC_MCAXIS_body_ref__(&mcAxis, &ref, &mcAxis.TOPAC.value, &mcAxis.FROMPAC.value);
+#else
+        CALL_ON_REF(FB_PAC_MCAXIS, mcAxis);
+#endif
         const long nowMs = n + stretched;
-        if (CBMC__STUTTER) {
+#if CBMC__STUTTER
+        {
             /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan
              * after a still one (after a stretch too) is still, unless it passes a limit. */
             const long long nowNs = (long long)nowMs * CYCLE_NS;
@@ -300,6 +312,7 @@ int main(void) {
             if (prevStill && noLimit) stutterReach.waiting = TRUE;
             prevStill = still;
         }
+#endif
         /* The slowest bus's handshake: ACTIVE 16 ms or more after Start rose, MC_MoveAbsolute Done after it was
          * left out of two scans or more since its edge. */
         if ((mcAxis.TOPAC.value.table[3] & 0x04u) != 0 && !startBefore) {
@@ -396,16 +409,26 @@ int main(void) {
         if (reset.DONE.value && resetBusySeen) reachResetDone = 1;
         if (reset.BUSY.value) resetBusySeen = 1;
     }
-    __CPROVER_assert(!reachStopDone, "reach: MC_Stop Done");
-    __CPROVER_assert(!reachHeld, "reach: a stop held over a scan");
     __CPROVER_assert(!reachMoveBusy, "reach: MC_MoveAbsolute Busy");
     __CPROVER_assert(!reachMoveAborted, "reach: MC_MoveAbsolute CommandAborted");
+    __CPROVER_assert(!reachSkippedBusy, "reach: a block left out of a scan while Busy");
+#if !CBMC__ONLY_MOVE /* the blocks' own checks, where they are called */
+    __CPROVER_assert(!reachStopDone, "reach: MC_Stop Done");
+    __CPROVER_assert(!reachHeld, "reach: a stop held over a scan");
     __CPROVER_assert(!reachReleased, "reach: Standstill after the stop is released");
     __CPROVER_assert(!reachStopFailedHeld, "reach: a stop ended with Error held over a scan");
     __CPROVER_assert(!reachBrakingRefused, "reach: a move refused while a stopped axis shows ACTIVE");
     __CPROVER_assert(!reachHaltDone, "reach: MC_Halt Done");
     __CPROVER_assert(!reachResetDone, "reach: MC_Reset Done after Busy");
-    __CPROVER_assert(!reachSkippedBusy, "reach: a block left out of a scan while Busy");
+#else
+    (void)reachStopDone;
+    (void)reachHeld;
+    (void)reachReleased;
+    (void)reachStopFailedHeld;
+    (void)reachBrakingRefused;
+    (void)reachHaltDone;
+    (void)reachResetDone;
+#endif
 #if CBMC__PLC_RESTARTS /* 0: the replay of counterexamples recorded before it, and the hand runs with STUTTER */
     __CPROVER_assert(!reachPlcRestart, "reach: a PLC restart");
 #else
