@@ -223,19 +223,24 @@ typedef struct {
  * FBs tell apart (a short command, the parked read's own code, a long move, each stop, a code with bit 15 set),
  * for either caller. Param and Data take two values each: enough to tell two commands apart. */
 static const WORD codes[] = {0x1906, 0x190B, 0x0A87, 0x0600, 0x0A93, 0x0A9A, 0x9906};
-/* With CBMC__SECOND_FEW the second caller's, Param and Data 0: a short command and a stop, what it needs to end
- * Done on a command of its own and to supersede the first caller's (16#8007) beside the first caller's handshake. */
-static const WORD codesFew[] = {0x1906, 0x0600};
+/* With CBMC__SECOND_FEW the second caller's (few): a short command or a stop, Param and Data 0, what it needs to
+ * end Done on a command of its own and to supersede the first caller's (16#8007) beside the first one's handshake. */
 static void SetPins(FB_PAC_CMD *fb, BOOL few) {
     fb->EXECUTE.value = nondet_bool();
+#if CBMC__SECOND_FEW
     if (few) {
-        fb->CODE.value = codesFew[nondet_bool() ? 1 : 0];
-    } else {
-        const unsigned char pick = nondet_uchar();
-        fb->CODE.value = codes[pick % (sizeof codes / sizeof codes[0])];
+        fb->CODE.value = nondet_bool() ? 0x0600 : 0x1906;
+        fb->PARAM.value = FALSE;
+        fb->DATA.value = FALSE;
+        return;
     }
-    fb->PARAM.value = few ? FALSE : nondet_bool();
-    fb->DATA.value = few ? FALSE : nondet_bool();
+#else
+    (void)few;
+#endif
+    const unsigned char pick = nondet_uchar();
+    fb->CODE.value = codes[pick % (sizeof codes / sizeof codes[0])];
+    fb->PARAM.value = nondet_bool();
+    fb->DATA.value = nondet_bool();
 }
 
 static void Check(const FB_PAC_CMD *fb, Watch *w, Controller *c, int n, BOOL edge) {
