@@ -14,7 +14,10 @@
  * starts past its first handshake (a program running since its cold start), so that the K scans go to commands;
  * a PLC restart starts a fresh channel, whose first handshake is then checked. With -DCBMC__STUTTER=1 the scans
  * in which the PLC only waits are compressed (stutter.h: after a still scan up to CBMC__STRETCH_MAX more in one
- * step, and S1, that this loses nothing, checked in the same run).
+ * step, and S1, that this loses nothing, checked in the same run). A narrower program for a deeper run:
+ * -DCBMC__READING fixes the controller's reading, -DCBMC__SECOND_FEW the second caller's Code to a short command
+ * or a stop (Param and Data 0), -DCBMC__SECOND_ALWAYS calls it in every scan; -DCBMC__TWOSTEP and -DCBMC__TMAX
+ * fix TwoStepWrite and the timeouts (docs/verification.md, "two callers on the slowest bus, narrowed").
  * Properties are __CPROVER_assert with a description "P<n> ..."; reachability checks are asserts that
  * describe themselves "reach: ..." and must FAIL (tests/cbmc/paccbmc.py checks both). */
 #include "harness.h"
@@ -52,6 +55,16 @@
 #endif
 #ifndef CBMC__STRETCH_MAX /* a stretch: 0..STRETCH_MAX more waiting scans in one step (a power of 2 less 1) */
 #define CBMC__STRETCH_MAX 15
+#endif
+#ifndef CBMC__READING /* the controller's reading of the handshake: free (-1), or fixed (0: SEND <> RECEIVE, 1: a
+                        changed SEND) for a run that takes one reading per test */
+#define CBMC__READING (-1)
+#endif
+#ifndef CBMC__SECOND_FEW /* the second caller's Code from a short command and a stop only, Param and Data 0 */
+#define CBMC__SECOND_FEW 0
+#endif
+#ifndef CBMC__SECOND_ALWAYS /* the second caller called in every scan (its skips are the runs without this) */
+#define CBMC__SECOND_ALWAYS 0
 #endif
 
 #define PARKED_CODE 0x190B
@@ -210,8 +223,20 @@ typedef struct {
  * FBs tell apart (a short command, the parked read's own code, a long move, each stop, a code with bit 15 set),
  * for either caller. Param and Data take two values each: enough to tell two commands apart. */
 static const WORD codes[] = {0x1906, 0x190B, 0x0A87, 0x0600, 0x0A93, 0x0A9A, 0x9906};
-static void SetPins(FB_PAC_CMD *fb) {
+/* With CBMC__SECOND_FEW the second caller's (few): a short command or a stop, Param and Data 0, what it needs to
+ * end Done on a command of its own and to supersede the first caller's (16#8007) beside the first one's handshake. */
+static void SetPins(FB_PAC_CMD *fb, BOOL few) {
     fb->EXECUTE.value = nondet_bool();
+#if CBMC__SECOND_FEW
+    if (few) {
+        fb->CODE.value = nondet_bool() ? 0x0600 : 0x1906;
+        fb->PARAM.value = FALSE;
+        fb->DATA.value = FALSE;
+        return;
+    }
+#else
+    (void)few;
+#endif
     const unsigned char pick = nondet_uchar();
     fb->CODE.value = codes[pick % (sizeof codes / sizeof codes[0])];
     fb->PARAM.value = nondet_bool();
@@ -294,7 +319,7 @@ int main(void) {
         longSkip[i] = FALSE;
     }
 
-    ctrl.bySendChange = nondet_bool();
+    ctrl.bySendChange = CBMC__READING < 0 ? nondet_bool() : CBMC__READING != 0;
     __CURRENT_TIME = __time_make(0, 0);
     FB_PAC_CMDINTERFACE_init__(&ifaceFresh, FALSE);
     ifaceFresh.TWOSTEPWRITE.value = twoStep;
@@ -343,11 +368,11 @@ int main(void) {
         for (int i = 0; i < 8; ++i) waiting = waiting && reply[i] == prevReply[i];
         for (int i = 0; i < CBMC__CALLERS; ++i) {
             /* A caller left out of a scan keeps its pins: a program assigns them in the call it does not make. */
-            called[i] = nondet_bool();
+            called[i] = (CBMC__SECOND_ALWAYS && i == 1) || nondet_bool();
             const BOOL before = cmd[i].EXECUTE.value;
             const WORD codeBefore = cmd[i].CODE.value, paramBefore = cmd[i].PARAM.value;
             const DWORD dataBefore = cmd[i].DATA.value;
-            if (called[i]) SetPins(&cmd[i]);
+            if (called[i]) SetPins(&cmd[i], CBMC__SECOND_FEW && i == 1);
             waiting = waiting && called[i] == prevCalled[i] && cmd[i].EXECUTE.value == before
                       && cmd[i].CODE.value == codeBefore && cmd[i].PARAM.value == paramBefore
                       && cmd[i].DATA.value == dataBefore;
