@@ -52,65 +52,63 @@ bool RunCommand(pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd, std::uint16_
     return done;
 }
 
-TEST(TimeZero, CmdEndTimeoutZeroIsSixtySeconds) {
+// Brings the controller to ONLINE as a PLC program gets there (5.2.1.3: the external stop input 7 powered, then
+// 0603) and sends a long move (0A87) with `endTimeout`, until the controller acknowledged it; then freezes the
+// controller's replies on their way to the PLC, so that END OF PROCESSING never shows.
+void StartMoveWithoutEnd(pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd, const BusTiming& t,
+                         nanoseconds endTimeout) {
+    plc.Call(cmd);
+    plc.Start();
+    plc.Scan(5 + 2 * t.latency + 3);
+    plc.Controller().Io().inputs.Set(7, true);
+    ASSERT_TRUE(RunCommand(plc, cmd, 0x0700, 4, 7));
+    ASSERT_TRUE(RunCommand(plc, cmd, 0x0603, 0, 0));
+    plc.Scan(3 + 2 * t.latency);
+    ASSERT_EQ(plc.Controller().OperatingStatus(), 31);
+    cmd->CODE.value = 0x0A87;
+    cmd->PARAM.value = 1;
+    cmd->DATA.value = pac::test::BitsOf(5000.0F);
+    cmd->ENDTIMEOUT.value = pac::ToIecTime(endTimeout);
+    cmd->EXECUTE.value = TRUE;
+    ASSERT_GT(plc.ScanUntil([&] { return cmd->ACKNOWLEDGED.value != 0; }, 10000), 0) << "the move runs";
+    plc.Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+}
+
+// Each bus timing: a rig and an FB_PAC_Cmd with its move acknowledged and its end never to show, then `check`.
+template <class Check>
+void OnEveryTimingAfterAMoveWithoutEnd(nanoseconds endTimeout, Check check) {
     for (const BusTiming& t : Timings()) {
         SCOPED_TRACE(Describe(t));
         pac::PacRig plc(pac::test::RigTimingOf(t));
         auto cmd = PAC_FB(FB_PAC_CMD);
-        plc.Call(cmd);
-        plc.Start();
-        plc.Scan(5 + 2 * t.latency + 3);
-        // ONLINE as a PLC program gets there (5.2.1.3): the external stop input 7 powered, then 0603.
-        plc.Controller().Io().inputs.Set(7, true);
-        ASSERT_TRUE(RunCommand(plc, cmd, 0x0700, 4, 7));
-        ASSERT_TRUE(RunCommand(plc, cmd, 0x0603, 0, 0));
-        plc.Scan(3 + 2 * t.latency);
-        ASSERT_EQ(plc.Controller().OperatingStatus(), 31);
-        cmd->CODE.value = 0x0A87;
-        cmd->PARAM.value = 1;
-        cmd->DATA.value = pac::test::BitsOf(5000.0F);
-        cmd->ENDTIMEOUT.value = pac::ToIecTime(0s);
-        cmd->EXECUTE.value = TRUE;
-        ASSERT_GT(plc.ScanUntil([&] { return cmd->ACKNOWLEDGED.value != 0; }, 10000), 0) << "the move runs";
-        // The controller's replies stop reaching the PLC: END OF PROCESSING never shows.
-        plc.Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+        StartMoveWithoutEnd(plc, cmd, t, endTimeout);
+        if (::testing::Test::HasFatalFailure()) return;
+        check(plc, cmd, t);
+    }
+}
+
+TEST(TimeZero, CmdEndTimeoutZeroIsSixtySeconds) {
+    OnEveryTimingAfterAMoveWithoutEnd(0s, [](pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd, const BusTiming& t) {
         const nanoseconds waited = TimeToFinal(plc, cmd, 70s);
         EXPECT_EQ(cmd->ERRORID.value, kLibEndTimeout);
         EXPECT_GE(waited, 59s);
         EXPECT_LE(waited, 60s + t.PlcCycle());
-    }
+    });
 }
 
 // EndTimeout is taken when the command takes the interface: FB_PAC_CmdInterface bounds the wait of an FB left
 // out with that value, so the FB called in every scan bounds it with the same, whatever the program writes to
 // the pin afterwards.
 TEST(TimeZero, CmdEndTimeoutIsTakenWithTheInterface) {
-    for (const BusTiming& t : Timings()) {
-        SCOPED_TRACE(Describe(t));
-        pac::PacRig plc(pac::test::RigTimingOf(t));
-        auto cmd = PAC_FB(FB_PAC_CMD);
-        plc.Call(cmd);
-        plc.Start();
-        plc.Scan(5 + 2 * t.latency + 3);
-        plc.Controller().Io().inputs.Set(7, true);
-        ASSERT_TRUE(RunCommand(plc, cmd, 0x0700, 4, 7));
-        ASSERT_TRUE(RunCommand(plc, cmd, 0x0603, 0, 0));
-        plc.Scan(3 + 2 * t.latency);
-        ASSERT_EQ(plc.Controller().OperatingStatus(), 31);
-        cmd->CODE.value = 0x0A87;
-        cmd->PARAM.value = 1;
-        cmd->DATA.value = pac::test::BitsOf(5000.0F);
-        cmd->ENDTIMEOUT.value = pac::ToIecTime(200ms);
-        cmd->EXECUTE.value = TRUE;
-        ASSERT_GT(plc.ScanUntil([&] { return cmd->ACKNOWLEDGED.value != 0; }, 10000), 0) << "the move runs";
-        plc.Bus().FromPacLink().SetFault(plc.Now(), pac::sim::LinkFault::kFrozen);
+    OnEveryTimingAfterAMoveWithoutEnd(200ms, [](pac::PacRig& plc, pac::FbInstance<FB_PAC_CMD>& cmd,
+                                                const BusTiming& t) {
         cmd->ENDTIMEOUT.value = pac::ToIecTime(5s);  // too late for this command: it took the interface
         const nanoseconds waited = TimeToFinal(plc, cmd, 10s);
         EXPECT_EQ(cmd->ERRORID.value, kLibEndTimeout);
         // The wait began in the scan that saw the acknowledgement, the scan before this one.
         EXPECT_LE(waited, 200ms + t.PlcCycle()) << waited.count() << " ns";
         EXPECT_GE(waited, 200ms - t.PlcCycle()) << waited.count() << " ns";
-    }
+    });
 }
 
 TEST(TimeZero, CtrlTimeoutZeroIsTenSeconds) {
