@@ -1093,11 +1093,11 @@ class ExprCompiler:
             # SHR on a UDINT (TwinCAT_DynCollections' F_Murmur3_Hash): the bits of the bit string of its width; SHR
             # on a signed one (FB_Array_List's SHR(THIS^._Count, 1)) fills with the sign bit, as CODESYS's help says
             self.comp.dialect(node, f"{fn} on {t.name}")
-            bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
-                T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
             if t.is_signed and fn == "SHR":
                 ncode = self.coerce(self.expr(count, T.INT), T.INT, count, "shift count")
                 return TE(t, f"__sar_{t.cname}({te.code}, (long){ncode})")
+            bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
+                T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
             shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
         if not t.is_bit:
