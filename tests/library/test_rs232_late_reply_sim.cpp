@@ -26,6 +26,7 @@
 #include "pac/sim/command_table.hpp"
 #include "pac/sim/serial_port.hpp"
 #include "pac/st_program.hpp"
+#include "real_bits.hpp"
 #include "rs232_case.hpp"
 
 namespace {
@@ -274,5 +275,97 @@ TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitRanOut) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkipPastTimeout, kTimings, LateCaseName);
+
+// The first request goes out, and the program leaves the FB out from the next scan until a call `late` after the edge,
+// past the whole bound the page states ((Retries + 1) x 3 x Timeout + one request for AUTO's probe +
+// EndTimeout). The answer came in meanwhile, and it would begin a new wait: a refused frame (the FB's CHECK rule
+// is not the controller's: 16, send again), a reply the first call cannot read (the driver holds RxBuffer: a lost
+// reply, send again), AUTO's probe answered (the move goes out next), or a move acknowledged with BE = 0 (EOT
+// polls for BE = 1). The first call after the bound ends the command with the code of that wait (the refusal's
+// QUIT, 16#8001, 16#8002) and sends nothing more, so Busy never outlasts the bound, however long the FB was left
+// out.
+enum class PastBound { kRefused, kUnread, kProbeAnswered, kLongCommand };
+
+class Rs232SkipPastBound : public ::testing::TestWithParam<LateCase> {};
+
+TEST_P(Rs232SkipPastBound, TheFirstCallAfterTheBoundBeginsNoNewWait) {
+    constexpr nanoseconds kTimeout = 100ms;
+    constexpr nanoseconds kEndTimeout = 1s;
+    constexpr nanoseconds kBound = 5 * 3 * kTimeout + kEndTimeout;
+    const nanoseconds plcCycle = std::chrono::milliseconds(GetParam().plcMs);
+    const FreeCommand move{code::kPosAxisAbsolute, 1, pac::test::BitsOf(12.5F)};
+    const auto controllersRule = GetParam().verify == pac::sim::CheckVerification::kXorText
+                                     ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
+                                     : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+    const auto otherRule = controllersRule == E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
+                               ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX
+                               : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT;
+    int failing = 0;
+    int cases = 0;
+    for (const PastBound kind : {PastBound::kRefused, PastBound::kUnread, PastBound::kProbeAnswered,
+                                 PastBound::kLongCommand})
+    for (const nanoseconds late : {kBound + plcCycle, 2 * kBound}) {
+        ++cases;
+        const char* names[] = {"a refused frame", "a reply held from the first call", "AUTO's probe answered",
+                               "a move acknowledged with BE = 0"};
+        SCOPED_TRACE(std::string(names[static_cast<int>(kind)]) + ", first call after the edge " +
+                     std::to_string(late.count() / 1000000) + " ms after it");
+        LateReplyPlc plc(GetParam(), 0ns);
+        // ONLINE first (the move runs only there), by an instance whose rule is then confirmed; AUTO's probe
+        // goes out before a move only from a fresh instance, which lets the line fall quiet before it.
+        plc.LeadIn();
+        plc.Run({code::kStartOnline, 0, 0});
+        ASSERT_TRUE(plc.Cmd()->DONE.value) << "0603: ErrorID 16#" << std::hex << plc.Cmd()->ERRORID.value;
+        plc.Cmd()->EXECUTE.value = FALSE;
+        plc.LeadIn();
+        if (kind == PastBound::kProbeAnswered) plc.Restart();
+        plc.Cmd()->TIMEOUT.value = pac::ToIecTime(kTimeout);
+        plc.Cmd()->ENDTIMEOUT.value = pac::ToIecTime(kEndTimeout);
+        plc.Cmd()->CHECKRULE.value = kind == PastBound::kRefused         ? otherRule
+                                     : kind == PastBound::kProbeAnswered ? E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO
+                                                                         : controllersRule;
+        const FreeCommand command = kind == PastBound::kLongCommand || kind == PastBound::kProbeAnswered ? move : kReadA;
+        std::uint16_t code = 0x8001;
+        if (kind == PastBound::kRefused) code = 16;
+        if (kind == PastBound::kLongCommand) code = 0x8002;
+        // Left out from the scan after the first request until `late` after the edge.
+        nanoseconds edge = -1ns;
+        const int beforeTheEdge = plc.Requests();
+        plc.LeaveOut([&] { return edge >= 0ns && plc.Requests() > beforeTheEdge && plc.Rig().Now() < edge + late; });
+        if (kind == PastBound::kUnread) {
+            plc.Rig().HoldRxBuffer([&] {
+                return edge >= 0ns && plc.Rig().Now() >= edge + late && plc.Rig().Now() < edge + late + plcCycle;
+            });
+        }
+        plc.Edge(command);
+        plc.Rig().Scan();
+        edge = plc.Rig().Now();
+        while (plc.Requests() == beforeTheEdge && plc.Rig().Now() < edge + kTimeout) plc.Rig().Scan();
+        const int sentBeforeTheSkip = plc.Requests() - beforeTheEdge;
+        const int before = plc.Requests();
+        while (plc.LastCall() < edge + late) plc.Rig().Scan();
+        const bool busyPastBound = plc.Cmd()->BUSY.value;
+        while (plc.Rig().Now() < edge + late + 10s && !plc.Cmd()->DONE.value && !plc.Cmd()->ERROR.value) {
+            plc.Rig().Scan();
+        }
+        const int sentAfter = plc.Requests() - before;
+        const int executed = plc.Executed(command);
+        // The read whose reply was held ran once; the refused frame and the move behind the probe never reached
+        // the controller.
+        const int executedOnce = kind == PastBound::kLongCommand || kind == PastBound::kUnread ? 1 : 0;
+        const bool ok = sentBeforeTheSkip == 1 && sentAfter == 0 && !busyPastBound && plc.Cmd()->ERROR.value &&
+                        plc.Cmd()->ERRORID.value == code && executed == executedOnce;
+        if (!ok) ++failing;
+        EXPECT_EQ(sentBeforeTheSkip, 1) << "the first request goes out before the skip";
+        EXPECT_EQ(sentAfter, 0) << "a request went out after the bound";
+        EXPECT_FALSE(busyPastBound) << "Busy in the first call after the bound";
+        EXPECT_TRUE(plc.Cmd()->ERROR.value);
+        EXPECT_EQ(plc.Cmd()->ERRORID.value, code) << std::hex << "ErrorID 16#" << plc.Cmd()->ERRORID.value;
+        EXPECT_EQ(executed, executedOnce);
+    }
+    EXPECT_EQ(failing, 0) << failing << " of " << cases << " skips failed";
+}
+
+INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkipPastBound, kTimings, LateCaseName);
 
 }  // namespace
