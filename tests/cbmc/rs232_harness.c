@@ -289,11 +289,6 @@ int main(void) {
     static FB_PAC_RS232CMD cmd, fresh;
     Controller ctrl = {0};
     PlcOpenWatch watch = {0};
-    /* D26 (open): since the job's first call after a gap, that call having taken a reply or its absence and begun
-     * a new wait (a request to send again after a refused frame or a reply whose Timeout ran out in the gap, the
-     * command after AUTO's probe, or the wait for END OF PROCESSING after an acknowledgement that came in the
-     * gap). P8 is asserted apart on these paths, so that CI holds P8 on every other path while D26 is known open. */
-    BOOL againAfterGap = FALSE;
     Frames frames = {0};
     E_PAC_RS232CHECK rule = E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO; /* CheckRule at the last edge */
     int requests = 0, lastRequest = 0, lastByte = -1000, edgeScan = 0;
@@ -316,9 +311,10 @@ int main(void) {
     fresh.QUIETTIME.value = __time_make(0, (long)q * CYCLE_NS);
     fresh.RETRIES.value = nondet_bool();
     /* Busy: per request at most Timeout for a quiet line, Timeout for room in TxBuffer and Timeout for the
-     * reply, Retries + 1 requests before the acknowledgement, then EndTimeout (FB_PAC_Rs232Cmd.md, "A noisy
-     * line"). */
-    watch.bound = (fresh.RETRIES.value + 1) * 3 * t + e;
+     * reply, Retries + 1 requests before the acknowledgement (one more for AUTO's probe), then EndTimeout,
+     * however long the FB was left out (FB_PAC_Rs232Cmd.md, "A noisy line"); set again at each edge for its
+     * CheckRule. */
+    watch.bound = (fresh.RETRIES.value + 2) * 3 * t + e;
     fresh.TXBUFFER.value.WRIDX = RING - 10; /* the first command frame wraps round the ring's end */
     cmd = fresh;
     T_PAC_COMBUFFER *tx = &cmd.TXBUFFER.value, *rx = &cmd.RXBUFFER.value;
@@ -437,6 +433,7 @@ int main(void) {
         if (edge && !cmd.BUSY.value) {
             rule = cmd.CHECKRULE.value;
             edgeScan = s; /* the FB takes this edge: L1 counts the executions from this scan on */
+            watch.bound = (cmd.RETRIES.value + 1 + (rule == E_PAC_RS232CHECK__PAC_RS232_CHECK_AUTO)) * 3 * t + e;
         }
         const BOOL doneBefore = cmd.DONE.value;
         const int count0 = tx->COUNT, wrIdx0 = tx->WRIDX;
@@ -450,18 +447,9 @@ int main(void) {
 
         /* P1..P4, P8 (plcopen_props.h); P8 counts the scans, not the calls. */
         if (!called && watch.busy) watch.busyScans++;
-        if (called && gap > 0 && cmd.REPLIED.value && cmd.BUSY.value) againAfterGap = TRUE;
-        if (called) {
-            const int bound = watch.bound;
-            if (againAfterGap) watch.bound = 1 << 20;
+        if (called)
             CheckPlcOpen(&watch, cmd.EXECUTE.value, edge, cmd.BUSY.value, cmd.DONE.value, cmd.ERROR.value, FALSE,
                          cmd.ERRORID.value);
-            watch.bound = bound;
-            if (againAfterGap)
-                __CPROVER_assert(watch.busyScans <= bound,
-                                 "P8 (D26) Busy within the bound after a new wait begun after a gap");
-            if (!cmd.BUSY.value) againAfterGap = FALSE;
-        }
         /* R1: a request goes into TxBuffer whole (a command frame SOH .. EOT, or an EOT poll), only into its
          * free space, never into a buffer the driver holds. */
         const unsigned char first = tx->BUFFER.table[Ring(wrIdx0)];
