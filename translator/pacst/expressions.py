@@ -7,7 +7,7 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import TE, Ref, _cls, _name, pos
+from .common import TE, Ref, _cls, _name, first_output, first_output_cfunc, first_output_returnable, pos
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
@@ -747,6 +747,8 @@ class ExprCompiler:
             return self._string_function(node, up)
         if up in self.comp.pous:
             pou = self.comp.pous[up]
+            if pou.ret is None and self.comp.user and not pou.native and pou.kind == "function":
+                return self._first_output_value(node, pou)
             if pou.ret is None and (pou.native or self.comp.user):
                 raise self.err(node, f"FUNCTION {pou.name} returns nothing: call it as a statement")
             if pou.kind == "fb":
@@ -767,6 +769,23 @@ class ExprCompiler:
         if up in STANDARD_FUNCTIONS:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
+
+    def _first_output_value(self, node, pou):
+        """User mode: the value of a FUNCTION without a result type is its first VAR_OUTPUT after the call, as
+        TwinCAT 3 gives it (`bSuccess := F_Swap_Generics(A, B, bSuccess => bSuccess)`), read through the C
+        function emit.py declares beside it (docs/user_dialect.md)."""
+        first = first_output(pou)
+        if first is None:
+            raise self.err(node, f"FUNCTION {pou.name} has no result type and no VAR_OUTPUT, so its call has no "
+                                 "value: call it as a statement")
+        if not first_output_returnable(first):
+            raise self.err(node, f"FUNCTION {pou.name} has no result type and its first VAR_OUTPUT '{first.name}' "
+                                 f"is of type {first.type.name}, which pacst does not give as a call's value: "
+                                 "call it as a statement and read the output")
+        self.comp.dialect(node, "the value of a FUNCTION without a result type (its first VAR_OUTPUT)")
+        te = self._user_call(node, pou)
+        assert te.code.startswith(pou.cfunc + "(")
+        return TE(first.type, first_output_cfunc(pou) + te.code[len(pou.cfunc):])
 
     def _math(self, node, fn, want):
         """User mode: the numeric standard functions on REAL and LREAL (an integer argument is an LREAL), TRUNC
