@@ -729,6 +729,7 @@ class ExprCompiler:
             src = self.default_type(te, None).name if te.type.kind in ("anyint", "anyreal") else te.type.name
             if te.type.is_enum:
                 src = "DINT"
+            src = {"DATE_AND_TIME": "DT", "TIME_OF_DAY": "TOD"}.get(src, src)  # TO_DT of a DT converts nothing
             self.comp.dialect(node, f"the generic conversion {up}")
             if te.type.is_pointer:  # F_Generic_To_String, _To_LREAL: the address, a ULINT on TwinCAT's 64-bit targets
                 address = f"((ULINT)(uintptr_t)({te.code}))"
@@ -995,6 +996,8 @@ class ExprCompiler:
             if src == dst:
                 (arg,) = self._positional(node, 1, ["IN"])
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
+        if self.comp.user and src in ("STRING", "WSTRING") and dst in ("TIME", "LTIME", *T.USER_DATES):
+            return self._text_to_time(node, src, dst)
         if self.comp.user and dst == "STRING" and src in ("TIME", "LTIME", *T.USER_DATES):
             return self._time_to_string(node, src)
         if self.comp.user and {src, dst} & set(T.USER_DATES):
@@ -1039,12 +1042,27 @@ class ExprCompiler:
             return TE(T.STRING, f"__pacst_time_to_string({code}, {1 if st is T.LTIME else 0})")
         return TE(T.STRING, f"__pacst_date_to_string({code}, {[T.DATE, T.TOD, T.DT].index(st)})")
 
+    def _text_to_time(self, node, src, dst):
+        """User mode: a STRING or WSTRING to TIME, LTIME, DATE, TOD or DT: the literal of the type in the text, as
+        TwinCAT's help writes them (T#1h30m, LTIME#1s2us44ns, D#2002-08-18, TOD#14:01:05.123,
+        DT#1998-02-13-14:20:00), spaces before it skipped; text that is no such literal gives 0."""
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.WSTRING if src == "WSTRING" else T.STRING
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, f"{src}_TO_{dst}")
+        if dst == "LTIME":
+            return TE(T.LTIME, f"__time_from_ns(__pacst_string_to_ns({code}))")
+        if dst == "TIME":  # TIME's resolution: whole milliseconds
+            return TE(T.TIME, f"__time_from_ms((int64_t)(__pacst_string_to_ns({code}) / 1000000u))")
+        dt = T.USER_DATES[dst]
+        return TE(dt, f"__pacst_string_to_date({code}, {[T.DATE, T.TOD, T.DT].index(dt)})")
+
     def _date_conversion(self, node, src, dst):
         """User mode: DATE, TIME_OF_DAY and DATE_AND_TIME as TwinCAT and CODESYS convert them: to and from
         numbers their count (seconds, TOD milliseconds) cut to 32 bits; DT to DATE its midnight, DT to TOD its
         time of day, DATE to DT the same second; TOD to and from TIME the milliseconds."""
         numbers = dict(T.ELEMENTARY, **T.USER_ELEMENTARY)
-        types = dict(numbers, TIME=T.TIME, **T.USER_DATES)
+        types = dict(numbers, TIME=T.TIME, LTIME=T.LTIME, **T.USER_DATES)
         name = f"{src}_TO_{dst}"
         for tname in (src, dst):
             if tname not in types or tname == "STRING":
@@ -1064,14 +1082,20 @@ class ExprCompiler:
                 return TE(dt, f"((UDINT)({code} % 86400U * 1000U))")
             if (st, dt) == (T.DATE, T.DT):
                 return TE(dt, code)
+            if (st, dt) == (T.TOD, T.DT):  # the same second of 1970-01-01 (the collections' F_Generic_To_DT)
+                return TE(dt, f"((UDINT)({code} / 1000U))")
             raise self.err(node, f"{name} is outside pacst's user programs: TwinCAT has no such conversion")
         if st.is_time or dt.is_time:
-            if T.TOD not in (st, dt):
-                raise self.err(node, f"{name} is outside pacst's user programs: of DATE, TOD and DT only TOD "
-                                     "converts to and from TIME (milliseconds)")
+            # TOD its milliseconds since midnight; DATE and DT the time since 1970-01-01-00:00:00 in whole seconds
+            # (TIME_TO_DATE its midnight), which the manuals leave open (the collections' F_Generic_To_LTIME)
+            date, time = (dt, st) if st.is_time else (st, dt)
+            ns = 1000000 if date is T.TOD else 1000000000
             if st.is_time:
-                return TE(dt, f"((UDINT)__time_to_ms({code}))")
-            return TE(dt, f"__time_from_ms((int64_t)({code}))")
+                count = f"((UDINT)(__time_to_ns({code}) / {ns}u))" if st is T.LTIME else \
+                    f"((UDINT)__time_to_ms({code}))" if date is T.TOD else f"((UDINT)(__time_to_ms({code}) / 1000))"
+                return TE(dt, f"__pacst_dt_to_date({count})" if dt is T.DATE else count)
+            return TE(dt, f"__time_from_ns((uint64_t)({code}) * {ns}u)" if dt is T.LTIME else
+                      f"__time_from_ms((int64_t)({code}){'' if date is T.TOD else ' * 1000'})")
         # a number: the count, cut to 32 bits (REAL rounded half to even)
         if st.is_date:
             return _converted(T.ELEMENTARY["UDINT"], dt, code)
