@@ -738,6 +738,13 @@ class ExprCompiler:
                 dt = T.ELEMENTARY.get(m.group(1)) or T.USER_ELEMENTARY.get(m.group(1))
                 if dt is not None and (dt.is_int or dt.is_bit or dt.is_real or dt.is_bool):
                     return _converted(T.USER_ELEMENTARY["ULINT"], dt, address)
+                ulint = T.USER_ELEMENTARY["ULINT"]  # TO_LTIME, TO_DT: as ULINT_TO_LTIME and ULINT_TO_DT of it
+                if m.group(1) == "LTIME":
+                    return _ltime_converted(ulint, T.LTIME, address)
+                if m.group(1) == "TIME":
+                    return TE(T.TIME, f"__time_from_ms((int64_t)({address}))")
+                if m.group(1) in T.USER_DATES:
+                    return TE(T.USER_DATES[m.group(1)], _converted(ulint, T.ELEMENTARY["UDINT"], address).code)
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
