@@ -113,11 +113,13 @@ class BodyCompiler:
         return self._member_target(name_node, "methods")
 
     def _member_target(self, name_node, table):
-        name_node = self.this(name_node)
+        through_this = self.this(name_node)
+        explicit, name_node = through_this is not name_node, through_this
         if _cls(name_node) == "SimpleVariable":
             fb = self._fb_of_body()
             m = getattr(fb, table).get(_name(name_node.name).upper()) if fb is not None else None
-            if m is None or self.pou.var(_name(name_node.name)) is not None:
+            # a METHOD's own variable hides the FB's METHOD of its name, but not from THIS^.Name
+            if m is None or self.pou.var(_name(name_node.name)) is not None and not explicit:
                 return None
             return "data__", m
         if _cls(name_node) != "MultiElementVariable" or not name_node.elements:
