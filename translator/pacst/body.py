@@ -293,6 +293,13 @@ class BodyCompiler:
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         return Ref(f"(*({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))", False, t, r.var)
 
+    def _caret(self, r, node):
+        """`x^`: what the POINTER x points at; x a REFERENCE TO POINTER is read through first, as TwinCAT reads
+        `pNode^.Key` with `pNode : REFERENCE TO POINTER TO ST_Node` (the collections' Delete_Node)."""
+        if self.comp.user and r.type.is_pointer and r.type.reference and r.type.target.is_pointer:
+            r = self._deref(r, node)
+        return self._deref(r, node)
+
     def _through(self, r, node, raw):
         """`r`, read through when it is a REFERENCE (unless `raw`: REF= and __ISVALIDREF want the reference)."""
         if r.type.is_pointer and r.type.reference and not raw:
@@ -306,7 +313,7 @@ class BodyCompiler:
             if node.dereferenced and not self.comp.user:
                 raise self.err(node, "pointers are outside the portable subset")
             r = self._root(node.name)
-            return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
+            return self._caret(r, node) if node.dereferenced else self._through(r, node, raw)
         if self.comp.user and (cls == "ChainedFunctionCall" or cls == "FunctionCall" and node.dereferenced):
             return self._through(self.call_result(node), node, raw)
         if cls != "MultiElementVariable":
@@ -320,7 +327,7 @@ class BodyCompiler:
         qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
         if qualified is None and node.name.dereferenced:
-            r = self._deref(r, node.name)
+            r = self._caret(r, node.name)
         elif elements:
             r = self._through(r, node.name, False)
         for k, el in enumerate(elements):
