@@ -1160,18 +1160,27 @@ class Compiler:
         return base
 
     def _inherit(self, pou, base):
-        """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
-        for this FB's instance (from the base's text: their errors name the base's lines)."""
-        own = set(pou.methods)
-        own_properties = set(pou.properties)  # before the loop: a base's Get and Set are both inherited
+        """The METHODs, ACTIONs and PROPERTYs of the base, and of its bases, that this FB does not override (the
+        nearest base's first), and the base's body as SUPER^(), compiled for this FB's instance (from the base's
+        text: their errors name the base's lines)."""
         members = []
         saved = self.file
         try:
+            level = base
+            while level is not None:  # the base's base's too: the nearest one's wins (user mode)
+                own = set(pou.methods)
+                own_properties = set(pou.properties)  # before the loop: a base's Get and Set are both inherited
+                self.file = level.file
+                start = len(members)
+                for node in self.members.get(id(level.node), []):
+                    if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
+                            or _cls(node) != "Property" and _name(node.name).upper() not in own:
+                        members.append(self._member(pou, node, inherited=True))
+                for m in members[start:]:
+                    if m is not None:
+                        m.inherited_from = level
+                level = level.base
             self.file = base.file
-            for node in self.members.get(id(base.node), []):
-                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
-                        or _cls(node) != "Property" and _name(node.name).upper() not in own:
-                    members.append(self._member(pou, node, inherited=True))
             for node in self.members.get(id(base.node), []):
                 if _cls(node) != "Property":
                     members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
@@ -1185,7 +1194,8 @@ class Compiler:
         finally:
             self.file = saved
         for m in members:
-            m.inherited_from = base
+            if m.inherited_from is None:
+                m.inherited_from = base
         return members
 
     def _accessor(self, node, name, kind, t):
