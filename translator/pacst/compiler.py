@@ -137,7 +137,7 @@ class Compiler:
         self.gvl_declaring = None  # the GlobalList whose variables are being declared (user mode)
         self.later_fbs = set()  # upper names of the FUNCTION_BLOCKs of the files compiled (user mode)
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
-        self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
+        self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
