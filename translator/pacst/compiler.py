@@ -1506,11 +1506,13 @@ class Compiler:
         up = name.upper()
         if pou.var(name) is not None or up in pou.externals:
             raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
-        if up in self.types or up in self.pous or up in self.declared_at:
+        # user mode: a FUNCTION without a result type may name a variable like itself (TcUnit's TEST: Test)
+        own = self.user and up == pou.cname and pou.kind == "function" and pou.ret is None and pou.owner is None
+        if (up in self.types or up in self.pous or up in self.declared_at) and not own:
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
         if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
-        if up == pou.cname:
+        if up == pou.cname and not own:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
         v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
         if constant and value is None and section not in ("inout", "input"):
