@@ -634,6 +634,12 @@ class BodyCompiler:
         expr = node.expression
         if _cls(expr) in ("Integer",) and literals.int_value(expr) == 0:
             return [ind + target.write("NULL")]
+        if _cls(expr) == "FunctionCall" and not expr.dereferenced:  # R REF= Results.Get(): a REFERENCE result
+            te = self.ex.expr(expr, target.type)
+            if not (te.type.is_pointer and te.type.reference and te.type.target is target.type.target):
+                raise self.err(expr, f"REF= of a call's {te.type.name} to a {target.type.name}: the call must "
+                                     f"return a {target.type.name}")
+            return [ind + target.write(f"({target.type.cname})({te.code})")]
         src = self.ref(expr, raw=True)
         if src.type.is_pointer and src.type.reference:
             value = src.read()
