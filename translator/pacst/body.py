@@ -995,6 +995,9 @@ class BodyCompiler:
                     or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up):
                 raise self.err(node, f"FUNCTION {name} called as a statement: assign its result (MATIEC)")
             raise self.err(node, f"undeclared function block instance '{name}'")
+        if not v.type.is_fb and self.comp.user and up in self.comp.function_names:
+            raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
+                                 "the variable to call the FUNCTION")
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
         if self.pou.kind == "function" and any(x is v for x in self.pou.vars):  # in a METHOD's VAR (user mode)

@@ -144,6 +144,7 @@ class Compiler:
         self.enum_values = {}  # upper value -> EnumType
         self.enum_shared = {}  # user mode: upper value -> the EnumTypes that share it (written E.A only)
         self.declared_at = {}  # upper name -> (file, line) for every global name, including later ones
+        self.function_names = set()  # user mode: the upper names of the program's FUNCTIONs, later ones too
         self.program = Program()
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
@@ -191,6 +192,8 @@ class Compiler:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
+                if name is not None and _cls(item) == "Function":
+                    self.function_names.add(name.upper())
         self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
         attached = set()
         for src in sources if self.user else []:
@@ -1506,9 +1509,11 @@ class Compiler:
         up = name.upper()
         if pou.var(name) is not None or up in pou.externals:
             raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
-        # user mode: a FUNCTION without a result type may name a variable like itself (TcUnit's TEST: Test)
+        # user mode: a FUNCTION without a result type may name a variable like itself (TcUnit's TEST: Test), and a
+        # variable may have another FUNCTION's name (TEST_ORDERED's Test), which it hides inside this POU
         own = self.user and up == pou.cname and pou.kind == "function" and pou.ret is None and pou.owner is None
-        if (up in self.types or up in self.pous or up in self.declared_at) and not own:
+        hides = self.user and up != pou.cname and up in self.function_names and up not in self.types
+        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides):
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
         if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")

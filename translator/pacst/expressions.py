@@ -753,6 +753,10 @@ class ExprCompiler:
             return self._std_numeric(node, up, want)
         if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
             return self._string_function(node, up)
+        if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
+                and self.comp.pous[up].kind == "function":
+            raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
+                                 "the variable to call the FUNCTION")
         if up in self.comp.pous:
             pou = self.comp.pous[up]
             if pou.ret is None and self.comp.user and not pou.native and pou.kind == "function":
