@@ -1099,7 +1099,7 @@ class ExprCompiler:
         if st.is_time or dt.is_time:
             # TOD its milliseconds since midnight; DATE and DT the time since 1970-01-01-00:00:00 in whole seconds
             # (TIME_TO_DATE its midnight), which the manuals leave open (the collections' F_Generic_To_LTIME)
-            date, time = (dt, st) if st.is_time else (st, dt)
+            date = dt if st.is_time else st
             ns = 1000000 if date is T.TOD else 1000000000
             if st.is_time:
                 count = f"((UDINT)(__time_to_ns({code}) / {ns}u))" if st is T.LTIME else \
