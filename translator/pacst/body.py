@@ -950,6 +950,12 @@ class BodyCompiler:
         if target is not None:  # user mode: Axis.Move(...), THIS^.Move(...), Move(...) inside the FB
             if target[1] is self.pou:
                 raise self.err(node, "recursion is outside pacst's user programs")
+            if getattr(target[1], "action", False) and node.parameters:
+                # Ring.A_AddTail(pWrite := p, cbWrite := n): the FB's inputs set, the ACTION run, its outputs read
+                self.comp.dialect(node, "an ACTION called with its FB's pins")
+                fbt = target[1].owner.fbtype
+                call = f"{target[1].cfunc}({target[0]}, TRUE, NULL);"
+                return self._fb_call(node, f"(*{target[0]})", fbt, ind, call=call)
             return [ind + "(void)" + self.ex._user_call(node, target[1], this=target[0]).code + ";"]
         node = dataclasses.replace(node, name=self.this(node.name))
         if self.comp.user and (_cls(node.name) != "SimpleVariable" or node.name.dereferenced or (
@@ -1011,8 +1017,9 @@ class BodyCompiler:
         so EN keeps the TRUE its _init__ gives it and ENO the TRUE; C code keeps both members and `<FB>_body__`."""
         return "_lean" if fbt.standard and not self.comp.user else ""
 
-    def _fb_call(self, node, inst, fbt, ind):
-        """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`."""
+    def _fb_call(self, node, inst, fbt, ind, call=None):
+        """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`; `call`: the C statement run
+        between the pins set and read instead of the FB's body (user mode: an ACTION called with its FB's pins)."""
         pre, post = [], []
         given = set()
         by_reference = inouts_by_reference(fbt.pou)
@@ -1067,6 +1074,11 @@ class BodyCompiler:
         missing = [fv.name for fv in fbt.vars if fv.section == "inout" and fv.cname not in given]
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
+        if call is not None:  # an ACTION: its FB's VAR_IN_OUTs are the members the ACTION reads
+            if addresses:
+                raise self.err(node, f"a VAR_IN_OUT given in a call of an ACTION of {fbt.name} is not translated: call "
+                                     "the FB with it first")
+            return pre + [ind + call] + post
         # A call through a pointer or reference (user mode) may reach an instance of the caller's own type:
         # it keeps the body out of line (PACST_INLINE_ONCE must never meet a recursion).
         direct = "*" not in inst and inst.count("->") <= 1
