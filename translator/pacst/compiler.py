@@ -1519,6 +1519,8 @@ class Compiler:
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
         if up == pou.cname and not own:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
+        if own or hides and (up in self.pous or up in self.declared_at):
+            self.dialect(dv, f"a variable named like the FUNCTION {name}")
         v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
