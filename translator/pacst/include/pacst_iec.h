@@ -750,7 +750,8 @@ static inline UDINT __pacst_string_to_date(STRING s, int kind) {
     if (i + 1 < s.len && s.body[i] == '.' && n == 5)
         for (i++; i < s.len && s.body[i] >= '0' && s.body[i] <= '9'; i++, scale /= 10.0)
             fraction += (double)(s.body[i] - '0') * scale;
-    if (kind == 1) return (UDINT)((part[3] * 3600L + part[4] * 60L + part[5]) * 1000L + (long)(fraction * 1000.0 + 0.5));
+    if (kind == 1)
+        return (UDINT)((part[3] * 3600L + part[4] * 60L + part[5]) * 1000L + (long)(fraction * 1000.0 + 0.5));
     return (UDINT)(__pacst_days_from_civil(part[0], part[1], part[2]) * 86400L + part[3] * 3600L + part[4] * 60L
                    + part[5]);
 }
