@@ -113,11 +113,13 @@ class BodyCompiler:
         return self._member_target(name_node, "methods")
 
     def _member_target(self, name_node, table):
-        name_node = self.this(name_node)
+        through_this = self.this(name_node)
+        explicit, name_node = through_this is not name_node, through_this
         if _cls(name_node) == "SimpleVariable":
             fb = self._fb_of_body()
             m = getattr(fb, table).get(_name(name_node.name).upper()) if fb is not None else None
-            if m is None or self.pou.var(_name(name_node.name)) is not None:
+            # a METHOD's own variable hides the FB's METHOD of its name, but not from THIS^.Name
+            if m is None or self.pou.var(_name(name_node.name)) is not None and not explicit:
                 return None
             return "data__", m
         if _cls(name_node) != "MultiElementVariable" or not name_node.elements:
@@ -291,6 +293,13 @@ class BodyCompiler:
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         return Ref(f"(*({t.cname} *)__pacst_ptr((void *)({r.read()}), \"{where}\"))", False, t, r.var)
 
+    def _caret(self, r, node):
+        """`x^`: what the POINTER x points at; x a REFERENCE TO POINTER is read through first, as TwinCAT reads
+        `pNode^.Key` with `pNode : REFERENCE TO POINTER TO ST_Node` (the collections' Delete_Node)."""
+        if self.comp.user and r.type.is_pointer and r.type.reference and r.type.target.is_pointer:
+            r = self._deref(r, node)
+        return self._deref(r, node)
+
     def _through(self, r, node, raw):
         """`r`, read through when it is a REFERENCE (unless `raw`: REF= and __ISVALIDREF want the reference)."""
         if r.type.is_pointer and r.type.reference and not raw:
@@ -304,7 +313,7 @@ class BodyCompiler:
             if node.dereferenced and not self.comp.user:
                 raise self.err(node, "pointers are outside the portable subset")
             r = self._root(node.name)
-            return self._deref(r, node) if node.dereferenced else self._through(r, node, raw)
+            return self._caret(r, node) if node.dereferenced else self._through(r, node, raw)
         if self.comp.user and (cls == "ChainedFunctionCall" or cls == "FunctionCall" and node.dereferenced):
             return self._through(self.call_result(node), node, raw)
         if cls != "MultiElementVariable":
@@ -318,7 +327,7 @@ class BodyCompiler:
         qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
         if qualified is None and node.name.dereferenced:
-            r = self._deref(r, node.name)
+            r = self._caret(r, node.name)
         elif elements:
             r = self._through(r, node.name, False)
         for k, el in enumerate(elements):
@@ -625,6 +634,12 @@ class BodyCompiler:
         expr = node.expression
         if _cls(expr) in ("Integer",) and literals.int_value(expr) == 0:
             return [ind + target.write("NULL")]
+        if _cls(expr) == "FunctionCall" and not expr.dereferenced:  # R REF= Results.Get(): a REFERENCE result
+            te = self.ex.expr(expr, target.type)
+            if not (te.type.is_pointer and te.type.reference and te.type.target is target.type.target):
+                raise self.err(expr, f"REF= of a call's {te.type.name} to a {target.type.name}: the call must "
+                                     f"return a {target.type.name}")
+            return [ind + target.write(f"({target.type.cname})({te.code})")]
         src = self.ref(expr, raw=True)
         if src.type.is_pointer and src.type.reference:
             value = src.read()
@@ -935,6 +950,12 @@ class BodyCompiler:
         if target is not None:  # user mode: Axis.Move(...), THIS^.Move(...), Move(...) inside the FB
             if target[1] is self.pou:
                 raise self.err(node, "recursion is outside pacst's user programs")
+            if getattr(target[1], "action", False) and node.parameters:
+                # Ring.A_AddTail(pWrite := p, cbWrite := n): the FB's inputs set, the ACTION run, its outputs read
+                self.comp.dialect(node, "an ACTION called with its FB's pins")
+                fbt = target[1].owner.fbtype
+                call = f"{target[1].cfunc}({target[0]}, TRUE, NULL);"
+                return self._fb_call(node, f"(*{target[0]})", fbt, ind, call=call)
             return [ind + "(void)" + self.ex._user_call(node, target[1], this=target[0]).code + ";"]
         node = dataclasses.replace(node, name=self.this(node.name))
         if self.comp.user and (_cls(node.name) != "SimpleVariable" or node.name.dereferenced or (
@@ -980,6 +1001,9 @@ class BodyCompiler:
                     or re.fullmatch(r"[A-Z]+_TO_[A-Z]+", up):
                 raise self.err(node, f"FUNCTION {name} called as a statement: assign its result (MATIEC)")
             raise self.err(node, f"undeclared function block instance '{name}'")
+        if not v.type.is_fb and self.comp.user and up in self.comp.function_names:
+            raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
+                                 "the variable to call the FUNCTION")
         if not v.type.is_fb:
             raise self.err(node, f"'{name}' is a {v.type.name}, not a function block instance")
         if self.pou.kind == "function" and any(x is v for x in self.pou.vars):  # in a METHOD's VAR (user mode)
@@ -993,8 +1017,9 @@ class BodyCompiler:
         so EN keeps the TRUE its _init__ gives it and ENO the TRUE; C code keeps both members and `<FB>_body__`."""
         return "_lean" if fbt.standard and not self.comp.user else ""
 
-    def _fb_call(self, node, inst, fbt, ind):
-        """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`."""
+    def _fb_call(self, node, inst, fbt, ind, call=None):
+        """The C of a call of the FB instance `inst` (its C lvalue) of type `fbt`; `call`: the C statement run
+        between the pins set and read instead of the FB's body (user mode: an ACTION called with its FB's pins)."""
         pre, post = [], []
         given = set()
         by_reference = inouts_by_reference(fbt.pou)
@@ -1049,6 +1074,11 @@ class BodyCompiler:
         missing = [fv.name for fv in fbt.vars if fv.section == "inout" and fv.cname not in given]
         if missing:
             raise self.err(node, f"VAR_IN_OUT {', '.join(missing)} of {fbt.name} must be passed in every call")
+        if call is not None:  # an ACTION: its FB's VAR_IN_OUTs are the members the ACTION reads
+            if addresses:
+                raise self.err(node, f"a VAR_IN_OUT given in a call of an ACTION of {fbt.name} is not translated: call "
+                                     "the FB with it first")
+            return pre + [ind + call] + post
         # A call through a pointer or reference (user mode) may reach an instance of the caller's own type:
         # it keeps the body out of line (PACST_INLINE_ONCE must never meet a recursion).
         direct = "*" not in inst and inst.count("->") <= 1

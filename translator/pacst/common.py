@@ -103,3 +103,21 @@ def chained_dispatcher(itf, proto):
     """The C function through which a METHOD `proto` of the INTERFACE `itf` is called on a call's result (user
     mode: `Buffer.Get(i).Dequeue()`): it takes the INTERFACE by value, so that the call giving it is made once."""
     return f"{itf.cname}__{proto.cname}__CHAIN"
+
+
+def first_output(pou):
+    """The first VAR_OUTPUT of a FUNCTION, or None: the value of a call of a FUNCTION without a result type (user
+    mode, as TwinCAT 3 gives it)."""
+    return next((v for v in pou.vars if v.section == "output"), None)
+
+
+def first_output_returnable(var):
+    """Whether the C function of first_output_cfunc can return `var`'s type by value."""
+    t = var.type
+    return (t.is_elementary or t.is_enum or t.is_pointer or t.is_struct) and not t.is_fb
+
+
+def first_output_cfunc(pou):
+    """The C function that calls the FUNCTION `pou`, which has no result type, and returns its first VAR_OUTPUT
+    (user mode: emit.py declares it beside the FUNCTION)."""
+    return f"{pou.cfunc}__FIRST_OUTPUT"

@@ -137,13 +137,14 @@ class Compiler:
         self.gvl_declaring = None  # the GlobalList whose variables are being declared (user mode)
         self.later_fbs = set()  # upper names of the FUNCTION_BLOCKs of the files compiled (user mode)
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
-        self.inline_arrays = {}  # (low, high, element cname) -> ArrayType of an inline ARRAY declaration
+        self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
         self.enum_shared = {}  # user mode: upper value -> the EnumTypes that share it (written E.A only)
         self.declared_at = {}  # upper name -> (file, line) for every global name, including later ones
+        self.function_names = set()  # user mode: the upper names of the program's FUNCTIONs, later ones too
         self.program = Program()
         self.errors = []
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
@@ -191,6 +192,8 @@ class Compiler:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
+                if name is not None and _cls(item) == "Function":
+                    self.function_names.add(name.upper())
         self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
         attached = set()
         for src in sources if self.user else []:
@@ -1160,18 +1163,27 @@ class Compiler:
         return base
 
     def _inherit(self, pou, base):
-        """The base's METHODs and ACTIONs this FB does not override, and the base's body as SUPER^(), compiled
-        for this FB's instance (from the base's text: their errors name the base's lines)."""
-        own = set(pou.methods)
-        own_properties = set(pou.properties)  # before the loop: a base's Get and Set are both inherited
+        """The METHODs, ACTIONs and PROPERTYs of the base, and of its bases, that this FB does not override (the
+        nearest base's first), and the base's body as SUPER^(), compiled for this FB's instance (from the base's
+        text: their errors name the base's lines)."""
         members = []
         saved = self.file
         try:
+            level = base
+            while level is not None:  # the base's base's too: the nearest one's wins (user mode)
+                own = set(pou.methods)
+                own_properties = set(pou.properties)  # before the loop: a base's Get and Set are both inherited
+                self.file = level.file
+                start = len(members)
+                for node in self.members.get(id(level.node), []):
+                    if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
+                            or _cls(node) != "Property" and _name(node.name).upper() not in own:
+                        members.append(self._member(pou, node, inherited=True))
+                for m in members[start:]:
+                    if m is not None:
+                        m.inherited_from = level
+                level = level.base
             self.file = base.file
-            for node in self.members.get(id(base.node), []):
-                if _cls(node) == "Property" and _name(node.name).split(".")[0].upper() not in own_properties \
-                        or _cls(node) != "Property" and _name(node.name).upper() not in own:
-                    members.append(self._member(pou, node, inherited=True))
             for node in self.members.get(id(base.node), []):
                 if _cls(node) != "Property":
                     members.append(self._member(pou, node, inherited=True, prefix="SUPER__"))
@@ -1185,7 +1197,8 @@ class Compiler:
         finally:
             self.file = saved
         for m in members:
-            m.inherited_from = base
+            if m.inherited_from is None:
+                m.inherited_from = base
         return members
 
     def _accessor(self, node, name, kind, t):
@@ -1496,12 +1509,18 @@ class Compiler:
         up = name.upper()
         if pou.var(name) is not None or up in pou.externals:
             raise self.err(dv, f"variable '{name}' is declared twice (names are case-insensitive)")
-        if up in self.types or up in self.pous or up in self.declared_at:
+        # user mode: a FUNCTION without a result type may name a variable like itself (TcUnit's TEST: Test), and a
+        # variable may have another FUNCTION's name (TEST_ORDERED's Test), which it hides inside this POU
+        own = self.user and up == pou.cname and pou.kind == "function" and pou.ret is None and pou.owner is None
+        hides = self.user and up != pou.cname and up in self.function_names and up not in self.types
+        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides):
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
         if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
-        if up == pou.cname:
+        if up == pou.cname and not own:
             raise self.err(dv, f"variable '{name}' has the name of its POU")
+        if own or hides and (up in self.pous or up in self.declared_at):
+            self.dialect(dv, f"a variable named like the FUNCTION {name}")
         v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")

@@ -8,7 +8,8 @@ import tempfile
 from . import types as T
 from . import varlen
 from .body import program_instance
-from .common import chained_dispatcher, inout_parameter, inouts_by_reference
+from .common import chained_dispatcher, first_output, first_output_cfunc, first_output_returnable, inout_parameter, \
+    inouts_by_reference
 
 _HEADER_NAME = "pacst_iec.h"
 ENUM_NAMES = "pacst_enum_names.h"
@@ -150,7 +151,20 @@ class Emitter:
             out += [f"extern {static_c(v)};" for v in pou.statics]  # VAR_STAT
         else:
             out.append(self._function_signature(pou) + ";")
+            out += self._first_output_function(pou)
         return out
+
+    def _first_output_function(self, pou):
+        """For a FUNCTION without a result type (user mode), the C function that calls it and returns its first
+        VAR_OUTPUT: the call's value, as TwinCAT 3 gives it (expressions.py calls it where the value is used)."""
+        first = first_output(pou) if pou.ret is None and pou.kind == "function" and pou.owner is None \
+            and not pou.native else None
+        if first is None or not first_output_returnable(first):
+            return []
+        names = ["EN", "__ENO"] + [v.cname for v in pou.vars if v.section in ("input", "output", "inout")]
+        return [f"static inline {first.type.cname} {first_output_cfunc(pou)}({', '.join(self._params(pou))}) {{",
+                f"  {pou.cfunc}({', '.join(names)});",
+                f"  return *{first.cname};", "}"]
 
     @staticmethod
     def _body_ref_params(pou):

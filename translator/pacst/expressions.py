@@ -7,7 +7,7 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import TE, Ref, _cls, _name, pos
+from .common import TE, Ref, _cls, _name, first_output, first_output_cfunc, first_output_returnable, pos
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
@@ -729,6 +729,7 @@ class ExprCompiler:
             src = self.default_type(te, None).name if te.type.kind in ("anyint", "anyreal") else te.type.name
             if te.type.is_enum:
                 src = "DINT"
+            src = {"DATE_AND_TIME": "DT", "TIME_OF_DAY": "TOD"}.get(src, src)  # TO_DT of a DT converts nothing
             self.comp.dialect(node, f"the generic conversion {up}")
             if te.type.is_pointer:  # F_Generic_To_String, _To_LREAL: the address, a ULINT on TwinCAT's 64-bit targets
                 address = f"((ULINT)(uintptr_t)({te.code}))"
@@ -737,6 +738,13 @@ class ExprCompiler:
                 dt = T.ELEMENTARY.get(m.group(1)) or T.USER_ELEMENTARY.get(m.group(1))
                 if dt is not None and (dt.is_int or dt.is_bit or dt.is_real or dt.is_bool):
                     return _converted(T.USER_ELEMENTARY["ULINT"], dt, address)
+                ulint = T.USER_ELEMENTARY["ULINT"]  # TO_LTIME, TO_DT: as ULINT_TO_LTIME and ULINT_TO_DT of it
+                if m.group(1) == "LTIME":
+                    return _ltime_converted(ulint, T.LTIME, address)
+                if m.group(1) == "TIME":
+                    return TE(T.TIME, f"__time_from_ms((int64_t)({address}))")
+                if m.group(1) in T.USER_DATES:
+                    return TE(T.USER_DATES[m.group(1)], _converted(ulint, T.ELEMENTARY["UDINT"], address).code)
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
         if up in ("SHL", "SHR", "ROL", "ROR"):
@@ -745,8 +753,14 @@ class ExprCompiler:
             return self._std_numeric(node, up, want)
         if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
             return self._string_function(node, up)
+        if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
+                and self.comp.pous[up].kind == "function":
+            raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
+                                 "the variable to call the FUNCTION")
         if up in self.comp.pous:
             pou = self.comp.pous[up]
+            if pou.ret is None and self.comp.user and not pou.native and pou.kind == "function":
+                return self._first_output_value(node, pou)
             if pou.ret is None and (pou.native or self.comp.user):
                 raise self.err(node, f"FUNCTION {pou.name} returns nothing: call it as a statement")
             if pou.kind == "fb":
@@ -767,6 +781,23 @@ class ExprCompiler:
         if up in STANDARD_FUNCTIONS:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
+
+    def _first_output_value(self, node, pou):
+        """User mode: the value of a FUNCTION without a result type is its first VAR_OUTPUT after the call, as
+        TwinCAT 3 gives it (`bSuccess := F_Swap_Generics(A, B, bSuccess => bSuccess)`), read through the C
+        function emit.py declares beside it (docs/user_dialect.md)."""
+        first = first_output(pou)
+        if first is None:
+            raise self.err(node, f"FUNCTION {pou.name} has no result type and no VAR_OUTPUT, so its call has no "
+                                 "value: call it as a statement")
+        if not first_output_returnable(first):
+            raise self.err(node, f"FUNCTION {pou.name} has no result type and its first VAR_OUTPUT '{first.name}' "
+                                 f"is of type {first.type.name}, which pacst does not give as a call's value: "
+                                 "call it as a statement and read the output")
+        self.comp.dialect(node, "the value of a FUNCTION without a result type (its first VAR_OUTPUT)")
+        te = self._user_call(node, pou)
+        assert te.code.startswith(pou.cfunc + "(")
+        return TE(first.type, first_output_cfunc(pou) + te.code[len(pou.cfunc):])
 
     def _math(self, node, fn, want):
         """User mode: the numeric standard functions on REAL and LREAL (an integer argument is an LREAL), TRUNC
@@ -976,6 +1007,8 @@ class ExprCompiler:
             if src == dst:
                 (arg,) = self._positional(node, 1, ["IN"])
                 return TE(T.BOOL, self.coerce(self.expr(arg, T.BOOL), T.BOOL, arg, "argument"))
+        if self.comp.user and src in ("STRING", "WSTRING") and dst in ("TIME", "LTIME", *T.USER_DATES):
+            return self._text_to_time(node, src, dst)
         if self.comp.user and dst == "STRING" and src in ("TIME", "LTIME", *T.USER_DATES):
             return self._time_to_string(node, src)
         if self.comp.user and {src, dst} & set(T.USER_DATES):
@@ -1020,12 +1053,27 @@ class ExprCompiler:
             return TE(T.STRING, f"__pacst_time_to_string({code}, {1 if st is T.LTIME else 0})")
         return TE(T.STRING, f"__pacst_date_to_string({code}, {[T.DATE, T.TOD, T.DT].index(st)})")
 
+    def _text_to_time(self, node, src, dst):
+        """User mode: a STRING or WSTRING to TIME, LTIME, DATE, TOD or DT: the literal of the type in the text, as
+        TwinCAT's help writes them (T#1h30m, LTIME#1s2us44ns, D#2002-08-18, TOD#14:01:05.123,
+        DT#1998-02-13-14:20:00), spaces before it skipped; text that is no such literal gives 0."""
+        (arg,) = self._positional(node, 1, ["IN"])
+        st = T.WSTRING if src == "WSTRING" else T.STRING
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        self.comp.dialect(node, f"{src}_TO_{dst}")
+        if dst == "LTIME":
+            return TE(T.LTIME, f"__time_from_ns(__pacst_string_to_ns({code}))")
+        if dst == "TIME":  # TIME's resolution: whole milliseconds
+            return TE(T.TIME, f"__time_from_ms((int64_t)(__pacst_string_to_ns({code}) / 1000000u))")
+        dt = T.USER_DATES[dst]
+        return TE(dt, f"__pacst_string_to_date({code}, {[T.DATE, T.TOD, T.DT].index(dt)})")
+
     def _date_conversion(self, node, src, dst):
         """User mode: DATE, TIME_OF_DAY and DATE_AND_TIME as TwinCAT and CODESYS convert them: to and from
         numbers their count (seconds, TOD milliseconds) cut to 32 bits; DT to DATE its midnight, DT to TOD its
         time of day, DATE to DT the same second; TOD to and from TIME the milliseconds."""
         numbers = dict(T.ELEMENTARY, **T.USER_ELEMENTARY)
-        types = dict(numbers, TIME=T.TIME, **T.USER_DATES)
+        types = dict(numbers, TIME=T.TIME, LTIME=T.LTIME, **T.USER_DATES)
         name = f"{src}_TO_{dst}"
         for tname in (src, dst):
             if tname not in types or tname == "STRING":
@@ -1045,14 +1093,20 @@ class ExprCompiler:
                 return TE(dt, f"((UDINT)({code} % 86400U * 1000U))")
             if (st, dt) == (T.DATE, T.DT):
                 return TE(dt, code)
+            if (st, dt) == (T.TOD, T.DT):  # the same second of 1970-01-01 (the collections' F_Generic_To_DT)
+                return TE(dt, f"((UDINT)({code} / 1000U))")
             raise self.err(node, f"{name} is outside pacst's user programs: TwinCAT has no such conversion")
         if st.is_time or dt.is_time:
-            if T.TOD not in (st, dt):
-                raise self.err(node, f"{name} is outside pacst's user programs: of DATE, TOD and DT only TOD "
-                                     "converts to and from TIME (milliseconds)")
+            # TOD its milliseconds since midnight; DATE and DT the time since 1970-01-01-00:00:00 in whole seconds
+            # (TIME_TO_DATE its midnight), which the manuals leave open (the collections' F_Generic_To_LTIME)
+            date = dt if st.is_time else st
+            ns = 1000000 if date is T.TOD else 1000000000
             if st.is_time:
-                return TE(dt, f"((UDINT)__time_to_ms({code}))")
-            return TE(dt, f"__time_from_ms((int64_t)({code}))")
+                count = f"((UDINT)(__time_to_ns({code}) / {ns}u))" if st is T.LTIME else \
+                    f"((UDINT)__time_to_ms({code}))" if date is T.TOD else f"((UDINT)(__time_to_ms({code}) / 1000))"
+                return TE(dt, f"__pacst_dt_to_date({count})" if dt is T.DATE else count)
+            return TE(dt, f"__time_from_ns((uint64_t)({code}) * {ns}u)" if dt is T.LTIME else
+                      f"__time_from_ms((int64_t)({code}){'' if date is T.TOD else ' * 1000'})")
         # a number: the count, cut to 32 bits (REAL rounded half to even)
         if st.is_date:
             return _converted(T.ELEMENTARY["UDINT"], dt, code)

@@ -10,7 +10,8 @@
   gives.
 - `p := __NEW(T)` and `p := __NEW(T, n)`: an instance (or n elements) of T from a bounded heap of the test
   runtime (pacst_iec.h: PACST_HEAP_BYTES), initialised as a variable of T is (an FB's initial values and its
-  METHOD FB_init); 0 when the heap has no room, as TwinCAT's router memory returns 0 when it is exhausted.
+  METHOD FB_init, given the arguments of `__NEW(FB_List(10))` as a declaration's); 0 when the heap has no room,
+  as TwinCAT's router memory returns 0 when it is exhausted.
 - `__DELETE(p)`: the FB's METHOD FB_exit first when p points to an FB that has one, then the memory freed and
   p set to 0; p = 0 does nothing; a pointer __NEW did not return stops the test with its ST line.
 """
@@ -196,15 +197,22 @@ def new_assignment(body, target, node, ind):
     comp, ex = body.comp, body.ex
     comp.dialect(node, "TwinCAT's __NEW")
     args = [getattr(p, "value", p) for p in node.parameters]
+    fb_init_args = None
+    if len(args) == 1 and _cls(args[0]) == "FunctionCall" and _cls(args[0].name) == "SimpleVariable":
+        # __NEW(FB_List(Initial_Capacity := 0)): the FB's FB_init given arguments, as in a declaration
+        fb_init_args, args = list(args[0].parameters), [args[0].name]
     if not 1 <= len(args) <= 2 or any(a is None for a in args) or _cls(args[0]) != "SimpleVariable":
         raise comp.err(node, "__NEW takes a type and, for an elementary type, a number of elements: "
-                             "__NEW(ST_Data), __NEW(BYTE, n)")
+                             "__NEW(ST_Data), __NEW(BYTE, n), or an FB with FB_init arguments: __NEW(FB_List(10))")
     name = _name(args[0].name)
     if name.upper().startswith(rewrite.NEW_POINTER):  # __NEW(POINTER TO T, n), rewritten before parsing
         name = name[len(rewrite.NEW_POINTER):].lstrip("_")
         t = comp.pointer_to(comp._resolve_type(args[0].name.update(value=name), allow_fb=True))
     else:
         t = comp._resolve_type(args[0].name, allow_fb=True)
+    if fb_init_args is not None and (not t.is_fb or comp._fb_init(t) is None):
+        raise comp.err(node, f"__NEW({t.name}(...)): arguments go to an FB's METHOD FB_init, and {t.name} has none: "
+                             f"write __NEW({t.name})")
     if len(args) == 2 and not t.is_elementary and not t.is_pointer:
         raise comp.err(args[1], f"__NEW({t.name}, n): the number of elements is for an elementary type, as in "
                                 "TwinCAT; allocate an array type or one instance")
@@ -222,7 +230,9 @@ def new_assignment(body, target, node, ind):
              f"{ind}  if (__p != NULL) {{", f"{ind}    long long __i;"]
     if t.is_fb:
         lines.append(f"{ind}    BOOL retain = FALSE;")
-    init = comp.init_code(T.Var("e", "member", t, None, None), "__p[__i]")
+    element = T.Var("e", "member", t, None, node)
+    element.fb_init_args = fb_init_args
+    init = comp.init_code(element, "__p[__i]")
     lines.append(f"{ind}    for (__i = 0; __i < __n; __i++) {{")
     lines += [f"{ind}      {line}" for line in init]
     lines += [f"{ind}    }}", f"{ind}  }}",

@@ -174,13 +174,17 @@ def _dimension(comp, sub, elem, file):
 
 
 def _array_type(comp, low, high, elem, file):
-    key = (low, high, elem.cname)
+    # by the element's name too: an ARRAY OF WSTRING is not one OF STRING, though their C types are one (a WSTRING
+    # is a STRING in C here), declared once
+    key = (low, high, elem.cname, elem.name)
     t = comp.inline_arrays.get(key)
     if t is None:
         t = T.ArrayType(f"ARRAY [{low}..{high}] OF {elem.name}", low, high, elem)
         t.cname = f"__ARRAY_OF_{elem.cname}_{high - low + 1}"
+        declared = any(k[:3] == key[:3] for k in comp.inline_arrays)
         comp.inline_arrays[key] = t
-        comp.program.items.append(("type", t, file))
+        if not declared:
+            comp.program.items.append(("type", t, file))
     return t
 
 

@@ -63,14 +63,17 @@ def reason(message):
     return re.sub(r"\b\d+\b", "n", text)
 
 
-def _given(files):
-    """What pac-test translates with a project's `files`: (extra files, native files, namespaces)."""
+def _given(files, theirs=()):
+    """What pac-test translates with a project's `files` and its libraries' files `theirs`: (extra files, native
+    files, namespaces); the vendor parts given on demand are given for the libraries' sources too, as pac-test
+    gives them (build.py)."""
     names = {os.path.splitext(os.path.basename(f))[0].upper() for f in files}
     namespaces = {name.upper(): (name, folder) for name, folder in project.vendor_libraries().items()}
+    every = list(files) + list(theirs)
     if names & {"FB_TESTSUITE", "TEST", "TEST_FINISHED"}:  # TcUnit itself: its own names, Tc2_System's parts
-        return project.vendor_sources(files, named_only=True), project.vendor_natives(files), namespaces
-    extra = project.vocabulary_sources() + project.vendor_sources(files, named_only=True)
-    native = project.native_sources() + project.vendor_natives(files)
+        return project.vendor_sources(every, named_only=True), project.vendor_natives(every), namespaces
+    extra = project.vocabulary_sources() + project.vendor_sources(every, named_only=True)
+    native = project.native_sources() + project.vendor_natives(every)
     if not project.uses_tcunit(files):
         return extra, native, namespaces
     namespaces["TCUNIT"] = ("TcUnit", project.TCUNIT)
@@ -192,8 +195,8 @@ def measure(files, cache, jobs, libraries=()):
     """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`, translated with its
     `libraries` [(namespace, folder, files)] as pac-test translates a program with --library."""
     compiler, errors, order, parsing = _translator()
-    extra, native, namespaces = _given(files)
     theirs = [f for _, _, library_files in libraries for f in library_files if f not in files]
+    extra, native, namespaces = _given(files, theirs)
     for namespace, folder, _ in libraries:
         namespaces.setdefault(namespace.upper(), (namespace, folder))
     verdict = {}

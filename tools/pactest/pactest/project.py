@@ -106,9 +106,9 @@ def vendor_libraries():
 
 
 # Vendor FUNCTIONs no other part calls, given (named_only) only to a program whose sources name them: each part
-# given costs every program CPU to translate and compile (these two, 0.5 s of user CPU for examples/pick_and_place
-# on 7 December 2026).
-_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY")
+# given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
+# examples/pick_and_place on 7 December 2026).
+_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime")
 
 
 def vendor_sources(sources=(), named_only=False):

@@ -269,7 +269,9 @@ class CorpusTest(unittest.TestCase):
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
         them; without Lib measured, App's use of the namespace counts as needing a library not measured. The version
         of Lib App was compiled with (its _Libraries folder) is reported when it is not Lib's. A POU first refused for
-        a construct (FOR ... BY 0) is refused for a construct, whatever else of it names a vendor library."""
+        a construct (FOR ... BY 0) is refused for a construct, whatever else of it names a vendor library. The vendor
+        parts given only to sources that name them (Tc2_Utilities' WSTRNCPY) are given for a library's sources too, as
+        pac-test gives them."""
         top = os.path.join(OUT, "corpus-libraries")
         import shutil
         shutil.rmtree(top, ignore_errors=True)
@@ -284,7 +286,8 @@ class CorpusTest(unittest.TestCase):
                     '<ItemGroup>'
                     '<Compile Include="FB_Tool.TcPOU" /><Compile Include="F_GetVersion.TcPOU"><SystemCall>true'
                     '</SystemCall></Compile></ItemGroup></Project>\n',
-                    {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\n", "n := n + 1;"),
+                    {"FB_Tool": ("FUNCTION_BLOCK FB_Tool\nVAR_OUTPUT\n  n : INT;\nEND_VAR\nVAR\n  a, b : WSTRING;\nEND_VAR\n",
+                                 "n := n + 1;\nWSTRNCPY(ADR(a), ADR(b), SIZEOF(a));"),
                      "F_GetVersion": ("FUNCTION F_GetVersion : INT\n", "F_GetVersion := 1;")}),
             "App": ('<Project xmlns="http://schemas.microsoft.com/developer/msbuild/2003"><PropertyGroup>'
                     '<Name>App</Name></PropertyGroup><ItemGroup>'

@@ -686,6 +686,75 @@ static inline STRING __pacst_date_to_string(uint32_t v, int kind) {
     }
     return __pacst_text(text);
 }
+/* User mode: STRING_TO_TIME and _LTIME read a duration literal as TwinCAT's help writes it: after spaces, T#, TIME#,
+ * LT# or LTIME# in any case, then numbers with the units d h m s ms us ns ('_' between digits, a fraction:
+ * T#1.5s); text that is no such literal gives 0, as text before a number does. Nanoseconds. */
+static inline uint64_t __pacst_string_to_ns(STRING s) {
+    static const char *const prefixes[] = {"LTIME#", "TIME#", "LT#", "T#"};
+    static const char *const units[] = {"MS", "US", "NS", "D", "H", "M", "S"};  /* MS before M */
+    static const uint64_t per[] = {1000000ull, 1000ull, 1ull, 86400000000000ull, 3600000000000ull, 60000000000ull,
+                                   1000000000ull};
+    uint64_t ns = 0u;
+    int i = 0, p = 0, u;
+    while (i < s.len && s.body[i] == ' ') i++;
+    while (p < 4 && !__pacst_string_word(s, i, prefixes[p])) p++;
+    if (p == 4) return 0u;
+    for (i += (int)strlen(prefixes[p]); i < s.len;) {
+        uint64_t whole = 0u;
+        double fraction = 0.0, scale = 0.1;
+        int digits = 0;
+        for (; i < s.len && ((s.body[i] >= '0' && s.body[i] <= '9') || (s.body[i] == '_' && digits)); i++)
+            if (s.body[i] != '_') whole = whole * 10u + (uint64_t)(s.body[i] - '0'), digits++;
+        if (!digits) break;
+        if (i + 1 < s.len && s.body[i] == '.' && s.body[i + 1] >= '0' && s.body[i + 1] <= '9')
+            for (i++; i < s.len && s.body[i] >= '0' && s.body[i] <= '9'; i++, scale /= 10.0)
+                fraction += (double)(s.body[i] - '0') * scale;
+        for (u = 0; u < 7 && !__pacst_string_word(s, i, units[u]); u++) {}
+        if (u == 7) break;
+        i += (int)strlen(units[u]);
+        ns += whole * per[u] + (uint64_t)(fraction * (double)per[u] + 0.5);
+    }
+    return ns;
+}
+/* The number of days from 1970-01-01 to the Gregorian date y-m-d (the inverse of __pacst_date_to_string's). */
+static inline long __pacst_days_from_civil(long y, long m, long d) {
+    long era, yoe, doy, doe;
+    y -= m <= 2L;
+    era = (y >= 0L ? y : y - 399L) / 400L;
+    yoe = y - era * 400L;
+    doy = (153L * (m > 2L ? m - 3L : m + 9L) + 2L) / 5L + d - 1L;
+    doe = yoe * 365L + yoe / 4L - yoe / 100L + doy;
+    return era * 146097L + doe - 719468L;
+}
+/* STRING_TO_DATE, _TOD and _DT read the literal of the type (kind 0 D# or DATE#, 1 TOD# or TIME_OF_DAY#, 2 DT# or
+ * DATE_AND_TIME#, in any case) after spaces, as __pacst_date_to_string writes it (seconds may be left out, a
+ * fraction of a second is kept by TOD only); text that is no such literal gives 0. */
+static inline UDINT __pacst_string_to_date(STRING s, int kind) {
+    static const char *const prefixes[3][2] = {{"DATE#", "D#"}, {"TIME_OF_DAY#", "TOD#"},
+                                               {"DATE_AND_TIME#", "DT#"}};
+    long part[6] = {0L, 0L, 0L, 0L, 0L, 0L};
+    double fraction = 0.0, scale = 0.1;
+    int i = 0, p = 0, n = 0, first = kind == 1 ? 3 : 0, last = kind == 0 ? 3 : 6;
+    while (i < s.len && s.body[i] == ' ') i++;
+    while (p < 2 && !__pacst_string_word(s, i, prefixes[kind][p])) p++;
+    if (p == 2) return 0u;
+    for (i += (int)strlen(prefixes[kind][p]), n = first; n < last; n++) {
+        int digits = 0;
+        for (; i < s.len && s.body[i] >= '0' && s.body[i] <= '9'; i++, digits++)
+            part[n] = part[n] * 10L + (long)(s.body[i] - '0');
+        if (!digits) return 0u;
+        if (i >= s.len || s.body[i] != (n <= 2 ? '-' : ':') || n == last - 1) break;
+        i++;
+    }
+    if (n < last - 1 && !(n >= 4 && n == last - 2)) return 0u;  /* a date needs all three, a time hours and minutes */
+    if (i + 1 < s.len && s.body[i] == '.' && n == 5)
+        for (i++; i < s.len && s.body[i] >= '0' && s.body[i] <= '9'; i++, scale /= 10.0)
+            fraction += (double)(s.body[i] - '0') * scale;
+    if (kind == 1)
+        return (UDINT)((part[3] * 3600L + part[4] * 60L + part[5]) * 1000L + (long)(fraction * 1000.0 + 0.5));
+    return (UDINT)(__pacst_days_from_civil(part[0], part[1], part[2]) * 86400L + part[3] * 3600L + part[4] * 60L
+                   + part[5]);
+}
 static inline TIME __time_scale(TIME t, double factor) {
     double ns = ((double)t.tv_sec * 1e9 + (double)t.tv_nsec) * factor;
     int64_t n = (int64_t)ns;
