@@ -61,10 +61,9 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
     if user:
         # The libraries first, checked on their own (or a copy of their checked state); then the program. A PLC
         # programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
-        comp, declared = checked_library(sources, native, namespaces)
-        rest = [src for src in sources if src.path not in declared]
-        by_path = {src.path: src for src in rest}
-        comp.declare([by_path[path] for path in declaration_order(rest, user=True)])
+        library, rest = user_order(sources, native, namespaces)
+        comp = checked_library(library, native, namespaces)
+        comp.declare(rest)
         program = comp.finish()
     else:
         comp = Compiler(user, native, namespaces)
@@ -160,24 +159,29 @@ def _shared_objects(roots):
     return found
 
 
-def checked_library(sources, native=(), namespaces=None):
-    """User mode: (a Compiler with the library files among `sources` declared and checked, their paths). A library
-    file is one in the folder of a namespace (--namespace, --library) that uses no name of the program's files
-    (order.closed_under_uses); these are declared in their own declaration order before the program, which may
-    use them but not the reverse, as a library is compiled before the programs that reference it."""
+def user_order(sources, native=(), namespaces=None):
+    """User mode: (the library files among `sources`, the rest), each in its declaration order. A library file is
+    one in the folder of a namespace (--namespace, --library) that uses no name of the program's files
+    (order.closed_under_uses): these are declared before the program, which may use them but not the reverse, as
+    a library is compiled before the programs that reference it."""
+    probe = Compiler(True, native, namespaces)
+    closed = closed_under_uses(sources, [src.path for src in sources if probe.library_of(src.path)])
+    by_path = {src.path: src for src in sources}
+    return tuple([by_path[path] for path in declaration_order([src for src in sources if (src.path in closed) == first],
+                                                              user=True)] for first in (True, False))
+
+
+def checked_library(library, native=(), namespaces=None):
+    """User mode: a Compiler with the `library` files (user_order's first list) declared and checked."""
     comp = Compiler(True, native, namespaces)
-    candidates = [src.path for src in sources if comp.library_of(src.path)]
-    if not candidates:
-        return comp, set()
-    closed = closed_under_uses(sources, candidates)
-    by_path = {src.path: src for src in sources if src.path in closed}
-    library = [by_path[path] for path in declaration_order(list(by_path.values()), user=True)]
+    if not library:
+        return comp
     key = (tuple(id(src) for src in library), tuple(sorted(native)), tuple(sorted(comp.namespaces.items())))
 
     def fresh():
         comp.declare(library)
         return comp
-    return _CHECKED.get(key, library, fresh), closed
+    return _CHECKED.get(key, library, fresh)
 
 
 def _tables(constants):
@@ -352,7 +356,9 @@ def _matiec(args):
 def _order(args):
     try:
         files = _user_files(args)
-        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)), user=args.user)
+        sources = _parsed(parse_files(files, args.cache, args.jobs, args.user))
+        order = [src.path for part in user_order(sources, args.native, _namespaces(args)) for src in part] \
+            if args.user else declaration_order(sources)
     except StErrors as e:
         for err in e.errors:
             print(plcopen_read.at_source(err), file=sys.stderr)
