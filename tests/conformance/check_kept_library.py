@@ -72,9 +72,7 @@ def main(argv=None):
             print(f"{name}: {len(scratch[0])} refusal(s), {len(scratch[1])} dialect use(s), {len(scratch[2])} outputs")
         if not kept_any:
             problems.append("no library state was kept: the copies were not compared")
-    for p in problems:
-        print(p)
-    print(f"check_kept_library: {len(PROGRAMS)} programs, {len(problems)} problem(s)")
+    print("\n".join(problems + [f"check_kept_library: {len(PROGRAMS)} programs, {len(problems)} problem(s)"]))
     return 1 if problems else 0
 
 
