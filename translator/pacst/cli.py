@@ -85,12 +85,13 @@ class _CheckedLibraries:
     """User mode: the libraries' checked state, kept in this process for the next program translated with the same
     parsed library files, natives and namespaces (the dialect page's check, pac-test's corpus). A library is kept
     the second time it is met, so that one translation pays nothing for it; each program then gets a copy of the
-    state (pickled once, unpickled for each), sharing with it what the translator never changes: the parsed trees (the compiler keys its notes by
-    their identity), the elementary and standard types (compared by identity) and the POUs' C lines."""
+    state (pickled once, unpickled for each), sharing with it what the translator never changes: the parsed trees
+    (the compiler keys its notes by their identity), the elementary and standard types (compared by identity) and
+    the POUs' C lines."""
 
     def __init__(self):
         self.met = {}  # key -> the library's SourceFiles (kept alive, so that their ids stay theirs)
-        self.kept = {}  # key -> (the library's SourceFiles, the Compiler with them declared, the memo of shared objects)
+        self.kept = {}  # key -> (the library's SourceFiles, the checked Compiler pickled, the objects it shares)
 
     def get(self, key, library, fresh):
         """A Compiler with `library` declared: `fresh()`'s, or a copy of the one kept for `key`."""

@@ -224,7 +224,7 @@ def _read(path, user=False, cache_dir=None):
         return text, []
     if twincat.is_object_file(path):
         return rewrite.user_text(twincat.object_st(text, path), path)
-    # An ST file's user text depends on its text alone (two passes of the lexer, a quarter of a pac-test
+    # An ST file's user text depends on its text alone (two passes of the lexer, about a fifth of a pac-test
     # translation's CPU from a warm cache): cached beside the parses.
     key = _read_key(text)
     read = _cached_tree(cache_dir, key)
@@ -264,8 +264,8 @@ def _closed_pou(text, path):
 
 
 def _cached_tree(cache_dir, key):
-    """The cached object (a tree, the parser or a file's user text) for `key`, or None. A corrupt cache entry is built again,
-    never trusted."""
+    """The cached object (a tree, the parser or a file's user text) for `key`, or None. A corrupt cache entry is
+    built again, never trusted."""
     if not cache_dir:
         return None
     cached = os.path.join(cache_dir, key + ".pickle")
