@@ -2,16 +2,20 @@
 C++ code of a MATIEC build includes, and the check that MATIEC lays them out the same; `pacst check`
 only checks; `pacst order` prints files in the declaration order the others need."""
 import argparse
+import io
 import json
 import os
+import pickle
 import re
 import sys
 import tempfile
 import time
+import types
 
 from .compiler import Compiler
 from . import gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
-from .order import declaration_order
+from .order import closed_under_uses, declaration_order
+from . import system, types as T
 from .emit import ENUM_NAMES, Emitter, remove_outputs, remove_stale_c, write_outputs, _stem
 from .errors import StError, StErrors
 from .parsing import parse_files
@@ -55,11 +59,15 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
     sources = _parsed(file_results)
     lists = _parsed(list_results)
     if user:
-        # A PLC programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
-        by_path = {src.path: src for src in sources}
-        sources = [by_path[path] for path in declaration_order(sources, user=True)]
-    comp = Compiler(user, native, namespaces)
-    program = comp.compile(sources)
+        # The libraries first, checked on their own (or a copy of their checked state); then the program. A PLC
+        # programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
+        library, rest = user_order(sources, native, namespaces)
+        comp = checked_library(library, native, namespaces)
+        comp.declare(rest)
+        program = comp.finish()
+    else:
+        comp = Compiler(user, native, namespaces)
+        program = comp.compile(sources)
     constants = {}
     errors = []
     for src in lists:
@@ -71,6 +79,110 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
     if errors:
         raise StErrors(errors)
     return comp, program, constants
+
+
+class _CheckedLibraries:
+    """User mode: the libraries' checked state, kept in this process for the next program translated with the same
+    parsed library files, natives and namespaces (the dialect page's check, pac-test's corpus). A library is kept
+    the second time it is met, so that one translation pays nothing for it; each program then gets a copy of the
+    state (pickled once, unpickled for each), sharing with it what the translator never changes: the parsed trees
+    (the compiler keys its notes by their identity), the elementary and standard types (compared by identity) and
+    the POUs' C lines."""
+
+    def __init__(self):
+        self.met = {}  # key -> the library's SourceFiles (kept alive, so that their ids stay theirs)
+        self.kept = {}  # key -> (the library's SourceFiles, the checked Compiler pickled, the objects it shares)
+
+    def get(self, key, library, fresh):
+        """A Compiler with `library` declared: `fresh()`'s, or a copy of the one kept for `key`."""
+        kept = self.kept.get(key)
+        if kept is not None and all(a is b for a, b in zip(kept[0], library)):
+            return _copy(kept[1], kept[2])
+        if key not in self.met or any(a is not b for a, b in zip(self.met[key], library)):
+            if len(self.met) >= 8:
+                self.met.clear()
+            self.met[key] = list(library)
+            return fresh()
+        comp = fresh()
+        if len(self.kept) >= 4:
+            self.kept.clear()
+        shared = _shared_objects([library, T, system])
+        # and each POU's C lines, made once in its declaration and only read after
+        shared.update((id(obj.body_c), obj.body_c) for kind, obj, _ in comp.program.items if kind == "pou")
+        state = io.BytesIO()
+        _Sharing(state, shared).dump(comp)
+        self.kept[key] = (list(library), state.getvalue(), shared)
+        return _copy(state.getvalue(), shared)
+
+
+class _Sharing(pickle.Pickler):
+    """A Pickler that writes each object of `shared` ({id: object}) as its id, for _copy to take it as it is."""
+
+    def __init__(self, file, shared):
+        super().__init__(file, protocol=pickle.HIGHEST_PROTOCOL)
+        self.shared = shared
+
+    def persistent_id(self, obj):
+        return id(obj) if id(obj) in self.shared else None
+
+
+def _copy(state, shared):
+    """The Compiler pickled in `state` by _Sharing, with the objects of `shared` in it as they are."""
+    unpickler = pickle.Unpickler(io.BytesIO(state))
+    unpickler.persistent_load = shared.__getitem__
+    return unpickler.load()
+
+
+_CHECKED = _CheckedLibraries()
+
+
+def _shared_objects(roots):
+    """{id: object} of every object reachable from `roots` (lists, the parsed files, modules' globals): the objects
+    _copy does not copy."""
+    code = (types.FunctionType, types.BuiltinFunctionType, types.MethodType, types.ModuleType, type)
+    found = {}
+    stack = []
+    for root in roots:
+        stack += [v for v in vars(root).values() if not isinstance(v, code)] if isinstance(root, types.ModuleType) \
+            else [root]
+    while stack:
+        obj = stack.pop()
+        if id(obj) in found or type(obj) in (int, float, bool, str, bytes, type(None)) or isinstance(obj, code):
+            continue
+        found[id(obj)] = obj
+        if isinstance(obj, dict):
+            stack += list(obj.keys()) + list(obj.values())
+        elif isinstance(obj, (list, tuple, set, frozenset)):
+            stack += list(obj)
+        elif not isinstance(obj, str):
+            stack += list(getattr(obj, "__dict__", {}).values())
+            stack += [getattr(obj, name) for name in getattr(type(obj), "__slots__", ()) if hasattr(obj, name)]
+    return found
+
+
+def user_order(sources, native=(), namespaces=None):
+    """User mode: (the library files among `sources`, the rest), each in its declaration order. A library file is
+    one in the folder of a namespace (--namespace, --library) that uses no name of the program's files
+    (order.closed_under_uses): these are declared before the program, which may use them but not the reverse, as
+    a library is compiled before the programs that reference it."""
+    probe = Compiler(True, native, namespaces)
+    closed = closed_under_uses(sources, [src.path for src in sources if probe.library_of(src.path)])
+    by_path = {src.path: src for src in sources}
+    return tuple([by_path[path] for path in declaration_order([src for src in sources if (src.path in closed) == first],
+                                                              user=True)] for first in (True, False))
+
+
+def checked_library(library, native=(), namespaces=None):
+    """User mode: a Compiler with the `library` files (user_order's first list) declared and checked."""
+    comp = Compiler(True, native, namespaces)
+    if not library:
+        return comp
+    key = (tuple(id(src) for src in library), tuple(sorted(native)), tuple(sorted(comp.namespaces.items())))
+
+    def fresh():
+        comp.declare(library)
+        return comp
+    return _CHECKED.get(key, library, fresh)
 
 
 def _tables(constants):
@@ -245,7 +357,9 @@ def _matiec(args):
 def _order(args):
     try:
         files = _user_files(args)
-        order = declaration_order(_parsed(parse_files(files, args.cache, args.jobs, args.user)), user=args.user)
+        sources = _parsed(parse_files(files, args.cache, args.jobs, args.user))
+        order = [src.path for part in user_order(sources, args.native, _namespaces(args)) for src in part] \
+            if args.user else declaration_order(sources)
     except StErrors as e:
         for err in e.errors:
             print(plcopen_read.at_source(err), file=sys.stderr)

@@ -34,6 +34,9 @@ class SourceLine(str):
         self.st_line = st_line
         return self
 
+    def __reduce__(self):  # pickled with its ST line (cli.checked_library)
+        return SourceLine, (str(self), self.st_line)
+
 
 def located(lines, st_line):
     """`lines` with every line not yet located attributed to `st_line`."""

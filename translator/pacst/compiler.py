@@ -158,6 +158,8 @@ class Compiler:
         self.computed_inits = {}  # user mode: id(node) -> TE of an initial value computed at run time (runinit)
         self.constant_blocks = None  # user mode: the declarations of the METHOD or POU being declared
         self.fb_call_sites = {}  # FB type cname -> the ST calls of its body in the program (an inline body: one)
+        self.sources = []  # the SourceFiles declared, in order
+        self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
 
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
@@ -181,7 +183,14 @@ class Compiler:
     # ------------------------------------------------------------------ driver
     def compile(self, sources):
         """Check and translate parsed files (in declaration order); raise StErrors on any refusal."""
-        self.sources = sources
+        self.declare(sources)
+        return self.finish()
+
+    def declare(self, sources):
+        """Check and translate parsed files (in declaration order) after those of any earlier call, collecting the
+        refusals: user mode declares the libraries so, closed under their uses, before the program
+        (cli.checked_library), whose files may use theirs but not the reverse."""
+        self.sources = self.sources + list(sources)
         for src in sources:
             self.file = src.path
             for line, col, what, parsed_col in getattr(src, "rewrites", ()):  # rewrite.user_text's
@@ -194,7 +203,6 @@ class Compiler:
                     self.declared_at[name.upper()] = (src.path, pos(item)[0])
                 if name is not None and _cls(item) == "Function":
                     self.function_names.add(name.upper())
-        self.members = {}  # id of a FUNCTION_BLOCK or PROGRAM item -> its METHOD and ACTION items (user mode)
         attached = set()
         for src in sources if self.user else []:
             owner = None
@@ -205,8 +213,8 @@ class Compiler:
                     self.members.setdefault(id(owner), []).append(item)
                     attached.add(id(item))
         if self.user:
-            self.later_fbs = {self._item_name(item).upper() for src in sources for item in src.tree.items
-                              if _cls(item) == "FunctionBlock"}
+            self.later_fbs |= {self._item_name(item).upper() for src in sources for item in src.tree.items
+                               if _cls(item) == "FunctionBlock"}
         for src, item in self._in_order(sources):
             if id(item) in attached:
                 continue  # declared with its FUNCTION_BLOCK or PROGRAM
@@ -218,6 +226,9 @@ class Compiler:
                 name = self._item_name(item)
                 if name is not None:
                     self.refused.add(name.upper())
+
+    def finish(self):
+        """The Program of every file declared; StErrors with every refusal, in the order met."""
         for fb in list(self.pending_globals):  # their FB was refused: each says so
             self._pending_globals(fb)
         if self.errors:

@@ -14,6 +14,9 @@ class StError(Exception):
     def __str__(self):
         return f"{self.file}:{self.line}:{self.col}: error: {self.message}"
 
+    def __reduce__(self):  # pickled with its place (a library's checked state holds its refusals)
+        return type(self), (self.file, self.line, self.col, self.message), self.__dict__
+
 
 class StErrors(Exception):
     """Every refusal found in a run, in source order."""
@@ -21,3 +24,6 @@ class StErrors(Exception):
     def __init__(self, errors):
         super().__init__("\n".join(str(e) for e in errors))
         self.errors = list(errors)
+
+    def __reduce__(self):
+        return type(self), (self.errors,), self.__dict__

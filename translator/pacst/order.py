@@ -135,23 +135,52 @@ def _through_lists(src, uses, lists):
     return kept
 
 
+def _owners(sources):
+    """{upper name: (path of the file that declares it, the name as spelled there)}. A name declared twice is the
+    compiler's to refuse; here the first file (by sort key) owns it."""
+    owner = {}
+    for src in sorted(sources, key=lambda s: _sort_key(s.path)):
+        for name in declared_names(src.tree):
+            owner.setdefault(name.upper(), (src.path, name))
+    return owner
+
+
+def _uses(src, owner):
+    """{path of another file: a name `src` mentions that the file declares}."""
+    uses = {}
+    for word in sorted(_mentioned(src)):
+        dep, name = owner.get(word, (src.path, None))
+        if dep != src.path:
+            uses.setdefault(dep, name)
+    return uses
+
+
+def closed_under_uses(sources, candidates):
+    """The paths of `candidates` (paths of `sources`, a library's files) that mention no name of a file outside
+    them, nor through the files they use: these can be declared and checked before the rest. A name the rest
+    declares too (or a word of theirs it declares, even a local variable's) keeps a candidate out."""
+    owner = _owners(sources)
+    deps = {src.path: set(_uses(src, owner)) for src in sources}
+    closed = set(candidates)
+    changed = True
+    while changed:
+        changed = False
+        for path in sorted(closed):
+            if not deps[path] <= closed:
+                closed.discard(path)
+                changed = True
+    return closed
+
+
 def declaration_order(sources, user=False):
     """The parsed files `sources` (SourceFiles) in declaration order; raises StErrors naming the files of a
     cycle, whose files no order can declare before each other. `user`: pacst's user mode, which declares the
     global lists before the POUs (_through_lists)."""
-    # A name declared twice is the compiler's to refuse; here the first file (by sort key) owns it.
-    owner = {}  # upper name -> (path of the file that declares it, the name as spelled there)
-    for src in sorted(sources, key=lambda s: _sort_key(s.path)):
-        for name in declared_names(src.tree):
-            owner.setdefault(name.upper(), (src.path, name))
+    owner = _owners(sources)
     lists = _list_files(sources, owner) if user else {}
     deps = {}  # path -> {path it depends on: a name it uses from there}
     for src in sources:
-        uses = {}
-        for word in sorted(_mentioned(src)):
-            dep, name = owner.get(word, (src.path, None))
-            if dep != src.path:
-                uses.setdefault(dep, name)
+        uses = _uses(src, owner)
         deps[src.path] = _through_lists(src, uses, lists) if user else uses
     users = {src.path: [] for src in sources}
     for path, uses in deps.items():

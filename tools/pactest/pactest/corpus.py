@@ -37,8 +37,8 @@ _UNDECLARED_HEAD = re.compile(r"undeclared name '(\w+)': no variable, global lis
 
 def _translator():
     sys.path.insert(0, os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator")))
-    from pacst import compiler, errors, order, parsing  # noqa: E402 (the checkout's translator)
-    return compiler, errors, order, parsing
+    from pacst import cli, errors, parsing  # noqa: E402 (the checkout's translator)
+    return cli, errors, parsing
 
 
 def projects(folders):
@@ -194,7 +194,7 @@ def _lacks_refused(message, gone):
 def measure(files, cache, jobs, libraries=()):
     """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`, translated with its
     `libraries` [(namespace, folder, files)] as pac-test translates a program with --library."""
-    compiler, errors, order, parsing = _translator()
+    cli, errors, parsing = _translator()
     theirs = [f for _, _, library_files in libraries for f in library_files if f not in files]
     extra, native, namespaces = _given(files, theirs)
     for namespace, folder, _ in libraries:
@@ -214,8 +214,8 @@ def measure(files, cache, jobs, libraries=()):
             break
         try:
             by_path = {s.path: s for s in sources}
-            ordered = [by_path[p] for p in order.declaration_order(sources, user=True)]
-            compiler.Compiler(True, native, namespaces).compile(ordered)
+            # as pacst --user translates: the libraries first (their checked state kept for the next round)
+            cli._translate_parsed(sources, [], True, native, namespaces)
             break
         except errors.StErrors as e:
             refused = collections.OrderedDict()
