@@ -9,7 +9,8 @@
  * their cold-start values. With -DCBMC__STUTTER=1 the scans in which the PLC only waits are compressed
  * (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same run);
  * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over);
- * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below).
+ * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below); -DCBMC__STARTUP_SCANS=<n>
+ * runs n start-up scans with fixed inputs before the first step (below).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -32,10 +33,10 @@
 #define CBMC__ONLY_MOVE 0
 #endif
 /* > 0: the run begins after that many start-up scans of the program, run before the first step with the inputs of a
- * PLC start before the controller's first reply (an all-zero module, operating status 0, MC_Power.Enable FALSE, the
- * four blocks not yet called): FB_PAC_AxisResetPulse's LowTimer has then run its update time out, a limit no
- * stretch may pass (docs/verification.md, "the move on the slowest bus in eight steps"). 0: the first step is the
- * PLC's first scan. */
+ * PLC start before the controller's first reply (an all-zero module, operating status 0, MC_Power.Enable
+ * CBMC__STARTUP_ENABLE, the four blocks not yet called): FB_PAC_AxisResetPulse's LowTimer has then run its update
+ * time out, a limit no stretch may pass (docs/verification.md, "the move on the slowest bus in eight steps"). A PLC
+ * restart within the run starts without them. 0: the first step is the PLC's first scan. */
 #ifndef CBMC__STARTUP_SCANS
 #define CBMC__STARTUP_SCANS 0
 #endif
@@ -227,7 +228,7 @@ int main(void) {
     ColdStart(&pins);
     StartupScans();
     const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
-    /* The waiting scans (CBMC__STUTTER): the clock is n + stretched ms. */
+    /* The waiting scans (CBMC__STUTTER): the clock is CBMC__STARTUP_SCANS + n + stretched ms. */
     long stretched = 0;
     Inputs prevInputs;
     BOOL prevStill = FALSE;
