@@ -9,7 +9,8 @@
  * their cold-start values. With -DCBMC__STUTTER=1 the scans in which the PLC only waits are compressed
  * (stutter_axis.h: after a still scan up to CBMC__STRETCH_MAX more in one step, S1 checked in the same run);
  * -DCBMC__TSLOW=<ms> lets Timeout be TSLOW .. TSLOW + TMAX - 1 ms as well (the slowest bus's take-over);
- * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below).
+ * -DCBMC__ONLY_MOVE=1 keeps free only what the move's take-over on that bus needs (below); -DCBMC__STARTUP_SCANS=<n>
+ * runs n start-up scans with fixed inputs before the first step (below).
  * The move's target and dynamics are constants (keeping floating point out of the proof). Properties "MC<n>",
  * P1..P4 for both blocks (plcopen_props.h), reachability checks "reach: ..." (which must FAIL), as in
  * cmd_harness.c. */
@@ -30,6 +31,17 @@
  * MC_MoveAbsolute's calls and Execute, the operating status and the module's bytes stay free in every scan. */
 #ifndef CBMC__ONLY_MOVE
 #define CBMC__ONLY_MOVE 0
+#endif
+/* > 0: the run begins after that many start-up scans of the program, run before the first step with the inputs of a
+ * PLC start before the controller's first reply (an all-zero module, operating status 0, MC_Power.Enable
+ * CBMC__STARTUP_ENABLE, the four blocks not yet called): FB_PAC_AxisResetPulse's LowTimer has then run its update
+ * time out, a limit no stretch may pass (docs/verification.md, "the move on the slowest bus in eight steps"). A PLC
+ * restart within the run starts without them. 0: the first step is the PLC's first scan. */
+#ifndef CBMC__STARTUP_SCANS
+#define CBMC__STARTUP_SCANS 0
+#endif
+#ifndef CBMC__STARTUP_ENABLE
+#define CBMC__STARTUP_ENABLE 0
 #endif
 
 /* The timeline of a counterexample (paccbmc): assigned at the end of every scan, tl_scan last. */
@@ -79,10 +91,12 @@ static void ColdStart(const RunPins *pins) {
 typedef struct {
     ST_PAC_AXISREF ref;
     MC_POWER power;
+#if !CBMC__ONLY_MOVE /* never called there: no scan writes them, so S1 has nothing to compare in them */
     MC_STOP stop;
-    MC_MOVEABSOLUTE move;
     MC_HALT halt;
     MC_RESET reset;
+#endif
+    MC_MOVEABSOLUTE move;
     FB_PAC_MCAXIS mcAxis;
 } McState;
 /* What the program and the controller hand the blocks in a scan: a waiting scan's are those of the scan before. */
@@ -102,10 +116,12 @@ static McState before, normalised;
 static void Snapshot(McState *s) {
     s->ref = ref;
     s->power = power;
+#if !CBMC__ONLY_MOVE
     s->stop = stop;
-    s->move = move;
     s->halt = halt;
     s->reset = reset;
+#endif
+    s->move = move;
     s->mcAxis = mcAxis;
 }
 /* Still: every instance after the scan (at nowNs) as before it (at beforeNs), but for the counters of the TONs
@@ -114,7 +130,9 @@ static BOOL StillMc(long long beforeNs, long long nowNs) {
     Snapshot(&normalised);
     BOOL along = AxisCountersAlong(&before.mcAxis.MODULE, &normalised.mcAxis.MODULE, beforeNs, nowNs);
     along = TonCountersAlong(&before.mcAxis.HALTTIMER, &normalised.mcAxis.HALTTIMER, beforeNs, nowNs) && along;
+#if !CBMC__ONLY_MOVE
     along = TonCountersAlong(&before.reset.RESETTIMER, &normalised.reset.RESETTIMER, beforeNs, nowNs) && along;
+#endif
 #ifdef __CPROVER__
     /* CBMC compares two structs with == (its C extension) member by member; word by word through a pointer each
      * word is a byte extraction from the whole state, the work growing with its square. */
@@ -126,7 +144,10 @@ static BOOL StillMc(long long beforeNs, long long nowNs) {
 static BOOL McNoLimitPasses(void) {
     return AxisNoLimitPasses(&before.mcAxis.MODULE, &mcAxis.MODULE)
            && before.mcAxis.HALTTIMER.Q.value == mcAxis.HALTTIMER.Q.value
-           && before.reset.RESETTIMER.Q.value == reset.RESETTIMER.Q.value;
+#if !CBMC__ONLY_MOVE
+           && before.reset.RESETTIMER.Q.value == reset.RESETTIMER.Q.value
+#endif
+        ;
 }
 #endif
 
@@ -156,6 +177,27 @@ static void CallHalt(void) {
 static void CallReset(void) {
     if (resetCalled) CALL_ON_REF(MC_RESET, reset);
 }
+static void CallMcAxis(void) {
+#ifdef PACST_BODY_REF
+    FB_PAC_MCAXIS_body_ref__(&mcAxis, &ref, &mcAxis.TOPAC.value, &mcAxis.FROMPAC.value);
+#else
+    CALL_ON_REF(FB_PAC_MCAXIS, mcAxis);
+#endif
+}
+/* The program's start-up scans (CBMC__STARTUP_SCANS), every input fixed: CBMC runs them as the PLC would, without a
+ * choice to merge. The blocks' properties cannot break here: none of them is called, and MC_Power's MC3 is checked
+ * from the first step on. */
+static void StartupScans(void) {
+    for (int s = 1; s <= CBMC__STARTUP_SCANS; ++s) {
+        __CURRENT_TIME = __time_make(0, (long)s * CYCLE_NS);
+        for (int i = 0; i < 12; ++i) mcAxis.FROMPAC.value.table[i] = 0;
+        mcAxis.OPSTATUS.value = 0;
+        mcAxis.MODECHANGE.value = FALSE;
+        power.ENABLE.value = CBMC__STARTUP_ENABLE;
+        CALL_ON_REF(MC_POWER, power);
+        CallMcAxis();
+    }
+}
 
 int main(void) {
     PlcOpenWatch stopWatch = {0}, moveWatch = {0}, haltWatch = {0}, resetWatch = {0};
@@ -184,8 +226,9 @@ int main(void) {
     pins.stopTimeout = __time_make(0, (long)st * CYCLE_NS);
     pins.integerMode = !CBMC__ONLY_MOVE && nondet_bool();
     ColdStart(&pins);
+    StartupScans();
     const PlcOpenWatch stopWatch0 = stopWatch, moveWatch0 = moveWatch, haltWatch0 = haltWatch, resetWatch0 = resetWatch;
-    /* The waiting scans (CBMC__STUTTER): the clock is n + stretched ms. */
+    /* The waiting scans (CBMC__STUTTER): the clock is CBMC__STARTUP_SCANS + n + stretched ms. */
     long stretched = 0;
     Inputs prevInputs;
     BOOL prevStill = FALSE;
@@ -197,7 +240,7 @@ int main(void) {
     BOOL activeSinceStart = FALSE;
 
     for (int n = 1; n <= CBMC__K; ++n) {
-        __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
+        __CURRENT_TIME = __time_make(0, (long)(CBMC__STARTUP_SCANS + n + stretched) * CYCLE_NS);
         BOOL restarted = FALSE;
         /* A PLC cold start: every instance back to its initial values; what the harness knows starts anew. */
         if (CBMC__PLC_RESTARTS && n > 1 && nondet_bool()) {
@@ -257,7 +300,7 @@ int main(void) {
         prevInputs = inputs;
         if (CBMC__STUTTER && waiting && prevStill) {
             const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
-            const long long stillNs = (long long)(n - 1 + stretched) * CYCLE_NS;
+            const long long stillNs = (long long)(CBMC__STARTUP_SCANS + n - 1 + stretched) * CYCLE_NS;
             const long long lastNs = stillNs + (long long)d * CYCLE_NS;
             AxisStretch(&mcAxis.MODULE, d, stillNs);
             TonStretch(&mcAxis.HALTTIMER, stillNs, lastNs);
@@ -269,7 +312,7 @@ int main(void) {
             if (resetCalled && reset.BUSY.value) resetWatch.busyScans += (int)d;
             if (moveSkipRun > 0) moveSkipRun += (int)d;
             stretched += (long)d;
-            __CURRENT_TIME = __time_make(0, (long)(n + stretched) * CYCLE_NS);
+            __CURRENT_TIME = __time_make(0, (long)(CBMC__STARTUP_SCANS + n + stretched) * CYCLE_NS);
             if (d >= 2) stutterReach.stretch = TRUE;
         }
         if (moveSkipRun >= 2) moveLongSkip = TRUE;
@@ -294,12 +337,8 @@ int main(void) {
             CallHalt();
             CallReset();
         }
-#ifdef PACST_BODY_REF
-        FB_PAC_MCAXIS_body_ref__(&mcAxis, &ref, &mcAxis.TOPAC.value, &mcAxis.FROMPAC.value);
-#else
-        CALL_ON_REF(FB_PAC_MCAXIS, mcAxis);
-#endif
-        const long nowMs = n + stretched;
+        CallMcAxis();
+        const long nowMs = CBMC__STARTUP_SCANS + n + stretched;
 #if CBMC__STUTTER
         {
             /* Still: a waiting scan that passed no limit and changed nothing but counters. S1: a waiting scan

@@ -29,6 +29,7 @@ int pac_cbmc_axis_no_plc_restart_main(void);
 int pac_cbmc_automatic_main(void);
 int pac_cbmc_mc_main(void);
 int pac_cbmc_mc_no_plc_restart_main(void);
+int pac_cbmc_mc_slow_bus_main(void);
 int pac_cbmc_rs232_main(void);
 int pac_cbmc_rs232_no_gaps_main(void);
 int pac_cbmc_rs232_restarts_main(void);
@@ -85,6 +86,7 @@ void Replay(const Counterexample& c) {
         {"AutomaticModule", pac_cbmc_automatic_main},
         {"Mc", pac_cbmc_mc_main},
         {"Mc.NoPlcRestart", pac_cbmc_mc_no_plc_restart_main},
+        {"McSlowBus", pac_cbmc_mc_slow_bus_main},
         {"Rs232Cmd", pac_cbmc_rs232_main},
         {"Rs232Cmd.NoGaps", pac_cbmc_rs232_no_gaps_main},
         {"Rs232Cmd.Restarts", pac_cbmc_rs232_restarts_main},
