@@ -44,6 +44,14 @@ class Verdict(unittest.TestCase):
         verdict = results.judge(results.parse(_output(("a", "P1", "UNKNOWN"))))
         self.assertFalse(verdict.ok)
 
+    def test_a_split_run_selects_its_part(self):
+        shown = json.dumps([{"program": "CBMC 6.6.0"}, {"properties": [
+            {"name": "main.assertion.1", "description": "P5 Done"},
+            {"name": "main.assertion.2", "description": "reach: Done"},
+            {"name": "FB.array_bounds.3", "description": "array 'x' upper bound"}]}])
+        self.assertEqual(results.selected(shown, reach=True), ["main.assertion.2"])
+        self.assertEqual(results.selected(shown, reach=False), ["main.assertion.1", "FB.array_bounds.3"])
+
     def test_errors_without_results_are_reported(self):
         with self.assertRaises(ValueError):
             results.parse(json.dumps([{"messageType": "ERROR", "messageText": "parse error"}]))
