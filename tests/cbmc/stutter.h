@@ -173,7 +173,7 @@ static BOOL NoLimitPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFA
 /* TonBelowLimit in the TON's own arithmetic (TIME, as TON_body computes elapsed time against PT): the same
  * verdict for the normalised TIMEs a clock and a TON hold, without the 64-bit product by 10^9 of each Ns, which
  * a clock of free stretches puts in the formula of every TON at every stretch (docs/verification.md, "two callers
- * on the slowest bus, in CI"). */
+ * on the slowest bus, split"). */
 static BOOL TonBelowLimitAt(const TON *t, TIME still, TIME last) {
     return t->STATE.value != 1 || !SameTime(t->CURRENT_TIME.value, still)
            || __time_cmp(__time_sub(last, t->START_TIME.value), t->PT.value) < 0;

@@ -18,7 +18,14 @@ def timeline_rerun_args(cbmc_args, failed):
     checked again without it. None when nothing is to be run again."""
     if SLICE not in cbmc_args or not failed:
         return None
-    rerun = [a for a in cbmc_args if a != SLICE]
+    rerun, i = [], 0
+    while i < len(cbmc_args):  # a part of a split run (--only) names its properties: only the failed ones now
+        if cbmc_args[i] == "--property":
+            i += 2
+            continue
+        if cbmc_args[i] != SLICE:
+            rerun.append(cbmc_args[i])
+        i += 1
     for prop in failed:
         rerun += ["--property", prop.name]
     return rerun

@@ -84,6 +84,11 @@ class TimelineRerun(unittest.TestCase):
         self.assertEqual(cli.timeline_rerun_args(["h.c", "--slice-formula", "--unwind", "3"], failed),
                          ["h.c", "--unwind", "3", "--property", "main.assertion.3"])
 
+    def test_a_split_runs_properties_give_way_to_the_failed_ones(self):
+        failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
+        args = ["h.c", "--slice-formula", "--property", "main.assertion.3", "--property", "main.assertion.4"]
+        self.assertEqual(cli.timeline_rerun_args(args, failed), ["h.c", "--property", "main.assertion.3"])
+
     def test_no_rerun_without_slicing_or_failures(self):
         failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
         self.assertIsNone(cli.timeline_rerun_args(["h.c"], failed))
