@@ -394,7 +394,7 @@ int main(void) {
         /* A stretch (stutter.h): after a still scan, d more scans like it in one step, before this one. */
         if (CBMC__STUTTER && prevStill && waiting) {
             const unsigned d = nondet_uchar() & CBMC__STRETCH_MAX;
-            Stretch(&iface, cmd, called, CBMC__CALLERS, d, (long)(n - 1) + stretched);
+            Stretch(&iface, cmd, called, CBMC__CALLERS, d, (long long)(n - 1 + stretched) * CYCLE_NS);
             for (int i = 0; i < CBMC__CALLERS; ++i) {
                 if (called[i] && cmd[i].BUSY.value) watch[i].plcopen.busyScans += (int)d; /* P8 counts its calls */
                 if (skipRun[i] > 0) skipRun[i] += (int)d; /* a skip goes on through the stretch */

@@ -170,39 +170,30 @@ static BOOL NoLimitPasses(const FB_PAC_CMDINTERFACE *i0, const FB_PAC_CMDINTERFA
            && Settling(&i0->CHANNEL.value) == Settling(&i1->CHANNEL.value);
 }
 
-/* TonBelowLimit in the TON's own arithmetic (TIME, as TON_body computes elapsed time against PT): the same
- * verdict for the normalised TIMEs a clock and a TON hold, without the 64-bit product by 10^9 of each Ns, which
- * a clock of free stretches puts in the formula of every TON at every stretch (docs/verification.md, "two callers
- * on the slowest bus, split"). */
-static BOOL TonBelowLimitAt(const TON *t, TIME still, TIME last) {
-    return t->STATE.value != 1 || !SameTime(t->CURRENT_TIME.value, still)
-           || __time_cmp(__time_sub(last, t->START_TIME.value), t->PT.value) < 0;
-}
-
 /* A stretch: d more scans like the still scan just run (same inputs), in one step before the next waiting scan
  * (docs/verification.md, "the waiting scans"): the clock and Channel.Scan advance by d, a caller called in the
  * still scan keeps LastScan = Scan (the harness counts d more Busy calls for P8), the owner called in it keeps
  * OwnerScan = Scan (one not called stays away), a FirstToggleScan set in it (status 0) keeps = Scan; and no
  * limit passes within the stretch: each TON the still scan ran below its PT at the stretch's last scan,
- * OwnerAway and Settling as before. stillMs: the still scan's clock in ms. By S1 each of those d scans changes
- * nothing else. */
+ * OwnerAway and Settling as before. stillNs: the still scan's clock. By S1 each of those d scans changes nothing
+ * else. */
 static void Stretch(FB_PAC_CMDINTERFACE *iface, FB_PAC_CMD *cmd, const BOOL *called, int callers, unsigned d,
-                    long stillMs) {
-    const TIME still = __time_make(0, stillMs * CYCLE_NS), last = __time_make(0, (stillMs + (long)d) * CYCLE_NS);
+                    long long stillNs) {
+    const long long lastNs = stillNs + (long long)d * CYCLE_NS;
     ST_PAC_CMDCHANNEL *c = &iface->CHANNEL.value;
     const BOOL away = OwnerAway(c), settling = Settling(c);
     if (c->OWNERSCAN == c->SCAN) c->OWNERSCAN += d;
     if (iface->KEEPINSTEP.FIRSTTOGGLESCAN.value == c->SCAN) iface->KEEPINSTEP.FIRSTTOGGLESCAN.value += d;
     c->SCAN += d;
     __CPROVER_assume(OwnerAway(c) == away && Settling(c) == settling);
-    __CPROVER_assume(TonBelowLimitAt(&iface->INFLIGHTCOMMAND.WATCHTIMER, still, last)
-                     && TonBelowLimitAt(&iface->KEEPINSTEP.STEPTIMER, still, last));
+    __CPROVER_assume(TonBelowLimit(&iface->INFLIGHTCOMMAND.WATCHTIMER, stillNs, lastNs)
+                     && TonBelowLimit(&iface->KEEPINSTEP.STEPTIMER, stillNs, lastNs));
     for (int k = 0; k < callers; ++k) {
         if (!called[k]) continue; /* its timers run on, read again in its next call: a real event, not passed here */
         cmd[k].LASTSCAN.value += d;
-        __CPROVER_assume(TonBelowLimitAt(&cmd[k].WAITTIMER, still, last)
-                         && TonBelowLimitAt(&cmd[k].ACKTIMER, still, last)
-                         && TonBelowLimitAt(&cmd[k].ENDTIMER, still, last));
+        __CPROVER_assume(TonBelowLimit(&cmd[k].WAITTIMER, stillNs, lastNs)
+                         && TonBelowLimit(&cmd[k].ACKTIMER, stillNs, lastNs)
+                         && TonBelowLimit(&cmd[k].ENDTIMER, stillNs, lastNs));
     }
 }
 
