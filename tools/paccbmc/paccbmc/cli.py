@@ -18,7 +18,14 @@ def timeline_rerun_args(cbmc_args, failed):
     checked again without it. None when nothing is to be run again."""
     if SLICE not in cbmc_args or not failed:
         return None
-    rerun = [a for a in cbmc_args if a != SLICE]
+    rerun, i = [], 0
+    while i < len(cbmc_args):  # a part of a split run (--only) names its properties: only the failed ones now
+        if cbmc_args[i] == "--property":
+            i += 2
+            continue
+        if cbmc_args[i] != SLICE:
+            rerun.append(cbmc_args[i])
+        i += 1
     for prop in failed:
         rerun += ["--property", prop.name]
     return rerun
@@ -33,12 +40,34 @@ def _cbmc(args, cbmc_args):
         raise ValueError(f"{err}\n{proc.stderr}") from err
 
 
+def only_args(cbmc, cbmc_args, only):
+    """CBMC's arguments for one part of a run split in two (--only): the reachability checks ("reach") or the
+    properties that must hold ("hold"), each as --property, read from `cbmc --show-properties` on the same
+    program. Two CTest tests that run beside each other on two cores then share the run's cost; each part is
+    the whole program, sliced to its own properties (docs/verification.md)."""
+    proc = subprocess.run([cbmc, *cbmc_args, "--show-properties", "--json-ui"], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True)
+    try:
+        names = results.selected(proc.stdout, only == "reach")
+    except ValueError as err:
+        raise ValueError(f"`cbmc --show-properties` failed (exit {proc.returncode}): {err}\n{proc.stderr[-2000:]}")
+    if not names:
+        raise ValueError(f"`cbmc --show-properties` lists no property for --only {only}")
+    return [*cbmc_args, *(a for name in names for a in ("--property", name))]
+
+
 def _run(args) -> int:
     problems = loops.verify(args.cbmc, args.cbmc_args, args.loop)
     if problems:
         for problem in problems:
             print(f"paccbmc: {args.name}: {problem}", file=sys.stderr)
         return 2
+    if args.only:
+        try:
+            args.cbmc_args = only_args(args.cbmc, args.cbmc_args, args.only)
+        except ValueError as err:
+            print(f"paccbmc: {args.name}: {err}", file=sys.stderr)
+            return 2
     start = time.monotonic()
     try:
         proc, props = _cbmc(args, args.cbmc_args)
@@ -95,6 +124,9 @@ def main(argv=None) -> int:
                      help="a property (description prefix) that is a known open defect: reported, not failed")
     run.add_argument("--loop", action="append", default=[], metavar="LOOP=TEXT",
                      help="a loop of --unwindset and a text of its source line: the run fails if the number moved")
+    run.add_argument("--only", choices=("reach", "hold"),
+                     help="one part of a run split in two: only the reachability checks, or only the properties "
+                          "that must hold")
     run.add_argument("--counterexamples", help="folder for each counterexample's free inputs (the replay test)")
     run.add_argument("cbmc_args", nargs=argparse.REMAINDER, help="-- then CBMC's arguments")
     args = parser.parse_args(argv)

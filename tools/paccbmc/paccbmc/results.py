@@ -19,6 +19,18 @@ class Property:
         return self.description.startswith(REACH_PREFIX)
 
 
+def selected(show_properties_json: str, reach: bool) -> List[str]:
+    """The names of the properties of `cbmc --show-properties --json-ui` that are reachability checks (reach) or
+    that must hold (not reach): one part of a run split in two (paccbmc run --only), each given to CBMC as
+    --property. The unwinding assertions are not among them: CBMC checks those in every part."""
+    names = []
+    for message in json.loads(show_properties_json):
+        for item in message.get("properties", []) if isinstance(message, dict) else []:
+            if item.get("description", "").startswith(REACH_PREFIX) == reach:
+                names.append(item["name"])
+    return names
+
+
 def parse(text: str) -> List[Property]:
     """The properties of one CBMC run with --json-ui (and --trace for the failed ones' traces)."""
     messages = json.loads(text)

@@ -44,6 +44,14 @@ class Verdict(unittest.TestCase):
         verdict = results.judge(results.parse(_output(("a", "P1", "UNKNOWN"))))
         self.assertFalse(verdict.ok)
 
+    def test_a_split_run_selects_its_part(self):
+        shown = json.dumps([{"program": "CBMC 6.6.0"}, {"properties": [
+            {"name": "main.assertion.1", "description": "P5 Done"},
+            {"name": "main.assertion.2", "description": "reach: Done"},
+            {"name": "FB.array_bounds.3", "description": "array 'x' upper bound"}]}])
+        self.assertEqual(results.selected(shown, reach=True), ["main.assertion.2"])
+        self.assertEqual(results.selected(shown, reach=False), ["main.assertion.1", "FB.array_bounds.3"])
+
     def test_errors_without_results_are_reported(self):
         with self.assertRaises(ValueError):
             results.parse(json.dumps([{"messageType": "ERROR", "messageText": "parse error"}]))
@@ -75,6 +83,11 @@ class TimelineRerun(unittest.TestCase):
         failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
         self.assertEqual(cli.timeline_rerun_args(["h.c", "--slice-formula", "--unwind", "3"], failed),
                          ["h.c", "--unwind", "3", "--property", "main.assertion.3"])
+
+    def test_a_split_runs_properties_give_way_to_the_failed_ones(self):
+        failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
+        args = ["h.c", "--slice-formula", "--property", "main.assertion.3", "--property", "main.assertion.4"]
+        self.assertEqual(cli.timeline_rerun_args(args, failed), ["h.c", "--property", "main.assertion.3"])
 
     def test_no_rerun_without_slicing_or_failures(self):
         failed = [results.Property("main.assertion.3", "P5 Done", "FAILURE")]
