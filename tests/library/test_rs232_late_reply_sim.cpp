@@ -128,6 +128,18 @@ private:
     nanoseconds firstReply_{-1};
 };
 
+// The CheckRule that names the CHECK the case's controller verifies.
+E_PAC_RS232CHECK ControllersRule(const LateCase& c) {
+    return c.verify == pac::sim::CheckVerification::kXorText ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
+                                                              : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+}
+
+// The skip tests' Timeout and EndTimeout, and the bound of Busy they give with the default Retries (3) and AUTO's
+// probe: (3 + 1 + 1) x 3 x Timeout + EndTimeout (docs/fb/FB_PAC_Rs232Cmd.md, "A noisy line").
+constexpr nanoseconds kSkipTimeout = 100ms;
+constexpr nanoseconds kSkipEndTimeout = 1s;
+constexpr nanoseconds kSkipBound = 5 * 3 * kSkipTimeout + kSkipEndTimeout;
+
 const auto kTimings = ::testing::Values(LateCase{9600, 1, 10}, LateCase{38400, 2, 3},
                                         LateCase{19200, 5, 1, pac::sim::CheckVerification::kXorWithEtx, false});
 
@@ -144,9 +156,7 @@ class Rs232HeldRxBuffer : public ::testing::TestWithParam<LateCase> {};
 TEST_P(Rs232HeldRxBuffer, NoRequestWhileALateReplyComesIn) {
     int failing = 0;
     int cases = 0;
-    const auto controllersRule = GetParam().verify == pac::sim::CheckVerification::kXorText
-                                     ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
-                                     : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+    const auto controllersRule = ControllersRule(GetParam());
     // The driver's schedules: free in one scan of every `period`, from scan `phase` on.
     for (int period = 2; period <= 3; ++period) for (int phase = 0; phase < period; ++phase)
     for (nanoseconds turnaround = 900ms; turnaround <= 1000ms; turnaround += 500us) {
@@ -220,8 +230,8 @@ INSTANTIATE_TEST_SUITE_P(Timings, Rs232RestartLateReply, kTimings, LateCaseName)
 class Rs232SkipPastTimeout : public ::testing::TestWithParam<LateCase> {};
 
 TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitRanOut) {
-    constexpr nanoseconds kTimeout = 100ms;
-    constexpr nanoseconds kBound = 5 * 3 * kTimeout + 1s;
+    constexpr nanoseconds kTimeout = kSkipTimeout;
+    constexpr nanoseconds kBound = kSkipBound;
     const nanoseconds plcCycle = std::chrono::milliseconds(GetParam().plcMs);
     std::vector<nanoseconds> lates;
     for (nanoseconds late = 50ms; late <= 300ms; late += 10ms) {
@@ -236,7 +246,7 @@ TEST_P(Rs232SkipPastTimeout, NoRequestAfterItsWaitRanOut) {
         const std::uint16_t ranOut = quiet ? 0x8012 : 0x8011;
         LateReplyPlc plc(GetParam(), 0ns);
         plc.Cmd()->TIMEOUT.value = pac::ToIecTime(kTimeout);
-        plc.Cmd()->ENDTIMEOUT.value = pac::ToIecTime(1s);
+        plc.Cmd()->ENDTIMEOUT.value = pac::ToIecTime(kSkipEndTimeout);
         plc.LeadIn();
         nanoseconds edge = -1ns;  // the edge's scan holds the buffer too
         plc.LeaveOut([&] { return edge >= 0ns && plc.Rig().Now() > edge && plc.Rig().Now() < edge + late; });
@@ -289,14 +299,12 @@ enum class PastBound { kRefused, kUnread, kProbeAnswered, kLongCommand };
 class Rs232SkipPastBound : public ::testing::TestWithParam<LateCase> {};
 
 TEST_P(Rs232SkipPastBound, TheFirstCallAfterTheBoundBeginsNoNewWait) {
-    constexpr nanoseconds kTimeout = 100ms;
-    constexpr nanoseconds kEndTimeout = 1s;
-    constexpr nanoseconds kBound = 5 * 3 * kTimeout + kEndTimeout;
+    constexpr nanoseconds kTimeout = kSkipTimeout;
+    constexpr nanoseconds kEndTimeout = kSkipEndTimeout;
+    constexpr nanoseconds kBound = kSkipBound;
     const nanoseconds plcCycle = std::chrono::milliseconds(GetParam().plcMs);
     const FreeCommand move{code::kPosAxisAbsolute, 1, pac::test::BitsOf(12.5F)};
-    const auto controllersRule = GetParam().verify == pac::sim::CheckVerification::kXorText
-                                     ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
-                                     : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX;
+    const auto controllersRule = ControllersRule(GetParam());
     const auto otherRule = controllersRule == E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT
                                ? E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_ETX
                                : E_PAC_RS232CHECK__PAC_RS232_CHECK_XOR_TEXT;
