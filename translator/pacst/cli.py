@@ -372,7 +372,8 @@ def _parse_options(parser):
     # The environment's default lets a test suite that starts pacst many times share one cache (and one
     # built parser) without naming it in every command.
     parser.add_argument("--cache", default=os.environ.get("PACST_CACHE") or None,
-                        help="folder for the per-file parse cache (default: $PACST_CACHE, else none)")
+                        help="folder for the per-file parse cache (default: $PACST_CACHE, else none); several "
+                             "joined by ':': the first is written, the others only read")
     parser.add_argument("-j", "--jobs", type=int,
                         help="processes that parse the files the cache lacks (default: one per core)")
 

@@ -263,27 +263,51 @@ def _closed_pou(text, path):
     return f"{text}\nEND_{opened[0]}\n"
 
 
-def _cached_tree(cache_dir, key):
-    """The cached object (a tree, the parser or a file's user text) for `key`, or None. A corrupt cache entry is
+def _cache_folders(cache_dir):
+    """The folders of `cache_dir`: one, or several joined by os.pathsep, of which the first is written and the
+    others are only read (pac-test reads the build's cache, which holds the library, beneath a run's own)."""
+    return [folder for folder in cache_dir.split(os.pathsep) if folder] if cache_dir else []
+
+
+def _cached_entry(cache_dir, key):
+    """(the cached object for `key`, the file it was read from), or (None, None). A corrupt cache entry is
     built again, never trusted."""
-    if not cache_dir:
-        return None
-    cached = os.path.join(cache_dir, key + ".pickle")
-    if not os.path.exists(cached):
-        return None
-    try:
-        with open(cached, "rb") as f:
-            return pickle.load(f)
-    except Exception:
-        return None
+    for folder in _cache_folders(cache_dir):
+        cached = os.path.join(folder, key + ".pickle")
+        if not os.path.exists(cached):
+            continue
+        try:
+            with open(cached, "rb") as f:
+                return pickle.load(f), cached
+        except Exception:
+            continue
+    return None, None
+
+
+def _cached_tree(cache_dir, key):
+    """The cached object (a tree, the parser or a file's user text) for `key`, or None."""
+    return _cached_entry(cache_dir, key)[0]
 
 
 def _store(cache_dir, key, pickled):
-    os.makedirs(cache_dir, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=cache_dir, suffix=".tmp")
+    folder = _cache_folders(cache_dir)[0]
+    os.makedirs(folder, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
     with os.fdopen(fd, "wb") as f:
         f.write(pickled)
-    os.replace(tmp, os.path.join(cache_dir, key + ".pickle"))
+    os.replace(tmp, os.path.join(folder, key + ".pickle"))
+
+
+def _user_tree(cache_dir, text):
+    """User mode, on a miss: the tree of the same text parsed outside user mode (the library's, by its build), once
+    `text` passed user mode's lexical checks; kept under the user-mode key too, so that the next run skips them.
+    The tree depends on the text alone: the two keys differ only in the checks a hit stands for."""
+    tree, cached = _cached_entry(cache_dir, _cache_key(text))
+    if tree is None:
+        return None
+    with open(cached, "rb") as f:
+        _store(cache_dir, _cache_key(text, True), f.read())
+    return tree
 
 
 def _parse_pickled(path, text):
@@ -332,6 +356,7 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
             tree = _cached_tree(cache_dir, _cache_key(text, user))
             if tree is None:
                 lexcheck.check(text, path, user)
+                tree = _user_tree(cache_dir, text) if user and cache_dir else None
         except StError as e:
             results.append(e)
             continue

@@ -70,6 +70,11 @@ class HostBuild:
         translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
         env = dict(os.environ, PYTHONPATH=translator)
         cache = self.parse_cache or os.path.join(self.out, "pacst-cache")
+        # the build's cache under the run's own, only read: it holds the library's parses and the parser's
+        # facts, which a first run would otherwise make again (the library's text is parsed as the build parsed it)
+        built = self.pac.parse_cache
+        if built and os.path.isdir(built) and os.path.abspath(built) != os.path.abspath(cache):
+            cache += os.pathsep + built
         return _run([self.pacst_python, "-m", "pacst", *args[:1], "--cache", cache, *args[1:]], "pacst", env,
                     warnings=True)
 
@@ -125,7 +130,9 @@ class HostBuild:
                 and not os.path.abspath(fb.get("file") or "").startswith(theirs)]
 
     def _flags(self, cxx):
-        flags = ["-g", "-fno-omit-frame-pointer"]
+        # the host's C++ with line tables only, as the debug preset compiles the project's (enough for a
+        # sanitizer's stack trace; full debug information was a quarter of its compile time); the ST's C with all
+        flags = ["-g1" if cxx else "-g", "-fno-omit-frame-pointer"]
         if self.pac.sanitize:
             flags += ["-fsanitize=address,undefined", "-fno-sanitize-recover=undefined"]
         if cxx:

@@ -177,7 +177,8 @@ def main(argv=None):
                         help="a library of your own that the program references under the namespace NAME (a .plcproj "
                              "or its folder, a PLCopen XML project, a folder of ST files); besides the wiring file's "
                              "\"libraries\"")
-    parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache)")
+    parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache); the build's is "
+                        "read beneath it")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
     args = parser.parse_args(argv)
     started = time.monotonic()

@@ -222,6 +222,8 @@ class PacBuild:
         # the library's objects carry gcov's counters in a coverage build: the host links with --coverage
         self.coverage = self.cache.get("PAC_COVERAGE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
         self.sanitize = self.cache.get("PAC_SANITIZE", "OFF").upper() in ("ON", "1", "TRUE", "YES")
+        # pacst's parse cache of the build (the library's parses): pac-test reads it beneath a run's own
+        self.parse_cache = self.cache.get("PACST_CACHE_DIR")
         self.libraries = []
         missing = []
         for name in LIBRARIES:
