@@ -177,6 +177,10 @@ class HostBuild:
                 f.write(text)
         return unit
 
+    def shared_host(self):
+        """pactest_host.cpp's object, shared by every run against this build (and made by its pactest_prepare)."""
+        return self._compile(os.path.join(project.HOST, "pactest_host.cpp"), True, True)
+
     def build(self, symbols, tests):
         os.makedirs(self.obj, exist_ok=True)
         generated = os.path.join(self.out, "pactest_project.cpp")
@@ -188,10 +192,9 @@ class HostBuild:
         c_files = [os.path.join(self.st_out, n) for n in sorted(os.listdir(self.st_out))
                    if n.endswith(".c") and os.path.splitext(n)[0] not in library]
         cxx_files = [generated, os.path.join(project.HOST, "pactest_natives.cpp")]
-        host = os.path.join(project.HOST, "pactest_host.cpp")
         unit = self._unit(c_files)
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
-            shared = pool.submit(self._compile, host, True, True)
+            shared = pool.submit(self.shared_host)
             program = pool.submit(self._compile, unit, False, False, c_files)
             objects = list(pool.map(lambda s: self._compile(s, True), cxx_files))
             objects += [program.result(), shared.result()]
