@@ -164,14 +164,15 @@ class HostBuild:
         compile_to(command, obj, f"compiling {os.path.basename(source)}", whole=shared)
         return obj
 
-    def _unit(self, c_files):
-        """OUT/pactest_st.c, which includes the C of every ST file of the program: compiled as one unit, as the
-        build compiles the library (PAC_ST_UNITY), it reads POUS.h and compiles pacst_iec.h's helpers once, not once
-        per file (half the compiler's time); the #line directives still name each statement's ST line, and a
-        line outside them its own C file. Written only when the list changes, so an unchanged program is not
-        compiled again."""
-        unit = os.path.join(self.out, "pactest_st.c")
-        text = "/* pac-test: the program's C as one unit */\n" + "".join(f'#include "{c}"\n' for c in c_files)
+    def _unit(self, name, files, what):
+        """OUT/`name`, which includes `files`, compiled as one unit: OUT/pactest_st.c, the C of every ST file of the
+        program, as the build compiles the library (PAC_ST_UNITY), reads POUS.h and compiles pacst_iec.h's helpers
+        once, not once per file (half the compiler's time), the #line directives still naming each statement's ST
+        line, and a line outside them its own C file; OUT/pactest_cxx.cpp, the generated project part and the
+        natives, reads POUS.h and the host's header once (a third of their compile time). Written only when the
+        list changes, so an unchanged program is not compiled again."""
+        unit = os.path.join(self.out, name)
+        text = f"/* pac-test: {what} as one unit */\n" + "".join(f'#include "{c}"\n' for c in files)
         if not os.path.exists(unit) or open(unit, encoding="utf-8").read() != text:
             with open(unit, "w", encoding="utf-8") as f:
                 f.write(text)
@@ -192,12 +193,12 @@ class HostBuild:
         c_files = [os.path.join(self.st_out, n) for n in sorted(os.listdir(self.st_out))
                    if n.endswith(".c") and os.path.splitext(n)[0] not in library]
         cxx_files = [generated, os.path.join(project.HOST, "pactest_natives.cpp")]
-        unit = self._unit(c_files)
+        unit = self._unit("pactest_st.c", c_files, "the program's C")
+        cxx_unit = self._unit("pactest_cxx.cpp", cxx_files, "the host's project part and natives")
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             shared = pool.submit(self.shared_host)
             program = pool.submit(self._compile, unit, False, False, c_files)
-            objects = list(pool.map(lambda s: self._compile(s, True), cxx_files))
-            objects += [program.result(), shared.result()]
+            objects = [self._compile(cxx_unit, True, False, cxx_files), program.result(), shared.result()]
         # An earlier build's objects (another key) would add their old lines to the coverage counts.
         keep = {os.path.splitext(o)[0] for o in objects}
         for name in os.listdir(self.obj):

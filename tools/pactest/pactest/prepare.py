@@ -1,7 +1,8 @@
 """What every program's first run against a build would make again, made by the build (`cmake --build`, the
 target pactest_prepare): the host's object shared by the runs against it (build.py's HostBuild) and pacst's user-mode
-parses of pac-test's own ST, the vocabulary and the vendor libraries' parts, in the build's parse cache, which a
-run reads beneath its own. The same objects and parses a run would make: a run finds them by the same keys.
+parses of the ST every program is translated with, the library, the vocabulary and the vendor libraries' parts, in
+the build's parse cache, which a run reads beneath its own. The same object and parses a run would make, under the
+keys a run looks them up by.
 
     python -m pactest.prepare BUILD --stamp FILE
 """
@@ -15,8 +16,9 @@ from . import build, project
 
 
 def parse_own_st(host_build):
-    """pacst's user-mode parses of the vocabulary and the vendor parts, stored in the build's parse cache."""
-    files = project.vocabulary_sources() + project.vendor_sources()
+    """pacst's user-mode parses of the library, the vocabulary and the vendor parts, stored in the build's parse
+    cache (the library's from the build's own parses, which user mode's reading and lexical checks still pass)."""
+    files = project.library_sources() + [project.gvl_pac()] + project.vocabulary_sources() + project.vendor_sources()
     translator = os.environ.get("PACTEST_TRANSLATOR", os.path.join(project.ROOT, "translator"))
     code = ("import sys\nfrom pacst import parsing\n"
             "bad = [r for r in parsing.parse_files(sys.argv[2:], sys.argv[1], user=True) if not isinstance(r, "
