@@ -8,7 +8,6 @@ keys a run looks them up by.
 """
 import argparse
 import os
-import subprocess
 import sys
 import tempfile
 
