@@ -34,9 +34,19 @@ typedef float REAL;
 typedef double LREAL;
 /* MATIEC's IEC_TIMESPEC member for member (long, long): the C++ side of a MATIEC build reads and writes
  * TIME values that MATIEC's code uses, so the layout must be the same (checked, docs/translator.md). */
+#if defined(PACST_CBMC_TIME32) && !defined(__CPROVER__)
+#error "PACST_CBMC_TIME32 is the model checker's TIME: MATIEC's layout (long, long) everywhere else"
+#endif
+#ifdef PACST_CBMC_TIME32
+/* The model checker's TIME (docs/verification.md, "TIME in 32 bits"): the same values in 32-bit fields, every sum
+ * and difference checked for overflow there, so each proof's arithmetic is that of the 64-bit fields. */
+typedef int32_t pacst_time_field;
+#else
+typedef long pacst_time_field;
+#endif
 typedef struct {
-    long tv_sec;
-    long tv_nsec;
+    pacst_time_field tv_sec;
+    pacst_time_field tv_nsec;
 } IEC_TIMESPEC;
 typedef IEC_TIMESPEC TIME;
 /* A STRING: a length and room for STR_MAX_LEN bytes. pacst's C holds 255 characters, TwinCAT's longest
@@ -314,33 +324,41 @@ static inline long __pacst_index(long i, long low, long high, const char *where)
  * TIMEs is within one second of that range and needs one step; only a value further out needs the division.
  * Under a model checker (docs/verification.md) such a value is a failed property instead of a 64-bit divider in
  * the formula of every timer call, which cost most of the proofs 4 to 46 % of their CPU. */
-static inline TIME __time_make(long sec, long nsec) {
+static inline TIME __time_norm(pacst_time_field sec, pacst_time_field nsec) {
+    const pacst_time_field second = 1000000000;
     TIME t;
-    if (nsec >= 0 && nsec < 1000000000L) {
+    if (nsec >= 0 && nsec < second) {
         t.tv_sec = sec;
         t.tv_nsec = nsec;
-    } else if (nsec < 0 && nsec > -1000000000L) {
+    } else if (nsec < 0 && nsec > -second) {
         t.tv_sec = sec - 1;
-        t.tv_nsec = nsec + 1000000000L;
-    } else if (nsec >= 1000000000L && nsec < 2000000000L) {
+        t.tv_nsec = nsec + second;
+    } else if (nsec >= second && nsec - second < second) {
         t.tv_sec = sec + 1;
-        t.tv_nsec = nsec - 1000000000L;
+        t.tv_nsec = nsec - second;
     } else {
 #ifdef __CPROVER__
         __CPROVER_assert(0, "pacst run-time fault: TIME nanoseconds more than one second out of range");
         __CPROVER_assume(0);
 #endif
-        t.tv_sec = sec + nsec / 1000000000L;
-        t.tv_nsec = nsec % 1000000000L;
-        if (t.tv_nsec < 0) { t.tv_nsec += 1000000000L; t.tv_sec -= 1; }
+        t.tv_sec = sec + nsec / second;
+        t.tv_nsec = nsec % second;
+        if (t.tv_nsec < 0) { t.tv_nsec += second; t.tv_sec -= 1; }
     }
     return t;
 }
+static inline TIME __time_make(long sec, long nsec) {
+#ifdef PACST_CBMC_TIME32
+    __CPROVER_assert(sec >= INT32_MIN && sec <= INT32_MAX && nsec >= INT32_MIN && nsec <= INT32_MAX,
+                     "pacst run-time fault: TIME beyond the model checker's 32-bit fields");
+#endif
+    return __time_norm((pacst_time_field)sec, (pacst_time_field)nsec);
+}
 static inline TIME __time_add(TIME a, TIME b) {
-    return __time_make((long)(a.tv_sec + b.tv_sec), (long)a.tv_nsec + (long)b.tv_nsec);
+    return __time_norm((pacst_time_field)(a.tv_sec + b.tv_sec), (pacst_time_field)(a.tv_nsec + b.tv_nsec));
 }
 static inline TIME __time_sub(TIME a, TIME b) {
-    return __time_make((long)(a.tv_sec - b.tv_sec), (long)a.tv_nsec - (long)b.tv_nsec);
+    return __time_norm((pacst_time_field)(a.tv_sec - b.tv_sec), (pacst_time_field)(a.tv_nsec - b.tv_nsec));
 }
 static inline int __time_cmp(TIME a, TIME b) {
     if (a.tv_sec != b.tv_sec) return a.tv_sec < b.tv_sec ? -1 : 1;
