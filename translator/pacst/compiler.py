@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import runinit, system, user, varlen
+from . import csizes, runinit, system, user, varlen
 
 
 
@@ -139,6 +139,7 @@ class Compiler:
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
+        self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -543,7 +544,8 @@ class Compiler:
                 return value
         if self.user:
             raise self.err(node, "array bounds must be integer literals or integer constants declared before (a "
-                                 "global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
+                                 "global list's, List.Name, or the POU's VAR CONSTANT) and SIZEOF of a type (not of "
+                                 "a function block) with + - *: write the number")
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
 
     def constant_int(self, node, earlier=False):
@@ -564,8 +566,32 @@ class Compiler:
             if a is None or b is None:
                 return None
             return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        if cls == "FunctionCall" and self.user and _name(node.name.name).upper() == "SIZEOF":
+            return self._constant_sizeof(node)
         init = self.named_constant(node, earlier)
         return self.constant_int(init, earlier) if init is not None else None
+
+    def _constant_sizeof(self, node):
+        """User mode: SIZEOF(T) of a type T in a constant expression, its bytes in pacst's C (csizes), or None for
+        an argument that is no type or a type whose size is not computed (a function block's)."""
+        params = node.parameters
+        arg = params[0].value if len(params) == 1 and _cls(params[0]) == "InputParameterAssignment" else None
+        if _cls(arg) != "SimpleVariable":
+            return None
+        name = _name(arg.name)
+        pou = getattr(self, "current_pou", None)
+        if pou is not None and pou.var(name) is not None or name.upper() in self.globals:
+            return None  # a variable: its size is C's, in code
+        try:
+            t = self._resolve_type(arg.name, allow_fb=True)
+        except StError:
+            return None
+        size = csizes.size_align(t)
+        if size is None:
+            return None
+        self.dialect(node, "SIZEOF of a type in a constant expression")
+        self.sizeof_checks.setdefault(self.file, set()).add((name, t.cname, size[0]))
+        return size[0]
 
     def named_constant(self, node, earlier=False):
         """User mode: the initial value of the constant `node` names (a POU's or METHOD's VAR CONSTANT, also one of a
