@@ -1550,7 +1550,11 @@ class Compiler:
         # variable may have another FUNCTION's name (TEST_ORDERED's Test), which it hides inside this POU
         own = self.user and up == pou.cname and pou.kind == "function" and pou.ret is None and pou.owner is None
         hides = self.user and up != pou.cname and up in self.function_names and up not in self.types
-        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides):
+        # user mode: an instance named like its function block (TcUnit's `GetCurTaskIndex : GETCURTASKINDEX;`), as
+        # TwinCAT takes it: the name is the instance in this POU, the type where a type is written; C names it apart
+        fb_named = self.user and up != pou.cname and up in self.pous and self.pous[up].kind == "fb" \
+            and not self.pous[up].program
+        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides or fb_named):
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
         if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
@@ -1559,6 +1563,9 @@ class Compiler:
         if own or hides and (up in self.pous or up in self.declared_at):
             self.dialect(dv, f"a variable named like the FUNCTION {name}")
         v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
+        if fb_named:
+            self.dialect(dv, f"a variable named like the function block {name}")
+            v.cname = T.c_safe_name(up)
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:
