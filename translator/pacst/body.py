@@ -811,6 +811,7 @@ class BodyCompiler:
                           else "?" for e in node.elements]
         if len(parts) > 1 and self.comp.namespace(parts[0]) is not None and self.lookup(parts[0]) is None:
             if not self.comp.in_namespace(parts[0], parts[1]):
+                self.comp.taken_by_program(parts[0], parts[1], node)
                 raise self.err(node, f"the library {parts[0]} has no declaration '{parts[1]}'")
             self.comp.dialect(node, f"the namespace in '{parts[0]}.{parts[1]}'")
             parts = parts[1:]

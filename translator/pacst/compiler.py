@@ -140,6 +140,7 @@ class Compiler:
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
+        self.taken_from_library = {}  # user mode: (NAMESPACE, NAME) -> (file, line) of the program's declaration
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -323,6 +324,7 @@ class Compiler:
                        "library's objects out of your sources (pac-test adds the library; export your application "
                        "without it), or rename yours: a program and its libraries share one set of names here")
                 if first[0] != self.file and not owners[0]:
+                    self.taken_from_library[(owners[1].upper(), up)] = first  # Lib.Name: refused, and says why
                     raise StError(first[0], first[1], 1, why)  # at the user's copy, not at the library's file
                 raise self.err(token, why)
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
@@ -443,8 +445,17 @@ class Compiler:
         if self.namespace(first) is None:
             raise self.err(node, f"'{dotted}': {user.unknown_namespace(first, self.namespace_names())}")
         if "." in rest or not self.in_namespace(first, rest):
+            self.taken_by_program(first, rest, node)
             raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
         return rest
+
+    def taken_by_program(self, namespace, name, node):
+        """User mode: for `Namespace.Name` whose library declaration was refused because the program declares Name
+        too (reported there, once), the error that says so, instead of one saying the library lacks Name."""
+        first = self.taken_from_library.get((namespace.upper(), name.upper()))
+        if first is not None:
+            raise self.err(node, f"'{namespace}.{name}' cannot be used: its declaration was refused (above), as the "
+                                 f"program declares {name} too ({first[0]}:{first[1]}): rename the program's")
 
     @staticmethod
     def _part_of(namespace):
@@ -482,6 +493,7 @@ class Compiler:
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
         if not self.in_namespace(first, _name(head.field.name)):
+            self.taken_by_program(first, _name(head.field.name), head.field)
             raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'"
                                        f"{self._part_of(first)}")
         self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
