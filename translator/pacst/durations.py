@@ -77,10 +77,15 @@ def _filled(parts):
 
 
 def finer_than_milliseconds(prefix, literal):
-    """The refusal of a TIME literal (`T#1MS500US`) with microseconds or nanoseconds, or None."""
+    """The refusal of a duration literal whose units are not largest first, each once (`T#500MS1H`), or of a TIME
+    literal (`T#1MS500US`) with microseconds or nanoseconds; or None."""
+    parts = _parts(literal.lstrip("#").lstrip("-"))
+    order = [list(_UNITS).index(u) for _, u in parts or ()]
+    if order != sorted(set(order)):
+        return (f"{prefix}{literal}: the units of a duration go from the largest to the smallest, each once "
+                f"(D H M S MS US NS): write them in that order")
     if prefix.upper() not in ("T", "TIME"):
         return None
-    parts = _parts(literal.lstrip("#").lstrip("-"))
     if parts is None or not any(u in ("US", "NS") for _, u in parts):
         return None
     return (f"{prefix}{literal}: a TIME counts milliseconds in TwinCAT and CODESYS; write an LTIME for "
