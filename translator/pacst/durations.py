@@ -48,7 +48,7 @@ def duration_edits(tokens):
         if finer and not long:
             continue  # a TIME in microseconds: lexcheck refuses it
         coarse = [(n, u) for n, u in parts if u not in ("MS", "US", "NS")]
-        merged = long and finer and len(parts) > 1
+        merged = long and finer
         if merged and any("." in n for n, _ in fine):
             continue  # a fraction of a unit below the second: left to the parser
         if merged:
