@@ -299,15 +299,14 @@ TEST_F(TranslatorUserCli, AProgramsNameTakenFromItsLibraryIsOneClearError) {
     // The program declares FB_Counter and its library Lib does too, declared after the program's (it waits for the
     // library's Z_Count): the refusal is at the program's copy, and Lib.FB_Counter says it was refused there, not
     // that the library has no FB_Counter, which it has.
+    std::string theirs = kCounter;
+    theirs.replace(theirs.find("INT;"), 3, "Z_Count");
     fs::create_directories(dir_ / "Lib");
-    auto lib = Write("Lib/FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT Count : Z_Count; END_VAR\n"
-                                          "Count := Count + 1;\nEND_FUNCTION_BLOCK\n");
-    auto type = Write("Lib/Z_Count.st", "TYPE Z_Count : INT; END_TYPE\n");
-    auto own = Write("FB_Counter.st", "FUNCTION_BLOCK FB_Counter\nVAR_OUTPUT Count : INT; END_VAR\n"
-                                      "Count := Count + 2;\nEND_FUNCTION_BLOCK\n");
+    Write("Lib/FB_Counter.st", theirs);
+    Write("Lib/Z_Count.st", "TYPE Z_Count : INT; END_TYPE\n");
+    auto own = Write("FB_Counter.st", kCounter);
     auto main = Write("MAIN.st", "PROGRAM MAIN\nVAR Theirs : Lib.FB_Counter; END_VAR\nTheirs();\nEND_PROGRAM\n");
-    auto result = RunTranslator({"check", "--user", "--library", "Lib=" + fs::path(lib).parent_path().string(), own,
-                                 main});
+    auto result = RunTranslator({"check", "--user", "--library", "Lib=" + (dir_ / "Lib").string(), own, main});
     EXPECT_EQ(result.exitCode, 1);
     for (const auto& expected : {own + ":1:1: error: function block 'FB_Counter' is declared by the library Lib too",
                                  main + ":2:14: error: 'Lib.FB_Counter' cannot be used: its declaration was refused "
@@ -316,7 +315,6 @@ TEST_F(TranslatorUserCli, AProgramsNameTakenFromItsLibraryIsOneClearError) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
     EXPECT_EQ(result.output.find("has no type or POU"), std::string::npos) << result.output;
-    (void)type;
 }
 
 TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
