@@ -326,6 +326,8 @@ class BodyCompiler:
                                  "accepted by every tool)")
         qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
+        if qualified is not None and getattr(node.elements[0].field, "dereferenced", False):
+            r = self._deref(r, node.elements[0].field)  # GVL.p^: where the list's POINTER points
         if qualified is None and node.name.dereferenced:
             r = self._caret(r, node.name)
         elif elements:
