@@ -388,6 +388,11 @@ class BodyCompiler:
             fv = r.type.var(fname)
             if fv is None:
                 raise self.err(field, f"{r.type.name} has no variable '{fname}'")
+            if fv.section == "var" and self.comp.user:  # read as TwinCAT reads it (SA0102); it refuses a write
+                self.comp.dialect(field, f"a VAR of the function block {r.type.name} read from outside")
+                return Ref(f"{r.read()}.{fv.cname}", not fv.type.is_fb, fv.type, r.var, "", False,
+                           f"'{fname}' is a VAR of {r.type.name}: TwinCAT and CODESYS let other POUs read it, never "
+                           "write it (make it a VAR_INPUT, or write it in a METHOD of the FB)")
             if fv.section not in ("input", "output"):
                 raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
                                       "another FB's private variables")
