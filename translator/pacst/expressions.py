@@ -611,6 +611,7 @@ class ExprCompiler:
             if te.narrow:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
+        a, b = self._enum_as_number(node, a, b), self._enum_as_number(node, b, a)
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
             raise self.err(node.op, f"{t.name} values cannot be compared")
@@ -631,6 +632,19 @@ class ExprCompiler:
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _enum_as_number(self, node, te, other):
+        """User mode: `te`, an enumeration value compared with an integer or bit string that cannot hold all its values
+        (`UDINT_TO_INT(Class) = IBaseLibrary.TypeClass.TYPE_STRING`, TcUnit's FB_TestSuite), as its number in its base
+        type, so that both are compared as numbers in a type that holds both, as TwinCAT compares them for a type
+        without {attribute 'strict'}; `te` unchanged otherwise."""
+        o = other.type
+        if not (self.comp.user and te.type.is_enum and not getattr(te.type, "strict", False)
+                and (o.is_int or o.is_bit) and not widens(te.type, o)):
+            return te
+        base = te.type.base if getattr(te.type, "base", None) is not None and te.type.base.is_int else T.INT
+        self.comp.dialect(node, f"an enumeration value of {te.type.name} compared with {o.name}")
+        return TE(base, f"(({base.cname})({te.code}))")
 
     def _wide_compare(self, node, op, a, b):
         """User mode: a comparison of the result of + - * on types narrower than 32 bits, unwrapped in 64 bits
