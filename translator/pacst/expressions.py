@@ -767,6 +767,10 @@ class ExprCompiler:
             return self._std_numeric(node, up, want)
         if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
             return self._string_function(node, up)
+        if self.comp.user and up == "WLEN" and up not in self.comp.pous:  # a WSTRING's characters, as LEN counts
+            (arg,) = self._positional(node, 1, ["IN"], ["STR"])
+            self.comp.dialect(node, "WLEN")
+            return TE(T.INT, f"__pacst_str_len({self.coerce(self.expr(arg, T.WSTRING), T.WSTRING, arg, 'argument')})")
         if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
                 and self.comp.pous[up].kind == "function":
             raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
