@@ -396,6 +396,10 @@ class ExprCompiler:
         if self.comp.user and _cls(node) == "SimpleVariable" and node.dereferenced \
                 and _name(node.name).upper() == "THIS" and (self.body is None or self.body.lookup("THIS") is None):
             return self._this_instance(node)
+        if self.comp.user and _cls(node) == "SimpleVariable" and not node.dereferenced \
+                and _name(node.name).upper() == "THIS" and (self.body is None or self.body.lookup("THIS") is None):
+            this = self._this_instance(node)  # THIS alone: the instance's address, a POINTER TO its FB
+            return TE(self.comp.pointer_to(this.type), f"(({self.comp.pointer_to(this.type).cname})data__)")
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
         known = system.enum_value(self.comp, node) if self.comp.user and (
             self.body is None or self.body.lookup(_name(getattr(node.name, "name", node.name))) is None) else None
