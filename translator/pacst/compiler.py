@@ -1316,7 +1316,13 @@ class Compiler:
         if "." in name:
             raise self.err(node.name, f"{what} {name}: write it after its FUNCTION_BLOCK, named without it")
         why = reserved_reason(name, True)
-        if why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
+        # a C keyword upper-cased (Delete, Register) is no C word: the METHOD's C function is <OWNER>__DELETE and its
+        # result a local DELETE; the elementary types' names (BOOL, INT) stay refused, C's typedefs
+        up = name.upper()
+        keyword = why and "C keyword" in why and up not in T.ELEMENTARY and up not in T.USER_ELEMENTARY
+        if keyword:
+            self.dialect(node.name, f"the {what} name '{name}', a C keyword upper-cased")
+        elif why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
             raise self.err(node.name, f"{what} {why}")
         if not inherited and (owner.var(name) is not None or name.upper() in owner.methods):
             raise self.err(node.name, f"{what} {name}: {owner.name} already has a variable or member of that name")
