@@ -105,10 +105,11 @@ def vendor_libraries():
             if os.path.isdir(os.path.join(VENDOR, name))}
 
 
-# Vendor FUNCTIONs no other part calls, given (named_only) only to a program whose sources name them: each part
+# Vendor parts no other part uses, given (named_only) only to a program whose sources name them: each part
 # given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
 # examples/pick_and_place on 7 December 2026).
-_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime")
+_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer", "F_ToLCase", "F_ToUCase",
+              "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR")
 
 
 def vendor_sources(sources=(), named_only=False):
