@@ -444,6 +444,10 @@ class Compiler:
         first, _, rest = dotted.partition(".")
         if self.namespace(first) is None:
             raise self.err(node, f"'{dotted}': {user.unknown_namespace(first, self.namespace_names())}")
+        inner = rest.partition(".")[0]
+        if "." in rest and self.namespace(inner) == "library" and not self.in_namespace(first, inner):
+            self.dialect(node, f"the namespace {inner} under {first}")  # SysFile.SysTypes.RTS_IEC_RESULT
+            return self.strip_namespace(rest, node)
         if "." in rest or not self.in_namespace(first, rest):
             self.taken_by_program(first, rest, node)
             raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
@@ -492,6 +496,11 @@ class Compiler:
             return node
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
+        inner = _name(head.field.name)
+        if len(node.elements) > 1 and self.namespace(inner) == "library" and not self.in_namespace(first, inner) \
+                and not head.dereferenced:  # SysDir.CmpErrors.Errors.ERR_OK: a library another one references
+            self.dialect(node, f"the namespace {inner} under {first}")
+            return self.unqualify(dataclasses.replace(node, name=head.field, elements=node.elements[1:]), local)
         if not self.in_namespace(first, _name(head.field.name)):
             self.taken_by_program(first, _name(head.field.name), head.field)
             raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'"

@@ -109,7 +109,8 @@ def vendor_libraries():
 # given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
 # examples/pick_and_place on 7 December 2026).
 _ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer", "F_ToLCase", "F_ToUCase",
-              "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR")
+              "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR", "SysFileOpen", "SysFileClose",
+              "SysFileRead", "SysFileWrite", "SysFileDelete", "SysDirCreate", "FB_FormatString")
 
 
 def vendor_sources(sources=(), named_only=False):
