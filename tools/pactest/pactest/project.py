@@ -125,12 +125,24 @@ def vendor_sources(sources=(), named_only=False):
         return files
     lazy = {f: _part_pattern(f) for f in files if os.path.splitext(os.path.basename(f))[0] in _ON_DEMAND
             or os.path.basename(os.path.dirname(f)) in _ON_DEMAND_LIBRARIES}
-    given, reading = set(), list(sources)
-    while reading:  # the parts the sources name, then those the parts given name
-        found = {f for f, pattern in lazy.items() if f not in given and _names(reading, pattern)}
+    given, texts = set(), _texts(sources)
+    while texts:  # the parts the sources name, then those the parts given name
+        found = {f for f, pattern in lazy.items() if f not in given and any(pattern.search(t) for t in texts)}
         given |= found
-        reading = sorted(found)
+        texts = _texts(sorted(found))
     return [f for f in files if f not in lazy or f in given]
+
+
+def _texts(sources):
+    """The bytes of each of the user's source files (read once for every pattern)."""
+    texts = []
+    for path in _files(sources, (".tcpou", ".st")):
+        try:
+            with open(path, "rb") as f:
+                texts.append(f.read())
+        except OSError:
+            continue
+    return texts
 
 
 def _part_pattern(path):
