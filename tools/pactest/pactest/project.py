@@ -110,7 +110,8 @@ def vendor_libraries():
 # examples/pick_and_place on 7 December 2026), and the libraries below whole, named by a part or their namespace.
 _ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer", "F_ToLCase", "F_ToUCase",
               "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR", "PacTestHexDigits",
-              "FB_FormatString", "T_Arg", "E_ArgType", "FILETIME64_TO_SYSTEMTIME")
+              "FB_FormatString", "T_Arg", "E_ArgType", "FILETIME64_TO_SYSTEMTIME",
+              "WORD_TO_DECSTR")
 _ON_DEMAND_LIBRARIES = ("SysFile", "SysTypes", "SysDir", "CmpErrors")
 
 
