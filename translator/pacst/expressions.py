@@ -1319,8 +1319,15 @@ class ExprCompiler:
         elif positional:
             # user mode: the VAR_IN_OUTs too, in the order of declaration, as TwinCAT takes F(Counter)
             order = [v for v in interface if v.section != "output"] if self.comp.user else inputs
-            if len(positional) != len(order) or not self.comp.user and any(v.section == "inout" for v in interface):
+            # user mode: the last inputs left out take their initial values, as TwinCAT takes M_Open(Name) for
+            # M_Open(sFileName, eMode := SysFile.AM_APPEND_PLUS) (Tc3_Event's FB_FileLogger)
+            short = self.comp.user and len(positional) < len(order) \
+                and all(v.section == "input" for v in order[len(positional):])
+            if len(positional) != len(order) and not short \
+                    or not self.comp.user and any(v.section == "inout" for v in interface):
                 raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
+            if short:
+                self.comp.dialect(node, f"a positional call of {pou.name} without its last inputs")
             if any(v.section == "inout" for v in order):
                 self.comp.dialect(positional[0], "a positional argument for a VAR_IN_OUT")
             for v, p in zip(order, positional):
