@@ -107,7 +107,7 @@ def vendor_libraries():
 
 # Vendor parts given (named_only) only to a program whose sources name them, or whose other parts given name them:
 # each part given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
-# examples/pick_and_place on 7 December 2026), and the libraries below whole, named by a part or their namespace.
+# examples/pick_and_place on 7 December 2026); and so every part of the libraries below.
 _ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer", "F_ToLCase", "F_ToUCase",
               "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR", "PacTestHexDigits",
               "FB_FormatString", "T_Arg", "E_ArgType", "FILETIME64_TO_SYSTEMTIME",
@@ -147,17 +147,13 @@ def _texts(sources):
 
 
 def _part_pattern(path):
-    """What names a vendor part on demand: its name (a global list: its variables' too) or, for a library given
-    whole, its namespace (`SysFile.`)."""
+    """What names a vendor part on demand: its name (a global list: its variables' too)."""
     names = [re.escape(os.path.splitext(os.path.basename(path))[0])]
     with open(path, encoding="utf-8") as f:
         text = f.read()
     if "VAR_GLOBAL" in text:
         names += [re.escape(n) for n in re.findall(r"^\s*(\w+)\s*:", text, re.M)]
-    library = os.path.basename(os.path.dirname(path))
-    if library in _ON_DEMAND_LIBRARIES:
-        names.append(re.escape(library) + r"\s*\.")
-    return re.compile(rb"\b(?:" + "|".join(names).encode() + rb")", re.I)
+    return re.compile(rb"\b(?:" + "|".join(names).encode() + rb")\b", re.I)
 
 
 def vendor_natives(sources=()):
