@@ -295,6 +295,28 @@ TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
               std::string::npos) << result.output;
 }
 
+TEST_F(TranslatorUserCli, AProgramsNameTakenFromItsLibraryIsOneClearError) {
+    // The program declares FB_Counter and its library Lib does too, declared after the program's (it waits for the
+    // library's Z_Count): the refusal is at the program's copy, and Lib.FB_Counter says it was refused there, not
+    // that the library has no FB_Counter, which it has.
+    std::string theirs = kCounter;
+    theirs.replace(theirs.find("INT;"), 3, "Z_Count");
+    fs::create_directories(dir_ / "Lib");
+    Write("Lib/FB_Counter.st", theirs);
+    Write("Lib/Z_Count.st", "TYPE Z_Count : INT; END_TYPE\n");
+    auto own = Write("FB_Counter.st", kCounter);
+    auto main = Write("MAIN.st", "PROGRAM MAIN\nVAR Theirs : Lib.FB_Counter; END_VAR\nTheirs();\nEND_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", "--library", "Lib=" + (dir_ / "Lib").string(), own, main});
+    EXPECT_EQ(result.exitCode, 1);
+    for (const auto& expected : {own + ":1:1: error: function block 'FB_Counter' is declared by the library Lib too",
+                                 main + ":2:14: error: 'Lib.FB_Counter' cannot be used: its declaration was refused "
+                                        "(above), as the program declares FB_Counter too (" + own + ":1): rename the "
+                                        "program's"}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+    EXPECT_EQ(result.output.find("has no type or POU"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
     // A PLCopen object pacst cannot read is one line naming the XML file and the object's line, not a traceback.
     auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"

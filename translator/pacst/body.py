@@ -326,6 +326,8 @@ class BodyCompiler:
                                  "accepted by every tool)")
         qualified = self._qualified_global(node) or self._program_variable(node)
         r, elements = qualified if qualified is not None else (self._root(node.name.name), node.elements)
+        if qualified is not None and getattr(node.elements[0].field, "dereferenced", False):
+            r = self._deref(r, node.elements[0].field)  # GVL.p^: where the list's POINTER points
         if qualified is None and node.name.dereferenced:
             r = self._caret(r, node.name)
         elif elements:
@@ -386,6 +388,11 @@ class BodyCompiler:
             fv = r.type.var(fname)
             if fv is None:
                 raise self.err(field, f"{r.type.name} has no variable '{fname}'")
+            if fv.section == "var" and self.comp.user:  # read as TwinCAT reads it (SA0102); it refuses a write
+                self.comp.dialect(field, f"a VAR of the function block {r.type.name} read from outside")
+                return Ref(f"{r.read()}.{fv.cname}", not fv.type.is_fb, fv.type, r.var, "", False,
+                           f"'{fname}' is a VAR of {r.type.name}: TwinCAT and CODESYS let other POUs read it, never "
+                           "write it (make it a VAR_INPUT, or write it in a METHOD of the FB)")
             if fv.section not in ("input", "output"):
                 raise self.err(field, f"'{fname}' is private to {r.type.name}: never read or write "
                                       "another FB's private variables")
@@ -811,6 +818,7 @@ class BodyCompiler:
                           else "?" for e in node.elements]
         if len(parts) > 1 and self.comp.namespace(parts[0]) is not None and self.lookup(parts[0]) is None:
             if not self.comp.in_namespace(parts[0], parts[1]):
+                self.comp.taken_by_program(parts[0], parts[1], node)
                 raise self.err(node, f"the library {parts[0]} has no declaration '{parts[1]}'")
             self.comp.dialect(node, f"the namespace in '{parts[0]}.{parts[1]}'")
             parts = parts[1:]

@@ -19,7 +19,7 @@ from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
 from .errors import StError, StErrors
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
-from . import runinit, system, user, varlen
+from . import csizes, runinit, system, user, varlen
 
 
 
@@ -139,6 +139,8 @@ class Compiler:
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
+        self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
+        self.taken_from_library = {}  # user mode: (NAMESPACE, NAME) -> (file, line) of the program's declaration
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -322,6 +324,7 @@ class Compiler:
                        "library's objects out of your sources (pac-test adds the library; export your application "
                        "without it), or rename yours: a program and its libraries share one set of names here")
                 if first[0] != self.file and not owners[0]:
+                    self.taken_from_library[(owners[1].upper(), up)] = first  # Lib.Name: refused, and says why
                     raise StError(first[0], first[1], 1, why)  # at the user's copy, not at the library's file
                 raise self.err(token, why)
             raise self.err(token, f"{what} '{name}' is declared twice (names are case-insensitive)")
@@ -441,9 +444,22 @@ class Compiler:
         first, _, rest = dotted.partition(".")
         if self.namespace(first) is None:
             raise self.err(node, f"'{dotted}': {user.unknown_namespace(first, self.namespace_names())}")
+        inner = rest.partition(".")[0]
+        if "." in rest and self.namespace(inner) == "library" and not self.in_namespace(first, inner):
+            self.dialect(node, f"the namespace {inner} under {first}")  # SysFile.SysTypes.RTS_IEC_RESULT
+            return self.strip_namespace(rest, node)
         if "." in rest or not self.in_namespace(first, rest):
+            self.taken_by_program(first, rest, node)
             raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
         return rest
+
+    def taken_by_program(self, namespace, name, node):
+        """User mode: for `Namespace.Name` whose library declaration was refused because the program declares Name
+        too (reported there, once), the error that says so, instead of one saying the library lacks Name."""
+        first = self.taken_from_library.get((namespace.upper(), name.upper()))
+        if first is not None:
+            raise self.err(node, f"'{namespace}.{name}' cannot be used: its declaration was refused (above), as the "
+                                 f"program declares {name} too ({first[0]}:{first[1]}): rename the program's")
 
     @staticmethod
     def _part_of(namespace):
@@ -480,7 +496,13 @@ class Compiler:
             return node
         if _cls(head) != "FieldSelector" or _cls(head.field) != "SimpleVariable":
             raise self.err(head, f"{first} is a library namespace: name one of its declarations ({first}.Name)")
+        inner = _name(head.field.name)
+        if len(node.elements) > 1 and self.namespace(inner) == "library" and not self.in_namespace(first, inner) \
+                and not head.dereferenced:  # SysDir.CmpErrors.Errors.ERR_OK: a library another one references
+            self.dialect(node, f"the namespace {inner} under {first}")
+            return self.unqualify(dataclasses.replace(node, name=head.field, elements=node.elements[1:]), local)
         if not self.in_namespace(first, _name(head.field.name)):
+            self.taken_by_program(first, _name(head.field.name), head.field)
             raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'"
                                        f"{self._part_of(first)}")
         self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
@@ -543,7 +565,8 @@ class Compiler:
                 return value
         if self.user:
             raise self.err(node, "array bounds must be integer literals or integer constants declared before (a "
-                                 "global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
+                                 "global list's, List.Name, or the POU's VAR CONSTANT) and SIZEOF of a type (not of "
+                                 "a function block) with + - *: write the number")
         raise self.err(node, "array bounds must be integer literals (no constants, MATIEC)")
 
     def constant_int(self, node, earlier=False):
@@ -564,8 +587,32 @@ class Compiler:
             if a is None or b is None:
                 return None
             return a + b if str(node.op) == "+" else a - b if str(node.op) == "-" else a * b
+        if cls == "FunctionCall" and self.user and _name(node.name.name).upper() == "SIZEOF":
+            return self._constant_sizeof(node)
         init = self.named_constant(node, earlier)
         return self.constant_int(init, earlier) if init is not None else None
+
+    def _constant_sizeof(self, node):
+        """User mode: SIZEOF(T) of a type T in a constant expression, its bytes in pacst's C (csizes), or None for
+        an argument that is no type or a type whose size is not computed (a function block's)."""
+        params = node.parameters
+        arg = params[0].value if len(params) == 1 and _cls(params[0]) == "InputParameterAssignment" else None
+        if _cls(arg) != "SimpleVariable":
+            return None
+        name = _name(arg.name)
+        pou = getattr(self, "current_pou", None)
+        if pou is not None and pou.var(name) is not None or name.upper() in self.globals:
+            return None  # a variable: its size is C's, in code
+        try:
+            t = self._resolve_type(arg.name, allow_fb=True)
+        except StError:
+            return None
+        size = csizes.size_align(t)
+        if size is None:
+            return None
+        self.dialect(node, "SIZEOF of a type in a constant expression")
+        self.sizeof_checks.setdefault(self.file, set()).add((name, t.cname, size[0]))
+        return size[0]
 
     def named_constant(self, node, earlier=False):
         """User mode: the initial value of the constant `node` names (a POU's or METHOD's VAR CONSTANT, also one of a
@@ -1278,7 +1325,13 @@ class Compiler:
         if "." in name:
             raise self.err(node.name, f"{what} {name}: write it after its FUNCTION_BLOCK, named without it")
         why = reserved_reason(name, True)
-        if why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
+        # a C keyword upper-cased (Delete, Register) is no C word: the METHOD's C function is <OWNER>__DELETE and its
+        # result a local DELETE; the elementary types' names (BOOL, INT) stay refused, C's typedefs
+        up = name.upper()
+        keyword = why and "C keyword" in why and up not in T.ELEMENTARY and up not in T.USER_ELEMENTARY
+        if keyword:
+            self.dialect(node.name, f"the {what} name '{name}', a C keyword upper-cased")
+        elif why and "standard" not in why and "elementary type" not in why:  # MOVE, Reset: the FB's own names
             raise self.err(node.name, f"{what} {why}")
         if not inherited and (owner.var(name) is not None or name.upper() in owner.methods):
             raise self.err(node.name, f"{what} {name}: {owner.name} already has a variable or member of that name")
@@ -1524,7 +1577,11 @@ class Compiler:
         # variable may have another FUNCTION's name (TEST_ORDERED's Test), which it hides inside this POU
         own = self.user and up == pou.cname and pou.kind == "function" and pou.ret is None and pou.owner is None
         hides = self.user and up != pou.cname and up in self.function_names and up not in self.types
-        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides):
+        # user mode: an instance named like its function block (TcUnit's `GetCurTaskIndex : GETCURTASKINDEX;`), as
+        # TwinCAT takes it: the name is the instance in this POU, the type where a type is written; C names it apart
+        fb_named = self.user and up != pou.cname and up in self.pous and self.pous[up].kind == "fb" \
+            and not self.pous[up].program
+        if (up in self.types or up in self.pous or up in self.declared_at) and not (own or hides or fb_named):
             raise self.err(dv, f"variable '{name}' has the name of a type or POU (MATIEC refuses it)")
         if up in self.enum_values and not self.user:  # user mode: the variable shadows it; E.A names the value
             raise self.err(dv, f"variable '{name}' has the name of an enumeration value")
@@ -1533,6 +1590,9 @@ class Compiler:
         if own or hides and (up in self.pous or up in self.declared_at):
             self.dialect(dv, f"a variable named like the FUNCTION {name}")
         v = user.c_safe(self, T.Var(name, section, vtype, value, dv, constant))
+        if fb_named:
+            self.dialect(dv, f"a variable named like the function block {name}")
+            v.cname = T.c_safe_name(up)
         if constant and value is None and section not in ("inout", "input"):
             raise self.err(dv, f"constant '{name}' needs a value")
         if value is not None:

@@ -1,8 +1,10 @@
-"""User mode: LTIME literals with microseconds and nanoseconds (`LTIME#1S2US44NS`, `LT#5MS100NS`), which
-blark's grammar reads only alone (`LTIME#5US`), not after another unit. Before parsing, the milliseconds,
-microseconds and nanoseconds of such a literal are written as one fixed-point number of milliseconds, which
-the grammar reads after any unit and which stands for the same nanoseconds: `LTIME#1S0.002044MS`. A literal
-keeps its first column; a longer spelling only moves the rest of its line (rewrite.py)."""
+"""User mode: duration literals blark's grammar does not read, written before parsing as ones it reads that stand
+for the same time. LTIME literals with microseconds and nanoseconds (`LTIME#1S2US44NS`, `LT#5MS100NS`), which it
+reads only alone (`LTIME#5US`): their milliseconds, microseconds and nanoseconds become one fixed-point number of
+milliseconds, which it reads after any unit: `LTIME#1S0.002044MS`. Literals that skip a unit (`T#1H500MS`,
+`T#2D5S`), which IEC 61131-3 allows and the grammar does not: the units skipped are written as 0
+(`T#1H0M0S500MS`). A literal keeps its first column; a longer spelling only moves the rest of its line
+(rewrite.py)."""
 import re
 
 _LONG = {"LTIME", "LT"}
@@ -23,39 +25,67 @@ def _parts(body):
     return parts or None
 
 
-def long_time_edits(tokens):
-    """([(start, end, replacement)], [(line, column, construct)]) for the LTIME literals among `tokens` (lexcheck's)
-    whose microseconds or nanoseconds follow another unit."""
+def duration_edits(tokens):
+    """([(start, end, replacement)], [(line, column, construct)]) for the duration literals among `tokens` (lexcheck's)
+    that are LTIME literals whose microseconds or nanoseconds follow another unit, or that skip a unit."""
     edits, uses = [], []
     for tok in tokens:
         if tok.kind != "literal" or "#" not in tok.text:
             continue
         prefix, body = tok.text.split("#", 1)
-        if prefix.upper() not in _LONG:
+        long = prefix.upper() in _LONG
+        if not long and prefix.upper() not in ("T", "TIME"):
             continue
         sign = "-" if body.startswith("-") else ""
         parts = _parts(body[len(sign):])
-        if parts is None or len(parts) < 2 or not any(u in ("US", "NS") for _, u in parts):
+        if parts is None or len(parts) < 2:
             continue
-        coarse = [(n, u) for n, u in parts if u not in ("MS", "US", "NS")]
+        order = [list(_UNITS).index(u) for _, u in parts]
+        if order != sorted(set(order)) or any("." in n for n, _ in parts[:-1]):
+            continue  # units out of order, a fraction before the last unit: left to the parser, which says so
         fine = [(n, u) for n, u in parts if u in ("MS", "US", "NS")]
-        if any("." in n for n, _ in fine):
+        finer = any(u in ("US", "NS") for _, u in fine)
+        if finer and not long:
+            continue  # a TIME in microseconds: lexcheck refuses it
+        coarse = [(n, u) for n, u in parts if u not in ("MS", "US", "NS")]
+        merged = long and finer
+        if merged and any("." in n for n, _ in fine):
             continue  # a fraction of a unit below the second: left to the parser
-        ns = sum(int(n.replace("_", "")) * _UNITS[u] for n, u in fine)
-        whole, rest = divmod(ns, 10**6)
-        fraction = f"{rest:06d}".rstrip("0")
-        ms = f"{whole}.{fraction}MS" if fraction else f"{whole}MS"
-        text = f"{prefix}#{sign}" + "".join(f"{n}{u}" for n, u in coarse) + ms
+        if merged:
+            ns = sum(int(n.replace("_", "")) * _UNITS[u] for n, u in fine)
+            whole, rest = divmod(ns, 10**6)
+            fraction = f"{rest:06d}".rstrip("0")
+            fine = [(f"{whole}.{fraction}" if fraction else f"{whole}", "MS")]
+        filled = _filled(coarse + fine)
+        if not merged and len(filled) == len(parts):
+            continue
+        text = f"{prefix}#{sign}" + "".join(f"{n}{u}" for n, u in filled)
         edits.append((tok.start, tok.start + len(tok.text), text))
-        uses.append((tok.line, tok.col, "an LTIME literal with microseconds or nanoseconds"))
+        if merged:
+            uses.append((tok.line, tok.col, "an LTIME literal with microseconds or nanoseconds"))
+        if len(filled) > len(coarse + fine):
+            uses.append((tok.line, tok.col, "a duration literal that skips a unit"))
     return edits, uses
 
 
+def _filled(parts):
+    """`parts` (units in order, at most one below the second) with a 0 of every unit skipped between them."""
+    units = list(_UNITS)
+    have = dict((u, n) for n, u in parts)
+    first, last = units.index(parts[0][1]), units.index(parts[-1][1])
+    return [(have.get(u, "0"), u) for u in units[first:last + 1]]
+
+
 def finer_than_milliseconds(prefix, literal):
-    """The refusal of a TIME literal (`T#1MS500US`) with microseconds or nanoseconds, or None."""
+    """The refusal of a duration literal whose units are not largest first, each once (`T#500MS1H`), or of a TIME
+    literal (`T#1MS500US`) with microseconds or nanoseconds; or None."""
+    parts = _parts(literal.lstrip("#").lstrip("-"))
+    order = [list(_UNITS).index(u) for _, u in parts or ()]
+    if order != sorted(set(order)):
+        return (f"{prefix}{literal}: the units of a duration go from the largest to the smallest, each once "
+                f"(D H M S MS US NS): write them in that order")
     if prefix.upper() not in ("T", "TIME"):
         return None
-    parts = _parts(literal.lstrip("#").lstrip("-"))
     if parts is None or not any(u in ("US", "NS") for _, u in parts):
         return None
     return (f"{prefix}{literal}: a TIME counts milliseconds in TwinCAT and CODESYS; write an LTIME for "

@@ -6,7 +6,7 @@ import shutil
 import tempfile
 
 from . import types as T
-from . import varlen
+from . import csizes, varlen
 from .body import program_instance
 from .common import chained_dispatcher, first_output, first_output_cfunc, first_output_returnable, inout_parameter, \
     inouts_by_reference
@@ -404,6 +404,9 @@ class Emitter:
 
     def source(self, path):
         out = [f"{GENERATED}{os.path.basename(path)}. Do not edit. */", '#include "POUS.h"', ""]
+        checks = getattr(self.comp, "sizeof_checks", {}).get(path)
+        if checks:  # user mode: the bytes pacst computed for SIZEOF in a constant expression are C's
+            out += csizes.sizes_c(checks) + [""]
         for kind, obj, file in self.program.items:
             if kind == "gvl" and file == path:
                 out += self._gvl_code(obj)

@@ -396,6 +396,10 @@ class ExprCompiler:
         if self.comp.user and _cls(node) == "SimpleVariable" and node.dereferenced \
                 and _name(node.name).upper() == "THIS" and (self.body is None or self.body.lookup("THIS") is None):
             return self._this_instance(node)
+        if self.comp.user and _cls(node) == "SimpleVariable" and not node.dereferenced \
+                and _name(node.name).upper() == "THIS" and (self.body is None or self.body.lookup("THIS") is None):
+            this = self._this_instance(node)  # THIS alone: the instance's address, a POINTER TO its FB
+            return TE(self.comp.pointer_to(this.type), f"(({self.comp.pointer_to(this.type).cname})data__)")
         node = self.comp.unqualify(node, self.body.lookup if self.body is not None else None)
         known = system.enum_value(self.comp, node) if self.comp.user and (
             self.body is None or self.body.lookup(_name(getattr(node.name, "name", node.name))) is None) else None
@@ -611,6 +615,7 @@ class ExprCompiler:
             if te.narrow:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
+        a, b = self._enum_as_number(node, a, b), self._enum_as_number(node, b, a)
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
             raise self.err(node.op, f"{t.name} values cannot be compared")
@@ -631,6 +636,19 @@ class ExprCompiler:
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _enum_as_number(self, node, te, other):
+        """User mode: `te`, an enumeration value compared with an integer or bit string that cannot hold all its values
+        (`UDINT_TO_INT(Class) = IBaseLibrary.TypeClass.TYPE_STRING`, TcUnit's FB_TestSuite), as its number in its base
+        type, so that both are compared as numbers in a type that holds both, as TwinCAT compares them for a type
+        without {attribute 'strict'}; `te` unchanged otherwise."""
+        o = other.type
+        if not (self.comp.user and te.type.is_enum and not getattr(te.type, "strict", False)
+                and (o.is_int or o.is_bit) and not widens(te.type, o)):
+            return te
+        base = te.type.base if getattr(te.type, "base", None) is not None and te.type.base.is_int else T.INT
+        self.comp.dialect(node, f"an enumeration value of {te.type.name} compared with {o.name}")
+        return TE(base, f"(({base.cname})({te.code}))")
 
     def _wide_compare(self, node, op, a, b):
         """User mode: a comparison of the result of + - * on types narrower than 32 bits, unwrapped in 64 bits
@@ -753,6 +771,10 @@ class ExprCompiler:
             return self._std_numeric(node, up, want)
         if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
             return self._string_function(node, up)
+        if self.comp.user and up == "WLEN" and up not in self.comp.pous:  # a WSTRING's characters, as LEN counts
+            (arg,) = self._positional(node, 1, ["IN"], ["STR"])
+            self.comp.dialect(node, "WLEN")
+            return TE(T.INT, f"__pacst_str_len({self.coerce(self.expr(arg, T.WSTRING), T.WSTRING, arg, 'argument')})")
         if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
                 and self.comp.pous[up].kind == "function":
             raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
@@ -1297,8 +1319,15 @@ class ExprCompiler:
         elif positional:
             # user mode: the VAR_IN_OUTs too, in the order of declaration, as TwinCAT takes F(Counter)
             order = [v for v in interface if v.section != "output"] if self.comp.user else inputs
-            if len(positional) != len(order) or not self.comp.user and any(v.section == "inout" for v in interface):
+            # user mode: the last inputs left out take their initial values, as TwinCAT takes M_Open(Name) for
+            # M_Open(sFileName, eMode := SysFile.AM_APPEND_PLUS) (Tc3_Event's FB_FileLogger)
+            short = self.comp.user and len(positional) < len(order) \
+                and all(v.section == "input" for v in order[len(positional):])
+            if len(positional) != len(order) and not short \
+                    or not self.comp.user and any(v.section == "inout" for v in interface):
                 raise self.err(node, f"positional call of {pou.name}: give every input, or call formally")
+            if short:
+                self.comp.dialect(node, f"a positional call of {pou.name} without its last inputs")
             if any(v.section == "inout" for v in order):
                 self.comp.dialect(positional[0], "a positional argument for a VAR_IN_OUT")
             for v, p in zip(order, positional):

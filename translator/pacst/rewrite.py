@@ -91,7 +91,7 @@ def user_text(text, path):
             members = _result_members(tokens, k)
             uses += [(m.line, m.col, CALL_MEMBER) for m in members]
             edits += [(m.end, m.end, "()") for m in members]
-    more, used = durations.long_time_edits(tokens)  # LTIME#1S2US44NS
+    more, used = durations.duration_edits(tokens)  # LTIME#1S2US44NS, T#1H500MS
     edits, uses = sorted(edits + more), uses + used
     if not edits:
         return text, []

@@ -105,22 +105,55 @@ def vendor_libraries():
             if os.path.isdir(os.path.join(VENDOR, name))}
 
 
-# Vendor FUNCTIONs no other part calls, given (named_only) only to a program whose sources name them: each part
-# given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
-# examples/pick_and_place on 7 December 2026).
-_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime")
+# Vendor parts given (named_only) only to a program whose sources name them, or whose other parts given name them:
+# each part given costs every program CPU to translate and compile (the first two, 0.5 s of user CPU for
+# examples/pick_and_place on 7 December 2026); and so every part of the libraries below.
+_ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer", "F_ToLCase", "F_ToUCase",
+              "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR", "PacTestHexDigits",
+              "FB_FormatString", "T_Arg", "E_ArgType", "FILETIME64_TO_SYSTEMTIME",
+              "WORD_TO_DECSTR")
+_ON_DEMAND_LIBRARIES = ("SysFile", "SysTypes", "SysDir", "CmpErrors")
 
 
 def vendor_sources(sources=(), named_only=False):
     """The vendor parts' files, but those declaring a name the user's `sources` declare themselves (a program's
-    own TIMESTRUCT or FLOOR stays the program's); `named_only`: and _ON_DEMAND's only where the sources name them."""
+    own TIMESTRUCT or FLOOR stays the program's); `named_only`: and the parts on demand only where the sources, or
+    the parts given, name them."""
     theirs = declared_names(sources)
     files = [f for folder in vendor_libraries().values() for f in sorted(glob.glob(os.path.join(folder, "*.st")))
              if os.path.splitext(os.path.basename(f))[0].upper() not in theirs]
     if not named_only:
         return files
-    named = {n for n in _ON_DEMAND if _names(sources, re.compile(rb"\b" + n.encode() + rb"\b", re.I))}
-    return [f for f in files if os.path.splitext(os.path.basename(f))[0] not in set(_ON_DEMAND) - named]
+    lazy = {f: _part_pattern(f) for f in files if os.path.splitext(os.path.basename(f))[0] in _ON_DEMAND
+            or os.path.basename(os.path.dirname(f)) in _ON_DEMAND_LIBRARIES}
+    given, texts = set(), _texts(sources)
+    while texts:  # the parts the sources name, then those the parts given name
+        found = {f for f, pattern in lazy.items() if f not in given and any(pattern.search(t) for t in texts)}
+        given |= found
+        texts = _texts(sorted(found))
+    return [f for f in files if f not in lazy or f in given]
+
+
+def _texts(sources):
+    """The bytes of each of the user's source files (read once for every pattern)."""
+    texts = []
+    for path in _files(sources, (".tcpou", ".st")):
+        try:
+            with open(path, "rb") as f:
+                texts.append(f.read())
+        except OSError:
+            continue
+    return texts
+
+
+def _part_pattern(path):
+    """What names a vendor part on demand: its name (a global list: its variables' too)."""
+    names = [re.escape(os.path.splitext(os.path.basename(path))[0])]
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    if "VAR_GLOBAL" in text:
+        names += [re.escape(n) for n in re.findall(r"^\s*(\w+)\s*:", text, re.M)]
+    return re.compile(rb"\b(?:" + "|".join(names).encode() + rb")\b", re.I)
 
 
 def vendor_natives(sources=()):
