@@ -532,7 +532,7 @@ class BodyCompiler:
     def compile(self):
         pou = self.pou
         statements = pou.node.body.statements if pou.node.body is not None else []
-        if not statements and self.comp.user and (pou.kind == "fb" or pou.ret is None):
+        if not statements and self.comp.user:  # a result keeps its initial value, as one never assigned
             self.comp.dialect(pou.node, f"{pou.name} with an empty body")
             return []
         if not statements:
