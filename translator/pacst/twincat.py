@@ -129,9 +129,12 @@ def _property(text, chars, m, close, path):
     after = _write(chars, declaration.end(), first, "END_PROPERTY", path, declaration.end())
     for a in accessors:
         a_close = text.find(f"</{a.group(1)}>", a.end())
-        # the heading may take the blanks before the <Get> tag too (a long type), after what was written before it
-        _write(chars, max(after, text.rfind("\n", 0, a.start()) + 1), _next_cdata_start(text, a.end()),
-               f"PROPERTY {name}.{a.group(1)} : {type_text}", path, a.start())
+        heading = f"PROPERTY {name}.{a.group(1)} : {type_text}"
+        try:
+            _write(chars, a.start(), _next_cdata_start(text, a.end()), heading, path, a.start())
+        except StError:  # a heading longer than the <Get> tag: the blanks before it too, after what was written
+            _write(chars, max(after, text.rfind("\n", 0, a.start()) + 1), _next_cdata_start(text, a.end()), heading,
+                   path, a.start())
         after = _write(chars, _last_cdata_end(text, a_close), a_close + len(a.group(1)) + 3, "END_PROPERTY", path,
                        a_close)
 
