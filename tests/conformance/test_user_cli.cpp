@@ -224,6 +224,24 @@ TEST_F(TranslatorUserCli, CallOfARefusedFunctionSaysSoAsAStatementToo) {
     EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
 }
 
+TEST_F(TranslatorUserCli, UseOfAGlobalInstanceOfARefusedFbSaysSo) {
+    // The CNC machine's MAIN calls `fbCNC();`, an instance its GVL declares of the refused FB_CNC: the call and a
+    // read of its output point back at that refusal instead of calling the name undeclared.
+    auto fb = Write("FB_Machine.st", "FUNCTION_BLOCK FB_Machine\nVAR_OUTPUT Busy : BOOL; END_VAR\n"
+                                     "VAR X : NoSuchType; END_VAR\nBusy := TRUE;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("GVL.st", "VAR_GLOBAL\n  Machine : FB_Machine;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Busy : BOOL; END_VAR\nMachine();\nBusy := Machine.Busy;\n"
+                                     "END_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", fb, list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    const std::string why = "'Machine' of the global list GVL cannot be used: the declaration of its function block "
+                            "was refused (above)";
+    for (const auto& expected : {main + ":3:1: error: " + why, main + ":4:9: error: " + why}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+    EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, MethodThroughAListsPointerToARefusedFbPointsAtTheRefusal) {
     // TcUnit's GVL_TcUnit.TestSuiteAddresses[i]^.AreAllTestsFinished() in an expression, when FB_TestSuite was
     // refused: the list's variable waits for the FB, so the call points back at the FB's refusal (it said "only plain

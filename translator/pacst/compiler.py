@@ -533,11 +533,23 @@ class Compiler:
                     self.enum_values or up in self.declared_at or up in self.refused or system.is_system(name)
                     or up in ("THIS", "SUPER"))
 
+    def refused_global(self, node, name):
+        """User mode: refuses `name` at `node` when a global list declares it as an instance of a FUNCTION_BLOCK
+        whose declaration was refused (the CNC machine's `fbCNC : FB_CNC;` in its GVL): the instance waits for its
+        FB, which never comes."""
+        up = name.upper()
+        for fb, waiting in self.pending_globals.items() if self.user else ():
+            for gvl, item, _, _ in waiting if fb in self.refused else ():
+                if any(_name(token).upper() == up for token in item.spec.variables):
+                    raise self.err(node, f"'{name}' of the global list {gvl.name} cannot be used: the declaration of "
+                                         "its function block was refused (above)")
+
     def _unknown_head(self, token, name):
         """The refusal of `name.x` where `name` is declared nowhere: a vendor library's namespace, or an undeclared
         name that would be a library's namespace if the library were given."""
         if user.namespace_like(name):
             raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.namespace_names())}")
+        self.refused_global(token, name)
         raise self.err(token, f"undeclared name '{name}': no variable, global list, PROGRAM or library namespace "
                               f"({', '.join(self.namespace_names())}) has that name; a library of your own is given "
                               f"to pac-test with the namespace it is referenced under: --library {name}=PATH")
