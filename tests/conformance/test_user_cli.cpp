@@ -234,8 +234,8 @@ TEST_F(TranslatorUserCli, UseOfAGlobalInstanceOfARefusedFbSaysSo) {
                                      "END_PROGRAM\n");
     auto result = RunTranslator({"check", "--user", fb, list, main});
     EXPECT_EQ(result.exitCode, 1);
-    const std::string why = "'Machine' of the global list GVL cannot be used: the declaration of its function block "
-                            "was refused (above)";
+    const std::string why = "'Machine' of the global list GVL cannot be used: its function block's declaration was "
+                            "refused (above)";
     for (const auto& expected : {main + ":3:1: error: " + why, main + ":4:9: error: " + why}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }

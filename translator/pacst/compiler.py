@@ -541,8 +541,8 @@ class Compiler:
         for fb, waiting in self.pending_globals.items() if self.user else ():
             for gvl, item, _, _ in waiting if fb in self.refused else ():
                 if any(_name(token).upper() == up for token in item.spec.variables):
-                    raise self.err(node, f"'{name}' of the global list {gvl.name} cannot be used: the declaration of "
-                                         "its function block was refused (above)")
+                    raise self.err(node, f"'{name}' of the global list {gvl.name} cannot be used: its function "
+                                         "block's declaration was refused (above)")
 
     def _unknown_head(self, token, name):
         """The refusal of `name.x` where `name` is declared nowhere: a vendor library's namespace, or an undeclared
