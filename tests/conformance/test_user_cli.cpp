@@ -224,6 +224,24 @@ TEST_F(TranslatorUserCli, CallOfARefusedFunctionSaysSoAsAStatementToo) {
     EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
 }
 
+TEST_F(TranslatorUserCli, UseOfAGlobalInstanceOfARefusedFbSaysSo) {
+    // The CNC machine's MAIN calls `fbCNC();`, an instance its GVL declares of the refused FB_CNC: the call and a
+    // read of its output point back at that refusal instead of calling the name undeclared.
+    auto fb = Write("FB_Machine.st", "FUNCTION_BLOCK FB_Machine\nVAR_OUTPUT Busy : BOOL; END_VAR\n"
+                                     "VAR X : NoSuchType; END_VAR\nBusy := TRUE;\nEND_FUNCTION_BLOCK\n");
+    auto list = Write("GVL.st", "VAR_GLOBAL\n  Machine : FB_Machine;\nEND_VAR\n");
+    auto main = Write("PRG_Main.st", "PROGRAM PRG_Main\nVAR Busy : BOOL; END_VAR\nMachine();\nBusy := Machine.Busy;\n"
+                                     "END_PROGRAM\n");
+    auto result = RunTranslator({"check", "--user", fb, list, main});
+    EXPECT_EQ(result.exitCode, 1);
+    const std::string why = "'Machine' of the global list GVL cannot be used: its function block's declaration was "
+                            "refused (above)";
+    for (const auto& expected : {main + ":3:1: error: " + why, main + ":4:9: error: " + why}) {
+        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    }
+    EXPECT_EQ(result.output.find("undeclared function"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, MethodThroughAListsPointerToARefusedFbPointsAtTheRefusal) {
     // TcUnit's GVL_TcUnit.TestSuiteAddresses[i]^.AreAllTestsFinished() in an expression, when FB_TestSuite was
     // refused: the list's variable waits for the FB, so the call points back at the FB's refusal (it said "only plain
@@ -592,6 +610,30 @@ TEST_F(TranslatorUserCli, TwinCatMethodsAreReadAtTheirLines) {
     auto bad = Write("FB_A.TcPOU", ReadFile(fb).replace(ReadFile(fb).find("Count();"), 8, "Cont(); "));
     result = RunTranslator({"check", "--user", bad});
     EXPECT_NE(result.output.find(bad + ":13:1: error: undeclared function, METHOD, ACTION or function block instance 'Cont'"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, TwinCatPropertyWithALongHeadingOnTheLineOfItsGet) {
+    // FsCommon's P_GetSystemInformation: the declaration's CDATA closes on the PROPERTY's line, and the heading pacst
+    // writes for the Get (PROPERTY Name.Get : Type) is longer than the <Get ...> tag: it takes the blanks before the
+    // tag too, after the END_PROPERTY of the declaration.
+    const std::string getTag = "      <Get Name=\"Get\" Id=\"{520417e0-26ec-0961-2c1d-de4d1180fee7}\">\n";
+    auto fb = Write("FB_Info.TcPOU",
+                    "<?xml version=\"1.0\"?>\n<TcPlcObject>\n  <POU Name=\"FB_Info\">\n"
+                    "    <Declaration><![CDATA[FUNCTION_BLOCK FB_Info\nVAR N : UDINT; END_VAR\n]]></Declaration>\n"
+                    "    <Implementation><ST><![CDATA[N := N + 1;]]></ST></Implementation>\n"
+                    "    <Property Name=\"ProcessorArchitecture\" Id=\"{6b336d92-e78b-0b30-0721-8bc6141fb57c}\">\n"
+                    "      <Declaration><![CDATA[PROPERTY ProcessorArchitecture : E_ProcessorArchitecture]]></Declaration>\n" +
+                        getTag +
+                    "        <Declaration><![CDATA[VAR\nEND_VAR\n]]></Declaration>\n"
+                    "        <Implementation>\n"
+                    "          <ST><![CDATA[ProcessorArchitecture := UDINT_TO_BYTE(N);]]></ST>\n"
+                    "        </Implementation>\n      </Get>\n    </Property>\n  </POU>\n</TcPlcObject>\n");
+    auto type = Write("E_ProcessorArchitecture.st", "TYPE E_ProcessorArchitecture : (X86, ARM) BYTE;\nEND_TYPE\n");
+    auto result = RunTranslator({"build", "--user", "--out", Out(), type, fb});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    auto bad = Write("FB_Info.TcPOU", ReadFile(fb).replace(ReadFile(fb).find("UDINT_TO_BYTE(N)"), 16, "UDINT_TO_BYTE(M)"));
+    result = RunTranslator({"check", "--user", type, bad});
+    EXPECT_NE(result.output.find(bad + ":15:63: error: undeclared name 'M'"), std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, TwinCatTransitionsAndOtherLanguagesAreRefused) {

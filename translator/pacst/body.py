@@ -196,9 +196,8 @@ class BodyCompiler:
                 raise self.err(token, f"'{name}' is a type, not a variable")
             if self.comp.user and self.comp.namespace(name) is None and user.namespace_like(name):
                 raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.comp.namespace_names())}")
-            refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
-            hint = f" (or one whose declaration in {', '.join(refused)} was refused, above)" if refused else ""
-            raise self.err(token, f"undeclared name '{name}'{hint}")
+            self.comp.refused_global(token, name)
+            raise self.err(token, f"undeclared name '{name}'{self._refused_lists()}")
         writable, why = True, ""
         if v.constant:
             writable, why = False, "it is a CONSTANT"
@@ -528,11 +527,17 @@ class BodyCompiler:
             idx = f"__pacst_index((long)({te.code}), {at.low}L, {at.high}L, \"{where}\")"
         return Ref(r.base, r.wrapped, at.elem, r.var, f"{r.suffix}.table[{idx}]", r.writable, r.why_not, True)
 
+    def _refused_lists(self):
+        """User mode: the words an undeclared name's refusal ends with when a global list's declaration was refused
+        (the name may be that one's), else none."""
+        refused = [g.name for g in self.comp.gvls.values() if g.refused] if self.comp.user else []
+        return f" (or one whose declaration in {', '.join(refused)} was refused, above)" if refused else ""
+
     # ------------------------------------------------------------------ POU
     def compile(self):
         pou = self.pou
         statements = pou.node.body.statements if pou.node.body is not None else []
-        if not statements and self.comp.user and (pou.kind == "fb" or pou.ret is None):
+        if not statements and self.comp.user:  # a result keeps its initial value, as one never assigned
             self.comp.dialect(pou.node, f"{pou.name} with an empty body")
             return []
         if not statements:
@@ -980,8 +985,9 @@ class BodyCompiler:
                     and user.lookup_global(self.comp, node.name.name) is None:
                 if _name(node.name.name).upper() in self.comp.refused:  # as in an expression: point at the refusal
                     raise self.err(node, refused_call(_name(node.name.name)))
+                self.comp.refused_global(node, _name(node.name.name))
                 raise self.err(node, f"undeclared function, METHOD, ACTION or function block instance "
-                                     f"'{_name(node.name.name)}'")
+                                     f"'{_name(node.name.name)}'{self._refused_lists()}")
             r = self.ref(node.name)
             if _cls(node.name) == "SimpleVariable" and node.name.dereferenced and r.type.is_fb:
                 # Timer^(IN := TRUE): the instance a POINTER TO TON points at (TcUnit's FB_SkipAssertionsWhenFinished)

@@ -136,6 +136,9 @@ class Compiler:
         self.gvls = {}  # upper list name -> GlobalList
         self.gvl_declaring = None  # the GlobalList whose variables are being declared (user mode)
         self.later_fbs = set()  # upper names of the FUNCTION_BLOCKs of the files compiled (user mode)
+        self.later_interfaces = set()  # upper names of the INTERFACEs of the files compiled (user mode)
+        self.interface_members = False  # an INTERFACE's METHODs and PROPERTYs are being declared
+        self.ahead = {}  # upper name of an INTERFACE named before its declaration -> the first (file, token)
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
@@ -217,6 +220,8 @@ class Compiler:
         if self.user:
             self.later_fbs |= {self._item_name(item).upper() for src in sources for item in src.tree.items
                                if _cls(item) == "FunctionBlock"}
+            self.later_interfaces |= {self._item_name(item).upper() for src in sources for item in src.tree.items
+                                      if _cls(item) == "Interface"}
         for src, item in self._in_order(sources):
             if id(item) in attached:
                 continue  # declared with its FUNCTION_BLOCK or PROGRAM
@@ -233,6 +238,12 @@ class Compiler:
         """The Program of every file declared; StErrors with every refusal, in the order met."""
         for fb in list(self.pending_globals):  # their FB was refused: each says so
             self._pending_globals(fb)
+        for up, (file, token) in self.ahead.items():  # named ahead in another INTERFACE, then refused
+            if getattr(self.types.get(up), "ahead", False) or up not in self.types:
+                file, self.file = self.file, file
+                self.errors.append(self.err(token, f"INTERFACE {_name(token)} cannot be used: its declaration was "
+                                                   "refused"))
+                self.file = file
         if self.errors:
             raise StErrors(self.errors)
         return self.program
@@ -377,7 +388,7 @@ class Compiler:
             if not allow_fb:
                 raise self.err(token, f"a function block ({up}) cannot be used here")
             return T.STANDARD_FBS[up]
-        if up in self.types:
+        if up in self.types and not (getattr(self.types[up], "ahead", False) and not self.interface_members):
             if self.types[up].kind == "interface":
                 self.dialect(token, f"a variable of the INTERFACE {name}")
             return self.types[up]
@@ -392,6 +403,8 @@ class Compiler:
             raise self.err(token, f"'{name}' is a FUNCTION, not a type")
         if up in self.refused:
             raise self.err(token, f"type '{name}' cannot be used: its declaration was refused (above)")
+        if self.user and self.interface_members and up in self.later_interfaces:
+            return self._interface_ahead(token, name)
         if up in self.declared_at:
             file, line = self.declared_at[up]
             raise self.err(token, f"type '{name}' is used before its declaration ({file}:{line}): "
@@ -520,11 +533,23 @@ class Compiler:
                     self.enum_values or up in self.declared_at or up in self.refused or system.is_system(name)
                     or up in ("THIS", "SUPER"))
 
+    def refused_global(self, node, name):
+        """User mode: refuses `name` at `node` when a global list declares it as an instance of a FUNCTION_BLOCK
+        whose declaration was refused (the CNC machine's `fbCNC : FB_CNC;` in its GVL): the instance waits for its
+        FB, which never comes."""
+        up = name.upper()
+        for fb, waiting in self.pending_globals.items() if self.user else ():
+            for gvl, item, _, _ in waiting if fb in self.refused else ():
+                if any(_name(token).upper() == up for token in item.spec.variables):
+                    raise self.err(node, f"'{name}' of the global list {gvl.name} cannot be used: its function "
+                                         "block's declaration was refused (above)")
+
     def _unknown_head(self, token, name):
         """The refusal of `name.x` where `name` is declared nowhere: a vendor library's namespace, or an undeclared
         name that would be a library's namespace if the library were given."""
         if user.namespace_like(name):
             raise self.err(token, f"'{name}': {user.unknown_namespace(name, self.namespace_names())}")
+        self.refused_global(token, name)
         raise self.err(token, f"undeclared name '{name}': no variable, global list, PROGRAM or library namespace "
                               f"({', '.join(self.namespace_names())}) has that name; a library of your own is given "
                               f"to pac-test with the namespace it is referenced under: --library {name}=PATH")
@@ -1111,11 +1136,14 @@ class Compiler:
         FB's instance: in C a struct of the instance's address and a table of its METHODs and PROPERTY accessors
         (`<FB>__<ITF>__VT`), through which a call goes; the table ends with the addresses of the FB's tables for
         the bases, so that the variable can be given to one of a base's type."""
+        ahead = self.types.get(_name(node.name).upper())
+        if getattr(ahead, "ahead", False):  # named ahead by an INTERFACE declared before: that type, completed
+            del self.types[ahead.cname]
         self._declare_global(node.name, "interface")
         self.dialect(node, f"INTERFACE {_name(node.name)}")
         if node.declarations:
             raise self.err(node, "an INTERFACE declares METHODs and PROPERTYs, no variables")
-        t = T.InterfaceType(_name(node.name))
+        t = ahead if getattr(ahead, "ahead", False) else T.InterfaceType(_name(node.name))
         for token in node.extends.interfaces if node.extends is not None else []:
             if _name(token).upper() == f"{system.NAMESPACE}.IQUERYINTERFACE":  # TwinCAT's root: no METHODs
                 self.dialect(token, f"EXTENDS {_name(token)}")
@@ -1136,12 +1164,31 @@ class Compiler:
             for up, prop in base.properties.items():
                 t.properties.setdefault(up, prop)
         self.types[t.cname] = t  # a METHOD may take or return the INTERFACE itself (I_List.Clone : I_List)
+        self.interface_members = True
         try:
             self._interface_members(t, node)
         except (StError, StErrors):
             del self.types[t.cname]
             raise
+        finally:
+            self.interface_members = False
+        if getattr(t, "ahead", False):
+            t.ahead = False
+            t.forward = True  # POUS.h declares its name before the types that name it
         self.program.items.append(("type", t, self.file))
+
+    def _interface_ahead(self, token, name):
+        """User mode: the INTERFACE `name` of the files compiled, named in the METHODs or PROPERTYs of an
+        INTERFACE declared before it (the collections' I_Enumerable and I_Enumerator name each other): its type,
+        completed when its own declaration comes; refused after all, the use is refused too (finish)."""
+        up = name.upper()
+        t = self.types.get(up)
+        if t is None:
+            t = self.types[up] = T.InterfaceType(name)
+            t.ahead = True
+            self.ahead[up] = (self.file, token)
+        self.dialect(token, f"the INTERFACE {name}, named before its declaration in another INTERFACE")
+        return t
 
     @staticmethod
     def _refusals(refused, declare, *args):

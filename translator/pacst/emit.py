@@ -86,13 +86,15 @@ class Emitter:
             out.append(varlen.c_declaration(t))
         elif t.kind == "interface":  # user mode: an FB instance's address and the table of its METHODs
             out.append(f"struct {t.cname}__VT;")
-            out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
+            if getattr(t, "forward", False):  # its name declared ahead (header)
+                out.append(f"struct {t.cname} {{ void *inst; const struct {t.cname}__VT *vt; }};")
+            else:
+                out.append(f"typedef struct {{ void *inst; const struct {t.cname}__VT *vt; }} {t.cname};")
             slots = [f"  {_ret(p)} (*{p.cname})({', '.join(['void *data__'] + self._params(p))});"
                      for p in t.protos.values()]
             slots += [f"  const struct {b.cname}__VT *{b.cname}__BASE;" for b in t.bases]  # INTERFACE EXTENDS
             out.append(f"typedef struct {t.cname}__VT {{\n" + "\n".join(slots or ["  char none;"]) +
                        f"\n}} {t.cname}__VT;")
-            out += self._chained_dispatchers(t)
         out.append(f"typedef struct {{ {t.cname} value; BYTE flags; }} __IEC_{t.cname}_t;")
         out.append(f"static inline void __pacst_init_{t.cname}({t.cname} *v) {{")
         if t.is_enum:
@@ -248,7 +250,20 @@ class Emitter:
         if obj.cname in emitted:
             return []
         emitted.add(obj.cname)
-        return self._type_decl(obj)
+        out = self._type_decl(obj)
+        if obj.kind == "interface":  # its calls on a call's result, once the INTERFACEs they pass by value are
+            self.waiting.append((obj, self._by_value_interfaces(obj)))
+            for t, needs in [w for w in self.waiting if w[1] <= emitted]:
+                self.waiting.remove((t, needs))
+                out += self._chained_dispatchers(t)
+        return out
+
+    @staticmethod
+    def _by_value_interfaces(t):
+        """The C names of the INTERFACEs the METHODs of the INTERFACE `t` take or return by value."""
+        return {v.type.cname for p in t.protos.values() for v in p.vars
+                if v.section == "input" and v.type.kind == "interface"} | \
+            {p.ret.cname for p in t.protos.values() if p.ret is not None and p.ret.kind == "interface"}
 
     def header(self, files):
         out = [GENERATED + ", ".join(os.path.basename(f) for f in files) + ". Do not edit. */",
@@ -257,11 +272,17 @@ class Emitter:
             out += ["#define PACST_BODY_REF 1", ""]
         out += ["#ifdef __cplusplus", 'extern "C" {', "#endif", ""]
         emitted = set()
+        self.waiting = []  # (INTERFACE, the INTERFACEs its chained calls need complete)
+        # INTERFACEs another names before their declaration (user mode): their names first
+        out += [f"typedef struct {t.cname} {t.cname};" for kind, t, _ in self.program.items
+                if kind == "type" and getattr(t, "forward", False)]
         # The globals last: their types may come from any file (a list declares no FB instances).
         items = [i for i in self.program.items if i[0] != "gvl"] + [i for i in self.program.items if i[0] == "gvl"]
         for kind, obj, _ in items:
             out += self._decl(kind, obj, emitted)
             out.append("")
+        for t, _ in self.waiting:
+            out += self._chained_dispatchers(t) + [""]
         out += ["#ifdef __cplusplus", "}", ""]
         out += self._body_ref_overloads()
         out += ["#endif", "", "#endif /* __POUS_H */", ""]

@@ -172,17 +172,9 @@ def closed_under_uses(sources, candidates):
     return closed
 
 
-def declaration_order(sources, user=False):
-    """The parsed files `sources` (SourceFiles) in declaration order; raises StErrors naming the files of a
-    cycle, whose files no order can declare before each other. `user`: pacst's user mode, which declares the
-    global lists before the POUs (_through_lists)."""
-    owner = _owners(sources)
-    lists = _list_files(sources, owner) if user else {}
-    deps = {}  # path -> {path it depends on: a name it uses from there}
-    for src in sources:
-        uses = _uses(src, owner)
-        deps[src.path] = _through_lists(src, uses, lists) if user else uses
-    users = {src.path: [] for src in sources}
+def _sorted(deps):
+    """(the paths of `deps` {path: {path it depends on: name}} in declaration order, the paths left in a cycle)."""
+    users = {path: [] for path in deps}
     for path, uses in deps.items():
         for dep in uses:
             users[dep].append(path)
@@ -197,7 +189,52 @@ def declaration_order(sources, user=False):
             waiting[user] -= 1
             if waiting[user] == 0:
                 heapq.heappush(ready, _sort_key(user))
-    left = {path for path, n in waiting.items() if n > 0}
+    return order, {path for path, n in waiting.items() if n > 0}
+
+
+def _interface_file(src):
+    """The upper names the INTERFACE of the file `src` EXTENDS, or None for a file that declares more than an
+    INTERFACE and its METHODs and PROPERTYs."""
+    kinds = [_cls(item) for item in src.tree.items]
+    if kinds.count("Interface") != 1 or not set(kinds) <= {"Interface", "Method", "Property"}:
+        return None
+    itf = next(item for item in src.tree.items if _cls(item) == "Interface")
+    bases = itf.extends.interfaces if itf.extends is not None else []
+    return {_name(token).upper().rsplit(".", 1)[-1] for token in bases}
+
+
+def _signature_uses(by_path, left, deps):
+    """User mode: the dependencies (path, path it uses) among the files `left` of a cycle that are an INTERFACE
+    naming another INTERFACE in its METHODs' or PROPERTYs' pins and results only (not as its base): pacst's user
+    mode declares such a name ahead of its INTERFACE (compiler._interface), so they need no order."""
+    found = set()
+    for path in left:
+        bases = _interface_file(by_path[path])
+        if bases is None:
+            continue
+        for dep, name in deps[path].items():
+            if dep in left and _interface_file(by_path[dep]) is not None and name.upper() not in bases:
+                found.add((path, dep))
+    return found
+
+
+def declaration_order(sources, user=False):
+    """The parsed files `sources` (SourceFiles) in declaration order; raises StErrors naming the files of a
+    cycle, whose files no order can declare before each other. `user`: pacst's user mode, which declares the
+    global lists before the POUs (_through_lists)."""
+    owner = _owners(sources)
+    lists = _list_files(sources, owner) if user else {}
+    deps = {}  # path -> {path it depends on: a name it uses from there}
+    for src in sources:
+        uses = _uses(src, owner)
+        deps[src.path] = _through_lists(src, uses, lists) if user else uses
+    order, left = _sorted(deps)
+    if left and user:  # INTERFACEs whose METHODs name each other: declared in turn, each naming the later one ahead
+        signatures = _signature_uses({src.path: src for src in sources}, left, deps)
+        if signatures:
+            deps = {path: {dep: name for dep, name in uses.items() if (path, dep) not in signatures}
+                    for path, uses in deps.items()}
+            order, left = _sorted(deps)
     if left:
         cycle = _cycle(deps, left)
         text = " -> ".join(f"{os.path.basename(path)} (uses {name})" for path, name in cycle)

@@ -247,6 +247,9 @@ def delete_statement(body, node, ind):
     args = [getattr(p, "value", p) for p in node.parameters]
     if len(args) != 1 or args[0] is None:
         raise comp.err(node, "__DELETE takes one POINTER: __DELETE(p)")
+    if _cls(args[0]) == "SimpleVariable" and not args[0].dereferenced and _name(args[0].name).upper() == "THIS" \
+            and body.lookup("THIS") is None:  # the instance itself, made by __NEW (the collections' Dispose)
+        return _delete_this(body, node, ind)
     r = body.ref(args[0], raw=True)
     if r.type.is_pointer and r.type.reference and r.type.target.is_pointer:  # a REFERENCE TO POINTER: the pointer
         r = body.ref(args[0])
@@ -254,16 +257,27 @@ def delete_statement(body, node, ind):
         raise comp.err(args[0], f"__DELETE's operand is a POINTER, not a {r.type.name} (TwinCAT refuses it too)")
     if not r.writable:
         raise comp.err(args[0], f"'{r.var.name}' cannot be written: {r.why_not}")
-    t = r.type.target
-    lines = [f"{ind}if ({r.read()} != NULL) {{"]
+    lines = [f"{ind}if ({r.read()} != NULL) {{"] + _freed(comp, node, r.type.target, r.read(), ind + "  ")
+    return lines + [f"{ind}  {r.write('NULL')}", f"{ind}}}"]
+
+
+def _freed(comp, node, t, address, ind):
+    """C statements that free the instance of `t` at `address`: its METHOD FB_exit first, when it has one."""
+    lines = []
     fb_exit = t.pou.methods.get("FB_EXIT") if t.is_fb and getattr(t, "pou", None) is not None else None
     if fb_exit is not None:
         inputs = [v for v in fb_exit.vars if v.section == "input"]
         if len(inputs) != 1 or not inputs[0].type.is_bool or any(v.section in ("output", "inout")
                                                                   for v in fb_exit.vars):
             raise comp.err(node, f"the METHOD FB_exit of {t.name} is not TwinCAT's: its one input is bInCopyCode (BOOL)")
-        lines.append(f"{ind}  (void){fb_exit.cfunc}(__pacst_heap_block((void *){r.read()}, \"{_where(comp, node)}\"),"
+        lines.append(f"{ind}(void){fb_exit.cfunc}(__pacst_heap_block((void *){address}, \"{_where(comp, node)}\"),"
                      " TRUE, NULL, FALSE);")
-    lines += [f"{ind}  __pacst_delete((void *){r.read()}, \"{_where(comp, node)}\");",
-              f"{ind}  {r.write('NULL')}", f"{ind}}}"]
-    return lines
+    return lines + [f"{ind}__pacst_delete((void *){address}, \"{_where(comp, node)}\");"]
+
+
+def _delete_this(body, node, ind):
+    """C statements of `__DELETE(THIS);` in a METHOD: the instance's FB_exit, then its memory freed; an instance not
+    made by __NEW stops the run at the ST line, as TwinCAT's statements after it would read freed memory."""
+    arg = node.parameters[0]
+    this = body.ex._this_instance(getattr(arg, "value", arg))  # its FB, whose METHOD's C function has it in data__
+    return _freed(body.comp, node, this.type, "data__", ind)

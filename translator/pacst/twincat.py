@@ -126,12 +126,17 @@ def _property(text, chars, m, close, path):
     accessors = list(re.finditer(r"<(Get|Set)\b[^>]*>", text[:close]))
     accessors = [a for a in accessors if a.start() > m.end()]
     first = accessors[0].end() if accessors else close + len("</Property>")
-    _write(chars, declaration.end(), first, "END_PROPERTY", path, declaration.end())
+    after = _write(chars, declaration.end(), first, "END_PROPERTY", path, declaration.end())
     for a in accessors:
         a_close = text.find(f"</{a.group(1)}>", a.end())
-        _write(chars, a.start(), _next_cdata_start(text, a.end()), f"PROPERTY {name}.{a.group(1)} : {type_text}",
-               path, a.start())
-        _write(chars, _last_cdata_end(text, a_close), a_close + len(a.group(1)) + 3, "END_PROPERTY", path, a_close)
+        heading = f"PROPERTY {name}.{a.group(1)} : {type_text}"
+        try:
+            _write(chars, a.start(), _next_cdata_start(text, a.end()), heading, path, a.start())
+        except StError:  # a heading longer than the <Get> tag: the blanks before it too, after what was written
+            _write(chars, max(after, text.rfind("\n", 0, a.start()) + 1), _next_cdata_start(text, a.end()), heading,
+                   path, a.start())
+        after = _write(chars, _last_cdata_end(text, a_close), a_close + len(a.group(1)) + 3, "END_PROPERTY", path,
+                       a_close)
 
 
 def _last_cdata_end(text, before):
@@ -145,7 +150,7 @@ def _next_cdata_start(text, after):
 
 
 def _write(chars, start, end, word, path, at):
-    """`word` into a run of blanks of chars[start:end] on one line, a blank kept on both sides."""
+    """`word` into a run of blanks of chars[start:end] on one line, a blank kept on both sides; the index after it."""
     need = len(word) + 2
     run = 0
     for i in range(start, end):
@@ -153,7 +158,7 @@ def _write(chars, start, end, word, path, at):
         if run >= need:
             first = i - need + 2
             chars[first:first + len(word)] = word
-            return
+            return first + len(word)
     line = "".join(chars[:at]).count("\n") + 1
     raise StError(path, line, 1, f"no room to close {word.split()[0]} in this TwinCAT file: put the element's "
                                  "tags on lines of their own")

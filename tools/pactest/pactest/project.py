@@ -85,13 +85,21 @@ _ARRAY_ASSERTS = "AssertArrayEquals.st"
 _ARRAY_ASSERT = re.compile(rb"\bAssertArray\w*Equals_", re.I)
 
 
+# TcUnit's FB_Test: only for sources that name it and do not declare an FB_Test of their own.
+_RECORD = "FB_Test.st"
+_RECORD_NAME = re.compile(rb"\bFB_Test\b", re.I)
+
+
 def tcunit_sources(sources=None):
     """TcUnit's part pac-test gives a program that names its suite; the array asserts only when the program's
-    `sources` call one (None: every part)."""
+    `sources` call one, FB_Test only when they name it and declare none (None: every part)."""
     every = sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
-    if sources is None or _names(sources, _ARRAY_ASSERT):
+    if sources is None:
         return every
-    return [f for f in every if os.path.basename(f) != _ARRAY_ASSERTS]
+    left = set() if _names(sources, _ARRAY_ASSERT) else {_ARRAY_ASSERTS}
+    if not _names(sources, _RECORD_NAME) or "FB_TEST" in declared_names(sources):
+        left.add(_RECORD)
+    return [f for f in every if os.path.basename(f) not in left]
 
 
 VENDOR = os.path.join(ROOT, "tools", "pactest", "vendor")
