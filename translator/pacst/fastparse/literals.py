@@ -99,6 +99,10 @@ class Literals:
             return node("real_literal", [None, _number(s, self._real, self._real_type)])
         return self.integer_literal(s)
 
+    def based_integer(self, s):
+        """integer_literal of a `2#`, `8#` or `16#` number at the position, or None."""
+        return self._based(s, "integer_literal", [None])
+
     def _based(self, s, rule, raw):
         """The `2#`, `8#` or `16#` number at the position under `rule` ([type and `#`] or [None] in
         `raw`), or None when the position holds none."""

@@ -133,6 +133,10 @@ class Scanner:
         line, col = self.line_col(start)
         return Token(type_, self.text[start:end], start, line, col, line, col + end - start, end)
 
+    def token_to(self, type_, end):
+        """The text from the position to `end` as a Token of `type_`; moves past it and the space after it."""
+        return self.token(type_, *self._take(end))
+
     def keyword(self, word):
         """The keyword `word` (upper case) as an Anon, or Decline."""
         m = _WORD.match(self.text, self.pos)

@@ -4,9 +4,9 @@ from .scanner import Decline, node
 
 # Words that end a statement list rather than start a statement.
 _LIST_ENDS = frozenset(("END_IF", "ELSIF", "ELSE", "END_CASE", "END_WHILE", "UNTIL", "END_REPEAT",
-                        "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR"))
-_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK", "END_METHOD", "END_ACTION",
-                       "END_PROPERTY"))
+                        "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR", "END_METHOD",
+                        "END_PROPERTY"))
+_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK", "END_ACTION"))
 
 
 class Statements:
