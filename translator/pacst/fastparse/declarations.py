@@ -2,6 +2,8 @@
 elements (METHOD, PROPERTY, INTERFACE, EXTENDS and IMPLEMENTS, VAR_STAT and VAR_INST)."""
 import re
 
+from lark import Token
+
 from .scanner import Decline, node
 from .vocabulary import INTEGER_TYPES, BIT_STRING_TYPES, elementary_type
 
@@ -225,7 +227,10 @@ class Declarations:
         if indirection is None:
             raw = [self._specification(s)]
         else:
-            raw = [node("indirect_simple_specification", [indirection, self._specification(s), None])]
+            spec = self._specification(s)
+            if _sized(spec):
+                raise Decline("sized STRING after an indirection")  # its length could be input_param_args
+            raw = [node("indirect_simple_specification", [indirection, spec, None])]
         if s.peek_punct() == ":=":
             raw.append(s.punct(":="))
             if s.peek_punct() in ("(", "["):
@@ -323,7 +328,11 @@ class Declarations:
     def _function(self, s):
         raw = [s.keyword("FUNCTION"), None, self._identifier(s), s.punct(":")]
         indirection = self._indirection(s)
-        raw.append(node("indirect_simple_specification", [indirection, self._specification(s), None]))
+        spec = self._specification(s)
+        if _sized(spec):
+            # `: STRING(80)`: Earley reads the length as the arguments (input_param_args) of the result type
+            raise Decline("sized STRING as a FUNCTION's result")
+        raw.append(node("indirect_simple_specification", [indirection, spec, None]))
         _no_trailing_semicolon(s)
         # `[ function_var_block+ ]` leaves no placeholder when absent: its content is an inlined rule.
         raw += self._var_blocks(s, "function")
@@ -409,6 +418,12 @@ class Declarations:
         raw.append(s.keyword("END_INTERFACE"))
         _no_trailing_semicolon(s)
         return node("interface_declaration", raw)
+
+
+def _sized(spec):
+    """Whether the simple_specification `spec` is a STRING or WSTRING with its length."""
+    inner = spec.children[0]
+    return inner.__class__ is not Token and inner.data == "string_type_specification" and inner.children[1] is not None
 
 
 def _no_trailing_semicolon(s):
