@@ -79,14 +79,22 @@ class Declarations:
 
     def _type_declaration(self, s):
         name = self._identifier(s)
+        extends = self._names(s, "EXTENDS", "extends")
         colon = s.punct(":")
         word = s.peek_word()
+        if word == "STRUCT":
+            return self._structure(s, name, extends, colon)
+        if extends is not None:
+            raise Decline("EXTENDS of a type other than a STRUCT")
         if s.peek_punct() == "(":
             return node("enumerated_type_declaration", [name, colon, self._enumeration(s)])
-        if word == "STRUCT":
-            return self._structure(s, name, colon)
         if word == "ARRAY":
             return node("array_type_declaration", [name, colon, self._array_spec_init(s)])
+        if word is not None and word not in ("STRING", "WSTRING", "UNION", "POINTER", "REFERENCE"):
+            # an alias of a named or elementary type; a STRING is a string_type_declaration to blark
+            spec = self._spec_init(s)
+            if spec.data == "simple_spec_init" and spec.children[-1] is None:
+                return node("simple_type_declaration", [name, None, colon, spec])
         raise Decline("type declaration not read here")
 
     def _enumeration(self, s):
@@ -117,8 +125,8 @@ class Declarations:
             raise Decline("enumeration not read here")
         return node("enumerated_spec_init", spec)
 
-    def _structure(self, s, name, colon):
-        raw = [name, None, colon, None, s.keyword("STRUCT")]
+    def _structure(self, s, name, extends, colon):
+        raw = [name, extends, colon, None, s.keyword("STRUCT")]
         s.semicolons(raw, least=0)
         while s.peek_word() != "END_STRUCT":
             names = self._var1_list(s)

@@ -22,6 +22,8 @@ _FIXED_POINT = re.compile(r"[0-9][0-9_]*\.[0-9][0-9_]*")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 # A string without line breaks; `$` only in the escapes blark's grammar knows.
 _STRING = re.compile(r"'([^$'\n]|\$[$LNPRTlnprt']|\$[0-9A-F][0-9A-F])*'")
+# a WSTRING's: in double quotes, `$` followed by four hex digits
+_WIDE_STRING = re.compile(r'"([^$"\n]|\$[$LNPRTlnprt"]|\$[0-9A-F]{4})*"')
 _WORD_CHAR = re.compile(r"[A-Za-z0-9_.#]")
 # Duration units, smallest last: each but the last may be followed by the next one.
 _UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"))
@@ -72,11 +74,11 @@ class Literals:
         c = s.peek_char()
         if c.isdigit():
             return self._untyped_number(s)
-        if c == "'":
-            span = s.pattern(_STRING)
+        if c in "'\"":
+            span = s.pattern(_STRING if c == "'" else _WIDE_STRING)
             if span is None:
                 raise Decline("string not read here")
-            tok = s.token("SINGLE_BYTE_CHARACTER_STRING", *span)
+            tok = s.token("SINGLE_BYTE_CHARACTER_STRING" if c == "'" else "DOUBLE_BYTE_CHARACTER_STRING", *span)
             s.skip()
             return node("string_literal", [tok])
         m = _WORD_HASH.match(s.text, s.pos)

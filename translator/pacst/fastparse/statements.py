@@ -1,6 +1,12 @@
 """Statements: statement_list and its statements, each with the `;` that ends it (they count for the
 positions, not for the tree)."""
+import re
+
 from .scanner import Decline, node
+
+_REF_ASSIGNMENT = re.compile(r"REF=", re.I)
+# a word that starts a literal (`T#1S`, `TRUE`), not a variable
+_LITERAL_START = re.compile(r"[A-Za-z_][A-Za-z0-9_]*#|(TRUE|FALSE|NOT)\b", re.I)
 
 # Words that end a statement list rather than start a statement.
 _LIST_ENDS = frozenset(("END_IF", "ELSIF", "ELSE", "END_CASE", "END_WHILE", "UNTIL", "END_REPEAT",
@@ -52,13 +58,28 @@ class Statements:
         target = self._x.variable(s)
         p = s.peek_punct()
         if p == ":=":
-            start = s.pos
-            s.pos += 2
-            assign = s.token("ASSIGNMENT", start, s.pos)
-            s.skip()
-            raw = [target, assign, self._x.expression(s)]
+            raw = [target, s.token_to("ASSIGNMENT", s.pos + 2)]
+            # `a := b := 0`: every variable before the last `:=` is a target too
+            while True:
+                start = s.pos
+                if s.peek_word() is None or _LITERAL_START.match(s.text, s.pos):
+                    break
+                try:
+                    chained = self._x.variable(s)
+                except Decline:
+                    s.pos = start
+                    break
+                if s.peek_punct() != ":=":
+                    s.pos = start
+                    break
+                raw += [chained, s.token_to("ASSIGNMENT", s.pos + 2)]
+            raw.append(self._x.expression(s))
             _end(s, raw, least=1)
             return node("assignment_statement", raw)
+        if _REF_ASSIGNMENT.match(s.text, s.pos):
+            raw = [target, s.token_to("REF_ASSIGNMENT", s.pos + 4), self._x.expression(s)]
+            _end(s, raw, least=1)
+            return node("reference_assignment_statement", raw)
         if p == "(":
             raw = [self._x.function_call(s, target)]
             _end(s, raw, least=1)
@@ -111,7 +132,7 @@ class Statements:
     def _case_label(self, s):
         if s.peek_char().isdigit() or s.peek_char() in "-+" and s.peek_char(1).isdigit():
             start = s.pos
-            low = self._x.literal_label(s)
+            low = self._x.integer_value(s)
             if s.peek_punct() != "..":
                 return low
             # A range: both bounds are expressions, read again as such.
