@@ -42,7 +42,7 @@ class Declarations:
         self._top = {"TYPE": self._type, "FUNCTION": self._function,
                      "FUNCTION_BLOCK": self._function_block, "VAR_GLOBAL": self._globals,
                      "PROGRAM": self._program, "METHOD": self._method, "PROPERTY": self._property,
-                     "INTERFACE": self._interface}
+                     "INTERFACE": self._interface, "ACTION": self._action}
 
     def elements(self):
         """The start rule of each element read alone: its first keyword and its reader."""
@@ -52,7 +52,8 @@ class Declarations:
                 "program_declaration": ("PROGRAM", self._program),
                 "function_block_method_declaration": ("METHOD", self._method),
                 "function_block_property_declaration": ("PROPERTY", self._property),
-                "interface_declaration": ("INTERFACE", self._interface)}
+                "interface_declaration": ("INTERFACE", self._interface),
+                "action": ("ACTION", self._action)}
 
     def source(self, s):
         items = []
@@ -118,7 +119,7 @@ class Declarations:
         raw.append(s.word_token("ENUM_DATA_TYPE_NAME") if word in INTEGER_TYPES or word in BIT_STRING_TYPES else None)
         spec = [None, node("enumerated_specification", raw)]
         if s.peek_punct() == ":=":
-            spec += [s.punct(":="), node("enumerated_value", [None, self._x.name_token(s, "DOTTED_IDENTIFIER"), None])]
+            spec += [s.punct(":="), node("enumerated_value", [None, self._x.dotted_name_token(s), None])]
         else:
             spec.append(None)
         if s.peek_word() is not None or s.peek_punct() in (":=", ".", "#"):
@@ -334,13 +335,19 @@ class Declarations:
     # POUs
 
     def _function(self, s):
-        raw = [s.keyword("FUNCTION"), None, self._identifier(s), s.punct(":")]
+        raw = [s.keyword("FUNCTION"), None, self._identifier(s)]
+        if s.peek_punct() != ":":
+            return self._function_rest(s, raw + [None])  # no result type (a FUNCTION that writes its VAR_IN_OUT)
+        raw.append(s.punct(":"))
         indirection = self._indirection(s)
         spec = self._specification(s)
         if _sized(spec):
             # `: STRING(80)`: Earley reads the length as the arguments (input_param_args) of the result type
             raise Decline("sized STRING as a FUNCTION's result")
         raw.append(node("indirect_simple_specification", [indirection, spec, None]))
+        return self._function_rest(s, raw)
+
+    def _function_rest(self, s, raw):
         _no_trailing_semicolon(s)
         # `[ function_var_block+ ]` leaves no placeholder when absent: its content is an inlined rule.
         raw += self._var_blocks(s, "function")
@@ -418,6 +425,13 @@ class Declarations:
         raw += [self._st.statement_list(s), s.keyword("END_PROPERTY")]
         _no_trailing_semicolon(s)
         return node("function_block_property_declaration", raw)
+
+    def _action(self, s):
+        """An ACTION of a FUNCTION_BLOCK: `ACTION Name :` or `ACTION FB_X.Name :`, a body, END_ACTION."""
+        raw = [s.keyword("ACTION"), self._x.dotted_name_token(s), s.punct(":"), self._st.statement_list(s),
+               s.keyword("END_ACTION")]
+        _no_trailing_semicolon(s)
+        return node("action", raw)
 
     def _interface(self, s):
         raw = [s.keyword("INTERFACE"), self._identifier(s), self._names(s, "EXTENDS", "extends")]

@@ -90,7 +90,7 @@ class Expressions:
             return const
         var = self.variable(s)
         if s.peek_punct() == "(":
-            return self.function_call(s, var)
+            return self.call(s, var)
         return var
 
     def literal_label(self, s):
@@ -168,6 +168,21 @@ class Expressions:
         s.skip()
         return field
 
+    def call(self, s, callee):
+        """function_call of `callee`, or chained_function_call when calls follow it (`F(1).Add(2).Add(3)`, and
+        `F(x).Member()` as user mode rewrites a member of a call's result); the position at its `(`."""
+        first = self.function_call(s, callee)
+        if s.peek_punct() != ".":
+            return first
+        raw = [first]
+        while s.peek_punct() == ".":
+            raw.append(s.punct("."))
+            member = self.variable(s)
+            if s.peek_punct() != "(":
+                raise Decline("member of a call's result")
+            raw.append(self.function_call(s, member))
+        return node("chained_function_call", raw)
+
     def function_call(self, s, callee):
         """function_call of `callee`, the position at its `(`."""
         raw = [callee, s.punct("(")]
@@ -183,8 +198,8 @@ class Expressions:
         raw.append(s.punct(")"))
         if s.peek_punct() == "^":
             raw.append(_dereferenced(s))  # `DEREFERENCED?`: no placeholder when absent
-        if s.peek_punct() in ("^", ".", "["):
-            raise Decline("chained call or a member of a call's result")
+        if s.peek_punct() in ("^", "["):
+            raise Decline("a call's result dereferenced or indexed")
         return node("function_call", raw)
 
     def _param(self, s):

@@ -4,6 +4,7 @@ import re
 
 from .scanner import Decline, node
 
+_LABEL_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*")
 _REF_ASSIGNMENT = re.compile(r"REF=", re.I)
 # a word that starts a literal (`T#1S`, `TRUE`), not a variable
 _LITERAL_START = re.compile(r"[A-Za-z_][A-Za-z0-9_]*#|(TRUE|FALSE|NOT)\b", re.I)
@@ -11,8 +12,8 @@ _LITERAL_START = re.compile(r"[A-Za-z_][A-Za-z0-9_]*#|(TRUE|FALSE|NOT)\b", re.I)
 # Words that end a statement list rather than start a statement.
 _LIST_ENDS = frozenset(("END_IF", "ELSIF", "ELSE", "END_CASE", "END_WHILE", "UNTIL", "END_REPEAT",
                         "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR", "END_METHOD",
-                        "END_PROPERTY"))
-_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK", "END_ACTION"))
+                        "END_PROPERTY", "END_ACTION"))
+_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK"))
 
 
 class Statements:
@@ -81,9 +82,11 @@ class Statements:
             _end(s, raw, least=1)
             return node("reference_assignment_statement", raw)
         if p == "(":
-            raw = [self._x.function_call(s, target)]
+            call = self._x.call(s, target)
+            raw = [call]
             _end(s, raw, least=1)
-            return node("function_call_statement", raw)
+            chained = call.data == "chained_function_call"
+            return node("chained_function_call_statement" if chained else "function_call_statement", raw)
         raise Decline("statement not read here")
 
     def _bare(self, rule, word):
@@ -143,9 +146,9 @@ class Statements:
         word = s.peek_word()
         if word is None:
             raise Decline("CASE label not read here")
-        tok = self._x.name_token(s, "DOTTED_IDENTIFIER")
+        tok = self._x.dotted_name_token(s)  # `GVL_Station.STEP_DONE`, `E_Mode.AUTO`: one DOTTED_IDENTIFIER
         if s.peek_punct() in (".", ".."):
-            raise Decline("dotted CASE label")
+            raise Decline("CASE label not read here")
         return node("enumerated_value", [None, tok, None])
 
     def _while(self, s):
@@ -182,9 +185,13 @@ class Statements:
 
 def _is_label(s):
     """Whether the name at the position is followed by `:` (not `:=`) or `,`: a CASE label."""
+    m = _LABEL_NAME.match(s.text, s.pos)
+    if not m:
+        return False
     save = s.pos
     try:
-        s.word_token("IDENTIFIER")
+        s.pos = m.end()
+        s.skip()
         return s.peek_punct() in (":", ",")
     finally:
         s.pos = save
