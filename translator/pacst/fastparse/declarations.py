@@ -242,7 +242,8 @@ class Declarations:
             raw = [node("indirect_simple_specification", [indirection, spec, None])]
         if s.peek_punct() == ":=":
             raw.append(s.punct(":="))
-            if s.peek_punct() in ("(", "["):
+            if s.peek_punct() == "[" or s.peek_punct() == "(" and not _elementary(raw[0]):
+                # an array's or a structure's initial value, which Earley reads in more ways than one
                 raise Decline("initialiser not read here")
             raw.append(self._x.expression(s))
         else:
@@ -391,10 +392,10 @@ class Declarations:
         return node(rule, raw)
 
     def _member_blocks(self, s, kind):
-        """The variable blocks of a METHOD, PROPERTY or INTERFACE. An empty VAR block could be another rule
-        of blark's (a located variables' block): declined."""
+        """The variable blocks of a METHOD, PROPERTY or INTERFACE. An empty VAR block of an INTERFACE could be
+        another rule of blark's: declined (a METHOD's and a PROPERTY's are var_declarations, as a FUNCTION_BLOCK's)."""
         blocks = self._var_blocks(s, kind)
-        if any(b.data == "var_declarations" and not b.children[-1].children for b in blocks):
+        if kind == "interface" and any(b.data == "var_declarations" and not b.children[-1].children for b in blocks):
             raise Decline("empty VAR block")
         return blocks
 
@@ -440,6 +441,13 @@ class Declarations:
         raw.append(s.keyword("END_INTERFACE"))
         _no_trailing_semicolon(s)
         return node("interface_declaration", raw)
+
+
+def _elementary(spec):
+    """Whether the simple_specification `spec` is an elementary type's name (whose initial value in `()` is an
+    expression, not a structure's)."""
+    inner = spec.children[0]
+    return inner.__class__ is Token and inner.type in ("NUMERIC_TYPE_NAME", "BIT_STRING_TYPE_NAME", "DATE_TYPE_NAME")
 
 
 def _sized(spec):

@@ -25,10 +25,13 @@ _STRING = re.compile(r"'([^$'\n]|\$[$LNPRTlnprt']|\$[0-9A-F][0-9A-F])*'")
 # a WSTRING's: in double quotes, `$` followed by four hex digits
 _WIDE_STRING = re.compile(r'"([^$"\n]|\$[$LNPRTlnprt"]|\$[0-9A-F]{4})*"')
 _WORD_CHAR = re.compile(r"[A-Za-z0-9_.#]")
-# Duration units, smallest last: each but the last may be followed by the next one.
-_UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"))
+# Duration units, smallest last: each up to seconds may be followed by the next one; microseconds and
+# nanoseconds are an LTIME's alone, and only as its one unit.
+_UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"),
+          ("microseconds", "us"), ("nanoseconds", "ns"))
+_CHAINED = 5  # the units before this index may take a next one
 _UNDERSCORE = re.compile("_")
-_UNIT = re.compile(r"ms|[dhms]", re.IGNORECASE)
+_UNIT = re.compile(r"ms|us|ns|[dhms]", re.IGNORECASE)
 
 
 def _end_of_literal(s):
@@ -132,7 +135,9 @@ class Literals:
     def _typed(self, s, word, m):
         type_start, hash_end = s.pos, m.end()
         if word in ("T", "TIME"):
-            return self._duration(s, hash_end)
+            return self._duration(s, hash_end, "duration")
+        if word in ("LT", "LTIME"):
+            return self._duration(s, hash_end, "lduration")
         if word == "BOOL":
             after = _NAME.match(s.text, hash_end)
             if after and after.group(0).upper() in ("TRUE", "FALSE"):
@@ -154,7 +159,7 @@ class Literals:
             return self.integer_literal(s, raw)
         return node("bit_string_literal", raw + [_number(s, _INTEGER, "INTEGER")])
 
-    def _duration(self, s, hash_end):
+    def _duration(self, s, hash_end, rule):
         raw = [s.anon(s.pos, hash_end - 1), s.anon(hash_end - 1, hash_end)]
         s.pos = hash_end
         if s.peek_char() == "-":
@@ -162,12 +167,16 @@ class Literals:
             s.pos += 1
         else:
             raw.append(None)
-        raw.append(self._interval(s, 0))
+        interval = self._interval(s, 0)
+        if interval.data in ("microseconds", "nanoseconds") and rule != "lduration":
+            raise Decline("microseconds or nanoseconds of a TIME")
+        raw.append(interval)
         _end_of_literal(s)
-        return node("duration", raw)
+        return node(rule, raw)
 
     def _interval(self, s, least_unit):
-        """The interval at the position, whose first unit is `least_unit` or a later one."""
+        """The interval at the position, whose first unit is `least_unit` or a later one (up to
+        milliseconds after another unit)."""
         span = s.pattern(_FIXED_POINT)
         fixed = span is not None
         if not fixed:
@@ -179,10 +188,10 @@ class Literals:
         if unit_anon is None:
             raise Decline("duration unit expected")
         index = [u for _, u in _UNITS].index(m.group(0).lower())
-        if index < least_unit:
+        if index < least_unit or least_unit and index >= _CHAINED:
             raise Decline("duration units out of order")
         raw = [tok, unit_anon]
-        if not fixed and index + 1 < len(_UNITS):
+        if not fixed and index + 1 < _CHAINED:
             under, _ = _prefix(s, _UNDERSCORE)
             if under is not None or s.peek_char().isdigit():
                 sub = self._interval(s, index + 1)
