@@ -6,11 +6,11 @@ syntax error, it declines (Decline), and blark's parser decides instead."""
 from .declarations import Declarations
 from .expressions import Expressions
 from .literals import Literals
-from .scanner import Decline, Scanner
+from .scanner import LEFT_TO_EARLEY, Decline, Scanner
 from .statements import Statements
 from .vocabulary import Vocabulary, grammar_facts
 
-__all__ = ["Decline", "FastParser", "grammar_facts"]
+__all__ = ["Decline", "FastParser", "LEFT_TO_EARLEY", "grammar_facts"]
 
 
 class FastParser:

@@ -4,8 +4,8 @@ import re
 
 from lark import Token
 
-from .scanner import Decline, node
-from .vocabulary import INTEGER_TYPES, BIT_STRING_TYPES, elementary_type
+from .scanner import ARGUMENTS, DATE_AND_TIME, INITIAL_VALUE, LOCATED, UNION, Decline, node
+from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, OTHER_DATE_TYPES, elementary_type
 
 _ATTRIBUTES = frozenset(("RETAIN", "NON_RETAIN", "PERSISTENT", "CONSTANT"))
 _ACCESS = frozenset(("ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"))
@@ -91,7 +91,9 @@ class Declarations:
             return node("enumerated_type_declaration", [name, colon, self._enumeration(s)])
         if word == "ARRAY":
             return node("array_type_declaration", [name, colon, self._array_spec_init(s)])
-        if word is not None and word not in ("STRING", "WSTRING", "UNION", "POINTER", "REFERENCE"):
+        if word == "UNION":
+            raise Decline(UNION)
+        if word is not None and word not in ("STRING", "WSTRING", "POINTER", "REFERENCE"):
             # an alias of a named or elementary type; a STRING is a string_type_declaration to blark
             spec = self._spec_init(s)
             if spec.data == "simple_spec_init" and spec.children[-1] is None:
@@ -184,7 +186,7 @@ class Declarations:
         """array_spec_init of an array without an initial value (an array initialiser is blark's)."""
         spec = node("array_spec_init", [indirection, self._array(s), None])
         if s.peek_punct() == ":=":
-            raise Decline("array initialiser")
+            raise Decline(INITIAL_VALUE)
         return spec
 
     # Variables
@@ -193,6 +195,8 @@ class Declarations:
         raw = []
         while True:
             raw.append(node("var1", [self._x.variable_name(s), None]))
+            if s.peek_word() == "AT":
+                raise Decline(LOCATED)
             if s.peek_punct() != ",":
                 return node("var1_list", raw)
             raw.append(s.punct(","))
@@ -217,14 +221,19 @@ class Declarations:
         """An elementary type's name as its terminal, a named type's as IDENTIFIER, a qualified one
         (`PA_CONTROL.MC_Power`) as DOTTED_IDENTIFIER. Anything else (other date types, a subrange, an FB
         instance's arguments...) is left to blark; ARRAY is _array's."""
-        kind = elementary_type(s.peek_word())
+        word = s.peek_word()
+        kind = elementary_type(word)
+        if word in OTHER_DATE_TYPES:
+            raise Decline(DATE_AND_TIME)
         if kind:
             tok = s.word_token(kind)
         elif s.peek_char(len(s.peek_word() or "")) == ".":
             tok = self._x.dotted_name_token(s)
         else:
             tok = self._x.name_token(s)
-        if s.peek_punct() in ("(", "[", "."):
+        if s.peek_punct() == "(":
+            raise Decline(ARGUMENTS)
+        if s.peek_punct() in ("[", "."):
             raise Decline("type not read here")
         return tok
 
@@ -244,7 +253,7 @@ class Declarations:
             raw.append(s.punct(":="))
             if s.peek_punct() == "[" or s.peek_punct() == "(" and not _elementary(raw[0]):
                 # an array's or a structure's initial value, which Earley reads in more ways than one
-                raise Decline("initialiser not read here")
+                raise Decline(INITIAL_VALUE)
             raw.append(self._x.expression(s))
         else:
             raw.append(None)
@@ -325,6 +334,8 @@ class Declarations:
             names = [self._identifier(s)]
             while s.peek_punct() == ",":
                 names += [s.punct(","), self._identifier(s)]
+            if s.peek_word() == "AT":
+                raise Decline(LOCATED)
             spec = node("global_var_spec", [node("global_var_list", names)])
             decl = [spec, s.punct(":"), self._spec_init(s)]
             s.semicolons(decl)

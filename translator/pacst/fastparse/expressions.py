@@ -7,6 +7,7 @@ from .scanner import Decline, node
 _NAME_THEN_ARROW = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*(:=|=>)")
 _DOTTED = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*(?![A-Za-z0-9_.])")
 _DEREF_FIELD = re.compile(r"\^[ \t\f\r\n]*\.")
+_TYPE_ARGUMENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*[,)]")
 _BIT = re.compile(r"[0-9][0-9_]*")
 # what may not follow a bit number (`w.3.5`, `w.3a`): Earley's to read or refuse
 _RUNS_ON = re.compile(r"[A-Za-z0-9_#]|\.[0-9]")
@@ -88,6 +89,10 @@ class Expressions:
         const = self._literals.constant(s)
         if const is not None:
             return const
+        word = s.peek_word()
+        if word is not None and self._vocabulary.is_type_word(word) and _TYPE_ARGUMENT.match(s.text, s.pos):
+            # a type as an argument (`__NEW(BYTE, 4)`, `SIZEOF(LREAL)`): a variable_name to blark
+            return node("variable_name", [s.word_token("IDENTIFIER"), None])
         var = self.variable(s)
         if s.peek_punct() == "(":
             return self.call(s, var)

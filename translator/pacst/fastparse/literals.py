@@ -1,8 +1,8 @@
 """Literals: the `constant` subtree of an expression and the integer labels of CASE, in blark's shapes."""
 import re
 
-from .scanner import Decline, node
-from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, REAL_TYPES
+from .scanner import DATE_AND_TIME, Decline, node
+from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, OTHER_DATE_TYPES, REAL_TYPES
 
 _WORD_HASH = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)#")
 _BASE = re.compile(r"(2|8|16)#")
@@ -146,7 +146,7 @@ class Literals:
                 return self._boolean(s, [anon], after.group(0).upper())
         kind = _TYPED_KINDS.get(word)
         if kind is None:
-            raise Decline("typed literal of another type")
+            raise Decline(DATE_AND_TIME if word in OTHER_DATE_TYPES or word == "D" else "typed literal of another type")
         raw = [s.token(kind, type_start, hash_end - 1), s.anon(hash_end - 1, hash_end)]
         s.pos = hash_end
         if kind == "REAL_TYPE_NAME":
