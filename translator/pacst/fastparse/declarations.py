@@ -349,7 +349,8 @@ class Declarations:
     def _function(self, s):
         raw = [s.keyword("FUNCTION"), None, self._identifier(s)]
         if s.peek_punct() != ":":
-            return self._function_rest(s, raw + [None])  # no result type (a FUNCTION that writes its VAR_IN_OUT)
+            # no result type (a FUNCTION that writes its VAR_IN_OUT)
+            return self._pou(s, raw + [None], "function", "END_FUNCTION", "function_declaration")
         raw.append(s.punct(":"))
         indirection = self._indirection(s)
         spec = self._specification(s)
@@ -357,15 +358,17 @@ class Declarations:
             # `: STRING(80)`: Earley reads the length as the arguments (input_param_args) of the result type
             raise Decline("sized STRING as a FUNCTION's result")
         raw.append(node("indirect_simple_specification", [indirection, spec, None]))
-        return self._function_rest(s, raw)
+        return self._pou(s, raw, "function", "END_FUNCTION", "function_declaration")
 
-    def _function_rest(self, s, raw):
+    def _pou(self, s, raw, kind, end, rule):
+        """Tree `rule` of a POU whose heading is in `raw`: its variable blocks of `kind`, its body and `end`.
+        (`[ function_var_block+ ]` leaves no placeholder when absent: its content is an inlined rule.)"""
         _no_trailing_semicolon(s)
-        # `[ function_var_block+ ]` leaves no placeholder when absent: its content is an inlined rule.
-        raw += self._var_blocks(s, "function")
-        raw += [self._st.statement_list(s), s.keyword("END_FUNCTION")]
+        raw += self._blocks(s, kind)
+        body = self._st.statement_list(s)
+        raw += [body, s.keyword_token(end) if end == "END_FUNCTION_BLOCK" else s.keyword(end)]
         _no_trailing_semicolon(s)
-        return node("function_declaration", raw)
+        return node(rule, raw)
 
     def _program(self, s):
         raw = [s.keyword("PROGRAM"), self._identifier(s)]
@@ -383,11 +386,7 @@ class Declarations:
     def _function_block(self, s):
         raw = [s.keyword_token("FUNCTION_BLOCK"), self._access(s), self._identifier(s),
                self._names(s, "EXTENDS", "extends"), self._names(s, "IMPLEMENTS", "implements")]
-        _no_trailing_semicolon(s)
-        raw += self._var_blocks(s, "block")
-        raw += [self._st.statement_list(s), s.keyword_token("END_FUNCTION_BLOCK")]
-        _no_trailing_semicolon(s)
-        return node("function_block_type_declaration", raw)
+        return self._pou(s, raw, "block", "END_FUNCTION_BLOCK", "function_block_type_declaration")
 
     def _access(self, s):
         """access_specifier (PUBLIC, ABSTRACT, ...), or None."""
@@ -402,9 +401,9 @@ class Declarations:
             raw += [s.punct(","), self._x.dotted_name_token(s)]
         return node(rule, raw)
 
-    def _member_blocks(self, s, kind):
-        """The variable blocks of a METHOD, PROPERTY or INTERFACE. An empty VAR block of an INTERFACE could be
-        another rule of blark's: declined (a METHOD's and a PROPERTY's are var_declarations, as a FUNCTION_BLOCK's)."""
+    def _blocks(self, s, kind):
+        """The variable blocks of a POU of `kind`. An empty VAR block of an INTERFACE could be another rule of
+        blark's: declined (a METHOD's and a PROPERTY's are var_declarations, as a FUNCTION_BLOCK's)."""
         blocks = self._var_blocks(s, kind)
         if kind == "interface" and any(b.data == "var_declarations" and not b.children[-1].children for b in blocks):
             raise Decline("empty VAR block")
@@ -412,13 +411,8 @@ class Declarations:
 
     def _method(self, s):
         """A METHOD: after its FUNCTION_BLOCK in a file, or alone in a TwinCAT file's form."""
-        raw = [s.keyword("METHOD"), self._access(s), self._x.dotted_name_token(s)]
-        raw += [self._result(s)]
-        _no_trailing_semicolon(s)
-        raw += self._member_blocks(s, "block")
-        raw += [self._st.statement_list(s), s.keyword("END_METHOD")]
-        _no_trailing_semicolon(s)
-        return node("function_block_method_declaration", raw)
+        raw = [s.keyword("METHOD"), self._access(s), self._x.dotted_name_token(s), self._result(s)]
+        return self._pou(s, raw, "block", "END_METHOD", "function_block_method_declaration")
 
     def _result(self, s):
         """The type after `:` of a METHOD or PROPERTY (an array's or a simple one), or None."""
@@ -432,11 +426,7 @@ class Declarations:
 
     def _property(self, s):
         raw = [s.keyword("PROPERTY"), self._access(s), self._x.dotted_name_token(s), self._result(s), self._access(s)]
-        _no_trailing_semicolon(s)
-        raw += self._member_blocks(s, "block")
-        raw += [self._st.statement_list(s), s.keyword("END_PROPERTY")]
-        _no_trailing_semicolon(s)
-        return node("function_block_property_declaration", raw)
+        return self._pou(s, raw, "block", "END_PROPERTY", "function_block_property_declaration")
 
     def _action(self, s):
         """An ACTION of a FUNCTION_BLOCK: `ACTION Name :` or `ACTION FB_X.Name :`, a body, END_ACTION."""
@@ -448,7 +438,7 @@ class Declarations:
     def _interface(self, s):
         raw = [s.keyword("INTERFACE"), self._identifier(s), self._names(s, "EXTENDS", "extends")]
         _no_trailing_semicolon(s)
-        raw += self._member_blocks(s, "interface")
+        raw += self._blocks(s, "interface")
         raw.append(s.keyword("END_INTERFACE"))
         _no_trailing_semicolon(s)
         return node("interface_declaration", raw)
