@@ -10,9 +10,8 @@ import collections
 import os
 import sys
 
-from tree_oracle import REPO, Oracle  # noqa: F401 (puts the translator on the path)
+from tree_oracle import Oracle  # (puts the translator on the path)
 from pacst import parsing  # noqa: E402
-from pacst.errors import StError  # noqa: E402
 from pacst.fastparse import Decline  # noqa: E402
 
 
@@ -21,7 +20,7 @@ def reason(oracle, path, user):
     try:
         text = parsing._read(path, user)[0]
         text = oracle.processed(text)
-    except (StError, Exception) as exc:  # noqa: B014 (blark's comment pass raises on damaged text)
+    except Exception as exc:  # pacst's reading (StError) or blark's comment pass, on damaged text
         return f"not read: {exc}", 0, ""
     try:
         oracle.fast.parse(text)
