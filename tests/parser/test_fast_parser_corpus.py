@@ -16,7 +16,8 @@ import sys
 import unittest
 
 from tree_oracle import RECORD, REPO, read_record, Oracle
-from pacst.fastparse import Decline  # noqa: E402 (tree_oracle puts the translator on the path)
+from pacst import parsing  # noqa: E402 (tree_oracle puts the translator on the path)
+from pacst.fastparse import LEFT_TO_EARLEY, Decline  # noqa: E402
 
 VERDICTS = os.path.join(REPO, "tests", "conformance", "matiec_verdicts", "snippets")
 CORPORA = {
@@ -109,6 +110,16 @@ def _declaration_paths():
     return CORPORA["conformance accept"] + CORPORA["user programs"] + CORPORA["user dialect"]
 
 
+# pac-test's dialect project (tools/pactest/tests/dialect): its ST and TwinCAT files as pac-test reads them, in user
+# mode (a TwinCAT object's ST in place, a POU closed, the rewrites of pacst.rewrite), the texts its runs parse.
+DIALECT_PROJECT = sorted(p for p in glob.glob(os.path.join(REPO, "tools", "pactest", "tests", "dialect", "*"))
+                         if p.lower().endswith((".st",) + parsing.twincat.OBJECT_EXTENSIONS))
+
+
+def _user_text(path):
+    return parsing._read(path, user=True)[0]
+
+
 def corpus_texts():
     """(start rule, source) of every text the tests below compare from the corpora's files: what
     record_earley.py records."""
@@ -118,6 +129,7 @@ def corpus_texts():
             texts.append(("iec_source", f.read()))
     texts += [found for found in map(_body, _body_paths()) if found]
     texts += [found for found in map(_declaration, _declaration_paths()) if found]
+    texts += [("iec_source", _user_text(path)) for path in DIALECT_PROJECT]
     return texts
 
 
@@ -255,6 +267,73 @@ class Corpus(unittest.TestCase):
         self.assertEqual(oracle.compare("FOR i := 1 TO 3 DO END_FOR;\n", "statement_list")[0], "declined")
         self.assertEqual(oracle.compare("PROGRAM P\nVAR a : ARRAY [1..2] OF INT := [1, 2]; END_VAR\nEND_PROGRAM\n")[0],
                          "declined")
+
+    def test_the_dialect_project_takes_the_fast_path(self):
+        """pac-test's dialect project as its runs parse it: every text the fast parser reads has Earley's tree, and
+        every text it declines holds a construct left to Earley on purpose (LEFT_TO_EARLEY), never one it reads
+        (a METHOD, a pointer, an INTERFACE...): each such decline is Earley's time on every run's first parse."""
+        self.assertGreater(len(DIALECT_PROJECT), 100)
+        oracle = _oracle()
+        fast = 0
+        for path in DIALECT_PROJECT:
+            text = _user_text(path)
+            with self.subTest(path=os.path.relpath(path, REPO)):
+                verdict, what = oracle.compare(text)
+                self.assertNotEqual(verdict, "different", what)
+                if verdict == "same":
+                    fast += 1
+                    continue
+                with self.assertRaises(Decline) as declined:
+                    oracle.fast.parse(oracle.processed(text))
+                self.assertIn(str(declined.exception), LEFT_TO_EARLEY)
+        print(f"dialect project as pac-test reads it: {fast} of {len(DIALECT_PROJECT)} files parsed fast", file=sys.stderr)
+
+    def test_dialect_constructs_take_the_fast_path(self):
+        """The TwinCAT 3 / CODESYS constructs the fast parser reads, with comments and pragmas inside them and
+        nested, have Earley's tree; the same constructs damaged are declined (Earley gives the error)."""
+        oracle = _oracle()
+        same = {
+            "iec_source": (
+                "FUNCTION_BLOCK PUBLIC FB_A EXTENDS NS.FB_B IMPLEMENTS I_X, (* two *) NS.I_Y\n"
+                "VAR\n  p : POINTER TO INT;\n  r : REFERENCE TO POINTER TO BYTE;  // a pointer's reference\n"
+                "  q : POINTER TO POINTER TO ST_X := 0;\n  a : ARRAY [*] OF POINTER TO INT;\n  s : STRING(80);\n"
+                "  w : WSTRING[3] := \"a$\"b\";\n  m : PA_CONTROL.MC_Power;\n  k : WORD := (K_A + 2);\nEND_VAR\n"
+                "VAR_STAT n : INT; END_VAR\nVAR_INST {attribute 'x'} i : INT; END_VAR\n"
+                "p^ := x.3; a[1]^ := 2; s.p^.k := f(1)^; THIS^.M(); pNode^.pNext^.Value := 1;\n"
+                "x := THIS^.ipCounter.Count(); y := a^.b.c.d; z := a^.b[1]; SUPER^();\n"
+                "Fluent.Add(1).Add(2) (* chained *).Add(3); v := F(7).Value(); r REF= s.t; a := b := c.d[1] := 0;\n"
+                "x := __NEW(BYTE, 4) + SIZEOF(LREAL); d := LTIME#1S0.002044MS; e := LT#5us;\n"
+                "CASE x OF 16#01: x := 1; GVL_S.STEP, E_A.B: x := 2; END_CASE\n"
+                "END_FUNCTION_BLOCK\n"
+                "METHOD PRIVATE FB_init : BOOL\nVAR_INPUT\n  bInitRetains : BOOL;\nEND_VAR\nVAR END_VAR\n"
+                "FB_init := TRUE;\nEND_METHOD\n"
+                "METHOD Empty\nEND_METHOD\n"
+                "PROPERTY PUBLIC Count.Get : STRING(10)\nVAR\nEND_VAR\nCount := 'x';\nEND_PROPERTY\n"
+                "INTERFACE I_Limited EXTENDS I_Counter, NS.I_Y\nVAR_INPUT x : INT; END_VAR\nEND_INTERFACE\n"
+                "ACTION FB_A.Clear :\nx := 0;\nEND_ACTION\n"
+                "FUNCTION F_Bump\nVAR_IN_OUT c : INT; END_VAR\nVAR F_Bump : REFERENCE TO INT; END_VAR\n"
+                "c := c + 1;\nEND_FUNCTION\n"
+                "TYPE E_A : (A := 1, B := 16#20, (* minus *) C := -3) DINT := E_A.A; END_TYPE\n"
+                "TYPE ST_B EXTENDS NS.ST_A :\nSTRUCT\n  n : POINTER TO ST_B;\nEND_STRUCT\nEND_TYPE\n"
+                "TYPE T_Alias : NS.T_Other; END_TYPE\n"),
+            "function_block_method_declaration": "METHOD Add : POINTER TO INT\nVAR_INST k : INT; END_VAR\nAdd := 0;\nEND_METHOD\n",
+            "interface_declaration": "INTERFACE I_Fluent\nEND_INTERFACE\n",
+        }
+        for rule, text in same.items():
+            with self.subTest(rule=rule):
+                self.assertEqual(oracle.compare(text, rule), ("same", None))
+        for text in ("METHOD M : INT\nM := 1\nEND_METHOD\n",  # no `;`
+                     "FUNCTION_BLOCK FB_A EXTENDS\nEND_FUNCTION_BLOCK\n",
+                     "INTERFACE I_X\n",  # no END_INTERFACE (blark takes it, the fast parser does not)
+                     "PROGRAM P\nx := p ^^;\nEND_PROGRAM\n",
+                     "PROGRAM P\nF(1).A;\nEND_PROGRAM\n",
+                     "PROGRAM P\nx := a.3.5;\nEND_PROGRAM\n",
+                     "FUNCTION F : STRING(80)\nF := 'a';\nEND_FUNCTION\n",  # Earley: the length is an argument
+                     "PROGRAM P\nVAR x : TIME := T#5us; END_VAR\nEND_PROGRAM\n",
+                     "PROGRAM P\nVAR a : ARRAY [1..2] OF INT := [1, 2]; END_VAR\nEND_PROGRAM\n",
+                     "PROGRAM P\nVAR a : ST_A := (B := 1); END_VAR\nEND_PROGRAM\n"):
+            with self.subTest(text=text):
+                self.assertEqual(oracle.compare(text)[0], "declined")
 
     def test_the_conformance_suite_takes_the_fast_path(self):
         paths = CORPORA["conformance accept"]

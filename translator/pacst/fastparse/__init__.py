@@ -6,11 +6,11 @@ syntax error, it declines (Decline), and blark's parser decides instead."""
 from .declarations import Declarations
 from .expressions import Expressions
 from .literals import Literals
-from .scanner import Decline, Scanner
+from .scanner import LEFT_TO_EARLEY, Decline, Scanner
 from .statements import Statements
 from .vocabulary import Vocabulary, grammar_facts
 
-__all__ = ["Decline", "FastParser", "grammar_facts"]
+__all__ = ["Decline", "FastParser", "LEFT_TO_EARLEY", "grammar_facts"]
 
 
 class FastParser:
@@ -30,15 +30,16 @@ class FastParser:
         """blark's tree of `text` from the start rule iec_source, statement_list (a POU's body alone, as
         TwinCAT keeps it) or the rule of one element (a FUNCTION_BLOCK, FUNCTION, PROGRAM or TYPE alone);
         raises Decline."""
+        s = Scanner(text) if start in ("statement_list", "iec_source") or start in self._elements else None
         try:
+            if s is None:
+                raise Decline(f"start rule {start} not read here")
             if start == "statement_list":
-                s = Scanner(text)
                 tree = self._statements.statement_list(s)
                 if tree is None or not s.at_end():
                     raise Decline("not a statement list alone")
                 return tree
             if start in self._elements:
-                s = Scanner(text)
                 keyword, reader = self._elements[start]
                 if s.peek_word() != keyword:
                     raise Decline(f"not a {keyword}")
@@ -46,8 +47,10 @@ class FastParser:
                 if not s.at_end():
                     raise Decline(f"more than one {keyword}")
                 return tree
-            if start != "iec_source":
-                raise Decline(f"start rule {start} not read here")
-            return self._declarations.source(Scanner(text))
+            return self._declarations.source(s)
         except RecursionError:
             raise Decline("nested too deeply") from None
+        except Decline as exc:
+            # where it declined, for decline_reasons.py
+            exc.pos = s.pos if s is not None else 0
+            raise

@@ -5,6 +5,12 @@ import re
 from .scanner import Decline, node
 
 _NAME_THEN_ARROW = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*(:=|=>)")
+_DOTTED = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*(?![A-Za-z0-9_.])")
+_DEREF_FIELD = re.compile(r"\^[ \t\f\r\n]*\.")
+_TYPE_ARGUMENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*[,)]")
+_BIT = re.compile(r"[0-9][0-9_]*")
+# what may not follow a bit number (`w.3.5`, `w.3a`): Earley's to read or refuse
+_RUNS_ON = re.compile(r"[A-Za-z0-9_#]|\.[0-9]")
 
 # Precedence levels from the loosest: (rule, operator terminal, operators as words or punctuation).
 # blark's rule names are shifted against their operators (and_then_expression joins with OR, ...):
@@ -83,9 +89,13 @@ class Expressions:
         const = self._literals.constant(s)
         if const is not None:
             return const
+        word = s.peek_word()
+        if word is not None and self._vocabulary.is_type_word(word) and _TYPE_ARGUMENT.match(s.text, s.pos):
+            # a type as an argument (`__NEW(BYTE, 4)`, `SIZEOF(LREAL)`): a variable_name to blark
+            return node("variable_name", [s.word_token("IDENTIFIER"), None])
         var = self.variable(s)
         if s.peek_punct() == "(":
-            return self.function_call(s, var)
+            return self.call(s, var)
         return var
 
     def literal_label(self, s):
@@ -93,6 +103,11 @@ class Expressions:
         if s.peek_char() in "-+":
             return self._literals.signed_integer_literal(s)
         return self._literals.integer_literal(s)
+
+    def integer_value(self, s):
+        """An enumeration value's number: an integer_literal, decimal, signed or based (`16#20`)."""
+        based = self._literals.based_integer(s)
+        return based if based is not None else self.literal_label(s)
 
     def name_token(self, s, type_="IDENTIFIER"):
         """The name at the position as a Token of `type_` (IDENTIFIER, DOTTED_IDENTIFIER), or Decline
@@ -103,31 +118,75 @@ class Expressions:
             raise Decline("identifier expected")
         return s.word_token(type_)
 
+    def dotted_name_token(self, s):
+        """A DOTTED_IDENTIFIER (`NS.I_Counter`, `Count.Get`): names joined by `.` without space, none a keyword or
+        an elementary type's name."""
+        m = _DOTTED.match(s.text, s.pos)
+        if not m or not all(self._vocabulary.is_identifier(w.upper()) and not self._vocabulary.is_type_word(w.upper())
+                            for w in m.group(0).split(".")):
+            raise Decline("dotted name expected")
+        return s.token_to("DOTTED_IDENTIFIER", m.end())
+
     def variable_name(self, s):
         return node("variable_name", [self.name_token(s), None])
 
     def variable(self, s):
-        """variable_name, or multi_element_variable with its subscripts and fields."""
-        name = self.variable_name(s)
-        raw = [name]
+        """variable_name, or multi_element_variable with its subscripts, fields and bit numbers (`w.3`); a `^`
+        dereferences the name or the subscript before it, where blark's grammar puts it."""
+        tok = self.name_token(s)
+        # A `^` after the first name and before a `.` has two places in blark's grammar: the name's, or the
+        # field_selector's after it. Earley's choice alternates with the number of subscripts and fields that
+        # follow: odd, the name's; even, the field's.
+        ambiguous = s.peek_punct() == "^" and _DEREF_FIELD.match(s.text, s.pos)
+        deref = _dereferenced(s)
+        raw = [None]
         while True:
             p = s.peek_punct()
             if p == "[":
                 sub = [s.punct("["), self.expression(s)]
                 while s.peek_punct() == ",":
                     sub += [s.punct(","), self.expression(s)]
-                sub += [s.punct("]"), None]
-                if s.peek_punct() == "^":
-                    raise Decline("dereference")
+                sub += [s.punct("]"), _dereferenced(s)]
                 raw.append(node("subscript_list", sub))
             elif p == ".":
-                dot = s.punct(".")
-                raw.append(node("field_selector", [None, dot, self.variable_name(s)]))
-            elif p == "^":
-                raise Decline("dereference")
+                selector = [s.punct("."), self._field(s)]
+                if len(raw) == 1:
+                    first = selector
+                raw.append(node("field_selector", [None] + selector))
             else:
                 break
-        return name if len(raw) == 1 else node("multi_element_variable", raw)
+        if ambiguous and len(raw) % 2:
+            raw[1] = node("field_selector", [deref] + first)
+            deref = None
+        raw[0] = node("variable_name", [tok, deref])
+        return raw[0] if len(raw) == 1 else node("multi_element_variable", raw)
+
+    def _field(self, s):
+        """The field after a `.`: a name, with its `^`, or a bit number."""
+        if not s.peek_char().isdigit():
+            return node("variable_name", [self.name_token(s), _dereferenced(s)])
+        # a bit number: an INTEGER, which must not run on into a real number or a word
+        span = s.pattern(_BIT)
+        if span is None or _RUNS_ON.match(s.text, s.pos):
+            raise Decline("bit number not read here")
+        field = s.token("INTEGER", *span)
+        s.skip()
+        return field
+
+    def call(self, s, callee):
+        """function_call of `callee`, or chained_function_call when calls follow it (`F(1).Add(2).Add(3)`, and
+        `F(x).Member()` as user mode rewrites a member of a call's result); the position at its `(`."""
+        first = self.function_call(s, callee)
+        if s.peek_punct() != ".":
+            return first
+        raw = [first]
+        while s.peek_punct() == ".":
+            raw.append(s.punct("."))
+            member = self.variable(s)
+            if s.peek_punct() != "(":
+                raise Decline("member of a call's result")
+            raw.append(self.function_call(s, member))
+        return node("chained_function_call", raw)
 
     def function_call(self, s, callee):
         """function_call of `callee`, the position at its `(`."""
@@ -142,8 +201,10 @@ class Expressions:
                     raise Decline("trailing comma")
                 raw.append(self._param(s))
         raw.append(s.punct(")"))
-        if s.peek_punct() in ("^", "."):
-            raise Decline("dereference or chained call")
+        if s.peek_punct() == "^":
+            raw.append(_dereferenced(s))  # `DEREFERENCED?`: no placeholder when absent
+        if s.peek_punct() in ("^", "["):
+            raise Decline("a call's result dereferenced or indexed")
         return node("function_call", raw)
 
     def _param(self, s):
@@ -159,3 +220,14 @@ class Expressions:
                 return node("param_assignment", [name, op, self.expression(s)])
             return node("output_parameter_assignment", [None, name, op, self.expression(s)])
         return node("param_assignment", [self.expression(s)])
+
+
+def _dereferenced(s):
+    """The DEREFERENCED token of a `^` at the position, or None."""
+    if s.peek_punct() != "^":
+        return None
+    start = s.pos
+    s.pos += 1
+    tok = s.token("DEREFERENCED", start, s.pos)
+    s.skip()
+    return tok

@@ -1,8 +1,8 @@
 """Literals: the `constant` subtree of an expression and the integer labels of CASE, in blark's shapes."""
 import re
 
-from .scanner import Decline, node
-from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, REAL_TYPES
+from .scanner import DATE_AND_TIME, Decline, node
+from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, OTHER_DATE_TYPES, REAL_TYPES
 
 _WORD_HASH = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)#")
 _BASE = re.compile(r"(2|8|16)#")
@@ -22,11 +22,16 @@ _FIXED_POINT = re.compile(r"[0-9][0-9_]*\.[0-9][0-9_]*")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 # A string without line breaks; `$` only in the escapes blark's grammar knows.
 _STRING = re.compile(r"'([^$'\n]|\$[$LNPRTlnprt']|\$[0-9A-F][0-9A-F])*'")
+# a WSTRING's: in double quotes, `$` followed by four hex digits
+_WIDE_STRING = re.compile(r'"([^$"\n]|\$[$LNPRTlnprt"]|\$[0-9A-F]{4})*"')
 _WORD_CHAR = re.compile(r"[A-Za-z0-9_.#]")
-# Duration units, smallest last: each but the last may be followed by the next one.
-_UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"))
+# Duration units, smallest last: each up to seconds may be followed by the next one; microseconds and
+# nanoseconds are an LTIME's alone, and only as its one unit.
+_UNITS = (("days", "d"), ("hours", "h"), ("minutes", "m"), ("seconds", "s"), ("milliseconds", "ms"),
+          ("microseconds", "us"), ("nanoseconds", "ns"))
+_CHAINED = 5  # the units before this index may take a next one
 _UNDERSCORE = re.compile("_")
-_UNIT = re.compile(r"ms|[dhms]", re.IGNORECASE)
+_UNIT = re.compile(r"ms|us|ns|[dhms]", re.IGNORECASE)
 
 
 def _end_of_literal(s):
@@ -72,11 +77,11 @@ class Literals:
         c = s.peek_char()
         if c.isdigit():
             return self._untyped_number(s)
-        if c == "'":
-            span = s.pattern(_STRING)
+        if c in "'\"":
+            span = s.pattern(_STRING if c == "'" else _WIDE_STRING)
             if span is None:
                 raise Decline("string not read here")
-            tok = s.token("SINGLE_BYTE_CHARACTER_STRING", *span)
+            tok = s.token("SINGLE_BYTE_CHARACTER_STRING" if c == "'" else "DOUBLE_BYTE_CHARACTER_STRING", *span)
             s.skip()
             return node("string_literal", [tok])
         m = _WORD_HASH.match(s.text, s.pos)
@@ -98,6 +103,10 @@ class Literals:
         if self._real.match(s.text, s.pos):
             return node("real_literal", [None, _number(s, self._real, self._real_type)])
         return self.integer_literal(s)
+
+    def based_integer(self, s):
+        """integer_literal of a `2#`, `8#` or `16#` number at the position, or None."""
+        return self._based(s, "integer_literal", [None])
 
     def _based(self, s, rule, raw):
         """The `2#`, `8#` or `16#` number at the position under `rule` ([type and `#`] or [None] in
@@ -126,7 +135,9 @@ class Literals:
     def _typed(self, s, word, m):
         type_start, hash_end = s.pos, m.end()
         if word in ("T", "TIME"):
-            return self._duration(s, hash_end)
+            return self._duration(s, hash_end, "duration")
+        if word in ("LT", "LTIME"):
+            return self._duration(s, hash_end, "lduration")
         if word == "BOOL":
             after = _NAME.match(s.text, hash_end)
             if after and after.group(0).upper() in ("TRUE", "FALSE"):
@@ -135,7 +146,7 @@ class Literals:
                 return self._boolean(s, [anon], after.group(0).upper())
         kind = _TYPED_KINDS.get(word)
         if kind is None:
-            raise Decline("typed literal of another type")
+            raise Decline(DATE_AND_TIME if word in OTHER_DATE_TYPES or word == "D" else "typed literal of another type")
         raw = [s.token(kind, type_start, hash_end - 1), s.anon(hash_end - 1, hash_end)]
         s.pos = hash_end
         if kind == "REAL_TYPE_NAME":
@@ -148,7 +159,7 @@ class Literals:
             return self.integer_literal(s, raw)
         return node("bit_string_literal", raw + [_number(s, _INTEGER, "INTEGER")])
 
-    def _duration(self, s, hash_end):
+    def _duration(self, s, hash_end, rule):
         raw = [s.anon(s.pos, hash_end - 1), s.anon(hash_end - 1, hash_end)]
         s.pos = hash_end
         if s.peek_char() == "-":
@@ -156,12 +167,16 @@ class Literals:
             s.pos += 1
         else:
             raw.append(None)
-        raw.append(self._interval(s, 0))
+        interval = self._interval(s, 0)
+        if interval.data in ("microseconds", "nanoseconds") and rule != "lduration":
+            raise Decline("microseconds or nanoseconds of a TIME")
+        raw.append(interval)
         _end_of_literal(s)
-        return node("duration", raw)
+        return node(rule, raw)
 
     def _interval(self, s, least_unit):
-        """The interval at the position, whose first unit is `least_unit` or a later one."""
+        """The interval at the position, whose first unit is `least_unit` or a later one (up to
+        milliseconds after another unit)."""
         span = s.pattern(_FIXED_POINT)
         fixed = span is not None
         if not fixed:
@@ -173,10 +188,10 @@ class Literals:
         if unit_anon is None:
             raise Decline("duration unit expected")
         index = [u for _, u in _UNITS].index(m.group(0).lower())
-        if index < least_unit:
+        if index < least_unit or least_unit and index >= _CHAINED:
             raise Decline("duration units out of order")
         raw = [tok, unit_anon]
-        if not fixed and index + 1 < len(_UNITS):
+        if not fixed and index + 1 < _CHAINED:
             under, _ = _prefix(s, _UNDERSCORE)
             if under is not None or s.peek_char().isdigit():
                 sub = self._interval(s, index + 1)

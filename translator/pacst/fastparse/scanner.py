@@ -16,6 +16,16 @@ class Decline(Exception):
     """The text is not in what the fast parser knows (or not valid at all): blark's parser decides."""
 
 
+# The reasons of the declines left to Earley on purpose (decline_reasons.py counts them): what Earley reads in more
+# ways than one (it builds one of several trees, which the fast parser cannot foresee), or seldom written.
+INITIAL_VALUE = "an array's or a structure's initial value"
+LOCATED = "a located variable"
+DATE_AND_TIME = "a date and time type or literal"
+ARGUMENTS = "an FB instance's arguments or a subrange"
+UNION = "a UNION"
+LEFT_TO_EARLEY = frozenset((INITIAL_VALUE, LOCATED, DATE_AND_TIME, ARGUMENTS, UNION))
+
+
 class Anon:
     """A token the tree leaves out (keywords, punctuation) but whose text still counts for positions."""
 
@@ -132,6 +142,10 @@ class Scanner:
     def token(self, type_, start, end):
         line, col = self.line_col(start)
         return Token(type_, self.text[start:end], start, line, col, line, col + end - start, end)
+
+    def token_to(self, type_, end):
+        """The text from the position to `end` as a Token of `type_`; moves past it and the space after it."""
+        return self.token(type_, *self._take(end))
 
     def keyword(self, word):
         """The keyword `word` (upper case) as an Anon, or Decline."""

@@ -1,12 +1,19 @@
 """Statements: statement_list and its statements, each with the `;` that ends it (they count for the
 positions, not for the tree)."""
+import re
+
 from .scanner import Decline, node
+
+_LABEL_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*")
+_REF_ASSIGNMENT = re.compile(r"REF=", re.I)
+# a word that starts a literal (`T#1S`, `TRUE`), not a variable
+_LITERAL_START = re.compile(r"[A-Za-z_][A-Za-z0-9_]*#|(TRUE|FALSE|NOT)\b", re.I)
 
 # Words that end a statement list rather than start a statement.
 _LIST_ENDS = frozenset(("END_IF", "ELSIF", "ELSE", "END_CASE", "END_WHILE", "UNTIL", "END_REPEAT",
-                        "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR"))
-_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK", "END_METHOD", "END_ACTION",
-                       "END_PROPERTY"))
+                        "END_FUNCTION", "END_FUNCTION_BLOCK", "END_PROGRAM", "END_FOR", "END_METHOD",
+                        "END_PROPERTY", "END_ACTION"))
+_DECLINED = frozenset(("JMP", "END_FUNCTIONBLOCK"))
 
 
 class Statements:
@@ -52,17 +59,34 @@ class Statements:
         target = self._x.variable(s)
         p = s.peek_punct()
         if p == ":=":
-            start = s.pos
-            s.pos += 2
-            assign = s.token("ASSIGNMENT", start, s.pos)
-            s.skip()
-            raw = [target, assign, self._x.expression(s)]
+            raw = [target, s.token_to("ASSIGNMENT", s.pos + 2)]
+            # `a := b := 0`: every variable before the last `:=` is a target too
+            while True:
+                start = s.pos
+                if s.peek_word() is None or _LITERAL_START.match(s.text, s.pos):
+                    break
+                try:
+                    chained = self._x.variable(s)
+                except Decline:
+                    s.pos = start
+                    break
+                if s.peek_punct() != ":=":
+                    s.pos = start
+                    break
+                raw += [chained, s.token_to("ASSIGNMENT", s.pos + 2)]
+            raw.append(self._x.expression(s))
             _end(s, raw, least=1)
             return node("assignment_statement", raw)
-        if p == "(":
-            raw = [self._x.function_call(s, target)]
+        if _REF_ASSIGNMENT.match(s.text, s.pos):
+            raw = [target, s.token_to("REF_ASSIGNMENT", s.pos + 4), self._x.expression(s)]
             _end(s, raw, least=1)
-            return node("function_call_statement", raw)
+            return node("reference_assignment_statement", raw)
+        if p == "(":
+            call = self._x.call(s, target)
+            raw = [call]
+            _end(s, raw, least=1)
+            chained = call.data == "chained_function_call"
+            return node("chained_function_call_statement" if chained else "function_call_statement", raw)
         raise Decline("statement not read here")
 
     def _bare(self, rule, word):
@@ -111,7 +135,7 @@ class Statements:
     def _case_label(self, s):
         if s.peek_char().isdigit() or s.peek_char() in "-+" and s.peek_char(1).isdigit():
             start = s.pos
-            low = self._x.literal_label(s)
+            low = self._x.integer_value(s)
             if s.peek_punct() != "..":
                 return low
             # A range: both bounds are expressions, read again as such.
@@ -122,9 +146,9 @@ class Statements:
         word = s.peek_word()
         if word is None:
             raise Decline("CASE label not read here")
-        tok = self._x.name_token(s, "DOTTED_IDENTIFIER")
+        tok = self._x.dotted_name_token(s)  # `GVL_Station.STEP_DONE`, `E_Mode.AUTO`: one DOTTED_IDENTIFIER
         if s.peek_punct() in (".", ".."):
-            raise Decline("dotted CASE label")
+            raise Decline("CASE label not read here")
         return node("enumerated_value", [None, tok, None])
 
     def _while(self, s):
@@ -161,9 +185,13 @@ class Statements:
 
 def _is_label(s):
     """Whether the name at the position is followed by `:` (not `:=`) or `,`: a CASE label."""
+    m = _LABEL_NAME.match(s.text, s.pos)
+    if not m:
+        return False
     save = s.pos
     try:
-        s.word_token("IDENTIFIER")
+        s.pos = m.end()
+        s.skip()
         return s.peek_punct() in (":", ",")
     finally:
         s.pos = save
