@@ -34,8 +34,8 @@ struct BusTiming {
 // Built with std::string rather than an ostringstream: GoogleTest prints every case's parameter when it
 // registers the tests, thousands of times per process start, where a stream's set-up costs most.
 inline std::string Describe(const BusTiming& t) {
-    std::string out = "PLC " + std::to_string(t.plcMs) + " ms, PA-CONTROL " + std::to_string(t.pacMs) + " ms, latency " +
-                      std::to_string(t.latency) + " PLC cycles";
+    std::string out = "PLC " + std::to_string(t.plcMs) + " ms, PA-CONTROL " + std::to_string(t.pacMs) +
+                      " ms, latency " + std::to_string(t.latency) + " PLC cycles";
     if (t.jitterUs != 0) out += ", jitter " + std::to_string(t.jitterUs) + " us, seed " + std::to_string(t.seed);
     return out;
 }

@@ -43,7 +43,8 @@ inline std::string ReadingName(const ControllerReading& r) {
 // A std::string, not a stream, for the reason Describe(BusTiming) gives.
 inline std::string Describe(const ControllerReading& r) {
     return std::string("new command on ") + pac::sim::ToString(r.newCommand) + ", " +
-           pac::sim::ToString(r.receiveAfterRestart) + (r.endOfProcessingAtPowerOn ? ", BF 1" : ", BF 0") + " at power-on";
+           pac::sim::ToString(r.receiveAfterRestart) + (r.endOfProcessingAtPowerOn ? ", BF 1" : ", BF 0") +
+           " at power-on";
 }
 
 // One bus timing on one controller reading.
