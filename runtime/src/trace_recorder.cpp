@@ -27,10 +27,9 @@ void TraceRecorder::AddReal(const std::string& path, std::function<double()> pro
 }
 
 void TraceRecorder::Sample(std::chrono::nanoseconds time) {
-    std::vector<TraceValue> values;
-    values.reserve(probes_.size());
-    for (const auto& probe : probes_) values.push_back(probe());
-    trace_.Append(time, values);
+    sample_.clear();
+    for (const auto& probe : probes_) sample_.push_back(probe());
+    trace_.Append(time, sample_);
 }
 
 void TraceRecorder::AttachTo(PlcTask& task) {

@@ -40,11 +40,11 @@ inline std::string ReadingName(const ControllerReading& r) {
     return name;
 }
 
+// A std::string, not a stream, for the reason Describe(BusTiming) gives.
 inline std::string Describe(const ControllerReading& r) {
-    std::ostringstream out;
-    out << "new command on " << pac::sim::ToString(r.newCommand) << ", " << pac::sim::ToString(r.receiveAfterRestart)
-        << ", BF " << (r.endOfProcessingAtPowerOn ? 1 : 0) << " at power-on";
-    return out.str();
+    return std::string("new command on ") + pac::sim::ToString(r.newCommand) + ", " +
+           pac::sim::ToString(r.receiveAfterRestart) + (r.endOfProcessingAtPowerOn ? ", BF 1" : ", BF 0") +
+           " at power-on";
 }
 
 // One bus timing on one controller reading.

@@ -52,7 +52,12 @@ private:
     template <class Fb, class Bound>
     void Add(std::string name, const pac::FbInstance<Fb>& fb, Bound bound) {
         auto checker = std::make_shared<PlcOpenChecker>(std::move(name), report_);
-        checks_.push_back([checker, &fb, bound](std::int64_t scan) { checker->Check(scan, fb, bound()); });
+        // The bound matters only in a Busy scan (a scan without Busy counts 0 Busy scans, within every
+        // bound), so it is worked out only then: the watch runs after every scan of every test.
+        checks_.push_back([checker, &fb, bound](std::int64_t scan) {
+            const PlcOpenOutputs out = OutputsOf(fb);
+            checker->Check(scan, InputsOf(fb), out, out.busy ? bound() : std::nullopt);
+        });
     }
 
     std::chrono::nanoseconds plcCycle_;

@@ -39,6 +39,7 @@ private:
 
     Trace trace_;
     std::vector<Probe> probes_;
+    std::vector<TraceValue> sample_;  // reused by every Sample: a scan allocates nothing
 };
 
 }  // namespace pac
