@@ -270,15 +270,13 @@ def _cache_folders(cache_dir):
 
 
 def _cached_entry(cache_dir, key):
-    """(the cached object for `key`, the file it was read from), or (None, None). A corrupt cache entry is
-    built again, never trusted."""
+    """(the cached object for `key`, its pickled bytes), or (None, None). A corrupt cache entry is built again,
+    never trusted."""
     for folder in _cache_folders(cache_dir):
-        cached = os.path.join(folder, key + ".pickle")
-        if not os.path.exists(cached):
-            continue
         try:
-            with open(cached, "rb") as f:
-                return pickle.load(f), cached
+            with open(os.path.join(folder, key + ".pickle"), "rb") as f:
+                pickled = f.read()
+            return pickle.loads(pickled), pickled
         except Exception:
             continue
     return None, None
@@ -302,11 +300,9 @@ def _user_tree(cache_dir, text):
     """User mode, on a miss: the tree of the same text parsed outside user mode (the library's, by its build), once
     `text` passed user mode's lexical checks; kept under the user-mode key too, so that the next run skips them.
     The tree depends on the text alone: the two keys differ only in the checks a hit stands for."""
-    tree, cached = _cached_entry(cache_dir, _cache_key(text))
-    if tree is None:
-        return None
-    with open(cached, "rb") as f:
-        _store(cache_dir, _cache_key(text, True), f.read())
+    tree, pickled = _cached_entry(cache_dir, _cache_key(text))
+    if tree is not None:
+        _store(cache_dir, _cache_key(text, True), pickled)
     return tree
 
 
