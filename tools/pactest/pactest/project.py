@@ -96,8 +96,9 @@ def tcunit_sources(sources=None):
     every = sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
     if sources is None:
         return every
-    left = set() if _names(sources, _ARRAY_ASSERT) else {_ARRAY_ASSERTS}
-    if not _names(sources, _RECORD_NAME) or "FB_TEST" in declared_names(sources):
+    texts = _texts(sources)
+    left = set() if any(_ARRAY_ASSERT.search(t) for t in texts) else {_ARRAY_ASSERTS}
+    if not any(_RECORD_NAME.search(t) for t in texts) or "FB_TEST" in declared_names(sources):
         left.add(_RECORD)
     return [f for f in every if os.path.basename(f) not in left]
 
