@@ -3,18 +3,13 @@
 # at configure time instead of after them. tests/cbmc waits for it where it used to fetch, and a failed fetch
 # stops the configure there with the script's output, as before.
 set(PAC_CBMC_ROOT "${PROJECT_SOURCE_DIR}/build/cbmc-root" CACHE PATH "CBMC's private root (tests/cbmc/fetch_cbmc.sh)")
+include("${CMAKE_CURRENT_LIST_DIR}/PacBackgroundJob.cmake")
 set(_pac_cbmc_job "${PROJECT_BINARY_DIR}/cbmc-fetch.job")
 
-# Starts fetch_cbmc.sh into PAC_CBMC_ROOT; it writes its exit status into the job folder's `done`.
+# Starts fetch_cbmc.sh into PAC_CBMC_ROOT.
 function(pac_cbmc_fetch_start)
-  file(REMOVE_RECURSE "${_pac_cbmc_job}")
-  file(MAKE_DIRECTORY "${_pac_cbmc_job}")
-  set(script "${PROJECT_SOURCE_DIR}/tests/cbmc/fetch_cbmc.sh")
-  execute_process(COMMAND bash -c "(bash '${script}' '${PAC_CBMC_ROOT}'; echo $? > '${_pac_cbmc_job}/done') </dev/null \
->'${_pac_cbmc_job}/log' 2>&1 &" RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "could not start fetching CBMC into ${PAC_CBMC_ROOT} (tests/cbmc/fetch_cbmc.sh)")
-  endif()
+  pac_job_start("${_pac_cbmc_job}" "bash '${PROJECT_SOURCE_DIR}/tests/cbmc/fetch_cbmc.sh' '${PAC_CBMC_ROOT}'\n"
+                "fetching CBMC into ${PAC_CBMC_ROOT} (tests/cbmc/fetch_cbmc.sh)")
 endfunction()
 
 # Waits for the fetch, if one is under way; its output becomes the configure's, and a failure stops the configure.
@@ -22,9 +17,7 @@ function(pac_cbmc_fetch_wait)
   if(NOT EXISTS "${_pac_cbmc_job}")
     return()
   endif()
-  execute_process(COMMAND bash -c "while [ ! -s '${_pac_cbmc_job}/done' ]; do sleep 0.1; done; exit $(cat '${_pac_cbmc_job}/done')"
-                  RESULT_VARIABLE rc)
-  file(READ "${_pac_cbmc_job}/log" log)
+  pac_job_wait("${_pac_cbmc_job}" rc log)
   string(STRIP "${log}" log)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "could not fetch CBMC into ${PAC_CBMC_ROOT} (tests/cbmc/fetch_cbmc.sh):\n${log}\n"
@@ -33,5 +26,4 @@ function(pac_cbmc_fetch_wait)
   if(log)
     message(STATUS "${log}")
   endif()
-  file(REMOVE_RECURSE "${_pac_cbmc_job}")
 endfunction()

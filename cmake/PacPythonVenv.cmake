@@ -9,6 +9,7 @@
 # the configure waits for them and fails with a venv's pip output if one could not be made (eight venvs one
 # after another took 40 s of a fresh clone's configure with the cores idle).
 include_guard(GLOBAL)
+include("${CMAKE_CURRENT_LIST_DIR}/PacBackgroundJob.cmake")
 
 function(pac_python_venv venv)
   cmake_parse_arguments(ARG "" "REQUIREMENTS;NO_DEPS" "" ${ARGN})
@@ -53,9 +54,6 @@ endfunction()
 
 # A venv made by the first one's pip in a background job: the job writes its exit status into <venv>.job/done.
 function(_pac_python_venv_in_background venv pip_host stamp requirements no_deps)
-  set(job "${venv}.job")
-  file(REMOVE_RECURSE "${job}")
-  file(MAKE_DIRECTORY "${job}")
   set(python "${Python3_EXECUTABLE}")
   set(no_deps_line "")
   if(no_deps)
@@ -74,12 +72,7 @@ pip install --quiet --disable-pip-version-check -r "@requirements@"
 rm -f "$venv"/.requirements-*
 touch "@stamp@"
 ]=] script @ONLY)
-  file(WRITE "${job}/run.sh" "${script}")
-  execute_process(COMMAND bash -c "(bash '${job}/run.sh'; echo $? > '${job}/done') </dev/null >'${job}/log' 2>&1 &"
-                  RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "could not start making the venv ${venv}")
-  endif()
+  pac_job_start("${venv}.job" "${script}" "making the venv ${venv}")
   set_property(GLOBAL APPEND PROPERTY PAC_VENV_JOBS "${venv}")
 endfunction()
 
@@ -87,14 +80,10 @@ endfunction()
 function(pac_python_venv_wait)
   get_property(jobs GLOBAL PROPERTY PAC_VENV_JOBS)
   foreach(venv IN LISTS jobs)
-    set(job "${venv}.job")
-    execute_process(COMMAND bash -c "while [ ! -s '${job}/done' ]; do sleep 0.1; done; exit $(cat '${job}/done')"
-                    RESULT_VARIABLE rc)
+    pac_job_wait("${venv}.job" rc log)
     if(NOT rc EQUAL 0)
-      file(READ "${job}/log" log)
       message(FATAL_ERROR "pip could not make the venv ${venv}:\n${log}")
     endif()
-    file(REMOVE_RECURSE "${job}")
   endforeach()
   set_property(GLOBAL PROPERTY PAC_VENV_JOBS "")
 endfunction()
