@@ -13,7 +13,7 @@ import time
 import types
 
 from .compiler import Compiler
-from . import gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
+from . import checked, gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
 from .order import closed_under_uses, declaration_order
 from . import system, types as T
 from .emit import ENUM_NAMES, Emitter, remove_outputs, remove_stale_c, write_outputs, _stem
@@ -31,12 +31,15 @@ def _parsed(results):
     return results
 
 
-def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=(), namespaces=None):
+def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=(), namespaces=None, kept=None):
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
     against them; returns (compiler, program, {gvl file: constants}) or raises StErrors. `user`: the
-    user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements."""
-    results = parse_files(list(files) + list(gvl_files), cache_dir, jobs, user)
-    return _translate_parsed(results[:len(files)], results[len(files):], user, native, namespaces)
+    user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements; `kept`: a library's
+    checked state (checked.Kept, user mode), whose files are not parsed again."""
+    taken = kept.by_path if kept is not None else {}
+    parsed = iter(parse_files([f for f in files if f not in taken] + list(gvl_files), cache_dir, jobs, user))
+    file_results = [taken[f] if f in taken else next(parsed) for f in files]
+    return _translate_parsed(file_results, list(parsed), user, native, namespaces, kept)
 
 
 # What a refusal may owe to a declaration pacst could not read: left out beside a file's syntax error
@@ -44,7 +47,7 @@ _MAY_DEPEND = re.compile(r"undeclared|declaration was refused|cannot be used|bef
                          r"has no (variable|member|METHOD|PROPERTY|value)", re.I)
 
 
-def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None):
+def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None, kept=None):
     # A fault in a POU file is reported before any in a global list.
     unread = [r for r in file_results if isinstance(r, StError)]
     if user and unread and len(unread) < len(file_results):
@@ -62,7 +65,12 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
         # The libraries first, checked on their own (or a copy of their checked state); then the program. A PLC
         # programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
         library, rest = user_order(sources, native, namespaces)
-        comp = checked_library(library, native, namespaces)
+        if kept is not None and kept.covers(library):  # the kept files first, then the other libraries' on top
+            comp = kept.compiler(native, namespaces)
+            ids = {id(src) for src in kept.sources}
+            comp.declare([src for src in library if id(src) not in ids])
+        else:
+            comp = checked_library(library, native, namespaces)
         comp.declare(rest)
         program = comp.finish()
     else:
@@ -260,9 +268,10 @@ def _build(args):
     files = _user_files(args)
     names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, SYMBOLS] + [_stem(f) + ".c" for f in files] + \
         [_stem(f) + ".h" for f in args.gvl]
+    kept = _kept_library(args, files)
     try:
         comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native,
-                                             _namespaces(args))
+                                             _namespaces(args), kept)
     except StErrors as e:
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
@@ -282,6 +291,41 @@ def _build(args):
             f.write(f"{time.time()}\n")
     if args.verbose:
         print(f"pacst: {len(args.files)} file(s), rewrote {', '.join(written) or 'nothing'}")
+    return 0
+
+
+def _kept_library(args, files):
+    """build --checked-library FILE: the state `pacst library` kept there, where it stands for this run, else None
+    (--verbose says which)."""
+    if not args.checked_library:
+        return None
+    if not args.user:
+        raise SystemExit("pacst: --checked-library needs --user")
+    kept, why = checked.load(args.checked_library, files, args.native, _namespaces(args))
+    if args.verbose:
+        print(f"pacst: the checked library {args.checked_library}: "
+              + (f"{len(kept.sources)} file(s) taken, not parsed or checked" if kept else f"not taken, {why}"))
+    return kept
+
+
+def _library(args):
+    """pacst library: the library files checked in user mode and their state kept in --out."""
+    args.user = True
+    try:
+        files = _user_files(args)
+        sources = _parsed(parse_files(files, args.cache, args.jobs, True))
+        library, rest = user_order(sources, args.native, _namespaces(args))
+        if rest:
+            raise StErrors([StError(src.path, 1, 1, "not a library file: outside every --namespace folder, or it "
+                                                    "uses a name declared outside them") for src in rest])
+        comp = Compiler(True, args.native, _namespaces(args))
+        comp.declare(library)
+        comp.finish()
+    except StErrors as e:
+        for err in e.errors:
+            print(plcopen_read.at_source(err), file=sys.stderr)
+        return 1
+    checked.save(args.out, library, comp)
     return 0
 
 
@@ -405,6 +449,9 @@ def main(argv=None):
     build.add_argument("--gvl", action="append", default=[], metavar="FILE",
                        help="a global constant list: checked, checked against the POUs' constants, written as FILE.h")
     build.add_argument("--stamp", help="file written after a successful build, removed after a refusal")
+    build.add_argument("--checked-library", metavar="FILE",
+                       help="(--user) a library's checked state written by `pacst library`: its files are not parsed "
+                            "or checked again where the file stands for them (else it is left alone)")
     build.add_argument("--line-directives", action="store_true",
                        help="precede each statement's C with #line naming its ST line (coverage, debuggers)")
     _user_options(build)
@@ -420,6 +467,13 @@ def main(argv=None):
     declare.add_argument("--stamp", help="file written after success")
     declare.add_argument("files", nargs="+")
     declare.set_defaults(run=_declare)
+    lib = sub.add_parser("library", help="check a library's files in user mode and keep their checked state in a "
+                                          "file for `pacst build --user --checked-library`")
+    lib.add_argument("--out", required=True, help="the file to write")
+    _parse_options(lib)
+    _user_options(lib)
+    lib.add_argument("files", nargs="+")
+    lib.set_defaults(run=_library)
     check = sub.add_parser("check", help="check ST files against the portable subset, generate nothing")
     _parse_options(check)
     check.add_argument("--gvl", action="append", default=[], metavar="FILE",

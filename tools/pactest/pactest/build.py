@@ -64,6 +64,8 @@ class HostBuild:
         # compiled once per build of the project and shared by every run against it, not once per program.
         self.shared_obj = os.path.join(pac_build.folder, "pactest-host")
         self.exe = os.path.join(out, "pactest_host")
+        # the library's checked state, kept by the build (prepare.py): pacst neither parses nor checks st/ again
+        self.checked_library = os.path.join(self.shared_obj, "checked-library.pickle")
 
     def _pacst(self, *args):
         # PACTEST_TRANSLATOR: another checkout's translator folder (to try a translator change on a project)
@@ -106,7 +108,7 @@ class HostBuild:
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
         self._pacst("build", *self.user_inputs(), "--line-directives", "--out", self.st_out,
-                    "--gvl", project.gvl_pac())
+                    "--gvl", project.gvl_pac(), "--checked-library", self.checked_library)
         with open(os.path.join(self.st_out, "symbols.json"), encoding="utf-8") as f:
             return hostgen.Symbols(json.load(f))
 

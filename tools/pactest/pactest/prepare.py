@@ -1,7 +1,7 @@
 """What every program's first run against a build would make again, made by the build (`cmake --build`, the
-target pactest_prepare): the host's object shared by the runs against it (build.py's HostBuild) and pacst's user-mode
+target pactest_prepare): the host's object shared by the runs against it (build.py's HostBuild), pacst's user-mode
 parses of the ST every program is translated with, the library, the vocabulary and the vendor libraries' parts, in
-the build's parse cache, which a run reads beneath its own. The same object and parses a run would make, under the
+the build's parse cache, which a run reads beneath its own, and the library's checked state (`pacst library`). The same object and parses a run would make, under the
 keys a run looks them up by.
 
     python -m pactest.prepare BUILD --stamp FILE
@@ -26,10 +26,17 @@ def parse_own_st(host_build):
                dict(os.environ, PYTHONPATH=translator))
 
 
+def check_library(host_build):
+    """The library's checked state (`pacst library`), which every run's translation takes instead of parsing and
+    checking st/ again; the run's pacst falls back to them where the library or the translator changed since."""
+    host_build._pacst("library", "--namespace", f"{project.NAMESPACE}={os.path.join(project.ROOT, 'st')}",
+                      "--out", host_build.checked_library, *project.library_sources())
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m pactest.prepare", description=__doc__.split("\n\n")[0])
     parser.add_argument("build", help="the build of the project (its CMAKE_BINARY_DIR)")
-    parser.add_argument("--stamp", required=True, help="written when both are made")
+    parser.add_argument("--stamp", required=True, help="written when all are made")
     args = parser.parse_args(argv)
     pac = project.PacBuild(args.build)
     try:
@@ -37,6 +44,7 @@ def main(argv=None):
             host_build = build.HostBuild(None, pac, out)
             if pac.parse_cache:
                 parse_own_st(host_build)
+            check_library(host_build)
             host_build.shared_host()
     except build.BuildError as e:
         print(f"pac-test: {e}", file=sys.stderr)
