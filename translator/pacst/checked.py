@@ -108,6 +108,7 @@ class Kept:
         self.sources = sources
         self.by_path = {src.path: src for src in sources}
         self._comp = comp
+        self.used = False  # the run declared its program on the kept Compiler (cli._translate_parsed)
 
     def covers(self, library):
         """Whether the run's library files (user_order's first list) hold every file kept, as kept: a program

@@ -65,7 +65,10 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
         # The libraries first, checked on their own (or a copy of their checked state); then the program. A PLC
         # programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
         library, rest = user_order(sources, native, namespaces)
-        if kept is not None and kept.covers(library):  # the kept files first, then the other libraries' on top
+        kept_used = kept is not None and kept.covers(library)
+        if kept is not None:
+            kept.used = kept_used
+        if kept_used:  # the kept files first, then the other libraries' on top
             comp = kept.compiler(native, namespaces)
             ids = {id(src) for src in kept.sources}
             comp.declare([src for src in library if id(src) not in ids])
@@ -268,17 +271,19 @@ def _build(args):
     files = _user_files(args)
     names = ["POUS.h", "pacst_iec.h", ENUM_NAMES, SYMBOLS] + [_stem(f) + ".c" for f in files] + \
         [_stem(f) + ".h" for f in args.gvl]
-    kept = _kept_library(args, files)
+    kept, why = _kept_library(args, files)
     try:
         comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native,
                                              _namespaces(args), kept)
     except StErrors as e:
+        _say_kept(args, kept, why)
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
         if args.stamp and os.path.exists(args.stamp):
             os.remove(args.stamp)
         for err in e.errors:
             print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
+    _say_kept(args, kept, why)
     outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
     outputs.update(_tables(constants))
     if args.user:
@@ -295,17 +300,26 @@ def _build(args):
 
 
 def _kept_library(args, files):
-    """build --checked-library FILE: the state `pacst library` kept there, where it stands for this run, else None
-    (--verbose says which)."""
+    """build --checked-library FILE: (the state `pacst library` kept there where it stands for this run, else None;
+    why not)."""
     if not args.checked_library:
-        return None
+        return None, None
     if not args.user:
         raise SystemExit("pacst: --checked-library needs --user")
-    kept, why = checked.load(args.checked_library, files, args.native, _namespaces(args))
-    if args.verbose:
-        print(f"pacst: the checked library {args.checked_library}: "
-              + (f"{len(kept.sources)} file(s) taken, not parsed or checked" if kept else f"not taken, {why}"))
-    return kept
+    return checked.load(args.checked_library, files, args.native, _namespaces(args))
+
+
+def _say_kept(args, kept, why):
+    """--verbose: whether the checked library was taken."""
+    if not args.verbose or not args.checked_library:
+        return
+    if kept is None:
+        said = f"not taken, {why}"
+    elif getattr(kept, "used", False):
+        said = f"{len(kept.sources)} file(s) taken, not parsed or checked"
+    else:
+        said = f"{len(kept.sources)} file(s) read from it and checked again: the program declares a name they use"
+    print(f"pacst: the checked library {args.checked_library}: {said}")
 
 
 def _library(args):
