@@ -143,6 +143,17 @@ class ExampleTest(unittest.TestCase):
         self.assertRegex(self.result.stdout, r"FB_PickAndPlace\s+\d+/\d+\s+\d+\.\d%")
         check_coverage(self, self.out, {"MAIN", "FB_PickAndPlace", "FB_ModeControl", "FB_InputPoll"})
 
+    @unittest.skipIf(MATIEC, "the MATIEC preset's build keeps no checked library (no pactest_prepare)")
+    def test_the_translation_takes_the_library_the_build_checked(self):
+        # the run's pacst neither parses nor checks st/ again: it takes the state the build kept (prepare.py)
+        from pactest import build
+        from pactest.wiring import Wiring
+        host = build.HostBuild(Wiring(os.path.join(self.folder, "wiring.json")), project.PacBuild(PAC_BUILD),
+                               os.path.join(self.out, "checked-library"), parse_cache=PARSE_CACHE)
+        said = host._pacst("build", *host.user_inputs(), "--out", host.st_out, "--gvl", project.gvl_pac(),
+                           "--checked-library", host.checked_library, "-v")
+        self.assertIn(f"{len(project.library_sources())} file(s) taken, not parsed or checked", said)
+
 
 class SortingStationTest(unittest.TestCase):
     """examples/sorting_station, the object-oriented example (METHODs, PROPERTYs, two INTERFACEs in .TcIO files,
