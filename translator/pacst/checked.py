@@ -1,6 +1,6 @@
 """User mode: a library's checked state kept in a file (`pacst library`), so that `pacst build --user
---checked-library FILE` neither parses nor checks the library's files again (docs/translator.md, "A library checked
-once"). The file holds the parsed files and the Compiler that declared them, and is taken only where it stands for
+--checked-library FILE` neither parses nor checks the library's files again (docs/translator.md, "A library
+checked once"). The file holds the parsed files and the Compiler that declared them, and is taken only where it stands for
 what this run would make itself: the same translator and packages, the same text of every file it holds (a
 SHA-256 each), every one of them given to this run, and nothing of the run's that the check could have seen (a
 namespace or a native FUNCTION it did not have). Anything else and the run parses and checks them as it would
