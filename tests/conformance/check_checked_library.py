@@ -2,10 +2,10 @@
 --user --checked-library FILE`, as pac-test's runs take the build's for the PA-CONTROL library. With the file standing
 for the library, the run parses none of the library's files and gets what a run without the file gets: the same
 refusals, the same C of every file with its #line mapping, POUS.h and symbols.json with the same entries (the kept
-library's declarations first). A stale file (a library file changed since) and a damaged one are not taken: the run
-parses and checks the library as without the file; with a program that declares a name a library file uses (that file
-then is no longer the library's alone) the run checks the files read from it again. A second library is declared on
-top of the kept one."""
+library's declarations first). A stale file (a library file changed since), a damaged one and one whose library
+files name a namespace their check did not have are not taken: the run parses and checks the library as without
+the file. With a program that declares a name a library file uses (that file then is no longer the library's
+alone) the run checks the files read from it again. A second library is declared on top of the kept one."""
 import argparse
 import json
 import os
@@ -70,7 +70,7 @@ class Checker:
         return code, out.getvalue(), err.getvalue(), given
 
     def library_files(self):
-        return [os.path.join(self.lib, n) for n in sorted(LIBRARY)]
+        return [os.path.join(self.lib, n) for n in sorted(os.listdir(self.lib))]
 
     def build(self, program, out, checked):
         files = self.library_files() + [os.path.join(self.other, n) for n in sorted(OTHER)] + \
@@ -103,7 +103,7 @@ class Checker:
         if expected not in said:
             self.problems.append(f"{program} ({what}): expected '{expected}', pacst said '{said}'")
         parsed_lib = [p for p in kept[3] if p.startswith(self.lib + os.sep)]
-        if len(parsed_lib) != (len(LIBRARY) if mode == "parsed" else 0):
+        if len(parsed_lib) != (len(self.library_files()) if mode == "parsed" else 0):
             self.problems.append(f"{program} ({what}): the library's files parsed: {parsed_lib}")
         for label, a, b in (("exit code", scratch[0], kept[0]), ("refusals", scratch[2], kept[2]),
                             ("outputs", scratch[4], kept[4])):
@@ -130,6 +130,11 @@ class Checker:
         with open(self.kept, "wb") as f:  # damaged: cut in the middle
             f.write(kept[:len(kept) // 2])
         self.compare("Prg_Uses.st", "parsed", "the kept file damaged")
+        # a library file naming a namespace its check did not have (Other, given to the run): not taken
+        self.write(self.lib, {"F_Twice.st": "FUNCTION F_Twice : INT\nVAR_INPUT\n  Other : INT;\nEND_VAR\n"
+                                            "F_Twice := Other * 2;\nEND_FUNCTION\n"})
+        self.pacst("library", "--namespace", f"Lib={self.lib}", "--out", self.kept, *self.library_files())
+        self.compare("Prg_Uses.st", "parsed", "a namespace the check did not have")
         return self.problems
 
 

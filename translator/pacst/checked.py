@@ -1,7 +1,7 @@
 """User mode: a library's checked state kept in a file (`pacst library`), so that `pacst build --user
 --checked-library FILE` neither parses nor checks the library's files again (docs/translator.md, "A library
-checked once"). The file holds the parsed files and the Compiler that declared them, and is taken only where it stands for
-what this run would make itself: the same translator and packages, the same text of every file it holds (a
+checked once"). The file holds the parsed files and the Compiler that declared them, and is taken only where it
+stands for what this run would make itself: the same translator and packages, the same text of every file it holds (a
 SHA-256 each), every one of them given to this run, and nothing of the run's that the check could have seen (a
 namespace or a native FUNCTION it did not have). Anything else and the run parses and checks them as it would
 without the file: a stale file costs time, never a wrong result."""
@@ -178,7 +178,7 @@ def _stale(header, files, native, namespaces):
             return f"{path} is given under another namespace"
     # a namespace the check did not have changes nothing of it unless the files name it (Name.x, or a declaration
     # of that name, which the compiler refuses)
-    named = set(namespaces) - set(before) & set(header["names"])
+    named = (set(namespaces) - set(before)) & set(header["names"])
     if named:
         return f"the files name the namespace {min(named)}, which their check did not have"
     return None

@@ -55,7 +55,7 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
         # may be owed to a declaration in a file that could not be read
         try:
             _translate_parsed([r for r in file_results if not isinstance(r, StError)], [], user, native,
-                              namespaces)
+                              namespaces, kept)
         except StErrors as e:
             unread += [err for err in e.errors if not _MAY_DEPEND.search(err.message)]
         raise StErrors(unread)
@@ -315,7 +315,7 @@ def _say_kept(args, kept, why):
         return
     if kept is None:
         said = f"not taken, {why}"
-    elif getattr(kept, "used", False):
+    elif kept.used:
         said = f"{len(kept.sources)} file(s) taken, not parsed or checked"
     else:
         said = f"{len(kept.sources)} file(s) read from it and checked again: the program declares a name they use"

@@ -1,8 +1,8 @@
 """What every program's first run against a build would make again, made by the build (`cmake --build`, the
 target pactest_prepare): the host's object shared by the runs against it (build.py's HostBuild), pacst's user-mode
 parses of the ST every program is translated with, the library, the vocabulary and the vendor libraries' parts, in
-the build's parse cache, which a run reads beneath its own, and the library's checked state (`pacst library`). The same object and parses a run would make, under the
-keys a run looks them up by.
+the build's parse cache, which a run reads beneath its own, and the library's checked state (`pacst library`). The
+same object, parses and state a run would make, under the keys a run looks them up by.
 
     python -m pactest.prepare BUILD --stamp FILE
 """
