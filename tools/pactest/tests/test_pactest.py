@@ -216,7 +216,7 @@ class TcUnitTest(unittest.TestCase):
                     ("'DT'", "expected DT#2026-01-01-12:30:00, got DT#2026-01-01-12:30:01"),
                     ("'TOD'", "expected TOD#12:30:00.500, got TOD#12:30:00.000"),
                     ("'LTIME'", "expected LTIME#1000002000NS, got LTIME#1000000000NS"),
-                    ("'WSTRING'", 'expected "axis 1", got "axis 2"')]
+                    ("'WSTRING'", 'expected "axis Ω", got "axis Σ"')]
         # the array asserts (ST, recording through PacTestRecord) print the line of the user's call too
         arrays = [("'SIZE'", "SIZE, size of arrays not matching: expected SIZE = 3, got SIZE = 2"),
                   ("'INT'", "INT: expected ARRAY[2] = 2, got ARRAY[1] = 5"),

@@ -61,6 +61,12 @@ typedef struct {
     uint8_t len;
     uint8_t body[STR_MAX_LEN];
 } STRING;
+/* User mode: a WSTRING, TwinCAT's and CODESYS's wide string, holds UCS-2 code units, a WORD each, as they store
+ * it: a length word and room for STR_MAX_LEN units (512 bytes, SIZEOF counting two a character as theirs). */
+typedef struct {
+    uint16_t len;
+    uint16_t body[STR_MAX_LEN];
+} WSTRING;
 
 #ifndef TRUE
 #define TRUE 1
@@ -94,6 +100,7 @@ __PACST_WRAPPER(REAL)
 __PACST_WRAPPER(LREAL)
 __PACST_WRAPPER(TIME)
 __PACST_WRAPPER(STRING)
+__PACST_WRAPPER(WSTRING)
 
 static inline STRING __pacst_string(const char *text, int len) {
     STRING s;
@@ -273,6 +280,65 @@ static inline STRING __pacst_str_delete(STRING s, long l, long p) {
     STRING none;
     none.len = 0;
     return __pacst_str_replace(s, none, l, p);
+}
+/* User mode: a WSTRING's code units as LEN, CONCAT, s[i] and = take a STRING's bytes above. A literal is its
+ * units; a unit written past the room is dropped, as a STRING's byte is. */
+static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
+    WSTRING s;
+    int i;
+    s.len = (uint16_t)len;
+    for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint16_t)(i < len ? units[i] : 0);
+    return s;
+}
+static inline WORD __pacst_wstr_word(WSTRING s, long i) {
+    return (WORD)(i < (long)s.len ? s.body[i] : 0);
+}
+static inline WSTRING __pacst_wstr_setword(WSTRING s, long i, WORD w) {
+    int n = 0;
+    s.body[i] = w;
+    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
+    s.len = (uint16_t)n;
+    return s;
+}
+static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
+    int i;
+    if (a.len != b.len) return 0;
+    for (i = 0; i < a.len; i++) {
+        if (a.body[i] != b.body[i]) return 0;
+    }
+    return 1;
+}
+static inline INT __pacst_wstr_len(WSTRING s) { return (INT)s.len; }
+static inline WSTRING __pacst_wstr_limit(WSTRING s, long n) {
+    long i;
+    if (n < (long)s.len) s.len = (uint16_t)(n < 0 ? 0 : n);
+    for (i = s.len; i < STR_MAX_LEN; i++) s.body[i] = 0;
+    return s;
+}
+static inline WSTRING __pacst_wstr_concat(WSTRING a, WSTRING b) {
+    long i, n = a.len;
+    for (i = 0; i < b.len && n < STR_MAX_LEN; i++) a.body[n++] = b.body[i];
+    a.len = (uint16_t)n;
+    return a;
+}
+/* WSTRING_TO_STRING: a unit above 16#FF has no STRING character and is skipped, as Tc2_Utilities'
+ * WSTRING_TO_STRING2 and WCHAR_TO_CHAR skip it; STRING_TO_WSTRING: each byte the unit of its number. */
+static inline STRING __pacst_wstring_to_string(WSTRING w) {
+    STRING s;
+    int i, n = 0;
+    for (i = 0; i < w.len && i < STR_MAX_LEN; i++) {
+        if (w.body[i] <= 0xFFu) s.body[n++] = (uint8_t)w.body[i];
+    }
+    s.len = (uint8_t)n;
+    while (n < STR_MAX_LEN) s.body[n++] = 0;
+    return s;
+}
+static inline WSTRING __pacst_string_to_wstring(STRING s) {
+    WSTRING w;
+    int i;
+    w.len = s.len;
+    for (i = 0; i < STR_MAX_LEN; i++) w.body[i] = (uint16_t)(i < s.len ? s.body[i] : 0);
+    return w;
 }
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
