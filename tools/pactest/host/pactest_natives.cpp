@@ -47,8 +47,11 @@ std::string TimeText(const TIME& t) {
     return Number("T#%gMS", ms);
 }
 
+// LTIME is unsigned, up to LTIME#213503D23H34M33S709MS551US615NS (2^64 - 1 ns): counted in 64 unsigned bits
 std::string LongTimeText(const TIME& t) {
-    return Number("LTIME#%lldNS", static_cast<long long>(t.tv_sec) * 1000000000LL + static_cast<long long>(t.tv_nsec));
+    const unsigned long long ns = static_cast<unsigned long long>(t.tv_sec) * 1000000000ULL +
+                                  static_cast<unsigned long long>(t.tv_nsec);
+    return Number("LTIME#%lluNS", ns);
 }
 
 // DATE and DATE_AND_TIME: seconds since 1970-01-01 (UTC); TIME_OF_DAY: milliseconds since midnight

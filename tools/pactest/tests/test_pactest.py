@@ -206,7 +206,7 @@ class TcUnitTest(unittest.TestCase):
     def test_the_asserts_of_the_64_bit_types_the_dates_wstring_and_arrays(self):
         # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_,
         # AssertArray2dEquals_, AssertArray3dEquals_, TCUNIT_ADSLOGSTR and IS_TEST_FINISHED
-        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(17 asserts")
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(18 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
         found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
                  if f["test"] == "FB_TypesFailureSuite"]
