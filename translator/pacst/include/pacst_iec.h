@@ -285,9 +285,9 @@ static inline STRING __pacst_str_delete(STRING s, long l, long p) {
  * units; a unit written past the room is dropped, as a STRING's byte is. */
 static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
     WSTRING s;
-    int i;
+    memset(&s, 0, sizeof s);
     s.len = (uint16_t)len;
-    for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint16_t)(i < len ? units[i] : 0);
+    if (len > 0) memcpy(s.body, units, (size_t)len * sizeof s.body[0]);
     return s;
 }
 static inline WORD __pacst_wstr_word(WSTRING s, long i) {
@@ -301,24 +301,18 @@ static inline WSTRING __pacst_wstr_setword(WSTRING s, long i, WORD w) {
     return s;
 }
 static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
-    int i;
-    if (a.len != b.len) return 0;
-    for (i = 0; i < a.len; i++) {
-        if (a.body[i] != b.body[i]) return 0;
-    }
-    return 1;
+    return a.len == b.len && memcmp(a.body, b.body, (size_t)a.len * sizeof a.body[0]) == 0;
 }
 static inline INT __pacst_wstr_len(WSTRING s) { return (INT)s.len; }
 static inline WSTRING __pacst_wstr_limit(WSTRING s, long n) {
-    long i;
     if (n < (long)s.len) s.len = (uint16_t)(n < 0 ? 0 : n);
-    for (i = s.len; i < STR_MAX_LEN; i++) s.body[i] = 0;
+    memset(s.body + s.len, 0, (size_t)(STR_MAX_LEN - s.len) * sizeof s.body[0]);
     return s;
 }
 static inline WSTRING __pacst_wstr_concat(WSTRING a, WSTRING b) {
-    long i, n = a.len;
-    for (i = 0; i < b.len && n < STR_MAX_LEN; i++) a.body[n++] = b.body[i];
-    a.len = (uint16_t)n;
+    size_t n = b.len < STR_MAX_LEN - a.len ? b.len : (size_t)(STR_MAX_LEN - a.len);
+    memcpy(a.body + a.len, b.body, n * sizeof a.body[0]);
+    a.len = (uint16_t)(a.len + n);
     return a;
 }
 /* WSTRING_TO_STRING: a unit above 16#FF has no STRING character and is skipped, as Tc2_Utilities'
@@ -326,18 +320,19 @@ static inline WSTRING __pacst_wstr_concat(WSTRING a, WSTRING b) {
 static inline STRING __pacst_wstring_to_string(WSTRING w) {
     STRING s;
     int i, n = 0;
+    memset(&s, 0, sizeof s);
     for (i = 0; i < w.len && i < STR_MAX_LEN; i++) {
         if (w.body[i] <= 0xFFu) s.body[n++] = (uint8_t)w.body[i];
     }
     s.len = (uint8_t)n;
-    while (n < STR_MAX_LEN) s.body[n++] = 0;
     return s;
 }
 static inline WSTRING __pacst_string_to_wstring(STRING s) {
     WSTRING w;
     int i;
+    memset(&w, 0, sizeof w);
     w.len = s.len;
-    for (i = 0; i < STR_MAX_LEN; i++) w.body[i] = (uint16_t)(i < s.len ? s.body[i] : 0);
+    for (i = 0; i < s.len && i < STR_MAX_LEN; i++) w.body[i] = s.body[i];
     return w;
 }
 
