@@ -109,18 +109,22 @@ static inline STRING __pacst_string(const char *text, int len) {
     for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < len ? text[i] : 0);
     return s;
 }
-/* User mode: s[i], the byte at offset i of a STRING's characters, as TwinCAT and CODESYS read it (0 after the
- * last character, their terminating NUL); written, the length is where the first NUL is then. */
-static inline BYTE __pacst_str_byte(STRING s, long i) {
-    return (BYTE)(i < (long)s.len ? s.body[i] : 0);
-}
-static inline STRING __pacst_str_setbyte(STRING s, long i, BYTE b) {
-    int n = 0;
-    s.body[i] = b;
-    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
-    s.len = (uint8_t)n;
-    return s;
-}
+/* User mode: s[i], the unit at offset i of a string's characters (a STRING's byte, a WSTRING's WORD), as TwinCAT
+ * and CODESYS read it (0 after the last character, their terminating NUL); written, the length is where the first
+ * NUL is then. */
+#define __PACST_STRING_UNIT(S, UNIT, LEN, get, set)                \
+    static inline UNIT get(S s, long i) {                           \
+        return (UNIT)(i < (long)s.len ? s.body[i] : 0);             \
+    }                                                               \
+    static inline S set(S s, long i, UNIT u) {                      \
+        int n = 0;                                                  \
+        s.body[i] = u;                                              \
+        while (n < STR_MAX_LEN && s.body[n] != 0) n++;              \
+        s.len = (LEN)n;                                             \
+        return s;                                                   \
+    }
+__PACST_STRING_UNIT(STRING, BYTE, uint8_t, __pacst_str_byte, __pacst_str_setbyte)
+__PACST_STRING_UNIT(WSTRING, WORD, uint16_t, __pacst_wstr_word, __pacst_wstr_setword)
 static inline int __pacst_string_eq(STRING a, STRING b) {
     int i;
     if (a.len != b.len) return 0;
@@ -281,23 +285,13 @@ static inline STRING __pacst_str_delete(STRING s, long l, long p) {
     none.len = 0;
     return __pacst_str_replace(s, none, l, p);
 }
-/* User mode: a WSTRING's code units as LEN, CONCAT, s[i] and = take a STRING's bytes above. A literal is its
- * units; a unit written past the room is dropped, as a STRING's byte is. */
+/* User mode: a WSTRING's code units as LEN, CONCAT and = take a STRING's bytes above (s[i]: __PACST_STRING_UNIT).
+ * A literal is its units; a unit past the room is dropped, as a STRING's byte is. */
 static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
     WSTRING s;
     memset(&s, 0, sizeof s);
     s.len = (uint16_t)len;
     if (len > 0) memcpy(s.body, units, (size_t)len * sizeof s.body[0]);
-    return s;
-}
-static inline WORD __pacst_wstr_word(WSTRING s, long i) {
-    return (WORD)(i < (long)s.len ? s.body[i] : 0);
-}
-static inline WSTRING __pacst_wstr_setword(WSTRING s, long i, WORD w) {
-    int n = 0;
-    s.body[i] = w;
-    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
-    s.len = (uint16_t)n;
     return s;
 }
 static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
