@@ -230,7 +230,7 @@ class PointerType(Type):
         super().__init__(f"{'REFERENCE' if reference else 'POINTER'} TO {target.name}")
         self.target = target
         self.reference = reference
-        # a type sharing its C type with another (LTIME, WSTRING, the dates) gets a pointer type of its own
+        # a type sharing its C type with another (LTIME, the dates) gets a pointer type of its own
         own = target.name if target.kind == "elementary" and target.name != target.cname else target.cname
         self.cname = f"__{'REF' if reference else 'PTR'}_{own}"
 

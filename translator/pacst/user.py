@@ -174,8 +174,7 @@ def _dimension(comp, sub, elem, file):
 
 
 def _array_type(comp, low, high, elem, file):
-    # by the element's name too: an ARRAY OF WSTRING is not one OF STRING, though their C types are one (a WSTRING
-    # is a STRING in C here), declared once
+    # by the element's name too: an ARRAY OF LTIME is not one OF TIME, though their C types are one, declared once
     key = (low, high, elem.cname, elem.name)
     t = comp.inline_arrays.get(key)
     if t is None:
