@@ -122,15 +122,21 @@ def string_type(comp, spec):
 
 
 def string_length(comp, spec):
-    """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
+    """The n of STRING(n) / STRING[n]: a literal integer, or an integer constant as an array bound takes one
+    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity."""
     expr = spec.length.length
     if _cls(expr) == "ParenthesizedExpression":  # STRING(n)
         expr = expr.expr
     elif _cls(expr) == "BracketedExpression":  # STRING[n]
         expr = expr.expression
-    if _cls(expr) != "Integer" or expr.type_name is not None:
-        raise comp.err(spec, "the length of a STRING is an integer literal")
-    return string_capacity(comp, spec, int(str(expr.value).replace("_", "")))
+    if _cls(expr) == "Integer" and expr.type_name is None:
+        return string_capacity(comp, spec, int(str(expr.value).replace("_", "")))
+    n = comp.constant_int(expr)
+    if n is None:
+        raise comp.err(spec, "the length of a STRING is an integer literal or an integer constant declared before "
+                             "(a global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
+    comp.dialect(spec, "a STRING length that is a named constant")
+    return string_capacity(comp, spec, n)
 
 
 def string_capacity(comp, spec, n):
