@@ -1129,11 +1129,13 @@ class StringByteRef(Ref):
         self.whole, self.index = whole, index
 
     def read(self):
-        return f"(({self.type.cname})__pacst_str_byte({self.whole.read()}, {self.index}))"
+        fn = "wstr_word" if self.whole.type is T.WSTRING else "str_byte"
+        return f"(({self.type.cname})__pacst_{fn}({self.whole.read()}, {self.index}))"
 
     def write(self, value):
-        return self.whole.write(_limited(self.var, f"__pacst_str_setbyte({self.whole.read()}, {self.index}, "
-                                                   f"(BYTE)({value}))", self.whole.suffix))
+        fn, unit = ("wstr_setword", "WORD") if self.whole.type is T.WSTRING else ("str_setbyte", "BYTE")
+        return self.whole.write(_limited(self.var, f"__pacst_{fn}({self.whole.read()}, {self.index}, "
+                                                   f"({unit})({value}))", self.whole.suffix))
 
 
 def program_instance(pou):
@@ -1146,4 +1148,4 @@ def _limited(var, value, suffix=""):
     n characters (user mode)."""
     if var.strlen is None or suffix:
         return value
-    return f"__pacst_str_limit({value}, {var.strlen})"
+    return f"__pacst_{'wstr' if var.type is T.WSTRING else 'str'}_limit({value}, {var.strlen})"

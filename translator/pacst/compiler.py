@@ -1765,6 +1765,8 @@ class Compiler:
             return f"(({t.cname}){{NULL, NULL}})"
         if t.kind == "vla":  # user mode: an FB's ARRAY [*] before its first call
             return varlen.default_c(t)
+        if t is T.WSTRING:
+            return "__pacst_wstring(NULL, 0)"
         if t.is_string:
             return '__pacst_string("", 0)'
         if t.is_time:

@@ -5,10 +5,12 @@ exists, so it is computed here from the same rules, and the C file of the POU st
 assertion (`sizes_c`), so a rule here that drifted from the compiler's fails the build, not a test."""
 from . import types as T
 
-# pacst_iec.h's C types: (bytes, alignment). TIME (and LTIME) is two longs; a STRING a length byte and 255 more.
+# pacst_iec.h's C types: (bytes, alignment). TIME (and LTIME) is two longs; a STRING a length byte and 255 more; a
+# WSTRING a length word and 255 more.
 _C_TYPES = {"BOOL": (1, 1), "SINT": (1, 1), "USINT": (1, 1), "BYTE": (1, 1), "INT": (2, 2), "UINT": (2, 2),
             "WORD": (2, 2), "DINT": (4, 4), "UDINT": (4, 4), "DWORD": (4, 4), "REAL": (4, 4), "LINT": (8, 8),
-            "ULINT": (8, 8), "LWORD": (8, 8), "LREAL": (8, 8), "TIME": (16, 8), "STRING": (256, 1)}
+            "ULINT": (8, 8), "LWORD": (8, 8), "LREAL": (8, 8), "TIME": (16, 8), "STRING": (256, 1),
+            "WSTRING": (512, 2)}
 _INT_RANGE = (-(1 << 31), (1 << 31) - 1)  # a C enum's values in an int: then the enum is an int
 
 

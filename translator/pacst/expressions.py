@@ -312,10 +312,11 @@ class ExprCompiler:
             out.append(c)
             i += 1
         value = "".join(out)
-        if wide and any(ord(ch) > 0xFF for ch in value):
-            raise self.err(node, f"the character '{next(ch for ch in value if ord(ch) > 0xFF)}' in a WSTRING literal: "
-                                 "pacst's WSTRING holds the characters U+0000 to U+00FF (Latin-1) only; write the "
-                                 "text without it, or leave the POU out of the program tested")
+        if wide and any(ord(ch) > 0xFFFF or 0xD800 <= ord(ch) <= 0xDFFF for ch in value):
+            bad = next(ch for ch in value if ord(ch) > 0xFFFF or 0xD800 <= ord(ch) <= 0xDFFF)
+            raise self.err(node, f"the character U+{ord(bad):04X} in a WSTRING literal: a WSTRING holds UCS-2, the "
+                                 "characters U+0000 to U+FFFF but the surrogates, as in TwinCAT and CODESYS; write "
+                                 "the text without it")
         if self.comp.user and len(value) > user.STRING_CAPACITY:
             raise self.err(node, f"STRING literal of {len(value)} characters: a STRING holds at most "
                                  f"{user.STRING_CAPACITY}")
@@ -325,8 +326,11 @@ class ExprCompiler:
         if not self.comp.user and len(value) > T.STRING_LITERAL_MAX:
             raise self.err(node, f"STRING literal of {len(value)} characters: at most {T.STRING_LITERAL_MAX}, "
                                  "the default STRING length of CODESYS and TwinCAT")
+        if wide:  # its UCS-2 code units, one a character
+            units = ", ".join(f"0x{ord(ch):04X}" for ch in value) or "0"
+            return TE(T.WSTRING, f"__pacst_wstring((const uint16_t[]){{{units}}}, {len(value)})")
         c_text = "".join(ch if 32 <= ord(ch) < 127 and ch not in '"\\?' else f"\\{ord(ch):03o}" for ch in value)
-        return TE(T.WSTRING if wide else T.STRING, f'__pacst_string("{c_text}", {len(value)})')
+        return TE(T.STRING, f'__pacst_string("{c_text}", {len(value)})')
 
     def _e_Date(self, node, want):
         """User mode: D#2000-01-01, seconds since 1970-01-01 at its midnight, as TwinCAT keeps a DATE."""
@@ -632,7 +636,8 @@ class ExprCompiler:
         if t.is_string:
             if op not in ("=", "<>"):
                 raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
-            return TE(T.BOOL, f"({'' if op == '=' else '!'}__pacst_string_eq({ca}, {cb}))")
+            eq = "__pacst_wstring_eq" if t is T.WSTRING else "__pacst_string_eq"
+            return TE(T.BOOL, f"({'' if op == '=' else '!'}{eq}({ca}, {cb}))")
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
@@ -701,7 +706,8 @@ class ExprCompiler:
         if not named:
             raise self.err(node, "AssertEquals needs Expected := and Actual := with a typed variable")
         # an enumeration by its number (TcUnit compares it as its base type)
-        name = "STRING" if named[0].is_string else "DINT" if named[0].is_enum else named[0].name
+        name = named[0].name if named[0] is T.WSTRING else "STRING" if named[0].is_string else \
+            "DINT" if named[0].is_enum else named[0].name
         if f"ASSERTEQUALS_{name}" not in self.comp.pous:
             have = sorted(n[len("ASSERTEQUALS_"):] for n in self.comp.pous if n.startswith("ASSERTEQUALS_"))
             raise self.err(node, f"AssertEquals on {named[0].name}: pac-test asserts {', '.join(have)}; "
@@ -774,7 +780,12 @@ class ExprCompiler:
         if self.comp.user and up == "WLEN" and up not in self.comp.pous:  # a WSTRING's characters, as LEN counts
             (arg,) = self._positional(node, 1, ["IN"], ["STR"])
             self.comp.dialect(node, "WLEN")
-            return TE(T.INT, f"__pacst_str_len({self.coerce(self.expr(arg, T.WSTRING), T.WSTRING, arg, 'argument')})")
+            return TE(T.INT, f"__pacst_wstr_len({self.coerce(self.expr(arg, T.WSTRING), T.WSTRING, arg, 'argument')})")
+        if self.comp.user and up == "WCONCAT" and up not in self.comp.pous:  # Tc2_Standard's CONCAT of WSTRINGs
+            first, second = self._positional(node, 2, ["IN1", "IN2"], ["STR1", "STR2"])
+            self.comp.dialect(node, "WCONCAT")
+            a, b = (self.coerce(self.expr(x, T.WSTRING), T.WSTRING, x, "argument") for x in (first, second))
+            return TE(T.WSTRING, f"__pacst_wstr_concat({a}, {b})")
         if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
                 and self.comp.pous[up].kind == "function":
             raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
@@ -951,14 +962,20 @@ class ExprCompiler:
             raise self.err(node, f"{name} is outside pacst's user programs: a STRING is converted to the integers, "
                                  "bit strings, REAL, LREAL and BOOL only")
         (arg,) = self._positional(node, 1, ["IN"])
-        st = T.WSTRING if src == "WSTRING" else T.STRING
-        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        code = self._text_code(arg, src)
         self.comp.dialect(node, name)
         if t.is_bool:
             return TE(t, f"__pacst_string_to_bool({code})")
         if t.is_real:
             return TE(t, f"(({t.cname})__pacst_string_to_real({code}))")
         return TE(t, f"(({t.cname})__pacst_string_to_bits({code}))")
+
+    def _text_code(self, arg, src):
+        """The C of a STRING or WSTRING argument read as a STRING's text (a WSTRING's units above 16#FF skipped:
+        no literal of a number, a duration or a date holds one)."""
+        st = T.WSTRING if src == "WSTRING" else T.STRING
+        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        return f"__pacst_wstring_to_string({code})" if st is T.WSTRING else code
 
     def _string_function(self, node, fn):
         """The standard string functions (user mode): positions count from 1, results keep at most the
@@ -1035,11 +1052,12 @@ class ExprCompiler:
             return self._time_to_string(node, src)
         if self.comp.user and {src, dst} & set(T.USER_DATES):
             return self._date_conversion(node, src, dst)
-        if self.comp.user and {src, dst} == {"STRING", "WSTRING"}:  # one character a byte in both here
+        if self.comp.user and {src, dst} == {"STRING", "WSTRING"}:  # a unit above 16#FF skipped to a STRING
             self.comp.dialect(node, f"{src}_TO_{dst}")
             (arg,) = self._positional(node, 1, ["IN"])
             st, dt = (T.STRING, T.WSTRING) if src == "STRING" else (T.WSTRING, T.STRING)
-            return TE(dt, self.coerce(self.expr(arg, st), st, arg, "argument"))
+            code = self.coerce(self.expr(arg, st), st, arg, "argument")
+            return TE(dt, f"__pacst_{src.lower()}_to_{dst.lower()}({code})")
         if self.comp.user and src == "WSTRING" and dst not in ("TIME", "LTIME"):  # WSTRING_TO_LREAL: as a STRING
             return self._string_to_number(node, src, dst)
         if self.comp.user and "WSTRING" in (src, dst):
@@ -1080,8 +1098,7 @@ class ExprCompiler:
         TwinCAT's help writes them (T#1h30m, LTIME#1s2us44ns, D#2002-08-18, TOD#14:01:05.123,
         DT#1998-02-13-14:20:00), spaces before it skipped; text that is no such literal gives 0."""
         (arg,) = self._positional(node, 1, ["IN"])
-        st = T.WSTRING if src == "WSTRING" else T.STRING
-        code = self.coerce(self.expr(arg, st), st, arg, "argument")
+        code = self._text_code(arg, src)
         self.comp.dialect(node, f"{src}_TO_{dst}")
         if dst == "LTIME":
             return TE(T.LTIME, f"__time_from_ns(__pacst_string_to_ns({code}))")

@@ -8,11 +8,11 @@ from .body import program_instance
 from .common import pos
 
 FORMAT = 1
-# sizeof of pacst_iec.h's elementary types (STRING: a length byte and STR_MAX_LEN bytes; TIME: two longs on
-# the LP64 hosts the runtime targets).
+# sizeof of pacst_iec.h's elementary types (STRING: a length byte and STR_MAX_LEN bytes; WSTRING: a length word and
+# STR_MAX_LEN words; TIME: two longs on the LP64 hosts the runtime targets).
 _C_SIZES = {"BOOL": 1, "SINT": 1, "INT": 2, "DINT": 4, "USINT": 1, "UINT": 2, "UDINT": 4, "BYTE": 1,
             "WORD": 2, "DWORD": 4, "REAL": 4, "LREAL": 8, "TIME": 16, "STRING": 256,
-            "LINT": 8, "ULINT": 8, "LWORD": 8}
+            "LINT": 8, "ULINT": 8, "LWORD": 8, "WSTRING": 512}
 _DIRECTIONS = {"input": "input", "output": "output", "inout": "in_out", "var": "var", "temp": "temp"}
 
 

@@ -94,11 +94,10 @@ DINT = ELEMENTARY["DINT"]
 LREAL = ELEMENTARY["LREAL"]
 TIME = ELEMENTARY["TIME"]
 STRING = ELEMENTARY["STRING"]
-# WSTRING of user programs: TwinCAT's and CODESYS's wide string. Its characters are kept one a byte in pacst's
-# STRING (a literal or a conversion with a character beyond U+00FF is refused), so a WSTRING is that C type; a
-# type of its own for ST's rules: no STRING where a WSTRING is expected, WSTRING_TO_STRING and back written.
+# WSTRING of user programs: TwinCAT's and CODESYS's wide string, UCS-2 code units a WORD each as they store it
+# (pacst_iec.h's WSTRING); a string for ST's rules, but no STRING where a WSTRING is expected: WSTRING_TO_STRING
+# and back are written.
 WSTRING = Elementary("WSTRING", "string", 0)
-WSTRING.cname = "STRING"
 # A STRING literal may not be longer than CODESYS's and TwinCAT's default STRING (80 characters).
 STRING_LITERAL_MAX = 80
 
@@ -231,7 +230,7 @@ class PointerType(Type):
         super().__init__(f"{'REFERENCE' if reference else 'POINTER'} TO {target.name}")
         self.target = target
         self.reference = reference
-        # a type sharing its C type with another (LTIME, WSTRING, the dates) gets a pointer type of its own
+        # a type sharing its C type with another (LTIME, the dates) gets a pointer type of its own
         own = target.name if target.kind == "elementary" and target.name != target.cname else target.cname
         self.cname = f"__{'REF' if reference else 'PTR'}_{own}"
 

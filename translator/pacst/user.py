@@ -122,22 +122,29 @@ def string_type(comp, spec):
 
 
 def string_length(comp, spec):
-    """The n of STRING(n) / STRING[n]: a literal integer up to pacst's capacity."""
+    """The n of STRING(n) / STRING[n]: a literal integer, or an integer constant as an array bound takes one
+    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity."""
     expr = spec.length.length
     if _cls(expr) == "ParenthesizedExpression":  # STRING(n)
         expr = expr.expr
     elif _cls(expr) == "BracketedExpression":  # STRING[n]
         expr = expr.expression
-    if _cls(expr) != "Integer" or expr.type_name is not None:
-        raise comp.err(spec, "the length of a STRING is an integer literal")
-    return string_capacity(comp, spec, int(str(expr.value).replace("_", "")))
+    kind = "WSTRING" if str(spec.type_name).upper() == "WSTRING" else "STRING"
+    if _cls(expr) == "Integer" and expr.type_name is None:
+        return string_capacity(comp, spec, int(str(expr.value).replace("_", "")), kind)
+    n = comp.constant_int(expr)
+    if n is None:
+        raise comp.err(spec, f"the length of a {kind} is an integer literal or an integer constant declared before "
+                             "(a global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
+    comp.dialect(spec, f"a {kind} length that is a named constant")
+    return string_capacity(comp, spec, n, kind)
 
 
-def string_capacity(comp, spec, n):
-    """`n`, when a STRING(n) holds it; else the refusal at `spec`."""
+def string_capacity(comp, spec, n, kind="STRING"):
+    """`n`, when a STRING(n) (a `kind`(n)) holds it; else the refusal at `spec`."""
     if not 1 <= n <= STRING_CAPACITY:
-        raise comp.err(spec, f"STRING({n}): pacst's STRING holds 1 to {STRING_CAPACITY} characters, as many as "
-                             f"TwinCAT's string functions take (T_MaxString); declare STRING({STRING_CAPACITY}) or "
+        raise comp.err(spec, f"{kind}({n}): pacst's {kind} holds 1 to {STRING_CAPACITY} characters, as many as "
+                             f"TwinCAT's string functions take (T_MaxString); declare {kind}({STRING_CAPACITY}) or "
                              "shorter where the program's texts fit, or leave the POU out of the program tested")
     if n > MATIEC_STRING_CAPACITY:
         comp.dialect(spec, f"STRING({n}) (MATIEC's STRING holds {MATIEC_STRING_CAPACITY} characters)")
@@ -174,8 +181,7 @@ def _dimension(comp, sub, elem, file):
 
 
 def _array_type(comp, low, high, elem, file):
-    # by the element's name too: an ARRAY OF WSTRING is not one OF STRING, though their C types are one (a WSTRING
-    # is a STRING in C here), declared once
+    # by the element's name too: an ARRAY OF LTIME is not one OF TIME, though their C types are one, declared once
     key = (low, high, elem.cname, elem.name)
     t = comp.inline_arrays.get(key)
     if t is None:

@@ -16,6 +16,25 @@ std::string Text(const STRING& s) {
     return std::string(reinterpret_cast<const char*>(s.body), s.len < STR_MAX_LEN ? s.len : STR_MAX_LEN);
 }
 
+// a WSTRING's UCS-2 code units as UTF-8, as the failure message is printed
+std::string WideText(const WSTRING& s) {
+    std::string text;
+    for (int i = 0; i < s.len && i < STR_MAX_LEN; ++i) {
+        const unsigned unit = s.body[i];
+        if (unit < 0x80U) {
+            text += static_cast<char>(unit);
+        } else if (unit < 0x800U) {
+            text += static_cast<char>(0xC0U | (unit >> 6U));
+            text += static_cast<char>(0x80U | (unit & 0x3FU));
+        } else {
+            text += static_cast<char>(0xE0U | (unit >> 12U));
+            text += static_cast<char>(0x80U | ((unit >> 6U) & 0x3FU));
+            text += static_cast<char>(0x80U | (unit & 0x3FU));
+        }
+    }
+    return text;
+}
+
 template <class T>
 std::string Number(const char* format, T value) {
     char buffer[64];
@@ -28,8 +47,11 @@ std::string TimeText(const TIME& t) {
     return Number("T#%gMS", ms);
 }
 
+// LTIME is unsigned, up to LTIME#213503D23H34M33S709MS551US615NS (2^64 - 1 ns): counted in 64 unsigned bits
 std::string LongTimeText(const TIME& t) {
-    return Number("LTIME#%lldNS", static_cast<long long>(t.tv_sec) * 1000000000LL + static_cast<long long>(t.tv_nsec));
+    const unsigned long long ns = static_cast<unsigned long long>(t.tv_sec) * 1000000000ULL +
+                                  static_cast<unsigned long long>(t.tv_nsec);
+    return Number("LTIME#%lluNS", ns);
 }
 
 // DATE and DATE_AND_TIME: seconds since 1970-01-01 (UTC); TIME_OF_DAY: milliseconds since midnight
@@ -127,12 +149,12 @@ PACTEST_EQUALS_TEXT(ASSERTEQUALS_TIME_OF_DAY, UDINT, TimeOfDayText)
 PACTEST_EQUALS_TEXT(ASSERTEQUALS_TIME, TIME, TimeText)
 PACTEST_EQUALS_TEXT(ASSERTEQUALS_LTIME, TIME, LongTimeText)
 
-BOOL ASSERTEQUALS_WSTRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, STRING EXPECTED, STRING ACTUAL,
+BOOL ASSERTEQUALS_WSTRING(const char* file__, int line__, BOOL EN, BOOL* __ENO, WSTRING EXPECTED, WSTRING ACTUAL,
                           STRING MESSAGE) {
     (void)EN;
     Ok(__ENO);
-    return Equals(file__, line__, Text(EXPECTED) == Text(ACTUAL), "\"" + Text(EXPECTED) + "\"",
-                  "\"" + Text(ACTUAL) + "\"", MESSAGE);
+    return Equals(file__, line__, __pacst_wstring_eq(EXPECTED, ACTUAL) != 0, "\"" + WideText(EXPECTED) + "\"",
+                  "\"" + WideText(ACTUAL) + "\"", MESSAGE);
 }
 
 BOOL IS_TEST_FINISHED(const char*, int, BOOL, BOOL* __ENO, STRING TESTNAME) {

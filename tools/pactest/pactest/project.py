@@ -85,19 +85,25 @@ _ARRAY_ASSERTS = "AssertArrayEquals.st"
 _ARRAY_ASSERT = re.compile(rb"\bAssertArray\w*Equals_", re.I)
 
 
+# TcUnit's WRITE_PROTECTED_ functions: only for sources that call one.
+_WRITE_PROTECTED = "WRITE_PROTECTED.st"
+_WRITE_PROTECTED_CALL = re.compile(rb"\bWRITE_PROTECTED_\w+", re.I)
 # TcUnit's FB_Test: only for sources that name it and do not declare an FB_Test of their own.
 _RECORD = "FB_Test.st"
 _RECORD_NAME = re.compile(rb"\bFB_Test\b", re.I)
 
 
 def tcunit_sources(sources=None):
-    """TcUnit's part pac-test gives a program that names its suite; the array asserts only when the program's
-    `sources` call one, FB_Test only when they name it and declare none (None: every part)."""
+    """TcUnit's part pac-test gives a program that names its suite; the array asserts and the WRITE_PROTECTED_
+    functions only when the program's `sources` call one, FB_Test only when they name it and declare none (None:
+    every part)."""
     every = sorted(glob.glob(os.path.join(TCUNIT, "*.st")))
     if sources is None:
         return every
     texts = _texts(sources)
     left = set() if any(_ARRAY_ASSERT.search(t) for t in texts) else {_ARRAY_ASSERTS}
+    if not any(_WRITE_PROTECTED_CALL.search(t) for t in texts):
+        left.add(_WRITE_PROTECTED)
     if not any(_RECORD_NAME.search(t) for t in texts) or "FB_TEST" in declared_names(sources):
         left.add(_RECORD)
     return [f for f in every if os.path.basename(f) not in left]

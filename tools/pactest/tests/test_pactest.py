@@ -217,7 +217,7 @@ class TcUnitTest(unittest.TestCase):
     def test_the_asserts_of_the_64_bit_types_the_dates_wstring_and_arrays(self):
         # TcUnit's AssertEquals_LINT/ULINT/LWORD/LTIME/DATE/DATE_AND_TIME/TIME_OF_DAY/WSTRING, AssertArrayEquals_,
         # AssertArray2dEquals_, AssertArray3dEquals_, TCUNIT_ADSLOGSTR and IS_TEST_FINISHED
-        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(17 asserts")
+        self.assertRegex(self.result.stdout, r"ok  FB_TypesSuite  \(18 asserts")
         source = os.path.join(self.folder, "FB_TypesFailureSuite.TcPOU")
         found = [(int(f["line"]), f["msg"]) for f in failures(self.result.stdout)
                  if f["test"] == "FB_TypesFailureSuite"]
@@ -227,7 +227,7 @@ class TcUnitTest(unittest.TestCase):
                     ("'DT'", "expected DT#2026-01-01-12:30:00, got DT#2026-01-01-12:30:01"),
                     ("'TOD'", "expected TOD#12:30:00.500, got TOD#12:30:00.000"),
                     ("'LTIME'", "expected LTIME#1000002000NS, got LTIME#1000000000NS"),
-                    ("'WSTRING'", 'expected "axis 1", got "axis 2"')]
+                    ("'WSTRING'", 'expected "axis Ω", got "axis Σ"')]
         # the array asserts (ST, recording through PacTestRecord) print the line of the user's call too
         arrays = [("'SIZE'", "SIZE, size of arrays not matching: expected SIZE = 3, got SIZE = 2"),
                   ("'INT'", "INT: expected ARRAY[2] = 2, got ARRAY[1] = 5"),

@@ -61,6 +61,12 @@ typedef struct {
     uint8_t len;
     uint8_t body[STR_MAX_LEN];
 } STRING;
+/* User mode: a WSTRING, TwinCAT's and CODESYS's wide string, holds UCS-2 code units, a WORD each, as they store
+ * it: a length word and room for STR_MAX_LEN units (512 bytes, SIZEOF counting two a character as theirs). */
+typedef struct {
+    uint16_t len;
+    uint16_t body[STR_MAX_LEN];
+} WSTRING;
 
 #ifndef TRUE
 #define TRUE 1
@@ -94,6 +100,7 @@ __PACST_WRAPPER(REAL)
 __PACST_WRAPPER(LREAL)
 __PACST_WRAPPER(TIME)
 __PACST_WRAPPER(STRING)
+__PACST_WRAPPER(WSTRING)
 
 static inline STRING __pacst_string(const char *text, int len) {
     STRING s;
@@ -102,18 +109,22 @@ static inline STRING __pacst_string(const char *text, int len) {
     for (i = 0; i < STR_MAX_LEN; i++) s.body[i] = (uint8_t)(i < len ? text[i] : 0);
     return s;
 }
-/* User mode: s[i], the byte at offset i of a STRING's characters, as TwinCAT and CODESYS read it (0 after the
- * last character, their terminating NUL); written, the length is where the first NUL is then. */
-static inline BYTE __pacst_str_byte(STRING s, long i) {
-    return (BYTE)(i < (long)s.len ? s.body[i] : 0);
-}
-static inline STRING __pacst_str_setbyte(STRING s, long i, BYTE b) {
-    int n = 0;
-    s.body[i] = b;
-    while (n < STR_MAX_LEN && s.body[n] != 0) n++;
-    s.len = (uint8_t)n;
-    return s;
-}
+/* User mode: s[i], the unit at offset i of a string's characters (a STRING's byte, a WSTRING's WORD), as TwinCAT
+ * and CODESYS read it (0 after the last character, their terminating NUL); written, the length is where the first
+ * NUL is then. */
+#define __PACST_STRING_UNIT(S, UNIT, LEN, get, set)                \
+    static inline UNIT get(S s, long i) {                           \
+        return (UNIT)(i < (long)s.len ? s.body[i] : 0);             \
+    }                                                               \
+    static inline S set(S s, long i, UNIT u) {                      \
+        int n = 0;                                                  \
+        s.body[i] = u;                                              \
+        while (n < STR_MAX_LEN && s.body[n] != 0) n++;              \
+        s.len = (LEN)n;                                             \
+        return s;                                                   \
+    }
+__PACST_STRING_UNIT(STRING, BYTE, uint8_t, __pacst_str_byte, __pacst_str_setbyte)
+__PACST_STRING_UNIT(WSTRING, WORD, uint16_t, __pacst_wstr_word, __pacst_wstr_setword)
 static inline int __pacst_string_eq(STRING a, STRING b) {
     int i;
     if (a.len != b.len) return 0;
@@ -273,6 +284,50 @@ static inline STRING __pacst_str_delete(STRING s, long l, long p) {
     STRING none;
     none.len = 0;
     return __pacst_str_replace(s, none, l, p);
+}
+/* User mode: a WSTRING's code units as LEN, CONCAT and = take a STRING's bytes above (s[i]: __PACST_STRING_UNIT).
+ * A literal is its units; a unit past the room is dropped, as a STRING's byte is. */
+static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
+    WSTRING s;
+    memset(&s, 0, sizeof s);
+    s.len = (uint16_t)len;
+    if (len > 0) memcpy(s.body, units, (size_t)len * sizeof s.body[0]);
+    return s;
+}
+static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
+    return a.len == b.len && memcmp(a.body, b.body, (size_t)a.len * sizeof a.body[0]) == 0;
+}
+static inline INT __pacst_wstr_len(WSTRING s) { return (INT)s.len; }
+static inline WSTRING __pacst_wstr_limit(WSTRING s, long n) {
+    if (n < (long)s.len) s.len = (uint16_t)(n < 0 ? 0 : n);
+    memset(s.body + s.len, 0, (size_t)(STR_MAX_LEN - s.len) * sizeof s.body[0]);
+    return s;
+}
+static inline WSTRING __pacst_wstr_concat(WSTRING a, WSTRING b) {
+    size_t n = b.len < STR_MAX_LEN - a.len ? b.len : (size_t)(STR_MAX_LEN - a.len);
+    memcpy(a.body + a.len, b.body, n * sizeof a.body[0]);
+    a.len = (uint16_t)(a.len + n);
+    return a;
+}
+/* WSTRING_TO_STRING: a unit above 16#FF has no STRING character and is skipped, as Tc2_Utilities'
+ * WSTRING_TO_STRING2 and WCHAR_TO_CHAR skip it; STRING_TO_WSTRING: each byte the unit of its number. */
+static inline STRING __pacst_wstring_to_string(WSTRING w) {
+    STRING s;
+    int i, n = 0;
+    memset(&s, 0, sizeof s);
+    for (i = 0; i < w.len && i < STR_MAX_LEN; i++) {
+        if (w.body[i] <= 0xFFu) s.body[n++] = (uint8_t)w.body[i];
+    }
+    s.len = (uint8_t)n;
+    return s;
+}
+static inline WSTRING __pacst_string_to_wstring(STRING s) {
+    WSTRING w;
+    int i;
+    memset(&w, 0, sizeof w);
+    w.len = s.len;
+    for (i = 0; i < s.len && i < STR_MAX_LEN; i++) w.body[i] = s.body[i];
+    return w;
 }
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
