@@ -1,8 +1,9 @@
 // A first-in first-out queue in slots that wrap around, for what the simulator keeps per cycle (the exchange
 // log, the images in flight on a bus link): once there are as many slots as the queue has ever held, appending
 // and dropping the oldest allocate nothing. The slots come in chunks of Chunk that never move, so growing
-// copies no element (a queue that grows long, as the exchange log, takes larger chunks: fewer allocations). With a limit, appending to a full queue drops the oldest. Read like a std::deque: size(),
-// [0] the oldest, back() the newest, iterators oldest first.
+// copies no element (a queue that grows long, as the exchange log, takes larger chunks: fewer allocations).
+// With a limit, appending to a full queue drops the oldest. Read like a std::deque: size(), [0] the oldest,
+// back() the newest, iterators oldest first.
 #pragma once
 
 #include <algorithm>
