@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace pac::sim {
 
@@ -19,18 +20,19 @@ std::optional<double> Real(const ParameterTable& parameters, std::uint16_t numbe
 AxisGroup::AxisGroup(int capacity, const std::vector<ParameterSpec>& axisParameters, const ServoAxisConfig& machine) {
     if (capacity < 0) throw std::invalid_argument("AxisGroup: capacity must be >= 0");
     machine.Validate();
-    axes_.reserve(static_cast<std::size_t>(capacity));
-    for (int i = 0; i < capacity; ++i) {
-        ParameterTable parameters(ParameterType::kReal32, axisParameters);
-        ServoAxisConfig config = ConfigFrom(machine, parameters);
-        try {
-            config.Validate();
-        } catch (const std::invalid_argument&) {
-            config = machine;  // default parameters that do not fit together: the machine's own values
-        }
-        axes_.push_back(Axis{ServoAxis(config), std::move(parameters), machine, config.FullDynamics()});
-        ++capacity_;
+    if (capacity == 0) return;
+    // Every axis starts alike: the first is built (its table checked, its configuration worked out) and the
+    // others are copies of it.
+    ParameterTable parameters(ParameterType::kReal32, axisParameters);
+    ServoAxisConfig config = ConfigFrom(machine, parameters);
+    try {
+        config.Validate();
+    } catch (const std::invalid_argument&) {
+        config = machine;  // default parameters that do not fit together: the machine's own values
     }
+    axes_.assign(static_cast<std::size_t>(capacity),
+                 Axis{ServoAxis(config), std::move(parameters), machine, config.FullDynamics()});
+    capacity_ = capacity;
 }
 
 ServoAxisConfig AxisGroup::ConfigFrom(const ServoAxisConfig& machine, const ParameterTable& parameters) {

@@ -2,23 +2,27 @@
 #include "pac/sim/parameter_table.hpp"
 
 #include <stdexcept>
-#include <utility>
+#include <string>
 
 #include "pac/sim/image8.hpp"
 
 namespace pac::sim {
 
 ParameterSpec IntParameter(std::uint16_t number, std::int32_t min, std::int32_t max, std::int32_t defaultValue,
-                           std::string name) {
+                           const char* name) {
     return ParameterSpec{number, static_cast<std::uint32_t>(min), static_cast<std::uint32_t>(max),
-                         static_cast<std::uint32_t>(defaultValue), std::move(name)};
+                         static_cast<std::uint32_t>(defaultValue), name};
 }
 
-ParameterSpec RealParameter(std::uint16_t number, float min, float max, float defaultValue, std::string name) {
-    return ParameterSpec{number, FloatToBits(min), FloatToBits(max), FloatToBits(defaultValue), std::move(name)};
+ParameterSpec RealParameter(std::uint16_t number, float min, float max, float defaultValue, const char* name) {
+    return ParameterSpec{number, FloatToBits(min), FloatToBits(max), FloatToBits(defaultValue), name};
 }
 
-std::vector<ParameterSpec> DefaultSystemParameters() {
+namespace {
+
+// The default tables are immutable: each is built once per process (a function-local static const) and
+// every configuration gets a copy, one block of plain values.
+std::vector<ParameterSpec> BuildSystemParameters() {
     // 5.2.2.1. Numbers 9..14 and 18 are "currently not used" and left out (error 34).
     return {
         IntParameter(1, 0, 3, 0, "Language"),
@@ -37,7 +41,7 @@ std::vector<ParameterSpec> DefaultSystemParameters() {
     };
 }
 
-std::vector<ParameterSpec> DefaultAxisParameters() {
+std::vector<ParameterSpec> BuildAxisParameters() {
     // 5.2.3: a subset, units AE, AE/s, AE/s^2.
     return {
         RealParameter(1, 1.0F, 50000.0F, 1000.0F, "Traverse speed"),
@@ -55,7 +59,20 @@ std::vector<ParameterSpec> DefaultAxisParameters() {
     };
 }
 
+}  // namespace
+
+std::vector<ParameterSpec> DefaultSystemParameters() {
+    static const std::vector<ParameterSpec> table = BuildSystemParameters();
+    return table;
+}
+
+std::vector<ParameterSpec> DefaultAxisParameters() {
+    static const std::vector<ParameterSpec> table = BuildAxisParameters();
+    return table;
+}
+
 ParameterTable::ParameterTable(ParameterType type, std::vector<ParameterSpec> specs) : type_(type) {
+    entries_.reserve(specs.size());
     for (auto& spec : specs) {
         if (Find(spec.number) != nullptr) {
             throw std::invalid_argument("ParameterTable: parameter " + std::to_string(spec.number) + " twice");
@@ -65,7 +82,7 @@ ParameterTable::ParameterTable(ParameterType type, std::vector<ParameterSpec> sp
                                         " outside its limits");
         }
         const std::uint32_t value = spec.defaultValue;
-        entries_.push_back(Entry{std::move(spec), value});
+        entries_.push_back(Entry{spec, value});
     }
 }
 

@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <vector>
 
 namespace pac::sim {
@@ -18,14 +17,16 @@ struct ParameterSpec {
     std::uint32_t min = 0;  // bit patterns of the table's type
     std::uint32_t max = 0;
     std::uint32_t defaultValue = 0;
-    std::string name;
+    // A string literal (or other text that outlives every table): the tables are copied with every
+    // configuration and every axis, and a plain pointer copies without the heap.
+    const char* name = "";
 };
 
 ParameterSpec IntParameter(std::uint16_t number, std::int32_t min, std::int32_t max, std::int32_t defaultValue,
-                           std::string name);
-ParameterSpec RealParameter(std::uint16_t number, float min, float max, float defaultValue, std::string name);
+                           const char* name);
+ParameterSpec RealParameter(std::uint16_t number, float min, float max, float defaultValue, const char* name);
 
-// The small default tables (docs/sim_cmd.md lists them).
+// The small default tables (docs/sim_cmd.md lists them): copies of tables built once per process.
 std::vector<ParameterSpec> DefaultSystemParameters();
 std::vector<ParameterSpec> DefaultAxisParameters();
 

@@ -1,8 +1,9 @@
 // A first-in first-out queue in slots that wrap around, for what the simulator keeps per cycle (the exchange
 // log, the images in flight on a bus link): once there are as many slots as the queue has ever held, appending
-// and dropping the oldest allocate nothing. The slots come in chunks of kChunk that never move, so growing
-// copies no element. With a limit, appending to a full queue drops the oldest. Read like a std::deque: size(),
-// [0] the oldest, back() the newest, iterators oldest first.
+// and dropping the oldest allocate nothing. The slots come in chunks of Chunk that never move, so growing
+// copies no element (a queue that grows long, as the exchange log, takes larger chunks: fewer allocations).
+// With a limit, appending to a full queue drops the oldest. Read like a std::deque: size(), [0] the oldest,
+// back() the newest, iterators oldest first.
 #pragma once
 
 #include <algorithm>
@@ -14,7 +15,7 @@
 
 namespace pac::sim {
 
-template <class T>
+template <class T, std::size_t Chunk = 16>
 class RingBuffer {
 public:
     class const_iterator {
@@ -99,7 +100,8 @@ public:
     }
 
 private:
-    static constexpr std::size_t kChunk = 16;
+    static constexpr std::size_t kChunk = Chunk;
+    static_assert(kChunk > 0, "a chunk holds at least one slot");
 
     T& At(std::size_t slot) const { return chunks_[slot / kChunk][slot % kChunk]; }
     std::size_t Slot(std::size_t i) const {
