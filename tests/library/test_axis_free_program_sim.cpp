@@ -38,6 +38,7 @@
 #include "real_bits.hpp"
 #include "rig_timing.hpp"
 
+namespace test_axis_free_program_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -850,3 +851,4 @@ std::vector<AxisFreeCase> AxisFreeCases() {
 INSTANTIATE_TEST_SUITE_P(Readings, AxisFreeProgram, ::testing::ValuesIn(AxisFreeCases()), AxisFreeCaseName);
 
 }  // namespace
+}  // namespace test_axis_free_program_sim

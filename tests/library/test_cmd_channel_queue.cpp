@@ -14,6 +14,7 @@
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"
 
+namespace test_cmd_channel_queue {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::CommandBusyBoundOf;
@@ -430,3 +431,4 @@ TEST_F(CmdChannelQueue, AStopWhoseAcknowledgementIsLostHoldsTheInterfaceUntilThe
 }
 
 }  // namespace
+}  // namespace test_cmd_channel_queue

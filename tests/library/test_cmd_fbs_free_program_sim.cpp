@@ -42,6 +42,7 @@
 #include "real_bits.hpp"
 #include "rig_timing.hpp"
 
+namespace test_cmd_fbs_free_program_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -553,3 +554,4 @@ std::vector<pac::test::ChannelCase> CmdFbsFreeCases() {
 INSTANTIATE_TEST_SUITE_P(Readings, CmdFbsFreeProgram, ::testing::ValuesIn(CmdFbsFreeCases()), pac::test::ChannelCaseName);
 
 }  // namespace
+}  // namespace test_cmd_fbs_free_program_sim

@@ -30,6 +30,7 @@
 #include "pac/sim/command_table.hpp"
 #include "rig_timing.hpp"
 
+namespace test_cmd_free_program_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -298,3 +299,4 @@ std::vector<FreeCase> FreeCases() {
 INSTANTIATE_TEST_SUITE_P(Readings, CmdFreeProgram, ::testing::ValuesIn(FreeCases()), pac::test::ChannelCaseName);
 
 }  // namespace
+}  // namespace test_cmd_free_program_sim

@@ -22,6 +22,7 @@
 #include "real_bits.hpp"
 #include "shared_cmd_plc.hpp"
 
+namespace test_cmd_overtaking_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -469,3 +470,4 @@ INSTANTIATE_TEST_SUITE_P(Readings, CmdOvertaking,
                          pac::test::SharingCaseName);
 
 }  // namespace
+}  // namespace test_cmd_overtaking_sim

@@ -20,6 +20,7 @@
 #include "real_bits.hpp"
 #include "shared_cmd_plc.hpp"
 
+namespace test_cmd_recovery_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -362,3 +363,4 @@ INSTANTIATE_TEST_SUITE_P(Readings, CmdRecovery,
                          pac::test::SharingCaseName);
 
 }  // namespace
+}  // namespace test_cmd_recovery_sim

@@ -19,6 +19,7 @@
 #include "real_bits.hpp"
 #include "shared_cmd_plc.hpp"
 
+namespace test_cmd_sharing_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -240,3 +241,4 @@ INSTANTIATE_TEST_SUITE_P(Readings, CmdSharing,
                          pac::test::SharingCaseName);
 
 }  // namespace
+}  // namespace test_cmd_sharing_sim

@@ -35,6 +35,7 @@
 #include "real_bits.hpp"
 #include "rig_timing.hpp"
 
+namespace test_cmd_skipped_calls_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -1299,3 +1300,4 @@ std::vector<SkipCase> SkipCases() {
 INSTANTIATE_TEST_SUITE_P(Readings, CmdSkippedCalls, ::testing::ValuesIn(SkipCases()), pac::test::ChannelCaseName);
 
 }  // namespace
+}  // namespace test_cmd_skipped_calls_sim

@@ -15,6 +15,7 @@
 #include "pac/sim/command_table.hpp"
 #include "shared_cmd_plc.hpp"
 
+namespace test_cmd_torn_bus_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::BusTiming;
@@ -105,3 +106,4 @@ TEST(TornBusOneStep, OneStepWriteCanSendATornCommand) {
 }
 
 }  // namespace
+}  // namespace test_cmd_torn_bus_sim

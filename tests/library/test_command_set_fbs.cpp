@@ -18,6 +18,7 @@
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
 
+namespace test_command_set_fbs {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -917,3 +918,4 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, CommandSetFbs, ::testing::ValuesIn(pac::tes
                          pac::test::BusTimingName);
 
 }  // namespace
+}  // namespace test_command_set_fbs

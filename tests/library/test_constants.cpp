@@ -11,6 +11,7 @@
 #include "gvl_constants.hpp"
 #include "pac/st_program.hpp"
 
+namespace test_constants {  // apart from the names of the other sources in its unity batch
 namespace {
 
 std::string ErrorText(std::uint32_t number, E_PAC_ERRORSOURCE source = E_PAC_ERRORSOURCE__PAC_ERRSRC_NONE) {
@@ -192,3 +193,4 @@ TEST(ErrorSource, NoneWithoutErrorLibraryFrom16x8000OtherwiseWhatTheFbReports) {
 }
 
 }  // namespace
+}  // namespace test_constants

@@ -10,6 +10,7 @@
 #include "gvl_constants.hpp"
 #include "pac/st_program.hpp"
 
+namespace test_diagnosis_texts {  // apart from the names of the other sources in its unity batch
 namespace {
 
 std::string Text(const STRING& s) { return std::string(reinterpret_cast<const char*>(s.body), s.len); }
@@ -76,3 +77,4 @@ TEST(DiagnosisTexts, Command1910CodesHaveTheManualsWords) {
 }
 
 }  // namespace
+}  // namespace test_diagnosis_texts

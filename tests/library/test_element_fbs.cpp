@@ -21,6 +21,7 @@
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
 
+namespace test_element_fbs {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -683,3 +684,4 @@ TEST(ElementFbs, SeveralFbsShareOneInterfaceInTheSameScan) {
 }
 
 }  // namespace
+}  // namespace test_element_fbs

@@ -11,6 +11,7 @@
 #include "pac/sim/automatic_module.hpp"
 #include "pac/st_program.hpp"
 
+namespace test_fb_pac_automatic_module_handover {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::sim::Image12;
@@ -88,8 +89,6 @@ TEST_F(HandOver, NothingToClearWhenItNeverWrote) {
     EXPECT_EQ(Scan(kOnline), axisImage);
 }
 
-}  // namespace
-
 // Left out of the scans in which AUTOMATIC ends (docs/fb/FB_PAC_AutomaticModule.md, "The calling contract"): the
 // module keeps the flags until the FB's next call, whatever statuses passed meanwhile; that call clears it if its
 // status is outside AUTOMATIC (and not 0), writes the flags again if AUTOMATIC is back, and leaves an image an
@@ -116,3 +115,6 @@ TEST_F(HandOver, LeftOutWhenAutomaticEndsItClearsTheModuleInItsNextCall) {
         EXPECT_EQ(Scan(next), Image12{});
     }
 }
+
+}  // namespace
+}  // namespace test_fb_pac_automatic_module_handover

@@ -15,6 +15,7 @@
 #include "pac/st_program.hpp"
 #include "real_bits.hpp"
 
+namespace test_fb_pac_automatic_module_kept {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::sim::AutomaticLayout;
@@ -88,3 +89,4 @@ TEST_F(KeptFields, AnRTheNewFormatCannotCarryGoesOutAsZero) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_automatic_module_kept

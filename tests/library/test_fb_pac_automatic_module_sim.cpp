@@ -31,6 +31,7 @@
 #include "pac/st_program.hpp"
 #include "run_to_final.hpp"
 
+namespace test_fb_pac_automatic_module_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using std::chrono::milliseconds;
@@ -541,3 +542,4 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, AutomaticSim, ::testing::ValuesIn(pac::test
                          pac::test::BusTimingName);
 
 }  // namespace
+}  // namespace test_fb_pac_automatic_module_sim

@@ -27,6 +27,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_fb_pac_axis {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::AxisImage;
@@ -1432,3 +1433,4 @@ TEST_F(FbPacAxis, ResetPulseNeverOnTheWireOutsideOnline) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_axis

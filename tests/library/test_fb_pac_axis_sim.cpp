@@ -38,6 +38,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_fb_pac_axis_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -1602,3 +1603,4 @@ INSTANTIATE_TEST_SUITE_P(NoReferenceE525, AxisSimTiming,
                          AxisSimCaseName);
 
 }  // namespace
+}  // namespace test_fb_pac_axis_sim

@@ -13,6 +13,7 @@
 #include "plcopen_checker.hpp"
 #include "plcopen_pins.hpp"
 
+namespace test_fb_pac_cmd {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::CommandBusyBoundOf;
@@ -547,3 +548,4 @@ TEST_F(TwoFbPacCmd, SecondCommandWaitsForTheFirstAcknowledgement) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_cmd

@@ -14,6 +14,7 @@
 #include "pac/st_program.hpp"
 #include "pac/pac_rig.hpp"
 
+namespace test_fb_pac_cmd_interbus {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -84,3 +85,4 @@ INSTANTIATE_TEST_SUITE_P(WriteSteps, FbPacCmdInterbus, ::testing::Values(false, 
                          [](const auto& info) { return info.param ? "TwoStep" : "OneStep"; });
 
 }  // namespace
+}  // namespace test_fb_pac_cmd_interbus

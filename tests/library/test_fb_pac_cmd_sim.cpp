@@ -16,6 +16,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_fb_pac_cmd_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -230,3 +231,4 @@ TEST(CmdOverSim, FrozenLinkTimesOutAndRecoversAfterThaw) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_cmd_sim

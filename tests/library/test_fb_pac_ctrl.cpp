@@ -18,6 +18,7 @@
 #include "plcopen_pins.hpp"
 #include "run_to_final.hpp"
 
+namespace test_fb_pac_ctrl {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::OutputsOf;
@@ -955,3 +956,4 @@ INSTANTIATE_TEST_SUITE_P(BusDelay, FbPacCtrlLoop, ::testing::Values(0, 1, 2, 3),
                          });
 
 }  // namespace
+}  // namespace test_fb_pac_ctrl

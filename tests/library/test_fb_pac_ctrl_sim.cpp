@@ -29,6 +29,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_fb_pac_ctrl_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -1195,3 +1196,4 @@ INSTANTIATE_TEST_SUITE_P(StoppedShowsActive, CtrlSim,
                          CtrlSimCaseName);
 
 }  // namespace
+}  // namespace test_fb_pac_ctrl_sim

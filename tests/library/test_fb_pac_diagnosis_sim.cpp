@@ -17,6 +17,7 @@
 #include "pac/st_program.hpp"
 #include "scan_window.hpp"
 
+namespace test_fb_pac_diagnosis_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using pac::test::BusTiming;
@@ -391,3 +392,4 @@ INSTANTIATE_TEST_SUITE_P(BusTimings, DiagnosisSharing,
                          });
 
 }  // namespace
+}  // namespace test_fb_pac_diagnosis_sim

@@ -23,6 +23,7 @@
 #include "plcopen_pins.hpp"
 #include "real_bits.hpp"
 
+namespace test_fb_pac_rs232_cmd {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
@@ -664,3 +665,4 @@ TEST_F(Rs232Cmd, AReplyAfterANoiseBurstIsTakenWhileTheLineFallsQuiet) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_rs232_cmd

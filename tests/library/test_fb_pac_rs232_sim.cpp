@@ -24,6 +24,7 @@
 #include "rs232_case.hpp"
 #include "run_to_final.hpp"
 
+namespace test_fb_pac_rs232_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -637,3 +638,4 @@ TEST_F(Rs232Faults, RandomDropsAndCorruptionsOnBothWires) {
 }
 
 }  // namespace
+}  // namespace test_fb_pac_rs232_sim

@@ -16,6 +16,7 @@
 #include "pac/st_program.hpp"
 #include "real_bits.hpp"
 
+namespace test_ieee {  // apart from the names of the other sources in its unity batch
 namespace {
 
 static_assert(sizeof(REAL) == sizeof(std::uint32_t) && std::numeric_limits<float>::is_iec559,
@@ -265,3 +266,4 @@ TEST(Ieee754, NoLoopsScalingWithTheValue) {
 }
 
 }  // namespace
+}  // namespace test_ieee

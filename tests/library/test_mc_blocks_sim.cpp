@@ -12,6 +12,7 @@
 #include "mc_test_steps.hpp"
 #include "pac/axis_module_bits.hpp"
 
+namespace test_mc_blocks_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace pac::test::mc;
@@ -681,3 +682,4 @@ TEST_P(McSim, WithoutTheAxisParametersNoVelocityFits) {
 }
 
 }  // namespace
+}  // namespace test_mc_blocks_sim

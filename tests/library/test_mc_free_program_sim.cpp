@@ -39,6 +39,7 @@
 #include "pac/sim/axis_module.hpp"
 #include "real_bits.hpp"
 
+namespace test_mc_free_program_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -483,3 +484,4 @@ std::vector<McFreeCase> McFreeCases() {
 INSTANTIATE_TEST_SUITE_P(Timings, McFreeProgram, ::testing::ValuesIn(McFreeCases()), McFreeCaseName);
 
 }  // namespace
+}  // namespace test_mc_free_program_sim

@@ -13,6 +13,7 @@
 
 #include "mc_test_steps.hpp"
 
+namespace test_mc_same_scan_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace pac::test::mc;
@@ -280,3 +281,4 @@ TEST_P(McSameScanSim, ReleasingAStopFreesTheAxisForTheBlocksCalledAfterIt) {
 }
 
 }  // namespace
+}  // namespace test_mc_same_scan_sim

@@ -8,6 +8,7 @@
 
 #include "mc_test_steps.hpp"
 
+namespace test_mc_state_diagram_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace pac::test::mc;
@@ -173,3 +174,4 @@ TEST_P(McStateSim, EightAxesMoveAtOnceAndAnErrorStopsOnlyItsAxis) {
 }
 
 }  // namespace
+}  // namespace test_mc_state_diagram_sim

@@ -24,6 +24,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_parameter_axis_fbs {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -912,3 +913,4 @@ TEST(ParameterAxisFbsOverSim, PowerCycleDuringAMoveIsAnErrorNotCommandAborted) {
 }
 
 }  // namespace
+}  // namespace test_parameter_axis_fbs

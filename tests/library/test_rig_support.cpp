@@ -17,6 +17,7 @@
 #include "run_to_final.hpp"
 #include "scan_window.hpp"
 
+namespace test_rig_support {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -271,3 +272,4 @@ TEST(RunToFinal, CountsScansFromTheEdgeScanAndStopsAtTheBound) {
 }
 
 }  // namespace
+}  // namespace test_rig_support

@@ -29,6 +29,7 @@
 #include "real_bits.hpp"
 #include "rs232_case.hpp"
 
+namespace test_rs232_free_program_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -163,8 +164,9 @@ private:
             const auto& t = ledger[ledgerRead_];
             if (t.error != 0 || (t.code != code::kPutIntReg && t.code != code::kPosAxisAbsolute)) continue;
             if (++executed_[std::make_tuple(t.code, t.parameter, t.data)] > 1) {
-                log_.Add(scans_, rig_.Now(), "the controller carried out " +
-                                                 pac::test::Describe({t.code, t.parameter, t.data}) + " twice");
+                // FreeCommand named: with bus_timing.hpp in the same unity unit, {...} could be a BusTiming too
+                const pac::test::FreeCommand twice{t.code, t.parameter, t.data};
+                log_.Add(scans_, rig_.Now(), "the controller carried out " + pac::test::Describe(twice) + " twice");
             }
         }
     }
@@ -308,3 +310,4 @@ std::vector<Rs232FreeCase> Rs232FreeCases() {
 INSTANTIATE_TEST_SUITE_P(Readings, Rs232FreeProgram, ::testing::ValuesIn(Rs232FreeCases()), Rs232FreeCaseName);
 
 }  // namespace
+}  // namespace test_rs232_free_program_sim

@@ -29,6 +29,7 @@
 #include "real_bits.hpp"
 #include "rs232_case.hpp"
 
+namespace test_rs232_late_reply_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -381,3 +382,4 @@ TEST_P(Rs232SkipPastBound, TheFirstCallAfterTheBoundBeginsNoNewWait) {
 INSTANTIATE_TEST_SUITE_P(Timings, Rs232SkipPastBound, kTimings, LateCaseName);
 
 }  // namespace
+}  // namespace test_rs232_late_reply_sim

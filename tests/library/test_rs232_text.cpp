@@ -14,6 +14,7 @@
 
 #include "pac/st_program.hpp"
 
+namespace test_rs232_text {  // apart from the names of the other sources in its unity batch
 namespace {
 
 T_PAC_RS232TEXT TextOf(const std::string& s) {
@@ -373,3 +374,4 @@ TEST(ComBuffer, AFullRingOrOneWithIndicesOutOfRangeTakesNothing) {
 }
 
 }  // namespace
+}  // namespace test_rs232_text

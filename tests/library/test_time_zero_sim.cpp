@@ -18,6 +18,7 @@
 #include "real_bits.hpp"
 #include "run_to_final.hpp"
 
+namespace test_time_zero_sim {  // apart from the names of the other sources in its unity batch
 namespace {
 
 using namespace std::chrono_literals;
@@ -135,3 +136,4 @@ TEST(TimeZero, CtrlTimeoutZeroIsTenSeconds) {
 }
 
 }  // namespace
+}  // namespace test_time_zero_sim
