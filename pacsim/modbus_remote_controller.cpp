@@ -38,13 +38,8 @@ ModbusRemoteController::~ModbusRemoteController() {
 }
 
 void ModbusRemoteController::ReadFromPac(std::chrono::nanoseconds now, pac::sim::ProcessImage& fromPac) {
-    // Time 0 is one PLC cycle before the first scan (the task advances its clock before each scan).
-    if (!started_) {
-        start_ = std::chrono::steady_clock::now() - now;
-        started_ = true;
-    }
-    std::this_thread::sleep_until(start_ + now);
-    lateness_.Add(std::chrono::steady_clock::now() - (start_ + now));
+    std::this_thread::sleep_until(schedule_.Due(now, std::chrono::steady_clock::now()));
+    lateness_.Add(schedule_.Started(now, std::chrono::steady_clock::now()));
     std::vector<std::uint16_t> values(static_cast<std::size_t>(registers_));
     const auto sent = std::chrono::steady_clock::now();
     if (modbus_read_input_registers(ctx_, 0, registers_, values.data()) != registers_) throw ModbusError("read");

@@ -1,8 +1,9 @@
 // The PLC side of the closed loop (pac-sim-plc, docs/virtual_commissioning.md, "The library over Modbus"): the
 // scenario runner's process image goes through a Modbus TCP client (libmodbus) to pac-sim, as a soft PLC's
-// Modbus master exchanges it, and the scan runs on the wall clock: each scan starts at its own time (scan n at
-// n PLC cycles after the first), reads the input registers (function code 4), and writes the holding registers
-// (function code 16) at its end. The scenario's power cycle goes to pac-sim's fault endpoint (POST /api/fault).
+// Modbus master exchanges it, and the scan runs on the wall clock: each scan starts at its own time
+// (ScanSchedule: scan n at n PLC cycles after the first, unless a stall moved the schedule), reads the input
+// registers (function code 4), and writes the holding registers (function code 16) at its end. The scenario's
+// power cycle goes to pac-sim's fault endpoint (POST /api/fault).
 #pragma once
 
 #include <chrono>
@@ -11,6 +12,7 @@
 #include <modbus/modbus.h>
 
 #include "cycle_stats.hpp"
+#include "scan_schedule.hpp"
 #include "scenario_runner.hpp"
 
 namespace pac::pacsim {
@@ -37,8 +39,7 @@ private:
     int httpPort_;
     int registers_;
     modbus_t* ctx_ = nullptr;
-    std::chrono::steady_clock::time_point start_;
-    bool started_ = false;
+    ScanSchedule schedule_;
     CycleStats lateness_;
     CycleStats roundTrips_;
 };

@@ -16,6 +16,7 @@
 #include "pac/sim/cmd_frame.hpp"
 #include "pac/sim/image8.hpp"
 #include "register_map.hpp"
+#include "scan_schedule.hpp"
 #include "sim_config.hpp"
 #include "simulated_controller.hpp"
 
@@ -259,4 +260,21 @@ TEST(FaultInjector, EachFaultActsAndBadRequestsAreRefused) {
     }
     EXPECT_THROW(pac::pacsim::InjectFault(controller, milliseconds(100), {"axis_error", 3, 0}), std::invalid_argument);
     EXPECT_THROW(pac::pacsim::InjectFault(controller, milliseconds(100), {"axis_error", 1, 70000}), std::invalid_argument);
+}
+
+// pac-sim-plc's scans on the wall clock at a 10 ms PLC cycle: a stall of 1.5 s (a loaded machine) must not be
+// caught up by scans back to back, which would run the PLC's clock faster than pac-sim's (ClosedLoopTest's wait
+// of 60 ms for the boot after a power cycle ended before the boot, and the command got 16#8003).
+TEST(ScanSchedule, AScanMoreThanACycleLateMovesTheScheduleInsteadOfABurst) {
+    using namespace std::chrono_literals;
+    pac::pacsim::ScanSchedule schedule;
+    const auto t0 = pac::pacsim::ScanSchedule::Clock::time_point{} + 100s;
+    EXPECT_EQ(schedule.Due(10ms, t0), t0);  // the first scan at once
+    EXPECT_EQ(schedule.Started(10ms, t0), 0ms);
+    EXPECT_EQ(schedule.Due(20ms, t0 + 1ms), t0 + 10ms);
+    EXPECT_EQ(schedule.Started(20ms, t0 + 1510ms), 1500ms);
+    EXPECT_EQ(schedule.Due(30ms, t0 + 1511ms), t0 + 1520ms);  // a cycle after the late scan, not at once
+    // Late by less than a cycle (jitter): the schedule stays, the next scan catches up.
+    EXPECT_EQ(schedule.Started(30ms, t0 + 1525ms), 5ms);
+    EXPECT_EQ(schedule.Due(40ms, t0 + 1526ms), t0 + 1530ms);
 }
