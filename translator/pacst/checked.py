@@ -17,7 +17,8 @@ import types
 import blark
 import lark
 
-from . import order, system
+from . import order, parsing, system
+from .compiler import Compiler
 from . import types as T
 
 FORMAT = 1
@@ -27,12 +28,10 @@ _PLAIN = (int, float, bool, str, bytes, type(None))
 
 def _translator_version():
     """What the pickled state depends on besides the files: the translator's source and the packages' versions."""
-    h = hashlib.sha256(f"{FORMAT}|{blark.__version__}|{lark.__version__}|{sys.version}|".encode())
     here = os.path.dirname(__file__)
-    for path in sorted(glob.glob(os.path.join(here, "**", "*.py"), recursive=True)):
-        with open(path, "rb") as f:
-            h.update(os.path.relpath(path, here).encode() + b"\0" + f.read())
-    return h.hexdigest()
+    sources = parsing._sources_version(sorted(glob.glob(os.path.join(here, "**", "*.py"), recursive=True)))
+    versions = f"{FORMAT}|{blark.__version__}|{lark.__version__}|{sys.version}|{sources}"
+    return hashlib.sha256(versions.encode()).hexdigest()
 
 
 def _digest(path):
@@ -172,7 +171,7 @@ def _stale(header, files, native, namespaces):
         return "other native files"
     before = header["namespaces"]
     for path in kept:  # each file in the same library, under the same folder
-        owner = [next((up for up, (_, folder) in spaces.items() if _under(path, folder)), None)
+        owner = [next((up for up, (_, folder) in spaces.items() if Compiler._under(path, folder)), None)
                  for spaces in (before, namespaces)]
         if owner[0] != owner[1] or (owner[1] is not None and tuple(before[owner[0]]) != tuple(namespaces[owner[1]])):
             return f"{path} is given under another namespace"
@@ -183,7 +182,3 @@ def _stale(header, files, native, namespaces):
         return f"the files name the namespace {min(named)}, which their check did not have"
     return None
 
-
-def _under(path, folder):
-    """As Compiler._under: whether `path` is below `folder`."""
-    return os.path.abspath(path).startswith(os.path.join(os.path.abspath(folder), ""))
