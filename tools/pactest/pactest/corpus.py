@@ -1,4 +1,4 @@
-"""pac-test-corpus: how much of real TwinCAT 3 projects pac-test's translator takes (docs/user_dialect.md).
+"""pac-test-corpus: how much of real TwinCAT 3 and CODESYS projects pac-test's translator takes (docs/user_dialect.md).
 
 For each project under the folders given (a folder holding a .plcproj, or a folder of TwinCAT files), every
 .TcPOU, .TcDUT, .TcGVL and .TcIO is parsed and the parsed ones translated together by `pacst --user` with what
@@ -7,7 +7,9 @@ sources that name it, TcUnit's FB_TestSuite (for a project that declares TcUnit 
 is accepted when no refusal names it; a refused file is removed and the rest translated again, so that what
 depends on it is counted as such. A project is translated with the libraries its .plcproj references that are
 projects measured too (matched by title or name and company; pac-test-corpus A/Lib A/App gives App the library Lib
-under the namespace its reference names), as `pac-test --library` gives them. Prints each project's counts and the
+under the namespace its reference names), as `pac-test --library` gives them. A PLCopen XML export (CODESYS's) is a
+project of its own, read by pac-test's PLCopen reader: each object it reads is translated so, each it refuses (a body
+in LD, FBD or SFC...) counted with the reader's reason. Prints each project's counts and the
 refusals by reason (the names in a reason replaced by '…'), and with --json writes them."""
 import argparse
 import collections
@@ -41,17 +43,35 @@ def _translator():
     return cli, errors, parsing
 
 
+def is_plcopen(path):
+    """Whether `path` is a PLCopen XML export (TC6 2.00, as CODESYS 3.5 and TwinCAT 3 write it): its root element
+    is a project in PLCopen's namespace."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(4096)
+    except OSError:
+        return False
+    return re.search(rb"<project\b[^>]*xmlns=\"http://www\.plcopen\.org/xml/tc6_0200\"", head) is not None
+
+
 def projects(folders):
     """{project folder: [its TwinCAT files]}: a folder holding a .plcproj is a project with every TwinCAT file
-    below it; TwinCAT files under no .plcproj belong to the folder given."""
+    below it; TwinCAT files under no .plcproj belong to the folder given. A PLCopen XML export (a folder's, or
+    a file given) is a project of its own: {its path: [its path]}."""
     found = collections.OrderedDict()
     for top in folders:
+        if os.path.isfile(top):
+            if is_plcopen(top):
+                found[top] = [top]
+            continue
         roots = sorted({d for d, _, names in os.walk(top) if any(n.lower().endswith(".plcproj") for n in names)})
         for d, _, names in sorted(os.walk(top)):
             for n in sorted(names):
+                path = os.path.join(d, n)
+                if n.lower().endswith(".xml") and is_plcopen(path):
+                    found[path] = [path]
                 if os.path.splitext(n)[1].lower() not in KINDS:
                     continue
-                path = os.path.join(d, n)
                 owner = max((r for r in roots if path.startswith(r + os.sep)), key=len, default=top)
                 found.setdefault(owner, []).append(path)
     return found
@@ -191,9 +211,10 @@ def _lacks_refused(message, gone):
     return m is not None and m.group(2).upper() in gone
 
 
-def measure(files, cache, jobs, libraries=()):
+def measure(files, cache, jobs, libraries=(), refused_names=()):
     """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`, translated with its
-    `libraries` [(namespace, folder, files)] as pac-test translates a program with --library."""
+    `libraries` [(namespace, folder, files)] as pac-test translates a program with --library; `refused_names`: the
+    names of the project's objects refused before (a PLCopen export's objects its reader refused)."""
     cli, errors, parsing = _translator()
     theirs = [f for _, _, library_files in libraries for f in library_files if f not in files]
     extra, native, namespaces = _given(files, theirs)
@@ -209,6 +230,7 @@ def measure(files, cache, jobs, libraries=()):
             sources.append(result)
     gone = {os.path.splitext(os.path.basename(p))[0].upper() for p in theirs if p in verdict}  # libraries' refused
     removed = {os.path.splitext(os.path.basename(p))[0].upper() for p in verdict} | gone  # every file refused
+    removed |= {name.upper() for name in refused_names}
     for _ in range(12):
         if not sources:
             break
@@ -248,6 +270,53 @@ def measure(files, cache, jobs, libraries=()):
     return {f: verdict[f] for f in files}
 
 
+# the kinds of a PLCopen object's refusal by pac-test's PLCopen reader, before any translation
+BODY_NOT_ST = "body not in ST"
+READER = "refused by the PLCopen reader"
+
+
+def measure_plcopen(xml, cache, jobs):
+    """({"XML#object": verdict} as measure() gives them, [the keys of its POUs]) of the PLCopen XML export `xml`,
+    read by pac-test's PLCopen reader: each object it reads (types/pous, and the application's objects under
+    instances/.../resource) translated as pac-test translates them, each it refuses counted with the reader's
+    reason (a body in LD, FBD, SFC, IL or CFC as BODY_NOT_ST). Lines are the XML file's, as CODESYS shows them."""
+    import tempfile
+    _translator()
+    from lxml import etree
+    from pacst import plcopen_read  # noqa: E402 (the checkout's translator, as pac-test runs it)
+    with open(xml, "rb") as f:
+        data = f.read()
+    try:
+        objects, refused = plcopen_read.read_objects(data)
+    except (etree.XMLSyntaxError, plcopen_read.PlcopenReadError) as exc:
+        return {xml: (READER, f"{getattr(exc, 'lineno', None) or 1}: cannot read the PLCopen project: {exc}")}, [xml]
+    verdict, pous, names = {}, [], []
+    for exc in refused:
+        element = exc.element
+        name = element.get("name") if element is not None else None
+        key = f"{xml}#{name or exc.lineno}"
+        text = str(exc)
+        if name and text.startswith(name):  # the name quoted, so that refusals count by reason
+            text = f"'{name}'{text[len(name):]}"
+        verdict[key] = (BODY_NOT_ST if " is implemented in " in text else READER, f"{exc.lineno or 1}: {text}")
+        names.append(name or "")
+        if element is not None and etree.QName(element).localname == "pou":
+            pous.append(key)
+    with tempfile.TemporaryDirectory(prefix="pac-test-corpus-") as out:
+        paths = plcopen_read.write_objects(xml, objects, out)
+        found = measure(paths, cache, jobs, refused_names=names)
+    for path, obj in zip(paths, objects):
+        key = f"{xml}#{obj.name}"
+        result = found[path]
+        if result is not None:  # the XML file's line of the ST line refused
+            line, text = result[1].split(": ", 1)
+            result = (result[0], f"{plcopen_read.xml_position(xml, obj, int(line))[0]}: {text}")
+        verdict[key] = result
+        if obj.kind in ("function", "functionBlock", "program"):
+            pous.append(key)
+    return verdict, pous
+
+
 def _in_translator_venv(argv):
     """Runs this command again with the translator's Python (build/venv, which holds blark) when this one
     lacks it, as pac-test runs pacst; None when this Python will do."""
@@ -269,7 +338,8 @@ def main(argv=None):
     if code is not None:
         return code
     parser = argparse.ArgumentParser(prog="pac-test-corpus", description=__doc__.splitlines()[0])
-    parser.add_argument("folders", nargs="+", help="folders of TwinCAT 3 projects (checked out, never committed)")
+    parser.add_argument("folders", nargs="+", help="folders of TwinCAT 3 projects or PLCopen XML exports, or "
+                        "exports (checked out, never committed)")
     parser.add_argument("--cache", help="pacst's parse cache (a folder; makes a second run fast)")
     parser.add_argument("-j", "--jobs", type=int, default=None, help="parallel parses (default: one per core)")
     parser.add_argument("--json", help="write the counts and every refusal to this file")
@@ -280,9 +350,13 @@ def main(argv=None):
     found = projects(args.folders)
     libraries = dependencies(list(found))
     for root, files in found.items():
-        given = [(namespace, folder, _library_files(folder, found[folder])) for namespace, folder in libraries[root]]
-        verdict = measure(files, args.cache, args.jobs, given)
-        pous = [f for f in files if f.lower().endswith(".tcpou")]
+        if files == [root]:  # a PLCopen XML export
+            verdict, pous = measure_plcopen(root, args.cache, args.jobs)
+            files = list(verdict)
+        else:
+            given = [(namespace, folder, _library_files(folder, found[folder])) for namespace, folder in libraries[root]]
+            verdict = measure(files, args.cache, args.jobs, given)
+            pous = [f for f in files if f.lower().endswith(".tcpou")]
         counts = collections.Counter("accepted" if verdict[f] is None else verdict[f][0] for f in pous)
         totals.update(counts)
         totals["POUs"] += len(pous)
@@ -307,7 +381,8 @@ def main(argv=None):
           f"{totals['vendor library']} needing a vendor library, "
           f"{totals['depends on a refused declaration']} depending on a refused declaration, "
           f"{totals['library not given']} needing a library of another project not measured (or a name the "
-          "library measured lacks)")
+          f"library measured lacks), {totals[BODY_NOT_ST]} with a body not in ST (LD, FBD, SFC...), "
+          f"{totals[READER]} refused by the PLCopen reader")
     print("refusals by reason (the POU's first):")
     for (kind, text), n in reasons.most_common():
         print(f"  {n:4d}  {kind}: {text}")
