@@ -771,6 +771,8 @@ class ExprCompiler:
                     return TE(T.USER_DATES[m.group(1)], _converted(ulint, T.ELEMENTARY["UDINT"], address).code)
             return self._conversion(node, src, m.group(1)) if src != m.group(1) else \
                 TE(te.type, self.coerce(te, te.type, arg)) if te.type.kind not in ("anyint", "anyreal") else te
+        if self.comp.user and up in ("TIME", "LTIME") and not node.parameters:
+            return self._uptime(node, up)
         if up in ("SHL", "SHR", "ROL", "ROR"):
             return self._shift(node, up, want)
         if up in ("ABS", "MIN", "MAX", "LIMIT", "SEL"):
@@ -814,6 +816,21 @@ class ExprCompiler:
         if up in STANDARD_FUNCTIONS:
             raise self.err(node, f"standard function {up} is not supported by pacst")
         raise self.err(node, f"undeclared function '{name}'")
+
+    def _uptime(self, node, up):
+        """User mode: CODESYS's TIME() and LTIME(), the time since the PLC started (the CODESYS help, Operands,
+        Functions: TIME() in milliseconds, a 32-bit TIME that starts again at 0 after its overflow), read from
+        Tc2_System's F_GetSystemTime as pac-test gives it: its clock, 100 ns since 1601, starts at 1 January
+        2026 00:00 UTC at power-on."""
+        if "F_GETSYSTEMTIME" not in self.comp.pous:
+            raise self.err(node, f"{up}() reads the PLC's clock, which pac-test gives with the vendor parts "
+                                 "(Tc2_System's F_GetSystemTime): run the program under pac-test")
+        self.comp.dialect(node, f"{up}()")
+        call = dataclasses.replace(node, name=dataclasses.replace(node.name, name="F_GetSystemTime"))
+        ticks = f"((uint64_t)({self._user_call(call, self.comp.pous['F_GETSYSTEMTIME']).code}) - 134116992000000000u)"
+        if up == "LTIME":
+            return TE(T.LTIME, f"__time_from_ns({ticks} * 100u)")
+        return TE(T.TIME, f"__time_from_ms((int64_t)(uint32_t)({ticks} / 10000u))")
 
     def _first_output_value(self, node, pou):
         """User mode: the value of a FUNCTION without a result type is its first VAR_OUTPUT after the call, as

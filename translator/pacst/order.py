@@ -148,7 +148,10 @@ def _owners(sources):
 def _uses(src, owner):
     """{path of another file: a name `src` mentions that the file declares}."""
     uses = {}
-    for word in sorted(_mentioned(src)):
+    words = _mentioned(src)
+    if words & {"TIME", "LTIME"}:  # CODESYS's TIME() and LTIME() read Tc2_System's F_GetSystemTime (expressions.py)
+        words = words | {"F_GETSYSTEMTIME"}
+    for word in sorted(words):
         dep, name = owner.get(word, (src.path, None))
         if dep != src.path:
             uses.setdefault(dep, name)
