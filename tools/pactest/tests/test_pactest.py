@@ -275,6 +275,49 @@ class CorpusTest(unittest.TestCase):
         self.assertEqual(files["FB_User.TcPOU"][0], "depends on a refused declaration")
         self.assertEqual(files["FB_Broken.TcPOU"][0], "syntax")
 
+    def test_a_plcopen_export_is_a_project(self):
+        """A PLCopen XML export (CODESYS's) is a project of its own: the POUs of types/pous and the application's
+        under instances/.../resource are read by pac-test's PLCopen reader and translated, a POU in LD counts as a
+        body not in ST, and a refusal is given at the XML file's line."""
+        top = os.path.join(OUT, "corpus-plcopen")
+        os.makedirs(top, exist_ok=True)
+
+        def pou(name, kind, variables, body):
+            declared = "".join(f'<variable name="{n}"><type><{t} /></type></variable>' for n, t in variables)
+            return (f'<pou name="{name}" pouType="{kind}"><interface><localVars>{declared}</localVars></interface>\n'
+                    f'<body>{body}</body></pou>\n')
+
+        def st(text):
+            return f'<ST><xhtml xmlns="http://www.w3.org/1999/xhtml">{text}</xhtml></ST>'
+        loop = "i := 0;\nFOR i := 1 TO 5 BY 0 DO\n  i := i;\nEND_FOR;"
+        xml = ('<?xml version="1.0" encoding="utf-8"?>\n<project xmlns="http://www.plcopen.org/xml/tc6_0200">\n'
+               '<types><dataTypes /><pous>\n'
+               + pou("FB_Good", "functionBlock", [("n", "INT")], st("n := n + 1;"))
+               + pou("FB_Loop", "functionBlock", [("i", "INT")], st(loop))
+               + pou("FB_Rung", "functionBlock", [("x", "BOOL")], '<LD><leftPowerRail localId="1" /></LD>')
+               + '</pous></types>\n<instances><configurations><configuration name="Device"><resource name="App">'
+               '<addData><data name="http://www.3s-software.com/plcopenxml/pou" handleUnknown="implementation">\n'
+               + pou("PLC_PRG", "program", [("b", "INT")], st("b := b + 2;"))
+               + '</data></addData></resource></configuration></configurations></instances>\n</project>\n')
+        path = os.path.join(top, "Export.xml")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(xml)
+        report = os.path.join(top, "report.json")
+        run = subprocess.run([sys.executable, "-m", "pactest.corpus", top, "--json", report, "--cache", PARSE_CACHE],
+                             capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=TOOL))
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn(f"{path}: 4 POUs, 2 accepted", run.stdout)
+        self.assertIn("1 with a body not in ST (LD, FBD, SFC...)", run.stdout)
+        with open(report, encoding="utf-8") as f:
+            files = json.load(f)["projects"][0]["files"]
+        self.assertIsNone(files[path + "#FB_Good"])
+        self.assertIsNone(files[path + "#PLC_PRG"], "the application's PROGRAM under instances/.../resource")
+        self.assertEqual(files[path + "#FB_Rung"][0], "body not in ST")
+        self.assertIn("'FB_Rung' is implemented in LD", files[path + "#FB_Rung"][1])
+        self.assertEqual(files[path + "#FB_Loop"][0], "refused construct")
+        line = next(n for n, text in enumerate(xml.splitlines(), 1) if text.startswith("FOR i"))
+        self.assertEqual(files[path + "#FB_Loop"][1].split(": ", 1)[0], str(line), "the XML file's line")
+
     def test_a_project_gets_the_libraries_it_references(self):
         """App's .plcproj references the library project Lib (by title and company) under the namespace Common:
         App is translated with Lib's files (but the F_GetVersion TwinCAT generates), as pac-test --library gives
