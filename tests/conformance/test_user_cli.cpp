@@ -454,6 +454,45 @@ TEST_F(TranslatorUserCli, PlcopenApplicationObjectsAreRead) {
     EXPECT_NE(ReadFile(sources + "/PLC_PRG.st").find("Percent : INT(0..100);"), std::string::npos);
 }
 
+TEST_F(TranslatorUserCli, PlcopenVariableLengthArrayIsRead) {
+    // CODESYS exports a VAR_IN_OUT's ARRAY[*] OF T as a POINTER TO T among the inputs, the array's type and its list
+    // kept in attributes: it is read back as the VAR_IN_OUT it was, in the list's order. One CODESYS wrote from a
+    // VAR_INPUT is refused at the variable's line, saying where pacst takes it.
+    auto varlen = [](const char* name, const char* scope) {
+        return std::string("<variable name=\"") + name + "\"><type><pointer><baseType><LREAL/></baseType></pointer></type>"
+               "<addData><data name=\"http://www.3s-software.com/plcopenxml/attributes\" handleUnknown=\"implementation\">"
+               "<Attributes><Attribute Name=\"variable_length_array_original_scope\" Value=\"" + scope + "\"/>"
+               "<Attribute Name=\"variable_length_array\" Value=\"ARRAY[*] OF LREAL\"/><Attribute Name=\"Dimensions\" "
+               "Value=\"1\"/></Attributes></data></addData></variable>\n";
+    };
+    auto function = [&](const char* name, const char* scope) {
+        return std::string("<pou name=\"") + name + "\" pouType=\"function\"><interface><returnType><LREAL/></returnType>"
+               "<inputVars><variable name=\"Scale\"><type><LREAL/></type></variable>\n" + varlen("Values", scope) +
+               "</inputVars><localVars><variable name=\"i\"><type><DINT/></type></variable></localVars></interface>\n"
+               "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">FOR i := LOWER_BOUND(Values, 1) TO "
+               "UPPER_BOUND(Values, 1) DO\n  " + name + " := " + name + " + Scale * Values[i];\nEND_FOR;</xhtml></ST></body></pou>\n";
+    };
+    const std::string head = "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous>\n";
+    auto xml = Write("Varlen.xml", head + function("F_Sum", "Inout") +
+        "<pou name=\"PRG_Main\" pouType=\"program\"><interface><localVars><variable name=\"Data\"><type><array>"
+        "<dimension lower=\"1\" upper=\"3\"/><baseType><LREAL/></baseType></array></type></variable><variable "
+        "name=\"Total\"><type><LREAL/></type></variable></localVars></interface>\n<body><ST><xhtml "
+        "xmlns=\"http://www.w3.org/1999/xhtml\">Total := F_Sum(2.0, Data);</xhtml></ST></body></pou>\n"
+        "</pous></types></project>\n");
+    auto sources = Out() + "/plcopen";
+    auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(ReadFile(sources + "/F_Sum.st").find("VAR_INPUT\n  Scale : LREAL;\nEND_VAR\nVAR_IN_OUT\n  Values : "
+                                                  "ARRAY[*] OF LREAL;\nEND_VAR\n"), std::string::npos)
+        << ReadFile(sources + "/F_Sum.st");
+    auto input = Write("Input.xml", head + function("F_Sum", "Input") + "</pous></types></project>\n");
+    result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), input});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(input + ":5:1: error: cannot read the PLCopen project: F_Sum: Values: an ARRAY[*] OF "
+                                         "LREAL in the list CODESYS calls 'Input' is not read: pacst takes an ARRAY[*] "
+                                         "in VAR_IN_OUT only; declare it there"), std::string::npos) << result.output;
+}
+
 TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {
     // CODESYS's export "into an application" carries the referenced library's objects: where it holds most of a
     // library given under its namespace, they are left out with one warning, not refused one by one.

@@ -291,10 +291,39 @@ def _declaration(variable):
 
 
 def _var_list(element, keyword):
+    """The ST blocks of a variable list: one, or where CODESYS wrote a VAR_IN_OUT's ARRAY[*] into it, the runs of
+    the list's variables around it and a VAR_IN_OUT block for it, in the list's order."""
     opener = keyword + "".join(f" {a.upper()}" for a in ("constant", "retain", "persistent")
                                if element.get(a) == "true")
-    lines = [opener] + [f"  {_declaration(v)};" for v in element.iterfind(q("variable"))] + ["END_VAR"]
-    return "\n".join(lines) + "\n"
+    runs = []
+    for v in element.iterfind(q("variable")):
+        varlen = _variable_length_array(v)
+        block, text = ("VAR_IN_OUT", f"{v.get('name')} : {varlen}") if varlen else (opener, _declaration(v))
+        if not runs or runs[-1][0] != block:
+            runs.append((block, []))
+        runs[-1][1].append(f"  {text};")
+    return "".join("\n".join([block, *lines, "END_VAR"]) + "\n" for block, lines in runs or [(opener, [])])
+
+
+# CODESYS's export of a VAR_IN_OUT `ARRAY[*] OF T`: a POINTER TO T whose attributes keep the array's type and the
+# list it was declared in ("Inout"), and which the export writes among the inputs
+_VARLEN_SCOPES = {"Inout": "VAR_IN_OUT"}
+
+
+def _variable_length_array(variable):
+    """The `ARRAY[*] OF T` CODESYS exported as a pointer in `variable`'s attributes, or None."""
+    found = {a.get("Name"): a.get("Value") for data in variable.iterfind(f"{q('addData')}/{q('data')}")
+             if data.get("name") == ATTRIBUTES for a in data.iter(q("Attribute"))}
+    varlen = found.get("variable_length_array")
+    if varlen is None:
+        return None
+    scope = found.get("variable_length_array_original_scope")
+    if scope not in _VARLEN_SCOPES:
+        exc = PlcopenReadError(f"{variable.get('name')}: an {varlen} in the list CODESYS calls '{scope}' is not "
+                               "read: pacst takes an ARRAY[*] in VAR_IN_OUT only; declare it there")
+        exc.lineno = variable.sourceline
+        raise exc
+    return varlen
 
 
 def _pou(element):
