@@ -205,16 +205,27 @@ def _namespace_of_nothing(message, removed):
     return m is not None and m.group(1).upper() not in removed
 
 
+_UNDECLARED_TYPE = re.compile(r"undeclared type '(\w+)'")
+
+
+def _undeclared_of_a_library(message, removed):
+    """Whether `message` refuses a type that no refused file declared: in a PLCopen XML export, which holds every
+    object of the application, a type of a library it references."""
+    m = _UNDECLARED_TYPE.search(message)
+    return m is not None and m.group(1).upper() not in removed
+
+
 def _lacks_refused(message, gone):
     """Whether `message` says a library lacks a name whose file in it was refused."""
     m = _LIBRARY_LACKS.search(message)
     return m is not None and m.group(2).upper() in gone
 
 
-def measure(files, cache, jobs, libraries=(), refused_names=()):
+def measure(files, cache, jobs, libraries=(), refused_names=(), export=False):
     """{file: None (accepted) or (kind of refusal, first message)} for one project's `files`, translated with its
     `libraries` [(namespace, folder, files)] as pac-test translates a program with --library; `refused_names`: the
-    names of the project's objects refused before (a PLCopen export's objects its reader refused)."""
+    names of the project's objects refused before (a PLCopen export's objects its reader refused); `export`: the
+    files are a whole PLCopen export's, so a type none of them declares is a library's."""
     cli, errors, parsing = _translator()
     theirs = [f for _, _, library_files in libraries for f in library_files if f not in files]
     extra, native, namespaces = _given(files, theirs)
@@ -253,7 +264,8 @@ def measure(files, cache, jobs, libraries=(), refused_names=()):
         gone.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused if p in theirs)
         removed.update(os.path.splitext(os.path.basename(p))[0].upper() for p in refused)
         for path, errs in refused.items():
-            own = [x for x in errs if (not _DEPENDS.search(x.message) or _namespace_of_nothing(x.message, removed))
+            own = [x for x in errs if (not _DEPENDS.search(x.message) or _namespace_of_nothing(x.message, removed)
+                                       or export and _undeclared_of_a_library(x.message, removed))
                    and not _lacks_refused(x.message, gone)]
             first = (own or errs)[0]
             lacks = _LIBRARY_LACKS.search(first.message)
@@ -262,6 +274,7 @@ def measure(files, cache, jobs, libraries=(), refused_names=()):
                     else "library not given" if _LIBRARY.search(first.message) or lacks and lacks.group(1).upper()
                     in {namespace.upper() for namespace, _, _ in libraries} or _namespace_of_nothing(first.message,
                                                                                                    removed)
+                    or export and _undeclared_of_a_library(first.message, removed)
                     else "refused construct")
             verdict.setdefault(path, (kind, f"{first.line}: {first.message}"))
         sources = [s for s in sources if s.path not in refused]
@@ -304,7 +317,7 @@ def measure_plcopen(xml, cache, jobs):
             pous.append(key)
     with tempfile.TemporaryDirectory(prefix="pac-test-corpus-") as out:
         paths = plcopen_read.write_objects(xml, objects, out)
-        found = measure(paths, cache, jobs, refused_names=names)
+        found = measure(paths, cache, jobs, refused_names=names, export=True)
     for path, obj in zip(paths, objects):
         key = f"{xml}#{obj.name}"
         result = found[path]
