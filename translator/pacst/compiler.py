@@ -1641,7 +1641,10 @@ class Compiler:
             self.dialect(dv, f"a variable named like the function block {name}")
             v.cname = T.c_safe_name(up)
         if constant and value is None and section not in ("inout", "input"):
-            raise self.err(dv, f"constant '{name}' needs a value")
+            if not (self.user and (vtype.is_array or vtype.is_struct)):
+                raise self.err(dv, f"constant '{name}' needs a value")
+            # CODESYS: a VAR CONSTANT array or struct without a value holds its type's initial values
+            self.dialect(dv, "a constant array or struct without a value")
         if value is not None:
             if self.user and (vtype.is_array or vtype.is_struct or vtype.is_fb):
                 self.dialect(value, "an initial value of an array, a struct or an FB instance's inputs")
