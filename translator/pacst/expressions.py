@@ -1194,6 +1194,16 @@ class ExprCompiler:
     def _shift(self, node, fn, want):
         value, count = self._positional(node, 2, ["IN", "N"])
         te = self.expr(value, want)
+        if te.type is T.ANY_INT and self.comp.user and fn in ("SHL", "SHR") and (want is None or not want.is_bit):
+            # SHL(16#D800, 10), SHL(1, n): TwinCAT and CODESYS shift a literal at the register width, 32 bits (64
+            # where a 64-bit value is expected or the literal needs them); where an integer is expected, its bits
+            wide = want is not None and want.bits == 64 or not 0 <= te.value <= 0xFFFFFFFF
+            bits = T.USER_ELEMENTARY["LWORD"] if wide else T.ELEMENTARY["DWORD"]
+            self.comp.dialect(node, f"{fn} of an integer literal")
+            shifted = self._shift_code(node, fn, TE(bits, self.coerce(te, bits, value)), bits, count)
+            if want is not None and want.is_int:
+                return TE(want, f"(({want.cname}){shifted.code})")
+            return shifted
         if te.type is T.ANY_INT:
             if want is None or not want.is_bit:
                 raise self.err(value, f"{fn} of an integer literal needs a typed literal (WORD#16#FF)")
@@ -1221,6 +1231,14 @@ class ExprCompiler:
             # nK := nK XOR SHL(pTail[2], 16): TwinCAT shifts at the register width, the DWORD keeps the bits
             self.comp.dialect(node, f"SHL of a {t.name} where a {want.name} is expected")
             te, t = TE(want, self.coerce(te, want, value)), want
+        elif self.comp.user and fn == "SHL" and want is not None and want.is_int and want.bits > t.bits:
+            # Word := Low + SHL(High, 8) of BYTEs where a UINT is expected: shifted at the register width, as above,
+            # the bits of the integer's width kept
+            wider = T.USER_ELEMENTARY["LWORD"] if want.bits == 64 else \
+                T.ELEMENTARY[{16: "WORD", 32: "DWORD"}[want.bits]]
+            self.comp.dialect(node, f"SHL of a {t.name} where a {want.name} is expected")
+            shifted = self._shift_code(node, fn, TE(wider, f"(({wider.cname})({te.code}))"), wider, count)
+            return TE(want, f"(({want.cname}){shifted.code})")
         if ne.type is T.ANY_INT:
             if not 0 <= ne.value < t.bits:
                 raise self.err(count, f"shift count {ne.value} outside 0..{t.bits - 1} for {t.name}")
