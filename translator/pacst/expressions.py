@@ -1218,7 +1218,10 @@ class ExprCompiler:
                 return TE(t, f"__sar_{t.cname}({te.code}, (long){ncode})")
             bits = T.USER_ELEMENTARY.get("LWORD") if t.bits == 64 else \
                 T.ELEMENTARY[{8: "BYTE", 16: "WORD", 32: "DWORD"}[t.bits]]
-            shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count)
+            wider = want if fn == "SHL" and want is not None and want.is_int and want.bits > t.bits else None
+            shifted = self._shift_code(node, fn, TE(bits, f"(({bits.cname})({te.code}))"), bits, count, wider)
+            if wider is not None:  # Low + SHL(High, 8) of USINTs where a UINT is expected: at the UINT's width
+                return shifted
             return TE(t, f"(({t.cname}){shifted.code})", narrow=shifted.narrow)
         if not t.is_bit:
             raise self.err(value, f"{fn} on {t.name}: only BYTE, WORD and DWORD (portable subset)")
