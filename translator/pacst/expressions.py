@@ -734,6 +734,11 @@ class ExprCompiler:
         up = name.upper()
         if self.comp.user and up not in self.comp.pous:  # TIME_OF_DAY_TO_DWORD, TO_DATE_AND_TIME
             up = up.replace("TIME_OF_DAY", "TOD").replace("DATE_AND_TIME", "DT")
+        pseudo = re.fullmatch(r"(?:(\w+?)_)?TO_(\w+)", up) if self.comp.user and up not in self.comp.pous else None
+        if pseudo and {pseudo.group(1), pseudo.group(2)} & set(T.PSEUDO_TYPES):  # LINT_TO___XWORD, TO_PVOID
+            self.comp.dialect(node, f"a conversion to or from a pseudo type ({up})")
+            src, dst = (T.PSEUDO_TYPES.get(g, g) for g in pseudo.groups())
+            up = f"{src}_TO_{dst}" if src else f"TO_{dst}"  # as on a 64-bit target: __XWORD is an LWORD
         m = re.fullmatch(r"([A-Z]+)_TO_([A-Z]+)", up)
         if m and not (self.comp.user and up in self.comp.pous):  # a user FUNCTION BIN_TO_BYTE is the user's
             return self._conversion(node, m.group(1), m.group(2))
