@@ -1439,8 +1439,10 @@ class ExprCompiler:
                                     f"{v.type.name}")
             if not ref.writable:
                 raise self.err(arg, f"'{ref.var.name}' cannot be written: {ref.why_not}")
-            if v.section == "inout" and ref.subscripted:
+            if v.section == "inout" and ref.subscripted and not self.comp.user:
                 raise self.err(arg, "never pass an array element to a FUNCTION's VAR_IN_OUT (MATIEC)")
+            if v.section == "inout" and ref.subscripted:  # user mode: the element's address, as TwinCAT passes it
+                self.comp.dialect(arg, "an array element passed to a FUNCTION's VAR_IN_OUT")
             args.append(f"&({ref.read()})")
         # A native FUNCTION (user mode) is given the call's position: with #line directives,
         # __FILE__ and __LINE__ are the ST file and line of the call (docs/translator.md).

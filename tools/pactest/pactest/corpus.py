@@ -215,6 +215,16 @@ def _undeclared_of_a_library(message, removed):
     return m is not None and m.group(1).upper() not in removed
 
 
+_UNDECLARED_CALL = re.compile(r"undeclared function '(\w+)'|unknown conversion (\w+)")
+
+
+def _calls_removed(message, removed):
+    """Whether `message` refuses a call of a FUNCTION whose file was refused (and removed): a call that depends on
+    that refusal, as `cannot be called: its declaration was refused` says where the file is kept."""
+    m = _UNDECLARED_CALL.search(message)
+    return m is not None and (m.group(1) or m.group(2)).upper() in removed
+
+
 def _lacks_refused(message, gone):
     """Whether `message` says a library lacks a name whose file in it was refused."""
     m = _LIBRARY_LACKS.search(message)
@@ -266,7 +276,7 @@ def measure(files, cache, jobs, libraries=(), refused_names=(), export=False):
         for path, errs in refused.items():
             own = [x for x in errs if (not _DEPENDS.search(x.message) or _namespace_of_nothing(x.message, removed)
                                        or export and _undeclared_of_a_library(x.message, removed))
-                   and not _lacks_refused(x.message, gone)]
+                   and not _lacks_refused(x.message, gone) and not _calls_removed(x.message, removed)]
             first = (own or errs)[0]
             lacks = _LIBRARY_LACKS.search(first.message)
             kind = ("depends on a refused declaration" if not own
