@@ -361,8 +361,8 @@ def main(argv=None):
     if code is not None:
         return code
     parser = argparse.ArgumentParser(prog="pac-test-corpus", description=__doc__.splitlines()[0])
-    parser.add_argument("folders", nargs="+", help="folders of TwinCAT 3 projects or PLCopen XML exports, or "
-                        "exports (checked out, never committed)")
+    parser.add_argument("folders", nargs="+", help="folders of TwinCAT 3 projects and PLCopen XML exports, or "
+                        "export files (checked out, never committed)")
     parser.add_argument("--cache", help="pacst's parse cache (a folder; makes a second run fast)")
     parser.add_argument("-j", "--jobs", type=int, default=None, help="parallel parses (default: one per core)")
     parser.add_argument("--json", help="write the counts and every refusal to this file")
