@@ -473,13 +473,14 @@ TEST_F(TranslatorUserCli, PlcopenVariableLengthArrayIsRead) {
                "UPPER_BOUND(Values, 1) DO\n  " + name + " := " + name + " + Scale * Values[i];\nEND_FOR;</xhtml></ST></body></pou>\n";
     };
     const std::string head = "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous>\n";
-    auto xml = Write("Varlen.xml", head + function("F_Sum", "Inout") +
+    // the program passes an array of its own to the VAR_IN_OUT, by position after the input before it
+    const std::string program =
         "<pou name=\"PRG_Main\" pouType=\"program\"><interface><localVars><variable name=\"Data\"><type><array>"
         "<dimension lower=\"1\" upper=\"3\"/><baseType><LREAL/></baseType></array></type></variable><variable "
         "name=\"Total\"><type><LREAL/></type></variable></localVars></interface>\n<body><ST><xhtml "
-        "xmlns=\"http://www.w3.org/1999/xhtml\">Total := F_Sum(2.0, Data);</xhtml></ST></body></pou>\n"
-        "</pous></types></project>\n");
+        "xmlns=\"http://www.w3.org/1999/xhtml\">Total := F_Sum(2.0, Data);</xhtml></ST></body></pou>\n";
     auto sources = Out() + "/plcopen";
+    auto xml = Write("Varlen.xml", head + function("F_Sum", "Inout") + program + "</pous></types></project>\n");
     auto result = RunTranslator({"build", "--user", "--sources", sources, "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(ReadFile(sources + "/F_Sum.st").find("VAR_INPUT\n  Scale : LREAL;\nEND_VAR\nVAR_IN_OUT\n  Values : "
