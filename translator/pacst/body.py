@@ -711,7 +711,7 @@ class BodyCompiler:
         if node.step is not None:
             st = self.ex.expr(node.step, r.type)
             if st.type is T.ANY_INT and st.value == 0:
-                raise self.err(node.step, "FOR ... BY 0 never ends")
+                raise self.err(node.step, "FOR ... BY 0 never ends: write a step other than 0")
             if st.type is T.ANY_INT and st.value < 0 and not r.type.is_signed and r.type.bits < 64:
                 step = str(st.value)  # F_Murmur3_Hash's UDINT counted down BY -1: added below in the counter's bits
             else:
@@ -749,12 +749,13 @@ class BodyCompiler:
         raise self.err(node, "a statement that only names a variable does nothing")
 
     def _s_SetStatement(self, node, ind, d):
-        raise self.err(node, "S= and R= are outside the portable subset")
+        raise self.err(node, "S= and R= are outside the portable subset: write an IF")
 
     _s_ResetStatement = _s_SetStatement
 
     def _s_JumpStatement(self, node, ind, d):
-        raise self.err(node, "JMP and labels are outside the portable subset")
+        raise self.err(node, "JMP and labels are outside the portable subset: write IF, CASE or a loop with EXIT "
+                             "and CONTINUE")
 
     _s_LabeledStatement = _s_JumpStatement
 
