@@ -26,6 +26,10 @@ _MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin"
 _MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF", "PACST_MEMORY_AREA"}
 # Functions a user program may call as a statement, its result unused.
 STATEMENT_FUNCTIONS = {"MEMCPY", "MEMMOVE", "MEMSET"}
+# What to write instead of a standard function pacst does not translate (docs/user_dialect.md).
+_INSTEAD = {"MUX": ": write a CASE", **{fn: f": write the operator (A {op} B)" for fn, op in (
+    ("ADD", "+"), ("SUB", "-"), ("MUL", "*"), ("DIV", "/"), ("GT", ">"), ("GE", ">="),
+    ("EQ", "="), ("LE", "<="), ("LT", "<"), ("NE", "<>"))}}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
@@ -812,7 +816,7 @@ class ExprCompiler:
         if up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS:
             raise self.err(node, f"{up} is a function block: declare an instance")
         if up in STANDARD_FUNCTIONS:
-            raise self.err(node, f"standard function {up} is not supported by pacst")
+            raise self.err(node, f"standard function {up} is not supported by pacst{_INSTEAD.get(up, '')}")
         raise self.err(node, f"undeclared function '{name}'")
 
     def _first_output_value(self, node, pou):
