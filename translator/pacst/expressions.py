@@ -496,7 +496,8 @@ class ExprCompiler:
             for side in (node.left, node.right):
                 te = self.expr(side, T.BOOL)
                 if not te.type.is_bool:
-                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}")
+                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}: write "
+                                         f"{'AND' if op == 'AND_THEN' else 'OR'} on bit strings")
                 sides.append(te.code)
             return TE(T.BOOL, f"({sides[0]} {'&&' if op == 'AND_THEN' else '||'} {sides[1]})")
         if op in ("AND_THEN", "OR_ELSE"):
