@@ -179,7 +179,7 @@ class BodyCompiler:
             return Ref(static.csym, not static.type.is_fb, static.type, static)
         ov = self._owner_var(name) if v is None and static is None else None
         if ov is not None:  # a METHOD's or ACTION's access to its FB's variables
-            why = "it is a CONSTANT" if ov.constant else ""
+            why = _constant_why(ov) if ov.constant else ""
             return Ref(f"data__->{ov.cname}", not ov.type.is_fb, ov.type, ov, writable=not why, why_not=why)
         if v is None and up in pou.externals:
             g, constant = pou.externals[up]
@@ -200,7 +200,7 @@ class BodyCompiler:
             raise self.err(token, f"undeclared name '{name}'{self._refused_lists()}")
         writable, why = True, ""
         if v.constant:
-            writable, why = False, "it is a CONSTANT"
+            writable, why = False, _constant_why(v)
         if pou.kind == "fb" and any(v is r for r in inouts_by_reference(pou)):  # the caller's variable itself
             return Ref(f"(*{inout_parameter(v)})", False, v.type, v, writable=writable, why_not=why)
         if pou.kind == "fb":
@@ -1150,3 +1150,11 @@ def _limited(var, value, suffix=""):
     if var.strlen is None or suffix:
         return value
     return f"__pacst_{'wstr' if var.type is T.WSTRING else 'str'}_limit({value}, {var.strlen})"
+
+
+def _constant_why(var):
+    """Why the CONSTANT `var` cannot be written: a VAR_INPUT or VAR_IN_OUT CONSTANT (user mode) with what to write
+    instead, or a VAR CONSTANT."""
+    if var.section in ("input", "inout"):
+        return "it is a CONSTANT input: copy it to a VAR and write that"
+    return "it is a CONSTANT"
