@@ -11,6 +11,7 @@ from .common import TE, Ref, _cls, _name, first_output, first_output_cfunc, firs
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
+_CONVERTIBLE_64 = {"LINT", "ULINT", "LWORD"}  # and their conversions in user programs
 # The standard string functions of user programs and their IEC input names.
 _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"], "RIGHT": ["IN", "L"],
                      "MID": ["IN", "L", "P"], "FIND": ["IN1", "IN2"], "INSERT": ["IN1", "IN2", "P"],
@@ -187,11 +188,14 @@ class ExprCompiler:
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return f"(({target.cname})({te.code}))"
         hint = ""
-        convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        named = _CONVERTIBLE | _CONVERTIBLE_64 if self.comp.user else _CONVERTIBLE
+        convertible = te.type.name in named and target.name in named
         if te.type.is_string and target.is_string and self.comp.user:
             convertible = True
         if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
+        elif target.is_enum and self.comp.user:
+            hint = f" (assign a value of {target.name})"
         else:
             hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
