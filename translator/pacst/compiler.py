@@ -920,11 +920,14 @@ class Compiler:
             raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
         init = el.init
         if self.user and _cls(init) in ("ArrayTypeInitialization", "SubrangeTypeInitialization"):
-            mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array, UINT(0..N) (user mode)
+            mtype = user.var_type(self, init, allow_fb=True)[0]  # an inline array, UINT(0..N) (user mode)
         elif _cls(init) != "TypeInitialization":
             raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
         else:
-            mtype = self._spec_type(init.spec, allow_fb=False)
+            mtype = self._spec_type(init.spec, allow_fb=self.user)
+        if mtype.is_fb or (mtype.is_array and mtype.elem.is_fb):  # user mode: refused here, saying why
+            raise self.err(el, f"a member of {t.name} of the type {mtype.name}: pacst's STRUCT holds data, not a "
+                               "function block instance: declare the instance beside the STRUCT")
         if mtype is t or (mtype.is_array and mtype.elem is t):
             raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
                                "itself, never itself")
