@@ -276,7 +276,7 @@ class BodyCompiler:
             raise self.err(field, "a bit number is a decimal literal (w.3)")
         n = int(text)
         if n >= r.type.bits:
-            raise self.err(field, f"bit {n} of a {r.type.bits}-bit {r.type.name}: 0..{r.type.bits - 1}")
+            raise self.err(field, f"bit {n} of a {r.type.name}, whose bits are 0..{r.type.bits - 1}")
         self.comp.dialect(el, f"bit access (.{n})")
         return BitRef(r, n)
 
@@ -445,7 +445,7 @@ class BodyCompiler:
         if prop is None:
             raise self.err(call, f"INTERFACE {r.type.name} has no PROPERTY '{name}'")
         if prop["get"] is None:
-            raise self.err(call, f"PROPERTY {prop['name']} has no Get: it is write only")
+            raise self.err(call, f"PROPERTY {prop['name']} has no Get: it is write only (declare its Get to read it)")
         line, col = pos(call)
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         code = f"{chained_dispatcher(r.type, prop['get'])}({r.read()}, \"{where}\", TRUE, NULL)"
@@ -606,7 +606,8 @@ class BodyCompiler:
         if prop is not None:  # user mode: Axis.Velocity := v calls its Set
             this, p = prop
             if p["set"] is None:
-                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only")
+                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only (declare its Set to "
+                                       "write it)")
             te = self.ex.expr(node.expression, p["type"])
             value = self.ex.coerce(te, p["type"], node.expression)
             return [f"{ind}{p['set'].cfunc}({this}, TRUE, NULL, {value});"]

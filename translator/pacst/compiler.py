@@ -835,7 +835,8 @@ class Compiler:
                 if number in numbers:
                     twin = values[numbers.index(number)]
                     raise self.err(ev.value if ev.value is not None else ev,
-                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname})")
+                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname}): "
+                                   "give each value its own number")
                 values.append(vname)
                 numbers.append(number)
                 number += 1
@@ -1116,13 +1117,14 @@ class Compiler:
             self.dialect(token, f"IMPLEMENTS {t.name}")
             missing = [m for m in t.methods if m.upper() not in pou.methods]
             if missing:
-                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
+                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}: "
+                                      f"declare it in {pou.name}")
             for up, proto in t.protos.items():
                 if proto.accessor is not None:  # a PROPERTY's Get or Set
                     own = pou.properties.get(proto.name.upper())
                     if own is None or own[proto.accessor] is None:
                         raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no PROPERTY {proto.name} with "
-                                              f"a {proto.accessor.capitalize()}")
+                                              f"a {proto.accessor.capitalize()}: declare it in {pou.name}")
                     if own["type"] is not t.properties[proto.name.upper()]["type"]:
                         raise self.err(token, f"{pou.name}.{proto.name} is a {own['type'].name}, "
                                               f"{t.name}.{proto.name} a {t.properties[proto.name.upper()]['type'].name}")

@@ -138,7 +138,8 @@ class ExprCompiler:
         if te.type.is_fb and target.kind == "interface" and self.comp.user:
             pou = te.type.pou
             if pou is None or target not in pou.interfaces:
-                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
+                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}: add IMPLEMENTS {target.name} "
+                                     "to its heading")
             return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
         if te.type.kind == "interface" and target.kind == "interface" and target in te.type.bases:
             # an INTERFACE's variable given to one of a base's type: the instance's table for the base
@@ -440,7 +441,7 @@ class ExprCompiler:
         if prop is not None:  # user mode: Axis.Velocity calls its Get
             this, p = prop
             if p["get"] is None:
-                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
+                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only (declare its Get to read it)")
             return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
         return self._read(self.body.ref(node), node)
 
