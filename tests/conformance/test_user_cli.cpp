@@ -357,7 +357,7 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
 
 TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
     // A refusal in the ST of a PLCopen object names the XML file and the line CODESYS shows, not the ST file
-    // pacst writes from it; one in its declaration names the object's element.
+    // pacst writes from it (one in a declaration: the next test).
     auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
                                     "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n"
                                     "<interface><localVars><variable name=\"n\"><type><INT/></type></variable>"
@@ -376,6 +376,33 @@ TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
     EXPECT_NE(result.output.find(xml + ":11:6: error: undeclared name 'Nowhere' (in FB_A)"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("FB_A.st"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenRefusalInADeclarationIsAtTheVariablesLine) {
+    // A refused variable of a PLCopen object, of a POU's interface or of a global list, is named at its
+    // <variable> element's line, as CODESYS shows the declaration, not at the object's first line.
+    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
+                                    "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n<interface>\n"
+                                    "<localVars>\n<variable name=\"n\"><type><INT/></type></variable>\n"
+                                    "<variable name=\"t\"><type><derived name=\"NoSuchType\"/></type></variable>\n"
+                                    "</localVars>\n<outputVars>\n"
+                                    "<variable name=\"s\"><type><string length=\"300\"/></type></variable>\n"
+                                    "</outputVars>\n</interface>\n"
+                                    "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;</xhtml></ST>"
+                                    "</body>\n</pou>\n</pous></types>\n<instances><configurations><configuration "
+                                    "name=\"Device\"><resource name=\"Application\">\n<globalVars name=\"GVL\">\n"
+                                    "<variable name=\"Ok\"><type><BOOL/></type></variable>\n"
+                                    "<variable name=\"Bad\"><type><derived name=\"NoSuchList\"/></type></variable>\n"
+                                    "</globalVars>\n</resource></configuration></configurations></instances>\n"
+                                    "</project>\n");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":8:"), std::string::npos) << "the variable t: " << result.output;
+    EXPECT_NE(result.output.find("undeclared type 'NoSuchType' (in FB_A)"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(xml + ":11:"), std::string::npos) << "the output s: " << result.output;
+    EXPECT_NE(result.output.find(xml + ":20:"), std::string::npos) << "the list's Bad: " << result.output;
+    EXPECT_EQ(result.output.find(xml + ":4:"), std::string::npos) << "not the POU's line: " << result.output;
+    EXPECT_EQ(result.output.find(xml + ":18:"), std::string::npos) << "not the list's line: " << result.output;
 }
 
 TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {
