@@ -122,6 +122,13 @@ class Program:
         self.items = []  # (kind, object, file): kind in type, pou
 
 
+# A refusal in the body of an FB with METHODs, a base or interfaces that may owe to what they add (a METHOD or
+# PROPERTY called, a variable inherited, THIS^ or SUPER^), when its declarations were refused and they are not
+# declared: left out beside those refusals (Compiler._body_beside_refusals).
+_MAY_OWE_MEMBERS = re.compile(r"undeclared|declaration was refused|cannot be used|before its declaration|METHOD|"
+                              r"PROPERTY|ACTION|INTERFACE|IMPLEMENT|SUPER|THIS|has no (variable|member|value)", re.I)
+
+
 class Compiler:
     """`user`: the user-program mode (docs/translator.md, "User programs"): PROGRAMs, global variable
     lists, located variables, VAR_EXTERNAL, sized STRINGs, inline arrays and the string functions are
@@ -1084,10 +1091,11 @@ class Compiler:
     def _body_beside_refusals(self, pou, node, base):
         """User mode: the refusals of the body of a POU some of whose declarations were refused, but those that
         name a variable not declared (its refusal above says it): as many refusals in one run as can be told
-        apart. A POU with METHODs, a base or interfaces is left unchecked (its body may need what they add)."""
-        if not self.user or pou.native or base is not None or getattr(node, "implements", None) is not None \
-                or self.members.get(id(node)):
+        apart. Of a POU with METHODs, a base or interfaces, not those either that may owe to what they add, which
+        is not declared then (_MAY_OWE_MEMBERS)."""
+        if not self.user or pou.native:
             return []
+        members = base is not None or getattr(node, "implements", None) is not None or bool(self.members.get(id(node)))
         if pou.kind == "fb":
             pou.fbtype.vars = pou.vars
         declared = {v.name.upper() for v in pou.vars}
@@ -1101,7 +1109,8 @@ class Compiler:
             return []
         except (StError, StErrors) as e:
             found = e.errors if isinstance(e, StErrors) else [e]
-            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}]
+            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}
+                    and not (members and _MAY_OWE_MEMBERS.search(err.message))]
         finally:
             del self.pous[pou.cname]
 
