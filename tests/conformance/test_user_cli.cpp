@@ -402,20 +402,30 @@ TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
 TEST_F(TranslatorUserCli, PlcopenRefusalInADeclarationIsAtTheVariablesLine) {
     // A refused variable of a PLCopen object, of a POU's interface or of a global list, is named at its
     // <variable> element's line, as CODESYS shows the declaration, not at the object's first line.
-    auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
-                                    "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n<interface>\n"
-                                    "<localVars>\n<variable name=\"n\"><type><INT/></type></variable>\n"
-                                    "<variable name=\"t\"><type><derived name=\"NoSuchType\"/></type></variable>\n"
-                                    "</localVars>\n<outputVars>\n"
-                                    "<variable name=\"s\"><type><string length=\"300\"/></type></variable>\n"
-                                    "</outputVars>\n</interface>\n"
-                                    "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;</xhtml></ST>"
-                                    "</body>\n</pou>\n</pous></types>\n<instances><configurations><configuration "
-                                    "name=\"Device\"><resource name=\"Application\">\n<globalVars name=\"GVL\">\n"
-                                    "<variable name=\"Ok\"><type><BOOL/></type></variable>\n"
-                                    "<variable name=\"Bad\"><type><derived name=\"NoSuchList\"/></type></variable>\n"
-                                    "</globalVars>\n</resource></configuration></configurations></instances>\n"
-                                    "</project>\n");
+    auto xml = Write("Project.xml", R"(<?xml version="1.0"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+<types><pous>
+<pou name="FB_A" pouType="functionBlock">
+<interface>
+<localVars>
+<variable name="n"><type><INT/></type></variable>
+<variable name="t"><type><derived name="NoSuchType"/></type></variable>
+</localVars>
+<outputVars>
+<variable name="s"><type><string length="300"/></type></variable>
+</outputVars>
+</interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := n + 1;</xhtml></ST></body>
+</pou>
+</pous></types>
+<instances><configurations><configuration name="Device"><resource name="Application">
+<globalVars name="GVL">
+<variable name="Ok"><type><BOOL/></type></variable>
+<variable name="Bad"><type><derived name="NoSuchList"/></type></variable>
+</globalVars>
+</resource></configuration></configurations></instances>
+</project>
+)");
     auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(xml + ":8:"), std::string::npos) << "the variable t: " << result.output;
