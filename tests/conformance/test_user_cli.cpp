@@ -208,22 +208,48 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
 }
 
 TEST_F(TranslatorUserCli, RefusedDeclarationOfAnObjectOrientedFbHidesNoRefusalOfItsBody) {
-    // An FB with METHODs, a base or an INTERFACE whose declarations were refused: the refusals of its body are
-    // reported in the same run too, but those that may owe to what is not declared then (its METHODs, PROPERTYs,
-    // what it inherits, the variable refused).
+    // An FB with METHODs, a base or an INTERFACE whose declarations were refused: the refusals of its body and of its
+    // METHODs' declarations and bodies are reported in the same run too, but those that may owe to what is not
+    // declared then (its METHODs, PROPERTYs, what it inherits, the variable refused).
     auto itf = Write("I_Run.st", "INTERFACE I_Run\nEND_INTERFACE\nMETHOD Run : BOOL\nEND_METHOD\n");
     auto base = Write("FB_Base.st", "FUNCTION_BLOCK FB_Base\nVAR Count : INT; END_VAR\nEND_FUNCTION_BLOCK\n");
-    auto fb = Write("FB_Oo.st", "FUNCTION_BLOCK FB_Oo EXTENDS FB_Base IMPLEMENTS I_Run\nVAR\n  A : NoSuchType;\n"
-                                "  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\nRun();\nA := C;\nC := MUX(0, 1, 2);\n"
-                                "Count := C;\nEND_FUNCTION_BLOCK\nMETHOD Run : BOOL\nRun := TRUE;\nEND_METHOD\n");
+    auto fb = Write("FB_Oo.st", R"(FUNCTION_BLOCK FB_Oo EXTENDS FB_Base IMPLEMENTS I_Run
+VAR
+  A : NoSuchType;
+  C : INT;
+  D : DINT;
+END_VAR
+C := D;
+Run();
+A := C;
+C := MUX(0, 1, 2);
+Count := C;
+END_FUNCTION_BLOCK
+METHOD Run : BOOL
+VAR_INPUT
+  P : NoSuchPin;
+END_VAR
+Run := TRUE;
+END_METHOD
+METHOD Step
+VAR
+  N : INT;
+END_VAR
+N := D;
+N := A;
+END_METHOD
+)");
     auto result = RunTranslator({"check", "--user", itf, base, fb});
     EXPECT_EQ(result.exitCode, 1);
     for (const auto& expected : {fb + ":3:7: error: undeclared type 'NoSuchType'",
+                                 fb + ":15:7: error: undeclared type 'NoSuchPin'",
                                  fb + ":7:6: error: type mismatch: DINT where INT is expected",
-                                 fb + ":10:6: error: standard function MUX is not supported by pacst"}) {
+                                 fb + ":10:6: error: standard function MUX is not supported by pacst",
+                                 fb + ":23:6: error: type mismatch: DINT where INT is expected"}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
-    for (const char* line : {":8:", ":9:", ":11:"}) {  // its METHOD, the variable refused, the base's variable
+    // its METHOD called, the variable refused (twice), the base's variable
+    for (const char* line : {":8:", ":9:", ":11:", ":24:"}) {
         EXPECT_EQ(result.output.find(fb + line), std::string::npos) << line << "\n" << result.output;
     }
 }

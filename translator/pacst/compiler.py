@@ -1089,10 +1089,11 @@ class Compiler:
         self.program.items += [("pou", m, self.file) for m in members]
 
     def _body_beside_refusals(self, pou, node, base):
-        """User mode: the refusals of the body of a POU some of whose declarations were refused, but those that
-        name a variable not declared (its refusal above says it): as many refusals in one run as can be told
-        apart. Of a POU with METHODs, a base or interfaces, not those either that may owe to what they add, which
-        is not declared then (_MAY_OWE_MEMBERS)."""
+        """User mode: the refusals of the body of a POU some of whose declarations were refused, and of its METHODs',
+        ACTIONs' and PROPERTYs' declarations and bodies, but those that name a variable not declared (its refusal
+        above says it): as many refusals in one run as can be told apart. Of a POU with METHODs, a base or
+        interfaces, not those either that may owe to what they add, which is not all declared then
+        (_MAY_OWE_MEMBERS)."""
         if not self.user or pou.native:
             return []
         members = base is not None or getattr(node, "implements", None) is not None or bool(self.members.get(id(node)))
@@ -1104,15 +1105,23 @@ class Compiler:
         if pou.kind == "function" and getattr(node, "return_type", None) is not None and pou.ret is None:
             lost.add(pou.name.upper())  # its result's type was refused
         self.pous[pou.cname] = pou
+        found, declared_members, member_refusals = [], [], []
         try:
-            BodyCompiler(self, pou).compile()
-            return []
-        except (StError, StErrors) as e:
-            found = e.errors if isinstance(e, StErrors) else [e]
-            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}
-                    and not (members and _MAY_OWE_MEMBERS.search(err.message))]
+            for m in self.members.get(id(node), []):  # their declarations' refusals owe nothing to the POU's
+                try:
+                    declared_members.append(self._member(pou, m))
+                except (StError, StErrors) as e:
+                    member_refusals += e.errors if isinstance(e, StErrors) else [e]
+            for p in [pou] + [m for m in declared_members if m is not None]:
+                try:
+                    BodyCompiler(self, p).compile()
+                except (StError, StErrors) as e:
+                    found += e.errors if isinstance(e, StErrors) else [e]
         finally:
             del self.pous[pou.cname]
+        return member_refusals + [err for err in found
+                                  if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}
+                                  and not (members and _MAY_OWE_MEMBERS.search(err.message))]
 
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
