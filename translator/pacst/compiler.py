@@ -9,6 +9,7 @@ This module holds the driver and the declarations (types, POUs and their variabl
 expressions.py types and translates expressions, body.py a POU's statements.
 """
 import dataclasses
+import difflib
 import os
 import re
 
@@ -470,8 +471,23 @@ class Compiler:
             return self.strip_namespace(rest, node)
         if "." in rest or not self.in_namespace(first, rest):
             self.taken_by_program(first, rest, node)
-            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
+            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'"
+                                 f"{self._close_name(first, rest) or self._part_of(first)}")
         return rest
+
+    def _close_name(self, namespace, name):
+        """': did you mean Namespace.Name?' for the type or POU of the library `namespace` closest to the one it
+        lacks, `name` (a misspelling), or ''."""
+        if "." in name or self.namespace(namespace) != "library":
+            return ""
+        folder = self.namespaces[namespace.upper()][1]
+        spelt = {}
+        for up, (file, _) in self.declared_at.items():
+            decl = self.pous.get(up) or self.types.get(up)
+            if decl is not None and self._under(file, folder):
+                spelt[up] = decl.name
+        close = difflib.get_close_matches(name.upper(), list(spelt), 1, 0.8)
+        return f": did you mean {namespace}.{spelt[close[0]]}?" if close else ""
 
     def taken_by_program(self, namespace, name, node):
         """User mode: for `Namespace.Name` whose library declaration was refused because the program declares Name
