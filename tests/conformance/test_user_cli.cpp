@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "translator_runner.hpp"
@@ -241,16 +242,19 @@ END_METHOD
 )");
     auto result = RunTranslator({"check", "--user", itf, base, fb});
     EXPECT_EQ(result.exitCode, 1);
-    for (const auto& expected : {fb + ":3:7: error: undeclared type 'NoSuchType'",
-                                 fb + ":15:7: error: undeclared type 'NoSuchPin'",
-                                 fb + ":7:6: error: type mismatch: DINT where INT is expected",
-                                 fb + ":10:6: error: standard function MUX is not supported by pacst",
-                                 fb + ":23:6: error: type mismatch: DINT where INT is expected"}) {
-        EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+    // the FB's refused variable and its METHOD's pin; a statement of its body, twice, and of a METHOD's
+    const std::vector<std::pair<int, std::string>> reported = {
+        {3, "7: error: undeclared type 'NoSuchType'"}, {15, "7: error: undeclared type 'NoSuchPin'"},
+        {7, "6: error: type mismatch: DINT where INT is expected"},
+        {10, "6: error: standard function MUX is not supported by pacst"},
+        {23, "6: error: type mismatch: DINT where INT is expected"}};
+    for (const auto& [line, text] : reported) {
+        auto where = fb + ":" + std::to_string(line) + ":" + text;
+        EXPECT_NE(result.output.find(where), std::string::npos) << where << "\n" << result.output;
     }
-    // its METHOD called, the variable refused (twice), the base's variable
-    for (const char* line : {":8:", ":9:", ":11:", ":24:"}) {
-        EXPECT_EQ(result.output.find(fb + line), std::string::npos) << line << "\n" << result.output;
+    for (int line : {8, 9, 11, 24}) {  // not: its METHOD called, the variable refused (twice), the base's variable
+        EXPECT_EQ(result.output.find(fb + ":" + std::to_string(line) + ":"), std::string::npos) << line << "\n"
+                                                                                               << result.output;
     }
 }
 
