@@ -645,7 +645,8 @@ class ExprCompiler:
             raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
         if t.is_string:
             if op not in ("=", "<>"):
-                raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+                raise self.err(node.op, f"{op} on {t.name}: only = and <> compare strings here: compare their "
+                                        f"characters (s[i], a {'WORD' if t is T.WSTRING else 'BYTE'}) in a FOR loop")
             eq = "__pacst_wstring_eq" if t is T.WSTRING else "__pacst_string_eq"
             return TE(T.BOOL, f"({'' if op == '=' else '!'}{eq}({ca}, {cb}))")
         if t.is_time:
