@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "translator_runner.hpp"
@@ -207,6 +208,56 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
                                                                      << result.output;
 }
 
+TEST_F(TranslatorUserCli, RefusedDeclarationOfAnObjectOrientedFbHidesNoRefusalOfItsBody) {
+    // An FB with METHODs, a base or an INTERFACE whose declarations were refused: the refusals of its body and of its
+    // METHODs' declarations and bodies are reported in the same run too, but those that may owe to what is not
+    // declared then (its METHODs, PROPERTYs, what it inherits, the variable refused).
+    auto itf = Write("I_Run.st", "INTERFACE I_Run\nEND_INTERFACE\nMETHOD Run : BOOL\nEND_METHOD\n");
+    auto base = Write("FB_Base.st", "FUNCTION_BLOCK FB_Base\nVAR Count : INT; END_VAR\nEND_FUNCTION_BLOCK\n");
+    auto fb = Write("FB_Oo.st", R"(FUNCTION_BLOCK FB_Oo EXTENDS FB_Base IMPLEMENTS I_Run
+VAR
+  A : NoSuchType;
+  C : INT;
+  D : DINT;
+END_VAR
+C := D;
+Run();
+A := C;
+C := MUX(0, 1, 2);
+Count := C;
+END_FUNCTION_BLOCK
+METHOD Run : BOOL
+VAR_INPUT
+  P : NoSuchPin;
+END_VAR
+Run := TRUE;
+END_METHOD
+METHOD Step
+VAR
+  N : INT;
+END_VAR
+N := D;
+N := A;
+END_METHOD
+)");
+    auto result = RunTranslator({"check", "--user", itf, base, fb});
+    EXPECT_EQ(result.exitCode, 1);
+    // the FB's refused variable and its METHOD's pin; a statement of its body, twice, and of a METHOD's
+    const std::vector<std::pair<int, std::string>> reported = {
+        {3, "7: error: undeclared type 'NoSuchType'"}, {15, "7: error: undeclared type 'NoSuchPin'"},
+        {7, "6: error: type mismatch: DINT where INT is expected"},
+        {10, "6: error: standard function MUX is not supported by pacst"},
+        {23, "6: error: type mismatch: DINT where INT is expected"}};
+    for (const auto& [line, text] : reported) {
+        auto where = fb + ":" + std::to_string(line) + ":" + text;
+        EXPECT_NE(result.output.find(where), std::string::npos) << where << "\n" << result.output;
+    }
+    for (int line : {8, 9, 11, 24}) {  // not: its METHOD called, the variable refused (twice), the base's variable
+        EXPECT_EQ(result.output.find(fb + ":" + std::to_string(line) + ":"), std::string::npos) << line << "\n"
+                                                                                               << result.output;
+    }
+}
+
 TEST_F(TranslatorUserCli, CallOfARefusedFunctionSaysSoAsAStatementToo) {
     // A FUNCTION whose declaration was refused is declared: a call of it, for its effect or in an expression,
     // points back at that refusal instead of calling the FUNCTION undeclared.
@@ -357,7 +408,7 @@ TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {
 
 TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
     // A refusal in the ST of a PLCopen object names the XML file and the line CODESYS shows, not the ST file
-    // pacst writes from it; one in its declaration names the object's element.
+    // pacst writes from it (one in a declaration: the next test).
     auto xml = Write("Project.xml", "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n"
                                     "<types><pous>\n<pou name=\"FB_A\" pouType=\"functionBlock\">\n"
                                     "<interface><localVars><variable name=\"n\"><type><INT/></type></variable>"
@@ -376,6 +427,43 @@ TEST_F(TranslatorUserCli, PlcopenRefusalInABodyIsAtTheXmlLine) {
     EXPECT_NE(result.output.find(xml + ":11:6: error: undeclared name 'Nowhere' (in FB_A)"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("FB_A.st"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, PlcopenRefusalInADeclarationIsAtTheVariablesLine) {
+    // A refused variable of a PLCopen object, of a POU's interface or of a global list, is named at its
+    // <variable> element's line, as CODESYS shows the declaration, not at the object's first line.
+    auto xml = Write("Project.xml", R"(<?xml version="1.0"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+<types><pous>
+<pou name="FB_A" pouType="functionBlock">
+<interface>
+<localVars>
+<variable name="n"><type><INT/></type></variable>
+<variable name="t"><type><derived name="NoSuchType"/></type></variable>
+</localVars>
+<outputVars>
+<variable name="s"><type><string length="300"/></type></variable>
+</outputVars>
+</interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := n + 1;</xhtml></ST></body>
+</pou>
+</pous></types>
+<instances><configurations><configuration name="Device"><resource name="Application">
+<globalVars name="GVL">
+<variable name="Ok"><type><BOOL/></type></variable>
+<variable name="Bad"><type><derived name="NoSuchList"/></type></variable>
+</globalVars>
+</resource></configuration></configurations></instances>
+</project>
+)");
+    auto result = RunTranslator({"build", "--user", "--sources", Out() + "/plcopen", "--out", Out(), xml});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(xml + ":8:"), std::string::npos) << "the variable t: " << result.output;
+    EXPECT_NE(result.output.find("undeclared type 'NoSuchType' (in FB_A)"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(xml + ":11:"), std::string::npos) << "the output s: " << result.output;
+    EXPECT_NE(result.output.find(xml + ":20:"), std::string::npos) << "the list's Bad: " << result.output;
+    EXPECT_EQ(result.output.find(xml + ":4:"), std::string::npos) << "not the POU's line: " << result.output;
+    EXPECT_EQ(result.output.find(xml + ":18:"), std::string::npos) << "not the list's line: " << result.output;
 }
 
 TEST_F(TranslatorUserCli, PlcopenMethodsAndActionsAreRead) {

@@ -179,7 +179,7 @@ class BodyCompiler:
             return Ref(static.csym, not static.type.is_fb, static.type, static)
         ov = self._owner_var(name) if v is None and static is None else None
         if ov is not None:  # a METHOD's or ACTION's access to its FB's variables
-            why = "it is a CONSTANT" if ov.constant else ""
+            why = _constant_why(ov) if ov.constant else ""
             return Ref(f"data__->{ov.cname}", not ov.type.is_fb, ov.type, ov, writable=not why, why_not=why)
         if v is None and up in pou.externals:
             g, constant = pou.externals[up]
@@ -200,7 +200,7 @@ class BodyCompiler:
             raise self.err(token, f"undeclared name '{name}'{self._refused_lists()}")
         writable, why = True, ""
         if v.constant:
-            writable, why = False, "it is a CONSTANT"
+            writable, why = False, _constant_why(v)
         if pou.kind == "fb" and any(v is r for r in inouts_by_reference(pou)):  # the caller's variable itself
             return Ref(f"(*{inout_parameter(v)})", False, v.type, v, writable=writable, why_not=why)
         if pou.kind == "fb":
@@ -276,7 +276,7 @@ class BodyCompiler:
             raise self.err(field, "a bit number is a decimal literal (w.3)")
         n = int(text)
         if n >= r.type.bits:
-            raise self.err(field, f"bit {n} of a {r.type.bits}-bit {r.type.name}: 0..{r.type.bits - 1}")
+            raise self.err(field, f"bit {n} of a {r.type.name}, whose bits are 0..{r.type.bits - 1}")
         self.comp.dialect(el, f"bit access (.{n})")
         return BitRef(r, n)
 
@@ -445,7 +445,7 @@ class BodyCompiler:
         if prop is None:
             raise self.err(call, f"INTERFACE {r.type.name} has no PROPERTY '{name}'")
         if prop["get"] is None:
-            raise self.err(call, f"PROPERTY {prop['name']} has no Get: it is write only")
+            raise self.err(call, f"PROPERTY {prop['name']} has no Get: it is write only (declare its Get to read it)")
         line, col = pos(call)
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         code = f"{chained_dispatcher(r.type, prop['get'])}({r.read()}, \"{where}\", TRUE, NULL)"
@@ -606,7 +606,8 @@ class BodyCompiler:
         if prop is not None:  # user mode: Axis.Velocity := v calls its Set
             this, p = prop
             if p["set"] is None:
-                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only")
+                raise self.err(target, f"PROPERTY {p['name']} has no Set: it is read only (declare its Set to "
+                                       "write it)")
             te = self.ex.expr(node.expression, p["type"])
             value = self.ex.coerce(te, p["type"], node.expression)
             return [f"{ind}{p['set'].cfunc}({this}, TRUE, NULL, {value});"]
@@ -711,7 +712,7 @@ class BodyCompiler:
         if node.step is not None:
             st = self.ex.expr(node.step, r.type)
             if st.type is T.ANY_INT and st.value == 0:
-                raise self.err(node.step, "FOR ... BY 0 never ends")
+                raise self.err(node.step, "FOR ... BY 0 never ends: write a step other than 0")
             if st.type is T.ANY_INT and st.value < 0 and not r.type.is_signed and r.type.bits < 64:
                 step = str(st.value)  # F_Murmur3_Hash's UDINT counted down BY -1: added below in the counter's bits
             else:
@@ -749,12 +750,13 @@ class BodyCompiler:
         raise self.err(node, "a statement that only names a variable does nothing")
 
     def _s_SetStatement(self, node, ind, d):
-        raise self.err(node, "S= and R= are outside the portable subset")
+        raise self.err(node, "S= and R= are outside the portable subset: write an IF")
 
     _s_ResetStatement = _s_SetStatement
 
     def _s_JumpStatement(self, node, ind, d):
-        raise self.err(node, "JMP and labels are outside the portable subset")
+        raise self.err(node, "JMP and labels are outside the portable subset: write IF, CASE or a loop with EXIT "
+                             "and CONTINUE")
 
     _s_LabeledStatement = _s_JumpStatement
 
@@ -1149,3 +1151,11 @@ def _limited(var, value, suffix=""):
     if var.strlen is None or suffix:
         return value
     return f"__pacst_{'wstr' if var.type is T.WSTRING else 'str'}_limit({value}, {var.strlen})"
+
+
+def _constant_why(var):
+    """Why the CONSTANT `var` cannot be written: a VAR_INPUT or VAR_IN_OUT CONSTANT (user mode) with what to write
+    instead, or a VAR CONSTANT."""
+    if var.section in ("input", "inout"):
+        return "it is a CONSTANT input: copy it to a VAR and write that"
+    return "it is a CONSTANT"

@@ -9,6 +9,7 @@ This module holds the driver and the declarations (types, POUs and their variabl
 expressions.py types and translates expressions, body.py a POU's statements.
 """
 import dataclasses
+import difflib
 import os
 import re
 
@@ -120,6 +121,13 @@ class Program:
 
     def __init__(self):
         self.items = []  # (kind, object, file): kind in type, pou
+
+
+# A refusal in the body of an FB with METHODs, a base or interfaces that may owe to what they add (a METHOD or
+# PROPERTY called, a variable inherited, THIS^ or SUPER^), when its declarations were refused and they are not
+# declared: left out beside those refusals (Compiler._body_beside_refusals).
+_MAY_OWE_MEMBERS = re.compile(r"undeclared|declaration was refused|cannot be used|before its declaration|METHOD|"
+                              r"PROPERTY|ACTION|INTERFACE|IMPLEMENT|SUPER|THIS|has no (variable|member|value)", re.I)
 
 
 class Compiler:
@@ -463,8 +471,23 @@ class Compiler:
             return self.strip_namespace(rest, node)
         if "." in rest or not self.in_namespace(first, rest):
             self.taken_by_program(first, rest, node)
-            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'{self._part_of(first)}")
+            raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'"
+                                 f"{self._close_name(first, rest) or self._part_of(first)}")
         return rest
+
+    def _close_name(self, namespace, name):
+        """': did you mean Namespace.Name?' for the type or POU of the library `namespace` closest to the one it
+        lacks, `name` (a misspelling), or ''."""
+        if "." in name or self.namespace(namespace) != "library":
+            return ""
+        folder = self.namespaces[namespace.upper()][1]
+        spelt = {}
+        for up, (file, _) in self.declared_at.items():
+            decl = self.pous.get(up) or self.types.get(up)
+            if decl is not None and self._under(file, folder):
+                spelt[up] = decl.name
+        close = difflib.get_close_matches(name.upper(), list(spelt), 1, 0.8)
+        return f": did you mean {namespace}.{spelt[close[0]]}?" if close else ""
 
     def taken_by_program(self, namespace, name, node):
         """User mode: for `Namespace.Name` whose library declaration was refused because the program declares Name
@@ -835,7 +858,8 @@ class Compiler:
                 if number in numbers:
                     twin = values[numbers.index(number)]
                     raise self.err(ev.value if ev.value is not None else ev,
-                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname})")
+                                   f"two values of {_name(decl.name)} have the number {number} ({twin} and {vname}): "
+                                   "give each value its own number")
                 values.append(vname)
                 numbers.append(number)
                 number += 1
@@ -920,11 +944,14 @@ class Compiler:
             raise self.err(el, f"{_cls(el)} in a STRUCT is outside the portable subset")
         init = el.init
         if self.user and _cls(init) in ("ArrayTypeInitialization", "SubrangeTypeInitialization"):
-            mtype = user.var_type(self, init, allow_fb=False)[0]  # an inline array, UINT(0..N) (user mode)
+            mtype = user.var_type(self, init, allow_fb=True)[0]  # an inline array, UINT(0..N) (user mode)
         elif _cls(init) != "TypeInitialization":
             raise self.err(el, "a STRUCT member needs a plain type (named arrays, structs, enums)")
         else:
-            mtype = self._spec_type(init.spec, allow_fb=False)
+            mtype = self._spec_type(init.spec, allow_fb=self.user)
+        if mtype.is_fb or (mtype.is_array and mtype.elem.is_fb):  # user mode: refused here, saying why
+            raise self.err(el, f"a member of {t.name} of the type {mtype.name}: pacst's STRUCT holds data, not a "
+                               "function block instance: declare the instance beside the STRUCT")
         if mtype is t or (mtype.is_array and mtype.elem is t):
             raise self.err(el, f"a member of {t.name} of the type {t.name} itself: a STRUCT holds a POINTER TO "
                                "itself, never itself")
@@ -1078,12 +1105,14 @@ class Compiler:
         self.program.items += [("pou", m, self.file) for m in members]
 
     def _body_beside_refusals(self, pou, node, base):
-        """User mode: the refusals of the body of a POU some of whose declarations were refused, but those that
-        name a variable not declared (its refusal above says it): as many refusals in one run as can be told
-        apart. A POU with METHODs, a base or interfaces is left unchecked (its body may need what they add)."""
-        if not self.user or pou.native or base is not None or getattr(node, "implements", None) is not None \
-                or self.members.get(id(node)):
+        """User mode: the refusals of the body of a POU some of whose declarations were refused, and of its METHODs',
+        ACTIONs' and PROPERTYs' declarations and bodies, but those that name a variable not declared (its refusal
+        above says it): as many refusals in one run as can be told apart. Of a POU with METHODs, a base or
+        interfaces, not those either that may owe to what they add, which is not all declared then
+        (_MAY_OWE_MEMBERS)."""
+        if not self.user or pou.native:
             return []
+        members = base is not None or getattr(node, "implements", None) is not None or bool(self.members.get(id(node)))
         if pou.kind == "fb":
             pou.fbtype.vars = pou.vars
         declared = {v.name.upper() for v in pou.vars}
@@ -1092,14 +1121,23 @@ class Compiler:
         if pou.kind == "function" and getattr(node, "return_type", None) is not None and pou.ret is None:
             lost.add(pou.name.upper())  # its result's type was refused
         self.pous[pou.cname] = pou
+        found, declared_members, member_refusals = [], [], []
         try:
-            BodyCompiler(self, pou).compile()
-            return []
-        except (StError, StErrors) as e:
-            found = e.errors if isinstance(e, StErrors) else [e]
-            return [err for err in found if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}]
+            for m in self.members.get(id(node), []):  # their declarations' refusals owe nothing to the POU's
+                try:
+                    declared_members.append(self._member(pou, m))
+                except (StError, StErrors) as e:
+                    member_refusals += e.errors if isinstance(e, StErrors) else [e]
+            for p in [pou] + [m for m in declared_members if m is not None]:
+                try:
+                    BodyCompiler(self, p).compile()
+                except (StError, StErrors) as e:
+                    found += e.errors if isinstance(e, StErrors) else [e]
         finally:
             del self.pous[pou.cname]
+        return member_refusals + [err for err in found
+                                  if not lost & {n.upper() for n in re.findall(r"'(\w+)'", err.message)}
+                                  and not (members and _MAY_OWE_MEMBERS.search(err.message))]
 
     def _implements(self, pou, implements):
         """User mode: each INTERFACE an FB IMPLEMENTS is declared, and the FB has each of its METHODs."""
@@ -1113,13 +1151,14 @@ class Compiler:
             self.dialect(token, f"IMPLEMENTS {t.name}")
             missing = [m for m in t.methods if m.upper() not in pou.methods]
             if missing:
-                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}")
+                raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no METHOD {', '.join(missing)}: "
+                                      f"declare it in {pou.name}")
             for up, proto in t.protos.items():
                 if proto.accessor is not None:  # a PROPERTY's Get or Set
                     own = pou.properties.get(proto.name.upper())
                     if own is None or own[proto.accessor] is None:
                         raise self.err(token, f"{pou.name} IMPLEMENTS {t.name} but has no PROPERTY {proto.name} with "
-                                              f"a {proto.accessor.capitalize()}")
+                                              f"a {proto.accessor.capitalize()}: declare it in {pou.name}")
                     if own["type"] is not t.properties[proto.name.upper()]["type"]:
                         raise self.err(token, f"{pou.name}.{proto.name} is a {own['type'].name}, "
                                               f"{t.name}.{proto.name} a {t.properties[proto.name.upper()]['type'].name}")

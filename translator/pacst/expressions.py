@@ -11,6 +11,7 @@ from .common import TE, Ref, _cls, _name, first_output, first_output_cfunc, firs
 from .names import STANDARD_FUNCTIONS
 
 _CONVERTIBLE = {"BOOL", "SINT", "INT", "DINT", "USINT", "UINT", "UDINT", "BYTE", "WORD", "DWORD", "REAL", "LREAL"}
+_CONVERTIBLE_64 = {"LINT", "ULINT", "LWORD"}  # and their conversions in user programs
 # The standard string functions of user programs and their IEC input names.
 _STRING_FUNCTIONS = {"LEN": ["IN"], "CONCAT": ["IN1", "IN2"], "LEFT": ["IN", "L"], "RIGHT": ["IN", "L"],
                      "MID": ["IN", "L", "P"], "FIND": ["IN1", "IN2"], "INSERT": ["IN1", "IN2", "P"],
@@ -26,6 +27,10 @@ _MATH = {"SQRT": "sqrt", "LN": "log", "LOG": "log10", "EXP": "exp", "SIN": "sin"
 _MEMORY = {"ADR", "SIZEOF", "MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP", "__ISVALIDREF", "PACST_MEMORY_AREA"}
 # Functions a user program may call as a statement, its result unused.
 STATEMENT_FUNCTIONS = {"MEMCPY", "MEMMOVE", "MEMSET"}
+# What to write instead of a standard function pacst does not translate (docs/user_dialect.md).
+_INSTEAD = {"MUX": ": write a CASE", **{fn: f": write the operator (A {op} B)" for fn, op in (
+    ("ADD", "+"), ("SUB", "-"), ("MUL", "*"), ("DIV", "/"), ("GT", ">"), ("GE", ">="),
+    ("EQ", "="), ("LE", "<="), ("LT", "<"), ("NE", "<>"))}}
 _CMP_C = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
@@ -133,7 +138,8 @@ class ExprCompiler:
         if te.type.is_fb and target.kind == "interface" and self.comp.user:
             pou = te.type.pou
             if pou is None or target not in pou.interfaces:
-                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}")
+                raise self.err(node, f"{te.type.name} does not IMPLEMENT {target.name}: add IMPLEMENTS {target.name} "
+                                     "to its heading")
             return f"(({target.cname}){{(void *)({te.code}), &{target.vtable(pou.cname)}}})"
         if te.type.kind == "interface" and target.kind == "interface" and target in te.type.bases:
             # an INTERFACE's variable given to one of a base's type: the instance's table for the base
@@ -183,11 +189,14 @@ class ExprCompiler:
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return f"(({target.cname})({te.code}))"
         hint = ""
-        convertible = te.type.name in _CONVERTIBLE and target.name in _CONVERTIBLE
+        named = _CONVERTIBLE | _CONVERTIBLE_64 if self.comp.user else _CONVERTIBLE
+        convertible = te.type.name in named and target.name in named
         if te.type.is_string and target.is_string and self.comp.user:
             convertible = True
         if te.type.is_elementary and target.is_elementary and (convertible or te.type.is_time and target.is_time):
             hint = f" (write {te.type.name}_TO_{target.name})"
+        elif target.is_enum and self.comp.user:
+            hint = f" (assign a value of {target.name})"
         else:
             hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
@@ -432,7 +441,7 @@ class ExprCompiler:
         if prop is not None:  # user mode: Axis.Velocity calls its Get
             this, p = prop
             if p["get"] is None:
-                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only")
+                raise self.err(node, f"PROPERTY {p['name']} has no Get: it is write only (declare its Get to read it)")
             return TE(p["type"], f"{p['get'].cfunc}({this}, TRUE, NULL)")
         return self._read(self.body.ref(node), node)
 
@@ -492,7 +501,8 @@ class ExprCompiler:
             for side in (node.left, node.right):
                 te = self.expr(side, T.BOOL)
                 if not te.type.is_bool:
-                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}")
+                    raise self.err(side, f"{op} takes BOOL operands, not {te.type.name}: write "
+                                         f"{'AND' if op == 'AND_THEN' else 'OR'} on bit strings")
                 sides.append(te.code)
             return TE(T.BOOL, f"({sides[0]} {'&&' if op == 'AND_THEN' else '||'} {sides[1]})")
         if op in ("AND_THEN", "OR_ELSE"):
@@ -635,7 +645,8 @@ class ExprCompiler:
             raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
         if t.is_string:
             if op not in ("=", "<>"):
-                raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+                raise self.err(node.op, f"{op} on {t.name}: only = and <> compare strings here: compare their "
+                                        f"characters (s[i], a {'WORD' if t is T.WSTRING else 'BYTE'}) in a FOR loop")
             eq = "__pacst_wstring_eq" if t is T.WSTRING else "__pacst_string_eq"
             return TE(T.BOOL, f"({'' if op == '=' else '!'}{eq}({ca}, {cb}))")
         if t.is_time:
@@ -819,7 +830,7 @@ class ExprCompiler:
         if up in T.STANDARD_FBS or up in T.NONPORTABLE_FBS:
             raise self.err(node, f"{up} is a function block: declare an instance")
         if up in STANDARD_FUNCTIONS:
-            raise self.err(node, f"standard function {up} is not supported by pacst")
+            raise self.err(node, f"standard function {up} is not supported by pacst{_INSTEAD.get(up, '')}")
         raise self.err(node, f"undeclared function '{name}'")
 
     def _uptime(self, node, up):

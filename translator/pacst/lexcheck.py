@@ -216,8 +216,10 @@ def check(text, file, user=False):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else None
         nxt_up = (nxt.upper if nxt.kind == "ident" else nxt.text) if nxt is not None else None
         if tok.kind == "punct" and tok.text == "**":
-            raise StError(file, tok.line, tok.col, "'**' is not supported (blark has no exponent operator and "
-                                                   "pacst no EXPT): multiply, or write a loop")
+            raise StError(file, tok.line, tok.col, "'**': pacst's parser does not read the exponent operator: write "
+                                                   "EXPT(a, b)" if user else
+                          "'**' is not supported (blark has no exponent operator and pacst no EXPT): multiply, or "
+                          "write a loop")
         if tok.kind == "punct" and tok.text == "&":
             raise StError(file, tok.line, tok.col, "'&' for AND: pacst's parser (blark) does not read it; write AND")
         if tok.kind == "punct" and tok.text == ":=" and nxt is not None and nxt.text == "[" and not user:

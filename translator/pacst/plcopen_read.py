@@ -7,6 +7,7 @@ addresses), never from CODESYS's declaration text, so what is read is what every
 Anything this reader does not know is an error, not a guess.
 """
 import os
+import re
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -66,6 +67,8 @@ class StObject:
     body_xml_line: int = field(default=0, compare=False)  # the line where its ST body starts (0: none)
     # each member body's (first line in `members`, line where it starts in the XML file, its lines)
     member_lines: tuple = field(default=(), compare=False)
+    # each variable's (line in `declaration`, line of its <variable> element in the XML file, its name)
+    declaration_lines: tuple = field(default=(), compare=False)
 
     def st(self):
         """The object as the text of one ST file."""
@@ -136,7 +139,8 @@ _ORIGINS = {}
 
 def at_source(err):
     """A refusal in an ST file written from PLCopen XML, given at the XML file's line as CODESYS shows it: the
-    body's line, or the object's element for its declaration and members; other refusals unchanged."""
+    body's line, a variable's <variable> element, or the object's element for the rest of its declaration and its
+    members' declarations; other refusals unchanged."""
     origin = _ORIGINS.get(os.path.abspath(err.file))
     if origin is None:
         return err
@@ -147,7 +151,8 @@ def at_source(err):
 
 def xml_position(xml, obj, st_line, col=1):
     """(line, column) in the XML file `xml` of line `st_line` of the ST file written from its object `obj`: the
-    line in the body or in a METHOD's, ACTION's or PROPERTY accessor's body, else the object's element."""
+    line in the body or in a METHOD's, ACTION's or PROPERTY accessor's body, a variable's <variable> element (of a
+    POU's interface or a global list), else the object's element."""
     first = obj.declaration.count("\n") + 1  # the body's first line in the ST file
     spans = []
     if obj.body is not None:
@@ -166,6 +171,14 @@ def xml_position(xml, obj, st_line, col=1):
                 except (OSError, IndexError, ValueError):
                     pass
             return line, col
+    for decl_line, xml_line, name in obj.declaration_lines:  # a variable's declaration: its <variable> element
+        if decl_line == st_line:
+            try:
+                with open(xml, encoding="utf-8", errors="replace") as f:
+                    text = f.read().splitlines()[xml_line - 1]
+                return xml_line, text.rindex("<", 0, text.index(f'name="{name}"')) + 1
+            except (OSError, IndexError, ValueError):
+                return xml_line, 1
     return obj.xml_line or 1, col
 
 
@@ -354,8 +367,28 @@ def _pou(element):
                                    "yet: write a METHOD")
     header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
     xhtml = element.find(f"{q('body')}/{q('ST')}/{{{XHTML}}}xhtml")
-    return StObject(kind, name, header + "\n" + "".join(blocks), _st_body(element, name), "".join(members),
-                    element.sourceline or 0, xhtml.sourceline if xhtml is not None else 0, tuple(spans))
+    declaration = header + "\n" + "".join(blocks)
+    interface = element.find(q("interface"))
+    variables = [v for child in (interface if interface is not None else []) if _local(child) in SECTION_KEYWORDS
+                 for v in child.iterfind(q("variable"))]
+    return StObject(kind, name, declaration, _st_body(element, name), "".join(members),
+                    element.sourceline or 0, xhtml.sourceline if xhtml is not None else 0, tuple(spans),
+                    _variable_lines(declaration, variables))
+
+
+def _variable_lines(text, variables):
+    """((line of `text`, line of the XML file, name), ...): where each of the <variable> elements `variables` is
+    declared in the ST `text` that _var_list wrote (a line `  Name : ...`), matched by its name."""
+    where = {}
+    for v in variables:
+        if v.get("name") and v.sourceline:
+            where.setdefault(v.get("name").upper(), (v.sourceline, v.get("name")))
+    found = []
+    for n, line in enumerate(text.split("\n"), 1):
+        m = re.match(r"  (\w+)\b", line)
+        if m and m.group(1).upper() in where:
+            found.append((n, *where[m.group(1).upper()]))
+    return tuple(found)
 
 
 def _member_text(header, blocks, holder, name, end):
@@ -474,7 +507,8 @@ def _global_list(element):
     blocks = [g for data in element.iterfind(f"{q('addData')}/{q('data')}") if data.get("name") == MIXED_ATTRIBUTES
               for g in data.iterfind(f"{q('MixedAttrsVarList')}/{q('globalVars')}")]
     text = "".join(pragmas) + "".join(_var_list(b, "VAR_GLOBAL") for b in blocks or [element])
-    return StObject("globalVars", element.get("name"), text, None, xml_line=element.sourceline or 0)
+    return StObject("globalVars", element.get("name"), text, None, xml_line=element.sourceline or 0,
+                    declaration_lines=_variable_lines(text, element.iterfind(q("variable"))))
 
 
 def _pragma(name, value):

@@ -257,10 +257,12 @@ def _union_members(comp, t, decl):
         if _cls(spec) == "ArraySpecification":
             mtype = inline_array(comp, spec, comp.file)
         else:
-            mtype = comp._spec_type(spec, allow_fb=False)
+            mtype = comp._spec_type(spec, allow_fb=True)  # a function block is refused below, saying why
         if mtype is t or mtype.is_fb or (mtype.is_array and (mtype.elem is t or mtype.elem.is_fb)):
+            fb = mtype.is_fb or (mtype.is_array and mtype.elem.is_fb)
+            instead = ": declare the instance beside the UNION" if fb else ": write a POINTER TO it"
             raise comp.err(el, f"a member of the UNION {t.name} of the type {mtype.name}: a UNION holds data, "
-                               "not itself or a function block")
+                               f"not itself or a function block{instead}")
         comp._check_ident(el.name, "member", c_name=False)
         name = _name(el.name)
         if name.upper() in seen:
