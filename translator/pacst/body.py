@@ -351,7 +351,7 @@ class BodyCompiler:
                 r = self._member(r, field)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
                 r = self._pointer_index(r, el)
-            elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
+            elif ecls == "SubscriptList" and self.comp.user and (r.type.is_string or r.type.kind == "longstring"):
                 r = self._string_index(r, el)
             elif ecls == "SubscriptList" and r.type.kind == "vla":  # user mode: ARRAY [*]
                 r = varlen.index(self, r, el)
@@ -505,6 +505,10 @@ class BodyCompiler:
         line, col = pos(el.subscripts[0])
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         index = str(te.value) if te.type is T.ANY_INT else f"(long long)({te.code})"
+        if r.type.kind == "longstring":  # its units themselves, up to the NUL as TwinCAT keeps them
+            unit = T.ELEMENTARY["WORD" if r.type.wide else "BYTE"]
+            idx = f"__pacst_index((long)({index}), 0L, {r.type.length - 1}L, \"{where}\")"
+            return Ref(r.base, r.wrapped, unit, r.var, f"{r.suffix}.body[{idx}]", r.writable, r.why_not, True)
         return StringByteRef(r, f"__pacst_index((long)({index}), 0L, STR_MAX_LEN - 1L, \"{where}\")",
                              T.ELEMENTARY["WORD" if r.type is T.WSTRING else "BYTE"])
 

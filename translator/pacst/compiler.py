@@ -141,6 +141,7 @@ class Compiler:
         self.ahead = {}  # upper name of an INTERFACE named before its declaration -> the first (file, token)
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
+        self.long_strings = {}  # (n, wide) -> LongStringType of a STRING(n) or WSTRING(n) over 255 (user mode)
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
         self.taken_from_library = {}  # user mode: (NAMESPACE, NAME) -> (file, line) of the program's declaration
@@ -695,9 +696,10 @@ class Compiler:
                 if str(tok.type_name).upper() == "STRING" and tok.length is None:
                     return T.STRING
                 if self.user and user.string_type(self, tok) is not None:
-                    # A struct member, array element or result: a STRING, its length checked, not kept.
+                    # A struct member, array element or result: a STRING, its length checked, not kept; over 255
+                    # the long string type of its length.
                     if tok.length is not None:
-                        user.string_length(self, tok)
+                        return user.sized_string(self, tok)[0]
                     return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None and self.user:  # ARRAY [0..3] OF POINTER TO T
@@ -708,8 +710,8 @@ class Compiler:
         if cls == "ArraySpecification":
             raise self.err(spec, "inline ARRAY declaration: declare a named array type (TYPE ... END_TYPE)")
         if cls == "StringTypeSpecification" and self.user and user.string_type(self, spec) is not None:
-            if spec.length is not None:  # an array's element: a STRING, its length checked, not kept
-                user.string_length(self, spec)
+            if spec.length is not None:  # an array's element: a STRING, its length checked, not kept (over 255
+                return user.sized_string(self, spec)[0]  # the long string type of its length)
             return user.string_type(self, spec)
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
@@ -874,10 +876,11 @@ class Compiler:
                 and decl.value is None:
             # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
             self._declare_global(decl.name, "type")
-            if decl.string_type.length is not None:
-                user.string_length(self, decl.string_type)
+            t = user.string_type(self, decl.string_type)
+            if decl.string_type.length is not None:  # over 255 the long string type of its length (FsCommon's T_Path)
+                t = user.sized_string(self, decl.string_type)[0]
             self.dialect(decl, "a STRING type")
-            self.types[_name(decl.name).upper()] = user.string_type(self, decl.string_type)
+            self.types[_name(decl.name).upper()] = t
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
@@ -1765,6 +1768,8 @@ class Compiler:
             return f"(({t.cname}){{NULL, NULL}})"
         if t.kind == "vla":  # user mode: an FB's ARRAY [*] before its first call
             return varlen.default_c(t)
+        if t.kind == "longstring":  # user mode: STRING(n) over 255, empty
+            return f"(({t.cname}){{{{0}}}})"
         if t is T.WSTRING:
             return "__pacst_wstring(NULL, 0)"
         if t.is_string:
