@@ -6,10 +6,11 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, chained_dispatcher, \
+from .common import _BIT_LITERALS, _INT_LITERALS, TE, Ref, SourceLine, _cls, _name, chained_dispatcher, \
     inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call, widens
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, long_string_code, \
+    refused_call, widens
 
 
 class BodyCompiler:
@@ -1058,6 +1059,9 @@ class BodyCompiler:
                     # user mode: an output to a wider variable, as TwinCAT converts it (Index => DintVariable)
                     self.comp.dialect(p.value, f"the implicit conversion of {fv.type.name} to {target.type.name}")
                     value = f"(({target.type.cname})({value}))"
+                elif target.type is not fv.type and self.comp.user and \
+                        (code := long_string_code(TE(fv.type, value), target.type)) is not None:
+                    value = code  # user mode: a STRING output to a STRING(300), or the other way, cut to the target
                 elif target.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")

@@ -682,6 +682,14 @@ class Compiler:
                     return value
         return None
 
+    def _result_string(self, spec, wide, length):
+        """User mode: STRING(n) or WSTRING(n) (`wide`) that blark reads as a call (a result's type, POINTER TO
+        STRING(n)): STRING or WSTRING, its n checked; over 255 the long string type of its length."""
+        n = user.string_capacity(self, spec, literals.int_value(length), "WSTRING" if wide else "STRING")
+        if n > user.STRING_CAPACITY:
+            return user.long_string(self, n, wide)
+        return T.WSTRING if wide else T.STRING
+
     def _pseudo_type(self, token, up):
         """User mode: __XINT, __UXINT, __XWORD (XINT, UXINT, XWORD) and PVOID, the register-wide types TwinCAT and
         CODESYS make LINT, ULINT, LWORD on a 64-bit target."""
@@ -721,17 +729,17 @@ class Compiler:
             length = [getattr(p, "value", p) for p in spec.init_parameters or ()]
             if self.user and spec.indirection is not None and len(length) == 1 and _cls(length[0]) == "Integer" \
                     and _cls(spec.type) == "SimpleSpecification" and _cls(spec.type.type) == "StringTypeSpecification":
-                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked
-                user.string_capacity(self, spec, literals.int_value(length[0]))
-                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked (over
+                # 255 a POINTER TO the long string type of its length)
+                wide = str(spec.type.type.type_name).upper() == "WSTRING"
+                return self.pointer_type(spec, self._result_string(spec, wide, length[0]), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
                 length = [getattr(p, "value", p) for p in spec.init_parameters]
                 if _name(spec.type).upper() in ("STRING", "WSTRING") and len(length) == 1 \
                         and _cls(length[0]) == "Integer":
                     # a FUNCTION's or METHOD's result STRING(80), which blark reads as a call
-                    user.string_capacity(self, spec, literals.int_value(length[0]))
                     self.dialect(spec, f"a result of type {_name(spec.type).upper()}(n)")
-                    return T.WSTRING if _name(spec.type).upper() == "WSTRING" else T.STRING
+                    return self._result_string(spec, _name(spec.type).upper() == "WSTRING", length[0])
                 # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone; `List : FB_List(10);`
                 # gives them to the FB's METHOD FB_init (_fb_init)
                 t = self._spec_type(spec.type, allow_fb)

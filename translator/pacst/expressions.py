@@ -95,6 +95,8 @@ def long_string_code(te, target):
     they are no such pair (a STRING and a WSTRING). A long value is read through an array of one, so that its
     units have an address whatever the expression (C99 gives a function's result none)."""
     src, dst = te.type, target
+    if "longstring" not in (src.kind, dst.kind):
+        return None
     if src.kind == "longstring":
         p = "__pacst_lwstr" if src.wide else "__pacst_lstr"
         units = f"(({src.cname}[1]){{{te.code}}})[0].body"

@@ -127,14 +127,14 @@ def string_type(comp, spec):
 def sized_string(comp, tok):
     """(type, n or None) of a StringTypeSpecification with a length, as a variable, member, element or type name
     takes it: STRING or WSTRING with its n kept up to 255, the long string type of its own above."""
-    n = string_length(comp, tok, longer=True)
+    n = string_length(comp, tok)
     short = string_type(comp, tok)
     if n <= STRING_CAPACITY:
         return short, n
-    return long_string(comp, n, short is T.WSTRING, tok), None
+    return long_string(comp, n, short is T.WSTRING), None
 
 
-def long_string(comp, n, wide, node):
+def long_string(comp, n, wide):
     """The LongStringType of STRING(n) or WSTRING(n), declared once a program (in the C of the first file)."""
     t = comp.long_strings.get((n, wide))
     if t is None:
@@ -144,9 +144,9 @@ def long_string(comp, n, wide, node):
     return t
 
 
-def string_length(comp, spec, longer=False):
+def string_length(comp, spec):
     """The n of STRING(n) / STRING[n]: a literal integer, or an integer constant as an array bound takes one
-    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity (the long one's if `longer`)."""
+    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity (LONG_STRING_CAPACITY)."""
     expr = spec.length.length
     if _cls(expr) == "ParenthesizedExpression":  # STRING(n)
         expr = expr.expr
@@ -154,29 +154,24 @@ def string_length(comp, spec, longer=False):
         expr = expr.expression
     kind = "WSTRING" if str(spec.type_name).upper() == "WSTRING" else "STRING"
     if _cls(expr) == "Integer" and expr.type_name is None:
-        return string_capacity(comp, spec, int(str(expr.value).replace("_", "")), kind, longer)
+        return string_capacity(comp, spec, int(str(expr.value).replace("_", "")), kind)
     n = comp.constant_int(expr)
     if n is None:
         raise comp.err(spec, f"the length of a {kind} is an integer literal or an integer constant declared before "
                              "(a global list's, List.Name, or the POU's VAR CONSTANT) with + - *: write the number")
     comp.dialect(spec, f"a {kind} length that is a named constant")
-    return string_capacity(comp, spec, n, kind, longer)
+    return string_capacity(comp, spec, n, kind)
 
 
-def string_capacity(comp, spec, n, kind="STRING", longer=False):
-    """`n`, when a STRING(n) (a `kind`(n)) holds it (up to LONG_STRING_CAPACITY where the caller takes a
-    `longer` one); else the refusal at `spec`."""
-    if longer and STRING_CAPACITY < n <= LONG_STRING_CAPACITY:
+def string_capacity(comp, spec, n, kind="STRING"):
+    """`n`, when a STRING(n) (a `kind`(n)) holds it, up to LONG_STRING_CAPACITY (over STRING_CAPACITY a type of its
+    own, types.LongStringType); else the refusal at `spec`."""
+    if STRING_CAPACITY < n <= LONG_STRING_CAPACITY:
         comp.dialect(spec, f"{kind}(n) with n over {STRING_CAPACITY}")
         return n
     if not 1 <= n <= STRING_CAPACITY:
-        if longer or n < 1:
-            raise comp.err(spec, f"{kind}({n}): pacst's {kind}(n) holds 1 to {LONG_STRING_CAPACITY} characters; "
-                                 f"declare {kind}({LONG_STRING_CAPACITY}) or shorter where the program's texts fit")
-        raise comp.err(spec, f"{kind}({n}): a {kind} over {STRING_CAPACITY} characters is taken for a variable, a "
-                             "STRUCT member, an ARRAY element or a type's name, not here: declare "
-                             f"{kind}({STRING_CAPACITY}) (T_MaxString, the longest the string functions take) or "
-                             "pass a longer one by POINTER TO or REFERENCE TO its type")
+        raise comp.err(spec, f"{kind}({n}): pacst's {kind}(n) holds 1 to {LONG_STRING_CAPACITY} characters; "
+                             f"declare {kind}({LONG_STRING_CAPACITY}) or shorter where the program's texts fit")
     if n > MATIEC_STRING_CAPACITY:
         comp.dialect(spec, f"STRING({n}) (MATIEC's STRING holds {MATIEC_STRING_CAPACITY} characters)")
     return n
