@@ -691,8 +691,9 @@ class ExprCompiler:
         """User mode: = and <> with a STRING(n) or WSTRING(n) over 255: the whole texts compared, to its NUL."""
         if op not in ("=", "<>"):
             raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+        other_side = node.right
         if a.type.kind != "longstring":
-            a, b = b, a
+            a, b, other_side = b, a, node.left
         t = a.type
         p = "__pacst_lwstr" if t.wide else "__pacst_lstr"
         units = f"(({t.cname}[1]){{{a.code}}})[0].body"
@@ -700,7 +701,7 @@ class ExprCompiler:
             other = f"(({b.type.cname}[1]){{{b.code}}})[0].body"
             code = f"{p}_eq({units}, {t.length}, {other}, {b.type.length})"
         else:
-            code = f"{p}_eq_short({units}, {t.length}, {self.coerce(b, t.short, node.right, 'operand')})"
+            code = f"{p}_eq_short({units}, {t.length}, {self.coerce(b, t.short, other_side, 'operand')})"
         return TE(T.BOOL, f"({'' if op == '=' else '!'}{code})")
 
     def _enum_as_number(self, node, te, other):
