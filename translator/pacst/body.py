@@ -9,8 +9,8 @@ from . import user, varlen
 from .common import _BIT_LITERALS, _INT_LITERALS, TE, Ref, SourceLine, _cls, _name, chained_dispatcher, \
     inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, long_string_code, \
-    refused_call, widens
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, long_inout_hint, \
+    long_string_code, refused_call, widens
 
 
 class BodyCompiler:
@@ -1084,7 +1084,7 @@ class BodyCompiler:
                 if arg.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: VAR_IN_OUT {pname} is {fv.type.name}, "
                                             f"'{arg.var.name}' is {arg.type.name}"
-                                            f"{array_name_hint(arg.type, fv.type)}")
+                                            f"{array_name_hint(arg.type, fv.type)}{long_inout_hint(arg.type, fv.type)}")
                 if not arg.writable:
                     raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
                 if type(arg) is Ref and any(fv is r for r in by_reference):  # an lvalue: the FB works on it

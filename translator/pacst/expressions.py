@@ -111,6 +111,17 @@ def long_string_code(te, target):
     return None
 
 
+def long_inout_hint(actual, expected):
+    """What to write where a string of one length is given to a VAR_IN_OUT of another and one of them is over 255
+    (user mode), else ""."""
+    if "longstring" not in (actual.kind, expected.kind) or not (actual.is_string or expected.is_string
+                                                                 or actual.kind == expected.kind):
+        return ""
+    return (f": a VAR_IN_OUT takes a variable of its own type; declare it {actual.name}, or VAR_IN_OUT CONSTANT "
+            f"where it is only read (a string over {user.STRING_CAPACITY} is read there as its first "
+            f"{user.STRING_CAPACITY} characters)")
+
+
 def _long_string_pointer(ex, source, target, node):
     """Refuses a pointer to a STRING(n) over 255 given to a POINTER TO STRING (or the other way): pacst's STRING is
     a length and 255 bytes, the long one TwinCAT's n characters and a NUL, so the one read through the other's
@@ -1338,6 +1349,8 @@ class ExprCompiler:
         """The C pointer a VAR_IN_OUT CONSTANT is given: a variable's address, or (as TwinCAT takes a literal or an
         expression there) the address of a one-element array holding the value, alive during the call."""
         ref = system.variable(self, arg)
+        if ref is not None and ref.type.kind == "longstring" and v.type is ref.type.short:
+            ref = None  # a STRING(1023) read as a VAR_IN_OUT CONSTANT STRING, as Beckhoff's help passes a long one
         if ref is not None:
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to VAR_IN_OUT CONSTANT '{v.name}' of type "
@@ -1457,7 +1470,7 @@ class ExprCompiler:
                 raise self.err(arg, "initial value must be a literal")
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to {v.section} '{v.name}' of type "
-                                    f"{v.type.name}")
+                                    f"{v.type.name}{long_inout_hint(ref.type, v.type)}")
             if not ref.writable:
                 raise self.err(arg, f"'{ref.var.name}' cannot be written: {ref.why_not}")
             if v.section == "inout" and ref.subscripted:
