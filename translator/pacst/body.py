@@ -6,10 +6,11 @@ import re
 from . import literals, system
 from . import types as T
 from . import user, varlen
-from .common import _BIT_LITERALS, _INT_LITERALS, Ref, SourceLine, _cls, _name, chained_dispatcher, \
+from .common import _BIT_LITERALS, _INT_LITERALS, TE, Ref, SourceLine, _cls, _name, chained_dispatcher, \
     inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
-from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, refused_call, widens
+from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, long_inout_hint, \
+    long_string_code, refused_call, widens
 
 
 class BodyCompiler:
@@ -351,7 +352,7 @@ class BodyCompiler:
                 r = self._member(r, field)
             elif ecls == "SubscriptList" and self.comp.user and r.type.is_pointer and not r.type.reference:
                 r = self._pointer_index(r, el)
-            elif ecls == "SubscriptList" and self.comp.user and r.type.is_string:
+            elif ecls == "SubscriptList" and self.comp.user and (r.type.is_string or r.type.kind == "longstring"):
                 r = self._string_index(r, el)
             elif ecls == "SubscriptList" and r.type.kind == "vla":  # user mode: ARRAY [*]
                 r = varlen.index(self, r, el)
@@ -505,6 +506,10 @@ class BodyCompiler:
         line, col = pos(el.subscripts[0])
         where = f"{self.comp.file}:{line}:{col}".replace("\\", "/").replace('"', "'")
         index = str(te.value) if te.type is T.ANY_INT else f"(long long)({te.code})"
+        if r.type.kind == "longstring":  # its units themselves, up to the NUL as TwinCAT keeps them
+            unit = T.ELEMENTARY["WORD" if r.type.wide else "BYTE"]
+            idx = f"__pacst_index((long)({index}), 0L, {r.type.length - 1}L, \"{where}\")"
+            return Ref(r.base, r.wrapped, unit, r.var, f"{r.suffix}.body[{idx}]", r.writable, r.why_not, True)
         return StringByteRef(r, f"__pacst_index((long)({index}), 0L, STR_MAX_LEN - 1L, \"{where}\")",
                              T.ELEMENTARY["WORD" if r.type is T.WSTRING else "BYTE"])
 
@@ -1056,6 +1061,9 @@ class BodyCompiler:
                     # user mode: an output to a wider variable, as TwinCAT converts it (Index => DintVariable)
                     self.comp.dialect(p.value, f"the implicit conversion of {fv.type.name} to {target.type.name}")
                     value = f"(({target.type.cname})({value}))"
+                elif target.type is not fv.type and self.comp.user and \
+                        (code := long_string_code(TE(fv.type, value), target.type)) is not None:
+                    value = code  # user mode: a STRING output to a STRING(300), or the other way, cut to the target
                 elif target.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: output {pname} is {fv.type.name}, "
                                             f"'{target.var.name}' is {target.type.name}")
@@ -1078,7 +1086,7 @@ class BodyCompiler:
                 if arg.type is not fv.type:
                     raise self.err(p.value, f"type mismatch: VAR_IN_OUT {pname} is {fv.type.name}, "
                                             f"'{arg.var.name}' is {arg.type.name}"
-                                            f"{array_name_hint(arg.type, fv.type)}")
+                                            f"{array_name_hint(arg.type, fv.type)}{long_inout_hint(arg.type, fv.type)}")
                 if not arg.writable:
                     raise self.err(p.value, f"'{arg.var.name}' cannot be passed to a VAR_IN_OUT: {arg.why_not}")
                 if type(arg) is Ref and any(fv is r for r in by_reference):  # an lvalue: the FB works on it

@@ -149,6 +149,7 @@ class Compiler:
         self.ahead = {}  # upper name of an INTERFACE named before its declaration -> the first (file, token)
         self.pending_globals = {}  # upper FB name -> [(GlobalList, item, CONSTANT, file)] waiting for that FB
         self.inline_arrays = {}  # (low, high, element cname and name) -> ArrayType of an inline ARRAY declaration
+        self.long_strings = {}  # (n, wide) -> LongStringType of a STRING(n) or WSTRING(n) over 255 (user mode)
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
         self.taken_from_library = {}  # user mode: (NAMESPACE, NAME) -> (file, line) of the program's declaration
@@ -704,6 +705,14 @@ class Compiler:
                     return value
         return None
 
+    def _result_string(self, spec, wide, length):
+        """User mode: STRING(n) or WSTRING(n) (`wide`) that blark reads as a call (a result's type, POINTER TO
+        STRING(n)): STRING or WSTRING, its n checked; over 255 the long string type of its length."""
+        n = user.string_capacity(self, spec, literals.int_value(length), "WSTRING" if wide else "STRING")
+        if n > user.STRING_CAPACITY:
+            return user.long_string(self, n, wide)
+        return T.WSTRING if wide else T.STRING
+
     def _pseudo_type(self, token, up):
         """User mode: __XINT, __UXINT, __XWORD (XINT, UXINT, XWORD) and PVOID, the register-wide types TwinCAT and
         CODESYS make LINT, ULINT, LWORD on a 64-bit target."""
@@ -718,9 +727,10 @@ class Compiler:
                 if str(tok.type_name).upper() == "STRING" and tok.length is None:
                     return T.STRING
                 if self.user and user.string_type(self, tok) is not None:
-                    # A struct member, array element or result: a STRING, its length checked, not kept.
+                    # A struct member, array element or result: a STRING, its length checked, not kept; over 255
+                    # the long string type of its length.
                     if tok.length is not None:
-                        user.string_length(self, tok)
+                        return user.sized_string(self, tok)[0]
                     return user.string_type(self, tok)
                 raise self.err(tok, T.OUTSIDE_SUBSET.get(str(tok.type_name).upper(), T.OUTSIDE_SUBSET["STRING"]))
             if cls == "DataType" and spec.indirection is not None and self.user:  # ARRAY [0..3] OF POINTER TO T
@@ -731,8 +741,8 @@ class Compiler:
         if cls == "ArraySpecification":
             raise self.err(spec, "inline ARRAY declaration: declare a named array type (TYPE ... END_TYPE)")
         if cls == "StringTypeSpecification" and self.user and user.string_type(self, spec) is not None:
-            if spec.length is not None:  # an array's element: a STRING, its length checked, not kept
-                user.string_length(self, spec)
+            if spec.length is not None:  # an array's element: a STRING, its length checked, not kept (over 255
+                return user.sized_string(self, spec)[0]  # the long string type of its length)
             return user.string_type(self, spec)
         if cls in ("StringTypeSpecification", "StringSpecLength"):
             raise self.err(spec, T.OUTSIDE_SUBSET["STRING"])
@@ -742,17 +752,17 @@ class Compiler:
             length = [getattr(p, "value", p) for p in spec.init_parameters or ()]
             if self.user and spec.indirection is not None and len(length) == 1 and _cls(length[0]) == "Integer" \
                     and _cls(spec.type) == "SimpleSpecification" and _cls(spec.type.type) == "StringTypeSpecification":
-                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked
-                user.string_capacity(self, spec, literals.int_value(length[0]))
-                return self.pointer_type(spec, self._spec_type(spec.type, True), spec.indirection)
+                # POINTER TO STRING(255), which blark reads as a call: a POINTER TO STRING, its length checked (over
+                # 255 a POINTER TO the long string type of its length)
+                wide = str(spec.type.type.type_name).upper() == "WSTRING"
+                return self.pointer_type(spec, self._result_string(spec, wide, length[0]), spec.indirection)
             if self.user and spec.indirection is None and spec.init_parameters is not None:
                 length = [getattr(p, "value", p) for p in spec.init_parameters]
                 if _name(spec.type).upper() in ("STRING", "WSTRING") and len(length) == 1 \
                         and _cls(length[0]) == "Integer":
                     # a FUNCTION's or METHOD's result STRING(80), which blark reads as a call
-                    user.string_capacity(self, spec, literals.int_value(length[0]))
                     self.dialect(spec, f"a result of type {_name(spec.type).upper()}(n)")
-                    return T.WSTRING if _name(spec.type).upper() == "WSTRING" else T.STRING
+                    return self._result_string(spec, _name(spec.type).upper() == "WSTRING", length[0])
                 # TwinCAT's FB_init arguments: `Edge : R_TRIG();` is the instance alone; `List : FB_List(10);`
                 # gives them to the FB's METHOD FB_init (_fb_init)
                 t = self._spec_type(spec.type, allow_fb)
@@ -898,10 +908,11 @@ class Compiler:
                 and decl.value is None:
             # TYPE T_Text : STRING(80); END_TYPE (TwinCAT's T_MaxString): another name of STRING, its length checked
             self._declare_global(decl.name, "type")
-            if decl.string_type.length is not None:
-                user.string_length(self, decl.string_type)
+            t = user.string_type(self, decl.string_type)
+            if decl.string_type.length is not None:  # over 255 the long string type of its length (FsCommon's T_Path)
+                t = user.sized_string(self, decl.string_type)[0]
             self.dialect(decl, "a STRING type")
-            self.types[_name(decl.name).upper()] = user.string_type(self, decl.string_type)
+            self.types[_name(decl.name).upper()] = t
             return
         elif cls == "StringTypeDeclaration":
             raise self.err(decl, T.OUTSIDE_SUBSET["STRING"])
@@ -1807,6 +1818,8 @@ class Compiler:
             return f"(({t.cname}){{NULL, NULL}})"
         if t.kind == "vla":  # user mode: an FB's ARRAY [*] before its first call
             return varlen.default_c(t)
+        if t.kind == "longstring":  # user mode: STRING(n) over 255, empty
+            return f"(({t.cname}){{{{0}}}})"
         if t is T.WSTRING:
             return "__pacst_wstring(NULL, 0)"
         if t.is_string:

@@ -30,6 +30,8 @@ def size_align(t):
         return _struct(t)
     if t.is_fb:
         return None
+    if t.kind == "longstring":  # n units and the NUL
+        return (t.length + 1) * (2 if t.wide else 1), 2 if t.wide else 1
     return _C_TYPES.get(t.cname)
 
 

@@ -73,6 +73,8 @@ class Emitter:
             out.append(f"typedef enum {{\n{values}\n}} {t.cname};")
         elif t.is_array:
             out.append(f"typedef struct {{ {t.elem.cname} table[{t.high - t.low + 1}]; }} {t.cname};")
+        elif t.kind == "longstring":  # user mode: STRING(n) over 255, n units and the NUL as TwinCAT lays it out
+            out.append(f"typedef struct {{ {t.unit} body[{t.length + 1}]; }} {t.cname};")
         elif t.is_struct:
             members = "\n".join(f"  {m.type.cname} {m.cname};" for m in t.members)
             word = "union" if getattr(t, "union", False) else "struct"  # user mode: a UNION's members share memory
@@ -114,8 +116,8 @@ class Emitter:
             out += ["    " + line for line in self.comp.init_code(T.Var("e", "member", t.elem, None, None),
                                                                    "v->table[i]")]
             out.append("  }")
-        elif getattr(t, "union", False):  # the memory zeroed: every member reads 0
-            out.append("  memset(v, 0, sizeof *v);")
+        elif getattr(t, "union", False) or t.kind == "longstring":  # the memory zeroed: every member reads 0,
+            out.append("  memset(v, 0, sizeof *v);")  # a long string is empty
         else:
             for m in t.members:
                 out += ["  " + line for line in self.comp.init_code(m, f"v->{m.cname}")]

@@ -94,6 +94,52 @@ def changes_sign(source, target):
     return target.bits >= source.bits and not widens(source, target)
 
 
+def long_string_code(te, target):
+    """User mode: the C of `te` as `target` where one of them is a STRING(n) or WSTRING(n) over 255 (LongStringType),
+    as TwinCAT assigns strings of other lengths: cut to the target's n (a STRING's 255), the rest kept; None where
+    they are no such pair (a STRING and a WSTRING). A long value is read through an array of one, so that its
+    units have an address whatever the expression (C99 gives a function's result none)."""
+    src, dst = te.type, target
+    if "longstring" not in (src.kind, dst.kind):
+        return None
+    if src.kind == "longstring":
+        p = "__pacst_lwstr" if src.wide else "__pacst_lstr"
+        units = f"(({src.cname}[1]){{{te.code}}})[0].body"
+        if dst is src.short:
+            return f"{p}_short({units}, {src.length})"
+        if dst.kind == "longstring" and dst.wide == src.wide:
+            return f"(*({dst.cname} *){p}_copy(({dst.cname}){{{{0}}}}.body, {dst.length}, {units}, {src.length}))"
+        return None
+    if src is dst.short:
+        p = "__pacst_lwstr" if dst.wide else "__pacst_lstr"
+        return f"(*({dst.cname} *){p}_of_short(({dst.cname}){{{{0}}}}.body, {dst.length}, {te.code}))"
+    return None
+
+
+def long_inout_hint(actual, expected):
+    """What to write where a string of one length is given to a VAR_IN_OUT of another and one of them is over 255
+    (user mode), else ""."""
+    if "longstring" not in (actual.kind, expected.kind) or not (actual.is_string or expected.is_string
+                                                                 or actual.kind == expected.kind):
+        return ""
+    return (f": a VAR_IN_OUT takes a variable of its own type; declare it {actual.name}, or VAR_IN_OUT CONSTANT "
+            f"where it is only read (a string over {user.STRING_CAPACITY} is read there as its first "
+            f"{user.STRING_CAPACITY} characters)")
+
+
+def _long_string_pointer(ex, source, target, node):
+    """Refuses a pointer to a STRING(n) over 255 given to a POINTER TO STRING (or the other way): pacst's STRING is
+    a length and 255 bytes, the long one TwinCAT's n characters and a NUL, so the one read through the other's
+    pointer would read other bytes."""
+    kinds = (source.kind, target.kind)
+    if "longstring" in kinds and source is not target and (source.is_string or target.is_string
+                                                           or kinds == ("longstring", "longstring")):
+        raise ex.err(node, f"a POINTER TO {source.name} given where a POINTER TO {target.name} is expected: pacst "
+                           f"lays out a STRING(n) over {user.STRING_CAPACITY} as TwinCAT does, its n characters and a "
+                           f"NUL, but a STRING of up to {user.STRING_CAPACITY} as a length and the characters; declare "
+                           "the pointer as the variable's type")
+
+
 def _ltime_converted(st, dt, code):
     """User mode: LTIME to and from a number of nanoseconds (LTIME_TO_ULINT, LREAL_TO_LTIME), as TwinCAT and
     CODESYS count it, unsigned; TIME_TO_LTIME exact, LTIME_TO_TIME to whole milliseconds, TIME's resolution."""
@@ -131,6 +177,10 @@ class ExprCompiler:
         widening ones TwinCAT and CODESYS make, widens())."""
         if te.type is target:
             return te.code
+        if self.comp.user and "longstring" in (te.type.kind, target.kind):
+            code = long_string_code(te, target)
+            if code is not None:
+                return code
         if te.type is T.ANY_INT and target.is_pointer and te.value == 0:
             return "NULL"  # user mode: p := 0, p <> 0
         if te.type is T.ANY_INT and target.kind == "interface" and te.value == 0:
@@ -148,6 +198,7 @@ class ExprCompiler:
         if self.comp.user and system.same_struct(te.type, target):  # an ANY input to a __SYSTEM.AnyType
             return te.code
         if te.type.is_pointer and target.is_pointer and self.comp.user:
+            _long_string_pointer(self, te.type.target, target.target, node)
             return f"(({target.cname})({te.code}))"  # ADR's result is any pointer, as TwinCAT's PVOID
         if te.type is T.ANY_INT:
             if target.is_int or target.is_bit:
@@ -197,6 +248,9 @@ class ExprCompiler:
             hint = f" (write {te.type.name}_TO_{target.name})"
         elif target.is_enum and self.comp.user:
             hint = f" (assign a value of {target.name})"
+        elif self.comp.user and "longstring" in (te.type.kind, target.kind) and \
+                (te.type.is_string or target.is_string or te.type.kind == target.kind):
+            hint = " (write STRING_TO_WSTRING or WSTRING_TO_STRING, which take and give 255 characters)"
         else:
             hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
@@ -630,6 +684,8 @@ class ExprCompiler:
                 raise self.err(side, f"comparison of the {te.type.name} result of arithmetic, NOT or a shift: "
                                      "MATIEC compares it as a promoted C int; store it in a variable first")
         a, b = self._enum_as_number(node, a, b), self._enum_as_number(node, b, a)
+        if self.comp.user and "longstring" in (a.type.kind, b.type.kind):
+            return self._long_compare(node, op, a, b)
         t, ca, cb = self.unify(a, b, None, node)
         if t.is_array or t.is_struct or t.is_fb:
             raise self.err(node.op, f"{t.name} values cannot be compared")
@@ -652,6 +708,23 @@ class ExprCompiler:
         if t.is_time:
             return TE(T.BOOL, f"(__time_cmp({ca}, {cb}) {_CMP_C[op]} 0)")
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
+
+    def _long_compare(self, node, op, a, b):
+        """User mode: = and <> with a STRING(n) or WSTRING(n) over 255: the whole texts compared, to its NUL."""
+        if op not in ("=", "<>"):
+            raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
+        other_side = node.right
+        if a.type.kind != "longstring":
+            a, b, other_side = b, a, node.left
+        t = a.type
+        p = "__pacst_lwstr" if t.wide else "__pacst_lstr"
+        units = f"(({t.cname}[1]){{{a.code}}})[0].body"
+        if b.type.kind == "longstring" and b.type.wide == t.wide:
+            other = f"(({b.type.cname}[1]){{{b.code}}})[0].body"
+            code = f"{p}_eq({units}, {t.length}, {other}, {b.type.length})"
+        else:
+            code = f"{p}_eq_short({units}, {t.length}, {self.coerce(b, t.short, other_side, 'operand')})"
+        return TE(T.BOOL, f"({'' if op == '=' else '!'}{code})")
 
     def _enum_as_number(self, node, te, other):
         """User mode: `te`, an enumeration value compared with an integer or bit string that cannot hold all its values
@@ -717,8 +790,9 @@ class ExprCompiler:
         if not named:
             raise self.err(node, "AssertEquals needs Expected := and Actual := with a typed variable")
         # an enumeration by its number (TcUnit compares it as its base type)
-        name = named[0].name if named[0] is T.WSTRING else "STRING" if named[0].is_string else \
-            "DINT" if named[0].is_enum else named[0].name
+        first = named[0].short if named[0].kind == "longstring" else named[0]  # STRING(300): as T_MaxString
+        name = first.name if first is T.WSTRING else "STRING" if first.is_string else \
+            "DINT" if first.is_enum else first.name
         if f"ASSERTEQUALS_{name}" not in self.comp.pous:
             have = sorted(n[len("ASSERTEQUALS_"):] for n in self.comp.pous if n.startswith("ASSERTEQUALS_"))
             raise self.err(node, f"AssertEquals on {named[0].name}: pac-test asserts {', '.join(have)}; "
@@ -766,6 +840,8 @@ class ExprCompiler:
         if m and self.comp.user and up not in self.comp.pous:  # TO_DINT(x): from the argument's type
             (arg,) = self._positional(node, 1, ["IN"])
             te = self.expr(arg, None)
+            if te.type.kind == "longstring":  # TO_STRING(Path): its first 255 characters, then as a STRING's
+                te = TE(te.type.short, long_string_code(te, te.type.short))
             src = self.default_type(te, None).name if te.type.kind in ("anyint", "anyreal") else te.type.name
             if te.type.is_enum:
                 src = "DINT"
@@ -795,15 +871,9 @@ class ExprCompiler:
             return self._std_numeric(node, up, want)
         if self.comp.user and up in _STRING_FUNCTIONS and up not in self.comp.pous:
             return self._string_function(node, up)
-        if self.comp.user and up == "WLEN" and up not in self.comp.pous:  # a WSTRING's characters, as LEN counts
-            (arg,) = self._positional(node, 1, ["IN"], ["STR"])
-            self.comp.dialect(node, "WLEN")
-            return TE(T.INT, f"__pacst_wstr_len({self.coerce(self.expr(arg, T.WSTRING), T.WSTRING, arg, 'argument')})")
-        if self.comp.user and up == "WCONCAT" and up not in self.comp.pous:  # Tc2_Standard's CONCAT of WSTRINGs
-            first, second = self._positional(node, 2, ["IN1", "IN2"], ["STR1", "STR2"])
-            self.comp.dialect(node, "WCONCAT")
-            a, b = (self.coerce(self.expr(x, T.WSTRING), T.WSTRING, x, "argument") for x in (first, second))
-            return TE(T.WSTRING, f"__pacst_wstr_concat({a}, {b})")
+        if self.comp.user and up[1:] in _STRING_FUNCTIONS and up[0] == "W" and up not in self.comp.pous:
+            self.comp.dialect(node, up)  # Tc2_Standard's and Standard's WLEN, WCONCAT, WLEFT, ...: on code units
+            return self._string_function(node, up[1:], wide=True)
         if up in self.comp.pous and self.comp.user and self.body is not None and self.body.lookup(name) is not None \
                 and self.comp.pous[up].kind == "function":
             raise self.err(node, f"'{name}' is a variable in this POU, which hides the FUNCTION of that name: rename "
@@ -1010,13 +1080,17 @@ class ExprCompiler:
         code = self.coerce(self.expr(arg, st), st, arg, "argument")
         return f"__pacst_wstring_to_string({code})" if st is T.WSTRING else code
 
-    def _string_function(self, node, fn):
+    def _string_function(self, node, fn, wide=False):
         """The standard string functions (user mode): positions count from 1, results keep at most the
-        STRING capacity, as MATIEC's library does."""
+        STRING capacity, as MATIEC's library does; `wide`: their W versions (WLEFT) on a WSTRING's code units."""
+        st, prefix = (T.WSTRING, "__pacst_wstr") if wide else (T.STRING, "__pacst_str")
         names = _STRING_FUNCTIONS[fn]
         if fn == "CONCAT" and len(node.parameters) > 2 and all(p.name is None for p in node.parameters):
             names = [f"IN{i + 1}" for i in range(len(node.parameters))]
         vendor = _STRING_PINS[fn] if len(_STRING_PINS[fn]) == len(names) else None  # not CONCAT of 3 or more
+        if wide and fn == "DELETE" and any(getattr(p, "name", None) is not None and
+                                           _name(p.name.name).upper() == "STR1" for p in node.parameters):
+            vendor = ["STR1", "LEN", "POS"]  # TwinCAT's WDELETE names its string STR1, CODESYS's STR
         args = self._positional(node, len(names), names, vendor)
         codes = []
         for name, arg in zip(names, args):
@@ -1027,13 +1101,13 @@ class ExprCompiler:
                 codes.append(self.coerce(te, T.INT, arg, "argument") if te.type is T.ANY_INT
                              else f"(long)({te.code})")
             else:
-                codes.append(self.coerce(self.expr(arg, T.STRING), T.STRING, arg, "argument"))
+                codes.append(self.coerce(self.expr(arg, st), st, arg, "argument"))
         if fn == "CONCAT":
             code = codes[0]
             for c in codes[1:]:
-                code = f"__pacst_str_concat({code}, {c})"
-            return TE(T.STRING, code)
-        return TE(T.INT if fn in ("LEN", "FIND") else T.STRING, f"__pacst_str_{fn.lower()}({', '.join(codes)})")
+                code = f"{prefix}_concat({code}, {c})"
+            return TE(st, code)
+        return TE(T.INT if fn in ("LEN", "FIND") else st, f"{prefix}_{fn.lower()}({', '.join(codes)})")
 
     def _positional(self, node, count, names, vendor_names=None):
         """Arguments of a standard function: all positional, or all formal with the IEC pin names (or, in
@@ -1329,6 +1403,8 @@ class ExprCompiler:
         """The C pointer a VAR_IN_OUT CONSTANT is given: a variable's address, or (as TwinCAT takes a literal or an
         expression there) the address of a one-element array holding the value, alive during the call."""
         ref = system.variable(self, arg)
+        if ref is not None and ref.type.kind == "longstring" and v.type is ref.type.short:
+            ref = None  # a STRING(1023) read as a VAR_IN_OUT CONSTANT STRING, as Beckhoff's help passes a long one
         if ref is not None:
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to VAR_IN_OUT CONSTANT '{v.name}' of type "
@@ -1415,6 +1491,7 @@ class ExprCompiler:
                                          "passed")
                 if arg is None:
                     args.append(self.comp.default_c(v.type) if v.type.is_elementary or v.type.is_enum
+                                or v.type.kind == "longstring"
                                 else f"__pacst_default_{v.type.cname}()")  # the TYPE's member defaults
                     if v.init is not None:
                         args[-1] = self.coerce(self.comp.literal_te(v.init, v.type), v.type, v.init)
@@ -1447,7 +1524,7 @@ class ExprCompiler:
                 raise self.err(arg, "initial value must be a literal")
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to {v.section} '{v.name}' of type "
-                                    f"{v.type.name}")
+                                    f"{v.type.name}{long_inout_hint(ref.type, v.type)}")
             if not ref.writable:
                 raise self.err(arg, f"'{ref.var.name}' cannot be written: {ref.why_not}")
             if v.section == "inout" and ref.subscripted and not self.comp.user:

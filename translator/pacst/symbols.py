@@ -32,6 +32,9 @@ def type_json(t):
         return {"kind": "pointer", "name": t.name, "c_type": t.cname, "target": type_json(t.target)}
     if t.kind == "interface":
         return {"kind": "interface", "name": t.name, "c_type": t.cname}
+    if t.kind == "longstring":  # STRING(n) over 255: n units and the NUL
+        return {"kind": "long_string", "name": t.name, "c_type": t.cname, "length": t.length,
+                "size": (t.length + 1) * (2 if t.wide else 1)}
     if t.kind == "vla":  # an ARRAY [*]: the descriptor of the array an FB was last given
         return {"kind": "var_length_array", "name": t.name, "c_type": t.cname, "element": type_json(t.elem)}
     return {"kind": "elementary", "name": t.name, "c_type": t.cname, "size": _C_SIZES[t.cname]}
@@ -96,7 +99,7 @@ def symbols(comp, program):
                 entry["list"] = obj.name
                 entry["line"] = v.node.line
                 table["globals"].append(entry)
-        elif kind == "type" and not obj.name.startswith("ARRAY ["):
+        elif kind == "type" and not obj.name.startswith("ARRAY [") and obj.kind != "longstring":
             table["types"].append(_type(obj))
         elif kind == "pou" and obj.program:
             table["programs"].append(_pou(comp, obj))

@@ -98,6 +98,25 @@ STRING = ELEMENTARY["STRING"]
 # (pacst_iec.h's WSTRING); a string for ST's rules, but no STRING where a WSTRING is expected: WSTRING_TO_STRING
 # and back are written.
 WSTRING = Elementary("WSTRING", "string", 0)
+
+
+class LongStringType(Type):
+    """User mode: STRING(n) or WSTRING(n) with n over 255, longer than pacst's STRING: a C type of its own, the n
+    characters (code units) and the terminating NUL as TwinCAT lays it out (SIZEOF n + 1, two bytes a unit for a
+    WSTRING). The string functions take and give STRING(255), as Tc2_Standard's do: an argument is cut to 255."""
+
+    kind = "longstring"
+
+    def __init__(self, length, wide):
+        word = "WSTRING" if wide else "STRING"
+        super().__init__(f"{word}({length})")
+        self.length = length
+        self.wide = wide
+        self.short = WSTRING if wide else STRING  # the type its text is read as by the string functions
+        self.unit = "uint16_t" if wide else "uint8_t"
+        self.cname = f"__PACST_{word}_{length}"
+
+
 # A STRING literal may not be longer than CODESYS's and TwinCAT's default STRING (80 characters).
 STRING_LITERAL_MAX = 80
 

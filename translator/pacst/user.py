@@ -21,6 +21,9 @@ from .order import mentioned_names
 # The largest STRING of pacst's C (STR_MAX_LEN of pacst_iec.h): TwinCAT's T_MaxString, the longest string its
 # string functions take. MATIEC's STRING holds 126: a longer STRING(n) or literal is dialect there.
 STRING_CAPACITY = 255
+# A STRING(n) or WSTRING(n) longer than STRING_CAPACITY is a type of its own (types.LongStringType), up to this n:
+# TwinCAT and CODESYS name no largest n (docs/open_points.md); pacst takes what a WORD counts.
+LONG_STRING_CAPACITY = 65535
 MATIEC_STRING_CAPACITY = 126
 # The namespaces of the standard library in TwinCAT (Tc2_Standard) and CODESYS (Standard): the standard FBs
 # and functions may be written Tc2_Standard.TON, Standard.LEN in user programs.
@@ -121,9 +124,29 @@ def string_type(comp, spec):
     return T.STRING if name == "STRING" else None
 
 
+def sized_string(comp, tok):
+    """(type, n or None) of a StringTypeSpecification with a length, as a variable, member, element or type name
+    takes it: STRING or WSTRING with its n kept up to 255, the long string type of its own above."""
+    n = string_length(comp, tok)
+    short = string_type(comp, tok)
+    if n <= STRING_CAPACITY:
+        return short, n
+    return long_string(comp, n, short is T.WSTRING), None
+
+
+def long_string(comp, n, wide):
+    """The LongStringType of STRING(n) or WSTRING(n), declared once a program (in the C of the first file)."""
+    t = comp.long_strings.get((n, wide))
+    if t is None:
+        t = T.LongStringType(n, wide)
+        comp.long_strings[(n, wide)] = t
+        comp.program.items.append(("type", t, comp.file))
+    return t
+
+
 def string_length(comp, spec):
     """The n of STRING(n) / STRING[n]: a literal integer, or an integer constant as an array bound takes one
-    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity."""
+    (`STRING(PARAM_Constants.PATH_LENGTH)`), up to pacst's capacity (LONG_STRING_CAPACITY)."""
     expr = spec.length.length
     if _cls(expr) == "ParenthesizedExpression":  # STRING(n)
         expr = expr.expr
@@ -141,11 +164,14 @@ def string_length(comp, spec):
 
 
 def string_capacity(comp, spec, n, kind="STRING"):
-    """`n`, when a STRING(n) (a `kind`(n)) holds it; else the refusal at `spec`."""
+    """`n`, when a STRING(n) (a `kind`(n)) holds it, up to LONG_STRING_CAPACITY (over STRING_CAPACITY a type of its
+    own, types.LongStringType); else the refusal at `spec`."""
+    if STRING_CAPACITY < n <= LONG_STRING_CAPACITY:
+        comp.dialect(spec, f"{kind}(n) with n over {STRING_CAPACITY}")
+        return n
     if not 1 <= n <= STRING_CAPACITY:
-        raise comp.err(spec, f"{kind}({n}): pacst's {kind} holds 1 to {STRING_CAPACITY} characters, as many as "
-                             f"TwinCAT's string functions take (T_MaxString); declare {kind}({STRING_CAPACITY}) or "
-                             "shorter where the program's texts fit, or leave the POU out of the program tested")
+        raise comp.err(spec, f"{kind}({n}): pacst's {kind}(n) holds 1 to {LONG_STRING_CAPACITY} characters; "
+                             f"declare {kind}({LONG_STRING_CAPACITY}) or shorter where the program's texts fit")
     if n > MATIEC_STRING_CAPACITY:
         comp.dialect(spec, f"STRING({n}) (MATIEC's STRING holds {MATIEC_STRING_CAPACITY} characters)")
     return n
@@ -208,7 +234,7 @@ def var_type(comp, init, allow_fb, in_out=False):
         spec = init.spec
         tok = getattr(spec, "type", None) if _cls(spec) == "SimpleSpecification" else spec
         if _cls(tok) == "StringTypeSpecification" and string_type(comp, tok) is not None:
-            return string_type(comp, tok), string_length(comp, tok) if tok.length is not None else None
+            return sized_string(comp, tok) if tok.length is not None else (string_type(comp, tok), None)
         if cls == "TypeInitialization":
             return comp._spec_type(spec, allow_fb=allow_fb), None
     if cls == "SubrangeTypeInitialization" and init.indirection is None and init.spec.subrange is not None:

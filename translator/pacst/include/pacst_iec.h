@@ -134,25 +134,63 @@ static inline int __pacst_string_eq(STRING a, STRING b) {
     return 1;
 }
 
-/* The standard string functions of user programs (pacst --user): positions count from 1, a result
- * keeps at most STR_MAX_LEN characters, a position or length outside the string is clamped to it. */
+/* The standard string functions of user programs (pacst --user), on a STRING's bytes (__pacst_str_) and on a
+ * WSTRING's code units (__pacst_wstr_: Tc2_Standard's WLEN, WCONCAT, WLEFT, ...): positions count from 1, a result
+ * keeps at most STR_MAX_LEN units, a position or length outside the string is clamped to it. */
 static inline long __pacst_str_clamp(long v, long lo, long hi) { return v < lo ? lo : v > hi ? hi : v; }
-static inline STRING __pacst_str_part(STRING s, long from, long count) {
-    STRING r;
-    long i;
-    from = __pacst_str_clamp(from, 0, s.len);
-    count = __pacst_str_clamp(count, 0, s.len - from);
-    r.len = (uint8_t)count;
-    for (i = 0; i < STR_MAX_LEN; i++) r.body[i] = (uint8_t)(i < count ? s.body[from + i] : 0);
-    return r;
-}
-static inline STRING __pacst_str_concat(STRING a, STRING b) {
-    long i, n = a.len;
-    for (i = 0; i < b.len && n < STR_MAX_LEN; i++) a.body[n++] = b.body[i];
-    a.len = (uint8_t)n;
-    return a;
-}
-static inline INT __pacst_str_len(STRING s) { return (INT)s.len; }
+#define __PACST_STRING_FUNCTIONS(S, LEN, P)                                                                    \
+    static inline S __pacst_##P##_part(S s, long from, long count) {                                         \
+        S r;                                                                                                   \
+        from = __pacst_str_clamp(from, 0, s.len);                                                              \
+        count = __pacst_str_clamp(count, 0, s.len - from);                                                     \
+        memset(&r, 0, sizeof r);                                                                               \
+        r.len = (LEN)count;                                                                                    \
+        memcpy(r.body, s.body + from, (size_t)count * sizeof r.body[0]);                                       \
+        return r;                                                                                              \
+    }                                                                                                          \
+    static inline S __pacst_##P##_concat(S a, S b) {                                                         \
+        size_t n = b.len < STR_MAX_LEN - a.len ? b.len : (size_t)(STR_MAX_LEN - a.len);                        \
+        memcpy(a.body + a.len, b.body, n * sizeof a.body[0]);                                                  \
+        a.len = (LEN)(a.len + n);                                                                              \
+        return a;                                                                                              \
+    }                                                                                                          \
+    static inline INT __pacst_##P##_len(S s) { return (INT)s.len; }                                         \
+    static inline S __pacst_##P##_limit(S s, long n) { return __pacst_##P##_part(s, 0, n); }                 \
+    static inline S __pacst_##P##_left(S s, long l) { return __pacst_##P##_part(s, 0, l); }                  \
+    static inline S __pacst_##P##_right(S s, long l) {                                                       \
+        l = __pacst_str_clamp(l, 0, s.len);                                                                    \
+        return __pacst_##P##_part(s, s.len - l, l);                                                            \
+    }                                                                                                          \
+    static inline S __pacst_##P##_mid(S s, long l, long p) {                                                 \
+        if (p < 1 || p > s.len) return __pacst_##P##_part(s, 0, 0);                                            \
+        return __pacst_##P##_part(s, p - 1, l);                                                                \
+    }                                                                                                          \
+    static inline INT __pacst_##P##_find(S s, S what) {                                                      \
+        long i;                                                                                                \
+        if (what.len == 0) return 0;                                                                           \
+        for (i = 0; i + what.len <= s.len; i++) {                                                              \
+            if (memcmp(s.body + i, what.body, what.len * sizeof s.body[0]) == 0) return (INT)(i + 1);          \
+        }                                                                                                      \
+        return 0;                                                                                              \
+    }                                                                                                          \
+    static inline S __pacst_##P##_replace(S s, S with, long l, long p) {                                     \
+        p = __pacst_str_clamp(p, 1, (long)s.len + 1);                                                          \
+        l = __pacst_str_clamp(l, 0, (long)s.len - (p - 1));                                                    \
+        return __pacst_##P##_concat(__pacst_##P##_concat(__pacst_##P##_part(s, 0, p - 1), with),               \
+                                    __pacst_##P##_part(s, p - 1 + l, s.len));                                  \
+    }                                                                                                          \
+    static inline S __pacst_##P##_insert(S s, S with, long p) {                                              \
+        p = __pacst_str_clamp(p, 0, s.len);                                                                    \
+        return __pacst_##P##_concat(__pacst_##P##_concat(__pacst_##P##_part(s, 0, p), with),                   \
+                                    __pacst_##P##_part(s, p, s.len));                                          \
+    }                                                                                                          \
+    static inline S __pacst_##P##_delete(S s, long l, long p) {                                              \
+        S none;                                                                                                \
+        memset(&none, 0, sizeof none);                                                                         \
+        return __pacst_##P##_replace(s, none, l, p);                                                           \
+    }
+__PACST_STRING_FUNCTIONS(STRING, uint8_t, str)
+__PACST_STRING_FUNCTIONS(WSTRING, uint16_t, wstr)
 /* INT_TO_STRING and the other integer conversions to STRING: decimal, a '-' before a negative value (ULINT and
    LWORD: the magnitude u alone). */
 static inline STRING __pacst_digits_to_string(unsigned long long u, int negative) {
@@ -250,41 +288,6 @@ static inline STRING __pacst_real_to_string(double v, int digits) {
     }
     return __pacst_string(text, n);
 }
-static inline STRING __pacst_str_limit(STRING s, long n) { return __pacst_str_part(s, 0, n); }
-static inline STRING __pacst_str_left(STRING s, long l) { return __pacst_str_part(s, 0, l); }
-static inline STRING __pacst_str_right(STRING s, long l) {
-    l = __pacst_str_clamp(l, 0, s.len);
-    return __pacst_str_part(s, s.len - l, l);
-}
-static inline STRING __pacst_str_mid(STRING s, long l, long p) {
-    if (p < 1 || p > s.len) return __pacst_str_part(s, 0, 0);
-    return __pacst_str_part(s, p - 1, l);
-}
-static inline INT __pacst_str_find(STRING s, STRING what) {
-    long i, j;
-    if (what.len == 0) return 0;
-    for (i = 0; i + what.len <= s.len; i++) {
-        for (j = 0; j < what.len && s.body[i + j] == what.body[j]; j++) {
-        }
-        if (j == what.len) return (INT)(i + 1);
-    }
-    return 0;
-}
-static inline STRING __pacst_str_replace(STRING s, STRING with, long l, long p) {
-    p = __pacst_str_clamp(p, 1, (long)s.len + 1);
-    l = __pacst_str_clamp(l, 0, (long)s.len - (p - 1));
-    return __pacst_str_concat(__pacst_str_concat(__pacst_str_part(s, 0, p - 1), with),
-                              __pacst_str_part(s, p - 1 + l, s.len));
-}
-static inline STRING __pacst_str_insert(STRING s, STRING with, long p) {
-    p = __pacst_str_clamp(p, 0, s.len);
-    return __pacst_str_concat(__pacst_str_concat(__pacst_str_part(s, 0, p), with), __pacst_str_part(s, p, s.len));
-}
-static inline STRING __pacst_str_delete(STRING s, long l, long p) {
-    STRING none;
-    none.len = 0;
-    return __pacst_str_replace(s, none, l, p);
-}
 /* User mode: a WSTRING's code units as LEN, CONCAT and = take a STRING's bytes above (s[i]: __PACST_STRING_UNIT).
  * A literal is its units; a unit past the room is dropped, as a STRING's byte is. */
 static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
@@ -296,18 +299,6 @@ static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
 }
 static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
     return a.len == b.len && memcmp(a.body, b.body, (size_t)a.len * sizeof a.body[0]) == 0;
-}
-static inline INT __pacst_wstr_len(WSTRING s) { return (INT)s.len; }
-static inline WSTRING __pacst_wstr_limit(WSTRING s, long n) {
-    if (n < (long)s.len) s.len = (uint16_t)(n < 0 ? 0 : n);
-    memset(s.body + s.len, 0, (size_t)(STR_MAX_LEN - s.len) * sizeof s.body[0]);
-    return s;
-}
-static inline WSTRING __pacst_wstr_concat(WSTRING a, WSTRING b) {
-    size_t n = b.len < STR_MAX_LEN - a.len ? b.len : (size_t)(STR_MAX_LEN - a.len);
-    memcpy(a.body + a.len, b.body, n * sizeof a.body[0]);
-    a.len = (uint16_t)(a.len + n);
-    return a;
 }
 /* WSTRING_TO_STRING: a unit above 16#FF has no STRING character and is skipped, as Tc2_Utilities'
  * WSTRING_TO_STRING2 and WCHAR_TO_CHAR skip it; STRING_TO_WSTRING: each byte the unit of its number. */
@@ -329,6 +320,49 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
     for (i = 0; i < s.len && i < STR_MAX_LEN; i++) w.body[i] = s.body[i];
     return w;
 }
+
+/* User mode: a STRING(n) or WSTRING(n) with n over STR_MAX_LEN is a C type of its own (pacst's LongStringType), its
+ * n units and a NUL as TwinCAT lays it out; these read and write one by the address of its units and its n. _short:
+ * its first STR_MAX_LEN units as a STRING (WSTRING), as the string functions' STRING(255) inputs take it; _of_short
+ * and _copy: a STRING or another long string written into one, cut to its n; _eq and _eq_short compare the text. */
+#define __PACST_LONG_STRING(S, UNIT, LEN, P)                                                                   \
+    static inline size_t __pacst_##P##_units(const UNIT *body, size_t n) {                                   \
+        size_t k = 0;                                                                                          \
+        while (k < n && body[k] != 0) k++;                                                                     \
+        return k;                                                                                              \
+    }                                                                                                          \
+    static inline S __pacst_##P##_short(const UNIT *body, size_t n) {                                        \
+        S s;                                                                                                   \
+        size_t k = __pacst_##P##_units(body, n);                                                               \
+        if (k > STR_MAX_LEN) k = STR_MAX_LEN;                                                                  \
+        memset(&s, 0, sizeof s);                                                                               \
+        s.len = (LEN)k;                                                                                        \
+        memcpy(s.body, body, k * sizeof(UNIT));                                                                \
+        return s;                                                                                              \
+    }                                                                                                          \
+    static inline UNIT *__pacst_##P##_of_short(UNIT *body, size_t n, S s) {                                  \
+        size_t k = s.len < n ? s.len : n;                                                                      \
+        memcpy(body, s.body, k * sizeof(UNIT));                                                                \
+        memset(body + k, 0, (n + 1 - k) * sizeof(UNIT));                                                       \
+        return body;                                                                                           \
+    }                                                                                                          \
+    static inline UNIT *__pacst_##P##_copy(UNIT *body, size_t n, const UNIT *from, size_t m) {               \
+        size_t k = __pacst_##P##_units(from, m);                                                               \
+        if (k > n) k = n;                                                                                      \
+        memmove(body, from, k * sizeof(UNIT));                                                                 \
+        memset(body + k, 0, (n + 1 - k) * sizeof(UNIT));                                                       \
+        return body;                                                                                           \
+    }                                                                                                          \
+    static inline int __pacst_##P##_eq(const UNIT *a, size_t n, const UNIT *b, size_t m) {                   \
+        size_t k = __pacst_##P##_units(a, n);                                                                  \
+        return k == __pacst_##P##_units(b, m) && memcmp(a, b, k * sizeof(UNIT)) == 0;                          \
+    }                                                                                                          \
+    static inline int __pacst_##P##_eq_short(const UNIT *a, size_t n, S s) {                                 \
+        size_t k = __pacst_##P##_units(a, n);                                                                  \
+        return k == s.len && memcmp(a, s.body, k * sizeof(UNIT)) == 0;                                        \
+    }
+__PACST_LONG_STRING(STRING, uint8_t, uint8_t, lstr)
+__PACST_LONG_STRING(WSTRING, uint16_t, uint16_t, lwstr)
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
 extern TIME __CURRENT_TIME;
