@@ -4,7 +4,7 @@ import re
 
 from lark import Token
 
-from .scanner import ARGUMENTS, DATE_AND_TIME, INITIAL_VALUE, LOCATED, UNION, Decline, node
+from .scanner import ARGUMENTS, DATE_AND_TIME, INITIAL_VALUE, LOCATED, STRING_TYPE, UNION, Decline, node
 from .vocabulary import BIT_STRING_TYPES, INTEGER_TYPES, OTHER_DATE_TYPES, elementary_type
 
 _ATTRIBUTES = frozenset(("RETAIN", "NON_RETAIN", "PERSISTENT", "CONSTANT"))
@@ -93,6 +93,8 @@ class Declarations:
             return node("array_type_declaration", [name, colon, self._array_spec_init(s)])
         if word == "UNION":
             raise Decline(UNION)
+        if word in ("STRING", "WSTRING"):
+            raise Decline(STRING_TYPE)
         if word is not None and word not in ("STRING", "WSTRING", "POINTER", "REFERENCE"):
             # an alias of a named or elementary type; a STRING is a string_type_declaration to blark
             spec = self._spec_init(s)

@@ -2,12 +2,14 @@
 operands and operator tokens, down to unary_expression over a primary."""
 import re
 
-from .scanner import Decline, node
+from .scanner import TIME_CALL, Decline, node
 
 _NAME_THEN_ARROW = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*(:=|=>)")
 _DOTTED = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z_][A-Za-z0-9_]*)*(?![A-Za-z0-9_.])")
 _DEREF_FIELD = re.compile(r"\^[ \t\f\r\n]*\.")
 _TYPE_ARGUMENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*[,)]")
+# CODESYS's TIME() and LTIME(), the time since the PLC started: a type's name called, left to blark
+_CALL_WITHOUT_ARGUMENTS = re.compile(r"[A-Za-z_][A-Za-z0-9_]*[ \t\f\r\n]*\([ \t\f\r\n]*\)")
 _BIT = re.compile(r"[0-9][0-9_]*")
 # what may not follow a bit number (`w.3.5`, `w.3a`): Earley's to read or refuse
 _RUNS_ON = re.compile(r"[A-Za-z0-9_#]|\.[0-9]")
@@ -93,6 +95,8 @@ class Expressions:
         if word is not None and self._vocabulary.is_type_word(word) and _TYPE_ARGUMENT.match(s.text, s.pos):
             # a type as an argument (`__NEW(BYTE, 4)`, `SIZEOF(LREAL)`): a variable_name to blark
             return node("variable_name", [s.word_token("IDENTIFIER"), None])
+        if word in ("TIME", "LTIME") and _CALL_WITHOUT_ARGUMENTS.match(s.text, s.pos):
+            raise Decline(TIME_CALL)
         var = self.variable(s)
         if s.peek_punct() == "(":
             return self.call(s, var)

@@ -23,7 +23,9 @@ LOCATED = "a located variable"
 DATE_AND_TIME = "a date and time type or literal"
 ARGUMENTS = "an FB instance's arguments or a subrange"
 UNION = "a UNION"
-LEFT_TO_EARLEY = frozenset((INITIAL_VALUE, LOCATED, DATE_AND_TIME, ARGUMENTS, UNION))
+STRING_TYPE = "a STRING type declaration"
+TIME_CALL = "CODESYS's TIME() or LTIME()"
+LEFT_TO_EARLEY = frozenset((INITIAL_VALUE, LOCATED, DATE_AND_TIME, ARGUMENTS, UNION, STRING_TYPE, TIME_CALL))
 
 
 class Anon:
