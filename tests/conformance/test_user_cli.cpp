@@ -442,7 +442,7 @@ TEST_F(TranslatorUserCli, PlcopenRefusalInADeclarationIsAtTheVariablesLine) {
 <variable name="t"><type><derived name="NoSuchType"/></type></variable>
 </localVars>
 <outputVars>
-<variable name="s"><type><string length="300"/></type></variable>
+<variable name="s"><type><string length="70000"/></type></variable>
 </outputVars>
 </interface>
 <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := n + 1;</xhtml></ST></body>
