@@ -376,22 +376,28 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
     return results
 
 
+# Whether parse_files freezes the trees it loads (_LoadingTrees): `python -m pacst` sets it, a process that runs one
+# translation. A process that translates many programs in turn (a test suite) leaves it off: what is alive at a
+# freeze and dies later as a cycle (a Compiler of the program before) would never be collected.
+FREEZE_LOADED_TREES = False
+
+
 class _LoadingTrees:
-    """Python's cyclic garbage collector off while parsed trees load, and their objects left out of its later
-    passes (frozen): a library's trees are a few hundred thousand objects that live as long as the caller holds
-    them, none of them garbage, over which the collector's passes cost more than the loads (about half of a
-    library's `pacst build`, 1 s of CPU). They hold no cycles, so dropped they are freed all the same. The
-    garbage already there is collected first, so that the freeze keeps none of it (checked.load freezes its state too)."""
+    """With FREEZE_LOADED_TREES, Python's cyclic garbage collector off while parsed trees load, and their objects
+    left out of its later passes (frozen): a library's trees are a few hundred thousand objects that live as long
+    as the run, none of them garbage, over which the collector's passes cost more than the loads (about half of a
+    library's `pacst build`, 1 s of CPU). They hold no cycles, so dropped they are freed all the same. The garbage
+    already there is collected first, so that the freeze keeps none of it (checked.load freezes its state too)."""
 
     def __enter__(self):
-        self._enabled = gc.isenabled()
+        self._enabled = FREEZE_LOADED_TREES and gc.isenabled()
         if self._enabled:
             gc.collect()
             gc.disable()
 
     def __exit__(self, *exc):
-        gc.freeze()
         if self._enabled:
+            gc.freeze()
             gc.enable()
 
 
