@@ -14,8 +14,8 @@ functions gives a call and its result type in each row: each accepted call is as
 that type in a PROGRAM and translates (the accepted calls in one PROGRAM, each alone when that one is
 refused), each refused one is refused. Exit status 1 names every mismatch."""
 import argparse
-import glob
 import gc
+import glob
 import os
 import re
 import sys
