@@ -5,7 +5,6 @@ stands for what this run would make itself: the same translator and packages, th
 SHA-256 each), every one of them given to this run, and nothing of the run's that the check could have seen (a
 namespace or a native FUNCTION it did not have). Anything else and the run parses and checks them as it would
 without the file: a stale file costs time, never a wrong result."""
-import gc
 import glob
 import hashlib
 import os
@@ -137,16 +136,8 @@ def load(path, files, native, namespaces):
             objects = _module_objects()
             unpickler = pickle.Unpickler(f)
             unpickler.persistent_load = objects.__getitem__
-            enabled = gc.isenabled()
-            # a few hundred thousand objects that live as long as the run, none garbage: the collector's passes over
-            # them while they load, and again at each later collection, cost more than the load (frozen: left out)
-            gc.disable()
-            try:
+            with parsing.LoadingTrees(always=True):
                 sources, comp, mentioned = unpickler.load()
-                gc.freeze()
-            finally:
-                if enabled:
-                    gc.enable()
     except FileNotFoundError:
         return None, "no such file"
     except Exception as e:  # a damaged file, or one of a translator whose objects this one lacks

@@ -347,7 +347,7 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
     StError of its first fault. The same trees as parse_file, whatever `jobs` (default: one per core).
     `user`: the files of a user program (laxer lexical checks; TwinCAT's .TcPOU, .TcGVL and .TcDUT read)."""
     results, misses = [], []
-    with _LoadingTrees():
+    with LoadingTrees():
         for i, path in enumerate(paths):
             try:
                 text, rewrites = _read(path, user, cache_dir)
@@ -364,7 +364,7 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
     if not misses:
         return results
     parsed = _parse_misses(misses, default_jobs() if jobs is None else jobs, cache_dir)
-    with _LoadingTrees():
+    with LoadingTrees():
         for i, path, text, rewrites in misses:
             pickled, error = parsed[i]
             if error is not None:
@@ -376,28 +376,33 @@ def parse_files(paths, cache_dir=None, jobs=None, user=False):
     return results
 
 
-# Whether parse_files freezes the trees it loads (_LoadingTrees): `python -m pacst` sets it, a process that runs one
+# Whether parse_files freezes the trees it loads (LoadingTrees): `python -m pacst` sets it, a process that runs one
 # translation. A process that translates many programs in turn (a test suite) leaves it off: what is alive at a
 # freeze and dies later as a cycle (a Compiler of the program before) would never be collected.
 FREEZE_LOADED_TREES = False
 
 
-class _LoadingTrees:
-    """With FREEZE_LOADED_TREES, Python's cyclic garbage collector off while parsed trees load, and their objects
-    left out of its later passes (frozen): a library's trees are a few hundred thousand objects that live as long
-    as the run, none of them garbage, over which the collector's passes cost more than the loads (about half of a
-    library's `pacst build`, 1 s of CPU). They hold no cycles, so dropped they are freed all the same. The garbage
-    already there is collected first, so that the freeze keeps none of it (checked.load freezes its state too)."""
+class LoadingTrees:
+    """Python's cyclic garbage collector off while parsed trees load, and their objects left out of its later passes
+    (frozen): a library's trees are a few hundred thousand objects that live as long as the run, none of them
+    garbage, over which the collector's passes cost more than the loads (about half of a library's `pacst build`,
+    1 s of CPU). They hold no cycles, so dropped they are freed all the same. The garbage already there is
+    collected first, so that the freeze keeps none of it. `always`: whatever FREEZE_LOADED_TREES says (the checked
+    library's state, loaded once in a pacst process)."""
+
+    def __init__(self, always=False):
+        self._always = always
 
     def __enter__(self):
-        self._enabled = FREEZE_LOADED_TREES and gc.isenabled()
+        self._enabled = (self._always or FREEZE_LOADED_TREES) and gc.isenabled()
         if self._enabled:
             gc.collect()
             gc.disable()
 
-    def __exit__(self, *exc):
+    def __exit__(self, exc_type, *exc):
         if self._enabled:
-            gc.freeze()
+            if exc_type is None:
+                gc.freeze()
             gc.enable()
 
 
