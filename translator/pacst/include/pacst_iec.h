@@ -325,7 +325,7 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
  * n units and a NUL as TwinCAT lays it out; these read and write one by the address of its units and its n. _short:
  * its first STR_MAX_LEN units as a STRING (WSTRING), as the string functions' STRING(255) inputs take it; _of_short
  * and _copy: a STRING or another long string written into one, cut to its n; _eq and _eq_short compare the text. */
-#define __PACST_LONG_STRING(S, UNIT, LEN, P)                                                                   \
+#define __PACST_LONG_STRING(S, UNIT, P)                                                                         \
     static inline size_t __pacst_##P##_units(const UNIT *body, size_t n) {                                   \
         size_t k = 0;                                                                                          \
         while (k < n && body[k] != 0) k++;                                                                     \
@@ -336,7 +336,7 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
         size_t k = __pacst_##P##_units(body, n);                                                               \
         if (k > STR_MAX_LEN) k = STR_MAX_LEN;                                                                  \
         memset(&s, 0, sizeof s);                                                                               \
-        s.len = (LEN)k;                                                                                        \
+        s.len = (UNIT)k;                                                                                       \
         memcpy(s.body, body, k * sizeof(UNIT));                                                                \
         return s;                                                                                              \
     }                                                                                                          \
@@ -361,8 +361,8 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
         size_t k = __pacst_##P##_units(a, n);                                                                  \
         return k == s.len && memcmp(a, s.body, k * sizeof(UNIT)) == 0;                                        \
     }
-__PACST_LONG_STRING(STRING, uint8_t, uint8_t, lstr)
-__PACST_LONG_STRING(WSTRING, uint16_t, uint16_t, lwstr)
+__PACST_LONG_STRING(STRING, uint8_t, lstr)
+__PACST_LONG_STRING(WSTRING, uint16_t, lwstr)
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
 extern TIME __CURRENT_TIME;
