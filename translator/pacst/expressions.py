@@ -905,18 +905,12 @@ class ExprCompiler:
 
     def _uptime(self, node, up):
         """User mode: CODESYS's TIME() and LTIME(), the time since the PLC started (the CODESYS help, Operands,
-        Functions: TIME() in milliseconds, a 32-bit TIME that starts again at 0 after its overflow), read from
-        Tc2_System's F_GetSystemTime as pac-test gives it: its clock, 100 ns since 1601, starts at 1 January
-        2026 00:00 UTC at power-on."""
-        if "F_GETSYSTEMTIME" not in self.comp.pous:
-            raise self.err(node, f"{up}() reads the PLC's clock, which pac-test gives with the vendor parts "
-                                 "(Tc2_System's F_GetSystemTime): run the program under pac-test")
+        Functions: TIME() in milliseconds, a 32-bit TIME that starts again at 0 after its overflow): the test
+        runtime's clock, __CURRENT_TIME, which starts at 0 at power-on and which the standard timers read too."""
         self.comp.dialect(node, f"{up}()")
-        call = dataclasses.replace(node, name=dataclasses.replace(node.name, name="F_GetSystemTime"))
-        ticks = f"((uint64_t)({self._user_call(call, self.comp.pous['F_GETSYSTEMTIME']).code}) - 134116992000000000u)"
         if up == "LTIME":
-            return TE(T.LTIME, f"__time_from_ns({ticks} * 100u)")
-        return TE(T.TIME, f"__time_from_ms((int64_t)(uint32_t)({ticks} / 10000u))")
+            return TE(T.LTIME, "__time_from_ns(__time_to_ns(__CURRENT_TIME))")
+        return TE(T.TIME, "__time_from_ms((int64_t)(uint32_t)__time_to_ms(__CURRENT_TIME))")
 
     def _first_output_value(self, node, pou):
         """User mode: the value of a FUNCTION without a result type is its first VAR_OUTPUT after the call, as
