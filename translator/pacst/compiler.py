@@ -473,7 +473,7 @@ class Compiler:
         if "." in rest or not self.in_namespace(first, rest):
             self.taken_by_program(first, rest, node)
             raise self.err(node, f"'{dotted}': the library {first} has no type or POU '{rest}'"
-                                 f"{self._close_name(first, rest) or self._part_of(first)}")
+                                 f"{self._close_name(first, rest) or self._part_of(first, rest)}")
         return rest
 
     def _close_name(self, namespace, name):
@@ -499,10 +499,13 @@ class Compiler:
                                  f"program declares {name} too ({first[0]}:{first[1]}): rename the program's")
 
     @staticmethod
-    def _part_of(namespace):
-        """What to write instead of a name a vendor library pac-test provides in part lacks."""
+    def _part_of(namespace, name):
+        """What to write instead of a name `name` a vendor library pac-test provides in part lacks."""
         if not user.namespace_like(namespace):
             return ""
+        why = user.left_out(namespace, name)
+        if why is not None:
+            return f": {why}"
         return (f": pac-test provides part of the vendor library {namespace} (docs/user_dialect.md, \"Vendor "
                 "libraries\"); keep the code that needs this name out of the program tested")
 
@@ -541,7 +544,7 @@ class Compiler:
         if not self.in_namespace(first, _name(head.field.name)):
             self.taken_by_program(first, _name(head.field.name), head.field)
             raise self.err(head.field, f"the library {first} has no declaration '{_name(head.field.name)}'"
-                                       f"{self._part_of(first)}")
+                                       f"{self._part_of(first, _name(head.field.name))}")
         self.dialect(node, f"the namespace in '{first}.{_name(head.field.name)}'")
         if len(node.elements) == 1:
             if not head.dereferenced and not node.dereferenced:

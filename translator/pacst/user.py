@@ -32,6 +32,21 @@ STANDARD_NAMESPACES = {"TC2_STANDARD", "STANDARD"}
 _VENDOR_LIBRARY = re.compile(r"(TC[23]_\w+|SM3_\w+|SYS\w+|CAA_?\w+|UTIL|IOSTANDARD|CMPERRORS\w*)$", re.I)
 
 
+# Names of vendor libraries pac-test provides in part that it leaves out on purpose: {(LIBRARY, NAME): why, and
+# what to write instead}.
+_LEFT_OUT = {
+    ("TC2_SYSTEM", "PI"): "Beckhoff's documentation of Tc2_System gives PI no type and value, so pac-test does not "
+                          "make one up: declare your own constant (VAR_GLOBAL CONSTANT PI : LREAL := "
+                          "3.141592653589793; END_VAR) and write PI for Tc2_System.PI",
+}
+
+
+def left_out(library, name):
+    """Why pac-test does not give the vendor library's `name`, and what to write instead; None for a name it
+    has no such reason for."""
+    return _LEFT_OUT.get((library.upper(), name.upper()))
+
+
 def unknown_namespace(name, known):
     """The reason a program cannot name `name` as a library namespace; `known`: the namespaces it may write."""
     if _VENDOR_LIBRARY.match(name):

@@ -703,6 +703,17 @@ class ProgramRefusalTest(unittest.TestCase):
                       "Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); keep the code that needs this name out "
                       "of the program tested", run.stderr)
 
+    def test_tc2_system_pi_is_refused_with_why_and_what_to_write(self):
+        # Beckhoff's documentation of Tc2_System gives PI no type and value: the refusal says so and what to write
+        run, folder = self.listed("vendor-pi", {"FB_Wave.st": "FUNCTION_BLOCK FB_Wave\nVAR\n  Angle : LREAL;\n"
+                                                              "END_VAR\nAngle := 2.0 * Tc2_System.PI;\n"
+                                                              "END_FUNCTION_BLOCK\n"})
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        self.assertIn(f"{os.path.join(folder, 'FB_Wave.st')}:5:27: error: the library Tc2_System has no declaration "
+                      "'PI': Beckhoff's documentation of Tc2_System gives PI no type and value, so pac-test does not "
+                      "make one up: declare your own constant (VAR_GLOBAL CONSTANT PI : LREAL := 3.141592653589793; "
+                      "END_VAR) and write PI for Tc2_System.PI", run.stderr)
+
     def test_a_call_of_a_refused_function_and_a_function_named_like_a_conversion(self):
         run, folder = self.listed("refused-function", {
             "F_Bad.st": "FUNCTION F_Bad : INT\nVAR_INPUT\n  X : NoSuchType;\nEND_VAR\nF_Bad := 1;\nEND_FUNCTION\n",
