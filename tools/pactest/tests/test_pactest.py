@@ -693,26 +693,27 @@ class ProgramRefusalTest(unittest.TestCase):
                       "copies byte", run.stderr)
         self.assertNotIn("invalid wiring file", run.stderr)
 
-    def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
-        run, folder = self.listed("vendor-name", {"FB_TaskIndex.st": "FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : "
-                                                                      "Tc2_System.T_AmsNetId;\nEND_VAR\n"
-                                                                      "END_FUNCTION_BLOCK\n"})
+    def refused_at(self, name, file, text, where, message):
+        """The program of the one file `file` holding `text` is refused at `where` (line:column) with `message`."""
+        run, folder = self.listed(name, {file: text})
         self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{os.path.join(folder, 'FB_TaskIndex.st')}:3:11: error: 'Tc2_System.T_AmsNetId': the "
-                      "library Tc2_System has no type or POU 'T_AmsNetId': pac-test provides part of the vendor library "
-                      "Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); keep the code that needs this name out "
-                      "of the program tested", run.stderr)
+        self.assertIn(f"{os.path.join(folder, file)}:{where}: error: {message}", run.stderr)
+
+    def test_a_name_of_a_vendor_library_pac_test_provides_in_part(self):
+        self.refused_at("vendor-name", "FB_TaskIndex.st", "FUNCTION_BLOCK FB_TaskIndex\nVAR\n  Index : "
+                        "Tc2_System.T_AmsNetId;\nEND_VAR\nEND_FUNCTION_BLOCK\n", "3:11",
+                        "'Tc2_System.T_AmsNetId': the library Tc2_System has no type or POU 'T_AmsNetId': pac-test "
+                        "provides part of the vendor library Tc2_System (docs/user_dialect.md, \"Vendor libraries\"); "
+                        "keep the code that needs this name out of the program tested")
 
     def test_tc2_system_pi_is_refused_with_why_and_what_to_write(self):
         # Beckhoff's documentation of Tc2_System gives PI no type and value: the refusal says so and what to write
-        run, folder = self.listed("vendor-pi", {"FB_Wave.st": "FUNCTION_BLOCK FB_Wave\nVAR\n  Angle : LREAL;\n"
-                                                              "END_VAR\nAngle := 2.0 * Tc2_System.PI;\n"
-                                                              "END_FUNCTION_BLOCK\n"})
-        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
-        self.assertIn(f"{os.path.join(folder, 'FB_Wave.st')}:5:27: error: the library Tc2_System has no declaration "
-                      "'PI': Beckhoff's documentation of Tc2_System gives PI no type and value, so pac-test does not "
-                      "make one up: declare your own constant (VAR_GLOBAL CONSTANT PI : LREAL := 3.141592653589793; "
-                      "END_VAR) and write PI for Tc2_System.PI", run.stderr)
+        self.refused_at("vendor-pi", "FB_Wave.st", "FUNCTION_BLOCK FB_Wave\nVAR\n  Angle : LREAL;\nEND_VAR\n"
+                        "Angle := 2.0 * Tc2_System.PI;\nEND_FUNCTION_BLOCK\n", "5:27",
+                        "the library Tc2_System has no declaration 'PI': Beckhoff's documentation of Tc2_System gives "
+                        "PI no type and value, so pac-test does not make one up: declare your own constant "
+                        "(VAR_GLOBAL CONSTANT PI : LREAL := 3.141592653589793; END_VAR) and write PI for "
+                        "Tc2_System.PI")
 
     def test_a_call_of_a_refused_function_and_a_function_named_like_a_conversion(self):
         run, folder = self.listed("refused-function", {
