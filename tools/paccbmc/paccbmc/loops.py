@@ -47,13 +47,24 @@ def base_function(loop: str) -> Tuple[str, str]:
     return _LINK.sub("", function), number
 
 
+# A line of a unit of translated files (tests/cbmc/CMakeLists.txt, pac_cbmc_one_unit): one C file included.
+_INCLUDED_C = re.compile(r'^#include "([^"]+\.c)"\s*$', re.MULTILINE)
+
+
+def _files_of(c_file: Path) -> List[Path]:
+    """A C file of CBMC's arguments, or the C files it includes when it is a unit of them."""
+    included = _INCLUDED_C.findall(c_file.read_text(errors="replace"))
+    return [c_file.parent / name for name in included] if included else [c_file]
+
+
 def sources_for(loops: List[str], cbmc_args: List[str]) -> List[str]:
-    """The C files among CBMC's arguments that mention a function of the loops: enough for --show-loops to
-    number them (a function's numbering depends on its own body only) at a fraction of the whole program's cost."""
+    """The C files among CBMC's arguments (or in a unit of them) that mention a function of the loops: enough for
+    --show-loops to number them (a function's numbering depends on its own body only) at a fraction of the whole
+    program's cost."""
     names = {base_function(loop)[0] for loop in loops}
     words = re.compile(r"\b(" + "|".join(re.escape(n) for n in sorted(names)) + r")\b")
-    return [a for a in cbmc_args if a.endswith(".c") and Path(a).is_file()
-            and words.search(Path(a).read_text(errors="replace"))]
+    files = [f for a in cbmc_args if a.endswith(".c") and Path(a).is_file() for f in _files_of(Path(a))]
+    return [str(f) for f in files if words.search(f.read_text(errors="replace"))]
 
 
 def show_loops_args(cbmc_args: List[str], files: List[str]) -> List[str]:

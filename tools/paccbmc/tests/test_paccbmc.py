@@ -136,6 +136,17 @@ class UnwindsetLoops(unittest.TestCase):
         args = loops.show_loops_args(["-DK=6", "-I", "gen", "h.c", "a.c", "--unwind", "17"], ["a.c"])
         self.assertEqual(args, ["-DK=6", "-I", "gen", "a.c", "--show-loops", "--json-ui"])
 
+    def test_a_unit_of_translated_files_gives_the_files_that_hold_the_loops(self):
+        from pathlib import Path
+        folder = Path(self.dir.name)
+        (folder / "FB.c").write_text("void FB_body(void) { while (1) {} }\n")
+        (folder / "F.c").write_text("int F(void) { return 0; }\n")
+        (folder / "h.c").write_text("int main(void) { FB_body(); }\n")
+        unit = folder / "fb_sources.c"
+        unit.write_text(f'/* one unit */\n#include "{folder / "FB.c"}"\n#include "{folder / "F.c"}"\n')
+        files = loops.sources_for(["FB_body.0"], [str(folder / "h.c"), str(unit), "--unwind", "3"])
+        self.assertEqual(files, [str(folder / "h.c"), str(folder / "FB.c")])
+
     def test_a_pattern_must_name_its_loop(self):
         with self.assertRaises(loops.LoopError):
             loops.parse_patterns(["FB_body.1"])
