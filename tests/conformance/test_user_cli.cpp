@@ -186,7 +186,7 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
     // from it).
     auto decls = Write("PRG_Decls.st", "PROGRAM PRG_Decls\nVAR\n  A : NoSuchType;\n  B : Tc2_MC2.MC_Power;\n"
                                        "  C : INT;\nEND_VAR\nC := 1;\nA := C;\nC := Nowhere;\nEND_PROGRAM\n");
-    auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : DINT;\nEND_VAR\nC := D;\n"
+    auto body = Write("PRG_Body.st", "PROGRAM PRG_Body\nVAR\n  C : INT;\n  D : REAL;\nEND_VAR\nC := D;\n"
                                      "IF C > 0 THEN\n  C := Nothing;\nEND_IF\nC := 2;\nEND_PROGRAM\n");
     auto list = Write("GVL_Two.st", "VAR_GLOBAL\n  E : NoSuchType;\n  F : INT := 'text';\nEND_VAR\n");
     auto type = Write("ST_Two.st", "TYPE ST_Two :\nSTRUCT\n  G : NoSuchType;\n  H : NoSuchType;\nEND_STRUCT\nEND_TYPE\n");
@@ -199,7 +199,7 @@ TEST_F(TranslatorUserCli, EveryRefusedDeclarationAndStatementIsReported) {
                                  fb + ":3:13: error: undeclared type", fb + ":5:13: error: undeclared type",
                                  decls + ":3:7: error: undeclared type 'NoSuchType'",
                                  decls + ":4:7: error: 'Tc2_MC2.MC_Power': pac-test does not provide the vendor library",
-                                 body + ":6:6: error: type mismatch: DINT where INT is expected",
+                                 body + ":6:6: error: type mismatch: REAL where INT is expected",
                                  body + ":8:8: error: undeclared name 'Nothing'",
                                  decls + ":9:6: error: undeclared name 'Nowhere'"}) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
@@ -218,7 +218,7 @@ TEST_F(TranslatorUserCli, RefusedDeclarationOfAnObjectOrientedFbHidesNoRefusalOf
 VAR
   A : NoSuchType;
   C : INT;
-  D : DINT;
+  D : REAL;
 END_VAR
 C := D;
 Run();
@@ -245,9 +245,9 @@ END_METHOD
     // the FB's refused variable and its METHOD's pin; a statement of its body, twice, and of a METHOD's
     const std::vector<std::pair<int, std::string>> reported = {
         {3, "7: error: undeclared type 'NoSuchType'"}, {15, "7: error: undeclared type 'NoSuchPin'"},
-        {7, "6: error: type mismatch: DINT where INT is expected"},
+        {7, "6: error: type mismatch: REAL where INT is expected"},
         {10, "6: error: standard function MUX is not supported by pacst"},
-        {23, "6: error: type mismatch: DINT where INT is expected"}};
+        {23, "6: error: type mismatch: REAL where INT is expected"}};
     for (const auto& [line, text] : reported) {
         auto where = fb + ":" + std::to_string(line) + ":" + text;
         EXPECT_NE(result.output.find(where), std::string::npos) << where << "\n" << result.output;

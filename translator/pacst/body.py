@@ -10,7 +10,7 @@ from .common import _BIT_LITERALS, _INT_LITERALS, TE, Ref, SourceLine, _cls, _na
     inout_parameter, inouts_by_reference, located, pos
 from .errors import StError, StErrors
 from .expressions import CHAINED_CALL, STATEMENT_FUNCTIONS, ExprCompiler, array_name_hint, long_inout_hint, \
-    long_string_code, refused_call, widens
+    long_string_code, narrows, refused_call, widens
 
 
 class BodyCompiler:
@@ -1061,6 +1061,8 @@ class BodyCompiler:
                     # user mode: an output to a wider variable, as TwinCAT converts it (Index => DintVariable)
                     self.comp.dialect(p.value, f"the implicit conversion of {fv.type.name} to {target.type.name}")
                     value = f"(({target.type.cname})({value}))"
+                elif target.type is not fv.type and self.comp.user and narrows(fv.type, target.type):
+                    value = self.ex.narrowed(TE(fv.type, value), target.type, p.value)  # Count => UsintVariable
                 elif target.type is not fv.type and self.comp.user and \
                         (code := long_string_code(TE(fv.type, value), target.type)) is not None:
                     value = code  # user mode: a STRING output to a STRING(300), or the other way, cut to the target

@@ -31,15 +31,17 @@ def _parsed(results):
     return results
 
 
-def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=(), namespaces=None, kept=None):
+def translate(files, cache_dir=None, gvl_files=(), jobs=None, user=False, native=(), namespaces=None, kept=None,
+              strict_narrowing=False):
     """Parse and compile `files` in declaration order and check the global constant lists `gvl_files`
     against them; returns (compiler, program, {gvl file: constants}) or raises StErrors. `user`: the
     user-program mode; `native`: files (among `files`) whose FUNCTIONs the host implements; `kept`: a library's
-    checked state (checked.Kept, user mode), whose files are not parsed again."""
+    checked state (checked.Kept, user mode), whose files are not parsed again; `strict_narrowing`: an implicit
+    narrowing refused, not taken with a warning."""
     taken = kept.by_path if kept is not None else {}
     parsed = iter(parse_files([f for f in files if f not in taken] + list(gvl_files), cache_dir, jobs, user))
     file_results = [taken[f] if f in taken else next(parsed) for f in files]
-    return _translate_parsed(file_results, list(parsed), user, native, namespaces, kept)
+    return _translate_parsed(file_results, list(parsed), user, native, namespaces, kept, strict_narrowing)
 
 
 # What a refusal may owe to a declaration pacst could not read: left out beside a file's syntax error
@@ -47,7 +49,8 @@ _MAY_DEPEND = re.compile(r"undeclared|declaration was refused|cannot be used|bef
                          r"has no (variable|member|METHOD|PROPERTY|value)", re.I)
 
 
-def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None, kept=None):
+def _translate_parsed(file_results, list_results, user=False, native=(), namespaces=None, kept=None,
+                      strict_narrowing=False):
     # A fault in a POU file is reported before any in a global list.
     unread = [r for r in file_results if isinstance(r, StError)]
     if user and unread and len(unread) < len(file_results):
@@ -55,7 +58,7 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
         # may be owed to a declaration in a file that could not be read
         try:
             _translate_parsed([r for r in file_results if not isinstance(r, StError)], [], user, native,
-                              namespaces, kept)
+                              namespaces, kept, strict_narrowing)
         except StErrors as e:
             unread += [err for err in e.errors if not _MAY_DEPEND.search(err.message)]
         raise StErrors(unread)
@@ -74,6 +77,7 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
             comp.declare([src for src in library if id(src) not in ids])
         else:
             comp = checked_library(library, native, namespaces)
+        comp.strict_narrowing = strict_narrowing  # the program's, not the libraries' (checked without it)
         comp.declare(rest)
         program = comp.finish()
     else:
@@ -274,7 +278,7 @@ def _build(args):
     kept, why = _kept_library(args, files)
     try:
         comp, program, constants = translate(files, args.cache, args.gvl, args.jobs, args.user, args.native,
-                                             _namespaces(args), kept)
+                                             _namespaces(args), kept, args.strict_narrowing)
     except StErrors as e:
         _say_kept(args, kept, why)
         remove_outputs(args.out, names + ([os.path.basename(args.stamp)] if args.stamp else []))
@@ -284,6 +288,7 @@ def _build(args):
             print(plcopen_read.at_source(err), file=sys.stderr)
         return 1
     _say_kept(args, kept, why)
+    _print_warnings(comp)
     outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
     outputs.update(_tables(constants))
     if args.user:
@@ -297,6 +302,14 @@ def _build(args):
     if args.verbose:
         print(f"pacst: {len(args.files)} file(s), rewrote {', '.join(written) or 'nothing'}")
     return 0
+
+
+def _print_warnings(comp):
+    """The warnings of a translation that succeeded, each once (a construct may be looked at twice), in source
+    order, at the user's own file (a PLCopen XML project's line)."""
+    unique = {str(w): w for w in comp.warnings}
+    for warning in sorted(unique.values(), key=lambda w: (w.file, w.line, w.col)):
+        print(plcopen_read.at_source(warning), file=sys.stderr)
 
 
 def _kept_library(args, files):
@@ -469,6 +482,8 @@ def main(argv=None):
     build.add_argument("--line-directives", action="store_true",
                        help="precede each statement's C with #line naming its ST line (coverage, debuggers)")
     _user_options(build)
+    build.add_argument("--strict-narrowing", action="store_true",
+                       help="user mode: refuse an implicit narrowing (DINT to INT) instead of taking it with a warning")
     build.add_argument("-v", "--verbose", action="store_true")
     build.add_argument("files", nargs="+")
     build.set_defaults(run=_build)

@@ -17,7 +17,7 @@ from . import literals, rewrite
 from . import types as T
 from .body import BodyCompiler
 from .common import TE, _BIT_LITERALS, _INT_LITERALS, _cls, _name, pos
-from .errors import StError, StErrors
+from .errors import StError, StErrors, StWarning
 from .expressions import ExprCompiler
 from .names import STANDARD_FUNCTIONS, reserved_reason
 from . import csizes, runinit, system, user, varlen
@@ -165,6 +165,8 @@ class Compiler:
         self.file = None
         self.call_members = set()  # (file, line, column) of each member of a call's result (rewrite.CALL_MEMBER)
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
+        self.warnings = []  # StWarnings: what the vendors take with a warning and pacst takes too (user mode)
+        self.strict_narrowing = False  # user mode: an implicit narrowing refused instead (--strict-narrowing)
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
         self.declaring = None  # user mode: the POU whose variable's initial value is being checked
@@ -185,6 +187,11 @@ class Compiler:
         self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does "
                                                           "not compile (docs/user_dialect.md); run this program on "
                                                           "pacst's C"))
+
+    def warn(self, node, message):
+        """Records a warning at `node` in the file being compiled: shown with the build, the program still built."""
+        line, col = pos(node) if node is not None else (1, 1)
+        self.warnings.append(StWarning(self.file, line, col, message))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):

@@ -18,6 +18,13 @@ class StError(Exception):
         return type(self), (self.file, self.line, self.col, self.message), self.__dict__
 
 
+class StWarning(StError):
+    """One construct taken as the vendors take it, with their warning (an implicit narrowing): shown, not refused."""
+
+    def __str__(self):
+        return f"{self.file}:{self.line}:{self.col}: warning: {self.message}"
+
+
 class StErrors(Exception):
     """Every refusal found in a run, in source order."""
 

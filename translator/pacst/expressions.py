@@ -94,6 +94,17 @@ def changes_sign(source, target):
     return target.bits >= source.bits and not widens(source, target)
 
 
+def narrows(source, target):
+    """Whether a user program converts `source` to `target` implicitly with a warning only (CODESYS's and TwinCAT's
+    C0197, a possible loss of information): an integer or bit string to a narrower one (DINT to INT, UDINT to USINT,
+    DWORD to BYTE), the bits that fit kept, as <INT type>_TO_<INT type> keeps them (two's complement, as C casts)."""
+    if not (source.is_elementary and target.is_elementary):
+        return False
+    if not ((source.is_int or source.is_bit) and (target.is_int or target.is_bit)):
+        return False
+    return target.bits < source.bits
+
+
 def long_string_code(te, target):
     """User mode: the C of `te` as `target` where one of them is a STRING(n) or WSTRING(n) over 255 (LongStringType),
     as TwinCAT assigns strings of other lengths: cut to the target's n (a STRING's 255), the rest kept; None where
@@ -239,6 +250,8 @@ class ExprCompiler:
             # compares those at the register width
             self.comp.dialect(node, f"the implicit conversion of {te.type.name} to {target.name}")
             return f"(({target.cname})({te.code}))"
+        if self.comp.user and what != "operand" and narrows(te.type, target):
+            return self.narrowed(te, target, node)
         hint = ""
         named = _CONVERTIBLE | _CONVERTIBLE_64 if self.comp.user else _CONVERTIBLE
         convertible = te.type.name in named and target.name in named
@@ -255,6 +268,19 @@ class ExprCompiler:
             hint = array_name_hint(te.type, target)
         raise self.err(node, f"type mismatch: {te.type.name} where {target.name} is expected; ST has no "
                              f"implicit conversion{hint}")
+
+    def narrowed(self, te, target, node):
+        """User mode: the C of `te` cut to the narrower `target` (narrows()), with the vendors' warning; refused
+        under --strict-narrowing, for a programmer who holds the program to explicit conversions."""
+        source = te.type
+        if self.comp.strict_narrowing:
+            raise self.err(node, f"implicit narrowing of {source.name} to {target.name}, refused by "
+                                 f"--strict-narrowing: write {source.name}_TO_{target.name}")
+        self.comp.dialect(node, f"the implicit conversion of {source.name} to {target.name}")
+        self.comp.warn(node, f"implicit conversion of {source.name} to {target.name}: a value outside "
+                             f"{target.name} is cut to its {target.bits} bits, as TwinCAT and CODESYS cut it "
+                             f"(their C0197); write {source.name}_TO_{target.name} to say so")
+        return f"(({target.cname})({te.code}))"
 
     def integer_to_enum(self, target, node, what):
         """User mode: whether an integer may be assigned to the enumeration `target` (TwinCAT's and CODESYS's
@@ -699,6 +725,10 @@ class ExprCompiler:
             self.comp.dialect(node.op, f"{op} on enumeration values")  # TwinCAT and CODESYS compare the numbers
         elif op not in ("=", "<>") and (t.is_bool or t.is_enum):
             raise self.err(node.op, f"{op} on {t.name}: only = and <> compare BOOL and enumeration values")
+        if t.is_string and op not in ("=", "<>") and self.comp.user:  # as TwinCAT's GT, GE, LT and LE take them
+            self.comp.dialect(node.op, f"{op} on {t.name}")
+            cmp = "__pacst_wstring_cmp" if t is T.WSTRING else "__pacst_string_cmp"
+            return TE(T.BOOL, f"({cmp}({ca}, {cb}) {_CMP_C[op]} 0)")
         if t.is_string:
             if op not in ("=", "<>"):
                 raise self.err(node.op, f"{op} on {t.name}: only = and <> compare strings here: compare their "
@@ -710,21 +740,25 @@ class ExprCompiler:
         return TE(T.BOOL, f"({ca} {_CMP_C[op]} {cb})")
 
     def _long_compare(self, node, op, a, b):
-        """User mode: = and <> with a STRING(n) or WSTRING(n) over 255: the whole texts compared, to its NUL."""
-        if op not in ("=", "<>"):
-            raise self.err(node.op, f"{op} on STRING: only = and <> compare strings")
-        other_side = node.right
-        if a.type.kind != "longstring":
+        """User mode: a comparison with a STRING(n) or WSTRING(n) over 255: the whole texts compared, to its NUL;
+        < > <= >= ordered as shorter strings are (__PACST_UNITS_CMP)."""
+        other_side, swapped = node.right, a.type.kind != "longstring"
+        if swapped:
             a, b, other_side = b, a, node.left
         t = a.type
         p = "__pacst_lwstr" if t.wide else "__pacst_lstr"
         units = f"(({t.cname}[1]){{{a.code}}})[0].body"
+        how = "eq" if op in ("=", "<>") else "cmp"
         if b.type.kind == "longstring" and b.type.wide == t.wide:
             other = f"(({b.type.cname}[1]){{{b.code}}})[0].body"
-            code = f"{p}_eq({units}, {t.length}, {other}, {b.type.length})"
+            code = f"{p}_{how}({units}, {t.length}, {other}, {b.type.length})"
         else:
-            code = f"{p}_eq_short({units}, {t.length}, {self.coerce(b, t.short, other_side, 'operand')})"
-        return TE(T.BOOL, f"({'' if op == '=' else '!'}{code})")
+            code = f"{p}_{how}_short({units}, {t.length}, {self.coerce(b, t.short, other_side, 'operand')})"
+        if how == "eq":
+            return TE(T.BOOL, f"({'' if op == '=' else '!'}{code})")
+        self.comp.dialect(node.op, f"{op} on {t.name}")
+        order = f"({code})" if not swapped else f"(-({code}))"  # the text over 255 was the right operand
+        return TE(T.BOOL, f"({order} {_CMP_C[op]} 0)")
 
     def _enum_as_number(self, node, te, other):
         """User mode: `te`, an enumeration value compared with an integer or bit string that cannot hold all its values

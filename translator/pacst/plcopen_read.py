@@ -146,7 +146,7 @@ def at_source(err):
         return err
     xml, obj = origin
     line, col = xml_position(xml, obj, err.line, err.col)
-    return StError(xml, line, col, f"{err.message} (in {obj.name})")
+    return type(err)(xml, line, col, f"{err.message} (in {obj.name})")  # a warning stays one
 
 
 def xml_position(xml, obj, st_line, col=1):

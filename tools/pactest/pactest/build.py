@@ -53,8 +53,10 @@ def link(exe, objects, libraries, sanitize, coverage=False):
 class HostBuild:
     takes_dialect = True  # pacst's C: the vendor libraries' parts and TcUnit's suite come with the program
 
-    def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None):
+    def __init__(self, wiring, pac_build, out, coverage=True, jobs=None, pacst_python=None, parse_cache=None,
+                 strict_narrowing=False):
         self.wiring, self.pac, self.out, self.parse_cache = wiring, pac_build, out, parse_cache
+        self.strict_narrowing = strict_narrowing  # pacst build --strict-narrowing
         self.coverage, self.jobs = coverage, jobs or os.cpu_count() or 1
         venv_python = os.path.join(project.ROOT, "build", "venv", "bin", "python")
         self.pacst_python = pacst_python or (venv_python if os.path.exists(venv_python) else sys.executable)
@@ -107,7 +109,8 @@ class HostBuild:
 
     def translate(self):
         """pacst --user over the library, the vocabulary and the user's ST; returns the symbol table."""
-        self._pacst("build", *self.user_inputs(), "--line-directives", "--out", self.st_out,
+        strict = ["--strict-narrowing"] if self.strict_narrowing else []
+        self._pacst("build", *self.user_inputs(), "--line-directives", *strict, "--out", self.st_out,
                     "--gvl", project.gvl_pac(), "--checked-library", self.checked_library)
         with open(os.path.join(self.st_out, "symbols.json"), encoding="utf-8") as f:
             return hostgen.Symbols(json.load(f))

@@ -180,6 +180,9 @@ def main(argv=None):
     parser.add_argument("--parse-cache", help="pacst's parse cache, shared by runs (default: OUT/pacst-cache); the build's is "
                         "read beneath it")
     parser.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1, help="compilers and tests at once")
+    parser.add_argument("--strict-narrowing", action="store_true",
+                        help="refuse an implicit narrowing (a DINT assigned to an INT) instead of taking it, as "
+                             "TwinCAT and CODESYS do, with a warning")
     args = parser.parse_args(argv)
     started = time.monotonic()
     out = os.path.abspath(args.out)
@@ -195,10 +198,11 @@ def main(argv=None):
         pac = project.PacBuild(args.pac_build)
         if pac.matiec:  # MATIEC's C has no coverage table of the user's ST (docs/user_tests.md, "On MATIEC")
             args.no_coverage = True
-            host_build = matiec.MatiecHostBuild(wiring, pac, out, jobs=args.jobs, parse_cache=args.parse_cache)
+            host_build = matiec.MatiecHostBuild(wiring, pac, out, jobs=args.jobs, parse_cache=args.parse_cache,
+                                                strict_narrowing=args.strict_narrowing)
         else:
             host_build = build.HostBuild(wiring, pac, out, coverage=not args.no_coverage, jobs=args.jobs,
-                                         parse_cache=args.parse_cache)
+                                         parse_cache=args.parse_cache, strict_narrowing=args.strict_narrowing)
         symbols = host_build.translate()
         hostgen.programs_of(symbols, wiring)
         hostgen.check_module_images(symbols, wiring)

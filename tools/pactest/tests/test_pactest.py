@@ -846,6 +846,24 @@ class DialectTest(unittest.TestCase):
         self.assertRegex(self.result.stderr, r"warning: .*wiring\.json: \$\.tests\.faults\.FB_TestStartButton: the fault at "
                                              r"150 ms comes after the test ended at \d+ ms; it never happened")
 
+    def test_an_implicit_narrowing_is_warned_about_at_its_place(self):
+        source = os.path.join(self.folder, "FB_TestNarrowing.st")
+        line = line_of(source, "Unsigned := Wide;")
+        self.assertIn(f"{source}:{line}:13: warning: implicit conversion of UDINT to UINT: a value outside UINT is cut "
+                      "to its 16 bits, as TwinCAT and CODESYS cut it (their C0197); write UDINT_TO_UINT to say so",
+                      self.result.stderr)
+        line = line_of(source, "Totals(Start := 300, Total => Small);")
+        self.assertIn(f"{source}:{line}:31: warning: implicit conversion of UDINT to USINT", self.result.stderr)
+
+    def test_strict_narrowing_refuses_an_implicit_narrowing(self):
+        run = pac_test(os.path.join(self.folder, "wiring.json"), os.path.join(OUT, "dialect-strict"), "--list",
+                       "--strict-narrowing")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        source = os.path.join(self.folder, "FB_TestNarrowing.st")
+        line = line_of(source, "Unsigned := Wide;")
+        self.assertIn(f"{source}:{line}:13: error: implicit narrowing of UDINT to UINT, refused by --strict-narrowing: "
+                      "write UDINT_TO_UINT", run.stderr)
+
     def test_vcd_all_writes_the_vcd_of_passing_tests(self):
         vcd = os.path.join(self.out, "vcd", "FB_TestStartButton.vcd")
         self.assertTrue(os.path.exists(vcd), self.result.stdout)

@@ -133,6 +133,20 @@ static inline int __pacst_string_eq(STRING a, STRING b) {
     }
     return 1;
 }
+/* User mode: < > <= >= on strings: the first unit that differs decides, compared as an unsigned number (a STRING's
+ * byte from 0 to 255, a character above 127 after every ASCII one; a WSTRING's code unit); where none differs the
+ * shorter string comes first. Negative, 0 or positive, as memcmp. */
+#define __PACST_UNITS_CMP(UNIT, NAME)                                                   \
+    static inline int NAME(const UNIT *a, size_t n, const UNIT *b, size_t m) {         \
+        size_t i, k = n < m ? n : m;                                                   \
+        for (i = 0; i < k; i++) {                                                      \
+            if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;                             \
+        }                                                                              \
+        return n < m ? -1 : n > m ? 1 : 0;                                             \
+    }
+__PACST_UNITS_CMP(uint8_t, __pacst_bytes_cmp)
+__PACST_UNITS_CMP(uint16_t, __pacst_words_cmp)
+static inline int __pacst_string_cmp(STRING a, STRING b) { return __pacst_bytes_cmp(a.body, a.len, b.body, b.len); }
 
 /* The standard string functions of user programs (pacst --user), on a STRING's bytes (__pacst_str_) and on a
  * WSTRING's code units (__pacst_wstr_: Tc2_Standard's WLEN, WCONCAT, WLEFT, ...): positions count from 1, a result
@@ -300,6 +314,7 @@ static inline WSTRING __pacst_wstring(const uint16_t *units, int len) {
 static inline int __pacst_wstring_eq(WSTRING a, WSTRING b) {
     return a.len == b.len && memcmp(a.body, b.body, (size_t)a.len * sizeof a.body[0]) == 0;
 }
+static inline int __pacst_wstring_cmp(WSTRING a, WSTRING b) { return __pacst_words_cmp(a.body, a.len, b.body, b.len); }
 /* WSTRING_TO_STRING: a unit above 16#FF has no STRING character and is skipped, as Tc2_Utilities'
  * WSTRING_TO_STRING2 and WCHAR_TO_CHAR skip it; STRING_TO_WSTRING: each byte the unit of its number. */
 static inline STRING __pacst_wstring_to_string(WSTRING w) {
@@ -324,8 +339,9 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
 /* User mode: a STRING(n) or WSTRING(n) with n over STR_MAX_LEN is a C type of its own (pacst's LongStringType), its
  * n units and a NUL as TwinCAT lays it out; these read and write one by the address of its units and its n. _short:
  * its first STR_MAX_LEN units as a STRING (WSTRING), as the string functions' STRING(255) inputs take it; _of_short
- * and _copy: a STRING or another long string written into one, cut to its n; _eq and _eq_short compare the text. */
-#define __PACST_LONG_STRING(S, UNIT, P)                                                                         \
+ * and _copy: a STRING or another long string written into one, cut to its n; _eq and _eq_short compare the text,
+ * _cmp and _cmp_short order it (CMP, __PACST_UNITS_CMP's). */
+#define __PACST_LONG_STRING(S, UNIT, P, CMP)                                                                    \
     static inline size_t __pacst_##P##_units(const UNIT *body, size_t n) {                                   \
         size_t k = 0;                                                                                          \
         while (k < n && body[k] != 0) k++;                                                                     \
@@ -360,9 +376,15 @@ static inline WSTRING __pacst_string_to_wstring(STRING s) {
     static inline int __pacst_##P##_eq_short(const UNIT *a, size_t n, S s) {                                 \
         size_t k = __pacst_##P##_units(a, n);                                                                  \
         return k == s.len && memcmp(a, s.body, k * sizeof(UNIT)) == 0;                                        \
+    }                                                                                                          \
+    static inline int __pacst_##P##_cmp(const UNIT *a, size_t n, const UNIT *b, size_t m) {                  \
+        return CMP(a, __pacst_##P##_units(a, n), b, __pacst_##P##_units(b, m));                                \
+    }                                                                                                          \
+    static inline int __pacst_##P##_cmp_short(const UNIT *a, size_t n, S s) {                                \
+        return CMP(a, __pacst_##P##_units(a, n), s.body, s.len);                                               \
     }
-__PACST_LONG_STRING(STRING, uint8_t, lstr)
-__PACST_LONG_STRING(WSTRING, uint16_t, lwstr)
+__PACST_LONG_STRING(STRING, uint8_t, lstr, __pacst_bytes_cmp)
+__PACST_LONG_STRING(WSTRING, uint16_t, lwstr, __pacst_words_cmp)
 
 /* The harness defines these two and advances __CURRENT_TIME before each scan. */
 extern TIME __CURRENT_TIME;
