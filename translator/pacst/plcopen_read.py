@@ -18,8 +18,13 @@ from .plcopen_names import (ATTRIBUTES, CODESYS, GLOBAL_VARS, MIXED_ATTRIBUTES, 
                             XHTML, q)
 
 # CODESYS 3.5 and TwinCAT 3.1 write TC6 XML under the namespace of version 2.00 (pacexport too).
+# A POU's TRANSITIONs (PLCopen's, or CODESYS's addData): the step conditions of an SFC chart, which pacst does
+# not read, so a TRANSITION has nothing to be called from.
+_TRANSITION_REFUSED = ("its TRANSITIONs are not read: a TRANSITION is a step condition of an SFC chart, and pacst "
+                       "reads no SFC; leave the POU out of the program tested")
 # CODESYS's extensions of a POU that this reader refuses (its METHODs and PROPERTYs are read).
-_POU_EXTENSIONS = {CODESYS + "action": "ACTION", CODESYS + "transition": "TRANSITION"}
+_POU_EXTENSIONS = {CODESYS + "action": "ACTIONs are not read from PLCopen XML yet: write a METHOD",
+                   CODESYS + "transition": _TRANSITION_REFUSED}
 
 # PLCopen's variable lists and the ST keyword that opens each.
 SECTION_KEYWORDS = {"inputVars": "VAR_INPUT", "outputVars": "VAR_OUTPUT", "inOutVars": "VAR_IN_OUT",
@@ -56,7 +61,7 @@ def _at(read, element):
 
 @dataclass(frozen=True)
 class StObject:
-    kind: str  # dataType, function, functionBlock, program or globalVars
+    kind: str  # dataType, interface, function, functionBlock, program or globalVars
     name: str
     declaration: str
     body: Optional[str]
@@ -110,6 +115,8 @@ def read_objects(data):
     # of the configuration's resource, the project's own lists in the project's addData: all of them are read,
     # after the project's types and POUs (types/, first in the file).
     objects = read(_data_type, root.iter(q("dataType")))
+    objects += read(_interface, [e for data in root.iter(q("data")) if data.get("name") == _INTERFACES for e in data
+                                 if isinstance(e.tag, str)])
     objects += read(_pou, root.iter(q("pou")))
     lists = [e for data in root.iter(q("data")) if data.get("name") == GLOBAL_VARS
              for e in data.iterfind(q("globalVars"))]
@@ -117,20 +124,11 @@ def read_objects(data):
         found = list(holder.iterfind(q("globalVars"))) + list(holder.iterfind(f"{q('resource')}/{q('globalVars')}"))
         lists += [e for e in found if e.get("name")]
     objects += read(_global_list, lists)
-    # objects of a kind this reader does not translate are refused, not dropped
-    read(_not_read, [e for data in root.iter(q("data")) if data.get("name") in _OBJECTS_NOT_READ for e in data
-                     if isinstance(e.tag, str)])
     return objects, errors
 
 
-# CODESYS's and TwinCAT's extensions holding objects of their own that this reader does not translate
-_OBJECTS_NOT_READ = {CODESYS + "interface": "an INTERFACE"}
-
-
-def _not_read(element):
-    what = _OBJECTS_NOT_READ[element.getparent().get("name")]
-    raise PlcopenReadError(f"{what} is not read from PLCopen XML: give pac-test its ST as a file of its own "
-                           f"(or the TwinCAT project's .plcproj, which pac-test reads with its .TcIO files)")
+# CODESYS keeps each INTERFACE in an addData of the project, apart from the POUs
+_INTERFACES = CODESYS + "interface"
 
 
 # Where each ST file written by extract() came from: {ST path: (XML path, StObject)}
@@ -339,10 +337,58 @@ def _variable_length_array(variable):
     return varlen
 
 
+def _interface(element):
+    """An INTERFACE of CODESYS's export (an <Interface> with its <Methods>: each METHOD's interface, no body) as
+    ST, the INTERFACE and then its METHODs, as an INTERFACE's ST file holds them. What else an <Interface> holds
+    (a PROPERTY, a base INTERFACE) is refused at its line: no export of one has shown its form."""
+    if _local(element) != "Interface":
+        raise PlcopenReadError(f"<{_local(element)}> in CODESYS's INTERFACE data is not read")
+    name = element.get("name")
+    text, lines = f"INTERFACE {name}\nEND_INTERFACE\n", []
+    for child in element:
+        if not isinstance(child.tag, str) or _local(child) == "documentation":
+            continue
+        if _local(child) == "Methods":
+            for method in (m for m in child if isinstance(m.tag, str)):
+                method_text, method_lines = _interface_method(method, name)
+                lines += [(text.count("\n") + line, xml_line, what) for line, xml_line, what in method_lines]
+                text += method_text
+        elif _local(child) == "addData":
+            for data in (d for d in child if isinstance(d.tag, str) and d.get("handleUnknown") != "discard"):
+                _refuse_in_interface(data, f"the data {data.get('name')}")
+        else:
+            _refuse_in_interface(child, f"<{_local(child)}>")
+    return StObject("interface", name, text, None, xml_line=element.sourceline or 0, declaration_lines=tuple(lines))
+
+
+def _interface_method(element, interface):
+    """(an INTERFACE's METHOD as ST, after an empty line, [(line in that text, line in the XML file, name)] of its
+    heading, at its <Method> element, and of its variables, at their <variable> elements)."""
+    if _local(element) != "Method":
+        _refuse_in_interface(element, f"<{_local(element)}> among its METHODs")
+    name = element.get("name")
+    header, blocks = _interface_text(element, f"METHOD {name}", interface)
+    text = f"\n{header}\n{''.join(blocks)}END_METHOD\n"
+    holder = element.find(q("interface"))
+    variables = [v for section in (holder if holder is not None else []) if _local(section) in SECTION_KEYWORDS
+                 for v in section.iterfind(q("variable"))]
+    return text, [(2, element.sourceline, name), *_variable_lines(text, variables)]
+
+
+def _refuse_in_interface(element, what):
+    exc = PlcopenReadError(f"{what} of an INTERFACE is not read from PLCopen XML (its METHODs are): give this "
+                           "INTERFACE to pac-test as an ST file of its own")
+    exc.lineno = element.sourceline
+    raise exc
+
+
 def _pou(element):
     name, kind = element.get("name"), element.get("pouType")
-    if element.find(f"{q('transitions')}/{q('transition')}") is not None:
-        raise PlcopenReadError(f"{name}: TRANSITIONs are not read")
+    transition = element.find(f"{q('transitions')}/{q('transition')}")
+    if transition is not None:
+        exc = PlcopenReadError(f"{name}: {_TRANSITION_REFUSED}")
+        exc.lineno = transition.sourceline
+        raise exc
     members, spans = [], []
 
     def add(read, member):
@@ -363,8 +409,7 @@ def _pou(element):
                 if isinstance(p.tag, str):
                     add(_property, p)
         elif data.get("name") in _POU_EXTENSIONS:
-            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}s are not read from PLCopen XML "
-                                   "yet: write a METHOD")
+            raise PlcopenReadError(f"{name}: {_POU_EXTENSIONS[data.get('name')]}")
     header, blocks = _interface_text(element, f"{POU_KEYWORDS[kind]} {name}", name)
     xhtml = element.find(f"{q('body')}/{q('ST')}/{{{XHTML}}}xhtml")
     declaration = header + "\n" + "".join(blocks)

@@ -127,7 +127,7 @@ _ON_DEMAND = ("LREAL_TO_FMTSTR", "WSTRNCPY", "F_GetTaskTime", "FB_MemRingBuffer"
               "BYTE_TO_HEXSTR", "WORD_TO_HEXSTR", "DWORD_TO_HEXSTR", "LWORD_TO_HEXSTR", "PacTestHexDigits",
               "FB_FormatString", "T_Arg", "E_ArgType", "FILETIME64_TO_SYSTEMTIME",
               "WORD_TO_DECSTR")
-_ON_DEMAND_LIBRARIES = ("SysFile", "SysTypes", "SysDir", "CmpErrors")
+_ON_DEMAND_LIBRARIES = ("SysFile", "SysTypes", "SysDir", "CmpErrors", "SysMem")
 
 
 def vendor_sources(sources=(), named_only=False):

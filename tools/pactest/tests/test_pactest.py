@@ -62,8 +62,13 @@ def write_wiring(name, data):
 def line_of(path, text):
     """The 1-based line of `path` holding `text` (once)."""
     with open(path, encoding="utf-8") as f:
-        lines = [n for n, line in enumerate(f, 1) if text in line]
-    assert len(lines) == 1, f"{text!r} is on {len(lines)} lines of {path}"
+        return line_in(f.read(), text, path)
+
+
+def line_in(content, text, where="the text"):
+    """The 1-based line of `content` holding `text` (once)."""
+    lines = [n for n, line in enumerate(content.splitlines(), 1) if text in line]
+    assert len(lines) == 1, f"{text!r} is on {len(lines)} lines of {where}"
     return lines[0]
 
 
@@ -954,6 +959,52 @@ class LibraryTest(unittest.TestCase):
         line = line_of(source, "Common.FB_Count;")
         self.assertIn(f"{source}:{line}:11: error: 'Common.FB_Count': the library Common has no type or POU "
                       "'FB_Count'", run.stderr)
+
+
+class CodesysExportTest(unittest.TestCase):
+    """tools/pactest/tests/codesys_export: a CODESYS PLCopen XML export whose INTERFACE (in the project's addData,
+    its METHODs without bodies) an FB IMPLEMENTS and a test calls through a variable of the INTERFACE; what else
+    an INTERFACE holds there is refused at its line."""
+
+    folder = os.path.join(HERE, "codesys_export")
+
+    def test_the_interface_is_implemented_and_called(self):
+        run = pac_test(os.path.join(self.folder, "wiring.json"), os.path.join(OUT, "codesys_export"), "--no-coverage")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        self.assertIn("1 tests: 1 passed, 0 failed", run.stdout)
+        self.assertRegex(run.stdout, r"ok  FB_TestGaugeInterface  \(2 asserts")
+
+    def test_a_property_of_an_interface_is_refused_at_its_line(self):
+        export = os.path.join(OUT, "codesys_export-property", "Export.xml")
+        with open(os.path.join(self.folder, "Export.xml"), encoding="utf-8") as f:
+            text = f.read().replace("        </Methods>\n", "        </Methods>\n        <Properties />\n")
+        self.assertIn(f"{export}:{line_in(text, '<Properties />')}:1: error: cannot read the PLCopen project: "
+                      "I_Gauge: <Properties> of an INTERFACE is not read from PLCopen XML (its METHODs are): give "
+                      "this INTERFACE to pac-test as an ST file of its own", self.refusal(export, text))
+
+    def test_a_transition_is_refused_saying_why(self):
+        export = os.path.join(OUT, "codesys_export-transition", "Export.xml")
+        transition = ('        <transitions><transition name="T_Full"><body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">'
+                      'T_Full := Total > 5;</xhtml></ST></body></transition></transitions>\n')
+        with open(os.path.join(self.folder, "Export.xml"), encoding="utf-8") as f:
+            text = f.read().replace("        </interface>\n        <body>\n", "        </interface>\n" + transition
+                                    + "        <body>\n", 1)
+        self.assertIn(f"{export}:{line_in(text, '<transitions>')}:1: error: cannot read the PLCopen "
+                      "project: FB_Gauge: its TRANSITIONs are not read: a TRANSITION is a step condition of an SFC "
+                      "chart, and pacst reads no SFC; leave the POU out of the program tested",
+                      self.refusal(export, text))
+
+    def refusal(self, export, text):
+        """pac-test's error output for the fixture with its Export.xml replaced by `text` (at `export`)."""
+        import shutil
+        target = os.path.dirname(export)
+        shutil.rmtree(target, ignore_errors=True)
+        shutil.copytree(self.folder, target)
+        with open(export, "w", encoding="utf-8") as f:
+            f.write(text)
+        run = pac_test(os.path.join(target, "wiring.json"), os.path.join(target, "out"), "--list")
+        self.assertEqual(run.returncode, 2, run.stdout + run.stderr)
+        return run.stderr
 
 
 @unittest.skipUnless(MATIEC, "pac-test compiles with iec2c only on a MATIEC build")
