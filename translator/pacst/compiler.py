@@ -164,6 +164,7 @@ class Compiler:
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
         self.call_members = set()  # (file, line, column) of each member of a call's result (rewrite.CALL_MEMBER)
+        self.array_results = set()  # (file, line, column) of the block of each FUNCTION's ARRAY result (rewrite.py)
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.constant_inits = {}  # user mode: id(initial value node) -> its value, from named constants
         self.named_inits = {}  # user mode: id(initial value node) -> the initial value of the constant it names
@@ -211,6 +212,8 @@ class Compiler:
                 self.dialect_at(src.path, line, col, what)
                 if what == rewrite.CALL_MEMBER:
                     self.call_members.add((src.path, line, parsed_col))
+                elif what == rewrite.ARRAY_RESULT:
+                    self.array_results.add((src.path, line, parsed_col))
             for item in src.tree.items:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
@@ -1034,14 +1037,20 @@ class Compiler:
         elif node.return_type is None and not pou.native and not self.user:
             raise self.err(node, "a FUNCTION needs a return type (MATIEC)")  # TwinCAT and CODESYS take one without
         refused = []
-        if kind != "fb" and node.return_type is not None:
+        declarations = node.declarations
+        if kind == "function" and node.return_type is None and declarations \
+                and (self.file, *pos(declarations[0])) in self.array_results:
+            # FUNCTION F : ARRAY[...] OF T, which rewrite.py made a block `VAR F : ARRAY[...] OF T; END_VAR`
+            declarations = declarations[1:]
+            pou.ret = self._refusals(refused, self._result_type, node.declarations[0].items[0].init)
+        elif kind != "fb" and node.return_type is not None:
             read = self._spec_type if _cls(node.return_type) != "Token" else self._resolve_type
             # user mode: a refused result hides no refusal of the pins
             pou.ret = self._refusals(refused, read, node.return_type, False) if self.user else \
                 read(node.return_type, False)
         constant_block = None
-        self.constant_blocks = node.declarations
-        for block in node.declarations:
+        self.constant_blocks = declarations
+        for block in declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
             if kind == "function" and constant_block is not None and not is_constant \
@@ -1252,7 +1261,10 @@ class Compiler:
 
     def _result_type(self, rt):
         """The type of a METHOD's result `rt` (user mode: also a function block, returned by value, as TcUnit's
-        FB_TestSuite.GetTestByPosition returns an FB_Test)."""
+        FB_TestSuite.GetTestByPosition returns an FB_Test, and an ARRAY, returned by value as a struct is)."""
+        if self.user and _cls(rt) == "ArrayTypeInitialization" and rt.indirection is None and rt.value is None:
+            self.dialect(rt, "an ARRAY result")
+            return user.var_type(self, rt, allow_fb=False)[0]
         return self._spec_type(rt.spec, allow_fb=self.user) if _cls(rt) == "TypeInitialization" else \
             self._resolve_type(rt, allow_fb=self.user)
 
