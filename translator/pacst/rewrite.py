@@ -20,7 +20,8 @@ its column, so that errors, `#line` directives and coverage still name the user'
   is: the syntax error says what to write instead.
 - `FUNCTION Pack : ARRAY[1..4] OF USINT` (an ARRAY result, which blark's grammar reads for a METHOD but not for a
   FUNCTION; the array on the heading's line): `FUNCTION Pack VAR Pack : ARRAY[1..4] OF USINT; END_VAR`, a block
-  the translator takes back as the result (ARRAY_RESULT among the file's rewrites, at the block's `VAR`).
+  the translator takes back as the result (ARRAY_RESULT among the file's rewrites, at the `ARRAY`, whose column
+  in the parsed text tells the translator how far the rest of the line moved).
 """
 from . import durations, lexcheck
 from .errors import StError
@@ -29,7 +30,7 @@ from .errors import StError
 NEW_POINTER = "__PTRTO"
 # the construct of a rewritten `F(x).Member`: its member's (line, column) among a file's rewrites
 CALL_MEMBER = "a member of a call's result"
-# the construct of a rewritten `FUNCTION F : ARRAY[...] OF T`: the (line, column) of its block's `VAR`
+# the construct of a rewritten `FUNCTION F : ARRAY[...] OF T`: the (line, column) of its `ARRAY`
 ARRAY_RESULT = "a FUNCTION's ARRAY result"
 _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
 
@@ -63,7 +64,7 @@ def user_text(text, path):
                 uses.append((tokens[j].line, tokens[j].col, "a ';' after a FUNCTION_BLOCK's heading"))
                 edits.append((tokens[j].start, tokens[j].end, ""))
         elif up == "FUNCTION" and _array_result(tokens, k):
-            uses.append((tokens[k + 2].line, tokens[k + 2].col, ARRAY_RESULT))
+            uses.append((tokens[k + 3].line, tokens[k + 3].col, ARRAY_RESULT))
             edits += _array_result_edits(tokens, k)
         elif up == ":=" and nxt is not None and nxt.text == "(" and k + 3 < len(tokens) \
                 and tokens[k + 2].text == ")" and tokens[k + 3].text == ";":
