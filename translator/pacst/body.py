@@ -36,6 +36,12 @@ class BodyCompiler:
             v = T.find_var((self.pou.owner or self.pou).statics, name)
         return v
 
+    def _variable_or_result(self, name):
+        """Whether `name` is a variable or the FUNCTION's or METHOD's own result (`Pack[1] := Seed;` in METHOD Pack):
+        such a name heads no namespace."""
+        own = self.pou.kind == "function" and self.pou.ret is not None and name.upper() == self.pou.cname
+        return own or self.lookup(name) is not None
+
     def _owner_var(self, name):
         """A METHOD's or ACTION's variable of its FB: its own VAR_INST first, kept under another name where the
         FB has that name too."""
@@ -307,7 +313,7 @@ class BodyCompiler:
         return r
 
     def ref(self, node, raw=False):
-        node = self.this(self.comp.unqualify(node, self.lookup))
+        node = self.this(self.comp.unqualify(node, self._variable_or_result))
         cls = _cls(node)
         if cls == "SimpleVariable":
             if node.dereferenced and not self.comp.user:

@@ -164,6 +164,9 @@ class Compiler:
         self.refused = set()  # upper names whose declaration was refused: later uses say so, not more
         self.file = None
         self.call_members = set()  # (file, line, column) of each member of a call's result (rewrite.CALL_MEMBER)
+        # user mode: (file, line) of each FUNCTION's ARRAY result (rewrite.ARRAY_RESULT) -> (column of its ARRAY in
+        # the parsed text, how far the rewrite moved it there)
+        self.array_results = {}
         self.dialect_uses = []  # StErrors: the TwinCAT / CODESYS constructs used, which MATIEC cannot compile
         self.warnings = []  # StWarnings: what the vendors take with a warning and pacst takes too (user mode)
         self.strict_narrowing = False  # user mode: an implicit narrowing refused instead (--strict-narrowing)
@@ -181,7 +184,7 @@ class Compiler:
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
         refuses each with its place, since MATIEC compiles only the portable subset's user programs."""
         line, col = pos(node) if node is not None else (1, 1)
-        self.dialect_at(self.file, line, col, what)
+        self.dialect_at(self.file, line, self.source_column(self.file, line, col), what)
 
     def dialect_at(self, file, line, col, what):
         self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does "
@@ -199,7 +202,13 @@ class Compiler:
         if self.user:  # the library's subset is not what a user program is held to: docs/user_dialect.md is
             message = message.replace("outside the portable subset", "outside pacst's user programs "
                                       "(docs/user_dialect.md)")
-        return StError(self.file, line, col, message)
+        return StError(self.file, line, self.source_column(self.file, line, col), message)
+
+    def source_column(self, file, line, col):
+        """The column in the user's own line of `col` in the parsed text: on the heading of a FUNCTION's ARRAY
+        result, where rewrite.py wrote the result's block, the array's declaration moved right."""
+        found = self.array_results.get((file, line))
+        return col - found[1] if found is not None and col >= found[0] else col
 
     # ------------------------------------------------------------------ driver
     def compile(self, sources):
@@ -218,6 +227,8 @@ class Compiler:
                 self.dialect_at(src.path, line, col, what)
                 if what == rewrite.CALL_MEMBER:
                     self.call_members.add((src.path, line, parsed_col))
+                elif what == rewrite.ARRAY_RESULT:
+                    self.array_results[(src.path, line)] = (parsed_col, parsed_col - col)
             for item in src.tree.items:
                 name = self._item_name(item) if _cls(item) not in ("Method", "Action", "Property") else None
                 if name is not None and name.upper() not in self.declared_at:
@@ -1044,14 +1055,19 @@ class Compiler:
         elif node.return_type is None and not pou.native and not self.user:
             raise self.err(node, "a FUNCTION needs a return type (MATIEC)")  # TwinCAT and CODESYS take one without
         refused = []
-        if kind != "fb" and node.return_type is not None:
+        declarations = node.declarations
+        if kind == "function" and node.return_type is None and self._array_result(declarations):
+            # FUNCTION F : ARRAY[...] OF T, which rewrite.py made a block `VAR F : ARRAY[...] OF T; END_VAR`
+            declarations = declarations[1:]
+            pou.ret = self._refusals(refused, self._result_type, node.declarations[0].items[0].init)
+        elif kind != "fb" and node.return_type is not None:
             read = self._spec_type if _cls(node.return_type) != "Token" else self._resolve_type
             # user mode: a refused result hides no refusal of the pins
             pou.ret = self._refusals(refused, read, node.return_type, False) if self.user else \
                 read(node.return_type, False)
         constant_block = None
-        self.constant_blocks = node.declarations
-        for block in node.declarations:
+        self.constant_blocks = declarations
+        for block in declarations:
             attrs = getattr(block, "attrs", None)
             is_constant = attrs is not None and str(attrs.name).lower() == "constant"
             if kind == "function" and constant_block is not None and not is_constant \
@@ -1124,6 +1140,14 @@ class Compiler:
         self.program.items.append(("pou", pou, self.file))
         self.program.items += after
         self.program.items += [("pou", m, self.file) for m in members]
+
+    def _array_result(self, declarations):
+        """Whether the first of a FUNCTION's `declarations` is the block rewrite.py made of its ARRAY result."""
+        if not declarations or not getattr(declarations[0], "items", None):
+            return False
+        line, col = pos(declarations[0].items[0])
+        found = self.array_results.get((self.file, line))
+        return found is not None and pos(getattr(declarations[0].items[0], "init", None)) == (line, found[0])
 
     def _body_beside_refusals(self, pou, node, base):
         """User mode: the refusals of the body of a POU some of whose declarations were refused, and of its METHODs',
@@ -1262,7 +1286,13 @@ class Compiler:
 
     def _result_type(self, rt):
         """The type of a METHOD's result `rt` (user mode: also a function block, returned by value, as TcUnit's
-        FB_TestSuite.GetTestByPosition returns an FB_Test)."""
+        FB_TestSuite.GetTestByPosition returns an FB_Test, and an ARRAY, returned by value as a struct is)."""
+        if self.user and _cls(rt) == "ArrayTypeInitialization":
+            if rt.value is not None:
+                raise self.err(rt.value, "a result has no initial value: it starts from its type's initial values; "
+                                         "assign the values in the body")
+            self.dialect(rt, "an ARRAY result")
+            return user.var_type(self, rt, allow_fb=False)[0]
         return self._spec_type(rt.spec, allow_fb=self.user) if _cls(rt) == "TypeInitialization" else \
             self._resolve_type(rt, allow_fb=self.user)
 

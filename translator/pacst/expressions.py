@@ -602,7 +602,11 @@ class ExprCompiler:
         b = self.expr(node.right, want)
         if a.type is T.ANY_INT and b.type is T.ANY_INT:
             return TE(T.ANY_INT, value=self._fold(node, op, a.value, b.value))
-        if self.comp.user and op in ("+", "-") and a.type.is_pointer and (b.type is T.ANY_INT or b.type.is_int):
+        if self.comp.user and op in ("+", "-") and a.type.is_pointer and b.type.is_bit:
+            # CODESYS adds a bit string's number of bytes as an integer's (`p + LINT_TO___XWORD(k)`, `p + DWORD#1`)
+            self.comp.dialect(node.op, f"a POINTER {op} a {b.type.name}, its number of bytes")
+        if self.comp.user and op in ("+", "-") and a.type.is_pointer and (
+                b.type is T.ANY_INT or b.type.is_int or b.type.is_bit):
             n = b.code if b.code is not None else f"{b.value}LL"
             return TE(a.type, f"(({a.type.cname})((char *)({a.code}) {op} ({n})))")  # bytes, as TwinCAT counts
         if self.comp.user and op in ("*", "/") and (a.type.is_time or b.type.is_time) \

@@ -317,8 +317,9 @@ def _var_list(element, keyword):
 
 
 # CODESYS's export of a VAR_IN_OUT `ARRAY[*] OF T`: a POINTER TO T whose attributes keep the array's type and the
-# list it was declared in ("Inout"), and which the export writes among the inputs
-_VARLEN_SCOPES = {"Inout": "VAR_IN_OUT"}
+# list it was declared in ("Inout"), and which the export writes among the inputs. One declared in a VAR_INPUT
+# ("Input") is exported the same way, a pointer to the caller's array: read as a VAR_IN_OUT too (open_points.md)
+_VARLEN_SCOPES = {"Inout", "Input"}
 
 
 def _variable_length_array(variable):
@@ -331,7 +332,7 @@ def _variable_length_array(variable):
     scope = found.get("variable_length_array_original_scope")
     if scope not in _VARLEN_SCOPES:
         exc = PlcopenReadError(f"{variable.get('name')}: an {varlen} in the list CODESYS calls '{scope}' is not "
-                               "read: pacst takes an ARRAY[*] in VAR_IN_OUT only; declare it there")
+                               "read: pacst takes an ARRAY[*] in VAR_IN_OUT (or VAR_INPUT) only; declare it there")
         exc.lineno = variable.sourceline
         raise exc
     return varlen

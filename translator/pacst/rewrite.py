@@ -18,6 +18,10 @@ its column, so that errors, `#line` directives and coverage still name the user'
   reads as a METHOD called on the result (`F(x).Member()`); the translator knows the member by its place
   (CALL_MEMBER among the file's rewrites). A member followed by an index, a `:=` or a bit number is left as it
   is: the syntax error says what to write instead.
+- `FUNCTION Pack : ARRAY[1..4] OF USINT` (an ARRAY result, which blark's grammar reads for a METHOD but not for a
+  FUNCTION; the array on the heading's line): `FUNCTION Pack VAR Pack : ARRAY[1..4] OF USINT; END_VAR`, a block
+  the translator takes back as the result (ARRAY_RESULT among the file's rewrites, at the `ARRAY`, whose column
+  in the parsed text tells the translator how far the rest of the line moved).
 """
 from . import durations, lexcheck
 from .errors import StError
@@ -26,6 +30,8 @@ from .errors import StError
 NEW_POINTER = "__PTRTO"
 # the construct of a rewritten `F(x).Member`: its member's (line, column) among a file's rewrites
 CALL_MEMBER = "a member of a call's result"
+# the construct of a rewritten `FUNCTION F : ARRAY[...] OF T`: the (line, column) of its `ARRAY`
+ARRAY_RESULT = "a FUNCTION's ARRAY result"
 _ACCESS = {"ABSTRACT", "PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL", "FINAL"}
 
 
@@ -57,6 +63,9 @@ def user_text(text, path):
                     and all(t.kind != "ident" or t.upper not in _KEYWORDS for t in tokens[k + 1:j]):
                 uses.append((tokens[j].line, tokens[j].col, "a ';' after a FUNCTION_BLOCK's heading"))
                 edits.append((tokens[j].start, tokens[j].end, ""))
+        elif up == "FUNCTION" and _array_result(tokens, k):
+            uses.append((tokens[k + 3].line, tokens[k + 3].col, ARRAY_RESULT))
+            edits += _array_result_edits(tokens, k)
         elif up == ":=" and nxt is not None and nxt.text == "(" and k + 3 < len(tokens) \
                 and tokens[k + 2].text == ")" and tokens[k + 3].text == ";":
             uses.append((tok.line, tok.col, "an empty initial value ':= ()'"))
@@ -122,6 +131,25 @@ _INTEGERS = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "
 # keywords that end a FUNCTION_BLOCK's heading: a `;` after one of them is no heading's
 _KEYWORDS = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_INST", "VAR_STAT", "VAR_EXTERNAL",
              "END_FUNCTION_BLOCK", "RETURN", "IF", "CASE", "FOR", "WHILE", "REPEAT", "EXIT", "CONTINUE"}
+
+
+def _array_result(tokens, k):
+    """Whether tokens[k] (FUNCTION) begins `FUNCTION Name : ARRAY` on one line."""
+    heading = tokens[k + 1:k + 4]
+    return len(heading) == 3 and heading[0].kind == "ident" and heading[1].text == ":" \
+        and heading[2].kind == "ident" and heading[2].upper == "ARRAY" \
+        and all(t.line == tokens[k].line for t in heading)
+
+
+def _array_result_edits(tokens, k):
+    """The edits that make `FUNCTION Name : ARRAY...` on tokens[k]'s line a block of its own,
+    `FUNCTION Name VAR Name : ARRAY...; END_VAR`: the array's declaration stays where blark reads it."""
+    last = k + 3
+    while last + 1 < len(tokens) and tokens[last + 1].line == tokens[k].line:
+        last += 1
+    name, colon, end = tokens[k + 1], tokens[k + 2], tokens[last]
+    close = " END_VAR" if end.text == ";" else "; END_VAR"
+    return [(colon.start, colon.end, f"VAR {name.text} :"), (end.end, end.end, close)]
 
 
 def _in_heading(tokens, k):
