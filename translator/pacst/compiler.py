@@ -1653,7 +1653,10 @@ class Compiler:
         if vtype.kind == "vla":
             varlen.check_section(self, pou, item)
         if pou.kind == "function" and vtype.is_array and section in ("input", "output"):
-            raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+            if not self.user:
+                raise self.err(item, "arrays are passed to a FUNCTION only whole and as VAR_IN_OUT (MATIEC)")
+            # TwinCAT and CODESYS pass it by value: the C struct of the array copied in (out)
+            self.dialect(item, f"an ARRAY in a FUNCTION's VAR_{section.upper()}")
 
     def _user_vars(self, pou, section, constant, item):
         """One declaration line of a POU in user mode: inline arrays, sized STRINGs and located variables too."""
