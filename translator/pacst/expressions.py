@@ -282,6 +282,15 @@ class ExprCompiler:
                              f"(their C0197); write {source.name}_TO_{target.name} to say so")
         return f"(({target.cname})({te.code}))"
 
+    def _output_converted(self, ref, v, pou):
+        """User mode: whether a FUNCTION's output `v` given to the variable of `ref`, of another integer or bit string
+        type (`usiLength => udiLength`), is converted as TwinCAT and CODESYS convert an assignment (widened, or cut
+        with their warning): through a temporary of the output's type, in a GCC statement expression."""
+        if not self.comp.user or v.section != "output" or (pou.ret is not None and pou.ret.is_fb):
+            return False
+        numeric = [t.is_elementary and (t.is_int or t.is_bit) for t in (ref.type, v.type)]
+        return all(numeric) and not ref.type.is_bool and not v.type.is_bool
+
     def integer_to_enum(self, target, node, what):
         """User mode: whether an integer may be assigned to the enumeration `target` (TwinCAT's and CODESYS's
         types without {attribute 'strict'}: the number kept as it is, a value of the type or not)."""
@@ -1515,6 +1524,7 @@ class ExprCompiler:
             for p in node.parameters:
                 given[self.formal_pin(p, pou, given).cname] = p.value
         args = []
+        converted = []  # user mode: (a temporary's declaration, the write of its variable) of each output converted
         for v in interface:
             arg = given.get(v.cname)
             if v.section == "input":
@@ -1554,6 +1564,14 @@ class ExprCompiler:
             ref = self.body.ref(arg) if self.body is not None else None
             if ref is None:
                 raise self.err(arg, "initial value must be a literal")
+            if ref.type is not v.type and self._output_converted(ref, v, pou):
+                if not ref.writable:
+                    raise self.err(arg, f"'{ref.var.name}' cannot be written: {ref.why_not}")
+                temporary = f"__pacst_out{len(converted)}"
+                converted.append((f"{v.type.cname} {temporary} = {self.comp.default_c(v.type)};",
+                                  ref.write(self.coerce(TE(v.type, temporary), ref.type, arg, "argument"))))
+                args.append(f"&{temporary}")
+                continue
             if ref.type is not v.type:
                 raise self.err(arg, f"type mismatch: {ref.type.name} passed to {v.section} '{v.name}' of type "
                                     f"{v.type.name}{long_inout_hint(ref.type, v.type)}")
@@ -1569,6 +1587,12 @@ class ExprCompiler:
         where = "__FILE__, __LINE__, " if pou.native else ""
         first = f"{this}, " if this is not None else ""
         call = f"{pou.cfunc}({first}{where}TRUE, NULL{''.join(', ' + a for a in args)})"
+        if converted:  # the outputs land in temporaries of their own types, converted to the variables after the call
+            declarations, writes = " ".join(d for d, _ in converted), " ".join(w for _, w in converted)
+            if pou.ret is None:
+                call = f"({{ {declarations} {call}; {writes} }})"
+            else:
+                call = f"({{ {declarations} {pou.ret.cname} __pacst_result = {call}; {writes} __pacst_result; }})"
         if pou.ret is not None and pou.ret.is_fb:  # user mode: an instance returned by value, read by its address
             # as every instance's value here (_read), the address of a C object holding the result (a compound
             # literal lives to the end of the C block: the statement)
