@@ -614,8 +614,9 @@ TEST_F(TranslatorUserCli, PlcopenExportWithTheLibraryTakesTheLibraryGiven) {
 }
 
 TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
-    // An object of a kind the reader does not translate (TwinCAT's INTERFACE) is refused at its element, not
-    // dropped; so is a global list it cannot read, at the list's element: both in one run.
+    // A part of an object the reader does not translate (an INTERFACE's PROPERTY, whose form no export has shown)
+    // is refused at its element, not dropped; so is a global list it cannot read, at the list's element: both in
+    // one run.
     auto xml = Write("App.xml",
         "<?xml version=\"1.0\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n<types><pous/></types>\n"
         "<instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\n"
@@ -623,13 +624,13 @@ TEST_F(TranslatorUserCli, PlcopenObjectsNotReadAreRefusedAtTheirLines) {
         "</variable></struct></type>"
         "</variable></globalVars>\n</resource></configuration></configurations></instances>\n<addData>\n"
         "<data name=\"http://www.3s-software.com/plcopenxml/interface\" handleUnknown=\"implementation\">\n"
-        "<Interface name=\"I_Run\"/></data></addData>\n</project>\n");
+        "<Interface name=\"I_Run\">\n<Properties/></Interface></data></addData>\n</project>\n");
     auto result = RunTranslator({"check", "--user", xml});
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find(xml + ":5:1: error: cannot read the PLCopen project: GVL: type element <struct> "
                                         "has no ST form in this reader"), std::string::npos) << result.output;
-    EXPECT_NE(result.output.find(xml + ":10:1: error: cannot read the PLCopen project: I_Run: an INTERFACE is not "
-                                        "read from PLCopen XML"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(xml + ":11:1: error: cannot read the PLCopen project: I_Run: <Properties> of an INTERFACE "
+                                        "is not read from PLCopen XML"), std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, LibraryModeRefusesUserConstructsAndWritesNoSymbolTable) {
