@@ -183,8 +183,7 @@ class Compiler:
     def dialect(self, node, what):
         """Records a use of the TwinCAT / CODESYS dialect of user mode (docs/user_dialect.md): `pacst matiec`
         refuses each with its place, since MATIEC compiles only the portable subset's user programs."""
-        line, col = pos(node) if node is not None else (1, 1)
-        self.dialect_at(self.file, line, self.source_column(self.file, line, col), what)
+        self.dialect_at(self.file, *self.place(node), what)
 
     def dialect_at(self, file, line, col, what):
         self.dialect_uses.append(StError(file, line, col, f"{what}: TwinCAT / CODESYS dialect that MATIEC does "
@@ -193,16 +192,20 @@ class Compiler:
 
     def warn(self, node, message):
         """Records a warning at `node` in the file being compiled: shown with the build, the program still built."""
-        line, col = pos(node) if node is not None else (1, 1)
-        self.warnings.append(StWarning(self.file, line, col, message))
+        self.warnings.append(StWarning(self.file, *self.place(node), message))
 
     # ------------------------------------------------------------------ errors
     def err(self, node, message):
-        line, col = pos(node) if node is not None else (1, 1)
         if self.user:  # the library's subset is not what a user program is held to: docs/user_dialect.md is
             message = message.replace("outside the portable subset", "outside pacst's user programs "
                                       "(docs/user_dialect.md)")
-        return StError(self.file, line, self.source_column(self.file, line, col), message)
+        return StError(self.file, *self.place(node), message)
+
+    def place(self, node):
+        """(line, column) of `node` in the user's own text of the file being compiled, for a refusal, a dialect use
+        or a warning alike (1, 1 without a node)."""
+        line, col = pos(node) if node is not None else (1, 1)
+        return line, self.source_column(self.file, line, col)
 
     def source_column(self, file, line, col):
         """The column in the user's own line of `col` in the parsed text: on the heading of a FUNCTION's ARRAY
