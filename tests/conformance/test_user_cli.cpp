@@ -350,11 +350,12 @@ TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
     EXPECT_EQ(result.exitCode, 1) << "without --namespace, PA_CONTROL is no namespace";
     EXPECT_NE(result.output.find(main + ":2:12: error: 'PA_CONTROL.FB_Lamp': 'PA_CONTROL' is no library namespace"),
               std::string::npos) << result.output;
-    // A CODESYS export "into an application" carries the library's objects: said so at the copy.
+    // A copy of the library's FB among the program's own shadows the library's, which no other file of it names:
+    // the plain name means the copy, and PA_CONTROL.FB_Lamp says why it is not the library's.
     auto copy = Write("FB_Lamp.st", ReadFile(lib));
     result = RunTranslator({"check", "--user", "--namespace", ns, lib, list, copy, main});
-    EXPECT_NE(result.output.find(copy + ":1:1: error: function block 'FB_Lamp' is declared by the library PA_CONTROL "
-                                        "too: leave the library's objects out of your sources"),
+    EXPECT_NE(result.output.find(main + ":2:12: error: 'PA_CONTROL.FB_Lamp': the program declares FB_Lamp too (" +
+                                 copy + ":1), which TwinCAT and CODESYS keep apart from the library's"),
               std::string::npos) << result.output;
     auto matiec = Out() + "/program.st";
     result = RunTranslator({"matiec", "--namespace", ns, "--out", matiec, lib, list, main});
@@ -366,13 +367,15 @@ TEST_F(TranslatorUserCli, LibraryUnderItsNamespace) {
 
 TEST_F(TranslatorUserCli, AProgramsNameTakenFromItsLibraryIsOneClearError) {
     // The program declares FB_Counter and its library Lib does too, declared after the program's (it waits for the
-    // library's Z_Count): the refusal is at the program's copy, and Lib.FB_Counter says it was refused there, not
-    // that the library has no FB_Counter, which it has.
+    // library's Z_Count), and the library's PRG_Counting uses its own, so it is not left out as a shadowed one: the
+    // refusal is at the program's copy, and Lib.FB_Counter says it was refused there, not that the library has no
+    // FB_Counter, which it has.
     std::string theirs = kCounter;
     theirs.replace(theirs.find("INT;"), 3, "Z_Count");
     fs::create_directories(dir_ / "Lib");
     Write("Lib/FB_Counter.st", theirs);
     Write("Lib/Z_Count.st", "TYPE Z_Count : INT; END_TYPE\n");
+    Write("Lib/PRG_Counting.st", "PROGRAM PRG_Counting\nVAR C : FB_Counter; END_VAR\nC();\nEND_PROGRAM\n");
     auto own = Write("FB_Counter.st", kCounter);
     auto main = Write("MAIN.st", "PROGRAM MAIN\nVAR Theirs : Lib.FB_Counter; END_VAR\nTheirs();\nEND_PROGRAM\n");
     auto result = RunTranslator({"check", "--user", "--library", "Lib=" + (dir_ / "Lib").string(), own, main});
@@ -384,6 +387,34 @@ TEST_F(TranslatorUserCli, AProgramsNameTakenFromItsLibraryIsOneClearError) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
     }
     EXPECT_EQ(result.output.find("has no type or POU"), std::string::npos) << result.output;
+}
+
+TEST_F(TranslatorUserCli, ALibrarysPouTheProgramShadowsIsLeftOut) {
+    // TwinCAT and CODESYS keep a library's names apart from the program's: a test project's MAIN beside its library's
+    // MAIN (TcDynCollections) is the one its plain name means. The library's, which no other file of the library
+    // names, is left out of pacst's C, whose names are one set; Lib.MAIN says so at its use.
+    fs::create_directories(dir_ / "Lib");
+    Write("Lib/FB_Lamp.st", "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT On : BOOL; END_VAR\nVAR_OUTPUT Lit : BOOL; END_VAR\n"
+                            "Lit := On;\nEND_FUNCTION_BLOCK\n");
+    Write("Lib/MAIN.st", "PROGRAM MAIN\nVAR Theirs : FB_Lamp; END_VAR\nTheirs(On := TRUE);\nEND_PROGRAM\n");
+    auto main = Write("MAIN.st", "PROGRAM MAIN\nVAR Ours : Lib.FB_Lamp; Scans : INT; END_VAR\n"
+                                 "Ours(On := Scans > 2);\nScans := Scans + 1;\nEND_PROGRAM\n");
+    const std::string library = "Lib=" + (dir_ / "Lib").string();
+    auto result = RunTranslator({"build", "--user", "--library", library, "--out", Out(), main});
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::string c = ReadFile(Out() + "/MAIN.c");
+    EXPECT_NE(c.find("SCANS"), std::string::npos) << "the program's MAIN\n" << c;
+    EXPECT_EQ(c.find("THEIRS"), std::string::npos) << "not the library's\n" << c;
+    EXPECT_NE(ReadFile(Out() + "/FB_Lamp.c").find("FB_LAMP_body__"), std::string::npos);
+    auto other = Write("PRG_Other.st", "PROGRAM PRG_Other\nVAR Lit : BOOL; END_VAR\nLit := Lib.MAIN.Theirs.Lit;\n"
+                                       "END_PROGRAM\n");
+    result = RunTranslator({"check", "--user", "--library", library, main, other});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(other + ":3:12: error: 'Lib.MAIN': the program declares MAIN too (" + main +
+                                 ":1), which TwinCAT and CODESYS keep apart from the library's; pac-test's C holds "
+                                 "one declaration of each name and takes the program's: rename the program's to use "
+                                 "the library's"),
+              std::string::npos) << result.output;
 }
 
 TEST_F(TranslatorUserCli, PlcopenRefusalIsOneLineAtTheObject) {

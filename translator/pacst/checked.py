@@ -84,7 +84,7 @@ def save(path, sources, comp):
     header = {"format": FORMAT, "translator": _translator_version(), "namespaces": dict(comp.namespaces),
               "natives": sorted(comp.native_files & {src.path for src in sources}),
               "files": {src.path: _digest(src.path) for src in sources}}
-    mentioned = {src.path: order._mentioned(src) for src in sources}
+    mentioned = {src.path: order.mentioned(src) for src in sources}
     header["names"] = sorted(set().union(*mentioned.values()))
     folder = os.path.dirname(os.path.abspath(path))
     os.makedirs(folder, exist_ok=True)

@@ -14,7 +14,7 @@ import types
 
 from .compiler import Compiler
 from . import checked, gvl, layout, libraries, matiec, plcopen_read, symbols, twincat
-from .order import closed_under_uses, declaration_order
+from .order import closed_under_uses, declaration_order, shadowed_library_files
 from . import system, types as T
 from .emit import ENUM_NAMES, Emitter, remove_outputs, remove_stale_c, write_outputs, _stem
 from .errors import StError, StErrors
@@ -67,7 +67,8 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
     if user:
         # The libraries first, checked on their own (or a copy of their checked state); then the program. A PLC
         # programmer's tool keeps no declaration order: pacst finds it (`pacst order`).
-        library, rest = user_order(sources, native, namespaces)
+        left_out = {}
+        library, rest = user_order(sources, native, namespaces, left_out)
         kept_used = kept is not None and kept.covers(library)
         if kept is not None:
             kept.used = kept_used
@@ -78,6 +79,7 @@ def _translate_parsed(file_results, list_results, user=False, native=(), namespa
         else:
             comp = checked_library(library, native, namespaces)
         comp.strict_narrowing = strict_narrowing  # the program's, not the libraries' (checked without it)
+        comp.left_out = left_out
         comp.declare(rest)
         program = comp.finish()
     else:
@@ -175,12 +177,16 @@ def _shared_objects(roots):
     return found
 
 
-def user_order(sources, native=(), namespaces=None):
+def user_order(sources, native=(), namespaces=None, left_out=None):
     """User mode: (the library files among `sources`, the rest), each in its declaration order. A library file is
     one in the folder of a namespace (--namespace, --library) that uses no name of the program's files
     (order.closed_under_uses): these are declared before the program, which may use them but not the reverse, as
-    a library is compiled before the programs that reference it."""
+    a library is compiled before the programs that reference it. A library file the program's declarations shadow
+    is in neither (order.shadowed_library_files; `left_out`, a dict, gets them)."""
     probe = Compiler(True, native, namespaces)
+    shadowed, sources = shadowed_library_files(sources, probe.library_of)
+    if left_out is not None:
+        left_out.update(shadowed)
     closed = closed_under_uses(sources, [src.path for src in sources if probe.library_of(src.path)])
     by_path = {src.path: src for src in sources}
     return tuple([by_path[path] for path in declaration_order([src for src in sources if (src.path in closed) == first],
@@ -289,7 +295,8 @@ def _build(args):
         return 1
     _say_kept(args, kept, why)
     _print_warnings(comp)
-    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
+    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(
+        [f for f in files if f not in comp.left_out])
     outputs.update(_tables(constants))
     if args.user:
         outputs[SYMBOLS] = symbols.symbols(comp, program)

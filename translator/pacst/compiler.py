@@ -153,6 +153,8 @@ class Compiler:
         self.pointer_types = {}  # (target cname, reference) -> PointerType (user mode)
         self.sizeof_checks = {}  # user mode: file -> {(type, C type, bytes)} of SIZEOF in a constant expression
         self.taken_from_library = {}  # user mode: (NAMESPACE, NAME) -> (file, line) of the program's declaration
+        # user mode: {path: (namespace, names, (file, line) of the program's)} of library files the program shadows
+        self.left_out = {}
         self.types = {}  # upper name -> Type
         self.pous = {}  # upper name -> Pou
         self.enum_values = {}  # upper value -> EnumType
@@ -512,8 +514,15 @@ class Compiler:
         return f": did you mean {namespace}.{spelt[close[0]]}?" if close else ""
 
     def taken_by_program(self, namespace, name, node):
-        """User mode: for `Namespace.Name` whose library declaration was refused because the program declares Name
-        too (reported there, once), the error that says so, instead of one saying the library lacks Name."""
+        """User mode: for `Namespace.Name` whose library declaration was refused or left out because the program
+        declares Name too (refused: reported there, once), the error that says so, instead of one saying the library
+        lacks Name."""
+        for spelt, names, (file, line) in self.left_out.values():
+            if spelt.upper() == namespace.upper() and name.upper() in {n.upper() for n in names}:
+                raise self.err(node, f"'{namespace}.{name}': the program declares {name} too ({file}:{line}), which "
+                                     f"TwinCAT and CODESYS keep apart from the library's; pac-test's C holds one "
+                                     f"declaration of each name and takes the program's: rename the program's to use "
+                                     f"the library's")
         first = self.taken_from_library.get((namespace.upper(), name.upper()))
         if first is not None:
             raise self.err(node, f"'{namespace}.{name}' cannot be used: its declaration was refused (above), as the "

@@ -17,7 +17,7 @@ import weakref
 
 import lark
 
-from .common import _cls, _name
+from .common import _cls, _name, pos
 from .errors import StError, StErrors
 
 _IDENTIFIER_TOKENS = {"IDENTIFIER", "DOTTED_IDENTIFIER"}
@@ -73,11 +73,39 @@ def mentioned_names(tree):
 _MENTIONED = weakref.WeakKeyDictionary()
 
 
-def _mentioned(src):
+def mentioned(src):
+    """mentioned_names of the parsed file `src`, kept for as long as the file is held."""
     found = _MENTIONED.get(src)
     if found is None:
         found = _MENTIONED[src] = frozenset(mentioned_names(src.tree))
     return found
+
+
+def shadowed_library_files(sources, library_of):
+    """User mode: the library files the program's own declarations shadow, {path: (namespace, [names], (program
+    file, line))}, and `sources` without them. TwinCAT and CODESYS keep a library's names apart from the
+    application's: a POU of the application named like one of the library (a test project's MAIN beside its
+    library's) is the one its plain name means, and the library's stays `Namespace.Name`. pacst's C holds one
+    declaration of each name, so a library file whose every declaration the program declares too is left out
+    where no other file of the libraries names them; where one does, both stay and the compiler refuses the name
+    as declared twice, with what to do. `library_of(path)`: the namespace of the library holding a file, or None."""
+    own = {}
+    for src in sources:
+        if library_of(src.path) is None:
+            for item in src.tree.items:
+                for name in declared_names(types.SimpleNamespace(items=[item])):
+                    own.setdefault(name.upper(), (src.path, pos(item)[0]))
+    in_libraries = [src for src in sources if library_of(src.path) is not None]
+    left = {}
+    for src in in_libraries:
+        names = declared_names(src.tree)
+        ups = {name.upper() for name in names}
+        if not ups or not ups <= set(own):
+            continue
+        if any(other is not src and ups & mentioned(other) for other in in_libraries):
+            continue
+        left[src.path] = (library_of(src.path), names, own[names[0].upper()])
+    return left, [src for src in sources if src.path not in left]
 
 
 def _sort_key(path):
@@ -122,14 +150,14 @@ def _through_lists(src, uses, lists):
     FB_AdsTestResultLogger reads GVL_TcUnit.AdsMessageQueue)."""
     if any(_cls(item) in ("DataTypeDeclaration", "GlobalVariableDeclarations") for item in src.tree.items):
         return uses
-    mentioned = _mentioned(src)
+    words = mentioned(src)
     kept = {}
     for dep, name in uses.items():
         if dep not in lists:
             kept.setdefault(dep, name)
             continue
         for var, paths in lists[dep].items():
-            if var in mentioned:
+            if var in words:
                 for path in paths - {src.path}:
                     kept.setdefault(path, name)
     return kept
@@ -148,7 +176,7 @@ def _owners(sources):
 def _uses(src, owner):
     """{path of another file: a name `src` mentions that the file declares}."""
     uses = {}
-    words = _mentioned(src)
+    words = mentioned(src)
     if words & {"TIME", "LTIME"}:  # CODESYS's TIME() and LTIME() read Tc2_System's F_GetSystemTime (expressions.py)
         words = words | {"F_GETSYSTEMTIME"}
     for word in sorted(words):
