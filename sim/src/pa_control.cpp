@@ -144,8 +144,6 @@ AxisModuleContext PaControl::ModuleContext(std::chrono::nanoseconds now) const {
     }
     context.integerFormat = state_.integerFormat;
     context.inputs = &state_.elements.inputs;
-    // 2.7.4.13: the group is every axis with a module.
-    context.groupDisplaced = state_.axes.AnyDisplacedDuringOff(state_.axisModules);
     return context;
 }
 
@@ -298,7 +296,10 @@ void PaControl::ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) 
     reply.SetModule8(ModuleLayout::kCmdOffset, protocol_.Reply(state_.operatingStatus, state_.systemError != 0).Encode());
     if (layout_.ctrl) reply.SetModule8(ModuleLayout::kCtrlOffset, ctrl_.Reply());
     const bool automatic = state_.CurrentMode() == Mode::kAutomatic;
-    const AxisModuleContext context = ModuleContext(now);
+    AxisModuleContext context = ModuleContext(now);
+    // 2.7.4.13: the group is every axis with a module. Only the reply's status word reads it, and serving the
+    // control words may change it: it is searched here, once per cycle, and only where a module replies.
+    if (!automatic) context.groupDisplaced = state_.axes.AnyDisplacedDuringOff(state_.axisModules);
     Image12 module;
     std::uint8_t* bytes = reply.Data() + ModuleLayout::kFirstAxisOffset;  // the reply has the layout's size (above)
     for (int axis = 1; axis <= state_.axisModules; ++axis, bytes += module.size()) {

@@ -181,6 +181,7 @@ private:
     void ServeModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
     void ServeAxisModules(const ProcessImage& toPac, std::chrono::nanoseconds now);
     bool AutomaticExchangeNow() const;
+    // The cycle's context for serving the modules; the reply adds the group's displacement.
     AxisModuleContext ModuleContext(std::chrono::nanoseconds now) const;
     void ComposeReply(std::chrono::nanoseconds now, ProcessImage& reply) const;
     // The first axis module's byte in `image`; std::logic_error unless the image has the layout's size.
