@@ -295,8 +295,7 @@ def _build(args):
         return 1
     _say_kept(args, kept, why)
     _print_warnings(comp)
-    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(
-        [f for f in files if f not in comp.left_out])
+    outputs = Emitter(comp, program, args.out if args.line_directives else None).outputs(files)
     outputs.update(_tables(constants))
     if args.user:
         outputs[SYMBOLS] = symbols.symbols(comp, program)

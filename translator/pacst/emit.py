@@ -459,7 +459,9 @@ class Emitter:
         return "\n".join(out)
 
     def outputs(self, files):
-        """{file name: text} of everything a build writes."""
+        """{file name: text} of everything a build writes; nothing of a library's file the program's declarations
+        shadow (it was not translated, and its C file's name may be the program's file's)."""
+        files = [f for f in files if f not in self.comp.left_out]
         result = {"POUS.h": self.header(files), ENUM_NAMES: self.enum_names()}
         with open(os.path.join(_INCLUDE_DIR, _HEADER_NAME), encoding="utf-8") as f:
             result[_HEADER_NAME] = f.read()

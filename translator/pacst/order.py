@@ -100,7 +100,7 @@ def shadowed_library_files(sources, library_of):
     for src in in_libraries:
         names = declared_names(src.tree)
         ups = {name.upper() for name in names}
-        if not ups or not ups <= set(own):
+        if not ups or not ups <= own.keys():
             continue
         if any(other is not src and ups & mentioned(other) for other in in_libraries):
             continue
